@@ -1,0 +1,187 @@
+#include "app/cli/arguments.h"
+
+#include <charconv>
+#include <set>
+
+namespace linkwright::cli {
+namespace {
+
+using kinematics::Error;
+using kinematics::ErrorCode;
+
+Error usage(const std::string& option, const std::string& message) {
+  return Error{ErrorCode::InvalidValue, option, message};
+}
+
+std::optional<double> parseNumber(const std::string& text) {
+  double value = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (ec != std::errc{} || ptr != end || text.empty()) return std::nullopt;
+  return value;
+}
+
+std::vector<std::string> splitCommas(const std::string& text) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  for (std::size_t comma; (comma = text.find(',', start)) != std::string::npos; start = comma + 1)
+    parts.push_back(text.substr(start, comma - start));
+  parts.push_back(text.substr(start));
+  return parts;
+}
+
+// Reads N comma-separated numbers; the error names the option and quotes the bad part.
+kinematics::Result<std::vector<double>> parseList(const std::string& option, const std::string& text,
+                                                  std::size_t count, const std::string& shape) {
+  const std::vector<std::string> parts = splitCommas(text);
+  if (parts.size() != count)
+    return usage(option, option + " expects " + shape + " (got '" + text + "')");
+  std::vector<double> values;
+  for (const std::string& part : parts) {
+    const auto value = parseNumber(part);
+    if (!value) return usage(option, option + ": '" + part + "' is not a number (expected " + shape + ")");
+    values.push_back(*value);
+  }
+  return values;
+}
+
+const std::set<std::string>& optionsOf(Command command) {
+  static const std::set<std::string> analyze{"--fourbar", "--example", "--unit", "--rpm", "--omega",
+                                             "--alpha", "--from", "--to", "--step", "--samples",
+                                             "--branch", "--coupler-point", "-o", "--output"};
+  static const std::set<std::string> classify{"--fourbar", "--example", "--unit", "--branch", "--json"};
+  static const std::set<std::string> none{};
+  switch (command) {
+  case Command::Analyze: return analyze;
+  case Command::Classify: return classify;
+  default: return none;
+  }
+}
+
+const char* commandName(Command command) {
+  switch (command) {
+  case Command::Analyze: return "analyze";
+  case Command::Classify: return "classify";
+  case Command::Examples: return "examples";
+  default: return "linkwright-cli";
+  }
+}
+
+bool takesValue(const std::string& option) { return option != "--json"; }
+
+// Applies one option and its value to the invocation.
+std::optional<Error> apply(Invocation& inv, const std::string& option, const std::string& value) {
+  auto number = [&](std::optional<double>& target) -> std::optional<Error> {
+    const auto parsed = parseNumber(value);
+    if (!parsed) return usage(option, option + ": '" + value + "' is not a number");
+    target = *parsed;
+    return std::nullopt;
+  };
+  if (option == "--fourbar") {
+    auto list = parseList(option, value, 4, "FRAME,CRANK,COUPLER,ROCKER");
+    if (!list) return list.error();
+    const std::vector<double>& v = *list;
+    const kinematics::FourBarLengths lengths{v[0], v[1], v[2], v[3]};
+    if (auto e = kinematics::checkFourBarLengths(lengths)) return usage(option, option + ": " + e->message);
+    inv.fourBar = lengths;
+  } else if (option == "--coupler-point") {
+    auto list = parseList(option, value, 2, "U,V (along and across the coupler)");
+    if (!list) return list.error();
+    inv.couplerPoint = kinematics::CouplerPointSpec{(*list)[0], (*list)[1]};
+  } else if (option == "--example") {
+    inv.example = value;
+  } else if (option == "--unit") {
+    if (value.empty() || value.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ") != std::string::npos)
+      return usage(option, option + " must be a unit name made of letters, e.g. mm, m, in (got '" + value + "')");
+    inv.lengthUnit = value;
+  } else if (option == "--rpm") return number(inv.rpm);
+  else if (option == "--omega") return number(inv.omega);
+  else if (option == "--alpha") return number(inv.alpha);
+  else if (option == "--from") return number(inv.fromDeg);
+  else if (option == "--to") return number(inv.toDeg);
+  else if (option == "--step") return number(inv.stepDeg);
+  else if (option == "--samples") {
+    long long n = 0;
+    const auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), n);
+    if (ec != std::errc{} || ptr != value.data() + value.size() || value.empty())
+      return usage(option, option + ": '" + value + "' is not a whole number");
+    inv.samples = n;
+  } else if (option == "--branch") {
+    if (value == "open") inv.branch = kinematics::Branch::Open;
+    else if (value == "crossed") inv.branch = kinematics::Branch::Crossed;
+    else return usage(option, option + " must be 'open' or 'crossed' (got '" + value + "')");
+  } else if (option == "-o" || option == "--output") {
+    if (value.empty()) return usage(option, option + " needs a file name");
+    inv.outputFile = value;
+  } else if (option == "--json") {
+    inv.json = true;
+  }
+  return std::nullopt;
+}
+
+std::optional<Error> checkCombination(const Invocation& inv) {
+  const bool needsMechanism = inv.command == Command::Analyze || inv.command == Command::Classify;
+  if (needsMechanism && !inv.fourBar && !inv.example)
+    return usage("--fourbar", std::string(commandName(inv.command)) + " needs --fourbar FRAME,CRANK,COUPLER,ROCKER or --example NAME");
+  if (inv.fourBar && inv.example) return usage("--example", "--fourbar and --example cannot be used together");
+  if (inv.rpm && inv.omega) return usage("--omega", "--rpm and --omega cannot be used together");
+  if (inv.stepDeg && inv.samples) return usage("--samples", "--step and --samples cannot be used together");
+  return std::nullopt;
+}
+
+} // namespace
+
+kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& args) {
+  Invocation inv;
+  if (args.empty()) return usage("COMMAND", "missing command (analyze, classify or examples; see --help)");
+  const std::string& first = args[0];
+  if (first == "--help" || first == "-h" || first == "help") {
+    inv.command = Command::Help;
+    if (args.size() > 1) inv.helpTopic = args[1];
+    return inv;
+  }
+  if (first == "--version") {
+    inv.command = Command::Version;
+    return inv;
+  }
+  if (first == "analyze") inv.command = Command::Analyze;
+  else if (first == "classify") inv.command = Command::Classify;
+  else if (first == "examples") inv.command = Command::Examples;
+  else if (!first.empty() && first[0] == '-') return usage(first, "unknown option '" + first + "' (see linkwright-cli --help)");
+  else return usage(first, "unknown command '" + first + "' (commands: analyze, classify, examples; see --help)");
+
+  std::set<std::string> seen;
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    std::string option = args[i];
+    std::optional<std::string> inlineValue;
+    if (option == "--help" || option == "-h") {
+      inv.helpTopic = commandName(inv.command);
+      inv.command = Command::Help;
+      return inv;
+    }
+    if (const auto eq = option.find('='); option.rfind("--", 0) == 0 && eq != std::string::npos) {
+      inlineValue = option.substr(eq + 1);
+      option.resize(eq);
+    }
+    if (!optionsOf(inv.command).count(option)) {
+      const std::string what = option.empty() || option[0] != '-' ? "unexpected argument '" : "unknown option '";
+      return usage(option, what + option + "' for '" + commandName(inv.command) + "' (see linkwright-cli --help " +
+                               commandName(inv.command) + ")");
+    }
+    const std::string canonical = option == "-o" ? "--output" : option;
+    if (!seen.insert(canonical).second) return usage(option, option + " is given more than once");
+    std::string value;
+    if (takesValue(option)) {
+      if (inlineValue) value = *inlineValue;
+      else if (i + 1 < args.size()) value = args[++i];
+      else return usage(option, option + " needs a value");
+    } else if (inlineValue) {
+      return usage(option, option + " takes no value");
+    }
+    if (auto e = apply(inv, option, value)) return *e;
+  }
+  if (auto e = checkCombination(inv)) return *e;
+  return inv;
+}
+
+} // namespace linkwright::cli

@@ -1,0 +1,148 @@
+#include "app/cli/commands.h"
+
+#include "kinematics/analysis/assembly_range.h"
+#include "kinematics/analysis/grashof.h"
+#include "kinematics/analysis/limit_positions.h"
+#include "kinematics/analysis/mobility.h"
+#include "kinematics/analysis/transmission.h"
+#include "kinematics/io/number_format.h"
+#include "kinematics/model/units.h"
+
+#include <ostream>
+
+namespace linkwright::cli {
+namespace {
+
+namespace k = kinematics;
+using k::io::formatDouble;
+using k::io::formatFixed;
+
+// Everything classify reports, computed once and printed as text or JSON.
+struct Classification {
+  ResolvedFourBar fourBar;
+  k::GrashofReport grashof;
+  k::MobilityReport mobility;
+  k::InputRange range;
+  std::optional<k::TransmissionRange> transmission;
+  k::LimitReport limits;
+};
+
+std::string deg(double radians) { return formatFixed(k::radToDeg(radians), 2) + "°"; }
+std::string jsonDeg(double radians) { return formatDouble(k::radToDeg(radians)); }
+std::string branchName(k::Branch b) { return b == k::Branch::Open ? "open" : "crossed"; }
+
+std::string jsonString(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+template <typename T>
+std::string jsonOptional(const std::optional<T>& value, std::string (*format)(double)) {
+  return value ? format(*value) : "null";
+}
+
+void printText(const Classification& c, std::ostream& out) {
+  const auto& l = c.fourBar.lengths;
+  const std::string& u = c.fourBar.lengthUnit;
+  const auto len = [&](double v) { return k::io::formatShort(v) + " " + u; };
+  out << "four-bar             frame " << len(l.frame) << ", crank " << len(l.crank) << ", coupler "
+      << len(l.coupler) << ", rocker " << len(l.rocker) << ", branch " << branchName(c.fourBar.branch) << "\n";
+  out << "Grashof class        " << k::toString(c.grashof.category) << " (shortest link: "
+      << k::toString(c.grashof.shortest) << ", longest: " << k::toString(c.grashof.longest) << ")\n";
+  out << "S + L, P + Q         " << len(c.grashof.sPlusL) << ", " << len(c.grashof.pPlusQ) << "\n";
+  out << "mobility (Gruebler)  M = 3(" << c.mobility.links << " - 1) - 2*" << c.mobility.fullJoints << " - "
+      << c.mobility.halfJoints << " = " << c.mobility.mobility << "\n";
+  out << "crank turns fully    " << (c.range.fullRotation ? "yes" : "no") << "\n";
+  out << "assemblable crank    ";
+  if (c.range.fullRotation) out << "all angles\n";
+  else if (c.range.ranges.empty()) out << "none: the loop never closes\n";
+  else {
+    for (std::size_t i = 0; i < c.range.ranges.size(); ++i)
+      out << (i ? ", " : "") << deg(c.range.ranges[i].from) << " to " << deg(c.range.ranges[i].to);
+    out << "\n";
+  }
+  if (c.transmission)
+    out << "transmission angle   min " << deg(c.transmission->minimum) << " at crank " << deg(c.transmission->minimumAtCrank)
+        << ", max " << deg(c.transmission->maximum) << " at crank " << deg(c.transmission->maximumAtCrank)
+        << " (worst deviation from 90°: " << deg(c.transmission->worstDeviation) << ")\n";
+  for (const auto& p : c.limits.positions)
+    out << "rocker limit         " << (p.extended ? "extended" : "folded  ") << " crank " << deg(p.crankAngle)
+        << ", rocker " << deg(p.rockerAngle) << "\n";
+  if (c.limits.positions.empty()) out << "rocker limits        none on this branch\n";
+  if (c.limits.rockerSwing) out << "rocker swing         " << deg(*c.limits.rockerSwing) << "\n";
+  if (c.limits.timeRatio)
+    out << "time ratio           " << formatFixed(*c.limits.timeRatio, 4) << " (slow stroke "
+        << deg(*c.limits.slowStrokeCrankArc) << ", quick stroke " << deg(*c.limits.quickStrokeCrankArc)
+        << " of crank rotation)\n";
+}
+
+void printJson(const Classification& c, std::ostream& out) {
+  const auto& l = c.fourBar.lengths;
+  const auto& g = c.grashof;
+  out << "{\n  \"lengths\": {\"frame\": " << formatDouble(l.frame) << ", \"crank\": " << formatDouble(l.crank)
+      << ", \"coupler\": " << formatDouble(l.coupler) << ", \"rocker\": " << formatDouble(l.rocker)
+      << "},\n  \"length_unit\": " << jsonString(c.fourBar.lengthUnit) << ",\n  \"branch\": \""
+      << branchName(c.fourBar.branch) << "\",\n";
+  out << "  \"grashof\": {\"class\": \"" << k::toString(g.category) << "\", \"shortest\": \"" << k::toString(g.shortest)
+      << "\", \"longest\": \"" << k::toString(g.longest) << "\", \"s_plus_l\": " << formatDouble(g.sPlusL)
+      << ", \"p_plus_q\": " << formatDouble(g.pPlusQ) << ", \"crank_fully_rotates\": "
+      << (g.inputFullyRotates ? "true" : "false") << ", \"rocker_fully_rotates\": "
+      << (g.outputFullyRotates ? "true" : "false") << "},\n";
+  out << "  \"mobility\": {\"links\": " << c.mobility.links << ", \"full_joints\": " << c.mobility.fullJoints
+      << ", \"half_joints\": " << c.mobility.halfJoints << ", \"mobility\": " << c.mobility.mobility << "},\n";
+  out << "  \"assemblable_crank_range_deg\": {\"full_rotation\": " << (c.range.fullRotation ? "true" : "false")
+      << ", \"ranges\": [";
+  for (std::size_t i = 0; i < c.range.ranges.size(); ++i)
+    out << (i ? ", " : "") << "[" << jsonDeg(c.range.ranges[i].from) << ", " << jsonDeg(c.range.ranges[i].to) << "]";
+  out << "]},\n  \"transmission_angle_deg\": ";
+  if (c.transmission)
+    out << "{\"min\": " << jsonDeg(c.transmission->minimum) << ", \"min_at_crank\": " << jsonDeg(c.transmission->minimumAtCrank)
+        << ", \"max\": " << jsonDeg(c.transmission->maximum) << ", \"max_at_crank\": " << jsonDeg(c.transmission->maximumAtCrank)
+        << ", \"worst_deviation_from_90\": " << jsonDeg(c.transmission->worstDeviation) << "}";
+  else
+    out << "null";
+  out << ",\n  \"rocker_limit_positions\": [";
+  for (std::size_t i = 0; i < c.limits.positions.size(); ++i) {
+    const auto& p = c.limits.positions[i];
+    out << (i ? ", " : "") << "{\"kind\": \"" << (p.extended ? "extended" : "folded") << "\", \"crank_angle_deg\": "
+        << jsonDeg(p.crankAngle) << ", \"rocker_angle_deg\": " << jsonDeg(p.rockerAngle) << "}";
+  }
+  out << "],\n  \"rocker_swing_deg\": " << jsonOptional(c.limits.rockerSwing, jsonDeg)
+      << ",\n  \"time_ratio\": " << jsonOptional(c.limits.timeRatio, formatDouble)
+      << ",\n  \"slow_stroke_crank_arc_deg\": " << jsonOptional(c.limits.slowStrokeCrankArc, jsonDeg)
+      << ",\n  \"quick_stroke_crank_arc_deg\": " << jsonOptional(c.limits.quickStrokeCrankArc, jsonDeg) << "\n}\n";
+}
+
+} // namespace
+
+ExitCode runClassify(const Invocation& inv, std::ostream& out, std::ostream& err) {
+  const auto fb = resolveFourBar(inv);
+  if (!fb) {
+    err << "linkwright-cli: " << fb.error().message << "\n";
+    return ExitCode::BadInput;
+  }
+  const auto mechanism = k::makeFourBar(fb->lengths, fb->branch, fb->lengthUnit);
+  if (!mechanism) {
+    err << "linkwright-cli: " << mechanism.error().message << "\n";
+    return ExitCode::BadInput;
+  }
+  const Classification c{*fb,
+                         k::classifyGrashof(fb->lengths),
+                         k::mobility(*mechanism),
+                         k::fourBarInputRange(fb->lengths),
+                         k::fourBarTransmissionRange(fb->lengths),
+                         k::fourBarLimitPositions(fb->lengths, fb->branch)};
+  if (inv.json) printJson(c, out);
+  else printText(c, out);
+  if (c.range.ranges.empty()) {
+    err << "linkwright-cli: this linkage cannot be assembled at any crank angle\n";
+    return ExitCode::NotAssemblable;
+  }
+  return ExitCode::Success;
+}
+
+} // namespace linkwright::cli

@@ -1,0 +1,22 @@
+#include "app/cli/commands.h"
+
+#include "kinematics/io/number_format.h"
+
+#include <ostream>
+
+namespace linkwright::cli {
+
+ExitCode runExamples(std::ostream& out) {
+  for (const kinematics::FourBarExample& e : kinematics::fourBarExamples()) {
+    using kinematics::io::formatShort;
+    const auto& l = e.lengths;
+    out << e.name << "\n  " << e.description << "\n  --fourbar " << formatShort(l.frame) << ","
+        << formatShort(l.crank) << "," << formatShort(l.coupler) << "," << formatShort(l.rocker) << " ("
+        << e.lengthUnit << "), --omega " << formatShort(e.omega) << " rad/s, every "
+        << formatShort(e.stepDeg) << "° from " << formatShort(e.fromDeg) << "° to " << formatShort(e.toDeg)
+        << "°\n";
+  }
+  return ExitCode::Success;
+}
+
+} // namespace linkwright::cli

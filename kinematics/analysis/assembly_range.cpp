@@ -1,0 +1,48 @@
+#include "kinematics/analysis/assembly_range.h"
+
+#include "kinematics/model/units.h"
+
+#include <cmath>
+
+namespace linkwright::kinematics {
+
+bool InputRange::contains(double angle, double tolerance) const {
+  if (fullRotation) return true;
+  for (const AngleRange& r : ranges) {
+    // Shift the angle into the turn that starts at r.from.
+    const double shifted = r.from + std::fmod(std::fmod(angle - r.from, 2.0 * kPi) + 2.0 * kPi, 2.0 * kPi);
+    if (shifted <= r.to + tolerance || shifted - 2.0 * kPi >= r.from - tolerance) return true;
+  }
+  return false;
+}
+
+InputRange fourBarInputRange(const FourBarLengths& l) {
+  const double a = l.crank;
+  const double d = l.frame;
+  const double twoAD = 2.0 * a * d;
+  const double base = a * a + d * d;
+  const double lowCos = (base - (l.coupler + l.rocker) * (l.coupler + l.rocker)) / twoAD;
+  const double highCos = (base - (l.coupler - l.rocker) * (l.coupler - l.rocker)) / twoAD;
+  InputRange out;
+  if (lowCos > 1.0 || highCos < -1.0 || lowCos > highCos) return out;  // never assembles
+  const bool lowFree = lowCos <= -1.0;   // cos θ ≥ lowCos holds for every θ
+  const bool highFree = highCos >= 1.0;  // cos θ ≤ highCos holds for every θ
+  if (lowFree && highFree) {
+    out.fullRotation = true;
+    out.ranges.push_back({0.0, 2.0 * kPi});
+    return out;
+  }
+  const double farEdge = lowFree ? kPi : std::acos(lowCos);   // largest |θ| allowed
+  const double nearEdge = highFree ? 0.0 : std::acos(highCos);  // smallest |θ| allowed
+  if (highFree) {
+    out.ranges.push_back({-farEdge, farEdge});
+  } else if (lowFree) {
+    out.ranges.push_back({nearEdge, 2.0 * kPi - nearEdge});
+  } else {
+    out.ranges.push_back({nearEdge, farEdge});
+    out.ranges.push_back({-farEdge, -nearEdge});
+  }
+  return out;
+}
+
+} // namespace linkwright::kinematics

@@ -1,0 +1,37 @@
+#include "kinematics/io/number_format.h"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+
+namespace linkwright::kinematics::io {
+
+std::string formatDouble(double value) {
+  if (value == 0.0) return "0";  // also folds -0 into 0
+  std::array<char, 32> buffer{};
+  const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  if (ec != std::errc{}) return "nan";
+  return std::string(buffer.data(), end);
+}
+
+std::string formatShort(double value, int significant) {
+  if (value == 0.0) return "0";
+  std::array<char, 64> buffer{};
+  const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
+                                       std::chars_format::general, significant);
+  if (ec != std::errc{}) return "nan";
+  return std::string(buffer.data(), end);
+}
+
+std::string formatFixed(double value, int decimals) {
+  std::array<char, 64> buffer{};
+  const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
+                                       std::chars_format::fixed, decimals);
+  if (ec != std::errc{}) return "nan";
+  std::string text(buffer.data(), end);
+  // "-0.00" reads as a sign that is not there: print it as "0.00".
+  if (text.front() == '-' && text.find_first_not_of("-0.") == std::string::npos) text.erase(0, 1);
+  return text;
+}
+
+} // namespace linkwright::kinematics::io

@@ -1,0 +1,24 @@
+#include "kinematics/model/examples.h"
+
+#include "kinematics/model/units.h"
+
+namespace linkwright::kinematics {
+
+std::vector<FourBarExample> fourBarExamples() {
+  return {
+      {"thesis-crank-rocker",
+       "crank-rocker 60/25/70/45 mm at 10 rpm (Sharifgalieva thesis, Excel and SolidWorks tables every 30°)",
+       {60.0, 25.0, 70.0, 45.0}, "mm", Branch::Open, rpmToRadPerSec(10.0), 0.0, 0.0, 360.0, 30.0},
+      {"alvi-fourbar",
+       "four-bar AD 80, AB 20, BC 66, CD 56 mm at 10.5 rad/s (Alvi et al., both branches every 40°)",
+       {80.0, 20.0, 66.0, 56.0}, "mm", Branch::Open, 10.5, 0.0, 0.0, 360.0, 40.0},
+  };
+}
+
+std::optional<FourBarExample> findFourBarExample(const std::string& name) {
+  for (FourBarExample& e : fourBarExamples())
+    if (e.name == name) return std::move(e);
+  return std::nullopt;
+}
+
+} // namespace linkwright::kinematics

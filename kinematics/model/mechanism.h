@@ -1,0 +1,96 @@
+#pragma once
+// The mechanism description: a planar linkage as an ordered list of points, each defined
+// from points before it (ground pivot, driven crank tip, RRR dyad joint, point fixed on a
+// link), and the moving links whose angles, rates and accelerations are reported. This is the
+// dyad decomposition of Pyslvs and of every closed-form textbook method: solving the points in
+// order solves the linkage. One crank drives it (one degree of freedom).
+//
+// Frame and units: x to the right, y up, angles counter-clockwise from +x in radians. For a
+// four-bar, +x is the frame line (crank pivot to rocker pivot). Lengths are in
+// Mechanism::lengthUnit; velocities in that unit per second.
+
+#include "kinematics/model/ids.h"
+
+#include <Eigen/Core>
+
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace linkwright::kinematics {
+
+/// Assembly branch of an RRR dyad. Open: the dyad joint C lies to the left of the line from
+/// its first parent P1 to its second parent P2, i.e. (C−P1)×(C−P2) > 0. For a four-bar with
+/// P1 = crank tip B and P2 = rocker pivot O4 this is sin(θ_rocker − θ_coupler) > 0, the
+/// configuration the thesis draws. Crossed is the mirror image about P1P2.
+enum class Branch { Open, Crossed };
+
+/// A pivot fixed to the ground at `position` (length unit).
+struct GroundPoint {
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();
+  bool operator==(const GroundPoint&) const = default;
+};
+
+/// The driven crank tip: at `length` from ground point `pivot`, at the input angle plus
+/// `phase` (rad). There is exactly one per mechanism.
+struct CrankPoint {
+  PointId pivot;
+  double length = 1.0;
+  double phase = 0.0;
+  bool operator==(const CrankPoint&) const = default;
+};
+
+/// The joint C of an RRR dyad: at `firstLength` from point `first` and at `secondLength` from
+/// point `second`, on the side given by `branch`.
+struct RrrPoint {
+  PointId first;
+  double firstLength = 1.0;
+  PointId second;
+  double secondLength = 1.0;
+  Branch branch = Branch::Open;
+  bool operator==(const RrrPoint&) const = default;
+};
+
+/// A point rigidly fixed on a link: `along` the link's direction (from its first point toward
+/// its second) and `across` it (90° counter-clockwise), measured from the link's first point.
+struct AttachedPoint {
+  LinkId link;
+  double along = 0.0;
+  double across = 0.0;
+  bool operator==(const AttachedPoint&) const = default;
+};
+
+using PointDefinition = std::variant<GroundPoint, CrankPoint, RrrPoint, AttachedPoint>;
+
+/// A named point. Its definition refers only to points (and links) defined before it.
+struct Point {
+  std::string name;
+  PointDefinition definition;
+  bool operator==(const Point&) const = default;
+};
+
+/// A moving rigid link between two points that its definition keeps at constant distance
+/// (crank pivot and tip, or a dyad joint and one of its parents). Its angle is the direction
+/// from `first` to `second`.
+struct Link {
+  std::string name;
+  PointId first;
+  PointId second;
+  bool operator==(const Link&) const = default;
+};
+
+/// A complete linkage description. A regular value: copy, compare, store.
+struct Mechanism {
+  std::string lengthUnit = "mm";
+  std::vector<Point> points;
+  std::vector<Link> links;
+  bool operator==(const Mechanism&) const = default;
+
+  /// The id of the point named `name`, if any.
+  std::optional<PointId> findPoint(const std::string& name) const;
+  /// The id of the link named `name`, if any.
+  std::optional<LinkId> findLink(const std::string& name) const;
+};
+
+} // namespace linkwright::kinematics

@@ -1,0 +1,96 @@
+#include "kinematics/model/mechanism_check.h"
+
+#include "kinematics/model/validate.h"
+
+#include <set>
+
+namespace linkwright::kinematics {
+namespace {
+
+Error structureError(const std::string& field, const std::string& why) {
+  return Error{ErrorCode::InvalidStructure, field, field + " " + why};
+}
+
+std::string pointField(std::size_t index, const char* member) {
+  return "points[" + std::to_string(index) + "]." + member;
+}
+
+// A point may only refer to points before it: that order is the solve order.
+std::optional<Error> checkEarlier(PointId ref, std::size_t index, const char* member) {
+  if (ref.index < index) return std::nullopt;
+  return structureError(pointField(index, member),
+                        "must refer to a point defined before it (got point " +
+                            std::to_string(ref.index) + ")");
+}
+
+std::optional<Error> checkPoint(const Mechanism& m, std::size_t i, int& cranks) {
+  const PointDefinition& def = m.points[i].definition;
+  if (const auto* g = std::get_if<GroundPoint>(&def)) {
+    if (auto e = checkFinite(g->position.x(), pointField(i, "x"))) return e;
+    return checkFinite(g->position.y(), pointField(i, "y"));
+  }
+  if (const auto* c = std::get_if<CrankPoint>(&def)) {
+    ++cranks;
+    if (auto e = checkEarlier(c->pivot, i, "pivot")) return e;
+    if (!std::holds_alternative<GroundPoint>(m.points[c->pivot.index].definition))
+      return structureError(pointField(i, "pivot"), "must be a ground point");
+    if (auto e = checkPositive(c->length, pointField(i, "length"))) return e;
+    return checkFinite(c->phase, pointField(i, "phase"));
+  }
+  if (const auto* r = std::get_if<RrrPoint>(&def)) {
+    if (auto e = checkEarlier(r->first, i, "first")) return e;
+    if (auto e = checkEarlier(r->second, i, "second")) return e;
+    if (r->first == r->second)
+      return structureError(pointField(i, "second"), "must differ from its first point");
+    if (auto e = checkPositive(r->firstLength, pointField(i, "firstLength"))) return e;
+    return checkPositive(r->secondLength, pointField(i, "secondLength"));
+  }
+  const auto& a = std::get<AttachedPoint>(def);
+  if (a.link.index >= m.links.size())
+    return structureError(pointField(i, "link"), "refers to a link that does not exist");
+  const Link& link = m.links[a.link.index];
+  if (link.first.index >= i || link.second.index >= i)
+    return structureError(pointField(i, "link"), "must be a link between points defined before it");
+  if (auto e = checkFinite(a.along, pointField(i, "along"))) return e;
+  return checkFinite(a.across, pointField(i, "across"));
+}
+
+// A link is rigid only if one end is defined at a fixed distance from the other.
+bool isRigidPair(const Mechanism& m, PointId a, PointId b) {
+  auto definesFrom = [&](PointId child, PointId parent) {
+    const PointDefinition& def = m.points[child.index].definition;
+    if (const auto* c = std::get_if<CrankPoint>(&def)) return c->pivot == parent;
+    if (const auto* r = std::get_if<RrrPoint>(&def)) return r->first == parent || r->second == parent;
+    return false;
+  };
+  return definesFrom(a, b) || definesFrom(b, a);
+}
+
+} // namespace
+
+std::optional<Error> checkMechanism(const Mechanism& m) {
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < m.points.size(); ++i) {
+    if (m.points[i].name.empty()) return structureError(pointField(i, "name"), "must not be empty");
+    if (!names.insert(m.points[i].name).second)
+      return structureError(pointField(i, "name"), "repeats the name '" + m.points[i].name + "'");
+  }
+  for (std::size_t k = 0; k < m.links.size(); ++k) {
+    const Link& link = m.links[k];
+    const std::string field = "links[" + std::to_string(k) + "]";
+    if (link.name.empty()) return structureError(field + ".name", "must not be empty");
+    if (link.first.index >= m.points.size() || link.second.index >= m.points.size())
+      return structureError(field, "refers to a point that does not exist");
+    if (!isRigidPair(m, link.first, link.second))
+      return structureError(field, "joins points that are not held at a fixed distance");
+  }
+  int cranks = 0;
+  for (std::size_t i = 0; i < m.points.size(); ++i)
+    if (auto e = checkPoint(m, i, cranks)) return e;
+  if (cranks != 1)
+    return structureError("points", "must contain exactly one crank (got " +
+                                        std::to_string(cranks) + ")");
+  return std::nullopt;
+}
+
+} // namespace linkwright::kinematics

@@ -1,0 +1,62 @@
+#pragma once
+// The request (what to compute), the driver state (crank angle, ω, α) and the pose (the
+// solved state of every point and link at one input) that the pose solver fills.
+
+#include "kinematics/model/ids.h"
+#include "kinematics/solve/rrr_dyad.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace linkwright::kinematics {
+
+/// What to compute beyond positions. A scene computes only what it shows.
+struct SolveRequest {
+  bool velocities = true;     ///< ω of links, v of points
+  bool accelerations = true;  ///< α of links, a of points (implies velocities)
+  bool operator==(const SolveRequest&) const = default;
+};
+
+/// The crank's state: angle (rad, CCW from +x), ω (rad/s, CCW positive), α (rad/s²).
+struct DriverState {
+  double angle = 0.0;
+  double omega = 0.0;
+  double alpha = 0.0;
+  bool operator==(const DriverState&) const = default;
+};
+
+enum class PoseStatus {
+  Ok,              ///< everything requested was computed
+  Singular,        ///< positions are valid; a dyad is at a toggle, so rates are undefined
+  NotAssemblable,  ///< some point cannot be placed: see PoseReport::culprit and failure
+};
+
+/// How a solve went, and which point failed first.
+struct PoseReport {
+  PoseStatus status = PoseStatus::Ok;
+  PointId culprit;  ///< the first point that failed (meaningful unless status is Ok)
+  AssemblyFailure failure = AssemblyFailure::None;
+  bool operator==(const PoseReport&) const = default;
+};
+
+/// The solved state, one entry per point and per link of the mechanism. Positions in the
+/// mechanism's length unit; velocities per second, accelerations per second squared. Link
+/// angles in (−π, π] rad, ω in rad/s, α in rad/s². Entries not requested stay zero.
+struct Pose {
+  std::vector<Eigen::Vector2d> position;
+  std::vector<Eigen::Vector2d> velocity;
+  std::vector<Eigen::Vector2d> acceleration;
+  std::vector<double> linkAngle;
+  std::vector<double> linkOmega;
+  std::vector<double> linkAlpha;
+  /// For RRR points: the transmission angle at C between C→P1 and C→P2, in [0, π]; else 0.
+  std::vector<double> transmissionAngle;
+  /// For RRR points: +1 open, −1 crossed, the branch actually used; else 0.
+  std::vector<signed char> branchSign;
+  /// For RRR points: half the distance between the two branch candidates; else 0.
+  std::vector<double> halfSeparation;
+  bool operator==(const Pose&) const = default;
+};
+
+} // namespace linkwright::kinematics

@@ -1,0 +1,216 @@
+#include "kinematics/solve/pose_solver.h"
+
+#include "kinematics/io/number_format.h"
+#include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/units.h"
+#include "kinematics/model/validate.h"
+
+#include <cmath>
+
+namespace linkwright::kinematics {
+namespace {
+
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
+
+struct Solver {
+  const Mechanism& m;
+  const DriverState& driver;
+  bool wantVelocity;
+  bool wantAcceleration;
+  Pose& pose;
+  const BranchGuide& guide;
+  PoseReport report{};
+  bool ratesValid = true;  // false once a dyad was singular: later rates cannot be computed
+
+  void markSingular(std::size_t i) {
+    if (report.status == PoseStatus::Ok) report = {PoseStatus::Singular, PointId{i}, AssemblyFailure::None};
+    ratesValid = false;
+  }
+
+  void ground(std::size_t i, const GroundPoint& g) {
+    pose.position[i] = g.position;
+    if (wantVelocity) pose.velocity[i].setZero();
+    if (wantAcceleration) pose.acceleration[i].setZero();
+  }
+
+  void crank(std::size_t i, const CrankPoint& c) {
+    const double phi = driver.angle + c.phase;
+    const Eigen::Vector2d radial(std::cos(phi), std::sin(phi));
+    const Eigen::Vector2d o = pose.position[c.pivot.index];
+    pose.position[i] = o + c.length * radial;
+    if (wantVelocity) pose.velocity[i] = c.length * driver.omega * perp(radial);
+    if (wantAcceleration)
+      pose.acceleration[i] = c.length * (driver.alpha * perp(radial) - driver.omega * driver.omega * radial);
+  }
+
+  signed char chooseSign(std::size_t i, const RrrPoint& r, const RrrCandidates& cand) const {
+    if (!guide.predicted.empty()) {
+      const Eigen::Vector2d& target = guide.predicted[i];
+      return (cand.open - target).squaredNorm() <= (cand.crossed - target).squaredNorm() ? 1 : -1;
+    }
+    if (!guide.signs.empty() && guide.signs[i] != 0) return guide.signs[i];
+    return r.branch == Branch::Open ? 1 : -1;
+  }
+
+  bool rrr(std::size_t i, const RrrPoint& r) {
+    const Eigen::Vector2d& p1 = pose.position[r.first.index];
+    const Eigen::Vector2d& p2 = pose.position[r.second.index];
+    const RrrCandidates cand = rrrCandidates(p1, r.firstLength, p2, r.secondLength);
+    if (cand.failure != AssemblyFailure::None) {
+      report = {PoseStatus::NotAssemblable, PointId{i}, cand.failure};
+      return false;
+    }
+    const signed char sign = chooseSign(i, r, cand);
+    const Eigen::Vector2d c = sign > 0 ? cand.open : cand.crossed;
+    pose.position[i] = c;
+    pose.branchSign[i] = sign;
+    pose.halfSeparation[i] = cand.halfSeparation;
+    const Eigen::Vector2d r1 = c - p1;
+    const Eigen::Vector2d r2 = c - p2;
+    pose.transmissionAngle[i] = std::atan2(std::abs(cross(r1, r2)), r1.dot(r2));
+    if (!wantVelocity || !ratesValid) return true;
+    Eigen::Vector2d v;
+    const Eigen::Vector2d& v1 = pose.velocity[r.first.index];
+    const Eigen::Vector2d& v2 = pose.velocity[r.second.index];
+    if (!rrrSolveRates(r1, r2, {r1.dot(v1), r2.dot(v2)}, v)) {
+      markSingular(i);
+      return true;
+    }
+    pose.velocity[i] = v;
+    if (!wantAcceleration) return true;
+    const Eigen::Vector2d rhs(r1.dot(pose.acceleration[r.first.index]) - (v - v1).squaredNorm(),
+                              r2.dot(pose.acceleration[r.second.index]) - (v - v2).squaredNorm());
+    rrrSolveRates(r1, r2, rhs, pose.acceleration[i]);  // same matrix: cannot be singular here
+    return true;
+  }
+
+  // The driven crank's rates are the driver's, exactly (not a difference of two velocities).
+  bool drivenCrank(const Link& l) {
+    const auto* c = std::get_if<CrankPoint>(&m.points[l.second.index].definition);
+    const auto* reversed = std::get_if<CrankPoint>(&m.points[l.first.index].definition);
+    return (c != nullptr && c->pivot == l.first) || (reversed != nullptr && reversed->pivot == l.second);
+  }
+
+  void link(std::size_t k) {
+    const Link& l = m.links[k];
+    const Eigen::Vector2d r = pose.position[l.second.index] - pose.position[l.first.index];
+    pose.linkAngle[k] = std::atan2(r.y(), r.x());
+    if (drivenCrank(l)) {
+      if (wantVelocity) pose.linkOmega[k] = driver.omega;
+      if (wantAcceleration) pose.linkAlpha[k] = driver.alpha;
+      return;
+    }
+    if (!ratesValid) return;
+    const double r2 = r.squaredNorm();
+    if (wantVelocity)
+      pose.linkOmega[k] = cross(r, pose.velocity[l.second.index] - pose.velocity[l.first.index]) / r2;
+    if (wantAcceleration)
+      pose.linkAlpha[k] = cross(r, pose.acceleration[l.second.index] - pose.acceleration[l.first.index]) / r2;
+  }
+
+  void attached(std::size_t i, const AttachedPoint& a) {
+    const std::size_t k = a.link.index;
+    link(k);  // the link's ends are solved already; its rates may not have been yet
+    const Link& l = m.links[k];
+    const Eigen::Vector2d base = pose.position[l.first.index];
+    const Eigen::Vector2d u(std::cos(pose.linkAngle[k]), std::sin(pose.linkAngle[k]));
+    const Eigen::Vector2d offset = a.along * u + a.across * perp(u);
+    pose.position[i] = base + offset;
+    if (!ratesValid) return;
+    const double w = pose.linkOmega[k];
+    if (wantVelocity) pose.velocity[i] = pose.velocity[l.first.index] + w * perp(offset);
+    if (wantAcceleration)
+      pose.acceleration[i] =
+          pose.acceleration[l.first.index] + pose.linkAlpha[k] * perp(offset) - w * w * offset;
+  }
+
+  PoseReport run() {
+    for (std::size_t i = 0; i < m.points.size(); ++i) {
+      const PointDefinition& def = m.points[i].definition;
+      if (const auto* g = std::get_if<GroundPoint>(&def)) ground(i, *g);
+      else if (const auto* c = std::get_if<CrankPoint>(&def)) crank(i, *c);
+      else if (const auto* r = std::get_if<RrrPoint>(&def)) {
+        if (!rrr(i, *r)) return report;
+      } else attached(i, std::get<AttachedPoint>(def));
+    }
+    for (std::size_t k = 0; k < m.links.size(); ++k) link(k);
+    return report;
+  }
+};
+
+std::string lengthName(const Mechanism& m, PointId a, PointId b, const std::string& fallback) {
+  for (const Link& l : m.links)
+    if ((l.first == a && l.second == b) || (l.first == b && l.second == a)) return l.name;
+  return fallback;
+}
+
+} // namespace
+
+void preparePose(const Mechanism& m, Pose& pose) {
+  const std::size_t n = m.points.size();
+  const std::size_t k = m.links.size();
+  pose.position.assign(n, Eigen::Vector2d::Zero());
+  pose.velocity.assign(n, Eigen::Vector2d::Zero());
+  pose.acceleration.assign(n, Eigen::Vector2d::Zero());
+  pose.transmissionAngle.assign(n, 0.0);
+  pose.branchSign.assign(n, 0);
+  pose.halfSeparation.assign(n, 0.0);
+  pose.linkAngle.assign(k, 0.0);
+  pose.linkOmega.assign(k, 0.0);
+  pose.linkAlpha.assign(k, 0.0);
+}
+
+PoseReport solvePoseInto(const Mechanism& m, const DriverState& driver, const SolveRequest& request,
+                         Pose& pose, const BranchGuide& guide) {
+  const bool acc = request.accelerations;
+  Solver solver{m, driver, request.velocities || acc, acc, pose, guide};
+  return solver.run();
+}
+
+Result<Pose> solvePose(const Mechanism& m, const DriverState& driver, const SolveRequest& request) {
+  if (auto e = checkMechanism(m)) return *e;
+  if (auto e = checkFinite(driver.angle, "input angle")) return *e;
+  if (auto e = checkFinite(driver.omega, "input omega")) return *e;
+  if (auto e = checkFinite(driver.alpha, "input alpha")) return *e;
+  Pose pose;
+  preparePose(m, pose);
+  const PoseReport report = solvePoseInto(m, driver, request, pose);
+  if (report.status == PoseStatus::Ok) return pose;
+  const ErrorCode code =
+      report.status == PoseStatus::Singular ? ErrorCode::Singular : ErrorCode::NotAssemblable;
+  return Error{code, m.points[report.culprit.index].name, describeFailure(m, report, pose, driver.angle)};
+}
+
+std::string describeFailure(const Mechanism& m, const PoseReport& report, const Pose& pose,
+                            double inputAngle) {
+  const std::size_t i = report.culprit.index;
+  const std::string& name = m.points[i].name;
+  const std::string at = " at crank angle " + io::formatShort(radToDeg(inputAngle)) + "°";
+  const auto* r = std::get_if<RrrPoint>(&m.points[i].definition);
+  if (report.status == PoseStatus::Ok || r == nullptr) return name + " solved" + at;
+  const std::string& n1 = m.points[r->first.index].name;
+  const std::string& n2 = m.points[r->second.index].name;
+  const std::string len1 = lengthName(m, report.culprit, r->first, "first length");
+  const std::string len2 = lengthName(m, report.culprit, r->second, "second length");
+  if (report.status == PoseStatus::Singular)
+    return name + " is at a toggle position" + at + ": " + len1 + " and " + len2 +
+           " are collinear, so angular velocity and acceleration are undefined there";
+  const double apart = (pose.position[r->second.index] - pose.position[r->first.index]).norm();
+  const std::string gap = n1 + " and " + n2 + " are " + io::formatShort(apart) + " " + m.lengthUnit + " apart, ";
+  switch (report.failure) {
+  case AssemblyFailure::TooFar:
+    return name + " cannot be assembled" + at + ": " + gap + "more than " + len1 + " + " + len2 +
+           " = " + io::formatShort(r->firstLength + r->secondLength) + " " + m.lengthUnit;
+  case AssemblyFailure::TooClose:
+    return name + " cannot be assembled" + at + ": " + gap + "less than |" + len1 + " − " + len2 +
+           "| = " + io::formatShort(std::abs(r->firstLength - r->secondLength)) + " " + m.lengthUnit;
+  case AssemblyFailure::Coincident:
+  case AssemblyFailure::None:
+    break;
+  }
+  return name + " cannot be assembled" + at + ": " + n1 + " and " + n2 + " coincide, so " + name +
+         " is undetermined";
+}
+
+} // namespace linkwright::kinematics

@@ -1,0 +1,42 @@
+#pragma once
+// Solves a Mechanism at one driver state by running its points in order: ground pivots, the
+// crank tip (B = O + l·(cos φ, sin φ), φ = input angle + phase), RRR dyads in closed form
+// (see rrr_dyad.h) and points fixed on links. Link rates follow exactly from their end
+// points: for a rigid link r = P2 − P1, ω = r×(v2−v1)/|r|² and α = r×(a2−a1)/|r|².
+// Nothing here differentiates numerically.
+
+#include "kinematics/model/mechanism.h"
+#include "kinematics/model/result.h"
+#include "kinematics/solve/pose.h"
+
+#include <span>
+#include <string>
+
+namespace linkwright::kinematics {
+
+/// Optional steering of the branch choice, used by the sweep to track branches continuously.
+struct BranchGuide {
+  /// Per point: +1/−1 overrides an RRR point's branch; empty means use the mechanism's.
+  std::span<const signed char> signs;
+  /// Per point: when non-empty, each RRR point takes the candidate nearest this position.
+  std::span<const Eigen::Vector2d> predicted;
+};
+
+/// Sizes `pose` for `mechanism` (call once; solvePoseInto then never allocates).
+void preparePose(const Mechanism& mechanism, Pose& pose);
+
+/// Solves into a prepared pose. Assumes checkMechanism passed. Never throws or allocates.
+PoseReport solvePoseInto(const Mechanism& mechanism, const DriverState& driver,
+                         const SolveRequest& request, Pose& pose, const BranchGuide& guide = {});
+
+/// Convenience: validates, solves with the mechanism's branches, and turns a failure into an
+/// Error whose message names the point, the input angle and the reason.
+Result<Pose> solvePose(const Mechanism& mechanism, const DriverState& driver,
+                       const SolveRequest& request = {});
+
+/// A sentence explaining a failed report, e.g. "C cannot be assembled at crank angle 200°:
+/// B and O4 are 125 mm apart, more than coupler + rocker = 115 mm".
+std::string describeFailure(const Mechanism& mechanism, const PoseReport& report,
+                            const Pose& pose, double inputAngle);
+
+} // namespace linkwright::kinematics

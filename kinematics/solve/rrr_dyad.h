@@ -1,0 +1,58 @@
+#pragma once
+// Closed-form RRR dyad: the joint C held at distance l1 from a known point P1 and at l2 from a
+// known point P2 (both may move). Derivation (all vectors in the plane, × the scalar cross):
+//
+//   Position. |C−P1| = l1, |C−P2| = l2. With d = P2−P1, L = |d|, u = d/L, n = u rotated +90°:
+//     C = P1 + a·u + s·h·n,   a = (l1² − l2² + L²) / (2L),
+//     h = √((l1+l2−L)(l1+l2+L)(L−l1+l2)(L+l1−l2)) / (2L)      (Heron; stable near toggle)
+//   and s = +1 for Branch::Open, −1 for Crossed, since (C−P1)×(C−P2) = s·h·L.
+//   It assembles iff |l1−l2| ≤ L ≤ l1+l2 (within a relative tolerance, then h = 0).
+//
+//   Velocity. Differentiate (C−Pk)·(C−Pk) = lk²:  (C−Pk)·(vC − vk) = 0, k = 1, 2, so
+//     [r1ᵀ; r2ᵀ] vC = [r1·v1; r2·v2],  rk = C − Pk,  det = r1×r2 = s·h·L.
+//   Acceleration. Differentiate again: rk·(aC − ak) + |vC − vk|² = 0, so
+//     [r1ᵀ; r2ᵀ] aC = [r1·a1 − |vC−v1|²; r2·a2 − |vC−v2|²]   (same matrix).
+//   The matrix is singular when C, P1, P2 are collinear (h = 0, transmission angle 0° or
+//   180°): the position exists, the rates do not. We flag that instead of dividing by ~0.
+
+#include <Eigen/Core>
+
+namespace linkwright::kinematics {
+
+/// Why a dyad cannot be assembled.
+enum class AssemblyFailure {
+  None,
+  TooFar,      ///< |P1P2| > l1 + l2: the two links cannot reach each other
+  TooClose,    ///< |P1P2| < |l1 − l2|: one circle lies inside the other
+  Coincident,  ///< P1 and P2 coincide: C is undetermined
+};
+
+/// Relative tolerance on the assembly limits |l1−l2| ≤ L ≤ l1+l2: a pose past a limit by less
+/// than this fraction of l1+l2 is taken as exactly at it (round-off, not a real gap).
+inline constexpr double kAssemblyTolerance = 1e-10;
+/// Below this |sin(transmission angle)| the dyad is treated as singular: the rates' relative
+/// round-off error grows like 1e-16/sin², so at 1e-7 they would already be uncertain.
+inline constexpr double kSingularSine = 1e-7;
+
+/// Both candidate positions of C, or why there are none.
+struct RrrCandidates {
+  AssemblyFailure failure = AssemblyFailure::None;
+  Eigen::Vector2d open = Eigen::Vector2d::Zero();     ///< s = +1
+  Eigen::Vector2d crossed = Eigen::Vector2d::Zero();  ///< s = −1
+  double halfSeparation = 0.0;  ///< h: half the distance between the two candidates
+  double distance = 0.0;        ///< L = |P2 − P1|
+};
+
+/// Solves the dyad's position for both branches. Lengths positive, points finite.
+RrrCandidates rrrCandidates(const Eigen::Vector2d& p1, double l1, const Eigen::Vector2d& p2,
+                            double l2);
+
+/// |sin| of the angle at C between C→P1 and C→P2 (0 at a toggle position).
+double rrrSine(const Eigen::Vector2d& c, const Eigen::Vector2d& p1, const Eigen::Vector2d& p2);
+
+/// Solves the 2×2 system [r1ᵀ; r2ᵀ] x = rhs (see the derivation above). Returns false when
+/// |r1×r2| ≤ kSingularSine·|r1|·|r2|, leaving x untouched.
+bool rrrSolveRates(const Eigen::Vector2d& r1, const Eigen::Vector2d& r2, const Eigen::Vector2d& rhs,
+                   Eigen::Vector2d& x);
+
+} // namespace linkwright::kinematics

@@ -1,0 +1,206 @@
+#include "kinematics/solve/sweep.h"
+
+#include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/units.h"
+#include "kinematics/model/validate.h"
+#include "kinematics/solve/pose_solver.h"
+
+#include <cmath>
+
+namespace linkwright::kinematics {
+namespace {
+
+// Halving a step 30 times brings it below a nanoradian for any step up to a full turn.
+constexpr int kMaxRefineDepth = 30;
+constexpr SolveRequest kPositionsOnly{false, false};
+
+double wrapToPi(double angle) { return std::remainder(angle, 2.0 * kPi); }
+
+bool isDyad(const Mechanism& m, std::size_t i) {
+  return std::holds_alternative<RrrPoint>(m.points[i].definition);
+}
+
+// True when some dyad joint moved so far, relative to the gap between its two candidates, that
+// the branch could have switched within the step.
+bool branchAmbiguous(const Mechanism& m, const Pose& a, const Pose& b) {
+  for (std::size_t i = 0; i < m.points.size(); ++i) {
+    if (!isDyad(m, i)) continue;
+    const double separation = 2.0 * std::min(a.halfSeparation[i], b.halfSeparation[i]);
+    if ((b.position[i] - a.position[i]).norm() >= 0.25 * separation) return true;
+  }
+  return false;
+}
+
+// Solves one sweep: tracks branches from sample to sample and writes the columns.
+class Tracker {
+public:
+  Tracker(const Mechanism& m, const SweepSpec& spec, const SolveRequest& request, SweepResult& out)
+      : m_mech(m), m_spec(spec), m_request(request), m_out(out), m_scratch(kMaxRefineDepth + 1) {
+    preparePose(m, m_last);
+    preparePose(m, m_current);
+    preparePose(m, m_before);
+    for (Pose& p : m_scratch) preparePose(m, p);
+    m_predicted.assign(m.points.size(), Eigen::Vector2d::Zero());
+  }
+
+  void run() {
+    for (std::size_t j = 0; j < m_spec.samples; ++j) {
+      const double angle = sweepAngle(m_spec, j);
+      m_out.inputAngle[j] = angle;
+      const PoseReport report = solveSample(angle);
+      m_out.report[j] = report;
+      if (report.status == PoseStatus::NotAssemblable) {
+        m_haveLast = m_haveBefore = false;
+        continue;
+      }
+      store(j);
+      m_before.position = m_last.position;  // same sizes: copies, no allocation
+      m_beforeAngle = m_lastAngle;
+      m_haveBefore = m_haveLast;
+      m_last = m_current;
+      m_lastAngle = angle;
+      m_haveLast = true;
+    }
+  }
+
+private:
+  DriverState driver(double angle) const { return {angle, m_spec.omega, m_spec.alpha}; }
+
+  PoseReport solveSample(double angle) {
+    if (!m_haveLast) return solvePoseInto(m_mech, driver(angle), m_request, m_current);
+    const BranchGuide keep{m_last.branchSign, {}};
+    PoseReport report = solvePoseInto(m_mech, driver(angle), m_request, m_current, keep);
+    if (report.status == PoseStatus::NotAssemblable || !branchAmbiguous(m_mech, m_last, m_current))
+      return report;
+    const Eigen::Vector2d* before = m_haveBefore ? m_before.position.data() : nullptr;
+    if (!refine(0, m_lastAngle, m_last, m_beforeAngle, before, angle, m_scratch[0])) {
+      // The path leaves the assemblable region between two samples: start afresh here.
+      return solvePoseInto(m_mech, driver(angle), m_request, m_current);
+    }
+    const BranchGuide tracked{m_scratch[0].branchSign, {}};
+    return solvePoseInto(m_mech, driver(angle), m_request, m_current, tracked);
+  }
+
+  // Positions at angle b continuing from pose `a` at angle aAngle; halves the step while a
+  // branch switch cannot be ruled out. `before` (may be null) is the path before `a`.
+  bool refine(int depth, double aAngle, const Pose& a, double beforeAngle,
+              const Eigen::Vector2d* before, double b, Pose& out) {
+    const BranchGuide keep{a.branchSign, {}};
+    if (solvePoseInto(m_mech, driver(b), kPositionsOnly, out, keep).status == PoseStatus::NotAssemblable)
+      return false;
+    if (!branchAmbiguous(m_mech, a, out)) return true;
+    if (depth == kMaxRefineDepth) {
+      if (before == nullptr) return true;
+      const double ratio = (b - aAngle) / (aAngle - beforeAngle);
+      for (std::size_t i = 0; i < m_predicted.size(); ++i)
+        m_predicted[i] = a.position[i] + ratio * (a.position[i] - before[i]);
+      const BranchGuide nearest{{}, m_predicted};
+      solvePoseInto(m_mech, driver(b), kPositionsOnly, out, nearest);
+      return true;
+    }
+    const double mid = 0.5 * (aAngle + b);
+    Pose& midPose = m_scratch[depth + 1];
+    if (!refine(depth + 1, aAngle, a, beforeAngle, before, mid, midPose)) return false;
+    return refine(depth + 1, mid, midPose, aAngle, a.position.data(), b, out);
+  }
+
+  void store(std::size_t j) {
+    const bool rates = m_current.linkOmega.size() == m_mech.links.size() &&
+                       m_out.report[j].status == PoseStatus::Ok;
+    for (std::size_t i = 0; i < m_mech.points.size(); ++i) {
+      m_out.position[i][j] = m_current.position[i];
+      if (rates && m_request.velocities) m_out.velocity[i][j] = m_current.velocity[i];
+      if (rates && m_request.accelerations) m_out.acceleration[i][j] = m_current.acceleration[i];
+      if (isDyad(m_mech, i)) m_out.transmissionAngle[i][j] = m_current.transmissionAngle[i];
+    }
+    for (std::size_t k = 0; k < m_mech.links.size(); ++k) {
+      const double raw = m_current.linkAngle[k];
+      m_out.linkAngle[k][j] = m_haveAnyAngle ? m_lastLinkAngle(k) + wrapToPi(raw - m_lastLinkAngle(k)) : raw;
+      if (rates && m_request.velocities) m_out.linkOmega[k][j] = m_current.linkOmega[k];
+      if (rates && m_request.accelerations) m_out.linkAlpha[k][j] = m_current.linkAlpha[k];
+    }
+    m_lastStored = j;
+    m_haveAnyAngle = true;
+  }
+
+  double m_lastLinkAngle(std::size_t k) const { return m_out.linkAngle[k][m_lastStored]; }
+
+  const Mechanism& m_mech;
+  const SweepSpec& m_spec;
+  const SolveRequest& m_request;
+  SweepResult& m_out;
+  Pose m_current, m_last, m_before;
+  std::vector<Pose> m_scratch;
+  std::vector<Eigen::Vector2d> m_predicted;
+  double m_lastAngle = 0.0, m_beforeAngle = 0.0;
+  bool m_haveLast = false, m_haveBefore = false, m_haveAnyAngle = false;
+  std::size_t m_lastStored = 0;
+};
+
+void allocate(const Mechanism& m, std::size_t n, const SolveRequest& request, SweepResult& out) {
+  const std::size_t points = m.points.size();
+  const std::size_t links = m.links.size();
+  const bool velocities = request.velocities || request.accelerations;
+  out.request = {velocities, request.accelerations};
+  out.inputAngle.assign(n, 0.0);
+  out.report.assign(n, PoseReport{});
+  out.position.assign(points, std::vector<Eigen::Vector2d>(n, Eigen::Vector2d::Zero()));
+  out.velocity.assign(velocities ? points : 0, std::vector<Eigen::Vector2d>(n, Eigen::Vector2d::Zero()));
+  out.acceleration.assign(request.accelerations ? points : 0,
+                          std::vector<Eigen::Vector2d>(n, Eigen::Vector2d::Zero()));
+  out.linkAngle.assign(links, std::vector<double>(n, 0.0));
+  out.linkOmega.assign(velocities ? links : 0, std::vector<double>(n, 0.0));
+  out.linkAlpha.assign(request.accelerations ? links : 0, std::vector<double>(n, 0.0));
+  out.transmissionAngle.assign(points, {});
+  for (std::size_t i = 0; i < points; ++i)
+    if (isDyad(m, i)) out.transmissionAngle[i].assign(n, 0.0);
+}
+
+// Collects the runs of failed samples and the singular samples after the loop.
+void summarize(const Mechanism& m, const SweepSpec& spec, SweepResult& out) {
+  Pose scratch;
+  for (std::size_t j = 0; j < out.size(); ++j) {
+    const PoseReport& r = out.report[j];
+    if (r.status == PoseStatus::Singular) out.singularAngles.push_back(out.inputAngle[j]);
+    if (r.status == PoseStatus::Ok) continue;
+    if (!out.firstFailure && r.status == PoseStatus::NotAssemblable) {
+      preparePose(m, scratch);
+      solvePoseInto(m, {out.inputAngle[j], spec.omega, spec.alpha}, kPositionsOnly, scratch);
+      out.firstFailure = describeFailure(m, r, scratch, out.inputAngle[j]);
+    }
+    if (r.status != PoseStatus::NotAssemblable) continue;
+    const bool continues = j > 0 && out.report[j - 1].status == PoseStatus::NotAssemblable;
+    if (continues) out.notAssembled.back().to = out.inputAngle[j];
+    else out.notAssembled.push_back({out.inputAngle[j], out.inputAngle[j]});
+  }
+}
+
+} // namespace
+
+std::optional<Error> checkSweepSpec(const SweepSpec& spec) {
+  if (auto e = checkFinite(spec.fromAngle, "from angle")) return e;
+  if (auto e = checkFinite(spec.toAngle, "to angle")) return e;
+  if (auto e = checkFinite(spec.omega, "omega")) return e;
+  if (auto e = checkFinite(spec.alpha, "alpha")) return e;
+  if (spec.samples == 0)
+    return Error{ErrorCode::InvalidValue, "samples", "samples must be at least 1 (got 0)"};
+  return std::nullopt;
+}
+
+double sweepAngle(const SweepSpec& spec, std::size_t index) {
+  if (spec.samples <= 1) return spec.fromAngle;
+  const double t = static_cast<double>(index) / static_cast<double>(spec.samples - 1);
+  return index + 1 == spec.samples ? spec.toAngle : spec.fromAngle + t * (spec.toAngle - spec.fromAngle);
+}
+
+Result<SweepResult> sweep(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request) {
+  if (auto e = checkMechanism(mechanism)) return *e;
+  if (auto e = checkSweepSpec(spec)) return *e;
+  SweepResult out;
+  allocate(mechanism, spec.samples, request, out);
+  Tracker(mechanism, spec, out.request, out).run();
+  summarize(mechanism, spec, out);
+  return out;
+}
+
+} // namespace linkwright::kinematics

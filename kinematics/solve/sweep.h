@@ -1,0 +1,78 @@
+#pragma once
+// A sweep solves a mechanism over a range of input angles at a given crank ω and α, tracking
+// each dyad's assembly branch continuously. Results are stored one column per quantity,
+// allocated once before the loop. Link angles are unwrapped, so they are continuous (no jumps
+// at ±180°).
+//
+// Branch tracking: away from toggle positions a dyad's branch cannot change, so each sample
+// keeps the previous sample's branch. When a dyad joint moves by more than a quarter of the
+// distance between its two candidate positions within one step (near a toggle), the step is
+// halved recursively; at the finest level the candidate nearest the linear extrapolation of
+// the path is taken. This follows a change-point linkage smoothly through its singular
+// position (a parallelogram stays a parallelogram).
+
+#include "kinematics/model/mechanism.h"
+#include "kinematics/model/result.h"
+#include "kinematics/solve/pose.h"
+
+#include <optional>
+#include <vector>
+
+namespace linkwright::kinematics {
+
+/// The input range and state of a sweep. Angles in rad; `samples` evenly spaced inputs from
+/// `fromAngle` to `toAngle` inclusive (one sample: `fromAngle` only). At every sample the crank
+/// has angular velocity `omega` (rad/s) and acceleration `alpha` (rad/s²): a kinematic state
+/// table, as the seeds' tables are, not a time integration.
+struct SweepSpec {
+  double fromAngle = 0.0;
+  double toAngle = 0.0;
+  std::size_t samples = 1;
+  double omega = 0.0;
+  double alpha = 0.0;
+  bool operator==(const SweepSpec&) const = default;
+};
+
+/// A closed interval of input angles (rad).
+struct AngleRange {
+  double from = 0.0;
+  double to = 0.0;
+  bool operator==(const AngleRange&) const = default;
+};
+
+/// Everything a sweep computed. Outer index: point or link id; inner index: sample.
+/// Columns for quantities not requested are empty.
+struct SweepResult {
+  SolveRequest request;
+  std::vector<double> inputAngle;       ///< rad
+  std::vector<PoseReport> report;       ///< per sample: Ok, Singular or NotAssemblable
+  std::vector<std::vector<Eigen::Vector2d>> position;
+  std::vector<std::vector<Eigen::Vector2d>> velocity;
+  std::vector<std::vector<Eigen::Vector2d>> acceleration;
+  std::vector<std::vector<double>> linkAngle;  ///< rad, unwrapped over the sweep
+  std::vector<std::vector<double>> linkOmega;  ///< rad/s
+  std::vector<std::vector<double>> linkAlpha;  ///< rad/s²
+  std::vector<std::vector<double>> transmissionAngle;  ///< rad, for RRR points; others empty
+  std::vector<AngleRange> notAssembled;  ///< runs of consecutive samples that failed
+  std::vector<double> singularAngles;    ///< samples where rates are undefined (toggle)
+  std::optional<std::string> firstFailure;  ///< sentence describing the first failed sample
+
+  std::size_t size() const { return inputAngle.size(); }
+  bool ok(std::size_t sample) const { return report[sample].status == PoseStatus::Ok; }
+  bool assembled(std::size_t sample) const {
+    return report[sample].status != PoseStatus::NotAssemblable;
+  }
+};
+
+/// Error naming the field if the spec has a non-finite angle, ω or α, or zero samples.
+std::optional<Error> checkSweepSpec(const SweepSpec& spec);
+
+/// The input angle of sample `index` (rad).
+double sweepAngle(const SweepSpec& spec, std::size_t index);
+
+/// Runs the sweep. Fails only for an invalid mechanism or spec; samples that cannot be
+/// assembled are reported in the result (report, notAssembled, firstFailure).
+Result<SweepResult> sweep(const Mechanism& mechanism, const SweepSpec& spec,
+                          const SolveRequest& request = {});
+
+} // namespace linkwright::kinematics

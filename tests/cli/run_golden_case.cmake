@@ -1,0 +1,33 @@
+# Runs linkwright-cli with CASE_DIR/args.txt and compares its output with the case's files.
+# Set UPDATE_GOLDEN=1 in the environment to rewrite the expected output instead.
+file(STRINGS ${CASE_DIR}/args.txt args)
+execute_process(COMMAND ${CLI} ${args} OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
+
+set(expected_rc 0)
+if(EXISTS ${CASE_DIR}/exit_code.txt)
+  file(STRINGS ${CASE_DIR}/exit_code.txt expected_rc)
+endif()
+if(NOT rc STREQUAL expected_rc)
+  message(FATAL_ERROR "exit code ${rc}, expected ${expected_rc}\nstderr:\n${err}")
+endif()
+
+file(GLOB expected_file ${CASE_DIR}/expected.*)
+if(expected_file)
+  if("$ENV{UPDATE_GOLDEN}" STREQUAL "1")
+    file(WRITE ${expected_file} "${out}")
+  endif()
+  file(READ ${expected_file} expected)
+  if(NOT out STREQUAL expected)
+    message(FATAL_ERROR "standard output differs from ${expected_file}\n--- got:\n${out}")
+  endif()
+endif()
+
+if(EXISTS ${CASE_DIR}/stderr.txt)
+  file(STRINGS ${CASE_DIR}/stderr.txt wanted_lines)
+  foreach(line IN LISTS wanted_lines)
+    string(FIND "${err}" "${line}" at)
+    if(at EQUAL -1)
+      message(FATAL_ERROR "standard error lacks: ${line}\n--- got:\n${err}")
+    endif()
+  endforeach()
+endif()
