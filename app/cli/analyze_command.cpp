@@ -1,5 +1,6 @@
 #include "app/cli/atomic_file.h"
 #include "app/cli/commands.h"
+#include "app/cli/text_table.h"
 
 #include "kinematics/analysis/assembly_range.h"
 #include "kinematics/io/csv_writer.h"
@@ -106,7 +107,8 @@ ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err)
   if (!result) return fail(result.error());
 
   std::ostringstream csv;
-  kinematics::io::writeSweepCsv(csv, *mechanism, *result);
+  if (inv.tableFormat) writeSweepTable(csv, *mechanism, *result);
+  else kinematics::io::writeSweepCsv(csv, *mechanism, *result);
   if (inv.outputFile) {
     if (auto problem = writeFileAtomically(*inv.outputFile, csv.str())) {
       err << "linkwright-cli: " << *problem << "\n";

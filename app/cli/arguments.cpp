@@ -48,7 +48,7 @@ kinematics::Result<std::vector<double>> parseList(const std::string& option, con
 const std::set<std::string>& optionsOf(Command command) {
   static const std::set<std::string> analyze{"--fourbar", "--example", "--unit", "--rpm", "--omega",
                                              "--alpha", "--from", "--to", "--step", "--samples",
-                                             "--branch", "--coupler-point", "-o", "--output"};
+                                             "--branch", "--coupler-point", "-o", "--output", "--format"};
   static const std::set<std::string> classify{"--fourbar", "--example", "--unit", "--branch", "--json"};
   static const std::set<std::string> none{};
   switch (command) {
@@ -113,6 +113,10 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
   } else if (option == "-o" || option == "--output") {
     if (value.empty()) return usage(option, option + " needs a file name");
     inv.outputFile = value;
+  } else if (option == "--format") {
+    if (value != "csv" && value != "table")
+      return usage(option, option + " must be 'csv' or 'table' (got '" + value + "')");
+    inv.tableFormat = value == "table";
   } else if (option == "--json") {
     inv.json = true;
   }

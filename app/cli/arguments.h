@@ -34,6 +34,7 @@ struct Invocation {
   std::optional<kinematics::CouplerPointSpec> couplerPoint;
   std::optional<std::string> outputFile;
   bool json = false;
+  bool tableFormat = false;  ///< analyze --format table: aligned text instead of CSV
 };
 
 /// Parses the arguments after the program name.

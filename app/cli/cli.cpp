@@ -44,7 +44,8 @@ constexpr const char* kAnalyzeOptions = R"(Speed and range (analyze):
                       angle step in degrees (default: the example's; 1 for --fourbar),
                       or N evenly spaced angles from --from to --to inclusive
   --coupler-point U,V add point P fixed on the coupler: U along B→C, V 90° CCW from it
-  -o, --output FILE   write the CSV to FILE (atomically) instead of standard output
+  --format csv|table  CSV (default) or an aligned table of the link columns, 4 decimals
+  -o, --output FILE   write the output to FILE (atomically) instead of standard output
 
 Output: RFC 4180 CSV, '.' decimal point, round-trip precision. Columns carry units:
   crank_angle_deg, <link>_angle_deg, <link>_omega_rad_s, <link>_alpha_rad_s2 for links

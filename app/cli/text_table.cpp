@@ -1,0 +1,39 @@
+#include "app/cli/text_table.h"
+
+#include "kinematics/io/number_format.h"
+#include "kinematics/io/sweep_columns.h"
+
+#include <algorithm>
+#include <iomanip>
+
+namespace linkwright::cli {
+
+void writeSweepTable(std::ostream& out, const kinematics::Mechanism& m, const kinematics::SweepResult& r,
+                     int decimals) {
+  using kinematics::io::ColumnQuantity;
+  std::vector<kinematics::io::SweepColumn> columns;
+  for (auto& c : kinematics::io::sweepColumns(m, r.request)) {
+    // The crank's own ω and α are the constant input: the CSV has them, the table need not.
+    const bool crankRate = (c.quantity == ColumnQuantity::LinkOmega || c.quantity == ColumnQuantity::LinkAlpha) &&
+                           kinematics::io::isDrivenCrankLink(m, kinematics::LinkId{c.index});
+    if (c.quantity <= ColumnQuantity::TransmissionAngle && !crankRate) columns.push_back(std::move(c));
+  }
+  std::vector<int> widths;
+  for (const auto& c : columns) {
+    widths.push_back(std::max(static_cast<int>(c.name.size()), decimals + 8));
+    out << (widths.size() > 1 ? "  " : "") << std::setw(widths.back()) << c.name;
+  }
+  out << "\n";
+  for (std::size_t j = 0; j < r.size(); ++j) {
+    if (!r.assembled(j)) continue;
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      const bool defined = r.ok(j) || !columns[c].isRate();
+      const std::string text =
+          defined ? kinematics::io::formatFixed(columns[c].value(r, j), decimals) : std::string("toggle");
+      out << (c ? "  " : "") << std::setw(widths[c]) << text;
+    }
+    out << "\n";
+  }
+}
+
+} // namespace linkwright::cli

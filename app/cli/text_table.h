@@ -1,0 +1,17 @@
+#pragma once
+// `analyze --format table`: the sweep as an aligned, fixed-decimal table for reading in a
+// terminal, like the seeds' printed tables (angles, ω and α of the moving links, and the
+// transmission angle). CSV remains the format for tools.
+
+#include "kinematics/model/mechanism.h"
+#include "kinematics/solve/sweep.h"
+
+#include <ostream>
+
+namespace linkwright::cli {
+
+/// Writes the link columns of `result` with `decimals` digits after the point.
+void writeSweepTable(std::ostream& out, const kinematics::Mechanism& mechanism,
+                     const kinematics::SweepResult& result, int decimals = 4);
+
+} // namespace linkwright::cli

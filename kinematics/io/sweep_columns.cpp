@@ -1,0 +1,82 @@
+#include "kinematics/io/sweep_columns.h"
+
+#include "kinematics/model/units.h"
+
+namespace linkwright::kinematics::io {
+namespace {
+
+bool isDyad(const Point& p) { return std::holds_alternative<RrrPoint>(p.definition); }
+
+} // namespace
+
+bool isDrivenCrankLink(const Mechanism& m, LinkId id) {
+  const Link& link = m.links[id.index];
+  const auto* crank = std::get_if<CrankPoint>(&m.points[link.second.index].definition);
+  return crank != nullptr && crank->pivot == link.first && crank->phase == 0.0;
+}
+
+bool SweepColumn::isRate() const {
+  switch (quantity) {
+  case ColumnQuantity::LinkOmega:
+  case ColumnQuantity::LinkAlpha:
+  case ColumnQuantity::PointVx:
+  case ColumnQuantity::PointVy:
+  case ColumnQuantity::PointAx:
+  case ColumnQuantity::PointAy: return true;
+  default: return false;
+  }
+}
+
+double SweepColumn::value(const SweepResult& r, std::size_t j) const {
+  switch (quantity) {
+  case ColumnQuantity::InputAngle: return radToDeg(r.inputAngle[j]);
+  case ColumnQuantity::LinkAngle: return radToDeg(r.linkAngle[index][j]);
+  case ColumnQuantity::LinkOmega: return r.linkOmega[index][j];
+  case ColumnQuantity::LinkAlpha: return r.linkAlpha[index][j];
+  case ColumnQuantity::TransmissionAngle: return radToDeg(r.transmissionAngle[index][j]);
+  case ColumnQuantity::PointX: return r.position[index][j].x();
+  case ColumnQuantity::PointY: return r.position[index][j].y();
+  case ColumnQuantity::PointVx: return r.velocity[index][j].x();
+  case ColumnQuantity::PointVy: return r.velocity[index][j].y();
+  case ColumnQuantity::PointAx: return r.acceleration[index][j].x();
+  case ColumnQuantity::PointAy: return r.acceleration[index][j].y();
+  }
+  return 0.0;
+}
+
+std::vector<SweepColumn> sweepColumns(const Mechanism& m, const SolveRequest& request) {
+  using Q = ColumnQuantity;
+  const bool vel = request.velocities || request.accelerations;
+  const bool acc = request.accelerations;
+  std::vector<SweepColumn> columns{{"crank_angle_deg", Q::InputAngle, 0}};
+  for (std::size_t k = 0; k < m.links.size(); ++k) {
+    const std::string& name = m.links[k].name;
+    if (!isDrivenCrankLink(m, LinkId{k})) columns.push_back({name + "_angle_deg", Q::LinkAngle, k});
+    if (vel) columns.push_back({name + "_omega_rad_s", Q::LinkOmega, k});
+    if (acc) columns.push_back({name + "_alpha_rad_s2", Q::LinkAlpha, k});
+  }
+  std::size_t dyads = 0;
+  for (const Point& p : m.points) dyads += isDyad(p) ? 1 : 0;
+  for (std::size_t i = 0; i < m.points.size(); ++i)
+    if (isDyad(m.points[i]))
+      columns.push_back({dyads > 1 ? "transmission_angle_" + m.points[i].name + "_deg" : "transmission_angle_deg",
+                         Q::TransmissionAngle, i});
+  const std::string& u = m.lengthUnit;
+  for (std::size_t i = 0; i < m.points.size(); ++i) {
+    if (std::holds_alternative<GroundPoint>(m.points[i].definition)) continue;
+    const std::string& p = m.points[i].name;
+    columns.push_back({p + "_x_" + u, Q::PointX, i});
+    columns.push_back({p + "_y_" + u, Q::PointY, i});
+    if (vel) {
+      columns.push_back({p + "_vx_" + u + "_s", Q::PointVx, i});
+      columns.push_back({p + "_vy_" + u + "_s", Q::PointVy, i});
+    }
+    if (acc) {
+      columns.push_back({p + "_ax_" + u + "_s2", Q::PointAx, i});
+      columns.push_back({p + "_ay_" + u + "_s2", Q::PointAy, i});
+    }
+  }
+  return columns;
+}
+
+} // namespace linkwright::kinematics::io

@@ -1,0 +1,44 @@
+#pragma once
+// The columns a sweep can be tabulated in, each with a name that carries its unit. The CSV
+// writer, the CLI's text table and (later) the GUI's plots all pick from this one list, so a
+// quantity has the same name and unit everywhere:
+//   crank_angle_deg                    the input angle (the sweep's grid)
+//   <link>_angle_deg                   each moving link other than the driven crank, unwrapped
+//   <link>_omega_rad_s, <link>_alpha_rad_s2   each moving link, crank first
+//   transmission_angle_deg             per RRR dyad (suffixed _<point> when there are several)
+//   <point>_x_<unit>, _y_, _vx_<unit>_s, _vy_, _ax_<unit>_s2, _ay_   each moving point
+
+#include "kinematics/model/mechanism.h"
+#include "kinematics/solve/sweep.h"
+
+#include <string>
+#include <vector>
+
+namespace linkwright::kinematics::io {
+
+enum class ColumnQuantity {
+  InputAngle, LinkAngle, LinkOmega, LinkAlpha, TransmissionAngle,
+  PointX, PointY, PointVx, PointVy, PointAx, PointAy,
+};
+
+/// One column: what it holds and of which link or point (`index`).
+struct SweepColumn {
+  std::string name;  ///< e.g. "rocker_omega_rad_s"
+  ColumnQuantity quantity = ColumnQuantity::InputAngle;
+  std::size_t index = 0;
+  bool operator==(const SweepColumn&) const = default;
+
+  /// True for velocity and acceleration columns: undefined at a toggle position.
+  bool isRate() const;
+  /// The value at `sample`, in the column's unit (angles in degrees).
+  double value(const SweepResult& result, std::size_t sample) const;
+};
+
+/// True for the link from the crank pivot to the driven crank tip (zero phase): its angle is
+/// the input angle and its ω, α are the driver's.
+bool isDrivenCrankLink(const Mechanism& mechanism, LinkId link);
+
+/// All columns available for this mechanism and request, in CSV order.
+std::vector<SweepColumn> sweepColumns(const Mechanism& mechanism, const SolveRequest& request);
+
+} // namespace linkwright::kinematics::io
