@@ -54,8 +54,6 @@ struct Pose {
   std::vector<double> transmissionAngle;
   /// For RRR points: +1 open, −1 crossed, the branch actually used; else 0.
   std::vector<signed char> branchSign;
-  /// For RRR points: half the distance between the two branch candidates; else 0.
-  std::vector<double> halfSeparation;
   bool operator==(const Pose&) const = default;
 };
 

@@ -65,7 +65,6 @@ struct Solver {
     const Eigen::Vector2d c = sign > 0 ? cand.open : cand.crossed;
     pose.position[i] = c;
     pose.branchSign[i] = sign;
-    pose.halfSeparation[i] = cand.halfSeparation;
     const Eigen::Vector2d r1 = c - p1;
     const Eigen::Vector2d r2 = c - p2;
     pose.transmissionAngle[i] = std::atan2(std::abs(cross(r1, r2)), r1.dot(r2));
@@ -155,7 +154,6 @@ void preparePose(const Mechanism& m, Pose& pose) {
   pose.acceleration.assign(n, Eigen::Vector2d::Zero());
   pose.transmissionAngle.assign(n, 0.0);
   pose.branchSign.assign(n, 0);
-  pose.halfSeparation.assign(n, 0.0);
   pose.linkAngle.assign(k, 0.0);
   pose.linkOmega.assign(k, 0.0);
   pose.linkAlpha.assign(k, 0.0);

@@ -10,8 +10,12 @@
 namespace linkwright::kinematics {
 namespace {
 
-// Halving a step 30 times brings it below a nanoradian for any step up to a full turn.
-constexpr int kMaxRefineDepth = 30;
+// Branch refinement stops at steps of 1e-7 rad: near a toggle the two candidates are about
+// (link length)·Δθ apart, and below this their separation drowns in the round-off of h²
+// (≈ 1e-16·length², see rrr_dyad.h), so finer steps would only add noise. The depth cap
+// (a full turn halved 40 times is 6e-12 rad) merely bounds the scratch space.
+constexpr double kMinRefineStep = 1e-7;
+constexpr int kMaxRefineDepth = 40;
 constexpr SolveRequest kPositionsOnly{false, false};
 
 double wrapToPi(double angle) { return std::remainder(angle, 2.0 * kPi); }
@@ -20,13 +24,25 @@ bool isDyad(const Mechanism& m, std::size_t i) {
   return std::holds_alternative<RrrPoint>(m.points[i].definition);
 }
 
-// True when some dyad joint moved so far, relative to the gap between its two candidates, that
-// the branch could have switched within the step.
-bool branchAmbiguous(const Mechanism& m, const Pose& a, const Pose& b) {
-  for (std::size_t i = 0; i < m.points.size(); ++i) {
-    if (!isDyad(m, i)) continue;
-    const double separation = 2.0 * std::min(a.halfSeparation[i], b.halfSeparation[i]);
-    if ((b.position[i] - a.position[i]).norm() >= 0.25 * separation) return true;
+// How far the distance between a dyad's parents is from an assembly limit (l1 + l2 or
+// |l1 − l2|): the dyad toggles, and its branch may switch, only where this reaches zero.
+double limitGap(const RrrPoint& r, const Pose& pose) {
+  const double L = (pose.position[r.second.index] - pose.position[r.first.index]).norm();
+  return std::min(r.firstLength + r.secondLength - L, L - std::abs(r.firstLength - r.secondLength));
+}
+
+// True unless every dyad provably stays away from its toggle between poses a and b. The gap
+// changes no faster than the parents move, so it cannot close if the gaps at both ends exceed
+// the parents' displacement (doubled, since a chord understates the path). Steps over half a
+// radian are always split: there a chord says too little about the path.
+bool branchAmbiguous(const Mechanism& m, double aAngle, const Pose& a, double bAngle, const Pose& b) {
+  if (std::abs(bAngle - aAngle) > 0.5) return true;
+  for (const Point& p : m.points) {
+    const auto* r = std::get_if<RrrPoint>(&p.definition);
+    if (r == nullptr) continue;
+    const double motion = (b.position[r->first.index] - a.position[r->first.index]).norm() +
+                          (b.position[r->second.index] - a.position[r->second.index]).norm();
+    if (limitGap(*r, a) + limitGap(*r, b) <= 2.0 * motion) return true;
   }
   return false;
 }
@@ -70,7 +86,7 @@ private:
     if (!m_haveLast) return solvePoseInto(m_mech, driver(angle), m_request, m_current);
     const BranchGuide keep{m_last.branchSign, {}};
     PoseReport report = solvePoseInto(m_mech, driver(angle), m_request, m_current, keep);
-    if (report.status == PoseStatus::NotAssemblable || !branchAmbiguous(m_mech, m_last, m_current))
+    if (report.status == PoseStatus::NotAssemblable || !branchAmbiguous(m_mech, m_lastAngle, m_last, angle, m_current))
       return report;
     const Eigen::Vector2d* before = m_haveBefore ? m_before.position.data() : nullptr;
     if (!refine(0, m_lastAngle, m_last, m_beforeAngle, before, angle, m_scratch[0])) {
@@ -88,8 +104,8 @@ private:
     const BranchGuide keep{a.branchSign, {}};
     if (solvePoseInto(m_mech, driver(b), kPositionsOnly, out, keep).status == PoseStatus::NotAssemblable)
       return false;
-    if (!branchAmbiguous(m_mech, a, out)) return true;
-    if (depth == kMaxRefineDepth) {
+    if (!branchAmbiguous(m_mech, aAngle, a, b, out)) return true;
+    if (std::abs(b - aAngle) <= kMinRefineStep || depth == kMaxRefineDepth) {
       if (before == nullptr) return true;
       const double ratio = (b - aAngle) / (aAngle - beforeAngle);
       for (std::size_t i = 0; i < m_predicted.size(); ++i)
@@ -105,8 +121,7 @@ private:
   }
 
   void store(std::size_t j) {
-    const bool rates = m_current.linkOmega.size() == m_mech.links.size() &&
-                       m_out.report[j].status == PoseStatus::Ok;
+    const bool rates = m_out.report[j].status == PoseStatus::Ok;
     for (std::size_t i = 0; i < m_mech.points.size(); ++i) {
       m_out.position[i][j] = m_current.position[i];
       if (rates && m_request.velocities) m_out.velocity[i][j] = m_current.velocity[i];

@@ -5,11 +5,12 @@
 // at ±180°).
 //
 // Branch tracking: away from toggle positions a dyad's branch cannot change, so each sample
-// keeps the previous sample's branch. When a dyad joint moves by more than a quarter of the
-// distance between its two candidate positions within one step (near a toggle), the step is
-// halved recursively; at the finest level the candidate nearest the linear extrapolation of
-// the path is taken. This follows a change-point linkage smoothly through its singular
-// position (a parallelogram stays a parallelogram).
+// keeps the previous sample's branch. A dyad toggles only where the distance between its
+// parents reaches an assembly limit; when a step cannot rule that out (the distance to the
+// limit at both ends is small against how far the parents move), the step is halved
+// recursively, down to 1e-7 rad; there the candidate nearest the linear extrapolation
+// of the path is taken. This follows a change-point linkage smoothly through its singular
+// position: a parallelogram stays a parallelogram, an antiparallelogram stays crossed.
 
 #include "kinematics/model/mechanism.h"
 #include "kinematics/model/result.h"
