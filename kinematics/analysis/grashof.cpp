@@ -30,11 +30,13 @@ GrashofReport classifyGrashof(const FourBarLengths& l, double tolerance) {
     }
   }
   // In a Grashof linkage the shortest link turns fully relative to both its neighbours; at a
-  // change point this still holds, passing through the singular position.
+  // change point this still holds, passing through the singular position. Equal shortest
+  // links (a parallelogram's crank and rocker) all turn fully.
   const bool grashof = r.category != GrashofClass::TripleRocker;
-  const bool frameShortest = r.shortest == LinkRole::Frame;
-  r.inputFullyRotates = grashof && (frameShortest || r.shortest == LinkRole::Crank);
-  r.outputFullyRotates = grashof && (frameShortest || r.shortest == LinkRole::Rocker);
+  const auto isShortest = [&](double length) { return length - lengths[shortest] <= tolerance * total; };
+  const bool frameShortest = isShortest(l.frame);
+  r.inputFullyRotates = grashof && (frameShortest || isShortest(l.crank));
+  r.outputFullyRotates = grashof && (frameShortest || isShortest(l.rocker));
   return r;
 }
 

@@ -75,6 +75,13 @@ std::optional<Error> checkMechanism(const Mechanism& m) {
     if (!names.insert(m.points[i].name).second)
       return structureError(pointField(i, "name"), "repeats the name '" + m.points[i].name + "'");
   }
+  int cranks = 0;
+  for (std::size_t i = 0; i < m.points.size(); ++i)
+    if (auto e = checkPoint(m, i, cranks)) return e;
+  if (cranks != 1)
+    return structureError("points", "must contain exactly one crank (got " +
+                                        std::to_string(cranks) + ")");
+  // Links last: their rigidity check reads point definitions, validated above.
   for (std::size_t k = 0; k < m.links.size(); ++k) {
     const Link& link = m.links[k];
     const std::string field = "links[" + std::to_string(k) + "]";
@@ -84,12 +91,6 @@ std::optional<Error> checkMechanism(const Mechanism& m) {
     if (!isRigidPair(m, link.first, link.second))
       return structureError(field, "joins points that are not held at a fixed distance");
   }
-  int cranks = 0;
-  for (std::size_t i = 0; i < m.points.size(); ++i)
-    if (auto e = checkPoint(m, i, cranks)) return e;
-  if (cranks != 1)
-    return structureError("points", "must contain exactly one crank (got " +
-                                        std::to_string(cranks) + ")");
   return std::nullopt;
 }
 

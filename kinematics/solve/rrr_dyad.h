@@ -30,9 +30,11 @@ enum class AssemblyFailure {
 /// Relative tolerance on the assembly limits |l1−l2| ≤ L ≤ l1+l2: a pose past a limit by less
 /// than this fraction of l1+l2 is taken as exactly at it (round-off, not a real gap).
 inline constexpr double kAssemblyTolerance = 1e-10;
-/// Below this |sin(transmission angle)| the dyad is treated as singular: the rates' relative
-/// round-off error grows like 1e-16/sin², so at 1e-7 they would already be uncertain.
-inline constexpr double kSingularSine = 1e-7;
+/// Below this |sin(transmission angle)| the dyad is treated as singular. Round-off in the
+/// position (≈1e-16 relative) reaches the velocity divided by sin² and the acceleration,
+/// which uses the velocity and divides once more, by sin³: at 1e-4 the acceleration is still
+/// good to about 1e-4 relative; closer to the toggle it would be noise, so we flag it.
+inline constexpr double kSingularSine = 1e-4;
 
 /// Both candidate positions of C, or why there are none.
 struct RrrCandidates {

@@ -42,7 +42,9 @@ struct AngleRange {
 };
 
 /// Everything a sweep computed. Outer index: point or link id; inner index: sample.
-/// Columns for quantities not requested are empty.
+/// Columns for quantities not requested are empty. Rate columns (velocity, acceleration, ω,
+/// α) hold 0 at samples that are not ok(): check the report before reading them. Position
+/// columns are valid wherever assembled().
 struct SweepResult {
   SolveRequest request;
   std::vector<double> inputAngle;       ///< rad

@@ -125,7 +125,7 @@ TEST_CASE("The built-in examples carry the seeds' data", "[fourbar][examples]") 
   REQUIRE(thesis.has_value());
   CHECK(thesis->lengths == kThesis);
   CHECK(thesis->branch == Branch::Open);
-  CHECK(thesis->omega == Approx(rpmToRadPerSec(10.0)));
+  CHECK(thesis->omega == rpmToRadPerSec(10.0));
   CHECK(thesis->stepDeg == 30.0);
 
   const auto alvi = findFourBarExample("alvi-fourbar");

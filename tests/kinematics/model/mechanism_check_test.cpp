@@ -88,7 +88,7 @@ TEST_CASE("checkMechanism names the first structural or numeric problem", "[mech
       {"a link to a point that does not exist",
        [](Mechanism& m) { m.links.push_back({"ghost", fourbar::kB, PointId{9}}); },
        ErrorCode::InvalidStructure, "links[3]", "links[3] refers to a point that does not exist"},
-      {"duplicate point names", [](Mechanism& m) { m.points[3].name = "B"; }, ErrorCode::InvalidStructure,
+      {"duplicate point names", [](Mechanism& m) { m.points[3].name = m.points[2].name; }, ErrorCode::InvalidStructure,
        "points[3].name", "points[3].name repeats the name 'B'"},
       {"an empty point name", [](Mechanism& m) { m.points[1].name.clear(); }, ErrorCode::InvalidStructure,
        "points[1].name", "points[1].name must not be empty"},

@@ -1,0 +1,54 @@
+#include "kinematics/model/design.h"
+
+#include "kinematics/model/units.h"
+#include "kinematics/model/validate.h"
+
+#include <cmath>
+
+namespace linkwright::kinematics {
+
+std::optional<Error> checkDesign(const FourBarDesign& d) {
+  if (auto e = checkFourBarLengths(d.lengths)) {
+    e->field = "lengths." + e->field;
+    return e;
+  }
+  if (d.couplerPoint) {
+    if (auto e = checkFinite(d.couplerPoint->along, "couplerPoint.along")) return e;
+    if (auto e = checkFinite(d.couplerPoint->across, "couplerPoint.across")) return e;
+  }
+  if (auto e = checkFinite(d.omega, "omega")) return e;
+  if (auto e = checkFinite(d.alpha, "alpha")) return e;
+  if (auto e = checkFinite(d.fromDeg, "fromDeg")) return e;
+  if (auto e = checkFinite(d.toDeg, "toDeg")) return e;
+  if (d.toDeg <= d.fromDeg)
+    return Error{ErrorCode::InvalidValue, "toDeg",
+                 "toDeg must be greater than fromDeg (got " + formatNumber(d.fromDeg) + " to " + formatNumber(d.toDeg) + ")"};
+  if (d.samples < 2 || d.samples > 10'000'000)
+    return Error{ErrorCode::InvalidValue, "samples",
+                 "samples must be between 2 and 10000000 (got " + std::to_string(d.samples) + ")"};
+  return std::nullopt;
+}
+
+Result<Mechanism> buildMechanism(const FourBarDesign& d) {
+  if (auto e = checkDesign(d)) return *e;
+  return makeFourBar(d.lengths, d.branch, d.lengthUnit, d.couplerPoint);
+}
+
+SweepSpec designSweepSpec(const FourBarDesign& d) {
+  return {degToRad(d.fromDeg), degToRad(d.toDeg), d.samples, d.omega, d.alpha};
+}
+
+FourBarDesign designFromExample(const FourBarExample& e) {
+  FourBarDesign d;
+  d.lengths = e.lengths;
+  d.lengthUnit = e.lengthUnit;
+  d.branch = e.branch;
+  d.omega = e.omega;
+  d.alpha = e.alpha;
+  d.fromDeg = e.fromDeg;
+  d.toDeg = e.toDeg;
+  d.samples = static_cast<std::size_t>(std::lround((e.toDeg - e.fromDeg) / 0.5)) + 1;
+  return d;
+}
+
+} // namespace linkwright::kinematics
