@@ -16,6 +16,22 @@ bool InputRange::contains(double angle, double tolerance) const {
   return false;
 }
 
+double InputRange::clamp(double angle) const {
+  if (ranges.empty() || contains(angle)) return angle;
+  double best = angle;
+  double bestDistance = INFINITY;
+  for (const AngleRange& r : ranges) {
+    for (const double edge : {r.from, r.to}) {
+      const double distance = std::abs(std::remainder(angle - edge, 2.0 * kPi));
+      if (distance < bestDistance) {
+        bestDistance = distance;
+        best = edge;
+      }
+    }
+  }
+  return best;
+}
+
 InputRange fourBarInputRange(const FourBarLengths& l) {
   const double a = l.crank;
   const double d = l.frame;

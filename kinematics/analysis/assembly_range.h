@@ -20,6 +20,9 @@ struct InputRange {
 
   /// True if `angle` (rad, any turn) lies in the range, within `tolerance` rad.
   bool contains(double angle, double tolerance = 1e-12) const;
+  /// `angle` itself if it lies in the range (or the range is empty), else the nearest range
+  /// edge (rad, as stored in `ranges`): where a dragged or animated crank must stop.
+  double clamp(double angle) const;
 };
 
 /// Assemblable crank angles for valid lengths. A range around θ = 0 is given as [−φ, φ], one

@@ -2,11 +2,10 @@
 // Unit conversions used at the edges (CLI, CSV, examples). The core works in radians and
 // seconds; lengths are in whatever unit the mechanism names (see Mechanism::lengthUnit).
 
-#include <numbers>
-
 namespace linkwright::kinematics {
 
-inline constexpr double kPi = std::numbers::pi;
+// Spelled out rather than std::numbers::pi: Qt 6.4's moc cannot parse <numbers>.
+inline constexpr double kPi = 3.141592653589793238462643383279502884;
 
 /// Degrees to radians.
 constexpr double degToRad(double degrees) { return degrees * (kPi / 180.0); }

@@ -156,3 +156,16 @@ TEST_CASE("fourBarInputRange agrees with a fine sweep at every sample", "[assemb
   }
   CHECK(checked > 3590);
 }
+
+TEST_CASE("clamp keeps assemblable angles and stops others at the nearest edge", "[analysis][range]") {
+  // Non-Grashof 40/30/20/25: |θ| ≤ 78.58°.
+  const InputRange range = fourBarInputRange({40, 30, 20, 25});
+  REQUIRE(range.ranges.size() == 1);
+  const double edge = range.ranges[0].to;
+  CHECK(range.clamp(0.5) == 0.5);
+  CHECK(range.clamp(edge + 0.1) == edge);
+  CHECK(range.clamp(-edge - 0.1) == -edge);
+  CHECK(range.clamp(2.0 * kPi - edge - 0.2) == -edge);  // the same angle a turn later
+  const InputRange full = fourBarInputRange({60, 25, 70, 45});
+  CHECK(full.clamp(5.0) == 5.0);
+}

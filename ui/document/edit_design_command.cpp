@@ -1,0 +1,23 @@
+#include "ui/document/edit_design_command.h"
+
+#include "ui/document/mechanism_document.h"
+
+namespace linkwright::ui {
+
+EditDesignCommand::EditDesignCommand(MechanismDocument* document, kinematics::FourBarDesign before,
+                                     kinematics::FourBarDesign after, const QString& text, int mergeKey)
+    : QUndoCommand(text), m_document(document), m_before(std::move(before)), m_after(std::move(after)),
+      m_mergeKey(mergeKey) {}
+
+void EditDesignCommand::undo() { m_document->applyDesign(m_before); }
+
+void EditDesignCommand::redo() { m_document->applyDesign(m_after); }
+
+bool EditDesignCommand::mergeWith(const QUndoCommand* other) {
+  const auto* next = dynamic_cast<const EditDesignCommand*>(other);
+  if (next == nullptr || m_mergeKey < 0 || next->m_mergeKey != m_mergeKey) return false;
+  m_after = next->m_after;
+  return true;
+}
+
+} // namespace linkwright::ui

@@ -1,0 +1,47 @@
+#pragma once
+// One undoable edit of the design: it holds the design before and after. Consecutive edits
+// with the same merge key (the moves of one drag, the steps of one slider) merge into a
+// single undo step, keeping the first "before" and the last "after".
+
+#include "kinematics/model/design.h"
+
+#include <QUndoCommand>
+
+namespace linkwright::ui {
+
+class MechanismDocument;
+
+class EditDesignCommand : public QUndoCommand {
+public:
+  /// `mergeKey` < 0: never merges.
+  EditDesignCommand(MechanismDocument* document, kinematics::FourBarDesign before, kinematics::FourBarDesign after,
+                    const QString& text, int mergeKey);
+
+  void undo() override;
+  void redo() override;
+  int id() const override { return m_mergeKey; }
+  bool mergeWith(const QUndoCommand* other) override;
+
+private:
+  MechanismDocument* m_document;
+  kinematics::FourBarDesign m_before;
+  kinematics::FourBarDesign m_after;
+  int m_mergeKey;
+};
+
+/// Merge keys of the continuous edits; each drag handle and slider has its own.
+namespace merge {
+inline constexpr int kDragO2 = 1;
+inline constexpr int kDragO4 = 2;
+inline constexpr int kDragB = 3;
+inline constexpr int kDragC = 4;
+inline constexpr int kDragCouplerPoint = 5;
+inline constexpr int kFrameLength = 10;
+inline constexpr int kCrankLength = 11;
+inline constexpr int kCouplerLength = 12;
+inline constexpr int kRockerLength = 13;
+inline constexpr int kSpeed = 20;
+inline constexpr int kAlpha = 21;
+} // namespace merge
+
+} // namespace linkwright::ui

@@ -1,0 +1,107 @@
+#pragma once
+// The open document: owns the design (what is saved), the undo stack, the motion state (the
+// crank angle the canvas shows) and the solved results the views read. Every view re-reads it
+// when it emits changed(); views never solve anything themselves (STYLE.md, layering rule 2).
+
+#include "kinematics/analysis/assembly_range.h"
+#include "kinematics/analysis/grashof.h"
+#include "kinematics/analysis/limit_positions.h"
+#include "kinematics/analysis/mobility.h"
+#include "kinematics/analysis/transmission.h"
+#include "kinematics/model/design.h"
+#include "kinematics/solve/pose.h"
+#include "kinematics/solve/sweep.h"
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+#include <optional>
+
+namespace linkwright::ui {
+
+/// What a changed() signal is about; views skip work that does not concern them.
+enum class Change {
+  Design = 0x1,      ///< the design and everything solved from it (sweep, analysis, pose)
+  Motion = 0x2,      ///< only the crank angle and the pose at it
+  Request = 0x4,     ///< which quantities are computed (the sweep was redone)
+  File = 0x8,        ///< file name or modified flag
+};
+Q_DECLARE_FLAGS(Changes, Change)
+Q_DECLARE_OPERATORS_FOR_FLAGS(Changes)
+
+/// Analysis results of the current design, recomputed with it.
+struct DesignAnalysis {
+  kinematics::GrashofReport grashof;
+  kinematics::MobilityReport mobility;
+  kinematics::InputRange inputRange;
+  std::optional<kinematics::TransmissionRange> transmission;
+  kinematics::LimitReport limits;
+};
+
+class MechanismDocument : public QObject {
+  Q_OBJECT
+public:
+  explicit MechanismDocument(QObject* parent = nullptr);
+
+  /// The current design; valid and assemblable somewhere, always.
+  const kinematics::FourBarDesign& design() const { return m_design; }
+  /// The solver mechanism built from design().
+  const kinematics::Mechanism& mechanism() const { return m_mechanism; }
+  const DesignAnalysis& analysis() const { return m_analysis; }
+  /// The cycle over the design's grid, computing what request() asks for.
+  const kinematics::SweepResult& sweep() const { return m_sweep; }
+  /// The pose at crankAngle(), with velocities and accelerations.
+  const kinematics::Pose& pose() const { return m_pose; }
+  /// Status of pose(): Ok, or Singular at a toggle position.
+  kinematics::PoseStatus poseStatus() const { return m_poseStatus; }
+
+  /// Checks a candidate design: nullopt if it can be accepted, else why not (a sentence).
+  std::optional<QString> validate(const kinematics::FourBarDesign& design) const;
+
+  /// Replaces the design through the undo stack. `mergeKey` ≥ 0 merges consecutive edits
+  /// with the same key into one undo step (a drag). Returns the refusal reason, if refused:
+  /// then nothing changes.
+  std::optional<QString> edit(const kinematics::FourBarDesign& design, const QString& description, int mergeKey = -1);
+
+  /// Replaces the design without touching the undo stack (used by the undo command itself).
+  void applyDesign(const kinematics::FourBarDesign& design);
+
+  /// Crank angle in rad. Clamped into the assemblable range.
+  double crankAngle() const { return m_crankAngle; }
+  void setCrankAngle(double angle);
+
+  /// Which quantities the sweep computes (plots ask only for what they show).
+  kinematics::SolveRequest request() const { return m_request; }
+  void setRequest(const kinematics::SolveRequest& request);
+
+  QUndoStack* undoStack() { return &m_undo; }
+
+  /// Starts afresh on `design` (File ▸ New, Examples, Open), clearing undo history.
+  void reset(const kinematics::FourBarDesign& design, const QString& filePath = {});
+  QString filePath() const { return m_filePath; }
+  void setFilePath(const QString& path);
+  bool isModified() const { return !m_undo.isClean(); }
+  void markSaved();
+
+signals:
+  void changed(linkwright::ui::Changes what);
+
+private:
+  void rebuild();       // mechanism, analysis, sweep, pose from m_design
+  void resweep();       // sweep only (request changed)
+  void solvePoseNow();  // pose at m_crankAngle
+
+  kinematics::FourBarDesign m_design;
+  kinematics::Mechanism m_mechanism;
+  DesignAnalysis m_analysis;
+  kinematics::SweepResult m_sweep;
+  kinematics::Pose m_pose;
+  kinematics::PoseStatus m_poseStatus = kinematics::PoseStatus::Ok;
+  kinematics::SolveRequest m_request{true, true};
+  double m_crankAngle = 0.0;
+  QUndoStack m_undo;
+  QString m_filePath;
+};
+
+} // namespace linkwright::ui
