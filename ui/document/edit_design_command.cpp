@@ -4,14 +4,14 @@
 
 namespace linkwright::ui {
 
-EditDesignCommand::EditDesignCommand(MechanismDocument* document, kinematics::FourBarDesign before,
-                                     kinematics::FourBarDesign after, const QString& text, int mergeKey)
+EditDesignCommand::EditDesignCommand(MechanismDocument* document, DesignState before, DesignState after,
+                                     const QString& text, int mergeKey)
     : QUndoCommand(text), m_document(document), m_before(std::move(before)), m_after(std::move(after)),
       m_mergeKey(mergeKey) {}
 
-void EditDesignCommand::undo() { m_document->applyDesign(m_before); }
+void EditDesignCommand::undo() { m_document->applyDesign(m_before.design, m_before.crankAngle); }
 
-void EditDesignCommand::redo() { m_document->applyDesign(m_after); }
+void EditDesignCommand::redo() { m_document->applyDesign(m_after.design, m_after.crankAngle); }
 
 bool EditDesignCommand::mergeWith(const QUndoCommand* other) {
   const auto* next = dynamic_cast<const EditDesignCommand*>(other);

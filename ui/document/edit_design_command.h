@@ -1,5 +1,5 @@
 #pragma once
-// One undoable edit of the design: it holds the design before and after. Consecutive edits
+// One undoable edit of the design: it holds the design (and crank angle) before and after. Consecutive edits
 // with the same merge key (the moves of one drag, the steps of one slider) merge into a
 // single undo step, keeping the first "before" and the last "after".
 
@@ -11,11 +11,16 @@ namespace linkwright::ui {
 
 class MechanismDocument;
 
+/// A design and the crank angle (rad) it is shown at.
+struct DesignState {
+  kinematics::FourBarDesign design;
+  double crankAngle = 0.0;
+};
+
 class EditDesignCommand : public QUndoCommand {
 public:
   /// `mergeKey` < 0: never merges.
-  EditDesignCommand(MechanismDocument* document, kinematics::FourBarDesign before, kinematics::FourBarDesign after,
-                    const QString& text, int mergeKey);
+  EditDesignCommand(MechanismDocument* document, DesignState before, DesignState after, const QString& text, int mergeKey);
 
   void undo() override;
   void redo() override;
@@ -24,8 +29,8 @@ public:
 
 private:
   MechanismDocument* m_document;
-  kinematics::FourBarDesign m_before;
-  kinematics::FourBarDesign m_after;
+  DesignState m_before;
+  DesignState m_after;
   int m_mergeKey;
 };
 

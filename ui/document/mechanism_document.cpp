@@ -23,17 +23,20 @@ std::optional<QString> MechanismDocument::validate(const k::FourBarDesign& desig
   return std::nullopt;
 }
 
-std::optional<QString> MechanismDocument::edit(const k::FourBarDesign& design, const QString& description, int mergeKey) {
+std::optional<QString> MechanismDocument::edit(const k::FourBarDesign& design, const QString& description, int mergeKey,
+                                               std::optional<double> crankAngleAfter) {
   if (auto why = validate(design)) return why;
-  if (design == m_design) return std::nullopt;
-  m_undo.push(new EditDesignCommand(this, m_design, design, description, mergeKey));
+  const double angleAfter = crankAngleAfter.value_or(m_crankAngle);
+  if (design == m_design && angleAfter == m_crankAngle) return std::nullopt;
+  m_undo.push(new EditDesignCommand(this, {m_design, m_crankAngle}, {design, angleAfter}, description, mergeKey));
   return std::nullopt;
 }
 
-void MechanismDocument::applyDesign(const k::FourBarDesign& design) {
+void MechanismDocument::applyDesign(const k::FourBarDesign& design, double crankAngle) {
   m_design = design;
+  m_crankAngle = crankAngle;
   rebuild();
-  emit changed(Change::Design);
+  emit changed(Changes(Change::Design) | Change::Motion);
 }
 
 void MechanismDocument::setCrankAngle(double angle) {

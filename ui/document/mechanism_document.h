@@ -60,12 +60,15 @@ public:
   std::optional<QString> validate(const kinematics::FourBarDesign& design) const;
 
   /// Replaces the design through the undo stack. `mergeKey` ≥ 0 merges consecutive edits
-  /// with the same key into one undo step (a drag). Returns the refusal reason, if refused:
-  /// then nothing changes.
-  std::optional<QString> edit(const kinematics::FourBarDesign& design, const QString& description, int mergeKey = -1);
+  /// with the same key into one undo step (a drag). `crankAngleAfter` (rad) also moves the
+  /// crank, undoably (dragging B does). Returns the refusal reason, if refused: then nothing
+  /// changes.
+  std::optional<QString> edit(const kinematics::FourBarDesign& design, const QString& description, int mergeKey = -1,
+                              std::optional<double> crankAngleAfter = std::nullopt);
 
-  /// Replaces the design without touching the undo stack (used by the undo command itself).
-  void applyDesign(const kinematics::FourBarDesign& design);
+  /// Replaces the design and crank angle without touching the undo stack (the undo command
+  /// calls it). Emits one changed(Design | Motion).
+  void applyDesign(const kinematics::FourBarDesign& design, double crankAngle);
 
   /// Crank angle in rad. Clamped into the assemblable range.
   double crankAngle() const { return m_crankAngle; }

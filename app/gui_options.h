@@ -1,0 +1,27 @@
+#pragma once
+// The GUI's command line: linkwright [FILE.json] [--example NAME] [--screenshot FILE.png]
+// [--presentation] [--crank-angle DEG] [--help] [--version].
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace linkwright::app {
+
+struct GuiOptions {
+  std::optional<std::string> file;        ///< a document to open
+  std::optional<std::string> example;     ///< a built-in example to start on
+  std::optional<std::string> screenshot;  ///< render the window to this PNG and exit
+  std::optional<double> crankAngleDeg;    ///< crank angle to show (default 0°)
+  bool presentation = false;
+  bool help = false;
+  bool version = false;
+};
+
+/// Parses the arguments after the program name; `error` gets a message naming the option.
+std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, std::string& error);
+
+/// The --help text, with exit codes.
+std::string guiUsage();
+
+} // namespace linkwright::app

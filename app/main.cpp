@@ -1,0 +1,68 @@
+// linkwright: the designer window (see --help). Wiring only: the window and the core do the work.
+#include "app/gui_options.h"
+
+#include "ui/animation/crank_animator.h"
+#include "ui/document/mechanism_document.h"
+#include "ui/main_window.h"
+#include "ui/message_banner.h"
+
+#include "kinematics/model/examples.h"
+#include "kinematics/model/units.h"
+
+#include <QApplication>
+#include <QIcon>
+#include <QTimer>
+
+#include <iostream>
+
+namespace {
+
+// Shows the window, lets layout and first paint settle, saves it as a PNG and quits.
+int takeScreenshot(linkwright::ui::MainWindow& window, const QString& path) {
+  window.show();
+  for (int i = 0; i < 5; ++i) QApplication::processEvents();
+  if (!window.grab().save(path, "PNG")) {
+    std::cerr << "linkwright: cannot write the screenshot " << path.toStdString() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  std::string error;
+  const auto options = linkwright::app::parseGuiOptions(args, error);
+  if (!options) {
+    std::cerr << "linkwright: " << error << "\n";
+    return 2;
+  }
+  if (options->help) {
+    std::cout << linkwright::app::guiUsage();
+    return 0;
+  }
+  if (options->version) {
+    std::cout << "linkwright " << LINKWRIGHT_VERSION << "\n";
+    return 0;
+  }
+  QApplication app(argc, argv);
+  QApplication::setApplicationName("Linkwright");
+  QApplication::setOrganizationName("Linkwright");
+  QApplication::setApplicationVersion(LINKWRIGHT_VERSION);
+  QApplication::setWindowIcon(QIcon(":/icons/linkwright.svg"));
+
+  linkwright::ui::MainWindow window;
+  namespace k = linkwright::kinematics;
+  if (options->example) window.newDocument(k::designFromExample(*k::findFourBarExample(*options->example)));
+  if (options->file && !window.openFile(QString::fromStdString(*options->file))) {
+    std::cerr << "linkwright: " << window.banner()->text().toStdString() << "\n";
+    if (options->screenshot) return 2;
+  }
+  if (options->crankAngleDeg) window.document()->setCrankAngle(k::degToRad(*options->crankAngleDeg));
+  if (options->presentation) window.setPresentationMode(true);
+  if (options->screenshot) return takeScreenshot(window, QString::fromStdString(*options->screenshot));
+  window.show();
+  QTimer::singleShot(0, window.animator(), &linkwright::ui::CrankAnimator::play);
+  return QApplication::exec();
+}

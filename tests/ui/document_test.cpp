@@ -1,0 +1,165 @@
+// MechanismDocument: edits are validated and undoable, drags merge into one step, files
+// round-trip, and a corrupt or newer file is refused without touching the open document.
+
+#include "ui/document/document_file.h"
+#include "ui/document/edit_design_command.h"
+#include "ui/document/mechanism_document.h"
+
+#include "kinematics/model/units.h"
+
+#include <catch2/catch.hpp>
+
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+
+using namespace linkwright;
+using ui::MechanismDocument;
+
+namespace {
+
+kinematics::FourBarDesign withCrank(double crank) {
+  kinematics::FourBarDesign d;
+  d.lengths.crank = crank;
+  return d;
+}
+
+void writeText(const QString& path, const QByteArray& text) {
+  QFile f(path);
+  REQUIRE(f.open(QIODevice::WriteOnly));
+  f.write(text);
+}
+
+} // namespace
+
+TEST_CASE("an edit changes the design, the analysis and the sweep; undo restores them exactly", "[ui][document]") {
+  MechanismDocument doc;
+  const kinematics::FourBarDesign before = doc.design();
+  QSignalSpy spy(&doc, &MechanismDocument::changed);
+  kinematics::FourBarDesign after = before;
+  after.lengths.frame = 20.0;  // 20 + 70 > 25 + 45: no longer Grashof
+  REQUIRE_FALSE(doc.edit(after, "frame").has_value());
+  CHECK(doc.design() == after);
+  CHECK(doc.analysis().grashof.category == kinematics::GrashofClass::TripleRocker);
+  CHECK_FALSE(doc.analysis().inputRange.fullRotation);
+  CHECK(doc.pose().position[kinematics::fourbar::kO4.index].x() == 20.0);
+  CHECK(spy.count() >= 1);
+  doc.undoStack()->undo();
+  CHECK(doc.design() == before);
+  CHECK(doc.analysis().grashof.category == kinematics::GrashofClass::CrankRocker);
+  doc.undoStack()->redo();
+  CHECK(doc.design() == after);
+}
+
+TEST_CASE("an edit that can never be assembled is refused and changes nothing", "[ui][document][errors]") {
+  MechanismDocument doc;
+  const kinematics::FourBarDesign before = doc.design();
+  kinematics::FourBarDesign bad = before;
+  bad.lengths.frame = 500.0;  // coupler + rocker + crank cannot span it
+  const auto why = doc.edit(bad, "frame");
+  REQUIRE(why.has_value());
+  CHECK(why->contains("cannot be assembled at any crank angle"));
+  CHECK(doc.design() == before);
+  CHECK(doc.undoStack()->count() == 0);
+  kinematics::FourBarDesign negative = before;
+  negative.lengths.coupler = -3.0;
+  const auto whyNegative = doc.edit(negative, "coupler");
+  REQUIRE(whyNegative.has_value());
+  CHECK(whyNegative->contains("coupler length must be positive and finite (got -3)"));
+}
+
+TEST_CASE("consecutive edits with one merge key are one undo step", "[ui][document]") {
+  MechanismDocument doc;
+  const kinematics::FourBarDesign start = doc.design();
+  for (double crank = 24.0; crank > 20.0; crank -= 0.5) {
+    kinematics::FourBarDesign d = doc.design();
+    d.lengths.crank = crank;
+    REQUIRE_FALSE(doc.edit(d, "drag", ui::merge::kDragB).has_value());
+  }
+  CHECK(doc.undoStack()->count() == 1);
+  doc.undoStack()->undo();
+  CHECK(doc.design() == start);
+}
+
+TEST_CASE("the crank angle is kept inside the assemblable range", "[ui][document]") {
+  MechanismDocument doc;
+  kinematics::FourBarDesign d = doc.design();
+  d.lengths = {40, 30, 20, 25};  // non-Grashof: |θ2| ≤ 78.58°
+  REQUIRE_FALSE(doc.edit(d, "lengths").has_value());
+  doc.setCrankAngle(kinematics::degToRad(120.0));
+  CHECK(kinematics::radToDeg(doc.crankAngle()) == Approx(78.5848).margin(1e-3));
+  CHECK(doc.poseStatus() != kinematics::PoseStatus::NotAssemblable);
+}
+
+TEST_CASE("the request decides what the sweep computes", "[ui][document]") {
+  MechanismDocument doc;
+  doc.setRequest({false, false});
+  CHECK(doc.sweep().linkOmega.empty());
+  CHECK(doc.sweep().linkAlpha.empty());
+  doc.setRequest({true, false});
+  CHECK_FALSE(doc.sweep().linkOmega.empty());
+  CHECK(doc.sweep().linkAlpha.empty());
+}
+
+TEST_CASE("save then open reproduces the document", "[ui][document][file]") {
+  QTemporaryDir dir;
+  const QString path = dir.filePath("linkage.json");
+  kinematics::FourBarDesign d = withCrank(22.5);
+  d.couplerPoint = kinematics::CouplerPointSpec{30.0, 12.5};
+  d.omega = 3.3;
+  REQUIRE_FALSE(ui::saveDesignFile(path, d).has_value());
+  kinematics::FourBarDesign back;
+  REQUIRE_FALSE(ui::loadDesignFile(path, back).has_value());
+  CHECK(back == d);
+}
+
+TEST_CASE("missing, corrupt and newer files are refused with the reason", "[ui][document][file][errors]") {
+  QTemporaryDir dir;
+  const QString corrupt = dir.filePath("corrupt.json");
+  writeText(corrupt, "{\"format\": \"linkwright\", \"version\": 1, \"mechanism\": ");
+  const QString newer = dir.filePath("newer.json");
+  writeText(newer, "{\"format\": \"linkwright\", \"version\": 9}");
+  const kinematics::FourBarDesign untouched = withCrank(21.0);
+  kinematics::FourBarDesign d = untouched;
+  const auto missing = ui::loadDesignFile(dir.filePath("nope.json"), d);
+  REQUIRE(missing.has_value());
+  CHECK(missing->contains("does not exist"));
+  const auto bad = ui::loadDesignFile(corrupt, d);
+  REQUIRE(bad.has_value());
+  CHECK(bad->contains("corrupt.json"));
+  CHECK(bad->contains("not valid JSON"));
+  const auto future = ui::loadDesignFile(newer, d);
+  REQUIRE(future.has_value());
+  CHECK(future->contains("newer Linkwright"));
+  CHECK(d == untouched);
+}
+
+TEST_CASE("a failed save leaves the existing file intact", "[ui][document][file][errors]") {
+  QTemporaryDir dir;
+  const QString path = dir.filePath("keep.json");
+  REQUIRE_FALSE(ui::saveDesignFile(path, withCrank(20.0)).has_value());
+  QFile original(path);
+  REQUIRE(original.open(QIODevice::ReadOnly));
+  const QByteArray bytes = original.readAll();
+  original.close();
+  // A directory where the file should go cannot be written over.
+  const auto why = ui::saveDesignFile(dir.path(), withCrank(30.0));
+  REQUIRE(why.has_value());
+  QFile again(path);
+  REQUIRE(again.open(QIODevice::ReadOnly));
+  CHECK(again.readAll() == bytes);
+}
+
+TEST_CASE("an edit that moves the crank restores the crank angle on undo", "[ui][document]") {
+  MechanismDocument doc;
+  doc.setCrankAngle(0.5);
+  kinematics::FourBarDesign d = doc.design();
+  d.lengths.crank = 22.0;
+  REQUIRE_FALSE(doc.edit(d, "move B", ui::merge::kDragB, 1.25).has_value());
+  CHECK(doc.crankAngle() == 1.25);
+  doc.undoStack()->undo();
+  CHECK(doc.crankAngle() == 0.5);
+  CHECK(doc.design().lengths.crank == 25.0);
+  doc.undoStack()->redo();
+  CHECK(doc.crankAngle() == 1.25);
+}

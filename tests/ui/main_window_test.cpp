@@ -1,0 +1,148 @@
+// The whole window, offscreen: CSV export equals the CLI's output byte for byte, save → open
+// reproduces the document, a corrupt file shows an error and changes nothing, examples load,
+// presentation mode scales up, and images export.
+
+#include "ui/canvas/linkage_view.h"
+#include "ui/document/mechanism_document.h"
+#include "ui/main_window.h"
+#include "ui/message_banner.h"
+
+#include "app/cli/cli.h"
+#include "kinematics/io/number_format.h"
+#include "kinematics/model/examples.h"
+#include "kinematics/model/units.h"
+
+#include <catch2/catch.hpp>
+
+#include <QFile>
+#include <QImage>
+#include <QTemporaryDir>
+
+#include <sstream>
+
+using namespace linkwright;
+
+namespace {
+
+QByteArray readAll(const QString& path) {
+  QFile f(path);
+  REQUIRE(f.open(QIODevice::ReadOnly));
+  return f.readAll();
+}
+
+// The linkwright-cli command line that describes the same table as the design.
+std::vector<std::string> cliArguments(const kinematics::FourBarDesign& d) {
+  using kinematics::io::formatDouble;
+  const auto& l = d.lengths;
+  std::vector<std::string> args{"analyze",
+                                "--fourbar",
+                                formatDouble(l.frame) + "," + formatDouble(l.crank) + "," + formatDouble(l.coupler) + "," +
+                                    formatDouble(l.rocker),
+                                "--unit", d.lengthUnit,
+                                "--branch", d.branch == kinematics::Branch::Open ? "open" : "crossed",
+                                "--omega", formatDouble(d.omega),
+                                "--alpha", formatDouble(d.alpha),
+                                "--from", formatDouble(d.fromDeg),
+                                "--to", formatDouble(d.toDeg),
+                                "--samples", std::to_string(d.samples)};
+  if (d.couplerPoint) {
+    args.push_back("--coupler-point");
+    args.push_back(formatDouble(d.couplerPoint->along) + "," + formatDouble(d.couplerPoint->across));
+  }
+  return args;
+}
+
+} // namespace
+
+TEST_CASE("Export ▸ CSV is byte-identical to linkwright-cli analyze", "[ui][window][csv]") {
+  ui::MainWindow window;
+  kinematics::FourBarDesign d = window.document()->design();
+  d.couplerPoint = kinematics::CouplerPointSpec{35.0, 20.0};
+  d.alpha = 0.25;
+  d.samples = 181;
+  REQUIRE_FALSE(window.document()->edit(d, "test").has_value());
+  QTemporaryDir dir;
+  const QString path = dir.filePath("table.csv");
+  REQUIRE(window.exportCsv(path));
+  std::ostringstream out, err;
+  REQUIRE(cli::runCli(cliArguments(d), out, err) == 0);
+  CHECK(readAll(path).toStdString() == out.str());
+}
+
+TEST_CASE("save then open in a new window reproduces the document", "[ui][window][file]") {
+  QTemporaryDir dir;
+  const QString path = dir.filePath("saved.json");
+  kinematics::FourBarDesign d;
+  {
+    ui::MainWindow window;
+    d = window.document()->design();
+    d.lengths.crank = 21.5;
+    d.branch = kinematics::Branch::Crossed;
+    REQUIRE_FALSE(window.document()->edit(d, "test").has_value());
+    CHECK(window.document()->isModified());
+    REQUIRE(window.saveTo(path));
+    CHECK_FALSE(window.document()->isModified());
+    CHECK(window.windowTitle().startsWith("saved.json"));
+  }
+  ui::MainWindow other;
+  REQUIRE(other.openFile(path));
+  CHECK(other.document()->design() == d);
+  CHECK(other.document()->filePath().endsWith("saved.json"));
+  CHECK(other.document()->undoStack()->count() == 0);
+}
+
+TEST_CASE("opening a corrupt file shows an error and changes nothing", "[ui][window][file][errors]") {
+  QTemporaryDir dir;
+  const QString path = dir.filePath("broken.json");
+  {
+    QFile f(path);
+    REQUIRE(f.open(QIODevice::WriteOnly));
+    f.write("{ \"format\": \"linkwright\", \"version\": 1, \"mechanism\": { \"type\": ");
+  }
+  ui::MainWindow window;
+  kinematics::FourBarDesign d = window.document()->design();
+  d.lengths.rocker = 47.0;
+  REQUIRE_FALSE(window.document()->edit(d, "test").has_value());
+  const int undoSteps = window.document()->undoStack()->count();
+  CHECK_FALSE(window.openFile(path));
+  CHECK(window.document()->design() == d);
+  CHECK(window.document()->undoStack()->count() == undoSteps);
+  CHECK(window.banner()->isVisibleTo(&window));
+  CHECK(window.banner()->text().contains("broken.json"));
+  CHECK(window.banner()->text().contains("not valid JSON"));
+}
+
+TEST_CASE("the window starts on the thesis example and offers every example", "[ui][window]") {
+  ui::MainWindow window;
+  CHECK(window.document()->design().lengths == kinematics::FourBarLengths{60, 25, 70, 45});
+  CHECK(window.document()->design().omega == Approx(kinematics::rpmToRadPerSec(10.0)));
+  window.newDocument(kinematics::designFromExample(*kinematics::findFourBarExample("alvi-fourbar")));
+  CHECK(window.document()->design().lengths == kinematics::FourBarLengths{80, 20, 66, 56});
+  CHECK(window.document()->undoStack()->count() == 0);
+}
+
+TEST_CASE("canvas and plots export as PNG and SVG", "[ui][window][export]") {
+  ui::MainWindow window;
+  window.resize(1400, 880);
+  window.show();
+  QTemporaryDir dir;
+  REQUIRE(window.exportCanvasImage(dir.filePath("canvas.png")));
+  const QImage png(dir.filePath("canvas.png"));
+  CHECK_FALSE(png.isNull());
+  CHECK(png.width() > 100);
+  REQUIRE(window.exportCanvasImage(dir.filePath("canvas.svg")));
+  CHECK(readAll(dir.filePath("canvas.svg")).contains("<svg"));
+  REQUIRE(window.exportPlotImage(0, dir.filePath("plot.svg")));
+  CHECK(readAll(dir.filePath("plot.svg")).contains("<svg"));
+  CHECK_FALSE(window.exportCanvasImage(dir.filePath("canvas.bmp")));
+  CHECK(window.banner()->text().contains(".png or .svg"));
+}
+
+TEST_CASE("presentation mode enlarges the fonts and can be left again", "[ui][window]") {
+  ui::MainWindow window;
+  const double normal = window.font().pointSizeF();
+  window.setPresentationMode(true);
+  CHECK(window.font().pointSizeF() > normal * 1.5);
+  window.setPresentationMode(false);
+  CHECK(window.font().pointSizeF() == normal);
+}

@@ -1,0 +1,93 @@
+// Tests ui/plots/axis_range.h: rounded value ranges, the crank axis, wrapping into the grid.
+#include "ui/plots/axis_range.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace linkwright::ui;
+
+namespace {
+
+bool isMultipleOf(double value, double step) {
+  const double q = value / step;
+  return std::abs(q - std::round(q)) < 1e-9;
+}
+
+} // namespace
+
+TEST_CASE("niceStep rounds up to 1, 2, 2.5 or 5 times a power of ten", "[axis_range]") {
+  CHECK(niceStep(0.7) == Approx(1.0));
+  CHECK(niceStep(1.3) == Approx(2.0));
+  CHECK(niceStep(2.2) == Approx(2.5));
+  CHECK(niceStep(3.0) == Approx(5.0));
+  CHECK(niceStep(7.0) == Approx(10.0));
+  CHECK(niceStep(0.02) == Approx(0.02));
+  CHECK(niceStep(430.0) == Approx(500.0));
+}
+
+TEST_CASE("decimalsFor prints the step exactly", "[axis_range]") {
+  CHECK(decimalsFor(10.0) == 0);
+  CHECK(decimalsFor(2.5) == 1);
+  CHECK(decimalsFor(0.25) == 2);
+  CHECK(decimalsFor(0.05) == 2);
+}
+
+TEST_CASE("niceValueRange holds the data with a margin, on rounded bounds", "[axis_range]") {
+  const double lo = GENERATE(-3.7, 0.0, 12.3, -1234.5);
+  const double span = GENERATE(0.013, 1.0, 77.0, 5000.0);
+  const double hi = lo + span;
+  CAPTURE(lo, hi);
+  const AxisRange r = niceValueRange(lo, hi);
+  CHECK(r.min < lo);  // a margin each side: no curve touches the frame
+  CHECK(r.max > hi);
+  CHECK(isMultipleOf(r.min, r.step));
+  CHECK(isMultipleOf(r.max, r.step));
+  CHECK(r.tickCount == static_cast<int>(std::lround((r.max - r.min) / r.step)) + 1);
+  CHECK(r.tickCount >= 3);
+  CHECK(r.tickCount <= 7);
+  // Not much wider than needed: the data fills at least a third of the axis.
+  CHECK(span / (r.max - r.min) > 1.0 / 3.0);
+}
+
+TEST_CASE("niceValueRange widens a flat series and survives no data", "[axis_range]") {
+  const AxisRange one = niceValueRange(1.0, 1.0);
+  CHECK(one.min < 1.0);
+  CHECK(one.max > 1.0);
+  CHECK(one.max - one.min <= 0.5);
+  const AxisRange zero = niceValueRange(0.0, 0.0);
+  CHECK(zero.min <= -1.0);
+  CHECK(zero.max >= 1.0);
+  const AxisRange none = niceValueRange(INFINITY, -INFINITY);
+  CHECK(none.min == 0.0);
+  CHECK(none.max == 1.0);
+}
+
+TEST_CASE("The crank axis covers the grid exactly with readable ticks", "[axis_range]") {
+  const AxisRange full = crankAxisRange(0.0, 360.0, AngleUnit::Degrees);
+  CHECK(full.min == 0.0);
+  CHECK(full.max == 360.0);
+  CHECK(full.step == 45.0);
+  CHECK(full.tickCount == 9);
+  CHECK(full.decimals == 0);
+
+  const AxisRange part = crankAxisRange(-30.0, 60.0, AngleUnit::Degrees);
+  CHECK(part.step == 15.0);
+
+  const AxisRange rad = crankAxisRange(0.0, 360.0, AngleUnit::Radians);
+  CHECK(rad.min == 0.0);
+  CHECK(rad.max == Approx(2.0 * linkwright::kinematics::kPi));
+  CHECK(rad.step == Approx(1.0));
+  CHECK(rad.tickCount == 7);
+}
+
+TEST_CASE("wrapIntoRange moves an angle by whole turns into the grid", "[axis_range]") {
+  CHECK(*wrapIntoRange(90.0, 0.0, 360.0) == Approx(90.0));
+  CHECK(*wrapIntoRange(-90.0, 0.0, 360.0) == Approx(270.0));
+  CHECK(*wrapIntoRange(450.0, 0.0, 360.0) == Approx(90.0));
+  CHECK(*wrapIntoRange(200.0, -180.0, 180.0) == Approx(-160.0));
+  CHECK(*wrapIntoRange(360.0, 0.0, 360.0) == Approx(0.0));
+  CHECK(*wrapIntoRange(359.9999999999999, 0.0, 360.0) == Approx(0.0).margin(1e-9));
+  CHECK(*wrapIntoRange(30.0, 10.0, 50.0) == Approx(30.0));
+  CHECK_FALSE(wrapIntoRange(90.0, 10.0, 50.0).has_value());
+}

@@ -1,0 +1,320 @@
+// Tests ui/plots/plot_panel.h offscreen: what the charts plot against the document's sweep,
+// the request the checkboxes make, units, gaps, the cursor, limit markers and hover read-out.
+#include "ui/plots/plot_panel.h"
+
+#include "ui/plots/hover_readout.h"
+#include "ui/plots/limit_markers.h"
+#include "ui/plots/quantity_chart_view.h"
+#include "ui/plots/quantity_selector.h"
+
+#include "kinematics/model/fourbar.h"
+#include "kinematics/model/units.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QCheckBox>
+#include <QImage>
+#include <QLineSeries>
+#include <QScatterSeries>
+#include <QSignalSpy>
+#include <QValueAxis>
+
+#include <catch2/catch.hpp>
+
+#include <memory>
+
+using namespace linkwright::ui;
+namespace k = linkwright::kinematics;
+
+namespace {
+
+// All points of a quantity, segment after segment (sweep order).
+QList<QPointF> plotted(const PlotPanel& panel, PlotQuantity q) {
+  QList<QPointF> points;
+  for (const QLineSeries* segment : panel.chartView(quantityKind(q))->segments(q)) points += segment->points();
+  return points;
+}
+
+// What the sweep says should be plotted, written out from its documented contract:
+// positions where assembled, rates where ok, x the crank angle, all in degrees.
+QList<QPointF> expectedDegrees(const k::SweepResult& s, const std::vector<double>& column, bool rate) {
+  QList<QPointF> points;
+  for (std::size_t j = 0; j < s.size(); ++j)
+    if (rate ? s.ok(j) : s.assembled(j)) points.append({k::radToDeg(s.inputAngle[j]), k::radToDeg(column[j])});
+  return points;
+}
+
+void tick(PlotPanel& panel, PlotQuantity q, bool on) { panel.selector()->checkBox(q)->setChecked(on); }
+
+k::FourBarDesign nonGrashof() {
+  k::FourBarDesign d;
+  d.lengths = {40.0, 30.0, 20.0, 25.0};
+  d.fromDeg = 0.0;
+  d.toDeg = 360.0;
+  return d;
+}
+
+constexpr std::size_t kCoupler = k::fourbar::kCoupler.index;
+constexpr std::size_t kRocker = k::fourbar::kRocker.index;
+
+} // namespace
+
+TEST_CASE("After construction the series hold the document's sweep", "[plot_panel]") {
+  MechanismDocument doc;
+  PlotPanel panel(&doc);
+  const k::SweepResult& s = doc.sweep();
+
+  const QList<QPointF> coupler = plotted(panel, PlotQuantity::CouplerAngle);
+  REQUIRE(coupler.size() == static_cast<qsizetype>(s.size()));  // a crank-rocker assembles everywhere
+  for (std::size_t j : {std::size_t{0}, std::size_t{90}, std::size_t{333}, std::size_t{720}}) {
+    CAPTURE(j);
+    const auto i = static_cast<qsizetype>(j);
+    CHECK(coupler[i].x() == k::radToDeg(s.inputAngle[j]));
+    CHECK(coupler[i].y() == k::radToDeg(s.linkAngle[kCoupler][j]));
+    CHECK(plotted(panel, PlotQuantity::RockerOmega)[i].y() == k::radToDeg(s.linkOmega[kRocker][j]));
+    CHECK(plotted(panel, PlotQuantity::RockerAlpha)[i].y() == k::radToDeg(s.linkAlpha[kRocker][j]));
+    CHECK(plotted(panel, PlotQuantity::TransmissionAngle)[i].y() ==
+          k::radToDeg(s.transmissionAngle[k::fourbar::kC.index][j]));
+  }
+  qsizetype okSamples = 0;
+  for (std::size_t j = 0; j < s.size(); ++j) okSamples += s.ok(j) ? 1 : 0;
+  CHECK(plotted(panel, PlotQuantity::CouplerOmega).size() == okSamples);
+  CHECK(plotted(panel, PlotQuantity::CouplerAlpha).size() == okSamples);
+  CHECK(plotted(panel, PlotQuantity::RockerOmega) == expectedDegrees(s, s.linkOmega[kRocker], true));
+
+  // Axes: the x axis is the grid, the y axis holds every point.
+  const QuantityChartView* angles = panel.chartView(QuantityKind::Angle);
+  CHECK(angles->xAxis()->min() == 0.0);
+  CHECK(angles->xAxis()->max() == 360.0);
+  for (const QPointF& p : coupler) {
+    CHECK(p.y() > angles->yAxis()->min());
+    CHECK(p.y() < angles->yAxis()->max());
+  }
+  CHECK(angles->xAxis()->titleText() == QStringLiteral("crank angle [deg]"));
+  CHECK(angles->yAxis()->titleText() == QStringLiteral("angle [deg]"));
+  CHECK(panel.chartView(QuantityKind::Omega)->yAxis()->titleText() == QStringLiteral("ω [deg/s]"));
+  CHECK(panel.chartViews().size() == 3);
+  CHECK(panel.chartTitle(1) == QStringLiteral("Angular velocities"));
+  CHECK(panel.chartViews()[1]->chart()->title() == panel.chartTitle(1));
+}
+
+TEST_CASE("Editing a length re-plots what the core now says", "[plot_panel]") {
+  MechanismDocument doc;
+  PlotPanel panel(&doc);
+  const QList<QPointF> before = plotted(panel, PlotQuantity::RockerAngle);
+  k::FourBarDesign d = doc.design();
+  d.lengths.coupler = 65.0;
+  REQUIRE_FALSE(doc.edit(d, QStringLiteral("coupler")).has_value());
+  const QList<QPointF> after = plotted(panel, PlotQuantity::RockerAngle);
+  CHECK(after != before);
+  CHECK(after == expectedDegrees(doc.sweep(), doc.sweep().linkAngle[kRocker], false));
+  CHECK(plotted(panel, PlotQuantity::CouplerOmega) == expectedDegrees(doc.sweep(), doc.sweep().linkOmega[kCoupler], true));
+  doc.undoStack()->undo();
+  CHECK(plotted(panel, PlotQuantity::RockerAngle) == before);
+}
+
+TEST_CASE("The checkboxes request only what is shown and hide empty charts", "[plot_panel]") {
+  MechanismDocument doc;
+  PlotPanel panel(&doc);
+  QSignalSpy selectionSpy(&panel, &PlotPanel::selectionChanged);
+  CHECK(doc.request() == k::SolveRequest{true, true});
+
+  for (const PlotQuantity q : {PlotQuantity::CouplerOmega, PlotQuantity::RockerOmega, PlotQuantity::CouplerAlpha,
+                               PlotQuantity::RockerAlpha})
+    tick(panel, q, false);
+  CHECK(selectionSpy.count() == 4);
+  CHECK(doc.request().velocities == false);
+  CHECK(doc.request().accelerations == false);
+  CHECK(panel.chartView(QuantityKind::Omega)->isHidden());
+  CHECK(panel.chartView(QuantityKind::Alpha)->isHidden());
+  CHECK_FALSE(panel.chartView(QuantityKind::Angle)->isHidden());
+  CHECK(plotted(panel, PlotQuantity::RockerOmega).isEmpty());
+
+  tick(panel, PlotQuantity::RockerAlpha, true);
+  CHECK(doc.request().accelerations == true);
+  CHECK(doc.request().velocities == true);  // α needs ω
+  CHECK_FALSE(panel.chartView(QuantityKind::Alpha)->isHidden());
+  CHECK(panel.chartView(QuantityKind::Omega)->isHidden());
+  CHECK(plotted(panel, PlotQuantity::RockerAlpha) == expectedDegrees(doc.sweep(), doc.sweep().linkAlpha[kRocker], true));
+  CHECK(plotted(panel, PlotQuantity::CouplerAlpha).isEmpty());
+
+  tick(panel, PlotQuantity::RockerAlpha, false);
+  tick(panel, PlotQuantity::CouplerOmega, true);
+  CHECK(doc.request() == k::SolveRequest{true, false});
+
+  // A hidden angle curve is emptied and out of the legend; the chart stays for the others.
+  tick(panel, PlotQuantity::CouplerAngle, false);
+  const QLineSeries* couplerLine = panel.chartView(QuantityKind::Angle)->segments(PlotQuantity::CouplerAngle)[0];
+  CHECK_FALSE(couplerLine->isVisible());
+  CHECK(couplerLine->count() == 0);
+}
+
+TEST_CASE("Radians convert angles, ω and α and the x axis", "[plot_panel]") {
+  MechanismDocument doc;
+  PlotPanel panel(&doc);
+  const QList<QPointF> omegaDeg = plotted(panel, PlotQuantity::RockerOmega);
+  panel.setAngleUnit(AngleUnit::Radians);
+  CHECK(panel.angleUnit() == AngleUnit::Radians);
+  const k::SweepResult& s = doc.sweep();
+  const QList<QPointF> omegaRad = plotted(panel, PlotQuantity::RockerOmega);
+  const QList<QPointF> angleRad = plotted(panel, PlotQuantity::CouplerAngle);
+  REQUIRE(omegaRad.size() == omegaDeg.size());
+  for (std::size_t j : {std::size_t{10}, std::size_t{180}, std::size_t{600}}) {
+    CAPTURE(j);
+    const auto i = static_cast<qsizetype>(j);
+    CHECK(omegaRad[i].y() == s.linkOmega[kRocker][j]);
+    CHECK(omegaDeg[i].y() == Approx(omegaRad[i].y() * 180.0 / k::kPi));
+    CHECK(angleRad[i].y() == s.linkAngle[kCoupler][j]);
+    CHECK(angleRad[i].x() == s.inputAngle[j]);
+  }
+  const QuantityChartView* alpha = panel.chartView(QuantityKind::Alpha);
+  CHECK(alpha->xAxis()->max() == Approx(2.0 * k::kPi));
+  CHECK(alpha->xAxis()->titleText() == QStringLiteral("crank angle [rad]"));
+  CHECK(alpha->yAxis()->titleText() == QStringLiteral("α [rad/s²]"));
+  // The cursor moved with the unit: the crank is at 0 rad.
+  doc.setCrankAngle(k::degToRad(90.0));
+  CHECK(*alpha->cursorX() == Approx(k::kPi / 2.0));
+}
+
+TEST_CASE("A non-Grashof linkage plots nothing outside its assemblable range", "[plot_panel]") {
+  MechanismDocument doc;
+  doc.reset(nonGrashof());
+  PlotPanel panel(&doc);
+  const k::SweepResult& s = doc.sweep();
+  qsizetype assembled = 0;
+  for (std::size_t j = 0; j < s.size(); ++j) assembled += s.assembled(j) ? 1 : 0;
+  REQUIRE(assembled > 0);
+  REQUIRE(assembled < static_cast<qsizetype>(s.size()));  // there is a gap to get right
+
+  for (const PlotQuantity q : allPlotQuantities()) {
+    CAPTURE(quantityKey(q));
+    const QList<QLineSeries*> segments = panel.chartView(quantityKind(q))->segments(q);
+    CHECK(segments.size() >= 2);  // the gap splits the line
+    for (const QPointF& p : plotted(panel, q))
+      CHECK(doc.analysis().inputRange.contains(k::degToRad(p.x()), 1e-9));
+  }
+  CHECK(plotted(panel, PlotQuantity::RockerAngle).size() == assembled);
+  CHECK(plotted(panel, PlotQuantity::RockerAngle) == expectedDegrees(s, s.linkAngle[kRocker], false));
+  // Rates only where ok: none of the sweep's placeholder zeros.
+  CHECK(plotted(panel, PlotQuantity::CouplerOmega) == expectedDegrees(s, s.linkOmega[kCoupler], true));
+  CHECK(plotted(panel, PlotQuantity::RockerAlpha) == expectedDegrees(s, s.linkAlpha[kRocker], true));
+  for (const PlotQuantity q : {PlotQuantity::CouplerOmega, PlotQuantity::RockerOmega, PlotQuantity::CouplerAlpha,
+                               PlotQuantity::RockerAlpha})
+    for (const QPointF& p : plotted(panel, q)) CHECK(p.y() != 0.0);
+}
+
+TEST_CASE("Moving the crank moves the cursor and leaves the data alone", "[plot_panel]") {
+  MechanismDocument doc;
+  PlotPanel panel(&doc);
+  std::vector<std::unique_ptr<QSignalSpy>> spies;
+  QList<QList<QPointF>> before;
+  for (QChartView* view : panel.chartViews())
+    for (QAbstractSeries* series : view->chart()->series()) {
+      auto* xy = qobject_cast<QXYSeries*>(series);
+      if (xy == nullptr || xy->objectName() == QStringLiteral("cursor")) continue;
+      spies.push_back(std::make_unique<QSignalSpy>(xy, &QXYSeries::pointsReplaced));
+      before.append(xy->points());
+    }
+  REQUIRE(spies.size() >= 7);
+
+  doc.setCrankAngle(k::degToRad(90.0));
+  for (auto* view : panel.chartViews()) {
+    const auto* chart = static_cast<QuantityChartView*>(view);
+    REQUIRE(chart->cursorX().has_value());
+    CHECK(*chart->cursorX() == Approx(90.0));
+  }
+  const auto* cursor = qobject_cast<QLineSeries*>(
+      [&] {
+        for (QAbstractSeries* s : panel.chartViews()[0]->chart()->series())
+          if (s->objectName() == QStringLiteral("cursor")) return s;
+        return static_cast<QAbstractSeries*>(nullptr);
+      }());
+  REQUIRE(cursor != nullptr);
+  CHECK(cursor->isVisible());
+  REQUIRE(cursor->count() == 2);
+  CHECK(cursor->at(0).x() == Approx(90.0));
+  CHECK(cursor->at(1).x() == Approx(90.0));
+  CHECK(cursor->at(0).y() == panel.chartView(QuantityKind::Angle)->yAxis()->min());
+  CHECK(cursor->at(1).y() == panel.chartView(QuantityKind::Angle)->yAxis()->max());
+
+  doc.setCrankAngle(k::degToRad(-30.0));  // wrapped into the 0–360° grid
+  CHECK(*panel.chartView(QuantityKind::Omega)->cursorX() == Approx(330.0));
+
+  for (const auto& spy : spies) CHECK(spy->count() == 0);
+  qsizetype i = 0;
+  for (QChartView* view : panel.chartViews())
+    for (QAbstractSeries* series : view->chart()->series()) {
+      auto* xy = qobject_cast<QXYSeries*>(series);
+      if (xy == nullptr || xy->objectName() == QStringLiteral("cursor")) continue;
+      CHECK(xy->points() == before[i++]);
+    }
+}
+
+TEST_CASE("The angle chart marks the thesis crank-rocker's limits at 21.59° and 228.19°", "[plot_panel]") {
+  MechanismDocument doc;  // the default design is the thesis crank-rocker, 60, 25, 70, 45 mm
+  PlotPanel panel(&doc);
+  const QList<double> lines = panel.limitMarkers()->lineXs();
+  REQUIRE(lines.size() == 2);
+  // The thesis prints two decimals.
+  CHECK(lines[0] == Approx(21.59).margin(0.005));
+  CHECK(lines[1] == Approx(228.19).margin(0.005));
+  const QScatterSeries* points = panel.limitMarkers()->points();
+  CHECK(points->isVisible());
+  REQUIRE(points->count() == 2);
+  CHECK(points->at(0).x() == lines[0]);
+  CHECK(points->at(1).x() == lines[1]);
+  CHECK(points->pointLabelsFormat() == QStringLiteral("limit"));
+  CHECK(points->chart() == panel.chartView(QuantityKind::Angle)->chart());
+
+  tick(panel, PlotQuantity::RockerAngle, false);  // no rocker curve to sit on
+  CHECK_FALSE(points->isVisible());
+  CHECK(panel.limitMarkers()->lineXs().size() == 2);
+
+  MechanismDocument triple;
+  triple.reset(nonGrashof());
+  PlotPanel noLimits(&triple);
+  CHECK(noLimits.limitMarkers()->lineXs().size() == static_cast<qsizetype>(triple.analysis().limits.positions.size()));
+}
+
+TEST_CASE("Hovering a curve reads out the nearest sample with its unit", "[plot_panel]") {
+  MechanismDocument doc;
+  PlotPanel panel(&doc);
+  QLineSeries* omega = panel.chartView(QuantityKind::Omega)->segments(PlotQuantity::RockerOmega)[0];
+  // The mouse is near the line, not on a sample: the read-out snaps to the sample at 90°.
+  emit omega->hovered(QPointF(90.2, 0.0), true);
+  const double value = k::radToDeg(doc.sweep().linkOmega[kRocker][180]);
+  CHECK(panel.hoverReadout()->text() == readoutText(PlotQuantity::RockerOmega, {90.0, value}, AngleUnit::Degrees));
+  CHECK(panel.hoverReadout()->text().endsWith(QStringLiteral("deg/s at crank 90.0°")));
+  emit omega->hovered(QPointF(90.2, 0.0), false);
+  CHECK_FALSE(panel.hoverReadout()->text().contains(QStringLiteral("=")));
+}
+
+TEST_CASE("The panel renders offscreen with curves in their colours", "[plot_panel][render]") {
+  MechanismDocument doc;
+  PlotPanel panel(&doc);
+  doc.setCrankAngle(k::degToRad(120.0));
+  panel.resize(900, 900);
+  const QImage image = panel.grab().toImage();
+  CHECK(image.save(QStringLiteral("/tmp/linkwright_plots.png")));
+  // Curves drawn: pixels close to the coupler blue and the rocker green exist.
+  const auto count = [&image](QColor colour) {
+    qsizetype n = 0;
+    for (int y = 0; y < image.height(); y += 1)
+      for (int x = 0; x < image.width(); x += 1) {
+        const QColor c = image.pixelColor(x, y);
+        n += std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green()) +
+                         std::abs(c.blue() - colour.blue()) < 30
+                 ? 1
+                 : 0;
+      }
+    return n;
+  };
+  CHECK(count(quantityColor(PlotQuantity::CouplerAngle)) > 500);
+  CHECK(count(quantityColor(PlotQuantity::RockerAngle)) > 500);
+
+  MechanismDocument triple;
+  triple.reset(nonGrashof());
+  PlotPanel gaps(&triple);
+  gaps.resize(900, 900);
+  CHECK(gaps.grab().save(QStringLiteral("/tmp/linkwright_plots_non_grashof.png")));
+}

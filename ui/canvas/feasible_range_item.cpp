@@ -1,0 +1,145 @@
+#include "ui/canvas/feasible_range_item.h"
+
+#include "ui/canvas/canvas_style.h"
+#include "ui/canvas/label_item.h"
+
+#include "kinematics/model/units.h"
+
+#include <QPainter>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace linkwright::ui {
+
+namespace k = kinematics;
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * k::kPi;
+constexpr double kRayFactor = 1.12;    // limit rays reach a little past the arc
+constexpr double kLabelRadius = 0.55;  // the label sits halfway out in the unreachable sector
+
+QPointF onCircle(const QPointF& centre, double radius, double angle) {
+  return centre + radius * QPointF(std::cos(angle), std::sin(angle));
+}
+
+// Appends an arc as a polyline (scene y is up, so plain cos/sin go counter-clockwise).
+void addArc(QPainterPath& path, const QPointF& centre, double radius, double from, double to, bool connect) {
+  const int steps = std::max(2, static_cast<int>(std::ceil((to - from) / k::degToRad(2.0))));
+  for (int i = 0; i <= steps; ++i) {
+    const QPointF p = onCircle(centre, radius, from + (to - from) * i / steps);
+    if (i == 0 && !connect) path.moveTo(p);
+    else path.lineTo(p);
+  }
+}
+
+struct Arc {
+  double from;
+  double to;
+};
+
+// The assemblable arcs starting in [0, 2π), in order, and the gaps between them.
+std::vector<Arc> complementOf(const std::vector<k::AngleRange>& ranges) {
+  if (ranges.empty()) return {{0.0, kTwoPi}};
+  std::vector<Arc> arcs;
+  for (const k::AngleRange& r : ranges) {
+    const double start = r.from - kTwoPi * std::floor(r.from / kTwoPi);
+    arcs.push_back({start, start + (r.to - r.from)});
+  }
+  std::sort(arcs.begin(), arcs.end(), [](const Arc& a, const Arc& b) { return a.from < b.from; });
+  std::vector<Arc> gaps;
+  for (std::size_t i = 0; i < arcs.size(); ++i) {
+    const double next = i + 1 < arcs.size() ? arcs[i + 1].from : arcs.front().from + kTwoPi;
+    if (next - arcs[i].to > 1e-9) gaps.push_back({arcs[i].to, next});
+  }
+  return gaps;
+}
+
+QString degrees(double angle) { return QString::number(k::radToDeg(angle), 'f', 1) + QChar(0x00B0); }
+
+} // namespace
+
+FeasibleRangeItem::FeasibleRangeItem(QGraphicsItem* parent) : QGraphicsItem(parent), m_label(new LabelItem(this)) {
+  setZValue(canvas::z::kRange);
+  m_label->setColor(canvas::kInfeasibleColor.darker(170));
+  m_label->setBoxed(true);
+  m_label->setPlacement(QPointF(0.0, 0.0), Qt::AlignHCenter | Qt::AlignVCenter);
+}
+
+void FeasibleRangeItem::setRange(const k::InputRange& range, const QPointF& centre, double radius) {
+  prepareGeometryChange();
+  m_feasibleArcs = {};
+  m_infeasibleSectors = {};
+  m_infeasibleArcs = {};
+  m_limitRays = {};
+  for (const k::AngleRange& r : range.ranges) {
+    addArc(m_feasibleArcs, centre, radius, r.from, r.to, false);
+    for (const double limit : {r.from, r.to}) {
+      m_limitRays.moveTo(centre);
+      m_limitRays.lineTo(onCircle(centre, kRayFactor * radius, limit));
+    }
+  }
+  const std::vector<Arc> gaps = complementOf(range.ranges);
+  const Arc* widest = nullptr;
+  for (const Arc& gap : gaps) {
+    m_infeasibleSectors.moveTo(centre);
+    addArc(m_infeasibleSectors, centre, radius, gap.from, gap.to, true);
+    m_infeasibleSectors.closeSubpath();
+    addArc(m_infeasibleArcs, centre, radius, gap.from, gap.to, false);
+    if (widest == nullptr || gap.to - gap.from > widest->to - widest->from) widest = &gap;
+  }
+  const double r = kRayFactor * radius;
+  m_bounds = QRectF(centre - QPointF(r, r), centre + QPointF(r, r));
+
+  QStringList parts;
+  for (const k::AngleRange& rr : range.ranges) parts << tr("%1 to %2").arg(degrees(rr.from), degrees(rr.to));
+  m_label->setText(parts.isEmpty() ? tr("crank cannot be assembled at any angle")
+                                   : tr("crank can reach %1").arg(parts.join(tr(" and "))));
+  // The label goes where the crank never is: inside the widest unreachable sector, which is
+  // also inside the drawing's bounds, so a fit never clips it. It leans to the sector's upper
+  // half, off the frame line and the pivot's name.
+  double angle = 0.0;
+  if (widest != nullptr) {
+    const double middle = (widest->from + widest->to) / 2.0;
+    const double lean = (widest->to - widest->from) / 4.0;
+    angle = std::sin(middle + lean) > std::sin(middle - lean) ? middle + lean : middle - lean;
+  }
+  m_label->setPos(onCircle(centre, kLabelRadius * radius, angle));
+}
+
+void FeasibleRangeItem::setPresentationScale(double factor) {
+  m_scale = factor;
+  m_label->setScale(factor);
+  update();
+}
+
+QString FeasibleRangeItem::labelText() const { return m_label->text(); }
+
+QRectF FeasibleRangeItem::boundingRect() const { return m_bounds; }
+
+void FeasibleRangeItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) {
+  painter->setRenderHint(QPainter::Antialiasing);
+  painter->setPen(Qt::NoPen);
+  painter->setBrush(canvas::kInfeasibleFillColor);
+  painter->drawPath(m_infeasibleSectors);
+  painter->setBrush(QBrush(canvas::kInfeasibleColor, Qt::BDiagPattern));  // cosmetic pattern
+  painter->drawPath(m_infeasibleSectors);
+  painter->setBrush(Qt::NoBrush);
+
+  QPen rays(canvas::kInfeasibleColor, 1.0 * m_scale, Qt::DashLine);
+  rays.setCosmetic(true);
+  painter->setPen(rays);
+  painter->drawPath(m_limitRays);
+  QPen outline(canvas::kInfeasibleColor, 1.5 * m_scale, Qt::DotLine);
+  outline.setCosmetic(true);
+  painter->setPen(outline);
+  painter->drawPath(m_infeasibleArcs);
+  QPen arc(canvas::kFeasibleColor, canvas::kRangeArcWidthPx * m_scale, Qt::SolidLine, Qt::FlatCap);
+  arc.setCosmetic(true);
+  painter->setPen(arc);
+  painter->drawPath(m_feasibleArcs);
+}
+
+} // namespace linkwright::ui

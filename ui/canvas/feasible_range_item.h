@@ -1,0 +1,43 @@
+#pragma once
+// Where the crank can turn when it cannot turn through 360°: around O2 at the crank's radius,
+// the assemblable directions as a green arc and the rest as a hatched grey sector, with the
+// limits written out ("crank can reach 41.4° to 138.6°"). This is how the user sees where,
+// and so why, the linkage cannot be assembled. The angles come from the core's InputRange;
+// this item only draws arcs for them.
+
+#include "kinematics/analysis/assembly_range.h"
+
+#include <QCoreApplication>
+#include <QGraphicsItem>
+#include <QPainterPath>
+
+namespace linkwright::ui {
+
+class LabelItem;
+
+class FeasibleRangeItem : public QGraphicsItem {
+  Q_DECLARE_TR_FUNCTIONS(FeasibleRangeItem)
+public:
+  explicit FeasibleRangeItem(QGraphicsItem* parent = nullptr);
+
+  /// Shows `range` around `centre` (the crank pivot, scene coordinates) at `radius` (the crank
+  /// length). Angles in rad, counter-clockwise from +x, as the core gives them.
+  void setRange(const kinematics::InputRange& range, const QPointF& centre, double radius);
+  void setPresentationScale(double factor);
+  /// The sentence shown next to the arc.
+  QString labelText() const;
+
+  QRectF boundingRect() const override;
+  void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
+
+private:
+  QPainterPath m_feasibleArcs;
+  QPainterPath m_infeasibleSectors;
+  QPainterPath m_infeasibleArcs;
+  QPainterPath m_limitRays;
+  QRectF m_bounds;
+  double m_scale = 1.0;
+  LabelItem* m_label;
+};
+
+} // namespace linkwright::ui

@@ -1,0 +1,45 @@
+#pragma once
+// A short text on the canvas that keeps its pixel size and stays upright at any zoom: point
+// names, arrow magnitudes, the crank's range, the reason a drag was refused.
+
+#include <QColor>
+#include <QFont>
+#include <QGraphicsItem>
+#include <QString>
+
+namespace linkwright::ui {
+
+class LabelItem : public QGraphicsItem {
+public:
+  explicit LabelItem(QGraphicsItem* parent = nullptr);
+
+  void setText(const QString& text);
+  QString text() const { return m_text; }
+  void setColor(const QColor& color);
+  /// Draws a white rounded box behind the text (for messages over the drawing).
+  void setBoxed(bool boxed);
+  /// Wraps the text at word boundaries to at most `pixels` wide (0: one line).
+  void setMaximumWidth(double pixels);
+  /// Where the text sits relative to pos(): `offsetPx` pixels away, and which side of the
+  /// text box touches that point (AlignLeft: the box starts there; AlignBottom: box above).
+  void setPlacement(const QPointF& offsetPx, Qt::Alignment alignment);
+  /// Places the text `distancePx` away from pos() in `direction` (scene axes, y up), on that
+  /// side of the point: to the right for +x, above for +y, and so on.
+  void placeToward(const QPointF& direction, double distancePx);
+
+  QRectF boundingRect() const override;
+  void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
+
+private:
+  QRectF textRect() const;
+
+  QString m_text;
+  QColor m_color;
+  QFont m_font;
+  bool m_boxed = false;
+  double m_maximumWidth = 0.0;
+  QPointF m_offset;
+  Qt::Alignment m_alignment = Qt::AlignLeft | Qt::AlignBottom;
+};
+
+} // namespace linkwright::ui

@@ -1,0 +1,19 @@
+#pragma once
+// A moving link drawn as a bar between its two joints: a wide cosmetic stroke with round caps,
+// so it keeps its pixel width at any zoom. Ends are in scene (model) coordinates.
+
+#include <QColor>
+#include <QGraphicsLineItem>
+
+namespace linkwright::ui {
+
+class LinkItem : public QGraphicsLineItem {
+public:
+  explicit LinkItem(const QColor& color, QGraphicsItem* parent = nullptr);
+
+  void setEnds(const QPointF& first, const QPointF& second) { setLine(QLineF(first, second)); }
+  /// Width is the canvas's link width times `factor` (1 normal, 2 presentation).
+  void setPresentationScale(double factor);
+};
+
+} // namespace linkwright::ui

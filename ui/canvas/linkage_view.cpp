@@ -1,0 +1,329 @@
+#include "ui/canvas/linkage_view.h"
+
+#include "ui/canvas/canvas_style.h"
+#include "ui/canvas/drag_handles.h"
+#include "ui/canvas/grid_painter.h"
+#include "ui/canvas/label_item.h"
+#include "ui/canvas/linkage_scene.h"
+#include "ui/geometry.h"
+
+#include <QMouseEvent>
+#include <QScrollBar>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
+
+namespace linkwright::ui {
+
+namespace k = kinematics;
+using kinematics::FourBarHandle;
+
+namespace {
+
+// Zoom stays between the linkage being 20 px and 200 000 px across: the view's scene rect
+// (1000 linkage sizes) then stays inside the scroll bars' int range.
+constexpr double kMinLinkagePixels = 20.0;
+constexpr double kMaxLinkagePixels = 2.0e5;
+constexpr double kSceneRectSizes = 1000.0;
+constexpr double kMaxSceneRectPixels = 1.0e9;
+constexpr double kFitMarginPx = 40.0;      // room for pins, ground supports and labels
+constexpr double kWheelStep = 1.2;         // zoom per wheel notch
+constexpr int kDragsPerKey = 1000;         // merge key = handle key · 1000 + drag number
+
+} // namespace
+
+LinkageView::LinkageView(MechanismDocument* document, QWidget* parent)
+    : QGraphicsView(parent), m_document(document), m_scene(new LinkageScene(this)) {
+  setScene(m_scene);
+  setRenderHints(QPainter::Antialiasing | QPainter::TextAntialiasing | QPainter::SmoothPixmapTransform);
+  // Cosmetic strokes reach past item bounds by a few pixels; repainting the whole viewport
+  // leaves no trails and costs nothing for a dozen items.
+  setViewportUpdateMode(FullViewportUpdate);
+  setTransformationAnchor(NoAnchor);
+  setResizeAnchor(AnchorViewCenter);
+  setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  setFrameShape(QFrame::NoFrame);
+  setMouseTracking(true);
+  setTransform(QTransform::fromScale(1.0, -1.0));
+  m_scene->updateDesign(*m_document);
+  ensureSceneRect(true);
+  connect(m_document, &MechanismDocument::changed, this, &LinkageView::onDocumentChanged);
+}
+
+QGraphicsScene* LinkageView::linkageScene() const { return m_scene; }
+
+void LinkageView::setShowVelocityArrows(bool show) {
+  m_scene->setShowVelocityArrows(show);
+  m_scene->updatePose(*m_document);
+}
+
+void LinkageView::setShowAccelerationArrows(bool show) {
+  m_scene->setShowAccelerationArrows(show);
+  m_scene->updatePose(*m_document);
+}
+
+void LinkageView::setPresentationScale(double factor) {
+  if (!(factor > 0.0) || !std::isfinite(factor)) return;
+  m_presentationScale = std::clamp(factor, 0.5, 4.0);
+  m_scene->setPresentationScale(m_presentationScale);
+  if (m_autoFit) fitToView();  // the margin for pins and labels grew
+  viewport()->update();
+}
+
+double LinkageView::pixelsPerUnit() const { return std::abs(transform().m11()); }
+
+double LinkageView::gridSpacing() const { return ui::gridSpacing(pixelsPerUnit()); }
+
+void LinkageView::renderLinkage(QPainter* painter, const QRectF& target) const {
+  const QRectF source = m_scene->sceneRect();
+  if (source.isEmpty() || target.isEmpty()) return;
+  const double s = std::min(target.width() / source.width(), target.height() / source.height());
+  painter->save();
+  painter->translate(target.center());
+  painter->scale(s, -s);
+  painter->translate(-source.center());
+  m_scene->render(painter, source, source, Qt::IgnoreAspectRatio);
+  painter->restore();
+}
+
+void LinkageView::fitToView() {
+  const QRectF bounds = m_scene->contentBounds();
+  const double size = m_scene->linkageSize();
+  const double w = std::max(bounds.width(), 1e-3 * size);
+  const double h = std::max(bounds.height(), 1e-3 * size);
+  const QSizeF area = viewport()->size();
+  const double margin = kFitMarginPx * m_presentationScale;
+  const double availableW = std::max(area.width() - 2.0 * margin, 0.3 * area.width());
+  const double availableH = std::max(area.height() - 2.0 * margin, 0.3 * area.height());
+  double k = std::min(availableW / w, availableH / h);
+  if (!(k > 0.0) || !std::isfinite(k)) k = 1.0;
+  k = std::clamp(k * size, kMinLinkagePixels, kMaxLinkagePixels) / size;
+  setTransform(QTransform::fromScale(k, -k));
+  ensureSceneRect(true);
+  centerOn(bounds.center());
+  m_scrollResidue = {};
+  m_autoFit = true;
+}
+
+void LinkageView::zoomBy(double factor) {
+  zoomAbout(QRectF(viewport()->rect()).center(), factor);
+}
+
+void LinkageView::onDocumentChanged(Changes what) {
+  if (what & (Changes(Change::Design) | Change::Request)) {
+    m_scene->updateDesign(*m_document);
+    // reset() announces Design and File together; ordinary edits never do.
+    if ((what & Change::Design) && (what & Change::File)) fitToView();
+    else ensureSceneRect(false);
+    viewport()->update();  // the grid's unit may have changed
+  } else if (what & Change::Motion) {
+    m_scene->updatePose(*m_document);
+  }
+}
+
+void LinkageView::ensureSceneRect(bool force) {
+  // A scene rect far larger than the linkage lets the user pan anywhere; it is reset only
+  // when the drawing nears its edge, as re-setting it re-centres the view.
+  const QRectF bounds = m_scene->contentBounds();
+  const double size = m_scene->linkageSize();
+  const double reach = 0.1 * kSceneRectSizes * size;
+  const QRectF current = sceneRect();
+  if (!force && current.contains(bounds.adjusted(-reach, -reach, reach, reach)) &&
+      current.width() <= 10.0 * kSceneRectSizes * size)
+    return;
+  const double side = std::min(kSceneRectSizes * size, kMaxSceneRectPixels / std::max(pixelsPerUnit(), 1e-300));
+  const QPointF centre = sceneAt(QRectF(viewport()->rect()).center());
+  setSceneRect(QRectF(bounds.center() - QPointF(side, side) / 2.0, QSizeF(side, side)));
+  if (!force) centerOn(centre);
+}
+
+QPointF LinkageView::sceneAt(const QPointF& viewportPos) const { return viewportTransform().inverted().map(viewportPos); }
+
+std::optional<FourBarHandle> LinkageView::handleAt(const QPointF& viewportPos) const {
+  std::optional<FourBarHandle> best;
+  double bestDistance = canvas::kPickRadiusPx * m_presentationScale;
+  for (const FourBarHandle handle : kDragHandles) {
+    const std::optional<QPointF> at = m_scene->handlePosition(handle);
+    if (!at) continue;
+    const double distance = QLineF(viewportTransform().map(*at), viewportPos).length();
+    if (distance < bestDistance || (!best && distance <= bestDistance)) {
+      best = handle;
+      bestDistance = distance;
+    }
+  }
+  return best;
+}
+
+void LinkageView::zoomAbout(const QPointF& viewportPos, double factor) {
+  if (!(factor > 0.0) || !std::isfinite(factor)) return;
+  const double size = m_scene->linkageSize();
+  const double now = pixelsPerUnit();
+  const double wanted = std::clamp(now * factor * size, kMinLinkagePixels, kMaxLinkagePixels) / size;
+  m_autoFit = false;
+  if (wanted == now) return;
+  const QPointF anchor = sceneAt(viewportPos);
+  scale(wanted / now, wanted / now);
+  ensureSceneRect(false);
+  scrollByPixels(viewportTransform().map(anchor) - viewportPos);
+}
+
+void LinkageView::scrollByPixels(const QPointF& delta) {
+  // Scroll bars take whole pixels; the remainder is kept so repeated shifts do not drift.
+  m_scrollResidue += delta;
+  const int dx = static_cast<int>(std::lround(m_scrollResidue.x()));
+  const int dy = static_cast<int>(std::lround(m_scrollResidue.y()));
+  horizontalScrollBar()->setValue(horizontalScrollBar()->value() + dx);
+  verticalScrollBar()->setValue(verticalScrollBar()->value() + dy);
+  m_scrollResidue -= QPointF(dx, dy);
+}
+
+void LinkageView::drawBackground(QPainter* painter, const QRectF& rect) {
+  painter->fillRect(rect, Qt::white);
+  const QRectF visible = viewportTransform().inverted().mapRect(QRectF(viewport()->rect()));
+  paintGrid(painter, rect, visible, QString::fromStdString(m_document->design().lengthUnit), m_presentationScale);
+}
+
+void LinkageView::wheelEvent(QWheelEvent* event) {
+  const int notches = event->angleDelta().y();
+  if (notches == 0) {
+    event->ignore();
+    return;
+  }
+  zoomAbout(event->position(), std::pow(kWheelStep, notches / 120.0));
+  event->accept();
+}
+
+void LinkageView::mousePressEvent(QMouseEvent* event) {
+  if (m_gesture != Gesture::None) {
+    event->accept();
+    return;
+  }
+  const QPointF pos = event->position();
+  if (event->button() == Qt::LeftButton) {
+    if (const auto handle = handleAt(pos)) {
+      startDrag(*handle, pos);
+      m_gestureButton = Qt::LeftButton;
+      event->accept();
+      return;
+    }
+  }
+  if (event->button() == Qt::LeftButton || event->button() == Qt::MiddleButton) {
+    m_gesture = Gesture::Pan;
+    m_gestureButton = event->button();
+    m_lastPointer = pos;
+    viewport()->setCursor(Qt::ClosedHandCursor);
+    event->accept();
+    return;
+  }
+  QGraphicsView::mousePressEvent(event);
+}
+
+void LinkageView::mouseMoveEvent(QMouseEvent* event) {
+  const QPointF pos = event->position();
+  switch (m_gesture) {
+  case Gesture::Drag: dragTo(pos); break;
+  case Gesture::Pan:
+    scrollByPixels(m_lastPointer - pos);
+    m_lastPointer = pos;
+    m_autoFit = false;
+    break;
+  case Gesture::None: updateHover(pos); break;
+  }
+  event->accept();
+}
+
+void LinkageView::mouseReleaseEvent(QMouseEvent* event) {
+  if (m_gesture == Gesture::None || event->button() != m_gestureButton) {
+    QGraphicsView::mouseReleaseEvent(event);
+    return;
+  }
+  const QPointF pos = event->position();
+  if (m_gesture == Gesture::Drag && pos != m_lastPointer) dragTo(pos);
+  m_gesture = Gesture::None;
+  m_gestureButton = Qt::NoButton;
+  m_scene->hideMessage();
+  m_lastRefusal.clear();
+  m_hover.reset();
+  updateHover(pos);
+  event->accept();
+}
+
+void LinkageView::leaveEvent(QEvent* event) {
+  if (m_gesture == Gesture::None && m_hover) {
+    m_hover.reset();
+    m_scene->setHotHandle(std::nullopt);
+    viewport()->unsetCursor();
+    emit statusMessage(QString());
+  }
+  QGraphicsView::leaveEvent(event);
+}
+
+void LinkageView::showEvent(QShowEvent* event) {
+  QGraphicsView::showEvent(event);
+  if (m_autoFit) fitToView();
+}
+
+void LinkageView::resizeEvent(QResizeEvent* event) {
+  QGraphicsView::resizeEvent(event);
+  if (m_autoFit) fitToView();
+}
+
+void LinkageView::updateHover(const QPointF& viewportPos) {
+  const std::optional<FourBarHandle> handle = handleAt(viewportPos);
+  m_scene->setHotHandle(handle);
+  if (handle) viewport()->setCursor(Qt::OpenHandCursor);
+  else viewport()->unsetCursor();
+  if (handle != m_hover) emit statusMessage(handle ? handleHint(*handle) : QString());
+  m_hover = handle;
+}
+
+void LinkageView::startDrag(FourBarHandle handle, const QPointF& viewportPos) {
+  m_gesture = Gesture::Drag;
+  m_dragHandle = handle;
+  m_grabOffset = *m_scene->handlePosition(handle) - sceneAt(viewportPos);
+  m_lastPointer = viewportPos;
+  m_lastRefusal.clear();
+  ++m_dragCount;
+  m_scene->setHotHandle(handle);
+  viewport()->setCursor(Qt::ClosedHandCursor);
+  emit statusMessage(handleHint(handle));
+}
+
+void LinkageView::dragTo(const QPointF& viewportPos) {
+  m_lastPointer = viewportPos;
+  const Eigen::Vector2d target = toEigen(sceneAt(viewportPos) + m_grabOffset);
+  const k::Result<k::DragOutcome> outcome = k::dragFourBar(m_document->design(), m_document->crankAngle(), m_dragHandle, target);
+  if (!outcome) {
+    refuse(QString::fromStdString(outcome.error().message), viewportPos);
+    return;
+  }
+  const int mergeKey = handleMergeKey(m_dragHandle) * kDragsPerKey + m_dragCount % kDragsPerKey;
+  if (const auto why = m_document->edit(outcome->design, tr("Move %1").arg(handleName(m_dragHandle)), mergeKey,
+                                        outcome->crankAngle)) {
+    refuse(*why, viewportPos);
+    return;
+  }
+  // The frame was re-anchored at the new O2: scroll so the rest of the drawing stays put.
+  if (m_dragHandle == FourBarHandle::O2) scrollByPixels(QPointF(-outcome->originShift * pixelsPerUnit(), 0.0));
+  m_scene->hideMessage();
+  m_lastRefusal.clear();
+}
+
+void LinkageView::refuse(const QString& reason, const QPointF& viewportPos) {
+  // Next to the pointer, but kept inside the viewport when the pointer has left it.
+  m_scene->showMessage(sceneAt(viewportPos), reason);
+  const QRectF item = m_scene->messageItem()->boundingRect();
+  const QRectF box(item.topLeft() * m_presentationScale, item.size() * m_presentationScale);
+  const QRectF area = QRectF(viewport()->rect()).adjusted(4.0, 4.0, -4.0, -4.0);
+  const auto keepIn = [](double at, double low, double high) { return std::clamp(at, low, std::max(low, high)); };
+  const QPointF inside(keepIn(viewportPos.x(), area.left() - box.left(), area.right() - box.right()),
+                       keepIn(viewportPos.y(), area.top() - box.top(), area.bottom() - box.bottom()));
+  if (inside != viewportPos) m_scene->showMessage(sceneAt(inside), reason);
+  if (reason == m_lastRefusal) return;
+  m_lastRefusal = reason;
+  emit editRefused(reason);
+}
+
+} // namespace linkwright::ui

@@ -1,0 +1,98 @@
+#pragma once
+// The linkage canvas: a QGraphicsView over a LinkageScene in model units, y up (the view
+// flips y). It draws a scale grid behind the linkage, zooms with the wheel about the cursor,
+// pans by dragging the background (left or middle button), and turns drags of O2, O4, B, C
+// and P into document edits through the core's dragFourBar, one undo step per drag. An edit
+// the core or the document refuses changes nothing; the reason is shown next to the cursor
+// and emitted as editRefused.
+//
+// Fitting: the view fits the drawing when first shown, on resize until the user zooms or
+// pans, after fitToView(), and after a document reset (File ▸ New / Open / Examples, seen as
+// one Design|File change). Dragging O2 re-anchors the frame at O2; the view scrolls by the
+// core's originShift so that O4 and the rest of the drawing stay where they were on screen.
+
+#include "kinematics/model/design_edit.h"
+#include "ui/document/mechanism_document.h"
+
+#include <QGraphicsView>
+
+#include <optional>
+
+namespace linkwright::ui {
+
+class LinkageScene;
+
+class LinkageView : public QGraphicsView {
+  Q_OBJECT
+public:
+  explicit LinkageView(MechanismDocument* document, QWidget* parent = nullptr);
+
+  /// The scene (model units, y up). Its sceneRect() is the drawing with a margin; draw it
+  /// with renderLinkage(), which flips y, rather than QGraphicsScene::render().
+  QGraphicsScene* linkageScene() const;
+  /// Arrows of v and a at B, C (and P), to a scale fixed per design; hidden at a toggle.
+  void setShowVelocityArrows(bool show);
+  void setShowAccelerationArrows(bool show);
+  /// 1 normal; about 2 for presentation (thicker links, bigger pins and labels).
+  void setPresentationScale(double factor);
+  double presentationScale() const { return m_presentationScale; }
+
+  /// Screen pixels per model length unit at the current zoom.
+  double pixelsPerUnit() const;
+  /// Distance between grid lines (model length units) at the current zoom.
+  double gridSpacing() const;
+  /// Paints the linkage without the grid into `target` (painter coordinates), y up, aspect
+  /// ratio kept, centred: for image and SVG export.
+  void renderLinkage(QPainter* painter, const QRectF& target) const;
+
+public slots:
+  /// Fits the drawing (every position over the cycle, the pivots, the coupler path, the
+  /// crank's range) into the view with a margin.
+  void fitToView();
+  /// Zooms by `factor` (> 1 in) about the view's centre.
+  void zoomBy(double factor);
+
+signals:
+  void editRefused(const QString& reason);
+  void statusMessage(const QString& text);
+
+protected:
+  void drawBackground(QPainter* painter, const QRectF& rect) override;
+  void wheelEvent(QWheelEvent* event) override;
+  void mousePressEvent(QMouseEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+  void mouseReleaseEvent(QMouseEvent* event) override;
+  void leaveEvent(QEvent* event) override;
+  void showEvent(QShowEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
+
+private:
+  enum class Gesture { None, Pan, Drag };
+
+  void onDocumentChanged(linkwright::ui::Changes what);
+  QPointF sceneAt(const QPointF& viewportPos) const;
+  std::optional<kinematics::FourBarHandle> handleAt(const QPointF& viewportPos) const;
+  void zoomAbout(const QPointF& viewportPos, double factor);
+  void scrollByPixels(const QPointF& delta);
+  void startDrag(kinematics::FourBarHandle handle, const QPointF& viewportPos);
+  void dragTo(const QPointF& viewportPos);
+  void refuse(const QString& reason, const QPointF& viewportPos);
+  void updateHover(const QPointF& viewportPos);
+  void ensureSceneRect(bool force);
+
+  MechanismDocument* m_document;
+  LinkageScene* m_scene;
+  double m_presentationScale = 1.0;
+  bool m_autoFit = true;
+  Gesture m_gesture = Gesture::None;
+  Qt::MouseButton m_gestureButton = Qt::NoButton;
+  kinematics::FourBarHandle m_dragHandle = kinematics::FourBarHandle::B;
+  QPointF m_grabOffset;      // handle minus pointer (scene units), fixed for one drag
+  QPointF m_lastPointer;     // viewport pixels, last pan or drag position
+  QPointF m_scrollResidue;   // sub-pixel remainder of programmatic scrolling
+  int m_dragCount = 0;       // makes each drag its own undo step
+  QString m_lastRefusal;
+  std::optional<kinematics::FourBarHandle> m_hover;
+};
+
+} // namespace linkwright::ui

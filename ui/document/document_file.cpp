@@ -1,0 +1,45 @@
+#include "ui/document/document_file.h"
+
+#include "kinematics/io/document_json.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
+#include <QSaveFile>
+
+namespace linkwright::ui {
+namespace {
+
+QString tr(const char* text) { return QCoreApplication::translate("DocumentFile", text); }
+
+// Documents are a few hundred bytes; anything this large is not one of ours.
+constexpr qint64 kMaxDocumentBytes = 16 * 1024 * 1024;
+
+} // namespace
+
+std::optional<QString> loadDesignFile(const QString& path, kinematics::FourBarDesign& design) {
+  const QString name = QFileInfo(path).fileName();
+  QFile file(path);
+  if (!file.exists()) return tr("Cannot open %1: the file does not exist.").arg(name);
+  if (!file.open(QIODevice::ReadOnly)) return tr("Cannot open %1: %2.").arg(name, file.errorString());
+  if (file.size() > kMaxDocumentBytes) return tr("Cannot open %1: it is too large to be a Linkwright document.").arg(name);
+  const QByteArray bytes = file.readAll();
+  const auto parsed = kinematics::io::readDocument(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+  if (!parsed) return tr("Cannot open %1: %2.").arg(name, QString::fromStdString(parsed.error().message));
+  design = *parsed;
+  return std::nullopt;
+}
+
+std::optional<QString> saveFileAtomically(const QString& path, const QByteArray& bytes) {
+  QSaveFile file(path);
+  if (!file.open(QIODevice::WriteOnly)) return tr("Cannot write %1: %2.").arg(QFileInfo(path).fileName(), file.errorString());
+  if (file.write(bytes) != bytes.size() || !file.commit())
+    return tr("Cannot write %1: %2. The previous file, if any, is unchanged.").arg(QFileInfo(path).fileName(), file.errorString());
+  return std::nullopt;
+}
+
+std::optional<QString> saveDesignFile(const QString& path, const kinematics::FourBarDesign& design) {
+  return saveFileAtomically(path, QByteArray::fromStdString(kinematics::io::writeDocument(design)));
+}
+
+} // namespace linkwright::ui

@@ -1,0 +1,334 @@
+#include "ui/main_window.h"
+
+#include "ui/animation/crank_animator.h"
+#include "ui/canvas/linkage_view.h"
+#include "ui/document/document_file.h"
+#include "ui/document/mechanism_document.h"
+#include "ui/export/view_image.h"
+#include "ui/message_banner.h"
+#include "ui/panels/analysis_panel.h"
+#include "ui/panels/lengths_panel.h"
+#include "ui/panels/motion_panel.h"
+#include "ui/plots/plot_panel.h"
+#include "ui/settings.h"
+
+#include "kinematics/io/csv_writer.h"
+#include "kinematics/model/examples.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QKeySequence>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+#include <sstream>
+
+namespace linkwright::ui {
+
+namespace k = kinematics;
+
+namespace {
+const QString kDocumentFilter = QObject::tr("Linkwright documents (*.json)");
+}
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), m_settings(std::make_unique<Settings>()), m_document(new MechanismDocument(this)),
+      m_animator(new CrankAnimator(m_document, this)), m_banner(new MessageBanner(this)),
+      m_canvas(new LinkageView(m_document, this)), m_plots(new PlotPanel(m_document, this)),
+      m_lengths(new LengthsPanel(m_document, this)), m_motion(new MotionPanel(m_document, m_animator, m_settings.get(), this)),
+      m_analysis(new AnalysisPanel(m_document, this)) {
+  setObjectName("MainWindow");
+  m_normalFont = font();
+  auto* side = new QWidget(this);
+  auto* sideLayout = new QVBoxLayout(side);
+  sideLayout->setContentsMargins(0, 0, 0, 0);
+  sideLayout->addWidget(m_lengths);
+  sideLayout->addWidget(m_motion);
+  sideLayout->addWidget(m_analysis);
+  sideLayout->addStretch();
+  auto* scroll = new QScrollArea(this);
+  m_sidePanel = scroll;
+  scroll->setWidget(side);
+  scroll->setWidgetResizable(true);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  // As wide as the panels need, plus the vertical scroll bar: never cut off on the right.
+  scroll->setMinimumWidth(side->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width() + 4);
+
+  auto* splitter = new QSplitter(Qt::Horizontal, this);
+  splitter->setObjectName("MainSplitter");
+  splitter->addWidget(scroll);
+  splitter->addWidget(m_canvas);
+  splitter->addWidget(m_plots);
+  splitter->setStretchFactor(0, 0);
+  splitter->setStretchFactor(1, 3);
+  splitter->setStretchFactor(2, 2);
+  splitter->setSizes({scroll->minimumWidth(), 620, 480});
+  splitter->setChildrenCollapsible(false);
+
+  auto* central = new QWidget(this);
+  auto* layout = new QVBoxLayout(central);
+  layout->setContentsMargins(4, 4, 4, 4);
+  layout->addWidget(m_banner);
+  layout->addWidget(splitter, 1);
+  setCentralWidget(central);
+
+  buildMenus();
+  m_plots->setAngleUnit(m_settings->anglesInRadians() ? AngleUnit::Radians : AngleUnit::Degrees);
+  connect(m_canvas, &LinkageView::editRefused, this, [this](const QString& why) { statusBar()->showMessage(why, 5000); });
+  connect(m_canvas, &LinkageView::statusMessage, this, [this](const QString& text) { statusBar()->showMessage(text, 3000); });
+  connect(m_document, &MechanismDocument::changed, this, [this](Changes what) {
+    if (what & (Change::File | Change::Design)) refreshTitle();
+  });
+  resize(1400, 880);
+  restoreGeometry(m_settings->windowGeometry());
+  restoreState(m_settings->windowState());
+  newDocument(k::designFromExample(*k::findFourBarExample("thesis-crank-rocker")));
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::buildMenus() {
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  file->addAction(tr("&New four-bar"), QKeySequence::New, this, [this] {
+    if (maybeSave()) newDocument(k::FourBarDesign{});
+  });
+  file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::open);
+  m_recentMenu = file->addMenu(tr("Open &Recent"));
+  file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
+  file->addAction(tr("Save &As…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
+  file->addSeparator();
+  QMenu* exportMenu = file->addMenu(tr("&Export"));
+  exportMenu->addAction(tr("Table as &CSV…"), this, &MainWindow::exportCsvDialog);
+  exportMenu->addAction(tr("&Image of the canvas or a plot…"), this, &MainWindow::exportImageDialog);
+  file->addSeparator();
+  file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+  QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+  QAction* undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+  undo->setShortcut(QKeySequence::Undo);
+  QAction* redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+  redo->setShortcut(QKeySequence::Redo);
+  edit->addAction(undo);
+  edit->addAction(redo);
+
+  QMenu* view = menuBar()->addMenu(tr("&View"));
+  view->addAction(tr("&Fit to view"), QKeySequence(Qt::CTRL | Qt::Key_0), m_canvas, &LinkageView::fitToView);
+  QAction* play = view->addAction(tr("&Play / pause"), m_animator, &CrankAnimator::togglePlay);
+  play->setShortcut(Qt::Key_Space);
+  QAction* velocity = view->addAction(tr("&Velocity arrows"));
+  velocity->setCheckable(true);
+  connect(velocity, &QAction::toggled, m_canvas, &LinkageView::setShowVelocityArrows);
+  QAction* acceleration = view->addAction(tr("&Acceleration arrows"));
+  acceleration->setCheckable(true);
+  connect(acceleration, &QAction::toggled, m_canvas, &LinkageView::setShowAccelerationArrows);
+  QMenu* units = view->addMenu(tr("Angle &unit in plots"));
+  auto* group = new QActionGroup(this);
+  QAction* degrees = units->addAction(tr("&Degrees"));
+  QAction* radians = units->addAction(tr("&Radians"));
+  for (QAction* a : {degrees, radians}) {
+    a->setCheckable(true);
+    group->addAction(a);
+  }
+  (m_settings->anglesInRadians() ? radians : degrees)->setChecked(true);
+  connect(radians, &QAction::toggled, this, [this](bool on) {
+    m_settings->setAnglesInRadians(on);
+    m_plots->setAngleUnit(on ? AngleUnit::Radians : AngleUnit::Degrees);
+  });
+  m_presentationAction = view->addAction(tr("Pr&esentation mode"));
+  m_presentationAction->setCheckable(true);
+  m_presentationAction->setShortcut(Qt::Key_F11);
+  connect(m_presentationAction, &QAction::toggled, this, &MainWindow::setPresentationMode);
+
+  buildExamplesMenu(menuBar()->addMenu(tr("E&xamples")));
+
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  help->addAction(tr("&About Linkwright"), this, [this] {
+    QMessageBox::about(this, tr("About Linkwright"),
+                       tr("<b>Linkwright %1</b><p>Design and analysis of planar linkages: exact positions, "
+                          "velocities and accelerations, Grashof class, transmission angle, limit positions.</p>")
+                           .arg(QApplication::applicationVersion()));
+  });
+  refreshRecentFiles();
+}
+
+void MainWindow::buildExamplesMenu(QMenu* menu) {
+  for (const k::FourBarExample& e : k::fourBarExamples()) {
+    QAction* action = menu->addAction(QString::fromStdString(e.name), this, [this, e] {
+      if (maybeSave()) newDocument(k::designFromExample(e));
+    });
+    action->setToolTip(QString::fromStdString(e.description));
+    action->setStatusTip(QString::fromStdString(e.description));
+  }
+}
+
+void MainWindow::newDocument(const k::FourBarDesign& design) {
+  m_animator->pause();
+  m_document->reset(design);
+  m_canvas->fitToView();
+  m_banner->hide();
+}
+
+bool MainWindow::openFile(const QString& path) {
+  k::FourBarDesign design;
+  if (auto why = loadDesignFile(path, design)) {
+    showError(*why);
+    return false;
+  }
+  m_animator->pause();
+  m_document->reset(design, QFileInfo(path).absoluteFilePath());
+  m_canvas->fitToView();
+  m_settings->addRecentFile(path);
+  refreshRecentFiles();
+  m_banner->hide();
+  statusBar()->showMessage(tr("Opened %1").arg(QFileInfo(path).fileName()), 3000);
+  return true;
+}
+
+bool MainWindow::saveTo(const QString& path) {
+  if (auto why = saveDesignFile(path, m_document->design())) {
+    showError(*why);
+    return false;
+  }
+  m_document->setFilePath(QFileInfo(path).absoluteFilePath());
+  m_document->markSaved();
+  m_settings->addRecentFile(path);
+  refreshRecentFiles();
+  statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), 3000);
+  return true;
+}
+
+bool MainWindow::exportCsv(const QString& path) {
+  // The full table at the design's grid, whatever the plots show: the CLI's columns exactly.
+  const auto result = k::sweep(m_document->mechanism(), k::designSweepSpec(m_document->design()), {true, true});
+  std::ostringstream csv;
+  k::io::writeSweepCsv(csv, m_document->mechanism(), result.value());
+  if (auto why = saveFileAtomically(path, QByteArray::fromStdString(csv.str()))) {
+    showError(*why);
+    return false;
+  }
+  statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()), 3000);
+  return true;
+}
+
+bool MainWindow::exportCanvasImage(const QString& path) {
+  if (auto why = saveViewImage(m_canvas, path, tr("Linkwright linkage"))) {
+    showError(*why);
+    return false;
+  }
+  return true;
+}
+
+bool MainWindow::exportPlotImage(int index, const QString& path) {
+  const QList<QGraphicsView*> views = m_plots->graphicsViews();
+  if (index < 0 || index >= views.size()) return false;
+  if (auto why = saveViewImage(views[index], path, m_plots->chartTitle(index))) {
+    showError(*why);
+    return false;
+  }
+  return true;
+}
+
+void MainWindow::setPresentationMode(bool on) {
+  if (on == m_presentation) return;
+  m_presentation = on;
+  QFont big = m_normalFont;
+  big.setPointSizeF(m_normalFont.pointSizeF() * 1.6);
+  setFont(on ? big : m_normalFont);
+  m_canvas->setPresentationScale(on ? 2.0 : 1.0);
+  // The class watches the linkage and the plots; Space, the arrows' menu and F11 still work.
+  m_sidePanel->setVisible(!on);
+  if (m_presentationAction->isChecked() != on) m_presentationAction->setChecked(on);
+  on ? showFullScreen() : showNormal();
+  m_canvas->fitToView();
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!maybeSave()) {
+    event->ignore();
+    return;
+  }
+  m_settings->setWindowGeometry(saveGeometry());
+  m_settings->setWindowState(saveState());
+  event->accept();
+}
+
+void MainWindow::refreshRecentFiles() {
+  m_recentMenu->clear();
+  const QStringList files = m_settings->recentFiles();
+  for (const QString& path : files)
+    m_recentMenu->addAction(QFileInfo(path).fileName(), this, [this, path] {
+      if (maybeSave()) openFile(path);
+    })->setStatusTip(path);
+  m_recentMenu->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::refreshTitle() {
+  const QString path = m_document->filePath();
+  const QString name = path.isEmpty() ? tr("Untitled") : QFileInfo(path).fileName();
+  setWindowTitle(tr("%1[*] — Linkwright").arg(name));
+  setWindowModified(m_document->isModified());
+}
+
+bool MainWindow::save() {
+  if (m_document->filePath().isEmpty()) return saveAs();
+  return saveTo(m_document->filePath());
+}
+
+bool MainWindow::saveAs() {
+  QString path = QFileDialog::getSaveFileName(this, tr("Save linkage"), m_document->filePath(), kDocumentFilter);
+  if (path.isEmpty()) return false;
+  if (QFileInfo(path).suffix().isEmpty()) path += ".json";
+  return saveTo(path);
+}
+
+void MainWindow::open() {
+  if (!maybeSave()) return;
+  const QString path = QFileDialog::getOpenFileName(this, tr("Open linkage"), QString(), kDocumentFilter);
+  if (!path.isEmpty()) openFile(path);
+}
+
+void MainWindow::exportCsvDialog() {
+  QString path = QFileDialog::getSaveFileName(this, tr("Export table"), QString(), tr("CSV tables (*.csv)"));
+  if (path.isEmpty()) return;
+  if (QFileInfo(path).suffix().isEmpty()) path += ".csv";
+  exportCsv(path);
+}
+
+void MainWindow::exportImageDialog() {
+  QStringList sources{tr("Canvas")};
+  for (int i = 0; i < m_plots->graphicsViews().size(); ++i) sources << tr("Plot: %1").arg(m_plots->chartTitle(i));
+  QString selected;
+  const QString path = QFileDialog::getSaveFileName(this, tr("Export image"), QString(),
+                                                    tr("PNG image (*.png);;SVG drawing (*.svg)"), &selected);
+  if (path.isEmpty()) return;
+  QString withSuffix = path;
+  if (QFileInfo(path).suffix().isEmpty()) withSuffix += selected.contains("svg") ? ".svg" : ".png";
+  // Without a second dialog: the canvas is exported, and each plot beside it with a suffix.
+  if (!exportCanvasImage(withSuffix)) return;
+  const QFileInfo info(withSuffix);
+  for (int i = 0; i < m_plots->graphicsViews().size(); ++i)
+    exportPlotImage(i, info.path() + "/" + info.completeBaseName() + QString("-plot%1.").arg(i + 1) + info.suffix());
+  statusBar()->showMessage(tr("Exported the canvas and %1 plots beside %2").arg(m_plots->graphicsViews().size()).arg(info.fileName()), 5000);
+}
+
+bool MainWindow::maybeSave() {
+  if (!m_document->isModified()) return true;
+  const auto answer = QMessageBox::question(this, tr("Unsaved changes"), tr("Save the changes to this linkage first?"),
+                                            QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+  if (answer == QMessageBox::Save) return save();
+  return answer == QMessageBox::Discard;
+}
+
+void MainWindow::showError(const QString& message) { m_banner->showMessage(message, MessageBanner::Kind::Error); }
+
+} // namespace linkwright::ui

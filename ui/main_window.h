@@ -1,0 +1,93 @@
+#pragma once
+// The designer window: canvas in the middle, lengths / drive / analysis panels on the left,
+// plots on the right; File, Edit, View, Examples and Help menus. The window wires widgets to
+// the document; it computes nothing itself. Each file and export action has a dialog-free
+// twin (openFile, saveTo, exportCsv, ...) that the menus call and the tests use.
+
+#include <QMainWindow>
+
+#include <memory>
+
+class QAction;
+class QMenu;
+
+namespace linkwright::kinematics {
+struct FourBarDesign;
+}
+
+namespace linkwright::ui {
+
+class AnalysisPanel;
+class CrankAnimator;
+class LengthsPanel;
+class LinkageView;
+class MechanismDocument;
+class MessageBanner;
+class MotionPanel;
+class PlotPanel;
+class Settings;
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+public:
+  explicit MainWindow(QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  MechanismDocument* document() const { return m_document; }
+  LinkageView* canvas() const { return m_canvas; }
+  PlotPanel* plots() const { return m_plots; }
+  LengthsPanel* lengthsPanel() const { return m_lengths; }
+  MotionPanel* motionPanel() const { return m_motion; }
+  AnalysisPanel* analysisPanel() const { return m_analysis; }
+  CrankAnimator* animator() const { return m_animator; }
+  MessageBanner* banner() const { return m_banner; }
+
+  /// Starts a new document on `design` (File ▸ New, Examples).
+  void newDocument(const kinematics::FourBarDesign& design);
+  /// Opens a document; on failure shows why in the banner and changes nothing.
+  bool openFile(const QString& path);
+  /// Saves to `path` (atomically) and makes it the document's file.
+  bool saveTo(const QString& path);
+  /// Writes the design's full table, byte-identical to `linkwright-cli analyze`.
+  bool exportCsv(const QString& path);
+  /// Writes the canvas as PNG or SVG.
+  bool exportCanvasImage(const QString& path);
+  /// Writes plot `index` (0 angles, 1 ω, 2 α) as PNG or SVG.
+  bool exportPlotImage(int index, const QString& path);
+  /// Large fonts and lines, full screen, side panels hidden: for the lecture hall.
+  void setPresentationMode(bool on);
+  bool presentationMode() const { return m_presentation; }
+
+protected:
+  void closeEvent(QCloseEvent* event) override;
+
+private:
+  void buildMenus();
+  void buildExamplesMenu(QMenu* menu);
+  void refreshRecentFiles();
+  void refreshTitle();
+  bool save();
+  bool saveAs();
+  void open();
+  void exportCsvDialog();
+  void exportImageDialog();
+  bool maybeSave();
+  void showError(const QString& message);
+
+  std::unique_ptr<Settings> m_settings;
+  MechanismDocument* m_document;
+  CrankAnimator* m_animator;
+  MessageBanner* m_banner;
+  LinkageView* m_canvas;
+  PlotPanel* m_plots;
+  LengthsPanel* m_lengths;
+  MotionPanel* m_motion;
+  AnalysisPanel* m_analysis;
+  QWidget* m_sidePanel = nullptr;
+  QMenu* m_recentMenu = nullptr;
+  QAction* m_presentationAction = nullptr;
+  bool m_presentation = false;
+  QFont m_normalFont;
+};
+
+} // namespace linkwright::ui

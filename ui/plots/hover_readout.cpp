@@ -1,0 +1,49 @@
+#include "ui/plots/hover_readout.h"
+
+#include <QCursor>
+#include <QToolTip>
+
+#include <algorithm>
+#include <cmath>
+
+namespace linkwright::ui {
+
+QString formatReadoutNumber(double value) {
+  const double magnitude = std::abs(value);
+  const int leading = magnitude > 0.0 ? static_cast<int>(std::floor(std::log10(magnitude))) : 0;
+  const int decimals = std::clamp(2 - leading, 1, 6);
+  return QString::number(value, 'f', decimals);
+}
+
+QString readoutText(PlotQuantity quantity, QPointF point, AngleUnit unit) {
+  const QuantityKind kind = quantityKind(quantity);
+  // Degrees read best with the degree sign right after the number, as in "at crank 90.0°".
+  const bool degreeSign = unit == AngleUnit::Degrees;
+  const QString value = kind == QuantityKind::Angle && degreeSign
+                            ? formatReadoutNumber(point.y()) + QStringLiteral("°")
+                            : formatReadoutNumber(point.y()) + QLatin1Char(' ') + quantityUnit(kind, unit);
+  const QString crank = degreeSign ? QString::number(point.x(), 'f', 1) + QStringLiteral("°")
+                                   : QString::number(point.x(), 'f', 3) + QLatin1Char(' ') + angleUnitSymbol(unit);
+  return HoverReadout::tr("%1 = %2 at crank %3").arg(quantityName(quantity), value, crank);
+}
+
+HoverReadout::HoverReadout(QWidget* parent) : QLabel(parent) {
+  setObjectName(QStringLiteral("hover_readout"));
+  setTextInteractionFlags(Qt::TextSelectableByMouse);
+  clearPoint();
+}
+
+void HoverReadout::showPoint(PlotQuantity quantity, QPointF point, AngleUnit unit, bool inside) {
+  if (!inside) {
+    clearPoint();
+    QToolTip::hideText();
+    return;
+  }
+  const QString text = readoutText(quantity, point, unit);
+  setText(text);
+  QToolTip::showText(QCursor::pos(), text, this);
+}
+
+void HoverReadout::clearPoint() { setText(tr("Point at a curve to read its value.")); }
+
+} // namespace linkwright::ui

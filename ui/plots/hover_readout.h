@@ -1,0 +1,29 @@
+#pragma once
+// The read-out of the curve under the mouse: "rocker ω4 = 0.619 rad/s at crank 90.0°", shown
+// in a line under the charts and as a tool tip at the mouse.
+
+#include "ui/plots/angle_unit.h"
+#include "ui/plots/plot_quantity.h"
+
+#include <QLabel>
+#include <QPointF>
+
+namespace linkwright::ui {
+
+/// `value` with about three significant digits (at least one decimal, at most six).
+QString formatReadoutNumber(double value);
+/// The read-out sentence for `point` (x = crank angle, y = value, in plot units).
+QString readoutText(PlotQuantity quantity, QPointF point, AngleUnit unit);
+
+class HoverReadout : public QLabel {
+  Q_OBJECT
+public:
+  explicit HoverReadout(QWidget* parent = nullptr);
+
+  /// Shows the read-out of `quantity` at `point`, or the idle hint if `inside` is false.
+  void showPoint(PlotQuantity quantity, QPointF point, AngleUnit unit, bool inside);
+  /// Back to the idle hint.
+  void clearPoint();
+};
+
+} // namespace linkwright::ui

@@ -1,0 +1,94 @@
+#include "ui/plots/limit_markers.h"
+
+#include "ui/plots/axis_range.h"
+#include "ui/plots/series_visibility.h"
+
+#include "kinematics/model/fourbar.h"
+
+#include <QChart>
+#include <QScatterSeries>
+#include <QValueAxis>
+
+#include <cmath>
+
+namespace linkwright::ui {
+namespace {
+
+namespace k = kinematics;
+
+// The core reports the rocker angle in (−π, π]; the sweep's is unwrapped and may be whole
+// turns away. Pick the turn nearest the sweep's value at the grid sample nearest `xDeg`.
+double rockerAngleOnCurve(double rockerAngle, const k::SweepResult& sweep, double xDeg, double fromDeg,
+                          double toDeg) {
+  const std::size_t n = sweep.size();
+  const std::size_t link = k::fourbar::kRocker.index;
+  if (n < 2 || link >= sweep.linkAngle.size() || toDeg == fromDeg) return rockerAngle;
+  const double t = (xDeg - fromDeg) / (toDeg - fromDeg);
+  const auto j = static_cast<std::size_t>(std::lround(t * static_cast<double>(n - 1)));
+  if (j >= n || !sweep.assembled(j)) return rockerAngle;
+  const double turn = 2.0 * k::kPi;
+  return rockerAngle + turn * std::round((sweep.linkAngle[link][j] - rockerAngle) / turn);
+}
+
+} // namespace
+
+QList<QPointF> limitMarkerPoints(const k::LimitReport& limits, const k::SweepResult& sweep, double fromDeg,
+                                 double toDeg, AngleUnit unit) {
+  QList<QPointF> points;
+  for (const k::LimitPosition& limit : limits.positions) {
+    const std::optional<double> xDeg = wrapIntoRange(k::radToDeg(limit.crankAngle), fromDeg, toDeg);
+    if (!xDeg) continue;
+    const double rocker = rockerAngleOnCurve(limit.rockerAngle, sweep, *xDeg, fromDeg, toDeg);
+    points.append(QPointF(toAngleUnit(k::degToRad(*xDeg), unit), toAngleUnit(rocker, unit)));
+  }
+  return points;
+}
+
+LimitMarkers::LimitMarkers(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis)
+    : m_chart(chart), m_xAxis(xAxis), m_yAxis(yAxis), m_points(new QScatterSeries) {
+  m_points->setObjectName(QStringLiteral("limit_points"));
+  m_points->setName(tr("rocker limit"));
+  m_points->setMarkerSize(8.0);
+  m_points->setColor(Qt::black);
+  m_points->setBorderColor(Qt::white);
+  m_points->setPointLabelsFormat(tr("limit"));
+  m_points->setPointLabelsVisible(true);
+  m_points->setPointLabelsClipping(true);
+  chart->addSeries(m_points);
+  m_points->attachAxis(xAxis);
+  m_points->attachAxis(yAxis);
+  setSeriesShown(m_chart, m_points, false, false);
+}
+
+LimitMarkers::~LimitMarkers() = default;
+
+void LimitMarkers::setPositions(const QList<QPointF>& points, bool showPoints) {
+  QPen dashed(QColor(0x55, 0x55, 0x55), 1.0, Qt::DashLine);
+  while (m_lines.size() < static_cast<std::size_t>(points.size())) {
+    const QString name = QStringLiteral("limit_line_%1").arg(m_lines.size());
+    m_lines.push_back(std::make_unique<VerticalMarker>(m_chart, m_xAxis, m_yAxis, dashed, name));
+    m_lines.back()->setYSpan(m_lo, m_hi);
+  }
+  for (std::size_t i = 0; i < m_lines.size(); ++i)
+    m_lines[i]->setX(i < static_cast<std::size_t>(points.size())
+                         ? std::optional<double>(points[static_cast<qsizetype>(i)].x())
+                         : std::nullopt);
+  const bool pointsShown = showPoints && !points.isEmpty();
+  m_points->replace(pointsShown ? points : QList<QPointF>{});
+  setSeriesShown(m_chart, m_points, pointsShown, true);
+}
+
+void LimitMarkers::setYSpan(double lo, double hi) {
+  m_lo = lo;
+  m_hi = hi;
+  for (const auto& line : m_lines) line->setYSpan(lo, hi);
+}
+
+QList<double> LimitMarkers::lineXs() const {
+  QList<double> xs;
+  for (const auto& line : m_lines)
+    if (line->x()) xs.append(*line->x());
+  return xs;
+}
+
+} // namespace linkwright::ui

@@ -1,0 +1,61 @@
+#pragma once
+// The rocker's limit (dead-centre) positions on the angle chart: a dashed vertical line at
+// each limit's crank angle and a point labelled "limit" on the rocker-angle curve. The
+// positions come from the core (DesignAnalysis::limits); this only places them on the axes.
+
+#include "ui/plots/angle_unit.h"
+#include "ui/plots/vertical_marker.h"
+
+#include "kinematics/analysis/limit_positions.h"
+#include "kinematics/solve/sweep.h"
+
+#include <QCoreApplication>
+#include <QList>
+#include <QPointF>
+
+#include <memory>
+#include <vector>
+
+class QChart;
+class QScatterSeries;
+class QValueAxis;
+
+namespace linkwright::ui {
+
+/// The limits as plot points: x = crank angle moved by whole turns into [fromDeg, toDeg],
+/// y = rocker angle moved by whole turns next to the sweep's unwrapped rocker angle at that
+/// crank angle (so the point sits on the plotted curve), both in `unit`. Limits whose crank
+/// angle lies outside the grid are left out.
+QList<QPointF> limitMarkerPoints(const kinematics::LimitReport& limits, const kinematics::SweepResult& sweep,
+                                 double fromDeg, double toDeg, AngleUnit unit);
+
+class LimitMarkers {
+  Q_DECLARE_TR_FUNCTIONS(LimitMarkers)
+public:
+  /// Adds the markers' series to `chart` (which owns them) on the given axes.
+  LimitMarkers(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis);
+  ~LimitMarkers();
+  LimitMarkers(const LimitMarkers&) = delete;
+  LimitMarkers& operator=(const LimitMarkers&) = delete;
+
+  /// A line at each point's x; the labelled points themselves only if `showPoints` (the
+  /// rocker curve is shown).
+  void setPositions(const QList<QPointF>& points, bool showPoints);
+  /// The y extent of the lines (the value axis range).
+  void setYSpan(double lo, double hi);
+
+  QScatterSeries* points() const { return m_points; }
+  /// The x of every line shown, in order.
+  QList<double> lineXs() const;
+
+private:
+  QChart* m_chart;
+  QValueAxis* m_xAxis;
+  QValueAxis* m_yAxis;
+  QScatterSeries* m_points;
+  std::vector<std::unique_ptr<VerticalMarker>> m_lines;
+  double m_lo = 0.0;
+  double m_hi = 1.0;
+};
+
+} // namespace linkwright::ui

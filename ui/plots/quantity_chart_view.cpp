@@ -1,0 +1,151 @@
+#include "ui/plots/quantity_chart_view.h"
+
+#include "ui/plots/series_visibility.h"
+
+#include <QChart>
+#include <QLineSeries>
+#include <QLegend>
+#include <QLegendMarker>
+#include <QValueAxis>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace linkwright::ui {
+namespace {
+
+constexpr qreal kCurveWidth = 2.0;
+
+QPen cursorPen() { return QPen(QColor(0xc0, 0x20, 0x20), 1.5); }
+
+QPointF nearestByX(const QList<QPointF>& points, qreal x) {
+  QPointF best = points.isEmpty() ? QPointF(x, 0.0) : points.front();
+  qreal bestDistance = std::numeric_limits<qreal>::infinity();
+  for (const QPointF& p : points) {
+    const qreal d = std::abs(p.x() - x);
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = p;
+    }
+  }
+  return best;
+}
+
+} // namespace
+
+QuantityChartView::QuantityChartView(QuantityKind kind, const QString& title, QWidget* parent)
+    : QChartView(parent), m_kind(kind), m_xAxis(new QValueAxis), m_yAxis(new QValueAxis) {
+  auto* chart = new QChart;
+  chart->setTitle(title);
+  // Animations would make every edit and drag lag behind; the data changes at frame rate.
+  chart->setAnimationOptions(QChart::NoAnimation);
+  chart->setMargins(QMargins(2, 2, 2, 2));
+  chart->setBackgroundRoundness(0);
+  chart->legend()->setAlignment(Qt::AlignRight);
+  chart->addAxis(m_xAxis, Qt::AlignBottom);
+  chart->addAxis(m_yAxis, Qt::AlignLeft);
+  m_xAxis->setTickType(QValueAxis::TicksDynamic);
+  m_xAxis->setTickAnchor(0.0);
+  setChart(chart);  // the view owns the chart, the chart its axes and series
+  setRenderHint(QPainter::Antialiasing);
+
+  for (const PlotQuantity q : allPlotQuantities()) {
+    if (quantityKind(q) != kind) continue;
+    m_curves.push_back({q, {}});
+    addSegment(m_curves.back());
+  }
+  m_cursor = std::make_unique<VerticalMarker>(chart, m_xAxis, m_yAxis, cursorPen(), QStringLiteral("cursor"));
+}
+
+QuantityChartView::~QuantityChartView() = default;
+
+QLineSeries* QuantityChartView::addSegment(Curve& curve) {
+  auto* segment = new QLineSeries;
+  segment->setObjectName(quantityKey(curve.quantity));
+  segment->setName(quantityName(curve.quantity));
+  segment->setPen(QPen(quantityColor(curve.quantity), kCurveWidth));
+  chart()->addSeries(segment);
+  segment->attachAxis(m_xAxis);
+  segment->attachAxis(m_yAxis);
+  const PlotQuantity q = curve.quantity;
+  connect(segment, &QXYSeries::hovered, this,
+          [this, q, segment](const QPointF& p, bool inside) { onSegmentHovered(q, segment, p, inside); });
+  curve.segments.append(segment);
+  setSeriesShown(chart(), segment, false, false);
+  return segment;
+}
+
+void QuantityChartView::setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection,
+                                AngleUnit unit, double fromDeg, double toDeg) {
+  m_values.clear();
+  for (Curve& curve : m_curves) {
+    const bool shown = selection.contains(curve.quantity);
+    m_runs.runs.clear();
+    if (shown) buildSeriesRuns(sweep, curve.quantity, unit, m_runs);
+    for (const QList<QPointF>& run : m_runs.runs)
+      for (const QPointF& p : run) m_values.push_back(p.y());
+    updateCurve(curve, shown);
+  }
+  // Spikes next to a toggle would squash every other value flat: they run off the chart
+  // instead, and the hover read-out still gives their value.
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  const auto [lo, hi] = m_values.empty() ? std::pair<double, double>{kNone, -kNone} : robustSpan(m_values);
+  m_valueRange = niceValueRange(lo, hi);
+  applyAxis(m_yAxis, m_valueRange);
+  m_yAxis->setTitleText(valueAxisTitle(m_kind, unit));
+  const AxisRange x = crankAxisRange(fromDeg, toDeg, unit);
+  applyAxis(m_xAxis, x);
+  m_xAxis->setTickInterval(x.step);
+  m_xAxis->setTitleText(crankAxisTitle(unit));
+  m_cursor->setYSpan(m_valueRange.min, m_valueRange.max);
+  QMetaObject::invokeMethod(this, &QuantityChartView::hideHelperMarkers, Qt::QueuedConnection);
+}
+
+void QuantityChartView::hideHelperMarkers() {
+  for (QLegendMarker* marker : chart()->legend()->markers()) {
+    const QString name = marker->series()->objectName();
+    if (name == QStringLiteral("cursor") || name.startsWith(QStringLiteral("limit_line"))) marker->setVisible(false);
+  }
+  // A curve broken by a gap is several series; the legend names it once.
+  for (const Curve& curve : m_curves)
+    for (qsizetype i = 1; i < curve.segments.size(); ++i)
+      for (QLegendMarker* marker : chart()->legend()->markers(curve.segments[i])) marker->setVisible(false);
+}
+
+void QuantityChartView::updateCurve(Curve& curve, bool shown) {
+  while (curve.segments.size() < m_runs.runs.size()) addSegment(curve);
+  for (qsizetype i = 0; i < curve.segments.size(); ++i) {
+    QLineSeries* segment = curve.segments[i];
+    if (i < m_runs.runs.size())
+      segment->replace(m_runs.runs[i]);
+    else if (segment->count() > 0)
+      segment->replace(QList<QPointF>{});
+    // The first segment stays visible while selected, even empty, so the legend names it.
+    setSeriesShown(chart(), segment, shown && (i == 0 || i < m_runs.runs.size()), i == 0);
+  }
+}
+
+void QuantityChartView::applyAxis(QValueAxis* axis, const AxisRange& range) {
+  axis->setRange(range.min, range.max);
+  axis->setTickCount(range.tickCount);
+  axis->setLabelFormat(QStringLiteral("%.%1f").arg(range.decimals));
+}
+
+void QuantityChartView::setCursorX(std::optional<double> x) {
+  m_cursor->setX(x);
+  QMetaObject::invokeMethod(this, &QuantityChartView::hideHelperMarkers, Qt::QueuedConnection);
+}
+
+QList<QLineSeries*> QuantityChartView::segments(PlotQuantity quantity) const {
+  for (const Curve& curve : m_curves)
+    if (curve.quantity == quantity) return curve.segments;
+  return {};
+}
+
+void QuantityChartView::onSegmentHovered(PlotQuantity quantity, const QLineSeries* segment, QPointF point,
+                                         bool inside) {
+  emit curveHovered(quantity, nearestByX(segment->points(), point.x()), inside);
+}
+
+} // namespace linkwright::ui

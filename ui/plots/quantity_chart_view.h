@@ -1,0 +1,76 @@
+#pragma once
+// One chart of one kind of quantity (angles, ω or α) against crank angle: a line per selected
+// quantity, split into segments where the sweep has no value, explicit value axes with
+// rounded ranges, and a crank-angle cursor that moves without touching the data.
+
+#include "ui/plots/axis_range.h"
+#include "ui/plots/plot_quantity.h"
+#include "ui/plots/series_data.h"
+#include "ui/plots/vertical_marker.h"
+
+#include "kinematics/solve/sweep.h"
+
+#include <QChartView>
+#include <QList>
+
+#include <memory>
+#include <vector>
+
+class QLineSeries;
+class QValueAxis;
+
+namespace linkwright::ui {
+
+class QuantityChartView : public QChartView {
+  Q_OBJECT
+public:
+  /// A chart titled `title` for the quantities of `kind`, all hidden until setData.
+  QuantityChartView(QuantityKind kind, const QString& title, QWidget* parent = nullptr);
+  ~QuantityChartView() override;
+
+  QuantityKind kind() const { return m_kind; }
+  QValueAxis* xAxis() const { return m_xAxis; }
+  QValueAxis* yAxis() const { return m_yAxis; }
+  const AxisRange& valueRange() const { return m_valueRange; }
+
+  /// Replaces the curves with the sweep's values of the selected quantities (the others are
+  /// emptied and hidden) and resets both axes: x over the grid [fromDeg, toDeg].
+  void setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection, AngleUnit unit,
+               double fromDeg, double toDeg);
+  /// Moves the cursor to `x` (plot units), or hides it. Touches no data series.
+  void setCursorX(std::optional<double> x);
+  std::optional<double> cursorX() const { return m_cursor->x(); }
+  /// The line segments of `quantity` (empty for a quantity of another kind); the first one
+  /// carries the legend entry.
+  QList<QLineSeries*> segments(PlotQuantity quantity) const;
+
+signals:
+  /// The mouse entered (`inside`) or left `quantity`'s curve; `point` is the sample nearest
+  /// the mouse, in plot units.
+  void curveHovered(linkwright::ui::PlotQuantity quantity, QPointF point, bool inside);
+
+private:
+  struct Curve {
+    PlotQuantity quantity;
+    QList<QLineSeries*> segments;
+  };
+
+  QLineSeries* addSegment(Curve& curve);
+  void updateCurve(Curve& curve, bool shown);
+  /// Keeps the cursor and limit lines out of the legend. The legend makes markers for new
+  /// series later, in the event loop, so this runs queued after every update.
+  void hideHelperMarkers();
+  void applyAxis(QValueAxis* axis, const AxisRange& range);
+  void onSegmentHovered(PlotQuantity quantity, const QLineSeries* segment, QPointF point, bool inside);
+
+  QuantityKind m_kind;
+  QValueAxis* m_xAxis;
+  QValueAxis* m_yAxis;
+  std::vector<Curve> m_curves;
+  std::unique_ptr<VerticalMarker> m_cursor;
+  AxisRange m_valueRange;
+  SeriesRuns m_runs;
+  std::vector<double> m_values;  // y values of one update, reused
+};
+
+} // namespace linkwright::ui

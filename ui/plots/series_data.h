@@ -1,0 +1,37 @@
+#pragma once
+// Turns sweep columns into plot points: x = crank angle, y = one quantity, both in the plot's
+// angle unit. Samples that carry no value are left out and break the line into runs, so a
+// curve never bridges a range the linkage cannot reach: positions exist where the sample is
+// assembled, rates (ω, α) only where it is ok (the sweep stores placeholder zeros at toggle
+// and unassembled samples, which must never be plotted).
+
+#include "ui/plots/angle_unit.h"
+#include "ui/plots/plot_quantity.h"
+
+#include "kinematics/solve/sweep.h"
+
+#include <QList>
+#include <QPointF>
+
+namespace linkwright::ui {
+
+/// The points of one quantity, split into runs of consecutive plottable samples.
+struct SeriesRuns {
+  QList<QList<QPointF>> runs;  ///< each run in sweep order; no run is empty
+  double minY = 0.0;           ///< over all runs; meaningless when there are no points
+  double maxY = 0.0;
+
+  qsizetype pointCount() const;
+  bool empty() const { return runs.isEmpty(); }
+};
+
+/// True if the sweep holds `quantity` at `sample` (assembled for angles, ok for ω and α, and
+/// the column computed at all).
+bool hasValue(const kinematics::SweepResult& sweep, PlotQuantity quantity, std::size_t sample);
+
+/// Fills `out` with the plottable samples of `quantity`. Reuses `out`'s lists: one allocation
+/// per run, none per point. No runs if the sweep did not compute the column.
+void buildSeriesRuns(const kinematics::SweepResult& sweep, PlotQuantity quantity, AngleUnit unit,
+                     SeriesRuns& out);
+
+} // namespace linkwright::ui
