@@ -6,6 +6,11 @@
 #include "ui/document/mechanism_document.h"
 #include "ui/main_window.h"
 #include "ui/message_banner.h"
+#include "ui/panels/length_editor.h"
+#include "ui/panels/lengths_panel.h"
+#include "ui/panels/analysis_panel.h"
+#include "ui/plots/plot_panel.h"
+#include "ui/plots/quantity_chart_view.h"
 
 #include "app/cli/cli.h"
 #include "kinematics/io/number_format.h"
@@ -14,7 +19,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <QDoubleSpinBox>
 #include <QFile>
+#include <QLineSeries>
+#include <QTest>
 #include <QImage>
 #include <QTemporaryDir>
 
@@ -145,4 +153,26 @@ TEST_CASE("presentation mode enlarges the fonts and can be left again", "[ui][wi
   CHECK(window.font().pointSizeF() > normal * 1.5);
   window.setPresentationMode(false);
   CHECK(window.font().pointSizeF() == normal);
+}
+
+TEST_CASE("typing a length in the panel updates the badge and the plotted series as the core says", "[ui][window]") {
+  ui::MainWindow window;
+  auto* frame = window.lengthsPanel()->lengthEditor(0)->findChild<QDoubleSpinBox*>();
+  REQUIRE(frame != nullptr);
+  frame->setFocus();
+  frame->selectAll();
+  QTest::keyClicks(frame, "20");
+  QTest::keyClick(frame, Qt::Key_Return);
+  REQUIRE(window.document()->design().lengths.frame == 20.0);
+  CHECK(window.analysisPanel()->grashofText().contains("Triple-rocker"));
+  // The rocker's ω curve now holds exactly the new sweep's values at its assembled samples.
+  const auto& sweep = window.document()->sweep();
+  const auto segments = window.plots()->chartView(ui::QuantityKind::Omega)->segments(ui::PlotQuantity::RockerOmega);
+  REQUIRE_FALSE(segments.isEmpty());
+  const QList<QPointF> plotted = segments.front()->points();
+  REQUIRE_FALSE(plotted.isEmpty());
+  std::size_t first = 0;
+  while (!sweep.ok(first)) ++first;
+  CHECK(plotted.front().x() == Approx(kinematics::radToDeg(sweep.inputAngle[first])));
+  CHECK(plotted.front().y() == Approx(kinematics::radToDeg(sweep.linkOmega[kinematics::fourbar::kRocker.index][first])));
 }
