@@ -13,7 +13,8 @@ MobilityReport mobility(const Mechanism& m) {
     if (std::holds_alternative<CrankPoint>(p.definition)) {
       r.links += 1;
       r.fullJoints += 1;
-    } else if (std::holds_alternative<RrrPoint>(p.definition)) {
+    } else if (std::holds_alternative<RrrPoint>(p.definition) || std::holds_alternative<RrpPoint>(p.definition)) {
+      // Two links and three joints: pin, pin, pin (RRR) or pin, pin, slider (RRP).
       r.links += 2;
       r.fullJoints += 3;
     }

@@ -5,7 +5,9 @@
 namespace linkwright::kinematics::io {
 namespace {
 
-bool isDyad(const Point& p) { return std::holds_alternative<RrrPoint>(p.definition); }
+bool isDyad(const Point& p) {
+  return std::holds_alternative<RrrPoint>(p.definition) || std::holds_alternative<RrpPoint>(p.definition);
+}
 
 } // namespace
 

@@ -5,7 +5,7 @@
 //   crank_angle_deg                    the input angle (the sweep's grid)
 //   <link>_angle_deg                   each moving link other than the driven crank, unwrapped
 //   <link>_omega_rad_s, <link>_alpha_rad_s2   each moving link, crank first
-//   transmission_angle_deg             per RRR dyad (suffixed _<point> when there are several)
+//   transmission_angle_deg             per RRR or RRP dyad (suffixed _<point> when several)
 //   <point>_x_<unit>, _y_, _vx_<unit>_s, _vy_, _ax_<unit>_s2, _ay_   each moving point
 
 #include "kinematics/model/mechanism.h"

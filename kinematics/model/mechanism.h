@@ -3,7 +3,8 @@
 // from points before it (ground pivot, driven crank tip, RRR dyad joint, point fixed on a
 // link), and the moving links whose angles, rates and accelerations are reported. This is the
 // dyad decomposition of Pyslvs and of every closed-form textbook method: solving the points in
-// order solves the linkage. One crank drives it (one degree of freedom).
+// order solves the linkage. One crank drives it (one degree of freedom). RRP dyads (sliders on
+// a ground guide) make slider-cranks.
 //
 // Frame and units: x to the right, y up, angles counter-clockwise from +x in radians. For a
 // four-bar, +x is the frame line (crank pivot to rocker pivot). Lengths are in
@@ -52,6 +53,19 @@ struct RrrPoint {
   bool operator==(const RrrPoint&) const = default;
 };
 
+/// The joint C of an RRP dyad (a slider): at `length` from point `first`, on a straight guide
+/// fixed to the ground through `guidePoint` at `guideAngle` (rad, CCW from +x). Branch::Open
+/// puts C at the larger guide coordinate (further along the guide's direction), Crossed at
+/// the smaller one.
+struct RrpPoint {
+  PointId first;
+  double length = 1.0;
+  Eigen::Vector2d guidePoint = Eigen::Vector2d::Zero();
+  double guideAngle = 0.0;
+  Branch branch = Branch::Open;
+  bool operator==(const RrpPoint&) const = default;
+};
+
 /// A point rigidly fixed on a link: `along` the link's direction (from its first point toward
 /// its second) and `across` it (90° counter-clockwise), measured from the link's first point.
 struct AttachedPoint {
@@ -61,7 +75,7 @@ struct AttachedPoint {
   bool operator==(const AttachedPoint&) const = default;
 };
 
-using PointDefinition = std::variant<GroundPoint, CrankPoint, RrrPoint, AttachedPoint>;
+using PointDefinition = std::variant<GroundPoint, CrankPoint, RrrPoint, RrpPoint, AttachedPoint>;
 
 /// A named point. Its definition refers only to points (and links) defined before it.
 struct Point {

@@ -45,6 +45,13 @@ std::optional<Error> checkPoint(const Mechanism& m, std::size_t i, int& cranks) 
     if (auto e = checkPositive(r->firstLength, pointField(i, "firstLength"))) return e;
     return checkPositive(r->secondLength, pointField(i, "secondLength"));
   }
+  if (const auto* p = std::get_if<RrpPoint>(&def)) {
+    if (auto e = checkEarlier(p->first, i, "first")) return e;
+    if (auto e = checkPositive(p->length, pointField(i, "length"))) return e;
+    if (auto e = checkFinite(p->guidePoint.x(), pointField(i, "guideX"))) return e;
+    if (auto e = checkFinite(p->guidePoint.y(), pointField(i, "guideY"))) return e;
+    return checkFinite(p->guideAngle, pointField(i, "guideAngle"));
+  }
   const auto& a = std::get<AttachedPoint>(def);
   if (a.link.index >= m.links.size())
     return structureError(pointField(i, "link"), "refers to a link that does not exist");
@@ -61,6 +68,7 @@ bool isRigidPair(const Mechanism& m, PointId a, PointId b) {
     const PointDefinition& def = m.points[child.index].definition;
     if (const auto* c = std::get_if<CrankPoint>(&def)) return c->pivot == parent;
     if (const auto* r = std::get_if<RrrPoint>(&def)) return r->first == parent || r->second == parent;
+    if (const auto* p = std::get_if<RrpPoint>(&def)) return p->first == parent;
     return false;
   };
   return definesFrom(a, b) || definesFrom(b, a);

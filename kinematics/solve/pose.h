@@ -50,9 +50,10 @@ struct Pose {
   std::vector<double> linkAngle;
   std::vector<double> linkOmega;
   std::vector<double> linkAlpha;
-  /// For RRR points: the transmission angle at C between C→P1 and C→P2, in [0, π]; else 0.
+  /// For RRR points: the transmission angle at C between C→P1 and C→P2, in [0, π]; for RRP
+  /// points the angle between the rod and the guide's normal, in [0, π/2]; else 0.
   std::vector<double> transmissionAngle;
-  /// For RRR points: +1 open, −1 crossed, the branch actually used; else 0.
+  /// For RRR and RRP points: +1 open, −1 crossed, the branch actually used; else 0.
   std::vector<signed char> branchSign;
   bool operator==(const Pose&) const = default;
 };

@@ -4,6 +4,7 @@
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
+#include "kinematics/solve/rrp_dyad.h"
 
 #include <cmath>
 
@@ -44,13 +45,15 @@ struct Solver {
       pose.acceleration[i] = c.length * (driver.alpha * perp(radial) - driver.omega * driver.omega * radial);
   }
 
-  signed char chooseSign(std::size_t i, const RrrPoint& r, const RrrCandidates& cand) const {
+  // +1 for the open candidate, −1 for the crossed one: the predicted position decides if
+  // given, else the tracked sign, else the mechanism's branch.
+  signed char chooseSign(std::size_t i, Branch branch, const Eigen::Vector2d& open, const Eigen::Vector2d& crossed) const {
     if (!guide.predicted.empty()) {
       const Eigen::Vector2d& target = guide.predicted[i];
-      return (cand.open - target).squaredNorm() <= (cand.crossed - target).squaredNorm() ? 1 : -1;
+      return (open - target).squaredNorm() <= (crossed - target).squaredNorm() ? 1 : -1;
     }
     if (!guide.signs.empty() && guide.signs[i] != 0) return guide.signs[i];
-    return r.branch == Branch::Open ? 1 : -1;
+    return branch == Branch::Open ? 1 : -1;
   }
 
   bool rrr(std::size_t i, const RrrPoint& r) {
@@ -61,7 +64,7 @@ struct Solver {
       report = {PoseStatus::NotAssemblable, PointId{i}, cand.failure};
       return false;
     }
-    const signed char sign = chooseSign(i, r, cand);
+    const signed char sign = chooseSign(i, r.branch, cand.open, cand.crossed);
     const Eigen::Vector2d c = sign > 0 ? cand.open : cand.crossed;
     pose.position[i] = c;
     pose.branchSign[i] = sign;
@@ -89,6 +92,38 @@ struct Solver {
     const auto* c = std::get_if<CrankPoint>(&m.points[l.second.index].definition);
     const auto* reversed = std::get_if<CrankPoint>(&m.points[l.first.index].definition);
     return (c != nullptr && c->pivot == l.first) || (reversed != nullptr && reversed->pivot == l.second);
+  }
+
+  bool rrp(std::size_t i, const RrpPoint& p) {
+    const Eigen::Vector2d& p1 = pose.position[p.first.index];
+    const Eigen::Vector2d u(std::cos(p.guideAngle), std::sin(p.guideAngle));
+    const RrpCandidates cand = rrpCandidates(p1, p.length, p.guidePoint, u);
+    if (cand.failure != AssemblyFailure::None) {
+      report = {PoseStatus::NotAssemblable, PointId{i}, cand.failure};
+      return false;
+    }
+    const Eigen::Vector2d open = p.guidePoint + cand.open * u;
+    const Eigen::Vector2d crossed = p.guidePoint + cand.crossed * u;
+    const signed char sign = chooseSign(i, p.branch, open, crossed);
+    const Eigen::Vector2d c = sign > 0 ? open : crossed;
+    pose.position[i] = c;
+    pose.branchSign[i] = sign;
+    const Eigen::Vector2d r = c - p1;
+    // 90° with the rod along the guide (the best), 0° with it across (the toggle).
+    pose.transmissionAngle[i] = std::atan2(std::abs(r.dot(u)), std::abs(cross(u, r)));
+    if (!wantVelocity || !ratesValid) return true;
+    const Eigen::Vector2d& v1 = pose.velocity[p.first.index];
+    double sDot = 0.0;
+    if (!rrpSolveRate(r, u, r.dot(v1), sDot)) {
+      markSingular(i);
+      return true;
+    }
+    pose.velocity[i] = sDot * u;
+    if (!wantAcceleration) return true;
+    double sDdot = 0.0;
+    rrpSolveRate(r, u, r.dot(pose.acceleration[p.first.index]) - (pose.velocity[i] - v1).squaredNorm(), sDdot);
+    pose.acceleration[i] = sDdot * u;
+    return true;
   }
 
   void link(std::size_t k) {
@@ -131,6 +166,8 @@ struct Solver {
       else if (const auto* c = std::get_if<CrankPoint>(&def)) crank(i, *c);
       else if (const auto* r = std::get_if<RrrPoint>(&def)) {
         if (!rrr(i, *r)) return report;
+      } else if (const auto* p = std::get_if<RrpPoint>(&def)) {
+        if (!rrp(i, *p)) return report;
       } else attached(i, std::get<AttachedPoint>(def));
     }
     for (std::size_t k = 0; k < m.links.size(); ++k) link(k);
@@ -185,6 +222,17 @@ std::string describeFailure(const Mechanism& m, const PoseReport& report, const 
   const std::size_t i = report.culprit.index;
   const std::string& name = m.points[i].name;
   const std::string at = " at crank angle " + io::formatShort(radToDeg(inputAngle)) + "°";
+  if (const auto* p = std::get_if<RrpPoint>(&m.points[i].definition); p != nullptr && report.status != PoseStatus::Ok) {
+    const std::string rod = lengthName(m, report.culprit, p->first, "rod");
+    const std::string& n1 = m.points[p->first.index].name;
+    if (report.status == PoseStatus::Singular)
+      return name + " is at a toggle position" + at + ": the " + rod + " is at right angles to the guide, so velocity and acceleration are undefined there";
+    const Eigen::Vector2d u(std::cos(p->guideAngle), std::sin(p->guideAngle));
+    const Eigen::Vector2d d = p->guidePoint - pose.position[p->first.index];
+    const double distance = std::abs(u.x() * d.y() - u.y() * d.x());
+    return name + " cannot be assembled" + at + ": " + n1 + " is " + io::formatShort(distance) + " " + m.lengthUnit +
+           " from the guide, more than the " + rod + " length " + io::formatShort(p->length) + " " + m.lengthUnit;
+  }
   const auto* r = std::get_if<RrrPoint>(&m.points[i].definition);
   if (report.status == PoseStatus::Ok || r == nullptr) return name + " solved" + at;
   const std::string& n1 = m.points[r->first.index].name;

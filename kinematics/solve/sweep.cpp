@@ -21,7 +21,8 @@ constexpr SolveRequest kPositionsOnly{false, false};
 double wrapToPi(double angle) { return std::remainder(angle, 2.0 * kPi); }
 
 bool isDyad(const Mechanism& m, std::size_t i) {
-  return std::holds_alternative<RrrPoint>(m.points[i].definition);
+  const PointDefinition& def = m.points[i].definition;
+  return std::holds_alternative<RrrPoint>(def) || std::holds_alternative<RrpPoint>(def);
 }
 
 // How far the distance between a dyad's parents is from an assembly limit (l1 + l2 or
@@ -31,6 +32,13 @@ double limitGap(const RrrPoint& r, const Pose& pose) {
   return std::min(r.firstLength + r.secondLength - L, L - std::abs(r.firstLength - r.secondLength));
 }
 
+// For a slider: the rod length less the pin's distance from the guide.
+double limitGap(const RrpPoint& p, const Pose& pose) {
+  const Eigen::Vector2d u(std::cos(p.guideAngle), std::sin(p.guideAngle));
+  const Eigen::Vector2d d = p.guidePoint - pose.position[p.first.index];
+  return p.length - std::abs(u.x() * d.y() - u.y() * d.x());
+}
+
 // True unless every dyad provably stays away from its toggle between poses a and b. The gap
 // changes no faster than the parents move, so it cannot close if the gaps at both ends exceed
 // the parents' displacement (doubled, since a chord understates the path). Steps over half a
@@ -38,11 +46,14 @@ double limitGap(const RrrPoint& r, const Pose& pose) {
 bool branchAmbiguous(const Mechanism& m, double aAngle, const Pose& a, double bAngle, const Pose& b) {
   if (std::abs(bAngle - aAngle) > 0.5) return true;
   for (const Point& p : m.points) {
-    const auto* r = std::get_if<RrrPoint>(&p.definition);
-    if (r == nullptr) continue;
-    const double motion = (b.position[r->first.index] - a.position[r->first.index]).norm() +
-                          (b.position[r->second.index] - a.position[r->second.index]).norm();
-    if (limitGap(*r, a) + limitGap(*r, b) <= 2.0 * motion) return true;
+    if (const auto* r = std::get_if<RrrPoint>(&p.definition)) {
+      const double motion = (b.position[r->first.index] - a.position[r->first.index]).norm() +
+                            (b.position[r->second.index] - a.position[r->second.index]).norm();
+      if (limitGap(*r, a) + limitGap(*r, b) <= 2.0 * motion) return true;
+    } else if (const auto* s = std::get_if<RrpPoint>(&p.definition)) {
+      const double motion = (b.position[s->first.index] - a.position[s->first.index]).norm();
+      if (limitGap(*s, a) + limitGap(*s, b) <= 2.0 * motion) return true;
+    }
   }
   return false;
 }
