@@ -2,6 +2,8 @@
 
 #include "kinematics/model/units.h"
 
+#include <cmath>
+
 namespace linkwright::kinematics::io {
 namespace {
 
@@ -42,6 +44,24 @@ double SweepColumn::value(const SweepResult& r, std::size_t j) const {
   case ColumnQuantity::PointVy: return r.velocity[index][j].y();
   case ColumnQuantity::PointAx: return r.acceleration[index][j].x();
   case ColumnQuantity::PointAy: return r.acceleration[index][j].y();
+  }
+  return 0.0;
+}
+
+double SweepColumn::valueOf(const Pose& p, double inputAngle, double nearDeg) const {
+  const auto unwrapped = [&](double deg) { return nearDeg + std::remainder(deg - nearDeg, 360.0); };
+  switch (quantity) {
+  case ColumnQuantity::InputAngle: return radToDeg(inputAngle);
+  case ColumnQuantity::LinkAngle: return unwrapped(radToDeg(p.linkAngle[index]));
+  case ColumnQuantity::LinkOmega: return p.linkOmega[index];
+  case ColumnQuantity::LinkAlpha: return p.linkAlpha[index];
+  case ColumnQuantity::TransmissionAngle: return radToDeg(p.transmissionAngle[index]);
+  case ColumnQuantity::PointX: return p.position[index].x();
+  case ColumnQuantity::PointY: return p.position[index].y();
+  case ColumnQuantity::PointVx: return p.velocity[index].x();
+  case ColumnQuantity::PointVy: return p.velocity[index].y();
+  case ColumnQuantity::PointAx: return p.acceleration[index].x();
+  case ColumnQuantity::PointAy: return p.acceleration[index].y();
   }
   return 0.0;
 }

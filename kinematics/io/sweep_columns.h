@@ -32,6 +32,9 @@ struct SweepColumn {
   bool isRate() const;
   /// The value at `sample`, in the column's unit (angles in degrees).
   double value(const SweepResult& result, std::size_t sample) const;
+  /// The same quantity from a single pose solved at `inputAngle` (rad). Angles are unwrapped
+  /// to the turn nearest `nearDeg`, so they compare with the sweep's continuous columns.
+  double valueOf(const Pose& pose, double inputAngle, double nearDeg = 0.0) const;
 };
 
 /// True for the link from the crank pivot to the driven crank tip (zero phase): its angle is

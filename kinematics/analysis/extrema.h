@@ -1,0 +1,43 @@
+#pragma once
+// Extreme values of any quantity over a sweep, found precisely: the largest and smallest
+// samples bracket each extremum, and a golden-section search on the exact pose solver refines
+// it between the neighbouring samples, so the answer does not depend on the sampling step
+// (a frame-based tool reads extremes off its frames; seed 003 reads them at one frame per
+// degree). Used for a slider's peak velocity and acceleration, a coupler's peak ω and α, etc.
+
+#include "kinematics/model/mechanism.h"
+#include "kinematics/solve/pose.h"
+#include "kinematics/solve/sweep.h"
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace linkwright::kinematics {
+
+/// One extreme value and the input angle (rad) where it occurs.
+struct Extremum {
+  double value = 0.0;
+  double inputAngle = 0.0;
+  bool refined = false;  ///< true if the search improved on the best sample
+  bool operator==(const Extremum&) const = default;
+};
+
+struct Extrema {
+  Extremum minimum;
+  Extremum maximum;
+  bool operator==(const Extrema&) const = default;
+};
+
+/// Evaluates a quantity from a pose solved with velocities and accelerations at `inputAngle`.
+using PoseQuantity = std::function<double(const Pose& pose, double inputAngle)>;
+
+/// Refines the extremes of `quantity` over `sampled` (a sweep of `mechanism` over `spec`):
+/// `values[j]` is the quantity at sample j and `valid[j]` says whether it exists there (rates
+/// do not at a toggle). Nullopt if no sample is valid. The search stays between the valid
+/// neighbours of the best sample, to `angleTolerance` rad.
+std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec& spec, const std::vector<double>& values,
+                                     const std::vector<bool>& valid, const PoseQuantity& quantity,
+                                     double angleTolerance = 1e-10);
+
+} // namespace linkwright::kinematics
