@@ -49,11 +49,14 @@ const std::set<std::string>& optionsOf(Command command) {
   static const std::set<std::string> analyze{"--fourbar", "--example", "--unit", "--rpm", "--omega",
                                              "--alpha", "--from", "--to", "--step", "--samples",
                                              "--branch", "--coupler-point", "-o", "--output", "--format"};
+  static const std::set<std::string> extremes{"--fourbar", "--example", "--unit", "--rpm", "--omega", "--alpha", "--from",
+                                              "--to", "--step", "--samples", "--branch", "--coupler-point"};
   static const std::set<std::string> classify{"--fourbar", "--example", "--unit", "--branch", "--json"};
   static const std::set<std::string> none{};
   switch (command) {
   case Command::Analyze: return analyze;
   case Command::Classify: return classify;
+  case Command::Extremes: return extremes;
   default: return none;
   }
 }
@@ -62,6 +65,7 @@ const char* commandName(Command command) {
   switch (command) {
   case Command::Analyze: return "analyze";
   case Command::Classify: return "classify";
+  case Command::Extremes: return "extremes";
   case Command::Examples: return "examples";
   default: return "linkwright-cli";
   }
@@ -124,7 +128,8 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
 }
 
 std::optional<Error> checkCombination(const Invocation& inv) {
-  const bool needsMechanism = inv.command == Command::Analyze || inv.command == Command::Classify;
+  const bool needsMechanism =
+      inv.command == Command::Analyze || inv.command == Command::Classify || inv.command == Command::Extremes;
   if (needsMechanism && !inv.fourBar && !inv.example)
     return usage("--fourbar", std::string(commandName(inv.command)) + " needs --fourbar FRAME,CRANK,COUPLER,ROCKER or --example NAME");
   if (inv.fourBar && inv.example) return usage("--example", "--fourbar and --example cannot be used together");
@@ -150,9 +155,10 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   }
   if (first == "analyze") inv.command = Command::Analyze;
   else if (first == "classify") inv.command = Command::Classify;
+  else if (first == "extremes") inv.command = Command::Extremes;
   else if (first == "examples") inv.command = Command::Examples;
   else if (!first.empty() && first[0] == '-') return usage(first, "unknown option '" + first + "' (see linkwright-cli --help)");
-  else return usage(first, "unknown command '" + first + "' (commands: analyze, classify, examples; see --help)");
+  else return usage(first, "unknown command '" + first + "' (commands: analyze, extremes, classify, examples; see --help)");
 
   std::set<std::string> seen;
   for (std::size_t i = 1; i < args.size(); ++i) {

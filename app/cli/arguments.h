@@ -13,7 +13,7 @@
 
 namespace linkwright::cli {
 
-enum class Command { Help, Version, Examples, Analyze, Classify };
+enum class Command { Help, Version, Examples, Analyze, Classify, Extremes };
 
 /// Everything the user asked for. Angles in degrees and speeds as typed: converted to SI by
 /// the commands, at the edge.

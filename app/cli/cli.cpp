@@ -14,8 +14,10 @@ constexpr const char* kUsage = R"(Usage: linkwright-cli COMMAND [OPTIONS]
 Planar linkage analysis (Linkwright's kinematics core, no GUI needed).
 
 Commands:
-  analyze    position, velocity and acceleration table of a four-bar as CSV
+  analyze    position, velocity and acceleration table of a linkage as CSV
+  extremes   minimum and maximum of every column, refined between the samples
   classify   Grashof class, mobility, transmission angle, limit positions, time ratio
+             (four-bars)
   examples   list the built-in examples
   --help [COMMAND], --version
 
@@ -25,7 +27,8 @@ constexpr const char* kMechanismOptions = R"(Mechanism (one of):
   --fourbar FRAME,CRANK,COUPLER,ROCKER
                       link lengths, positive, in the length unit (default mm).
                       Crank pivot O2 at the origin, rocker pivot O4 at (FRAME, 0).
-  --example NAME      a built-in example (see 'linkwright-cli examples')
+  --example NAME      a built-in example (see 'linkwright-cli examples'); analyze and
+                      extremes also take the slider-crank examples (ls3-engine)
   --unit NAME         length unit label used in the output (default mm; letters only).
                       Lengths are taken and reported in this unit.
   --branch open|crossed
@@ -33,7 +36,7 @@ constexpr const char* kMechanismOptions = R"(Mechanism (one of):
                       (default open, or the example's)
 )";
 
-constexpr const char* kAnalyzeOptions = R"(Speed and range (analyze):
+constexpr const char* kAnalyzeOptions = R"(Speed and range (analyze, extremes):
   --rpm R | --omega W crank speed in rev/min or rad/s, CCW positive
                       (default: the example's; 1 rad/s for --fourbar)
   --alpha A           crank angular acceleration, rad/s² (default 0). ω and α are the
@@ -73,8 +76,9 @@ Example:
 
 std::string helpText(const std::string& topic) {
   std::string text = kUsage;
-  if (topic.empty() || topic == "analyze" || topic == "classify") text += kMechanismOptions;
-  if (topic.empty() || topic == "analyze") text += std::string("\n") + kAnalyzeOptions;
+  const bool sweeps = topic.empty() || topic == "analyze" || topic == "extremes";
+  if (sweeps || topic == "classify") text += kMechanismOptions;
+  if (sweeps) text += std::string("\n") + kAnalyzeOptions;
   if (topic.empty() || topic == "classify") text += std::string("\n") + kClassifyOptions;
   return text + "\n" + kExitCodes;
 }
@@ -88,7 +92,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   const Invocation& inv = *parsed;
   switch (inv.command) {
   case Command::Help:
-    if (!inv.helpTopic.empty() && inv.helpTopic != "analyze" && inv.helpTopic != "classify" &&
+    if (!inv.helpTopic.empty() && inv.helpTopic != "analyze" && inv.helpTopic != "classify" && inv.helpTopic != "extremes" &&
         inv.helpTopic != "examples" && inv.helpTopic != "linkwright-cli") {
       err << "linkwright-cli: no help for '" << inv.helpTopic << "' (commands: analyze, classify, examples)\n";
       return toInt(ExitCode::BadInput);
@@ -101,6 +105,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   case Command::Examples: return toInt(runExamples(out));
   case Command::Analyze: return toInt(runAnalyze(inv, out, err));
   case Command::Classify: return toInt(runClassify(inv, out, err));
+  case Command::Extremes: return toInt(runExtremes(inv, out, err));
   }
   return toInt(ExitCode::BadInput);
 }

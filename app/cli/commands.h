@@ -1,9 +1,13 @@
 #pragma once
-// The three commands behind linkwright-cli: analyze (CSV table), classify (Grashof class,
-// transmission angle, limit positions, assemblable range) and examples (the built-ins).
+// The commands behind linkwright-cli: analyze (CSV table), extremes (refined extreme values),
+// classify (Grashof class, transmission angle, limit positions, assemblable range; four-bars)
+// and examples (the built-ins).
 
 #include "app/cli/arguments.h"
 #include "app/cli/exit_codes.h"
+
+#include "kinematics/model/mechanism.h"
+#include "kinematics/solve/sweep.h"
 
 #include <iosfwd>
 
@@ -12,6 +16,7 @@ namespace linkwright::cli {
 ExitCode runAnalyze(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runClassify(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runExamples(std::ostream& out);
+ExitCode runExtremes(const Invocation& invocation, std::ostream& out, std::ostream& err);
 
 /// The four-bar an invocation describes: its --fourbar lengths or --example, with --unit,
 /// --branch and --coupler-point applied.
@@ -22,5 +27,25 @@ struct ResolvedFourBar {
   std::optional<kinematics::FourBarExample> example;
 };
 kinematics::Result<ResolvedFourBar> resolveFourBar(const Invocation& invocation);
+
+/// What an example brings besides the linkage: crank speed and the angle grid.
+struct GridDefaults {
+  double omega = 1.0;  ///< rad/s
+  double alpha = 0.0;  ///< rad/s²
+  double fromDeg = 0.0;
+  double toDeg = 360.0;
+  double stepDeg = 1.0;
+};
+
+/// Any linkage an invocation describes (a four-bar, or a slider-crank example), built.
+struct ResolvedMechanism {
+  kinematics::Mechanism mechanism;
+  std::optional<ResolvedFourBar> fourBar;  ///< set for four-bars: their exact ranges apply
+  GridDefaults defaults;
+};
+kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& invocation);
+
+/// The sweep the speed and range options ask for, with `defaults` for what they leave out.
+kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Invocation& invocation, const GridDefaults& defaults);
 
 } // namespace linkwright::cli

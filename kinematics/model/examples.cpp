@@ -15,6 +15,21 @@ std::vector<FourBarExample> fourBarExamples() {
   };
 }
 
+std::vector<SliderCrankExample> sliderCrankExamples() {
+  return {
+      {"ls3-engine",
+       "Chevrolet LS3 piston: stroke 92 mm (crank 46 mm), connecting rod 6.098 in, crank at 110 Hz = 6600 rpm "
+       "(Miranda et al., SolidWorks piston extremes)",
+       {46.0, 6.098 * 25.4, 0.0, false}, "mm", 2.0 * kPi * 110.0, 0.0, 360.0, 1.0},
+  };
+}
+
+std::optional<SliderCrankExample> findSliderCrankExample(const std::string& name) {
+  for (SliderCrankExample& e : sliderCrankExamples())
+    if (e.name == name) return std::move(e);
+  return std::nullopt;
+}
+
 std::optional<FourBarExample> findFourBarExample(const std::string& name) {
   for (FourBarExample& e : fourBarExamples())
     if (e.name == name) return std::move(e);

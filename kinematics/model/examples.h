@@ -2,6 +2,7 @@
 // Built-in examples taken from the seed documents, shared by the CLI and (later) the GUI.
 
 #include "kinematics/model/fourbar.h"
+#include "kinematics/model/slider_crank.h"
 
 #include <optional>
 #include <string>
@@ -23,6 +24,25 @@ struct FourBarExample {
   double stepDeg = 30.0;  ///< default table step, degrees
   bool operator==(const FourBarExample&) const = default;
 };
+
+/// A slider-crank from a seed, with its speed and default angle grid.
+struct SliderCrankExample {
+  std::string name;
+  std::string description;
+  SliderCrankGeometry geometry;
+  std::string lengthUnit;
+  double omega = 0.0;     ///< crank, rad/s
+  double fromDeg = 0.0;
+  double toDeg = 360.0;
+  double stepDeg = 1.0;
+  bool operator==(const SliderCrankExample&) const = default;
+};
+
+/// All built-in slider-crank examples.
+std::vector<SliderCrankExample> sliderCrankExamples();
+
+/// The slider-crank example named `name`, if there is one.
+std::optional<SliderCrankExample> findSliderCrankExample(const std::string& name);
 
 /// All built-in four-bar examples, in display order.
 std::vector<FourBarExample> fourBarExamples();

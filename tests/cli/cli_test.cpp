@@ -255,3 +255,44 @@ TEST_CASE("examples lists every built-in example", "[cli]") {
   CHECK_THAT(r.out, Catch::Contains("alvi-fourbar"));
   CHECK_THAT(r.out, Catch::Contains("--fourbar 60,25,70,45"));
 }
+
+TEST_CASE("extremes refines the LS3 piston's peak speed and acceleration (seed 003)", "[cli][extremes]") {
+  const Run r = run({"extremes", "--example", "ls3-engine", "--step", "30"});
+  REQUIRE(r.code == 0);
+  // Seed 003 (SolidWorks, 110 Hz): 33.17 m/s and 28497.18 m/s²; exact: 33.1744 m/s and
+  // rω²(1 + r/L) = 28499.58 m/s², found here from samples 30° apart.
+  std::istringstream lines(r.out);
+  bool sawSpeed = false, sawAcceleration = false;
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream cells(line);
+    std::string name;
+    double minimum = 0, minAt = 0, maximum = 0, maxAt = 0;
+    cells >> name >> minimum >> minAt >> maximum >> maxAt;
+    if (name == "C_vx_mm_s") {
+      sawSpeed = true;
+      CHECK(maximum / 1000.0 == Approx(33.1744).epsilon(1e-5));
+      CHECK(minimum == Approx(-maximum).epsilon(1e-9));
+    }
+    if (name == "C_ax_mm_s2") {
+      sawAcceleration = true;
+      const double omega = 2.0 * kinematics::kPi * 110.0;
+      CHECK(-minimum == Approx(46.0 * omega * omega * (1.0 + 46.0 / (6.098 * 25.4))).epsilon(1e-8));
+    }
+  }
+  CHECK(sawSpeed);
+  CHECK(sawAcceleration);
+}
+
+TEST_CASE("slider-crank examples analyze, and classify says it is for four-bars", "[cli]") {
+  const Run analyze = run({"analyze", "--example", "ls3-engine", "--step", "90"});
+  REQUIRE(analyze.code == 0);
+  CHECK_THAT(analyze.out, Catch::StartsWith("crank_angle_deg,crank_omega_rad_s,crank_alpha_rad_s2,rod_angle_deg"));
+  CHECK(parseCsv(analyze.out).rows.size() == 5);
+  const Run classify = run({"classify", "--example", "ls3-engine"});
+  CHECK(classify.code == 2);
+  CHECK_THAT(classify.err, Catch::Contains("is a slider-crank; classify works on four-bars"));
+  const Run point = run({"analyze", "--example", "ls3-engine", "--coupler-point", "1,2"});
+  CHECK(point.code == 2);
+  CHECK_THAT(point.err, Catch::Contains("--coupler-point applies to four-bars"));
+  CHECK_THAT(run({"examples"}).out, Catch::Contains("ls3-engine"));
+}

@@ -1,0 +1,69 @@
+#include "app/cli/commands.h"
+
+#include "kinematics/analysis/extrema.h"
+#include "kinematics/io/number_format.h"
+#include "kinematics/io/sweep_columns.h"
+#include "kinematics/model/units.h"
+
+#include <iomanip>
+#include <ostream>
+
+namespace linkwright::cli {
+namespace {
+
+namespace k = kinematics;
+
+// Refines one column's extremes over the sweep; nullopt where the column has no value at all.
+std::optional<k::Extrema> columnExtrema(const k::Mechanism& m, const k::SweepSpec& spec, const k::SweepResult& r,
+                                        const k::io::SweepColumn& column) {
+  std::vector<double> values(r.size(), 0.0);
+  std::vector<bool> valid(r.size(), false);
+  for (std::size_t j = 0; j < r.size(); ++j) {
+    valid[j] = column.isRate() ? r.ok(j) : r.assembled(j);
+    if (valid[j]) values[j] = column.value(r, j);
+  }
+  // The search's poses unwrap angles next to the sweep's own value where the search starts.
+  double near = 0.0;
+  for (std::size_t j = 0; j < r.size(); ++j)
+    if (valid[j]) near = values[j];
+  const k::PoseQuantity quantity = [&](const k::Pose& pose, double angle) { return column.valueOf(pose, angle, near); };
+  return k::refineExtrema(m, spec, values, valid, quantity);
+}
+
+std::string angleText(double radians) { return k::io::formatFixed(k::radToDeg(radians), 4); }
+
+} // namespace
+
+ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err) {
+  const auto fail = [&](const k::Error& e) {
+    err << "linkwright-cli: " << e.message << "\n";
+    return ExitCode::BadInput;
+  };
+  const auto resolved = resolveMechanism(inv);
+  if (!resolved) return fail(resolved.error());
+  const auto spec = sweepSpecFor(inv, resolved->defaults);
+  if (!spec) return fail(spec.error());
+  const auto result = k::sweep(resolved->mechanism, *spec);
+  if (!result) return fail(result.error());
+
+  out << "extremes over crank angles " << k::io::formatShort(k::radToDeg(spec->fromAngle)) << "° to "
+      << k::io::formatShort(k::radToDeg(spec->toAngle)) << "°, refined between " << spec->samples
+      << " samples; crank " << k::io::formatShort(spec->omega) << " rad/s, " << k::io::formatShort(spec->alpha) << " rad/s²\n";
+  out << std::left << std::setw(26) << "quantity" << std::right << std::setw(18) << "minimum" << std::setw(14)
+      << "at crank_deg" << std::setw(18) << "maximum" << std::setw(14) << "at crank_deg" << "\n";
+  for (const k::io::SweepColumn& column : k::io::sweepColumns(resolved->mechanism, result->request)) {
+    if (column.quantity == k::io::ColumnQuantity::InputAngle) continue;
+    const auto e = columnExtrema(resolved->mechanism, *spec, *result, column);
+    if (!e) continue;
+    out << std::left << std::setw(26) << column.name << std::right << std::setw(18) << k::io::formatShort(e->minimum.value, 9)
+        << std::setw(14) << angleText(e->minimum.inputAngle) << std::setw(18) << k::io::formatShort(e->maximum.value, 9)
+        << std::setw(14) << angleText(e->maximum.inputAngle) << "\n";
+  }
+  if (!result->notAssembled.empty()) {
+    err << "linkwright-cli: the linkage cannot be assembled over the whole range; extremes are over the part that can\n";
+    return ExitCode::NotAssemblable;
+  }
+  return ExitCode::Success;
+}
+
+} // namespace linkwright::cli

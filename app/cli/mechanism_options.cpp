@@ -1,0 +1,55 @@
+#include "app/cli/commands.h"
+
+namespace linkwright::cli {
+
+namespace k = kinematics;
+
+kinematics::Result<ResolvedFourBar> resolveFourBar(const Invocation& inv) {
+  ResolvedFourBar r;
+  if (inv.example) {
+    r.example = k::findFourBarExample(*inv.example);
+    if (!r.example) {
+      if (k::findSliderCrankExample(*inv.example))
+        return k::Error{k::ErrorCode::InvalidValue, "--example",
+                        "--example: '" + *inv.example + "' is a slider-crank; classify works on four-bars (try analyze or extremes)"};
+      std::string names;
+      for (const auto& e : k::fourBarExamples()) names += (names.empty() ? "" : ", ") + e.name;
+      for (const auto& e : k::sliderCrankExamples()) names += ", " + e.name;
+      return k::Error{k::ErrorCode::InvalidValue, "--example",
+                      "--example: no example named '" + *inv.example + "' (available: " + names + ")"};
+    }
+    r.lengths = r.example->lengths;
+    r.lengthUnit = r.example->lengthUnit;
+    r.branch = r.example->branch;
+  } else {
+    r.lengths = *inv.fourBar;
+    r.lengthUnit = inv.lengthUnit;
+  }
+  if (inv.branch) r.branch = *inv.branch;
+  return r;
+}
+
+kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& inv) {
+  ResolvedMechanism r;
+  if (inv.example) {
+    if (const auto slider = k::findSliderCrankExample(*inv.example)) {
+      if (inv.couplerPoint)
+        return k::Error{k::ErrorCode::InvalidValue, "--coupler-point", "--coupler-point applies to four-bars, not to " + slider->name};
+      auto m = k::makeSliderCrank(slider->geometry, inv.branch.value_or(k::Branch::Open), slider->lengthUnit);
+      if (!m) return m.error();
+      r.mechanism = std::move(*m);
+      r.defaults = {slider->omega, 0.0, slider->fromDeg, slider->toDeg, slider->stepDeg};
+      return r;
+    }
+  }
+  auto fb = resolveFourBar(inv);
+  if (!fb) return fb.error();
+  auto m = k::makeFourBar(fb->lengths, fb->branch, fb->lengthUnit, inv.couplerPoint);
+  if (!m) return m.error();
+  r.mechanism = std::move(*m);
+  if (const auto& e = fb->example) r.defaults = {e->omega, e->alpha, e->fromDeg, e->toDeg, e->stepDeg};
+  r.fourBar = std::move(*fb);
+  return r;
+}
+
+} // namespace linkwright::cli
