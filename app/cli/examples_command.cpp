@@ -12,8 +12,9 @@ ExitCode runExamples(std::ostream& out) {
     const auto& l = e.lengths;
     out << e.name << "\n  " << e.description << "\n  --fourbar " << formatShort(l.frame) << ","
         << formatShort(l.crank) << "," << formatShort(l.coupler) << "," << formatShort(l.rocker) << " ("
-        << e.lengthUnit << "), --omega " << formatShort(e.omega) << " rad/s, every "
-        << formatShort(e.stepDeg) << "° from " << formatShort(e.fromDeg) << "° to " << formatShort(e.toDeg)
+        << e.lengthUnit << ")";
+    if (e.couplerPoint) out << ", --coupler-point " << formatShort(e.couplerPoint->along) << "," << formatShort(e.couplerPoint->across);
+    out << ", --omega " << formatShort(e.omega) << " rad/s, every " << formatShort(e.stepDeg) << "° from " << formatShort(e.fromDeg) << "° to " << formatShort(e.toDeg)
         << "°\n";
   }
   for (const kinematics::SliderCrankExample& e : kinematics::sliderCrankExamples()) {

@@ -5,6 +5,7 @@
 #include "kinematics/io/sweep_columns.h"
 #include "kinematics/model/units.h"
 
+#include <functional>
 #include <iomanip>
 #include <ostream>
 
@@ -30,7 +31,26 @@ std::optional<k::Extrema> columnExtrema(const k::Mechanism& m, const k::SweepSpe
   return k::refineExtrema(m, spec, values, valid, quantity);
 }
 
+// Refines the extremes of a quantity given at each sample and on a pose.
+std::optional<k::Extrema> quantityExtrema(const k::Mechanism& m, const k::SweepSpec& spec, const k::SweepResult& r,
+                                          const std::function<double(const k::SweepResult&, std::size_t)>& sampled,
+                                          const k::PoseQuantity& quantity) {
+  std::vector<double> values(r.size(), 0.0);
+  std::vector<bool> valid(r.size(), false);
+  for (std::size_t j = 0; j < r.size(); ++j) {
+    valid[j] = r.ok(j);
+    if (valid[j]) values[j] = sampled(r, j);
+  }
+  return k::refineExtrema(m, spec, values, valid, quantity);
+}
+
 std::string angleText(double radians) { return k::io::formatFixed(k::radToDeg(radians), 4); }
+
+void printRow(std::ostream& out, const std::string& name, const k::Extrema& e) {
+  out << std::left << std::setw(26) << name << std::right << std::setw(18) << k::io::formatShort(e.minimum.value, 9)
+      << std::setw(14) << angleText(e.minimum.inputAngle) << std::setw(18) << k::io::formatShort(e.maximum.value, 9)
+      << std::setw(14) << angleText(e.maximum.inputAngle) << "\n";
+}
 
 } // namespace
 
@@ -53,11 +73,21 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
       << "at crank_deg" << std::setw(18) << "maximum" << std::setw(14) << "at crank_deg" << "\n";
   for (const k::io::SweepColumn& column : k::io::sweepColumns(resolved->mechanism, result->request)) {
     if (column.quantity == k::io::ColumnQuantity::InputAngle) continue;
-    const auto e = columnExtrema(resolved->mechanism, *spec, *result, column);
-    if (!e) continue;
-    out << std::left << std::setw(26) << column.name << std::right << std::setw(18) << k::io::formatShort(e->minimum.value, 9)
-        << std::setw(14) << angleText(e->minimum.inputAngle) << std::setw(18) << k::io::formatShort(e->maximum.value, 9)
-        << std::setw(14) << angleText(e->maximum.inputAngle) << "\n";
+    if (const auto e = columnExtrema(resolved->mechanism, *spec, *result, column)) printRow(out, column.name, *e);
+  }
+  // Speed and acceleration magnitudes of each moving point: what seed 003 reports.
+  const k::Mechanism& m = resolved->mechanism;
+  const std::string& u = m.lengthUnit;
+  for (std::size_t i = 0; i < m.points.size(); ++i) {
+    if (std::holds_alternative<k::GroundPoint>(m.points[i].definition)) continue;
+    const auto speed = quantityExtrema(
+        m, *spec, *result, [i](const k::SweepResult& r, std::size_t j) { return r.velocity[i][j].norm(); },
+        [i](const k::Pose& p, double) { return p.velocity[i].norm(); });
+    if (speed) printRow(out, m.points[i].name + "_speed_" + u + "_s", *speed);
+    const auto accel = quantityExtrema(
+        m, *spec, *result, [i](const k::SweepResult& r, std::size_t j) { return r.acceleration[i][j].norm(); },
+        [i](const k::Pose& p, double) { return p.acceleration[i].norm(); });
+    if (accel) printRow(out, m.points[i].name + "_accel_" + u + "_s2", *accel);
   }
   if (!result->notAssembled.empty()) {
     err << "linkwright-cli: the linkage cannot be assembled over the whole range; extremes are over the part that can\n";

@@ -44,7 +44,8 @@ kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& inv) {
   }
   auto fb = resolveFourBar(inv);
   if (!fb) return fb.error();
-  auto m = k::makeFourBar(fb->lengths, fb->branch, fb->lengthUnit, inv.couplerPoint);
+  const auto couplerPoint = inv.couplerPoint ? inv.couplerPoint : (fb->example ? fb->example->couplerPoint : std::nullopt);
+  auto m = k::makeFourBar(fb->lengths, fb->branch, fb->lengthUnit, couplerPoint);
   if (!m) return m.error();
   r.mechanism = std::move(*m);
   if (const auto& e = fb->example) r.defaults = {e->omega, e->alpha, e->fromDeg, e->toDeg, e->stepDeg};

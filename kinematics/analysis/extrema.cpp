@@ -1,5 +1,6 @@
 #include "kinematics/analysis/extrema.h"
 
+#include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
 
 #include <cmath>
@@ -63,10 +64,19 @@ std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec
   if (!lowest) return std::nullopt;
   Search search{mechanism, spec, quantity, {}};
   preparePose(mechanism, search.pose);
-  // The bracket: from the best sample's valid neighbours (or the sample itself at an end).
+  // The bracket: from the best sample's valid neighbours (or the sample itself at an end). Over
+  // a full turn the ends are neighbours too: an extremum just before the first sample is one
+  // just before the last.
+  const std::size_t n = values.size();
+  const bool fullTurn = n > 2 && std::abs(std::abs(spec.toAngle - spec.fromAngle) - 2.0 * kPi) < 1e-9;
+  const double step = n > 1 ? sweepAngle(spec, 1) - sweepAngle(spec, 0) : 0.0;
   auto bracket = [&](std::size_t j) {
-    const double lo = j > 0 && valid[j - 1] ? sweepAngle(spec, j - 1) : sweepAngle(spec, j);
-    const double hi = j + 1 < values.size() && valid[j + 1] ? sweepAngle(spec, j + 1) : sweepAngle(spec, j);
+    double lo = sweepAngle(spec, j);
+    double hi = lo;
+    if (j > 0 && valid[j - 1]) lo = sweepAngle(spec, j - 1);
+    else if (j == 0 && fullTurn && valid[n - 2]) lo -= step;
+    if (j + 1 < n && valid[j + 1]) hi = sweepAngle(spec, j + 1);
+    else if (j + 1 == n && fullTurn && valid[1]) hi += step;
     return std::pair{std::min(lo, hi), std::max(lo, hi)};
   };
   Extrema out;
@@ -74,6 +84,13 @@ std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec
   out.minimum = search.maximize(minLo, minHi, -1.0, {values[*lowest], sweepAngle(spec, *lowest), false}, angleTolerance);
   const auto [maxLo, maxHi] = bracket(*highest);
   out.maximum = search.maximize(maxLo, maxHi, 1.0, {values[*highest], sweepAngle(spec, *highest), false}, angleTolerance);
+  // Report angles inside the requested range (a full-turn bracket may step just outside it).
+  for (Extremum* e : {&out.minimum, &out.maximum}) {
+    const double lowEnd = std::min(spec.fromAngle, spec.toAngle);
+    const double highEnd = std::max(spec.fromAngle, spec.toAngle);
+    if (e->inputAngle < lowEnd) e->inputAngle += 2.0 * kPi;
+    if (e->inputAngle > highEnd) e->inputAngle -= 2.0 * kPi;
+  }
   return out;
 }
 

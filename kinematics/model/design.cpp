@@ -45,6 +45,7 @@ FourBarDesign designFromExample(const FourBarExample& e) {
   d.branch = e.branch;
   d.omega = e.omega;
   d.alpha = e.alpha;
+  d.couplerPoint = e.couplerPoint;
   d.fromDeg = e.fromDeg;
   d.toDeg = e.toDeg;
   d.samples = static_cast<std::size_t>(std::lround((e.toDeg - e.fromDeg) / 0.5)) + 1;

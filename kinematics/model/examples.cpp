@@ -8,10 +8,15 @@ std::vector<FourBarExample> fourBarExamples() {
   return {
       {"thesis-crank-rocker",
        "crank-rocker 60/25/70/45 mm at 10 rpm (Sharifgalieva thesis, Excel and SolidWorks tables every 30°)",
-       {60.0, 25.0, 70.0, 45.0}, "mm", Branch::Open, rpmToRadPerSec(10.0), 0.0, 0.0, 360.0, 30.0},
+       {60.0, 25.0, 70.0, 45.0}, "mm", Branch::Open, rpmToRadPerSec(10.0), 0.0, 0.0, 360.0, 30.0, std::nullopt},
       {"alvi-fourbar",
        "four-bar AD 80, AB 20, BC 66, CD 56 mm at 10.5 rad/s (Alvi et al., both branches every 40°)",
-       {80.0, 20.0, 66.0, 56.0}, "mm", Branch::Open, 10.5, 0.0, 0.0, 360.0, 40.0},
+       {80.0, 20.0, 66.0, 56.0}, "mm", Branch::Open, 10.5, 0.0, 0.0, 360.0, 40.0, std::nullopt},
+      {"miranda-fourbar",
+       "four-bar frame 250, crank 100, coupler 225, rocker 150 mm at 11 Hz, P at the coupler's middle "
+       "(Miranda et al., SolidWorks coupler extremes at 11 and 15 Hz)",
+       {250.0, 100.0, 225.0, 150.0}, "mm", Branch::Open, 2.0 * kPi * 11.0, 0.0, 0.0, 360.0, 1.0,
+       CouplerPointSpec{112.5, 0.0}},
   };
 }
 

@@ -22,6 +22,7 @@ struct FourBarExample {
   double fromDeg = 0.0;   ///< default table start, degrees
   double toDeg = 360.0;   ///< default table end, degrees
   double stepDeg = 30.0;  ///< default table step, degrees
+  std::optional<CouplerPointSpec> couplerPoint;  ///< a point the seed follows on the coupler
   bool operator==(const FourBarExample&) const = default;
 };
 

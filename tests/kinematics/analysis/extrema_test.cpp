@@ -79,3 +79,16 @@ TEST_CASE("no valid sample gives no extrema", "[analysis][extrema]") {
   const PoseQuantity q = [](const Pose&, double) { return 0.0; };
   CHECK_FALSE(refineExtrema(*m, {0.0, 1.0, 3, 1.0, 0.0}, {1.0, 2.0, 3.0}, {false, false, false}, q).has_value());
 }
+
+TEST_CASE("over a full turn an extremum just before the first sample is still found", "[analysis][extrema]") {
+  // The thesis rocker's ω is lowest near 337°; shift the sweep so the first sample lies just past it.
+  const auto m = makeFourBar({60, 25, 70, 45}, Branch::Open);
+  REQUIRE(m.ok());
+  const PoseQuantity omega4 = [](const Pose& p, double) { return p.linkOmega[fourbar::kRocker.index]; };
+  const Extrema fine = extremaOf(*m, {0.0, 2.0 * kPi, 20001, 1.0, 0.0}, omega4);
+  const double start = fine.minimum.inputAngle + 0.05;
+  const Extrema shifted = extremaOf(*m, {start, start + 2.0 * kPi, 13, 1.0, 0.0}, omega4);
+  CHECK(shifted.minimum.value == Approx(fine.minimum.value).epsilon(1e-9));
+  CHECK(shifted.minimum.inputAngle >= start);
+  CHECK(shifted.minimum.inputAngle <= start + 2.0 * kPi);
+}
