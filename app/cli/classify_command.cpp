@@ -4,6 +4,8 @@
 #include "kinematics/analysis/grashof.h"
 #include "kinematics/analysis/limit_positions.h"
 #include "kinematics/analysis/mobility.h"
+#include "kinematics/analysis/quick_return.h"
+#include "kinematics/model/examples.h"
 #include "kinematics/analysis/transmission.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/units.h"
@@ -119,7 +121,42 @@ void printJson(const Classification& c, std::ostream& out) {
 
 } // namespace
 
+namespace {
+
+// A shaper's quick-return figures: limits, time ratio, stroke, mobility.
+ExitCode classifyShaper(const k::MechanismExample& e, bool json, std::ostream& out) {
+  const auto q = k::shaperQuickReturn(*e.shaper);
+  const k::MobilityReport m = k::mobility(e.mechanism);
+  if (json) {
+    out << "{\n  \"mechanism\": \"shaper\",\n  \"mobility\": " << m.mobility;
+    if (q)
+      out << ",\n  \"limit_crank_angles_deg\": [" << jsonDeg(q->firstLimitCrankAngle) << ", " << jsonDeg(q->secondLimitCrankAngle)
+          << "],\n  \"time_ratio\": " << formatDouble(q->timeRatio) << ",\n  \"slow_stroke_crank_arc_deg\": "
+          << jsonDeg(q->slowStrokeCrankArc) << ",\n  \"quick_stroke_crank_arc_deg\": " << jsonDeg(q->quickStrokeCrankArc)
+          << ",\n  \"rocker_swing_deg\": " << jsonDeg(q->rockerSwing) << ",\n  \"stroke\": " << formatDouble(q->stroke);
+    out << ",\n  \"length_unit\": \"" << e.mechanism.lengthUnit << "\"\n}\n";
+    return ExitCode::Success;
+  }
+  out << "shaper               " << e.description << "\n";
+  out << "mobility (Gruebler)  M = 3(" << m.links << " - 1) - 2*" << m.fullJoints << " - " << m.halfJoints << " = " << m.mobility << "\n";
+  if (!q) {
+    out << "quick return         none: the slotted link turns fully (Whitworth form)\n";
+    return ExitCode::Success;
+  }
+  out << "rocker limits        crank " << deg(q->firstLimitCrankAngle) << " and " << deg(q->secondLimitCrankAngle)
+      << " (crank at right angles to the slot)\n";
+  out << "rocker swing         " << deg(q->rockerSwing) << "\n";
+  out << "time ratio           " << formatFixed(q->timeRatio, 4) << " (slow stroke " << deg(q->slowStrokeCrankArc)
+      << ", quick stroke " << deg(q->quickStrokeCrankArc) << " of crank rotation)\n";
+  out << "ram stroke           " << k::io::formatShort(q->stroke, 8) << " " << e.mechanism.lengthUnit << "\n";
+  return ExitCode::Success;
+}
+
+} // namespace
+
 ExitCode runClassify(const Invocation& inv, std::ostream& out, std::ostream& err) {
+  if (inv.example)
+    if (const auto e = k::findMechanismExample(*inv.example); e && e->shaper) return classifyShaper(*e, inv.json, out);
   const auto fb = resolveFourBar(inv);
   if (!fb) {
     err << "linkwright-cli: " << fb.error().message << "\n";

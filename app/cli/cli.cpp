@@ -28,7 +28,7 @@ constexpr const char* kMechanismOptions = R"(Mechanism (one of):
                       link lengths, positive, in the length unit (default mm).
                       Crank pivot O2 at the origin, rocker pivot O4 at (FRAME, 0).
   --example NAME      a built-in example (see 'linkwright-cli examples'); analyze and
-                      extremes also take the slider-crank examples (ls3-engine)
+                      extremes also take the slider-crank and shaper examples
   --unit NAME         length unit label used in the output (default mm; letters only).
                       Lengths are taken and reported in this unit.
   --branch open|crossed

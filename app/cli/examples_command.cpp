@@ -17,11 +17,9 @@ ExitCode runExamples(std::ostream& out) {
     out << ", --omega " << formatShort(e.omega) << " rad/s, every " << formatShort(e.stepDeg) << "° from " << formatShort(e.fromDeg) << "° to " << formatShort(e.toDeg)
         << "°\n";
   }
-  for (const kinematics::SliderCrankExample& e : kinematics::sliderCrankExamples()) {
+  for (const kinematics::MechanismExample& e : kinematics::mechanismExamples()) {
     using kinematics::io::formatShort;
-    const auto& g = e.geometry;
-    out << e.name << "\n  " << e.description << "\n  slider-crank: crank " << formatShort(g.crank) << ", rod "
-        << formatShort(g.rod) << ", offset " << formatShort(g.offset) << " (" << e.lengthUnit << "), --omega "
+    out << e.name << "\n  " << e.description << "\n  " << e.kind << " (" << e.mechanism.lengthUnit << "), --omega "
         << formatShort(e.omega) << " rad/s, every " << formatShort(e.stepDeg) << "°\n";
   }
   return ExitCode::Success;

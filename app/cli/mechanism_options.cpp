@@ -9,12 +9,13 @@ kinematics::Result<ResolvedFourBar> resolveFourBar(const Invocation& inv) {
   if (inv.example) {
     r.example = k::findFourBarExample(*inv.example);
     if (!r.example) {
-      if (k::findSliderCrankExample(*inv.example))
+      if (const auto other = k::findMechanismExample(*inv.example))
         return k::Error{k::ErrorCode::InvalidValue, "--example",
-                        "--example: '" + *inv.example + "' is a slider-crank; classify works on four-bars (try analyze or extremes)"};
+                        "--example: '" + *inv.example + "' is not a four-bar but a " + other->kind +
+                            "; classify works on four-bars and shapers (try analyze or extremes)"};
       std::string names;
       for (const auto& e : k::fourBarExamples()) names += (names.empty() ? "" : ", ") + e.name;
-      for (const auto& e : k::sliderCrankExamples()) names += ", " + e.name;
+      for (const auto& e : k::mechanismExamples()) names += ", " + e.name;
       return k::Error{k::ErrorCode::InvalidValue, "--example",
                       "--example: no example named '" + *inv.example + "' (available: " + names + ")"};
     }
@@ -32,13 +33,13 @@ kinematics::Result<ResolvedFourBar> resolveFourBar(const Invocation& inv) {
 kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& inv) {
   ResolvedMechanism r;
   if (inv.example) {
-    if (const auto slider = k::findSliderCrankExample(*inv.example)) {
+    if (auto other = k::findMechanismExample(*inv.example)) {
       if (inv.couplerPoint)
-        return k::Error{k::ErrorCode::InvalidValue, "--coupler-point", "--coupler-point applies to four-bars, not to " + slider->name};
-      auto m = k::makeSliderCrank(slider->geometry, inv.branch.value_or(k::Branch::Open), slider->lengthUnit);
-      if (!m) return m.error();
-      r.mechanism = std::move(*m);
-      r.defaults = {slider->omega, 0.0, slider->fromDeg, slider->toDeg, slider->stepDeg};
+        return k::Error{k::ErrorCode::InvalidValue, "--coupler-point", "--coupler-point applies to four-bars, not to " + other->name};
+      if (inv.branch)
+        return k::Error{k::ErrorCode::InvalidValue, "--branch", "--branch applies to four-bars, not to " + other->name};
+      r.mechanism = std::move(other->mechanism);
+      r.defaults = {other->omega, 0.0, other->fromDeg, other->toDeg, other->stepDeg};
       return r;
     }
   }

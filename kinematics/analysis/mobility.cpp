@@ -13,8 +13,10 @@ MobilityReport mobility(const Mechanism& m) {
     if (std::holds_alternative<CrankPoint>(p.definition)) {
       r.links += 1;
       r.fullJoints += 1;
-    } else if (std::holds_alternative<RrrPoint>(p.definition) || std::holds_alternative<RrpPoint>(p.definition)) {
-      // Two links and three joints: pin, pin, pin (RRR) or pin, pin, slider (RRP).
+    } else if (std::holds_alternative<RrrPoint>(p.definition) || std::holds_alternative<RrpPoint>(p.definition) ||
+               std::holds_alternative<RprPoint>(p.definition)) {
+      // Two links and three joints: pin, pin, pin (RRR); pin, pin, slider (RRP); or pin,
+      // slider, pin (RPR: the block on the pin and the slotted link).
       r.links += 2;
       r.fullJoints += 3;
     }

@@ -19,7 +19,7 @@ struct MobilityReport {
 int grueblerMobility(int links, int fullJoints, int halfJoints);
 
 /// Counts the mechanism's bodies and joints from its structure: the ground, the crank (one
-/// body, one pivot) and each RRR or RRP dyad (two bodies, three full joints). Points fixed on a link add
+/// body, one pivot) and each RRR, RRP or RPR dyad (two bodies, three full joints). Points fixed on a link add
 /// neither. Assumes checkMechanism passed.
 MobilityReport mobility(const Mechanism& mechanism);
 

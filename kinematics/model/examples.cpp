@@ -20,17 +20,21 @@ std::vector<FourBarExample> fourBarExamples() {
   };
 }
 
-std::vector<SliderCrankExample> sliderCrankExamples() {
+std::vector<MechanismExample> mechanismExamples() {
   return {
       {"ls3-engine",
        "Chevrolet LS3 piston: stroke 92 mm (crank 46 mm), connecting rod 6.098 in, crank at 110 Hz = 6600 rpm "
        "(Miranda et al., SolidWorks piston extremes)",
-       {46.0, 6.098 * 25.4, 0.0, false}, "mm", 2.0 * kPi * 110.0, 0.0, 360.0, 1.0},
+       "slider-crank", makeSliderCrank(kLs3Engine).value(), 2.0 * kPi * 110.0, 0.0, 360.0, 1.0, std::nullopt},
+      {"shaper",
+       "crank-shaper quick return: crank 100, slotted rocker 400, link 150 mm, rocker pivot 200 mm below and 40 mm "
+       "beside the crank, ram guide 220 mm above it, crank at 3 Hz (Miranda et al.)",
+       "shaper", makeShaper(kSeedShaper).value(), 2.0 * kPi * 3.0, 0.0, 360.0, 1.0, kSeedShaper},
   };
 }
 
-std::optional<SliderCrankExample> findSliderCrankExample(const std::string& name) {
-  for (SliderCrankExample& e : sliderCrankExamples())
+std::optional<MechanismExample> findMechanismExample(const std::string& name) {
+  for (MechanismExample& e : mechanismExamples())
     if (e.name == name) return std::move(e);
   return std::nullopt;
 }

@@ -2,6 +2,7 @@
 // Built-in examples taken from the seed documents, shared by the CLI and (later) the GUI.
 
 #include "kinematics/model/fourbar.h"
+#include "kinematics/model/shaper.h"
 #include "kinematics/model/slider_crank.h"
 
 #include <optional>
@@ -26,24 +27,30 @@ struct FourBarExample {
   bool operator==(const FourBarExample&) const = default;
 };
 
-/// A slider-crank from a seed, with its speed and default angle grid.
-struct SliderCrankExample {
+/// Any other linkage from a seed (slider-crank, shaper), built, with its speed and grid.
+struct MechanismExample {
   std::string name;
   std::string description;
-  SliderCrankGeometry geometry;
-  std::string lengthUnit;
+  std::string kind;       ///< "slider-crank", "shaper"
+  Mechanism mechanism;
   double omega = 0.0;     ///< crank, rad/s
   double fromDeg = 0.0;
   double toDeg = 360.0;
   double stepDeg = 1.0;
-  bool operator==(const SliderCrankExample&) const = default;
+  std::optional<ShaperGeometry> shaper;  ///< for a shaper: its dimensions (time ratio, stroke)
+  bool operator==(const MechanismExample&) const = default;
 };
 
-/// All built-in slider-crank examples.
-std::vector<SliderCrankExample> sliderCrankExamples();
+/// The built-in examples that are not four-bars.
+std::vector<MechanismExample> mechanismExamples();
 
-/// The slider-crank example named `name`, if there is one.
-std::optional<SliderCrankExample> findSliderCrankExample(const std::string& name);
+/// The non-four-bar example named `name`, if there is one.
+std::optional<MechanismExample> findMechanismExample(const std::string& name);
+
+/// LS3 engine (seed 003): stroke 92 mm, connecting rod 6.098 in.
+inline const SliderCrankGeometry kLs3Engine{46.0, 6.098 * 25.4, 0.0, false};
+/// Seed 003's shaper: crank 100, slotted rocker 400, link 150 mm; O4 at (40, −200), guide at 220.
+inline const ShaperGeometry kSeedShaper{100.0, 400.0, 150.0, Eigen::Vector2d(40.0, -200.0), 220.0};
 
 /// All built-in four-bar examples, in display order.
 std::vector<FourBarExample> fourBarExamples();

@@ -4,7 +4,7 @@
 // link), and the moving links whose angles, rates and accelerations are reported. This is the
 // dyad decomposition of Pyslvs and of every closed-form textbook method: solving the points in
 // order solves the linkage. One crank drives it (one degree of freedom). RRP dyads (sliders on
-// a ground guide) make slider-cranks.
+// a ground guide) make slider-cranks; RPR dyads (slotted links) make quick-return mechanisms.
 //
 // Frame and units: x to the right, y up, angles counter-clockwise from +x in radians. For a
 // four-bar, +x is the frame line (crank pivot to rocker pivot). Lengths are in
@@ -66,6 +66,17 @@ struct RrpPoint {
   bool operator==(const RrpPoint&) const = default;
 };
 
+/// The tip of a slotted link (an RPR dyad): the link turns about `pivot` and its slot slides
+/// through the block pinned at `through` (a crank pin, say); the point lies on the slot's
+/// line at `length` from the pivot, on the side of `through`. The quick-return shaper's
+/// rocker is one.
+struct RprPoint {
+  PointId pivot;
+  PointId through;
+  double length = 1.0;
+  bool operator==(const RprPoint&) const = default;
+};
+
 /// A point rigidly fixed on a link: `along` the link's direction (from its first point toward
 /// its second) and `across` it (90° counter-clockwise), measured from the link's first point.
 struct AttachedPoint {
@@ -75,7 +86,7 @@ struct AttachedPoint {
   bool operator==(const AttachedPoint&) const = default;
 };
 
-using PointDefinition = std::variant<GroundPoint, CrankPoint, RrrPoint, RrpPoint, AttachedPoint>;
+using PointDefinition = std::variant<GroundPoint, CrankPoint, RrrPoint, RrpPoint, RprPoint, AttachedPoint>;
 
 /// A named point. Its definition refers only to points (and links) defined before it.
 struct Point {

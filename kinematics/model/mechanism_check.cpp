@@ -52,6 +52,12 @@ std::optional<Error> checkPoint(const Mechanism& m, std::size_t i, int& cranks) 
     if (auto e = checkFinite(p->guidePoint.y(), pointField(i, "guideY"))) return e;
     return checkFinite(p->guideAngle, pointField(i, "guideAngle"));
   }
+  if (const auto* s = std::get_if<RprPoint>(&def)) {
+    if (auto e = checkEarlier(s->pivot, i, "pivot")) return e;
+    if (auto e = checkEarlier(s->through, i, "through")) return e;
+    if (s->pivot == s->through) return structureError(pointField(i, "through"), "must differ from its pivot");
+    return checkPositive(s->length, pointField(i, "length"));
+  }
   const auto& a = std::get<AttachedPoint>(def);
   if (a.link.index >= m.links.size())
     return structureError(pointField(i, "link"), "refers to a link that does not exist");
@@ -69,6 +75,7 @@ bool isRigidPair(const Mechanism& m, PointId a, PointId b) {
     if (const auto* c = std::get_if<CrankPoint>(&def)) return c->pivot == parent;
     if (const auto* r = std::get_if<RrrPoint>(&def)) return r->first == parent || r->second == parent;
     if (const auto* p = std::get_if<RrpPoint>(&def)) return p->first == parent;
+    if (const auto* s = std::get_if<RprPoint>(&def)) return s->pivot == parent;
     return false;
   };
   return definesFrom(a, b) || definesFrom(b, a);

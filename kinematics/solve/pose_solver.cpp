@@ -126,6 +126,30 @@ struct Solver {
     return true;
   }
 
+  // The slotted link's tip: D = O + l·e with e = r/|r|, r = P − O (derivation in rpr_point
+  // terms: the slot's angle φ has φ̇ = r×ṙ/|r|² and φ̈ = r×r̈/|r|² − 2φ̇(r·ṙ)/|r|²).
+  bool rpr(std::size_t i, const RprPoint& s) {
+    const Eigen::Vector2d& o = pose.position[s.pivot.index];
+    const Eigen::Vector2d r = pose.position[s.through.index] - o;
+    const double r2 = r.squaredNorm();
+    if (!(r2 > 0.0)) {
+      report = {PoseStatus::NotAssemblable, PointId{i}, AssemblyFailure::Coincident};
+      return false;
+    }
+    const double len = std::sqrt(r2);
+    const Eigen::Vector2d e = r / len;
+    pose.position[i] = o + s.length * e;
+    if (!wantVelocity || !ratesValid) return true;
+    const Eigen::Vector2d rDot = pose.velocity[s.through.index] - pose.velocity[s.pivot.index];
+    const double phiDot = cross(r, rDot) / r2;
+    pose.velocity[i] = pose.velocity[s.pivot.index] + s.length * phiDot * perp(e);
+    if (!wantAcceleration) return true;
+    const Eigen::Vector2d rDdot = pose.acceleration[s.through.index] - pose.acceleration[s.pivot.index];
+    const double phiDdot = cross(r, rDdot) / r2 - 2.0 * phiDot * r.dot(rDot) / r2;
+    pose.acceleration[i] = pose.acceleration[s.pivot.index] + s.length * (phiDdot * perp(e) - phiDot * phiDot * e);
+    return true;
+  }
+
   void link(std::size_t k) {
     const Link& l = m.links[k];
     const Eigen::Vector2d r = pose.position[l.second.index] - pose.position[l.first.index];
@@ -168,6 +192,8 @@ struct Solver {
         if (!rrr(i, *r)) return report;
       } else if (const auto* p = std::get_if<RrpPoint>(&def)) {
         if (!rrp(i, *p)) return report;
+      } else if (const auto* s = std::get_if<RprPoint>(&def)) {
+        if (!rpr(i, *s)) return report;
       } else attached(i, std::get<AttachedPoint>(def));
     }
     for (std::size_t k = 0; k < m.links.size(); ++k) link(k);
@@ -233,6 +259,9 @@ std::string describeFailure(const Mechanism& m, const PoseReport& report, const 
     return name + " cannot be assembled" + at + ": " + n1 + " is " + io::formatShort(distance) + " " + m.lengthUnit +
            " from the guide, more than the " + rod + " length " + io::formatShort(p->length) + " " + m.lengthUnit;
   }
+  if (const auto* s = std::get_if<RprPoint>(&m.points[i].definition); s != nullptr && report.status == PoseStatus::NotAssemblable)
+    return name + " cannot be placed" + at + ": " + m.points[s->through.index].name + " lies on the pivot " +
+           m.points[s->pivot.index].name + ", so the slot's direction is undetermined";
   const auto* r = std::get_if<RrrPoint>(&m.points[i].definition);
   if (report.status == PoseStatus::Ok || r == nullptr) return name + " solved" + at;
   const std::string& n1 = m.points[r->first.index].name;

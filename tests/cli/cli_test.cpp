@@ -290,9 +290,21 @@ TEST_CASE("slider-crank examples analyze, and classify says it is for four-bars"
   CHECK(parseCsv(analyze.out).rows.size() == 5);
   const Run classify = run({"classify", "--example", "ls3-engine"});
   CHECK(classify.code == 2);
-  CHECK_THAT(classify.err, Catch::Contains("is a slider-crank; classify works on four-bars"));
+  CHECK_THAT(classify.err, Catch::Contains("is not a four-bar but a slider-crank; classify works on four-bars and shapers"));
   const Run point = run({"analyze", "--example", "ls3-engine", "--coupler-point", "1,2"});
   CHECK(point.code == 2);
   CHECK_THAT(point.err, Catch::Contains("--coupler-point applies to four-bars"));
   CHECK_THAT(run({"examples"}).out, Catch::Contains("ls3-engine"));
+}
+
+TEST_CASE("classify gives the shaper's exact time ratio and stroke", "[cli][shaper]") {
+  // Seed 003 reads a time ratio of "2" off a graph; with r/d = 100/203.96 it is exactly
+  // (π + 2 asin(r/d)) / (π − 2 asin(r/d)) = 1.9683.
+  const Run r = run({"classify", "--example", "shaper"});
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.out, Catch::Contains("time ratio           1.9683 (slow stroke 238.72°, quick stroke 121.28°"));
+  CHECK_THAT(r.out, Catch::Contains("= 1"));
+  const Run json = run({"classify", "--example", "shaper", "--json"});
+  REQUIRE(json.code == 0);
+  CHECK_THAT(json.out, Catch::Contains("\"time_ratio\": 1.968"));
 }
