@@ -21,6 +21,7 @@
 #include <QCloseEvent>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGraphicsView>
 #include <QKeySequence>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -316,9 +317,14 @@ void MainWindow::exportImageDialog() {
   // Without a second dialog: the canvas is exported, and each plot beside it with a suffix.
   if (!exportCanvasImage(withSuffix)) return;
   const QFileInfo info(withSuffix);
-  for (int i = 0; i < m_plots->graphicsViews().size(); ++i)
+  int exported = 0;
+  const QList<QGraphicsView*> views = m_plots->graphicsViews();
+  for (int i = 0; i < views.size(); ++i) {
+    if (views[i]->isHidden()) continue;  // a chart with nothing ticked is not shown, so not exported
     exportPlotImage(i, info.path() + "/" + info.completeBaseName() + QString("-plot%1.").arg(i + 1) + info.suffix());
-  statusBar()->showMessage(tr("Exported the canvas and %1 plots beside %2").arg(m_plots->graphicsViews().size()).arg(info.fileName()), 5000);
+    ++exported;
+  }
+  statusBar()->showMessage(tr("Exported the canvas and %1 plots beside %2").arg(exported).arg(info.fileName()), 5000);
 }
 
 bool MainWindow::maybeSave() {

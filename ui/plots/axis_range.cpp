@@ -8,7 +8,9 @@ namespace {
 
 // Ticks in degrees that read well on a crank axis; past the last, niceStep takes over.
 constexpr double kDegreeSteps[] = {1.0, 2.0, 5.0, 10.0, 15.0, 30.0, 45.0, 90.0, 180.0, 360.0};
-constexpr int kCrankIntervals = 8;
+// At most 4 intervals (90° over a turn): the plots share the window with the canvas and a
+// legend, and wider labels would be elided ("1…") at the plot widths the window gives.
+constexpr int kCrankIntervals = 4;
 
 } // namespace
 

@@ -3,6 +3,7 @@
 #include "ui/plots/axis_range.h"
 #include "ui/plots/hover_readout.h"
 #include "ui/plots/limit_markers.h"
+#include "ui/plots/plot_area_alignment.h"
 #include "ui/plots/quantity_chart_view.h"
 #include "ui/plots/quantity_selector.h"
 
@@ -37,6 +38,7 @@ PlotPanel::PlotPanel(MechanismDocument* document, QWidget* parent)
     view->setMinimumHeight(160);
     connect(view, &QuantityChartView::curveHovered, this,
             [this](PlotQuantity q, QPointF p, bool inside) { m_readout->showPoint(q, p, m_unit, inside); });
+    connect(view, &QuantityChartView::resized, this, &PlotPanel::alignCharts);
     m_views[static_cast<std::size_t>(kind)] = view;
     layout->addWidget(view, 1);
   }
@@ -119,6 +121,14 @@ void PlotPanel::refreshData() {
       limitMarkerPoints(m_document->analysis().limits, sweep, design.fromDeg, design.toDeg, m_unit),
       shown.contains(PlotQuantity::RockerAngle));
   refreshCursor();
+  alignCharts();  // axis labels may have changed width
+}
+
+void PlotPanel::alignCharts() {
+  QList<QChart*> shown;
+  for (QuantityChartView* view : m_views)
+    if (!view->isHidden()) shown.append(view->chart());
+  alignPlotAreas(shown);
 }
 
 void PlotPanel::refreshCursor() {

@@ -67,6 +67,7 @@ private:
   void applySelection();
   void refreshData();
   void refreshCursor();
+  void alignCharts();
 
   MechanismDocument* m_document;
   AngleUnit m_unit = AngleUnit::Degrees;

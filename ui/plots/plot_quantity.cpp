@@ -53,16 +53,18 @@ QString quantityName(PlotQuantity q) {
 }
 
 QColor quantityColor(PlotQuantity q) {
-  // One colour per link on every chart, matching the canvas convention: coupler blue,
-  // rocker green; the transmission angle (not a link) in orange so it stands apart.
+  // One colour per link on every chart, the canvas's own (ui/canvas/canvas_style.h:
+  // kCouplerColor, kRockerColor; copied, as plots do not depend on the canvas). The
+  // transmission angle is no link: brown, a colour the canvas does not use (its orange is
+  // the crank's).
   switch (q) {
   case PlotQuantity::CouplerAngle:
   case PlotQuantity::CouplerOmega:
-  case PlotQuantity::CouplerAlpha: return QColor(0x1f, 0x77, 0xb4);
+  case PlotQuantity::CouplerAlpha: return QColor(49, 130, 189);
   case PlotQuantity::RockerAngle:
   case PlotQuantity::RockerOmega:
-  case PlotQuantity::RockerAlpha: return QColor(0x2c, 0xa0, 0x2c);
-  case PlotQuantity::TransmissionAngle: return QColor(0xe0, 0x7b, 0x0e);
+  case PlotQuantity::RockerAlpha: return QColor(49, 163, 84);
+  case PlotQuantity::TransmissionAngle: return QColor(140, 86, 75);
   }
   return Qt::black;
 }

@@ -1,11 +1,10 @@
 #include "ui/plots/quantity_chart_view.h"
 
+#include "ui/plots/plot_area_alignment.h"
 #include "ui/plots/series_visibility.h"
 
 #include <QChart>
 #include <QLineSeries>
-#include <QLegend>
-#include <QLegendMarker>
 #include <QValueAxis>
 
 #include <algorithm>
@@ -40,7 +39,7 @@ QuantityChartView::QuantityChartView(QuantityKind kind, const QString& title, QW
   chart->setTitle(title);
   // Animations would make every edit and drag lag behind; the data changes at frame rate.
   chart->setAnimationOptions(QChart::NoAnimation);
-  chart->setMargins(QMargins(2, 2, 2, 2));
+  chart->setMargins(kBaseChartMargins);
   chart->setBackgroundRoundness(0);
   chart->legend()->setAlignment(Qt::AlignRight);
   chart->addAxis(m_xAxis, Qt::AlignBottom);
@@ -49,6 +48,8 @@ QuantityChartView::QuantityChartView(QuantityKind kind, const QString& title, QW
   m_xAxis->setTickAnchor(0.0);
   setChart(chart);  // the view owns the chart, the chart its axes and series
   setRenderHint(QPainter::Antialiasing);
+  // OpenGL stays off (the default): a few 721-point lines draw well under a frame in
+  // software, and the OpenGL path cannot be exported as SVG.
 
   for (const PlotQuantity q : allPlotQuantities()) {
     if (quantityKind(q) != kind) continue;
@@ -81,8 +82,10 @@ void QuantityChartView::setData(const kinematics::SweepResult& sweep, const Quan
   m_values.clear();
   for (Curve& curve : m_curves) {
     const bool shown = selection.contains(curve.quantity);
-    m_runs.runs.clear();
-    if (shown) buildSeriesRuns(sweep, curve.quantity, unit, m_runs);
+    if (shown)
+      buildSeriesRuns(sweep, curve.quantity, unit, m_runs);
+    else
+      m_runs.runs.clear();
     for (const QList<QPointF>& run : m_runs.runs)
       for (const QPointF& p : run) m_values.push_back(p.y());
     updateCurve(curve, shown);
@@ -99,18 +102,6 @@ void QuantityChartView::setData(const kinematics::SweepResult& sweep, const Quan
   m_xAxis->setTickInterval(x.step);
   m_xAxis->setTitleText(crankAxisTitle(unit));
   m_cursor->setYSpan(m_valueRange.min, m_valueRange.max);
-  QMetaObject::invokeMethod(this, &QuantityChartView::hideHelperMarkers, Qt::QueuedConnection);
-}
-
-void QuantityChartView::hideHelperMarkers() {
-  for (QLegendMarker* marker : chart()->legend()->markers()) {
-    const QString name = marker->series()->objectName();
-    if (name == QStringLiteral("cursor") || name.startsWith(QStringLiteral("limit_line"))) marker->setVisible(false);
-  }
-  // A curve broken by a gap is several series; the legend names it once.
-  for (const Curve& curve : m_curves)
-    for (qsizetype i = 1; i < curve.segments.size(); ++i)
-      for (QLegendMarker* marker : chart()->legend()->markers(curve.segments[i])) marker->setVisible(false);
 }
 
 void QuantityChartView::updateCurve(Curve& curve, bool shown) {
@@ -132,10 +123,12 @@ void QuantityChartView::applyAxis(QValueAxis* axis, const AxisRange& range) {
   axis->setLabelFormat(QStringLiteral("%.%1f").arg(range.decimals));
 }
 
-void QuantityChartView::setCursorX(std::optional<double> x) {
-  m_cursor->setX(x);
-  QMetaObject::invokeMethod(this, &QuantityChartView::hideHelperMarkers, Qt::QueuedConnection);
+void QuantityChartView::resizeEvent(QResizeEvent* event) {
+  QChartView::resizeEvent(event);
+  emit resized();
 }
+
+void QuantityChartView::setCursorX(std::optional<double> x) { m_cursor->setX(x); }
 
 QList<QLineSeries*> QuantityChartView::segments(PlotQuantity quantity) const {
   for (const Curve& curve : m_curves)

@@ -48,6 +48,11 @@ signals:
   /// The mouse entered (`inside`) or left `quantity`'s curve; `point` is the sample nearest
   /// the mouse, in plot units.
   void curveHovered(linkwright::ui::PlotQuantity quantity, QPointF point, bool inside);
+  /// The view was resized (and its chart with it).
+  void resized();
+
+protected:
+  void resizeEvent(QResizeEvent* event) override;
 
 private:
   struct Curve {
@@ -57,9 +62,6 @@ private:
 
   QLineSeries* addSegment(Curve& curve);
   void updateCurve(Curve& curve, bool shown);
-  /// Keeps the cursor and limit lines out of the legend. The legend makes markers for new
-  /// series later, in the event loop, so this runs queued after every update.
-  void hideHelperMarkers();
   void applyAxis(QValueAxis* axis, const AxisRange& range);
   void onSegmentHovered(PlotQuantity quantity, const QLineSeries* segment, QPointF point, bool inside);
 

@@ -1,8 +1,11 @@
 #include "ui/plots/quantity_selector.h"
 
+#include "ui/plots/flow_layout.h"
+
 #include <QCheckBox>
 #include <QGridLayout>
 #include <QLabel>
+#include <QPixmap>
 
 #include <optional>
 
@@ -21,35 +24,35 @@ QString groupLabel(QuantityKind kind) {
 } // namespace
 
 QuantitySelector::QuantitySelector(QWidget* parent) : QWidget(parent) {
-  // One row per kind of quantity, so the panel stays narrow enough to share the window.
-  auto* layout = new QGridLayout(this);
-  layout->setContentsMargins(4, 2, 4, 2);
-  layout->setHorizontalSpacing(10);
-  layout->setVerticalSpacing(0);
-  std::optional<QuantityKind> group;
-  int row = -1;
-  int column = 0;
+  // One group per chart (a label and its boxes); groups wrap as wholes when the panel is narrow.
+  auto* flow = new FlowLayout(this, 14, 0);
+  flow->setContentsMargins(4, 2, 4, 2);
+  QHBoxLayout* group = nullptr;
+  std::optional<QuantityKind> groupKind;
   for (const PlotQuantity q : allPlotQuantities()) {
-    if (quantityKind(q) != group) {
-      group = quantityKind(q);
-      ++row;
-      column = 0;
-      layout->addWidget(new QLabel(groupLabel(*group), this), row, column++);
+    if (quantityKind(q) != groupKind) {
+      groupKind = quantityKind(q);
+      auto* groupWidget = new QWidget(this);
+      group = new QHBoxLayout(groupWidget);
+      group->setContentsMargins(0, 0, 0, 0);
+      group->setSpacing(4);
+      group->addWidget(new QLabel(groupLabel(*groupKind), groupWidget));
+      flow->addWidget(groupWidget);
     }
     auto* box = new QCheckBox(quantityName(q), this);
     box->setObjectName(QStringLiteral("show_") + quantityKey(q));
     box->setChecked(true);
     // A swatch of the curve's colour ties the box to its line.
-    QPixmap swatch(12, 12);
+    QPixmap swatch(10, 10);
     swatch.fill(quantityColor(q));
     box->setIcon(QIcon(swatch));
+    box->setIconSize(QSize(10, 10));
     connect(box, &QCheckBox::toggled, this, [this] {
       if (!m_applying) emit selectionChanged();
     });
     m_boxes[static_cast<std::size_t>(q)] = box;
-    layout->addWidget(box, row, column++);
+    group->addWidget(box);
   }
-  layout->setColumnStretch(4, 1);
 }
 
 QuantitySelection QuantitySelector::selection() const {

@@ -63,22 +63,37 @@ TEST_CASE("niceValueRange widens a flat series and survives no data", "[axis_ran
   CHECK(none.max == 1.0);
 }
 
+TEST_CASE("robustSpan keeps a smooth curve whole and lets toggle spikes run off", "[axis_range]") {
+  std::vector<double> smooth;
+  for (int i = 0; i <= 720; ++i) smooth.push_back(std::sin(0.5 * i * linkwright::kinematics::kPi / 180.0));
+  const auto [lo, hi] = robustSpan(smooth);
+  CHECK(lo == Approx(-1.0));
+  CHECK(hi == Approx(1.0));
+
+  std::vector<double> spiky = {0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0,
+                               11.0, 12.0, 13.0, 14.0, 15.0, 16.0, 17.0, 18.0, 19.0, 20.0, 5000.0};
+  const auto [slo, shi] = robustSpan(spiky);
+  CHECK(slo == 0.0);
+  CHECK(shi < 50.0);    // the spike runs off the chart
+  CHECK(shi >= 20.0);   // the bulk stays on it
+}
+
 TEST_CASE("The crank axis covers the grid exactly with readable ticks", "[axis_range]") {
   const AxisRange full = crankAxisRange(0.0, 360.0, AngleUnit::Degrees);
   CHECK(full.min == 0.0);
   CHECK(full.max == 360.0);
-  CHECK(full.step == 45.0);
-  CHECK(full.tickCount == 9);
+  CHECK(full.step == 90.0);
+  CHECK(full.tickCount == 5);
   CHECK(full.decimals == 0);
 
   const AxisRange part = crankAxisRange(-30.0, 60.0, AngleUnit::Degrees);
-  CHECK(part.step == 15.0);
+  CHECK(part.step == 30.0);
 
   const AxisRange rad = crankAxisRange(0.0, 360.0, AngleUnit::Radians);
   CHECK(rad.min == 0.0);
   CHECK(rad.max == Approx(2.0 * linkwright::kinematics::kPi));
-  CHECK(rad.step == Approx(1.0));
-  CHECK(rad.tickCount == 7);
+  CHECK(rad.step == Approx(2.0));
+  CHECK(rad.tickCount == 4);
 }
 
 TEST_CASE("wrapIntoRange moves an angle by whole turns into the grid", "[axis_range]") {

@@ -13,7 +13,10 @@
 #include <QChart>
 #include <QChartView>
 #include <QCheckBox>
+#include <QCoreApplication>
 #include <QImage>
+#include <QLegend>
+#include <QLegendMarker>
 #include <QLineSeries>
 #include <QScatterSeries>
 #include <QSignalSpy>
@@ -289,6 +292,79 @@ TEST_CASE("Hovering a curve reads out the nearest sample with its unit", "[plot_
   CHECK_FALSE(panel.hoverReadout()->text().contains(QStringLiteral("=")));
 }
 
+TEST_CASE("Legends name the shown curves and nothing else", "[plot_panel]") {
+  MechanismDocument doc;
+  PlotPanel panel(&doc);
+  tick(panel, PlotQuantity::CouplerOmega, false);
+  panel.resize(900, 900);
+  (void)panel.grab();  // lays the legends out
+  const auto legendLabels = [](QChartView* view) {
+    // The legend lays out new markers on a posted layout request, as the event loop would.
+    QCoreApplication::sendPostedEvents();
+    QStringList labels;
+    for (QLegendMarker* marker : view->chart()->legend()->markers())
+      if (marker->isVisible()) labels.append(marker->label());
+    return labels;
+  };
+  CHECK(legendLabels(panel.chartViews()[0]) ==
+        QStringList{quantityName(PlotQuantity::CouplerAngle), quantityName(PlotQuantity::RockerAngle),
+                    quantityName(PlotQuantity::TransmissionAngle), QStringLiteral("rocker limit")});
+  CHECK(legendLabels(panel.chartViews()[1]) == QStringList{quantityName(PlotQuantity::RockerOmega)});
+  CHECK(legendLabels(panel.chartViews()[2]) ==
+        QStringList{quantityName(PlotQuantity::CouplerAlpha), quantityName(PlotQuantity::RockerAlpha)});
+
+  // A design with gaps adds segments to the curves: still one legend entry per curve.
+  const qsizetype segmentsBefore = panel.chartView(QuantityKind::Alpha)->segments(PlotQuantity::RockerAlpha).size();
+  REQUIRE_FALSE(doc.edit(nonGrashof(), QStringLiteral("lengths")).has_value());
+  REQUIRE(panel.chartView(QuantityKind::Alpha)->segments(PlotQuantity::RockerAlpha).size() > segmentsBefore);
+  (void)panel.grab();
+  CHECK(legendLabels(panel.chartViews()[2]) ==
+        QStringList{quantityName(PlotQuantity::CouplerAlpha), quantityName(PlotQuantity::RockerAlpha)});
+  CHECK(legendLabels(panel.chartViews()[1]) == QStringList{quantityName(PlotQuantity::RockerOmega)});
+}
+
+TEST_CASE("The plot areas line up so the cursor reads across the charts", "[plot_panel]") {
+  MechanismDocument doc;
+  PlotPanel panel(&doc);
+  panel.resize(900, 900);
+  const auto check = [&panel] {
+    (void)panel.grab();
+    QList<QRectF> areas;
+    for (QChartView* view : panel.chartViews())
+      if (!view->isHidden()) areas.append(view->chart()->plotArea());
+    REQUIRE(areas.size() >= 2);
+    for (const QRectF& area : areas) {
+      CHECK(area.left() == Approx(areas[0].left()).margin(1.0));
+      CHECK(area.right() == Approx(areas[0].right()).margin(1.0));
+      CHECK(area.width() > 0.5 * panel.width());  // the legend and labels leave room for the data
+    }
+  };
+  check();
+  tick(panel, PlotQuantity::TransmissionAngle, false);  // the widest legend entry goes
+  check();
+  panel.resize(700, 800);
+  check();
+  // Back to narrow after wide: the charts must not keep the wide layout's padding.
+  panel.resize(900, 900);
+  check();
+  panel.resize(480, 900);
+  check();
+  CHECK(panel.width() == 480);
+}
+
+TEST_CASE("The checkbox row wraps in a narrow panel", "[plot_panel]") {
+  MechanismDocument doc;
+  PlotPanel panel(&doc);
+  CHECK(panel.minimumSizeHint().width() < 450);
+  panel.resize(420, 900);
+  (void)panel.grab();
+  for (const PlotQuantity q : allPlotQuantities()) {
+    const QCheckBox* box = panel.selector()->checkBox(q);
+    CAPTURE(quantityKey(q));
+    CHECK(box->mapTo(&panel, QPoint(box->width(), 0)).x() <= 420);
+  }
+}
+
 TEST_CASE("The panel renders offscreen with curves in their colours", "[plot_panel][render]") {
   MechanismDocument doc;
   PlotPanel panel(&doc);
@@ -296,6 +372,7 @@ TEST_CASE("The panel renders offscreen with curves in their colours", "[plot_pan
   panel.resize(900, 900);
   const QImage image = panel.grab().toImage();
   CHECK(image.save(QStringLiteral("/tmp/linkwright_plots.png")));
+  CHECK(image.width() == 900);  // the checkbox row does not force the panel wider
   // Curves drawn: pixels close to the coupler blue and the rocker green exist.
   const auto count = [&image](QColor colour) {
     qsizetype n = 0;
@@ -317,4 +394,8 @@ TEST_CASE("The panel renders offscreen with curves in their colours", "[plot_pan
   PlotPanel gaps(&triple);
   gaps.resize(900, 900);
   CHECK(gaps.grab().save(QStringLiteral("/tmp/linkwright_plots_non_grashof.png")));
+
+  panel.setAngleUnit(AngleUnit::Radians);
+  panel.resize(480, 900);
+  CHECK(panel.grab().save(QStringLiteral("/tmp/linkwright_plots_radians_narrow.png")));
 }

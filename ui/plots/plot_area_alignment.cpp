@@ -1,0 +1,45 @@
+#include "ui/plots/plot_area_alignment.h"
+
+#include <QChart>
+#include <QGraphicsLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace linkwright::ui {
+
+void alignPlotAreas(const QList<QChart*>& charts) {
+  if (charts.isEmpty()) return;
+  // The plot area's left edge is the left margin plus the y axis' labels and title; its right
+  // edge the width less the right margin and the legend. So each chart's natural insets (with
+  // the base margins) follow from one layout pass at its current margins, which is the pass
+  // the next paint needs anyway; activating it here just makes plotArea() current. Insets,
+  // not edges, are matched: while a layout resizes the views one after another their widths
+  // differ for a moment, and matching right edges then would pad the narrower ones hugely
+  // (and QChartView never lowers a minimum size it once raised).
+  struct Insets {
+    qreal left = 0.0;
+    qreal right = 0.0;
+  };
+  QList<Insets> natural;
+  for (QChart* chart : charts) {
+    chart->layout()->activate();
+    const QRectF area = chart->plotArea();
+    const QMargins extra = chart->margins() - kBaseChartMargins;
+    natural.append({area.left() - extra.left(), chart->size().width() - area.right() - extra.right()});
+  }
+  Insets common = natural[0];
+  for (const Insets& n : natural) {
+    common.left = std::max(common.left, n.left);
+    common.right = std::max(common.right, n.right);
+  }
+  for (qsizetype i = 0; i < charts.size(); ++i) {
+    QMargins margins = kBaseChartMargins;
+    margins.setLeft(margins.left() + static_cast<int>(std::lround(common.left - natural[i].left)));
+    margins.setRight(margins.right() + static_cast<int>(std::lround(common.right - natural[i].right)));
+    // Unchanged margins leave the layout valid: no second pass.
+    if (margins != charts[i]->margins()) charts[i]->setMargins(margins);
+  }
+}
+
+} // namespace linkwright::ui
