@@ -14,34 +14,30 @@ namespace {
 
 namespace k = kinematics;
 
-// Refines one column's extremes over the sweep; nullopt where the column has no value at all.
-std::optional<k::Extrema> columnExtrema(const k::Mechanism& m, const k::SweepSpec& spec, const k::SweepResult& r,
-                                        const k::io::SweepColumn& column) {
+// Refines the extremes of a quantity known at each sample (where `valid`) and on a pose.
+std::optional<k::Extrema> refineOver(const k::Mechanism& m, const k::SweepSpec& spec, const k::SweepResult& r,
+                                     const std::function<bool(std::size_t)>& valid,
+                                     const std::function<double(std::size_t)>& sampled, const k::PoseQuantity& quantity) {
   std::vector<double> values(r.size(), 0.0);
-  std::vector<bool> valid(r.size(), false);
+  std::vector<bool> mask(r.size(), false);
   for (std::size_t j = 0; j < r.size(); ++j) {
-    valid[j] = column.isRate() ? r.ok(j) : r.assembled(j);
-    if (valid[j]) values[j] = column.value(r, j);
+    mask[j] = valid(j);
+    if (mask[j]) values[j] = sampled(j);
   }
-  // The search's poses unwrap angles next to the sweep's own value where the search starts.
-  double near = 0.0;
-  for (std::size_t j = 0; j < r.size(); ++j)
-    if (valid[j]) near = values[j];
-  const k::PoseQuantity quantity = [&](const k::Pose& pose, double angle) { return column.valueOf(pose, angle, near); };
-  return k::refineExtrema(m, spec, values, valid, quantity);
+  return k::refineExtrema(m, spec, values, mask, quantity);
 }
 
-// Refines the extremes of a quantity given at each sample and on a pose.
-std::optional<k::Extrema> quantityExtrema(const k::Mechanism& m, const k::SweepSpec& spec, const k::SweepResult& r,
-                                          const std::function<double(const k::SweepResult&, std::size_t)>& sampled,
-                                          const k::PoseQuantity& quantity) {
-  std::vector<double> values(r.size(), 0.0);
-  std::vector<bool> valid(r.size(), false);
-  for (std::size_t j = 0; j < r.size(); ++j) {
-    valid[j] = r.ok(j);
-    if (valid[j]) values[j] = sampled(r, j);
-  }
-  return k::refineExtrema(m, spec, values, valid, quantity);
+// One column's extremes; nullopt where the column has no value at all.
+std::optional<k::Extrema> columnExtrema(const k::Mechanism& m, const k::SweepSpec& spec, const k::SweepResult& r,
+                                        const k::io::SweepColumn& column) {
+  const auto valid = [&](std::size_t j) { return column.isRate() ? r.ok(j) : r.assembled(j); };
+  // The search's poses unwrap angles next to a value of the sweep's own continuous column.
+  double near = 0.0;
+  for (std::size_t j = 0; j < r.size(); ++j)
+    if (valid(j)) near = column.value(r, j);
+  return refineOver(
+      m, spec, r, valid, [&](std::size_t j) { return column.value(r, j); },
+      [&](const k::Pose& pose, double angle) { return column.valueOf(pose, angle, near); });
 }
 
 std::string angleText(double radians) { return k::io::formatFixed(k::radToDeg(radians), 4); }
@@ -80,12 +76,13 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
   const std::string& u = m.lengthUnit;
   for (std::size_t i = 0; i < m.points.size(); ++i) {
     if (std::holds_alternative<k::GroundPoint>(m.points[i].definition)) continue;
-    const auto speed = quantityExtrema(
-        m, *spec, *result, [i](const k::SweepResult& r, std::size_t j) { return r.velocity[i][j].norm(); },
+    const auto ok = [&](std::size_t j) { return result->ok(j); };
+    const auto speed = refineOver(
+        m, *spec, *result, ok, [&](std::size_t j) { return result->velocity[i][j].norm(); },
         [i](const k::Pose& p, double) { return p.velocity[i].norm(); });
     if (speed) printRow(out, m.points[i].name + "_speed_" + u + "_s", *speed);
-    const auto accel = quantityExtrema(
-        m, *spec, *result, [i](const k::SweepResult& r, std::size_t j) { return r.acceleration[i][j].norm(); },
+    const auto accel = refineOver(
+        m, *spec, *result, ok, [&](std::size_t j) { return result->acceleration[i][j].norm(); },
         [i](const k::Pose& p, double) { return p.acceleration[i].norm(); });
     if (accel) printRow(out, m.points[i].name + "_accel_" + u + "_s2", *accel);
   }

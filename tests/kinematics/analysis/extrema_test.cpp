@@ -7,34 +7,14 @@
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
 
+#include "tests/support/extrema.h"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
 
 using namespace linkwright::kinematics;
-
-namespace {
-
-// Samples a quantity over a sweep, refines its extremes.
-Extrema extremaOf(const Mechanism& m, const SweepSpec& spec, const PoseQuantity& q) {
-  const auto s = sweep(m, spec);
-  REQUIRE(s.ok());
-  std::vector<double> values(s->size(), 0.0);
-  std::vector<bool> valid(s->size(), false);
-  Pose pose;
-  preparePose(m, pose);
-  for (std::size_t j = 0; j < s->size(); ++j) {
-    valid[j] = s->ok(j);
-    if (!valid[j]) continue;
-    REQUIRE(solvePoseInto(m, {s->inputAngle[j], spec.omega, spec.alpha}, {true, true}, pose).status == PoseStatus::Ok);
-    values[j] = q(pose, s->inputAngle[j]);
-  }
-  const auto e = refineExtrema(m, spec, values, valid, q);
-  REQUIRE(e.has_value());
-  return *e;
-}
-
-} // namespace
+using linkwright::test::extremaOf;
 
 TEST_CASE("the LS3 piston's peak speed is found exactly from only 12 samples", "[analysis][extrema]") {
   const auto m = makeSliderCrank({46.0, 6.098 * 25.4, 0.0, false});

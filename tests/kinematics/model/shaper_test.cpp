@@ -9,31 +9,18 @@
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
 
+#include "tests/support/extrema.h"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
 
 using namespace linkwright::kinematics;
+using linkwright::test::extremaOf;
 
 namespace {
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-Extrema extremaOf(const Mechanism& m, const SweepSpec& spec, const PoseQuantity& q) {
-  const auto s = sweep(m, spec);
-  REQUIRE(s.ok());
-  std::vector<double> values(s->size(), 0.0);
-  std::vector<bool> valid(s->size(), true);
-  Pose pose;
-  preparePose(m, pose);
-  for (std::size_t j = 0; j < s->size(); ++j) {
-    REQUIRE(solvePoseInto(m, {s->inputAngle[j], spec.omega, spec.alpha}, {true, true}, pose).status == PoseStatus::Ok);
-    values[j] = q(pose, s->inputAngle[j]);
-  }
-  const auto e = refineExtrema(m, spec, values, valid, q);
-  REQUIRE(e.has_value());
-  return *e;
-}
 
 } // namespace
 
