@@ -49,13 +49,10 @@ ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err)
     err << "linkwright-cli: " << e.message << "\n";
     return ExitCode::BadInput;
   };
-  const auto resolved = resolveMechanism(inv);
-  if (!resolved) return fail(resolved.error());
-  const auto spec = sweepSpecFor(inv, resolved->defaults);
-  if (!spec) return fail(spec.error());
-  const kinematics::Mechanism* mechanism = &resolved->mechanism;
-  const auto result = kinematics::sweep(*mechanism, *spec);
-  if (!result) return fail(result.error());
+  const auto swept = sweepInvocation(inv);
+  if (!swept) return fail(swept.error());
+  const kinematics::Mechanism* mechanism = &swept->resolved.mechanism;
+  const kinematics::SweepResult* result = &swept->result;
 
   std::ostringstream csv;
   if (inv.tableFormat) writeSweepTable(csv, *mechanism, *result);
@@ -72,7 +69,7 @@ ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err)
     err << "linkwright-cli: note: toggle position at crank angle " << degreesText(angle)
         << ": coupler and rocker are collinear, ω and α are undefined (cells left empty)\n";
   if (!result->notAssembled.empty()) {
-    reportUnassembled(*result, *resolved, err);
+    reportUnassembled(*result, swept->resolved, err);
     return ExitCode::NotAssemblable;
   }
   return ExitCode::Success;

@@ -48,4 +48,12 @@ kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& invocat
 /// The sweep the speed and range options ask for, with `defaults` for what they leave out.
 kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Invocation& invocation, const GridDefaults& defaults);
 
+/// The linkage an invocation describes, swept over the grid it asks for (analyze, extremes).
+struct SweptMechanism {
+  ResolvedMechanism resolved;
+  kinematics::SweepSpec spec;
+  kinematics::SweepResult result;
+};
+kinematics::Result<SweptMechanism> sweepInvocation(const Invocation& invocation);
+
 } // namespace linkwright::cli

@@ -55,12 +55,11 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
     err << "linkwright-cli: " << e.message << "\n";
     return ExitCode::BadInput;
   };
-  const auto resolved = resolveMechanism(inv);
-  if (!resolved) return fail(resolved.error());
-  const auto spec = sweepSpecFor(inv, resolved->defaults);
-  if (!spec) return fail(spec.error());
-  const auto result = k::sweep(resolved->mechanism, *spec);
-  if (!result) return fail(result.error());
+  const auto swept = sweepInvocation(inv);
+  if (!swept) return fail(swept.error());
+  const auto* resolved = &swept->resolved;
+  const auto* spec = &swept->spec;
+  const auto* result = &swept->result;
 
   out << "extremes over crank angles " << k::io::formatShort(k::radToDeg(spec->fromAngle)) << "° to "
       << k::io::formatShort(k::radToDeg(spec->toAngle)) << "°, refined between " << spec->samples
