@@ -14,9 +14,9 @@ MobilityReport mobility(const Mechanism& m) {
       r.links += 1;
       r.fullJoints += 1;
     } else if (std::holds_alternative<RrrPoint>(p.definition) || std::holds_alternative<RrpPoint>(p.definition) ||
-               std::holds_alternative<RprPoint>(p.definition)) {
-      // Two links and three joints: pin, pin, pin (RRR); pin, pin, slider (RRP); or pin,
-      // slider, pin (RPR: the block on the pin and the slotted link).
+               std::holds_alternative<RprPoint>(p.definition) || std::holds_alternative<PrpPoint>(p.definition)) {
+      // Two links and three joints: pin, pin, pin (RRR); pin, pin, slider (RRP); pin, slider,
+      // pin (RPR: the block on the pin and the slotted link); slider, pin, slider (PRP).
       r.links += 2;
       r.fullJoints += 3;
     }

@@ -20,6 +20,17 @@ std::vector<FourBarExample> fourBarExamples() {
   };
 }
 
+namespace {
+
+// The six-bars are the thesis crank-rocker (60/25/70/45 mm) grown by one dyad, at 60 rpm;
+// their dimensions keep every transmission angle above 20° over the whole turn.
+MechanismExample sixBarExample(const SixBarGeometry& g, const std::string& description) {
+  return {sixBarKindName(g.kind), description, sixBarKindName(g.kind), makeSixBar(g).value(), 2.0 * kPi,
+          0.0, 360.0, 1.0, std::nullopt};
+}
+
+} // namespace
+
 std::vector<MechanismExample> mechanismExamples() {
   return {
       {"ls3-engine",
@@ -30,6 +41,10 @@ std::vector<MechanismExample> mechanismExamples() {
        "crank-shaper quick return: crank 100, slotted rocker 400, link 150 mm, rocker pivot 200 mm below and 40 mm "
        "beside the crank, ram guide 220 mm above it, crank at 3 Hz (Miranda et al.)",
        "shaper", makeShaper(kSeedShaper).value(), 2.0 * kPi * 3.0, 0.0, 360.0, 1.0, kSeedShaper},
+      sixBarExample(kWattISixBar, "Watt I six-bar: the thesis crank-rocker with links 5 and 6 from its coupler to its rocker"),
+      sixBarExample(kWattIISixBar, "Watt II six-bar: two four-bars in series, the thesis crank-rocker driving a second rocker about O6"),
+      sixBarExample(kStephensonISixBar, "Stephenson I six-bar: links 5 and 6 from a point on the crank to the rocker"),
+      sixBarExample(kStephensonIIISixBar, "Stephenson III six-bar: links 5 and 6 from the coupler to a third ground pivot O6"),
   };
 }
 

@@ -3,6 +3,7 @@
 
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/shaper.h"
+#include "kinematics/model/sixbar.h"
 #include "kinematics/model/slider_crank.h"
 
 #include <optional>
@@ -27,11 +28,11 @@ struct FourBarExample {
   bool operator==(const FourBarExample&) const = default;
 };
 
-/// Any other linkage from a seed (slider-crank, shaper), built, with its speed and grid.
+/// Any other linkage (slider-crank, shaper, six-bars), built, with its speed and grid.
 struct MechanismExample {
   std::string name;
   std::string description;
-  std::string kind;       ///< "slider-crank", "shaper"
+  std::string kind;       ///< "slider-crank", "shaper", "watt-i", "watt-ii", "stephenson-i", "stephenson-iii"
   Mechanism mechanism;
   double omega = 0.0;     ///< crank, rad/s
   double fromDeg = 0.0;
@@ -51,6 +52,17 @@ std::optional<MechanismExample> findMechanismExample(const std::string& name);
 inline const SliderCrankGeometry kLs3Engine{46.0, 6.098 * 25.4, 0.0, false};
 /// Seed 003's shaper: crank 100, slotted rocker 400, link 150 mm; O4 at (40, −200), guide at 220.
 inline const ShaperGeometry kSeedShaper{100.0, 400.0, 150.0, Eigen::Vector2d(40.0, -200.0), 220.0};
+
+/// The six-bar examples: the thesis crank-rocker (60/25/70/45 mm) with one more dyad.
+inline const FourBarLengths kSixBarBase{60.0, 25.0, 70.0, 45.0};
+inline const SixBarGeometry kWattISixBar{SixBarKind::WattI, kSixBarBase, Branch::Open, {35.0, 25.0}, {60.0, 0.0},
+                                         Eigen::Vector2d::Zero(), 70.0, 55.0, Branch::Open};
+inline const SixBarGeometry kWattIISixBar{SixBarKind::WattII, kSixBarBase, Branch::Open, {60.0, 0.0}, {},
+                                          Eigen::Vector2d(110.0, 20.0), 60.0, 45.0, Branch::Open};
+inline const SixBarGeometry kStephensonISixBar{SixBarKind::StephensonI, kSixBarBase, Branch::Open, {-20.0, 0.0},
+                                               {30.0, -15.0}, Eigen::Vector2d::Zero(), 100.0, 75.0, Branch::Open};
+inline const SixBarGeometry kStephensonIIISixBar{SixBarKind::StephensonIII, kSixBarBase, Branch::Open, {35.0, 30.0}, {},
+                                                 Eigen::Vector2d(100.0, 60.0), 75.0, 55.0, Branch::Open};
 
 /// All built-in four-bar examples, in display order.
 std::vector<FourBarExample> fourBarExamples();

@@ -4,7 +4,8 @@
 // link), and the moving links whose angles, rates and accelerations are reported. This is the
 // dyad decomposition of Pyslvs and of every closed-form textbook method: solving the points in
 // order solves the linkage. One crank drives it (one degree of freedom). RRP dyads (sliders on
-// a ground guide) make slider-cranks; RPR dyads (slotted links) make quick-return mechanisms.
+// a guide) make slider-cranks; RPR dyads (slotted links) make quick-return mechanisms; PRP
+// dyads join two sliders. Six-bars are a four-bar plus one more dyad.
 //
 // Frame and units: x to the right, y up, angles counter-clockwise from +x in radians. For a
 // four-bar, +x is the frame line (crank pivot to rocker pivot). Lengths are in
@@ -53,15 +54,25 @@ struct RrrPoint {
   bool operator==(const RrrPoint&) const = default;
 };
 
-/// The joint C of an RRP dyad (a slider): at `length` from point `first`, on a straight guide
-/// fixed to the ground through `guidePoint` at `guideAngle` (rad, CCW from +x). Branch::Open
-/// puts C at the larger guide coordinate (further along the guide's direction), Crossed at
-/// the smaller one.
+/// A straight guide line fixed in a body: the ground when `link` is empty, else a moving link.
+/// On the ground, `point` is a position and `angle` is absolute (rad, CCW from +x). On a link,
+/// `point` is (along, across) from the link's first point in the link's frame (as for an
+/// AttachedPoint) and `angle` is measured from the link's direction.
+struct Guide {
+  std::optional<LinkId> link;
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();
+  double angle = 0.0;
+  bool operator==(const Guide&) const = default;
+};
+
+/// The joint C of an RRP dyad (a slider): at `length` from point `first`, on the straight
+/// `guide` (fixed to the ground, or to a link: a slider on a moving bar). Branch::Open puts C
+/// at the larger guide coordinate (further along the guide's direction), Crossed at the
+/// smaller one.
 struct RrpPoint {
   PointId first;
   double length = 1.0;
-  Eigen::Vector2d guidePoint = Eigen::Vector2d::Zero();
-  double guideAngle = 0.0;
+  Guide guide;
   Branch branch = Branch::Open;
   bool operator==(const RrpPoint&) const = default;
 };
@@ -77,6 +88,15 @@ struct RprPoint {
   bool operator==(const RprPoint&) const = default;
 };
 
+/// The joint C of a PRP dyad: a pin joining two sliders, each on its own straight guide, so C
+/// is where the two guide lines cross (e.g. a block sliding on a rocker whose pin runs in a
+/// ground slot). There is one solution; parallel guides cannot be assembled.
+struct PrpPoint {
+  Guide first;
+  Guide second;
+  bool operator==(const PrpPoint&) const = default;
+};
+
 /// A point rigidly fixed on a link: `along` the link's direction (from its first point toward
 /// its second) and `across` it (90° counter-clockwise), measured from the link's first point.
 struct AttachedPoint {
@@ -86,7 +106,18 @@ struct AttachedPoint {
   bool operator==(const AttachedPoint&) const = default;
 };
 
-using PointDefinition = std::variant<GroundPoint, CrankPoint, RrrPoint, RrpPoint, RprPoint, AttachedPoint>;
+/// A point with no closed-form definition: found, together with the other free points next to
+/// it in the list, by Newton–Raphson on the distance constraints (Mechanism::constraints) that
+/// reach it. This solves loops that do not split into dyads (a triad, e.g. a Stephenson II
+/// six-bar). `guess` is its position in the assembly the user means (length unit): the first
+/// solve starts there, so it picks the branch; later solves start from the previous pose.
+struct FreePoint {
+  Eigen::Vector2d guess = Eigen::Vector2d::Zero();
+  bool operator==(const FreePoint&) const = default;
+};
+
+using PointDefinition =
+    std::variant<GroundPoint, CrankPoint, RrrPoint, RrpPoint, RprPoint, PrpPoint, AttachedPoint, FreePoint>;
 
 /// A named point. Its definition refers only to points (and links) defined before it.
 struct Point {
@@ -105,11 +136,21 @@ struct Link {
   bool operator==(const Link&) const = default;
 };
 
+/// Points `first` and `second` held `length` apart (length unit): a rigid bar, or one side of
+/// a rigid plate. Only free points use these; every constraint must reach a free point.
+struct DistanceConstraint {
+  PointId first;
+  PointId second;
+  double length = 1.0;
+  bool operator==(const DistanceConstraint&) const = default;
+};
+
 /// A complete linkage description. A regular value: copy, compare, store.
 struct Mechanism {
   std::string lengthUnit = "mm";
   std::vector<Point> points;
   std::vector<Link> links;
+  std::vector<DistanceConstraint> constraints;  ///< for free points only
   bool operator==(const Mechanism&) const = default;
 
   /// The id of the point named `name`, if any.

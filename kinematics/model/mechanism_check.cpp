@@ -23,6 +23,21 @@ std::optional<Error> checkEarlier(PointId ref, std::size_t index, const char* me
                             std::to_string(ref.index) + ")");
 }
 
+// A guide on a link needs the link's ends solved first; its numbers must be finite.
+std::optional<Error> checkGuide(const Mechanism& m, const Guide& g, std::size_t i, const std::string& member) {
+  const std::string field = pointField(i, member.c_str());
+  if (g.link) {
+    if (g.link->index >= m.links.size())
+      return structureError(field + ".link", "refers to a link that does not exist");
+    const Link& link = m.links[g.link->index];
+    if (link.first.index >= i || link.second.index >= i)
+      return structureError(field + ".link", "must be a link between points defined before it");
+  }
+  if (auto e = checkFinite(g.point.x(), field + ".x")) return e;
+  if (auto e = checkFinite(g.point.y(), field + ".y")) return e;
+  return checkFinite(g.angle, field + ".angle");
+}
+
 std::optional<Error> checkPoint(const Mechanism& m, std::size_t i, int& cranks) {
   const PointDefinition& def = m.points[i].definition;
   if (const auto* g = std::get_if<GroundPoint>(&def)) {
@@ -48,9 +63,11 @@ std::optional<Error> checkPoint(const Mechanism& m, std::size_t i, int& cranks) 
   if (const auto* p = std::get_if<RrpPoint>(&def)) {
     if (auto e = checkEarlier(p->first, i, "first")) return e;
     if (auto e = checkPositive(p->length, pointField(i, "length"))) return e;
-    if (auto e = checkFinite(p->guidePoint.x(), pointField(i, "guideX"))) return e;
-    if (auto e = checkFinite(p->guidePoint.y(), pointField(i, "guideY"))) return e;
-    return checkFinite(p->guideAngle, pointField(i, "guideAngle"));
+    return checkGuide(m, p->guide, i, "guide");
+  }
+  if (const auto* q = std::get_if<PrpPoint>(&def)) {
+    if (auto e = checkGuide(m, q->first, i, "firstGuide")) return e;
+    return checkGuide(m, q->second, i, "secondGuide");
   }
   if (const auto* s = std::get_if<RprPoint>(&def)) {
     if (auto e = checkEarlier(s->pivot, i, "pivot")) return e;

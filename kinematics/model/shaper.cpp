@@ -31,7 +31,7 @@ Result<Mechanism> makeShaper(const ShaperGeometry& g, Branch branch, const std::
       {"O4", GroundPoint{g.rockerPivot}},
       {"B", CrankPoint{shaper::kO2, g.crank, 0.0}},
       {"D", RprPoint{shaper::kO4, shaper::kB, g.rocker}},
-      {"R", RrpPoint{shaper::kD, g.link, Eigen::Vector2d(0.0, g.guideHeight), 0.0, branch}},
+      {"R", RrpPoint{shaper::kD, g.link, Guide{std::nullopt, Eigen::Vector2d(0.0, g.guideHeight), 0.0}, branch}},
   };
   m.links = {
       {"crank", shaper::kO2, shaper::kB},

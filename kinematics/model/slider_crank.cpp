@@ -18,7 +18,7 @@ Result<Mechanism> makeSliderCrank(const SliderCrankGeometry& g, Branch branch, c
   m.points = {
       {"O2", GroundPoint{Eigen::Vector2d(0.0, 0.0)}},
       {"B", CrankPoint{slidercrank::kO2, g.crank, 0.0}},
-      {"C", RrpPoint{slidercrank::kB, g.rod, Eigen::Vector2d(0.0, g.offset), g.reversed ? kPi : 0.0, branch}},
+      {"C", RrpPoint{slidercrank::kB, g.rod, Guide{std::nullopt, Eigen::Vector2d(0.0, g.offset), g.reversed ? kPi : 0.0}, branch}},
   };
   m.links = {
       {"crank", slidercrank::kO2, slidercrank::kB},

@@ -4,6 +4,7 @@
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
+#include "kinematics/solve/guide_line.h"
 #include "kinematics/solve/rrp_dyad.h"
 
 #include <cmath>
@@ -94,16 +95,23 @@ struct Solver {
     return (c != nullptr && c->pivot == l.first) || (reversed != nullptr && reversed->pivot == l.second);
   }
 
+  // A guide on a link needs that link's angle and rates first (its ends are solved already).
+  GuideLine guideLine(const Guide& g) {
+    if (g.link) link(g.link->index);
+    return guideLineAt(m, g, pose);
+  }
+
   bool rrp(std::size_t i, const RrpPoint& p) {
     const Eigen::Vector2d& p1 = pose.position[p.first.index];
-    const Eigen::Vector2d u(std::cos(p.guideAngle), std::sin(p.guideAngle));
-    const RrpCandidates cand = rrpCandidates(p1, p.length, p.guidePoint, u);
+    const GuideLine line = guideLine(p.guide);
+    const Eigen::Vector2d& u = line.direction;
+    const RrpCandidates cand = rrpCandidates(p1, p.length, line.point, u);
     if (cand.failure != AssemblyFailure::None) {
       report = {PoseStatus::NotAssemblable, PointId{i}, cand.failure};
       return false;
     }
-    const Eigen::Vector2d open = p.guidePoint + cand.open * u;
-    const Eigen::Vector2d crossed = p.guidePoint + cand.crossed * u;
+    const Eigen::Vector2d open = line.point + cand.open * u;
+    const Eigen::Vector2d crossed = line.point + cand.crossed * u;
     const signed char sign = chooseSign(i, p.branch, open, crossed);
     const Eigen::Vector2d c = sign > 0 ? open : crossed;
     pose.position[i] = c;
@@ -112,6 +120,7 @@ struct Solver {
     // 90° with the rod along the guide (the best), 0° with it across (the toggle).
     pose.transmissionAngle[i] = std::atan2(std::abs(r.dot(u)), std::abs(cross(u, r)));
     if (!wantVelocity || !ratesValid) return true;
+    if (p.guide.link) return movingGuideRates(i, p, line, r);
     const Eigen::Vector2d& v1 = pose.velocity[p.first.index];
     double sDot = 0.0;
     if (!rrpSolveRate(r, u, r.dot(v1), sDot)) {
@@ -123,6 +132,54 @@ struct Solver {
     double sDdot = 0.0;
     rrpSolveRate(r, u, r.dot(pose.acceleration[p.first.index]) - (pose.velocity[i] - v1).squaredNorm(), sDdot);
     pose.acceleration[i] = sDdot * u;
+    return true;
+  }
+
+  // A slider on a moving guide: the rod's r·(vC − v1) = 0 and the guide's row (guide_line.h),
+  // the same 2×2 matrix [r; n] for velocity and acceleration (singular with the rod across).
+  bool movingGuideRates(std::size_t i, const RrpPoint& p, const GuideLine& line, const Eigen::Vector2d& r) {
+    const Eigen::Vector2d n = guideNormal(line);
+    const Eigen::Vector2d& c = pose.position[i];
+    const Eigen::Vector2d& v1 = pose.velocity[p.first.index];
+    Eigen::Vector2d v;
+    if (!rrrSolveRates(r, n, {r.dot(v1), guideVelocityRhs(m, p.guide, line, pose, c)}, v)) {
+      markSingular(i);
+      return true;
+    }
+    pose.velocity[i] = v;
+    if (!wantAcceleration) return true;
+    const Eigen::Vector2d rhs(r.dot(pose.acceleration[p.first.index]) - (v - v1).squaredNorm(),
+                              guideAccelerationRhs(m, p.guide, line, pose, c, v));
+    rrrSolveRates(r, n, rhs, pose.acceleration[i]);
+    return true;
+  }
+
+  // Two sliders pinned together: C = G1 + s·u1 on both lines, s = ((G2 − G1)×u2)/(u1×u2). The
+  // rates solve the two guides' rows [n1; n2] (guide_line.h), singular as the guides turn parallel.
+  bool prp(std::size_t i, const PrpPoint& p) {
+    const GuideLine l1 = guideLine(p.first);
+    const GuideLine l2 = guideLine(p.second);
+    const double sine = cross(l1.direction, l2.direction);
+    if (!(std::abs(sine) > kSingularSine * kSingularSine)) {
+      report = {PoseStatus::NotAssemblable, PointId{i}, AssemblyFailure::Parallel};
+      return false;
+    }
+    const Eigen::Vector2d c = l1.point + cross(l2.point - l1.point, l2.direction) / sine * l1.direction;
+    pose.position[i] = c;
+    pose.transmissionAngle[i] = std::atan2(std::abs(sine), l1.direction.dot(l2.direction));
+    if (!wantVelocity || !ratesValid) return true;
+    const Eigen::Vector2d n1 = guideNormal(l1);
+    const Eigen::Vector2d n2 = guideNormal(l2);
+    Eigen::Vector2d v;
+    if (!rrrSolveRates(n1, n2, {guideVelocityRhs(m, p.first, l1, pose, c), guideVelocityRhs(m, p.second, l2, pose, c)}, v)) {
+      markSingular(i);
+      return true;
+    }
+    pose.velocity[i] = v;
+    if (!wantAcceleration) return true;
+    const Eigen::Vector2d rhs(guideAccelerationRhs(m, p.first, l1, pose, c, v),
+                              guideAccelerationRhs(m, p.second, l2, pose, c, v));
+    rrrSolveRates(n1, n2, rhs, pose.acceleration[i]);
     return true;
   }
 
@@ -194,6 +251,8 @@ struct Solver {
         if (!rrp(i, *p)) return report;
       } else if (const auto* s = std::get_if<RprPoint>(&def)) {
         if (!rpr(i, *s)) return report;
+      } else if (const auto* q = std::get_if<PrpPoint>(&def)) {
+        if (!prp(i, *q)) return report;
       } else attached(i, std::get<AttachedPoint>(def));
     }
     for (std::size_t k = 0; k < m.links.size(); ++k) link(k);
@@ -253,12 +312,14 @@ std::string describeFailure(const Mechanism& m, const PoseReport& report, const 
     const std::string& n1 = m.points[p->first.index].name;
     if (report.status == PoseStatus::Singular)
       return name + " is at a toggle position" + at + ": the " + rod + " is at right angles to the guide, so velocity and acceleration are undefined there";
-    const Eigen::Vector2d u(std::cos(p->guideAngle), std::sin(p->guideAngle));
-    const Eigen::Vector2d d = p->guidePoint - pose.position[p->first.index];
-    const double distance = std::abs(u.x() * d.y() - u.y() * d.x());
+    const GuideLine line = guideLineAt(m, p->guide, pose);
+    const double distance = std::abs(cross(line.direction, line.point - pose.position[p->first.index]));
     return name + " cannot be assembled" + at + ": " + n1 + " is " + io::formatShort(distance) + " " + m.lengthUnit +
            " from the guide, more than the " + rod + " length " + io::formatShort(p->length) + " " + m.lengthUnit;
   }
+  if (std::holds_alternative<PrpPoint>(m.points[i].definition) && report.status != PoseStatus::Ok)
+    return name + (report.status == PoseStatus::Singular ? " is at a toggle position" : " cannot be assembled") + at +
+           ": its two guides are parallel, so the sliders' pin is undetermined";
   if (const auto* s = std::get_if<RprPoint>(&m.points[i].definition); s != nullptr && report.status == PoseStatus::NotAssemblable)
     return name + " cannot be placed" + at + ": " + m.points[s->through.index].name + " lies on the pivot " +
            m.points[s->pivot.index].name + ", so the slot's direction is undetermined";
@@ -281,6 +342,7 @@ std::string describeFailure(const Mechanism& m, const PoseReport& report, const 
     return name + " cannot be assembled" + at + ": " + gap + "less than |" + len1 + " − " + len2 +
            "| = " + io::formatShort(std::abs(r->firstLength - r->secondLength)) + " " + m.lengthUnit;
   case AssemblyFailure::Coincident:
+  case AssemblyFailure::Parallel:
   case AssemblyFailure::None:
     break;
   }

@@ -25,6 +25,7 @@ enum class AssemblyFailure {
   TooFar,      ///< |P1P2| > l1 + l2: the two links cannot reach each other
   TooClose,    ///< |P1P2| < |l1 − l2|: one circle lies inside the other
   Coincident,  ///< P1 and P2 coincide: C is undetermined
+  Parallel,    ///< two guides are parallel: their sliders' pin is undetermined
 };
 
 /// Relative tolerance on the assembly limits |l1−l2| ≤ L ≤ l1+l2: a pose past a limit by less

@@ -3,6 +3,7 @@
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
+#include "kinematics/solve/guide_line.h"
 #include "kinematics/solve/pose_solver.h"
 
 #include <cmath>
@@ -32,11 +33,24 @@ double limitGap(const RrrPoint& r, const Pose& pose) {
   return std::min(r.firstLength + r.secondLength - L, L - std::abs(r.firstLength - r.secondLength));
 }
 
-// For a slider: the rod length less the pin's distance from the guide.
-double limitGap(const RrpPoint& p, const Pose& pose) {
-  const Eigen::Vector2d u(std::cos(p.guideAngle), std::sin(p.guideAngle));
-  const Eigen::Vector2d d = p.guidePoint - pose.position[p.first.index];
-  return p.length - std::abs(u.x() * d.y() - u.y() * d.x());
+// For a slider: the rod length less the pin's distance from the guide. A moving guide adds its
+// own motion, so its link's ends count toward the displacement below.
+double limitGap(const Mechanism& m, const RrpPoint& p, const Pose& pose) {
+  const GuideLine line = guideLineAt(m, p.guide, pose);
+  const Eigen::Vector2d d = line.point - pose.position[p.first.index];
+  return p.length - std::abs(line.direction.x() * d.y() - line.direction.y() * d.x());
+}
+
+// How far a guide on link k can move the point of it nearest a slider between poses a and b:
+// its ends' displacement, plus the rotation times the reach of the guide from the link.
+double guideMotion(const Mechanism& m, LinkId k, const Pose& a, const Pose& b) {
+  const Link& l = m.links[k.index];
+  const double ends = std::max((b.position[l.first.index] - a.position[l.first.index]).norm(),
+                               (b.position[l.second.index] - a.position[l.second.index]).norm());
+  const double turn = std::abs(wrapToPi(b.linkAngle[k.index] - a.linkAngle[k.index]));
+  double reach = 0.0;
+  for (const Eigen::Vector2d& p : b.position) reach = std::max(reach, (p - b.position[l.first.index]).norm());
+  return ends + turn * reach;
 }
 
 // True unless every dyad provably stays away from its toggle between poses a and b. The gap
@@ -51,8 +65,9 @@ bool branchAmbiguous(const Mechanism& m, double aAngle, const Pose& a, double bA
                             (b.position[r->second.index] - a.position[r->second.index]).norm();
       if (limitGap(*r, a) + limitGap(*r, b) <= 2.0 * motion) return true;
     } else if (const auto* s = std::get_if<RrpPoint>(&p.definition)) {
-      const double motion = (b.position[s->first.index] - a.position[s->first.index]).norm();
-      if (limitGap(*s, a) + limitGap(*s, b) <= 2.0 * motion) return true;
+      double motion = (b.position[s->first.index] - a.position[s->first.index]).norm();
+      if (s->guide.link) motion += guideMotion(m, *s->guide.link, a, b);
+      if (limitGap(m, *s, a) + limitGap(m, *s, b) <= 2.0 * motion) return true;
     }
   }
   return false;

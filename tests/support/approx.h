@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -144,6 +145,36 @@ private:
 inline void checkRate(double exact, const Estimate& estimate, const std::string& what) {
   INFO(std::setprecision(17) << what << ": exact " << exact << ", difference estimate " << estimate.value << " ± " << estimate.tolerance);
   CHECK(std::abs(exact - estimate.value) <= estimate.tolerance);
+}
+
+/// CHECKs every moving point's velocity and acceleration and every link's ω and α of
+/// `mechanism` at `state` against central time differences of its positions. `size` is the
+/// linkage's extent: position round-off is taken as 64ε·size/`sine` (sine: the worst
+/// transmission sine, which amplifies it), a link angle's as that over the link's length.
+inline void checkAllRatesAgainstDifferences(const kinematics::Mechanism& mechanism, const kinematics::DriverState& state,
+                                            double size, double sine = 0.2) {
+  const auto pose = kinematics::solvePose(mechanism, state);
+  INFO((pose.ok() ? std::string() : pose.error().message));
+  REQUIRE(pose.ok());
+  const double h = 1e-3 / (std::abs(state.omega) + std::sqrt(std::abs(state.alpha)));
+  const TimeStencil stencil(mechanism, state, h);
+  const double noise = 64.0 * std::numeric_limits<double>::epsilon() * size / sine;
+  for (std::size_t i = 0; i < mechanism.points.size(); ++i) {
+    if (std::holds_alternative<kinematics::GroundPoint>(mechanism.points[i].definition)) continue;
+    for (int axis = 0; axis < 2; ++axis) {
+      const auto d = stencil.point(kinematics::PointId{i}, axis, noise);
+      const std::string what = mechanism.points[i].name + (axis == 0 ? ".x" : ".y");
+      checkRate(pose->velocity[i][axis], d[0], "velocity of " + what);
+      checkRate(pose->acceleration[i][axis], d[1], "acceleration of " + what);
+    }
+  }
+  for (std::size_t k = 0; k < mechanism.links.size(); ++k) {
+    const kinematics::Link& l = mechanism.links[k];
+    const double length = (pose->position[l.second.index] - pose->position[l.first.index]).norm();
+    const auto d = stencil.link(kinematics::LinkId{k}, 2.0 * noise / length);
+    checkRate(pose->linkOmega[k], d[0], "omega of " + l.name);
+    checkRate(pose->linkAlpha[k], d[1], "alpha of " + l.name);
+  }
 }
 
 } // namespace linkwright::test
