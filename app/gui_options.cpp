@@ -1,6 +1,6 @@
 #include "app/gui_options.h"
 
-#include "kinematics/model/examples.h"
+#include "kinematics/model/mechanism_design.h"
 
 #include <charconv>
 #include <cmath>
@@ -10,9 +10,11 @@ namespace linkwright::app {
 std::string guiUsage() {
   std::string names;
   for (const auto& e : kinematics::fourBarExamples()) names += "\n                      " + e.name;
+  for (const auto& e : kinematics::mechanismExamples()) names += "\n                      " + e.name;
   return "Usage: linkwright [FILE.json] [OPTIONS]\n\n"
-         "Linkwright: design and analyse planar linkages. Opens FILE.json, or the thesis\n"
-         "crank-rocker example, and animates it.\n\n"
+         "Linkwright: design and analyse planar linkages (four-bars, slider-cranks, quick\n"
+         "returns, six-bars). Opens FILE.json (any kind), or the thesis crank-rocker example,\n"
+         "and animates it.\n\n"
          "Options:\n"
          "  --example NAME      start on a built-in example:" + names + "\n"
          "  --screenshot FILE   render the window to FILE (PNG) and exit, without animating\n"
@@ -41,7 +43,7 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
       const auto v = value();
       if (!v) return std::nullopt;
       if (a == "--example") {
-        if (!kinematics::findFourBarExample(*v)) {
+        if (!kinematics::designForExample(*v)) {
           error = "--example: no example named '" + *v + "' (see --help)";
           return std::nullopt;
         }

@@ -6,7 +6,7 @@
 #include "ui/main_window.h"
 #include "ui/message_banner.h"
 
-#include "kinematics/model/examples.h"
+#include "kinematics/model/mechanism_design.h"
 #include "kinematics/model/units.h"
 
 #include <QApplication>
@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
 
   linkwright::ui::MainWindow window;
   namespace k = linkwright::kinematics;
-  if (options->example) window.newDocument(k::designFromExample(*k::findFourBarExample(*options->example)));
+  if (options->example) window.newDocument(*k::designForExample(*options->example));
   if (options->file && !window.openFile(QString::fromStdString(*options->file))) {
     std::cerr << "linkwright: " << window.banner()->text().toStdString() << "\n";
     if (options->screenshot) return 2;

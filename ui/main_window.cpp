@@ -2,11 +2,15 @@
 
 #include "ui/animation/crank_animator.h"
 #include "ui/canvas/linkage_view.h"
+#include "ui/dialogs/attach_dyad_dialog.h"
+#include "ui/dialogs/dyad_request.h"
+#include "ui/document/design_templates.h"
 #include "ui/document/document_file.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/export/view_image.h"
 #include "ui/message_banner.h"
 #include "ui/panels/analysis_panel.h"
+#include "ui/panels/dimensions_panel.h"
 #include "ui/panels/lengths_panel.h"
 #include "ui/panels/motion_panel.h"
 #include "ui/plots/plot_panel.h"
@@ -46,7 +50,7 @@ MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), m_settings(std::make_unique<Settings>()), m_document(new MechanismDocument(this)),
       m_animator(new CrankAnimator(m_document, this)), m_banner(new MessageBanner(this)),
       m_canvas(new LinkageView(m_document, this)), m_plots(new PlotPanel(m_document, this)),
-      m_lengths(new LengthsPanel(m_document, this)), m_motion(new MotionPanel(m_document, m_animator, m_settings.get(), this)),
+      m_lengths(new LengthsPanel(m_document, this)), m_dimensions(new DimensionsPanel(m_document, this)), m_motion(new MotionPanel(m_document, m_animator, m_settings.get(), this)),
       m_analysis(new AnalysisPanel(m_document, this)) {
   setObjectName("MainWindow");
   m_normalFont = font();
@@ -54,6 +58,7 @@ MainWindow::MainWindow(QWidget* parent)
   auto* sideLayout = new QVBoxLayout(side);
   sideLayout->setContentsMargins(0, 0, 0, 0);
   sideLayout->addWidget(m_lengths);
+  sideLayout->addWidget(m_dimensions);
   sideLayout->addWidget(m_motion);
   sideLayout->addWidget(m_analysis);
   sideLayout->addStretch();
@@ -89,6 +94,7 @@ MainWindow::MainWindow(QWidget* parent)
   connect(m_canvas, &LinkageView::statusMessage, this, [this](const QString& text) { statusBar()->showMessage(text, 3000); });
   connect(m_document, &MechanismDocument::changed, this, [this](Changes what) {
     if (what & (Change::File | Change::Design)) refreshTitle();
+    if (what & Change::Design) showPanelsFor();
   });
   resize(1400, 880);
   restoreGeometry(m_settings->windowGeometry());
@@ -96,13 +102,19 @@ MainWindow::MainWindow(QWidget* parent)
   newDocument(k::designFromExample(*k::findFourBarExample("thesis-crank-rocker")));
 }
 
+void MainWindow::showPanelsFor() {
+  // A four-bar keeps its lengths panel (Grashof-aware sliders); any other linkage lists its
+  // points' dimensions instead.
+  const bool fourBar = m_document->fourBar() != nullptr;
+  m_lengths->setVisible(fourBar);
+  m_dimensions->setVisible(!fourBar);
+}
+
 MainWindow::~MainWindow() = default;
 
 void MainWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
-  file->addAction(tr("&New four-bar"), QKeySequence::New, this, [this] {
-    if (maybeSave()) newDocument(k::FourBarDesign{});
-  });
+  buildNewMenu(file->addMenu(tr("&New")));
   file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::open);
   m_recentMenu = file->addMenu(tr("Open &Recent"));
   file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
@@ -121,6 +133,8 @@ void MainWindow::buildMenus() {
   redo->setShortcut(QKeySequence::Redo);
   edit->addAction(undo);
   edit->addAction(redo);
+  edit->addSeparator();
+  edit->addAction(tr("Attach &dyad…"), QKeySequence(Qt::CTRL | Qt::Key_D), this, &MainWindow::openAttachDyadDialog);
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
   view->addAction(tr("&Fit to view"), QKeySequence(Qt::CTRL | Qt::Key_0), m_canvas, &LinkageView::fitToView);
@@ -155,24 +169,53 @@ void MainWindow::buildMenus() {
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   help->addAction(tr("&About Linkwright"), this, [this] {
     QMessageBox::about(this, tr("About Linkwright"),
-                       tr("<b>Linkwright %1</b><p>Design and analysis of planar linkages: exact positions, "
-                          "velocities and accelerations, Grashof class, transmission angle, limit positions.</p>")
+                       tr("<b>Linkwright %1</b><p>Design and analysis of planar linkages (four-bars, slider-cranks, "
+                          "quick returns, six-bars and whatever dyads you attach): exact positions, velocities and "
+                          "accelerations, Grashof class, transmission angles, limit positions, time ratios.</p>")
                            .arg(QApplication::applicationVersion()));
   });
   refreshRecentFiles();
 }
 
-void MainWindow::buildExamplesMenu(QMenu* menu) {
-  for (const k::FourBarExample& e : k::fourBarExamples()) {
-    QAction* action = menu->addAction(QString::fromStdString(e.name), this, [this, e] {
-      if (maybeSave()) newDocument(k::designFromExample(e));
+void MainWindow::buildNewMenu(QMenu* menu) {
+  for (const DesignTemplate& kind : designTemplates()) {
+    QAction* action = menu->addAction(kind.label, this, [this, kind] {
+      if (maybeSave()) newDocument(templateDesign(kind));
     });
-    action->setToolTip(QString::fromStdString(e.description));
-    action->setStatusTip(QString::fromStdString(e.description));
+    if (kind.example.empty()) action->setShortcut(QKeySequence::New);
   }
 }
 
-void MainWindow::newDocument(const k::FourBarDesign& design) {
+void MainWindow::buildExamplesMenu(QMenu* menu) {
+  menu->setToolTipsVisible(true);
+  const auto addExample = [this, menu](const std::string& name, const std::string& description) {
+    QAction* action = menu->addAction(exampleMenuText(description), this, [this, name] {
+      if (maybeSave()) newDocument(*k::designForExample(name));
+    });
+    action->setObjectName(QString::fromStdString("example_" + name));
+    action->setToolTip(QString::fromStdString(name + ": " + description));
+    action->setStatusTip(QString::fromStdString(description));
+  };
+  menu->addSection(tr("Four-bars"));
+  for (const k::FourBarExample& e : k::fourBarExamples()) addExample(e.name, e.description);
+  menu->addSection(tr("Slider-cranks, quick returns and six-bars"));
+  for (const k::MechanismExample& e : k::mechanismExamples()) addExample(e.name, e.description);
+}
+
+std::optional<QString> MainWindow::attachDyad(const DyadRequest& request) {
+  const auto attached = attachToDesign(m_document->design(), request);
+  if (!attached) return QString::fromStdString(attached.error().message);
+  return m_document->edit(*attached, tr("Attach %1").arg(QString::fromStdString(request.joint)));
+}
+
+void MainWindow::openAttachDyadDialog() {
+  m_animator->pause();
+  AttachDyadDialog dialog(m_document->mechanism(), m_document->crankAngle(),
+                          [this](const DyadRequest& request) { return attachDyad(request); }, this);
+  dialog.exec();
+}
+
+void MainWindow::newDocument(const k::Design& design) {
   m_animator->pause();
   m_document->reset(design);
   m_canvas->fitToView();
@@ -180,9 +223,14 @@ void MainWindow::newDocument(const k::FourBarDesign& design) {
 }
 
 bool MainWindow::openFile(const QString& path) {
-  k::FourBarDesign design;
+  k::Design design;
   if (auto why = loadDesignFile(path, design)) {
     showError(*why);
+    return false;
+  }
+  // A well-formed file may still describe a linkage that never assembles.
+  if (auto why = m_document->validate(design)) {
+    showError(tr("Cannot open %1: %2").arg(QFileInfo(path).fileName(), *why));
     return false;
   }
   m_animator->pause();

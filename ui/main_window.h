@@ -1,24 +1,26 @@
 #pragma once
-// The designer window: canvas in the middle, lengths / drive / analysis panels on the left,
-// plots on the right; File, Edit, View, Examples and Help menus. The window wires widgets to
+// The designer window: canvas in the middle, dimensions / drive / analysis panels on the left,
+// plots on the right; File (New ▸ each kind of linkage), Edit (Attach dyad…), View, Examples
+// and Help menus. The window wires widgets to
 // the document; it computes nothing itself. Each file and export action has a dialog-free
 // twin (openFile, saveTo, exportCsv, ...) that the menus call and the tests use.
+
+#include "kinematics/model/mechanism_design.h"
 
 #include <QMainWindow>
 
 #include <memory>
+#include <optional>
 
 class QAction;
 class QMenu;
-
-namespace linkwright::kinematics {
-struct FourBarDesign;
-}
 
 namespace linkwright::ui {
 
 class AnalysisPanel;
 class CrankAnimator;
+class DimensionsPanel;
+struct DyadRequest;
 class LengthsPanel;
 class LinkageView;
 class MechanismDocument;
@@ -37,13 +39,17 @@ public:
   LinkageView* canvas() const { return m_canvas; }
   PlotPanel* plots() const { return m_plots; }
   LengthsPanel* lengthsPanel() const { return m_lengths; }
+  DimensionsPanel* dimensionsPanel() const { return m_dimensions; }
   MotionPanel* motionPanel() const { return m_motion; }
   AnalysisPanel* analysisPanel() const { return m_analysis; }
   CrankAnimator* animator() const { return m_animator; }
   MessageBanner* banner() const { return m_banner; }
 
   /// Starts a new document on `design` (File ▸ New, Examples).
-  void newDocument(const kinematics::FourBarDesign& design);
+  void newDocument(const kinematics::Design& design);
+  /// Attaches a dyad to the current linkage, undoably (Edit ▸ Attach dyad… without the
+  /// dialog). Returns the reason if the core or the document refuses; then nothing changes.
+  std::optional<QString> attachDyad(const DyadRequest& request);
   /// Opens a document; on failure shows why in the banner and changes nothing.
   bool openFile(const QString& path);
   /// Saves to `path` (atomically) and makes it the document's file.
@@ -63,7 +69,10 @@ protected:
 
 private:
   void buildMenus();
+  void buildNewMenu(QMenu* menu);
   void buildExamplesMenu(QMenu* menu);
+  void openAttachDyadDialog();
+  void showPanelsFor();
   void refreshRecentFiles();
   void refreshTitle();
   bool save();
@@ -81,6 +90,7 @@ private:
   LinkageView* m_canvas;
   PlotPanel* m_plots;
   LengthsPanel* m_lengths;
+  DimensionsPanel* m_dimensions;
   MotionPanel* m_motion;
   AnalysisPanel* m_analysis;
   QWidget* m_sidePanel = nullptr;

@@ -1,7 +1,11 @@
 #include "app/cli/arguments.h"
 
+#include "kinematics/model/validate.h"
+
 #include <charconv>
+#include <cmath>
 #include <set>
+#include <tuple>
 
 namespace linkwright::cli {
 namespace {
@@ -52,11 +56,18 @@ const std::set<std::string>& optionsOf(Command command) {
   static const std::set<std::string> extremes{"--fourbar", "--example", "--unit", "--rpm", "--omega", "--alpha", "--from",
                                               "--to", "--step", "--samples", "--branch", "--coupler-point"};
   static const std::set<std::string> classify{"--fourbar", "--example", "--unit", "--branch", "--json"};
+  static const std::set<std::string> arm{"--example", "--arm", "--from-point", "--to-point", "--speed", "--samples",
+                                         "--step-time", "--elbow", "--unit", "-o", "--output", "--format"};
+  static const std::set<std::string> centres{"--fourbar", "--example", "--unit", "--branch", "--at"};
+  static const std::set<std::string> accuracy{"--example", "-o", "--output", "--svg"};
   static const std::set<std::string> none{};
   switch (command) {
   case Command::Analyze: return analyze;
   case Command::Classify: return classify;
   case Command::Extremes: return extremes;
+  case Command::Arm: return arm;
+  case Command::Centres: return centres;
+  case Command::Accuracy: return accuracy;
   default: return none;
   }
 }
@@ -67,11 +78,61 @@ const char* commandName(Command command) {
   case Command::Classify: return "classify";
   case Command::Extremes: return "extremes";
   case Command::Examples: return "examples";
+  case Command::Arm: return "arm";
+  case Command::Centres: return "centres";
+  case Command::Accuracy: return "accuracy";
   default: return "linkwright-cli";
   }
 }
 
 bool takesValue(const std::string& option) { return option != "--json"; }
+
+// A number that must be positive and finite (a speed, a time step).
+std::optional<Error> positive(std::optional<double>& target, const std::string& option, const std::string& value) {
+  const auto parsed = parseNumber(value);
+  if (!parsed) return usage(option, option + ": '" + value + "' is not a number");
+  if (!(std::isfinite(*parsed) && *parsed > 0.0))
+    return usage(option, option + " must be positive and finite (got " + kinematics::formatNumber(*parsed) + ")");
+  target = *parsed;
+  return std::nullopt;
+}
+
+// X,Y with both finite.
+std::optional<Error> point(std::optional<Eigen::Vector2d>& target, const std::string& option, const std::string& value) {
+  auto list = parseList(option, value, 2, "X,Y");
+  if (!list) return list.error();
+  for (const auto& [v, axis] : {std::pair{(*list)[0], "x"}, {(*list)[1], "y"}})
+    if (auto e = kinematics::checkFinite(v, axis)) return usage(option, option + ": " + e->message);
+  target = Eigen::Vector2d((*list)[0], (*list)[1]);
+  return std::nullopt;
+}
+
+// The options only arm and centres take.
+std::optional<Error> applyArmOrCentres(Invocation& inv, const std::string& option, const std::string& value) {
+  if (option == "--arm") {
+    auto list = parseList(option, value, 2, "UPPER,FOREARM");
+    if (!list) return list.error();
+    for (const auto& [v, name] : {std::pair{(*list)[0], "upper"}, {(*list)[1], "forearm"}})
+      if (auto e = kinematics::checkPositive(v, name)) return usage(option, option + ": " + e->message);
+    inv.arm = std::pair{(*list)[0], (*list)[1]};
+  } else if (option == "--from-point") return point(inv.fromPoint, option, value);
+  else if (option == "--to-point") return point(inv.toPoint, option, value);
+  else if (option == "--speed") return positive(inv.speed, option, value);
+  else if (option == "--step-time") return positive(inv.stepTime, option, value);
+  else if (option == "--elbow") {
+    if (value == "up") inv.elbow = kinematics::Branch::Open;
+    else if (value == "down") inv.elbow = kinematics::Branch::Crossed;
+    else return usage(option, option + " must be 'up' or 'down' (got '" + value + "')");
+  } else if (option == "--at") {
+    for (const std::string& part : splitCommas(value)) {
+      const auto angle = parseNumber(part);
+      if (!angle) return usage(option, option + ": '" + part + "' is not a number (expected DEG or DEG,DEG,...)");
+      if (!std::isfinite(*angle)) return usage(option, option + " must be finite (got " + part + ")");
+      inv.atDeg.push_back(*angle);
+    }
+  }
+  return std::nullopt;
+}
 
 // Applies one option and its value to the invocation.
 std::optional<Error> apply(Invocation& inv, const std::string& option, const std::string& value) {
@@ -123,16 +184,43 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
     inv.tableFormat = value == "table";
   } else if (option == "--json") {
     inv.json = true;
+  } else if (option == "--svg") {
+    if (value.empty()) return usage(option, option + " needs a file name");
+    inv.svgFile = value;
+  } else {
+    return applyArmOrCentres(inv, option, value);
   }
   return std::nullopt;
 }
 
+std::optional<Error> checkArm(const Invocation& inv) {
+  if (inv.stepTime && inv.samples) return usage("--samples", "--step-time and --samples cannot be used together");
+  if (inv.samples && *inv.samples < 2)
+    return usage("--samples", "--samples must be at least 2 for arm (got " + std::to_string(*inv.samples) + ")");
+  if (inv.example) return std::nullopt;
+  const std::tuple<bool, std::string, std::string> required[] = {{inv.arm.has_value(), "--arm", "UPPER,FOREARM"},
+                                                                 {inv.fromPoint.has_value(), "--from-point", "X,Y"},
+                                                                 {inv.toPoint.has_value(), "--to-point", "X,Y"},
+                                                                 {inv.speed.has_value(), "--speed", "V"}};
+  for (const auto& [given, option, shape] : required)
+    if (!given)
+      return usage(option, "arm needs " + option + " " + shape + ", or --example seed-arm (see linkwright-cli --help arm)");
+  return std::nullopt;
+}
+
 std::optional<Error> checkCombination(const Invocation& inv) {
-  const bool needsMechanism =
-      inv.command == Command::Analyze || inv.command == Command::Classify || inv.command == Command::Extremes;
-  if (needsMechanism && !inv.fourBar && !inv.example)
-    return usage("--fourbar", std::string(commandName(inv.command)) + " needs --fourbar FRAME,CRANK,COUPLER,ROCKER or --example NAME");
+  if (inv.command == Command::Arm) return checkArm(inv);
+  if (inv.command == Command::Centres && inv.atDeg.empty())
+    return usage("--at", "centres needs --at DEG (the crank angle, degrees; repeatable or DEG,DEG,...)");
+  const bool needsMechanism = inv.command == Command::Analyze || inv.command == Command::Classify ||
+                              inv.command == Command::Extremes || inv.command == Command::Centres;
+  if (needsMechanism && !inv.fourBar && !inv.example && !inv.documentPath)
+    return usage("--fourbar", std::string(commandName(inv.command)) +
+                                  " needs FILE.json, --fourbar FRAME,CRANK,COUPLER,ROCKER or --example NAME");
   if (inv.fourBar && inv.example) return usage("--example", "--fourbar and --example cannot be used together");
+  if (inv.documentPath && (inv.fourBar || inv.example))
+    return usage(inv.fourBar ? "--fourbar" : "--example",
+                 std::string(inv.fourBar ? "--fourbar" : "--example") + " cannot be used with a document (" + *inv.documentPath + ")");
   if (inv.rpm && inv.omega) return usage("--omega", "--rpm and --omega cannot be used together");
   if (inv.stepDeg && inv.samples) return usage("--samples", "--step and --samples cannot be used together");
   return std::nullopt;
@@ -142,7 +230,7 @@ std::optional<Error> checkCombination(const Invocation& inv) {
 
 kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& args) {
   Invocation inv;
-  if (args.empty()) return usage("COMMAND", "missing command (analyze, classify or examples; see --help)");
+  if (args.empty()) return usage("COMMAND", "missing command (analyze, extremes, classify, arm, centres, accuracy or examples; see --help)");
   const std::string& first = args[0];
   if (first == "--help" || first == "-h" || first == "help") {
     inv.command = Command::Help;
@@ -157,8 +245,12 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   else if (first == "classify") inv.command = Command::Classify;
   else if (first == "extremes") inv.command = Command::Extremes;
   else if (first == "examples") inv.command = Command::Examples;
+  else if (first == "arm") inv.command = Command::Arm;
+  else if (first == "centres") inv.command = Command::Centres;
+  else if (first == "accuracy") inv.command = Command::Accuracy;
   else if (!first.empty() && first[0] == '-') return usage(first, "unknown option '" + first + "' (see linkwright-cli --help)");
-  else return usage(first, "unknown command '" + first + "' (commands: analyze, extremes, classify, examples; see --help)");
+  else return usage(first, "unknown command '" + first + "' (commands: analyze, extremes, classify, arm, centres, accuracy, examples; see --help)");
+  if (inv.command == Command::Arm) inv.lengthUnit = "m";  // the arm's seed (004) works in metres
 
   std::set<std::string> seen;
   for (std::size_t i = 1; i < args.size(); ++i) {
@@ -173,13 +265,21 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
       inlineValue = option.substr(eq + 1);
       option.resize(eq);
     }
+    // A bare argument names a document, for the commands that analyse a linkage.
+    const bool takesDocument = inv.command == Command::Analyze || inv.command == Command::Extremes ||
+                               inv.command == Command::Classify || inv.command == Command::Centres;
+    if (takesDocument && !option.empty() && option[0] != '-' && !inlineValue) {
+      if (inv.documentPath) return usage(option, "only one document can be analysed at a time (got '" + *inv.documentPath + "' and '" + option + "')");
+      inv.documentPath = option;
+      continue;
+    }
     if (!optionsOf(inv.command).count(option)) {
       const std::string what = option.empty() || option[0] != '-' ? "unexpected argument '" : "unknown option '";
       return usage(option, what + option + "' for '" + commandName(inv.command) + "' (see linkwright-cli --help " +
                                commandName(inv.command) + ")");
     }
     const std::string canonical = option == "-o" ? "--output" : option;
-    if (!seen.insert(canonical).second) return usage(option, option + " is given more than once");
+    if (canonical != "--at" && !seen.insert(canonical).second) return usage(option, option + " is given more than once");
     std::string value;
     if (takesValue(option)) {
       if (inlineValue) value = *inlineValue;

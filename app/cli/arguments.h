@@ -7,21 +7,25 @@
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/result.h"
 
+#include <Eigen/Core>
+
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace linkwright::cli {
 
-enum class Command { Help, Version, Examples, Analyze, Classify, Extremes };
+enum class Command { Help, Version, Examples, Analyze, Classify, Extremes, Arm, Centres, Accuracy };
 
 /// Everything the user asked for. Angles in degrees and speeds as typed: converted to SI by
 /// the commands, at the edge.
 struct Invocation {
   Command command = Command::Help;
-  std::string helpTopic;  ///< "analyze" or "classify" for command help, else empty
+  std::string helpTopic;  ///< a command's name for its help, else empty
   std::optional<kinematics::FourBarLengths> fourBar;
   std::optional<std::string> example;
+  std::optional<std::string> documentPath;  ///< a Linkwright document (FILE.json) to analyse
   std::string lengthUnit = "mm";
   std::optional<double> rpm;
   std::optional<double> omega;  ///< rad/s
@@ -34,7 +38,17 @@ struct Invocation {
   std::optional<kinematics::CouplerPointSpec> couplerPoint;
   std::optional<std::string> outputFile;
   bool json = false;
-  bool tableFormat = false;  ///< analyze --format table: aligned text instead of CSV
+  bool tableFormat = false;  ///< --format table: aligned text instead of CSV (analyze, arm)
+  // arm: a two-link arm whose tip follows a straight line (lengths in the length unit).
+  std::optional<std::pair<double, double>> arm;  ///< upper, forearm; positive, finite
+  std::optional<Eigen::Vector2d> fromPoint;      ///< finite
+  std::optional<Eigen::Vector2d> toPoint;        ///< finite
+  std::optional<double> speed;                   ///< length unit / s; positive, finite
+  std::optional<double> stepTime;                ///< s; positive, finite
+  std::optional<kinematics::Branch> elbow;       ///< up = Open, down = Crossed
+  // centres: crank angles in degrees, finite, in the order given (--at is repeatable).
+  std::vector<double> atDeg;
+  std::optional<std::string> svgFile;  ///< accuracy --svg: where to draw the error plot
 };
 
 /// Parses the arguments after the program name.

@@ -1,3 +1,4 @@
+#include "app/cli/classify_linkage.h"
 #include "app/cli/commands.h"
 
 #include "kinematics/analysis/assembly_range.h"
@@ -128,24 +129,30 @@ ExitCode classifyShaper(const k::MechanismExample& e, bool json, std::ostream& o
   const auto q = k::shaperQuickReturn(*e.shaper);
   const k::MobilityReport m = k::mobility(e.mechanism);
   if (json) {
-    out << "{\n  \"mechanism\": \"shaper\",\n  \"mobility\": " << m.mobility;
+    out << "{\n  \"mechanism\": \"" << e.kind << "\",\n  \"mobility\": " << m.mobility;
     if (q)
       out << ",\n  \"limit_crank_angles_deg\": [" << jsonDeg(q->firstLimitCrankAngle) << ", " << jsonDeg(q->secondLimitCrankAngle)
           << "],\n  \"time_ratio\": " << formatDouble(q->timeRatio) << ",\n  \"slow_stroke_crank_arc_deg\": "
           << jsonDeg(q->slowStrokeCrankArc) << ",\n  \"quick_stroke_crank_arc_deg\": " << jsonDeg(q->quickStrokeCrankArc)
-          << ",\n  \"rocker_swing_deg\": " << jsonDeg(q->rockerSwing) << ",\n  \"stroke\": " << formatDouble(q->stroke);
+          << ",\n  \"rocker_swing_deg\": " << jsonDeg(q->rockerSwing) << ",\n  \"whitworth\": " << (q->whitworth ? "true" : "false")
+          << ",\n  \"stroke\": " << formatDouble(q->stroke);
     out << ",\n  \"length_unit\": \"" << e.mechanism.lengthUnit << "\"\n}\n";
     return ExitCode::Success;
   }
-  out << "shaper               " << e.description << "\n";
+  out << e.kind << std::string(e.kind.size() < 21 ? 21 - e.kind.size() : 1, ' ') << e.description << "\n";
   out << "mobility (Gruebler)  M = 3(" << m.links << " - 1) - 2*" << m.fullJoints << " - " << m.halfJoints << " = " << m.mobility << "\n";
   if (!q) {
-    out << "quick return         none: the slotted link turns fully (Whitworth form)\n";
+    out << "quick return         none: the ram has no two limit positions\n";
     return ExitCode::Success;
   }
-  out << "rocker limits        crank " << deg(q->firstLimitCrankAngle) << " and " << deg(q->secondLimitCrankAngle)
-      << " (crank at right angles to the slot)\n";
-  out << "rocker swing         " << deg(q->rockerSwing) << "\n";
+  if (q->whitworth) {
+    out << "ram limits           crank " << deg(q->firstLimitCrankAngle) << " and " << deg(q->secondLimitCrankAngle)
+        << " (link to the ram along the slotted link; Whitworth form, the slotted link turns fully)\n";
+  } else {
+    out << "rocker limits        crank " << deg(q->firstLimitCrankAngle) << " and " << deg(q->secondLimitCrankAngle)
+        << " (crank at right angles to the slot)\n";
+    out << "rocker swing         " << deg(q->rockerSwing) << "\n";
+  }
   out << "time ratio           " << formatFixed(q->timeRatio, 4) << " (slow stroke " << deg(q->slowStrokeCrankArc)
       << ", quick stroke " << deg(q->quickStrokeCrankArc) << " of crank rotation)\n";
   out << "ram stroke           " << k::io::formatShort(q->stroke, 8) << " " << e.mechanism.lengthUnit << "\n";
@@ -156,8 +163,21 @@ ExitCode classifyShaper(const k::MechanismExample& e, bool json, std::ostream& o
 
 ExitCode runClassify(const Invocation& inv, std::ostream& out, std::ostream& err) {
   if (inv.example)
-    if (const auto e = k::findMechanismExample(*inv.example); e && e->shaper) return classifyShaper(*e, inv.json, out);
-  const auto fb = resolveFourBar(inv);
+    if (const auto e = k::findMechanismExample(*inv.example)) {
+      if (e->shaper) return classifyShaper(*e, inv.json, out);
+      return classifyLinkage(e->kind, e->mechanism, inv.json, out, err);
+    }
+  std::optional<ResolvedFourBar> fromDocument;
+  if (inv.documentPath) {
+    const auto resolved = resolveMechanism(inv);
+    if (!resolved) {
+      err << "linkwright-cli: " << resolved.error().message << "\n";
+      return ExitCode::BadInput;
+    }
+    if (!resolved->fourBar) return classifyLinkage("linkage", resolved->mechanism, inv.json, out, err);
+    fromDocument = resolved->fourBar;
+  }
+  const auto fb = fromDocument ? k::Result<ResolvedFourBar>(*fromDocument) : resolveFourBar(inv);
   if (!fb) {
     err << "linkwright-cli: " << fb.error().message << "\n";
     return ExitCode::BadInput;

@@ -17,18 +17,26 @@ Commands:
   analyze    position, velocity and acceleration table of a linkage as CSV
   extremes   minimum and maximum of every column, refined between the samples
   classify   Grashof class, mobility, transmission angle, limit positions, time ratio
-             (four-bars)
+             (four-bars), quick return (shapers), mobility and assembly (any linkage)
+  arm        a two-link arm's joint angles, rates and accelerations as its tip follows
+             a straight line (CSV)
+  centres    instant centres, velocity ratio and mechanical advantage at crank angles
+             (four-bars, slider-cranks)
+  accuracy   how far peaks read off N samples per turn are from the exact ones, and
+             what each choice costs (CSV; optional SVG plot)
   examples   list the built-in examples
   --help [COMMAND], --version
 
 )";
 
 constexpr const char* kMechanismOptions = R"(Mechanism (one of):
+  FILE.json           a Linkwright document (saved by the GUI; any linkage; see
+                      docs/document_format.md); its speed and grid are the defaults
   --fourbar FRAME,CRANK,COUPLER,ROCKER
                       link lengths, positive, in the length unit (default mm).
                       Crank pivot O2 at the origin, rocker pivot O4 at (FRAME, 0).
-  --example NAME      a built-in example (see 'linkwright-cli examples'); analyze and
-                      extremes also take the slider-crank and shaper examples
+  --example NAME      a built-in example (see 'linkwright-cli examples'): four-bars,
+                      slider-crank, shaper, Whitworth, six-bars
   --unit NAME         length unit label used in the output (default mm; letters only).
                       Lengths are taken and reported in this unit.
   --branch open|crossed
@@ -61,15 +69,67 @@ constexpr const char* kClassifyOptions = R"(Classify options:
   --json              machine-readable output
 )";
 
+constexpr const char* kCentresOptions = R"(Centres options (with the mechanism options; four-bars and the slider-crank example):
+  --at DEG[,DEG...]   crank angle(s), degrees CCW from the frame line; repeatable
+Output: the six instant centres Iij of bodies 1 frame, 2 crank, 3 coupler (rod), 4 rocker
+  (slider), as (x, y) in the length unit or "at infinity" with a direction; the velocity
+  ratio ω4/ω2 (slider: v/ω2, length unit per rad) and the ideal mechanical advantage
+  T4/T2 = ω2/ω4 (slider: F/T2 = ω2/v, per length unit), signed, infinite at a toggle.
+)";
+
+constexpr const char* kArmOptions = R"(Arm options (lengths in the length unit, default m; the shoulder is at the origin):
+  --example seed-arm  seed 004's arm and path: --arm 0.3,0.2 --from-point 0.3,0
+                      --to-point 0,0.3 --speed 2 --elbow down, 101 samples; options
+                      given with it replace the example's values
+  --arm UPPER,FOREARM shoulder-to-elbow and elbow-to-tip lengths, positive
+  --from-point X,Y    where the tip starts
+  --to-point X,Y      where it stops: a straight line at constant speed
+  --speed V           tip speed, length unit per second, positive
+  --samples N | --step-time S
+                      N times evenly spaced from start to end inclusive (default 101,
+                      at least 2), or every S seconds from 0 (the end is included when
+                      the step lands on it)
+  --elbow up|down     up (default): the elbow on the counter-clockwise side of the line
+                      shoulder→tip (above it while the tip is to the right), so the
+                      forearm angle minus the upper angle is in (−180°, 0°); down: the
+                      mirror image. Run once with each to get both solutions.
+  --unit NAME         length unit label (default m; letters only)
+  --format csv|table  CSV (default) or an aligned table, 4 decimals
+  -o, --output FILE   write the output to FILE (atomically) instead of standard output
+Output: time_s, tip_x_<unit>, tip_y_<unit>, upper_angle_deg, forearm_angle_deg (absolute,
+  CCW from +x, continuous along the path), upper_omega_rad_s, forearm_omega_rad_s,
+  upper_alpha_rad_s2, forearm_alpha_rad_s2, elbow_x_<unit>, elbow_y_<unit>. Where the tip
+  is out of reach the joint cells are empty (exit code 3, with the exact time ranges);
+  where the arm is stretched out or folded the ω and α cells are empty (a note says so).
+)";
+
+constexpr const char* kAccuracyOptions = R"(Accuracy options (the speed-accuracy trade, measured; see docs/accuracy.md):
+  --example NAME      measure one example (default: miranda-fourbar, ls3-engine, shaper,
+                      watt-ii); the crank must turn fully
+  --svg FILE          also draw worst peak error against samples per revolution
+  -o, --output FILE   write the CSV to FILE (atomically)
+  Rows: method samples (peaks read off N samples, exact ω, α), frames (ω, α by central
+  differences between samples, as a frame-based motion study), refined (our extremes,
+  refined between N samples), against peaks refined from 7200 samples (reference
+  "refined"); then closed-form and newton-TOL (every RRR joint solved by Newton at
+  tolerance TOL) at 360 samples, the Newton rows against the closed form at the same
+  samples. time_us is the median of 5 runs on this machine. Rates' errors are relative,
+  angles' in degrees.
+)";
+
 constexpr const char* kExitCodes = R"(Exit codes:
   0  success
   1  the output file could not be written
   2  bad usage or input: unknown option, malformed or invalid value (the message names it)
   3  the linkage cannot be assembled over the requested range (rows that assemble are
-     still written; the message gives the ranges that do not and the range that does)
+     still written; the message gives the ranges that do not and the range that does);
+     for arm: the tip path leaves the workspace (the message gives the exact times);
+     for centres: a requested crank angle cannot be assembled
 
-Example:
+Examples:
   linkwright-cli analyze --fourbar 60,25,70,45 --rpm 10 --step 30
+  linkwright-cli arm --example seed-arm --format table
+  linkwright-cli centres --example thesis-crank-rocker --at 0,90
 )";
 
 } // namespace
@@ -77,9 +137,12 @@ Example:
 std::string helpText(const std::string& topic) {
   std::string text = kUsage;
   const bool sweeps = topic.empty() || topic == "analyze" || topic == "extremes";
-  if (sweeps || topic == "classify") text += kMechanismOptions;
+  if (sweeps || topic == "classify" || topic == "centres") text += kMechanismOptions;
   if (sweeps) text += std::string("\n") + kAnalyzeOptions;
   if (topic.empty() || topic == "classify") text += std::string("\n") + kClassifyOptions;
+  if (topic.empty() || topic == "centres") text += std::string("\n") + kCentresOptions;
+  if (topic.empty() || topic == "arm") text += std::string(topic.empty() ? "\n" : "") + kArmOptions;
+  if (topic.empty() || topic == "accuracy") text += std::string("\n") + kAccuracyOptions;
   return text + "\n" + kExitCodes;
 }
 
@@ -93,8 +156,8 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   switch (inv.command) {
   case Command::Help:
     if (!inv.helpTopic.empty() && inv.helpTopic != "analyze" && inv.helpTopic != "classify" && inv.helpTopic != "extremes" &&
-        inv.helpTopic != "examples" && inv.helpTopic != "linkwright-cli") {
-      err << "linkwright-cli: no help for '" << inv.helpTopic << "' (commands: analyze, classify, examples)\n";
+        inv.helpTopic != "arm" && inv.helpTopic != "centres" && inv.helpTopic != "accuracy" && inv.helpTopic != "examples" && inv.helpTopic != "linkwright-cli") {
+      err << "linkwright-cli: no help for '" << inv.helpTopic << "' (commands: analyze, extremes, classify, arm, centres, examples)\n";
       return toInt(ExitCode::BadInput);
     }
     out << helpText(inv.helpTopic == "linkwright-cli" || inv.helpTopic == "examples" ? "" : inv.helpTopic);
@@ -106,6 +169,9 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   case Command::Analyze: return toInt(runAnalyze(inv, out, err));
   case Command::Classify: return toInt(runClassify(inv, out, err));
   case Command::Extremes: return toInt(runExtremes(inv, out, err));
+  case Command::Arm: return toInt(runArm(inv, out, err));
+  case Command::Centres: return toInt(runCentres(inv, out, err));
+  case Command::Accuracy: return toInt(runAccuracy(inv, out, err));
   }
   return toInt(ExitCode::BadInput);
 }

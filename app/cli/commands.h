@@ -1,7 +1,8 @@
 #pragma once
 // The commands behind linkwright-cli: analyze (CSV table), extremes (refined extreme values),
-// classify (Grashof class, transmission angle, limit positions, assemblable range; four-bars)
-// and examples (the built-ins).
+// classify (Grashof class, transmission angle, limit positions, assemblable range; four-bars),
+// arm (a two-link arm's joints along a straight tip path), centres (instant centres and
+// mechanical advantage at given crank angles) and examples (the built-ins).
 
 #include "app/cli/arguments.h"
 #include "app/cli/exit_codes.h"
@@ -17,6 +18,9 @@ ExitCode runAnalyze(const Invocation& invocation, std::ostream& out, std::ostrea
 ExitCode runClassify(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runExamples(std::ostream& out);
 ExitCode runExtremes(const Invocation& invocation, std::ostream& out, std::ostream& err);
+ExitCode runArm(const Invocation& invocation, std::ostream& out, std::ostream& err);
+ExitCode runCentres(const Invocation& invocation, std::ostream& out, std::ostream& err);
+ExitCode runAccuracy(const Invocation& invocation, std::ostream& out, std::ostream& err);
 
 /// The four-bar an invocation describes: its --fourbar lengths or --example, with --unit,
 /// --branch and --coupler-point applied.

@@ -1,8 +1,37 @@
 #include "app/cli/commands.h"
 
+#include "kinematics/io/document_json.h"
+
+#include <fstream>
+#include <sstream>
+
 namespace linkwright::cli {
 
 namespace k = kinematics;
+
+namespace {
+
+// A design's grid as defaults: its samples become the step that reproduces them.
+GridDefaults gridOf(const k::Design& d) {
+  return std::visit(
+      [](const auto& x) {
+        return GridDefaults{x.omega, x.alpha, x.fromDeg, x.toDeg, (x.toDeg - x.fromDeg) / static_cast<double>(x.samples - 1)};
+      },
+      d);
+}
+
+// The document named on the command line; errors name the file.
+k::Result<k::Design> readDocumentFile(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) return k::Error{k::ErrorCode::InvalidValue, path, path + ": cannot be opened for reading"};
+  std::stringstream text;
+  text << file.rdbuf();
+  auto design = k::io::readDocument(text.str());
+  if (!design) return k::Error{design.error().code, path, path + ": " + design.error().message};
+  return design;
+}
+
+} // namespace
 
 kinematics::Result<ResolvedFourBar> resolveFourBar(const Invocation& inv) {
   ResolvedFourBar r;
@@ -32,6 +61,25 @@ kinematics::Result<ResolvedFourBar> resolveFourBar(const Invocation& inv) {
 
 kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& inv) {
   ResolvedMechanism r;
+  if (inv.documentPath) {
+    const auto design = readDocumentFile(*inv.documentPath);
+    if (!design) return design.error();
+    r.defaults = gridOf(*design);
+    if (const auto* f = std::get_if<k::FourBarDesign>(&*design)) {
+      r.fourBar = ResolvedFourBar{f->lengths, f->lengthUnit, inv.branch.value_or(f->branch), std::nullopt};
+      const auto couplerPoint = inv.couplerPoint ? inv.couplerPoint : f->couplerPoint;
+      auto m = k::makeFourBar(f->lengths, r.fourBar->branch, f->lengthUnit, couplerPoint);
+      if (!m) return m.error();
+      r.mechanism = std::move(*m);
+      return r;
+    }
+    if (inv.couplerPoint || inv.branch)
+      return k::Error{k::ErrorCode::InvalidValue, inv.couplerPoint ? "--coupler-point" : "--branch",
+                      std::string(inv.couplerPoint ? "--coupler-point" : "--branch") + " applies to four-bars, not to this " +
+                          std::get<k::MechanismDesign>(*design).kind};
+    r.mechanism = std::get<k::MechanismDesign>(*design).mechanism;
+    return r;
+  }
   if (inv.example) {
     if (auto other = k::findMechanismExample(*inv.example)) {
       if (inv.couplerPoint)

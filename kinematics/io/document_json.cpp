@@ -1,6 +1,9 @@
 #include "kinematics/io/document_json.h"
 
 #include "kinematics/io/json.h"
+#include "kinematics/io/json_reader.h"
+#include "kinematics/io/mechanism_json.h"
+#include "kinematics/model/mechanism_check.h"
 #include "kinematics/io/number_format.h"
 
 #include <cmath>
@@ -15,69 +18,23 @@ Error documentError(const std::string& path, const std::string& why) {
   return Error{ErrorCode::InvalidValue, path, path + " " + why};
 }
 
-// Typed access to members; each failure names the member's full path.
-class Reader {
-public:
-  std::optional<Error> error;
-
-  const JsonValue* object(const JsonValue& parent, const std::string& key, const std::string& path, bool required = true) {
-    const JsonValue* v = member(parent, key, path, required);
-    if (v != nullptr && v->type != Type::Object) return fail(path, "must be an object");
-    return v;
-  }
-
-  std::optional<double> number(const JsonValue& parent, const std::string& key, const std::string& path) {
-    const JsonValue* v = member(parent, key, path, true);
-    if (v == nullptr) return std::nullopt;
-    if (v->type != Type::Number) {
-      fail(path, "must be a number");
-      return std::nullopt;
-    }
-    return v->number;
-  }
-
-  std::optional<std::string> string(const JsonValue& parent, const std::string& key, const std::string& path) {
-    const JsonValue* v = member(parent, key, path, true);
-    if (v == nullptr) return std::nullopt;
-    if (v->type != Type::String) {
-      fail(path, "must be a string");
-      return std::nullopt;
-    }
-    return v->string;
-  }
-
-  std::nullptr_t fail(const std::string& path, const std::string& why) {
-    if (!error) error = documentError(path, why);
-    return nullptr;
-  }
-
-private:
-  const JsonValue* member(const JsonValue& parent, const std::string& key, const std::string& path, bool required) {
-    if (error) return nullptr;
-    const JsonValue* v = parent.find(key);
-    if (v == nullptr && required) return fail(path, "is missing");
-    return v;
-  }
-};
-
-std::optional<Error> checkHeader(const JsonValue& root, Reader& r) {
+// Returns the file's version (1 … kDocumentVersion), or the error.
+Result<int> checkHeader(const JsonValue& root, JsonReader& r) {
   const auto format = r.string(root, "format", "format");
-  if (r.error) return r.error;
+  if (r.error) return *r.error;
   if (*format != "linkwright") return documentError("format", "must be \"linkwright\" (got \"" + *format + "\"): not a Linkwright document");
   const auto version = r.number(root, "version", "version");
-  if (r.error) return r.error;
+  if (r.error) return *r.error;
   if (*version != std::floor(*version) || *version < 1)
     return documentError("version", "must be a whole number from 1 (got " + formatShort(*version) + ")");
   if (*version > kDocumentVersion)
     return Error{ErrorCode::InvalidValue, "version",
                  "this file is document version " + formatShort(*version) + ", written by a newer Linkwright; this one reads up to version " +
                      std::to_string(kDocumentVersion)};
-  return std::nullopt;
+  return static_cast<int>(*version);
 }
 
-void readMechanism(const JsonValue& mech, Reader& r, FourBarDesign& d) {
-  const auto type = r.string(mech, "type", "mechanism.type");
-  if (type && *type != "four-bar") r.fail("mechanism.type", "must be \"four-bar\" (got \"" + *type + "\")");
+void readFourBar(const JsonValue& mech, JsonReader& r, FourBarDesign& d) {
   if (const auto unit = r.string(mech, "length_unit", "mechanism.length_unit")) d.lengthUnit = *unit;
   if (const auto branch = r.string(mech, "branch", "mechanism.branch")) {
     if (*branch == "open") d.branch = Branch::Open;
@@ -110,34 +67,16 @@ std::string documentPath(const std::string& field) {
   return "analysis." + field;
 }
 
-} // namespace
-
-std::string writeDocument(const FourBarDesign& d) {
-  std::ostringstream s;
-  const auto& l = d.lengths;
-  s << "{\n  \"format\": \"linkwright\",\n  \"version\": " << kDocumentVersion << ",\n";
-  s << "  \"mechanism\": {\n    \"type\": \"four-bar\",\n    \"length_unit\": " << jsonQuote(d.lengthUnit)
-    << ",\n    \"branch\": \"" << (d.branch == Branch::Open ? "open" : "crossed") << "\",\n";
-  s << "    \"lengths\": {\"frame\": " << formatDouble(l.frame) << ", \"crank\": " << formatDouble(l.crank)
-    << ", \"coupler\": " << formatDouble(l.coupler) << ", \"rocker\": " << formatDouble(l.rocker) << "}";
-  if (d.couplerPoint)
-    s << ",\n    \"coupler_point\": {\"along\": " << formatDouble(d.couplerPoint->along)
-      << ", \"across\": " << formatDouble(d.couplerPoint->across) << "}";
+// The driver and analysis members, shared by both kinds of design.
+template <typename D>
+void writeMotion(std::ostream& s, const D& d) {
   s << "\n  },\n  \"driver\": {\"omega_rad_s\": " << formatDouble(d.omega) << ", \"alpha_rad_s2\": " << formatDouble(d.alpha)
     << "},\n  \"analysis\": {\"from_deg\": " << formatDouble(d.fromDeg) << ", \"to_deg\": " << formatDouble(d.toDeg)
     << ", \"samples\": " << d.samples << "}\n}\n";
-  return s.str();
 }
 
-Result<FourBarDesign> readDocument(std::string_view text) {
-  const Result<JsonValue> parsed = parseJson(text);
-  if (!parsed) return Error{ErrorCode::InvalidValue, "json", "not valid JSON: " + parsed.error().message};
-  const JsonValue& root = *parsed;
-  if (root.type != Type::Object) return documentError("document", "must be a JSON object");
-  Reader r;
-  if (auto e = checkHeader(root, r)) return *e;
-  FourBarDesign d;
-  if (const JsonValue* mech = r.object(root, "mechanism", "mechanism")) readMechanism(*mech, r, d);
+template <typename D>
+void readMotion(const JsonValue& root, JsonReader& r, D& d) {
   if (const JsonValue* drv = r.object(root, "driver", "driver")) {
     d.omega = r.number(*drv, "omega_rad_s", "driver.omega_rad_s").value_or(0.0);
     d.alpha = r.number(*drv, "alpha_rad_s2", "driver.alpha_rad_s2").value_or(0.0);
@@ -150,14 +89,85 @@ Result<FourBarDesign> readDocument(std::string_view text) {
       r.fail("analysis.samples", "must be a whole number from 2 to 10000000 (got " + formatShort(samples) + ")");
     else d.samples = static_cast<std::size_t>(samples);
   }
+}
+
+void writeFourBar(std::ostream& s, const FourBarDesign& d) {
+  const auto& l = d.lengths;
+  s << "    \"type\": \"four-bar\",\n    \"length_unit\": " << jsonQuote(d.lengthUnit)
+    << ",\n    \"branch\": \"" << (d.branch == Branch::Open ? "open" : "crossed") << "\",\n";
+  s << "    \"lengths\": {\"frame\": " << formatDouble(l.frame) << ", \"crank\": " << formatDouble(l.crank)
+    << ", \"coupler\": " << formatDouble(l.coupler) << ", \"rocker\": " << formatDouble(l.rocker) << "}";
+  if (d.couplerPoint)
+    s << ",\n    \"coupler_point\": {\"along\": " << formatDouble(d.couplerPoint->along)
+      << ", \"across\": " << formatDouble(d.couplerPoint->across) << "}";
+  writeMotion(s, d);
+}
+
+void writeLinkage(std::ostream& s, const MechanismDesign& d) {
+  s << "    \"type\": \"linkage\",\n    \"kind\": " << jsonQuote(d.kind) << ",\n    \"length_unit\": "
+    << jsonQuote(d.mechanism.lengthUnit) << ",\n";
+  writeMechanismMembers(s, d.mechanism);
+  writeMotion(s, d);
+}
+
+// A design check's error restated with the document path, so the message names what is in
+// the file (the check's message starts with its own field name).
+std::optional<Error> inDocument(std::optional<Error> e) {
+  if (!e) return std::nullopt;
+  const std::string path = documentPath(e->field);
+  const std::string reason = e->message.substr(std::min(e->message.size(), e->message.find(' ')));
+  return Error{e->code, path, path + reason};
+}
+
+std::optional<Error> checkRead(const FourBarDesign& d) { return inDocument(checkDesign(d)); }
+
+std::optional<Error> checkRead(const MechanismDesign& d) {
+  if (auto e = checkMechanism(d.mechanism)) return Error{e->code, "mechanism." + e->field, "mechanism." + e->message};
+  return inDocument(checkDriveAndGrid(d.omega, d.alpha, d.fromDeg, d.toDeg, d.samples));
+}
+
+} // namespace
+
+std::string writeDocument(const Design& design) {
+  std::ostringstream s;
+  s << "{\n  \"format\": \"linkwright\",\n  \"version\": " << kDocumentVersion << ",\n  \"mechanism\": {\n";
+  if (const auto* f = std::get_if<FourBarDesign>(&design)) writeFourBar(s, *f);
+  else writeLinkage(s, std::get<MechanismDesign>(design));
+  return s.str();
+}
+
+Result<Design> readDocument(std::string_view text) {
+  const Result<JsonValue> parsed = parseJson(text);
+  if (!parsed) return Error{ErrorCode::InvalidValue, "json", "not valid JSON: " + parsed.error().message};
+  const JsonValue& root = *parsed;
+  if (root.type != Type::Object) return documentError("document", "must be a JSON object");
+  JsonReader r;
+  const Result<int> version = checkHeader(root, r);
+  if (!version) return version.error();
+  const JsonValue* mech = r.object(root, "mechanism", "mechanism");
+  const std::string type = mech != nullptr ? r.string(*mech, "type", "mechanism.type").value_or("") : "";
   if (r.error) return *r.error;
-  if (auto e = checkDesign(d)) {
-    const std::string path = documentPath(e->field);
-    // checkDesign's message starts with its own field name: restate it with the document path.
-    const std::string reason = e->message.substr(std::min(e->message.size(), e->message.find(' ')));
-    return Error{e->code, path, path + reason};
+  // Version 1 knew four-bars only; version 2 added general linkages. Migration is reading.
+  if (type == "four-bar") {
+    FourBarDesign d;
+    readFourBar(*mech, r, d);
+    readMotion(root, r, d);
+    if (r.error) return *r.error;
+    if (auto e = checkRead(d)) return *e;
+    return Design{d};
   }
-  return d;
+  if (type != "linkage" || *version < 2)
+    return documentError("mechanism.type", std::string("must be \"four-bar\"") + (*version < 2 ? "" : " or \"linkage\"") +
+                                               " in a version " + std::to_string(*version) + " document (got \"" + type + "\")");
+  MechanismDesign d;
+  d.kind = r.string(*mech, "kind", "mechanism.kind").value_or("");
+  const std::string unit = r.string(*mech, "length_unit", "mechanism.length_unit").value_or("");
+  d.mechanism = readMechanismMembers(*mech, "mechanism", r);
+  d.mechanism.lengthUnit = unit;
+  readMotion(root, r, d);
+  if (r.error) return *r.error;
+  if (auto e = checkRead(d)) return *e;
+  return Design{d};
 }
 
 } // namespace linkwright::kinematics::io

@@ -1,8 +1,11 @@
 #pragma once
-// The Linkwright document: a FourBarDesign as JSON, with a format name and a version so that
-// a file from a newer Linkwright is refused with a clear message instead of misread.
+// The Linkwright document: a Design (a parametric four-bar, or any linkage) as JSON, with a
+// format name and a version so that a file from a newer Linkwright is refused with a clear
+// message instead of misread. Version 1 held four-bars only; version 2 adds
+// "type": "linkage" (see mechanism_json.h for its points, links and constraints). A version 1
+// file reads unchanged: its four-bar is the same in version 2.
 //
-//   { "format": "linkwright", "version": 1,
+//   { "format": "linkwright", "version": 2,
 //     "mechanism": { "type": "four-bar", "length_unit": "mm", "branch": "open",
 //                    "lengths": {"frame": 60, "crank": 25, "coupler": 70, "rocker": 45},
 //                    "coupler_point": {"along": 35, "across": 20} },        (optional)
@@ -13,7 +16,7 @@
 // for bit. Unknown members are ignored (a newer minor writer may add some); a missing or
 // mistyped member is an error naming its path ("mechanism.lengths.coupler").
 
-#include "kinematics/model/design.h"
+#include "kinematics/model/mechanism_design.h"
 #include "kinematics/model/result.h"
 
 #include <string>
@@ -22,14 +25,14 @@
 namespace linkwright::kinematics::io {
 
 /// The document version this build writes and the newest it reads.
-inline constexpr int kDocumentVersion = 1;
+inline constexpr int kDocumentVersion = 2;
 
 /// The document text for a design (UTF-8, LF line ends, trailing newline).
-std::string writeDocument(const FourBarDesign& design);
+std::string writeDocument(const Design& design);
 
 /// Parses and validates a document. Errors name the member and the reason, e.g.
 /// "mechanism.lengths.coupler must be positive and finite (got -70)" or "this file is
-/// document version 3, written by a newer Linkwright; this one reads up to version 1".
-Result<FourBarDesign> readDocument(std::string_view text);
+/// document version 3, written by a newer Linkwright; this one reads up to version 2".
+Result<Design> readDocument(std::string_view text);
 
 } // namespace linkwright::kinematics::io

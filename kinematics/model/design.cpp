@@ -16,17 +16,25 @@ std::optional<Error> checkDesign(const FourBarDesign& d) {
     if (auto e = checkFinite(d.couplerPoint->along, "couplerPoint.along")) return e;
     if (auto e = checkFinite(d.couplerPoint->across, "couplerPoint.across")) return e;
   }
-  if (auto e = checkFinite(d.omega, "omega")) return e;
-  if (auto e = checkFinite(d.alpha, "alpha")) return e;
-  if (auto e = checkFinite(d.fromDeg, "fromDeg")) return e;
-  if (auto e = checkFinite(d.toDeg, "toDeg")) return e;
-  if (d.toDeg <= d.fromDeg)
+  return checkDriveAndGrid(d.omega, d.alpha, d.fromDeg, d.toDeg, d.samples);
+}
+
+std::optional<Error> checkDriveAndGrid(double omega, double alpha, double fromDeg, double toDeg, std::size_t samples) {
+  if (auto e = checkFinite(omega, "omega")) return e;
+  if (auto e = checkFinite(alpha, "alpha")) return e;
+  if (auto e = checkFinite(fromDeg, "fromDeg")) return e;
+  if (auto e = checkFinite(toDeg, "toDeg")) return e;
+  if (toDeg <= fromDeg)
     return Error{ErrorCode::InvalidValue, "toDeg",
-                 "toDeg must be greater than fromDeg (got " + formatNumber(d.fromDeg) + " to " + formatNumber(d.toDeg) + ")"};
-  if (d.samples < 2 || d.samples > 10'000'000)
+                 "toDeg must be greater than fromDeg (got " + formatNumber(fromDeg) + " to " + formatNumber(toDeg) + ")"};
+  if (samples < 2 || samples > 10'000'000)
     return Error{ErrorCode::InvalidValue, "samples",
-                 "samples must be between 2 and 10000000 (got " + std::to_string(d.samples) + ")"};
+                 "samples must be between 2 and 10000000 (got " + std::to_string(samples) + ")"};
   return std::nullopt;
+}
+
+std::size_t samplesEveryHalfDegree(double fromDeg, double toDeg) {
+  return static_cast<std::size_t>(std::lround((toDeg - fromDeg) / 0.5)) + 1;
 }
 
 Result<Mechanism> buildMechanism(const FourBarDesign& d) {
@@ -48,7 +56,7 @@ FourBarDesign designFromExample(const FourBarExample& e) {
   d.couplerPoint = e.couplerPoint;
   d.fromDeg = e.fromDeg;
   d.toDeg = e.toDeg;
-  d.samples = static_cast<std::size_t>(std::lround((e.toDeg - e.fromDeg) / 0.5)) + 1;
+  d.samples = samplesEveryHalfDegree(e.fromDeg, e.toDeg);
   return d;
 }
 

@@ -30,6 +30,13 @@ struct FourBarDesign {
 /// Error naming the first invalid field ("lengths.coupler", "omega", "samples", ...).
 std::optional<Error> checkDesign(const FourBarDesign& design);
 
+/// The driver and grid rules every design shares: finite ω, α and angles, toDeg > fromDeg,
+/// 2 ≤ samples ≤ 10 000 000. Fields "omega", "alpha", "fromDeg", "toDeg", "samples".
+std::optional<Error> checkDriveAndGrid(double omega, double alpha, double fromDeg, double toDeg, std::size_t samples);
+
+/// Grid points every 0.5° from fromDeg to toDeg inclusive: how examples become designs.
+std::size_t samplesEveryHalfDegree(double fromDeg, double toDeg);
+
 /// The solver's mechanism for a valid design.
 Result<Mechanism> buildMechanism(const FourBarDesign& design);
 

@@ -1,4 +1,5 @@
 #include "kinematics/model/examples.h"
+#include "kinematics/model/sixbar_newton.h"
 
 #include "kinematics/model/units.h"
 
@@ -41,10 +42,23 @@ std::vector<MechanismExample> mechanismExamples() {
        "crank-shaper quick return: crank 100, slotted rocker 400, link 150 mm, rocker pivot 200 mm below and 40 mm "
        "beside the crank, ram guide 220 mm above it, crank at 3 Hz (Miranda et al.)",
        "shaper", makeShaper(kSeedShaper).value(), 2.0 * kPi * 3.0, 0.0, 360.0, 1.0, kSeedShaper},
+      {"whitworth",
+       "Whitworth quick return: the seed shaper's crank (100 mm) with the slotted link's pivot 40 mm below the crank "
+       "centre, inside the crank circle, so it turns fully; slotted link 120, link 150 mm, ram guide through the pivot",
+       "whitworth", makeShaper(kWhitworth).value(), 2.0 * kPi * 3.0, 0.0, 360.0, 1.0, kWhitworth},
       sixBarExample(kWattISixBar, "Watt I six-bar: the thesis crank-rocker with links 5 and 6 from its coupler to its rocker"),
       sixBarExample(kWattIISixBar, "Watt II six-bar: two four-bars in series, the thesis crank-rocker driving a second rocker about O6"),
       sixBarExample(kStephensonISixBar, "Stephenson I six-bar: links 5 and 6 from a point on the crank to the rocker"),
       sixBarExample(kStephensonIIISixBar, "Stephenson III six-bar: links 5 and 6 from the coupler to a third ground pivot O6"),
+      {"stephenson-ii",
+       "Stephenson II six-bar (ground binary): its two ternary links close one loop with links 5 and 6, a triad no "
+       "dyad order solves, so C..E are found by Newton-Raphson",
+       "stephenson-ii", makeStephensonIINewton(kStephensonIINewton).value(), 2.0 * kPi, 0.0, 360.0, 1.0, std::nullopt},
+      {"stephenson-iii-triad",
+       "Stephenson III six-bar driven from the link that is not in a four-bar loop: the floating ternary C, D, E "
+       "needs all three at once, so Newton-Raphson solves it",
+       "stephenson-iii-triad", makeStephensonIIINewton(kStephensonIIINewton).value(), 2.0 * kPi, 0.0, 360.0, 1.0,
+       std::nullopt},
   };
 }
 

@@ -32,7 +32,7 @@ struct FourBarExample {
 struct MechanismExample {
   std::string name;
   std::string description;
-  std::string kind;       ///< "slider-crank", "shaper", "watt-i", "watt-ii", "stephenson-i", "stephenson-iii"
+  std::string kind;       ///< "slider-crank", "shaper", "whitworth", "watt-i", "watt-ii", "stephenson-i", "stephenson-iii"
   Mechanism mechanism;
   double omega = 0.0;     ///< crank, rad/s
   double fromDeg = 0.0;
@@ -52,6 +52,10 @@ std::optional<MechanismExample> findMechanismExample(const std::string& name);
 inline const SliderCrankGeometry kLs3Engine{46.0, 6.098 * 25.4, 0.0, false};
 /// Seed 003's shaper: crank 100, slotted rocker 400, link 150 mm; O4 at (40, −200), guide at 220.
 inline const ShaperGeometry kSeedShaper{100.0, 400.0, 150.0, Eigen::Vector2d(40.0, -200.0), 220.0};
+
+/// A Whitworth quick return: the seed shaper's crank with the slotted link's pivot inside the
+/// crank circle at (0, −40) mm, slotted link 120, link 150 mm, ram guide through the pivot.
+inline const ShaperGeometry kWhitworth{100.0, 120.0, 150.0, Eigen::Vector2d(0.0, -40.0), -40.0};
 
 /// The six-bar examples: the thesis crank-rocker (60/25/70/45 mm) with one more dyad.
 inline const FourBarLengths kSixBarBase{60.0, 25.0, 70.0, 45.0};

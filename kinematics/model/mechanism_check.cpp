@@ -1,7 +1,9 @@
 #include "kinematics/model/mechanism_check.h"
 
+#include "kinematics/model/constraint_form.h"
 #include "kinematics/model/validate.h"
 
+#include <cmath>
 #include <set>
 
 namespace linkwright::kinematics {
@@ -75,6 +77,10 @@ std::optional<Error> checkPoint(const Mechanism& m, std::size_t i, int& cranks) 
     if (s->pivot == s->through) return structureError(pointField(i, "through"), "must differ from its pivot");
     return checkPositive(s->length, pointField(i, "length"));
   }
+  if (const auto* f = std::get_if<FreePoint>(&def)) {
+    if (auto e = checkFinite(f->guess.x(), pointField(i, "guess.x"))) return e;
+    return checkFinite(f->guess.y(), pointField(i, "guess.y"));
+  }
   const auto& a = std::get<AttachedPoint>(def);
   if (a.link.index >= m.links.size())
     return structureError(pointField(i, "link"), "refers to a link that does not exist");
@@ -95,7 +101,60 @@ bool isRigidPair(const Mechanism& m, PointId a, PointId b) {
     if (const auto* s = std::get_if<RprPoint>(&def)) return s->pivot == parent;
     return false;
   };
+  for (const DistanceConstraint& c : m.constraints)
+    if ((c.first == a && c.second == b) || (c.first == b && c.second == a)) return true;
   return definesFrom(a, b) || definesFrom(b, a);
+}
+
+// Each constraint joins two existing, distinct points, has a positive length, and closes on a
+// free point: its later point is free (an earlier free point would already be solved).
+std::optional<Error> checkConstraint(const Mechanism& m, std::size_t k) {
+  const DistanceConstraint& c = m.constraints[k];
+  const std::string field = "constraints[" + std::to_string(k) + "]";
+  if (c.first.index >= m.points.size() || c.second.index >= m.points.size())
+    return structureError(field, "refers to a point that does not exist");
+  if (c.first == c.second) return structureError(field, "joins point " + m.points[c.first.index].name + " to itself");
+  if (!(std::isfinite(c.length) && c.length > 0.0))
+    return Error{ErrorCode::InvalidValue, field + ".length",
+                 field + ".length must be positive and finite (got " + formatNumber(c.length) + ")"};
+  const PointId later = constraintLaterPoint(c);
+  if (!isFreePoint(m, later))
+    return structureError(field, "joins " + m.points[c.first.index].name + " and " + m.points[c.second.index].name +
+                                     ", but the later of them, " + m.points[later.index].name +
+                                     ", is not a free point: a distance constraint must close on a free point");
+  return std::nullopt;
+}
+
+// A run of free points is solved as one group: 2 unknowns per point, so exactly 2 constraints
+// per point, and each point held by at least two of them (one alone would let it swing).
+std::optional<Error> checkFreeGroup(const Mechanism& m, std::size_t first, std::size_t last) {
+  std::string names;
+  for (std::size_t i = first; i < last; ++i) names += (i == first ? "" : ", ") + m.points[i].name;
+  const std::string which = "free points " + names + " (points[" + std::to_string(first) + ".." +
+                            std::to_string(last - 1) + "])";
+  const std::size_t points = last - first;
+  if (points > kMaxFreeGroupPoints)
+    return structureError("points[" + std::to_string(first) + "]",
+                          "starts " + which + ": a group of consecutive free points may hold at most " +
+                              std::to_string(kMaxFreeGroupPoints) + " (got " + std::to_string(points) + ")");
+  std::size_t count = 0;
+  std::vector<int> holds(points, 0);
+  for (const DistanceConstraint& c : m.constraints) {
+    const std::size_t later = constraintLaterPoint(c).index;
+    if (later < first || later >= last) continue;
+    ++count;
+    for (const PointId p : {c.first, c.second})
+      if (p.index >= first) ++holds[p.index - first];
+  }
+  if (count != 2 * points)
+    return structureError("constraints", "must hold " + which + " with exactly " + std::to_string(2 * points) +
+                                             " distance constraints, two per point (got " + std::to_string(count) + ")");
+  for (std::size_t i = 0; i < points; ++i)
+    if (holds[i] < 2)
+      return structureError("points[" + std::to_string(first + i) + "]",
+                            "(" + m.points[first + i].name + ") is held by " + std::to_string(holds[i]) +
+                                " distance constraint(s) of its group; a free point needs at least two");
+  return std::nullopt;
 }
 
 } // namespace
@@ -113,6 +172,14 @@ std::optional<Error> checkMechanism(const Mechanism& m) {
   if (cranks != 1)
     return structureError("points", "must contain exactly one crank (got " +
                                         std::to_string(cranks) + ")");
+  for (std::size_t k = 0; k < m.constraints.size(); ++k)
+    if (auto e = checkConstraint(m, k)) return e;
+  for (std::size_t i = 0; i < m.points.size(); ++i) {
+    if (!isFreePoint(m, PointId{i})) continue;
+    const std::size_t last = freeGroupEnd(m, i);
+    if (auto e = checkFreeGroup(m, i, last)) return e;
+    i = last - 1;
+  }
   // Links last: their rigidity check reads point definitions, validated above.
   for (std::size_t k = 0; k < m.links.size(); ++k) {
     const Link& link = m.links[k];

@@ -1,6 +1,7 @@
 #pragma once
-// The request (what to compute), the driver state (crank angle, ω, α) and the pose (the
-// solved state of every point and link at one input) that the pose solver fills.
+// The request (what to compute, and how hard Newton tries for free points), the driver state
+// (crank angle, ω, α) and the pose (the solved state of every point and link at one input)
+// that the pose solver fills.
 
 #include "kinematics/model/ids.h"
 #include "kinematics/solve/rrr_dyad.h"
@@ -11,10 +12,24 @@
 
 namespace linkwright::kinematics {
 
+/// How Newton–Raphson solves free points (newton_group.h). The defaults close every distance
+/// constraint to 1e-12 of the linkage's size, so Newton's poses agree with the closed-form
+/// dyads' to about 1e-12 relative away from toggles.
+struct NewtonSettings {
+  /// Converged when every constraint's misfit, in length units (about |pa − pb| − L), is at
+  /// most tolerance × the group's size: its longest constraint or its farthest point from the
+  /// origin, whichever is larger (below ~1e-15 round-off alone exceeds it).
+  double tolerance = 1e-12;
+  /// Newton steps per free group and solve before it reports NoConvergence.
+  int maxIterations = 50;
+  bool operator==(const NewtonSettings&) const = default;
+};
+
 /// What to compute beyond positions. A scene computes only what it shows.
 struct SolveRequest {
   bool velocities = true;     ///< ω of links, v of points
   bool accelerations = true;  ///< α of links, a of points (implies velocities)
+  NewtonSettings newton{};    ///< for free points only
   bool operator==(const SolveRequest&) const = default;
 };
 
@@ -28,7 +43,7 @@ struct DriverState {
 
 enum class PoseStatus {
   Ok,              ///< everything requested was computed
-  Singular,        ///< positions are valid; a dyad is at a toggle, so rates are undefined
+  Singular,        ///< positions are valid; a dyad (or free group) is at a toggle, so rates are undefined
   NotAssemblable,  ///< some point cannot be placed: see PoseReport::culprit and failure
 };
 
@@ -37,6 +52,11 @@ struct PoseReport {
   PoseStatus status = PoseStatus::Ok;
   PointId culprit;  ///< the first point that failed (meaningful unless status is Ok)
   AssemblyFailure failure = AssemblyFailure::None;
+  /// Newton steps taken for free points in this solve, all groups together (0 without them).
+  int iterations = 0;
+  /// The largest final constraint misfit of the free points (length unit; 0 without them).
+  /// On NoConvergence: the misfit Newton was left with.
+  double residual = 0.0;
   bool operator==(const PoseReport&) const = default;
 };
 
@@ -55,6 +75,10 @@ struct Pose {
   std::vector<double> transmissionAngle;
   /// For RRR and RRP points: +1 open, −1 crossed, the branch actually used; else 0.
   std::vector<signed char> branchSign;
+  /// True when `position` holds an assembled pose (set by solvePoseInto unless the result is
+  /// NotAssemblable, cleared by preparePose). Free points start their next Newton solve from
+  /// these positions: the previous sample of a sweep, the previous frame of a drag.
+  bool assembled = false;
   bool operator==(const Pose&) const = default;
 };
 

@@ -5,8 +5,10 @@
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/solve/guide_line.h"
+#include "kinematics/solve/newton_group.h"
 #include "kinematics/solve/rrp_dyad.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace linkwright::kinematics {
@@ -20,14 +22,56 @@ struct Solver {
   const DriverState& driver;
   bool wantVelocity;
   bool wantAcceleration;
+  const NewtonSettings& newton;
   Pose& pose;
   const BranchGuide& guide;
   PoseReport report{};
   bool ratesValid = true;  // false once a dyad was singular: later rates cannot be computed
+  int newtonIterations = 0;
+  double newtonResidual = 0.0;
 
   void markSingular(std::size_t i) {
     if (report.status == PoseStatus::Ok) report = {PoseStatus::Singular, PointId{i}, AssemblyFailure::None};
     ratesValid = false;
+  }
+
+  // Where Newton starts: the sweep's extrapolated prediction if given; else this pose's own
+  // positions if they hold an assembly (the previous sample or frame: positions only move a
+  // little between them); else the user's guesses. True unless it is the guesses.
+  bool startFreeGroup(std::size_t first, std::size_t last) {
+    if (!guide.predicted.empty()) {
+      for (std::size_t i = first; i < last; ++i) pose.position[i] = guide.predicted[i];
+      return true;
+    }
+    if (pose.assembled) return true;
+    startFromGuesses(first, last);
+    return false;
+  }
+
+  void startFromGuesses(std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) pose.position[i] = std::get<FreePoint>(m.points[i].definition).guess;
+  }
+
+  // A group of free points, by Newton. A warm start that fails to converge (a jump too far
+  // from the last pose) is retried once from the guesses, the assembly the user means; if
+  // that fails too, the linkage most likely cannot close here.
+  bool freeGroup(std::size_t first, std::size_t last) {
+    const bool rates = wantVelocity && ratesValid;
+    const bool warm = startFreeGroup(first, last);
+    NewtonOutcome out = solveFreeGroup(m, first, last, newton, rates, rates && wantAcceleration, pose);
+    if (out.status == NewtonStatus::NoConvergence && warm) {
+      newtonIterations += out.iterations;
+      startFromGuesses(first, last);
+      out = solveFreeGroup(m, first, last, newton, rates, rates && wantAcceleration, pose);
+    }
+    newtonIterations += out.iterations;
+    newtonResidual = std::max(newtonResidual, out.residual);
+    if (out.status == NewtonStatus::NoConvergence) {
+      report = {PoseStatus::NotAssemblable, PointId{first}, AssemblyFailure::NoConvergence};
+      return false;
+    }
+    if (out.status == NewtonStatus::Singular) markSingular(first);
+    return true;
   }
 
   void ground(std::size_t i, const GroundPoint& g) {
@@ -241,6 +285,14 @@ struct Solver {
   }
 
   PoseReport run() {
+    report = runPoints();
+    report.iterations = newtonIterations;
+    report.residual = newtonResidual;
+    pose.assembled = report.status != PoseStatus::NotAssemblable;
+    return report;
+  }
+
+  PoseReport runPoints() {
     for (std::size_t i = 0; i < m.points.size(); ++i) {
       const PointDefinition& def = m.points[i].definition;
       if (const auto* g = std::get_if<GroundPoint>(&def)) ground(i, *g);
@@ -253,6 +305,10 @@ struct Solver {
         if (!rpr(i, *s)) return report;
       } else if (const auto* q = std::get_if<PrpPoint>(&def)) {
         if (!prp(i, *q)) return report;
+      } else if (std::holds_alternative<FreePoint>(def)) {
+        const std::size_t last = freeGroupEnd(m, i);
+        if (!freeGroup(i, last)) return report;
+        i = last - 1;
       } else attached(i, std::get<AttachedPoint>(def));
     }
     for (std::size_t k = 0; k < m.links.size(); ++k) link(k);
@@ -264,6 +320,36 @@ std::string lengthName(const Mechanism& m, PointId a, PointId b, const std::stri
   for (const Link& l : m.links)
     if ((l.first == a && l.second == b) || (l.first == b && l.second == a)) return l.name;
   return fallback;
+}
+
+// A failed or singular group of free points: its names, Newton's numbers, and the constraint
+// left furthest from closing (solvespace's "culprit constraints", here the worst one).
+std::string describeFreeGroup(const Mechanism& m, const PoseReport& report, const Pose& pose, const std::string& at) {
+  const std::size_t first = report.culprit.index;
+  const std::size_t last = freeGroupEnd(m, first);
+  std::string names;
+  for (std::size_t i = first; i < last; ++i) names += (i == first ? "" : ", ") + m.points[i].name;
+  const bool several = last - first > 1;
+  if (report.status == PoseStatus::Singular)
+    return names + (several ? " are" : " is") + " at a singular position" + at + ": " + (several ? "their" : "its") +
+           " distance constraints do not fix " + (several ? "their" : "its") +
+           " motion (the linkage could move with the crank held, or a link is at a toggle), so velocity and "
+           "acceleration are undefined there";
+  const DistanceConstraint* worst = nullptr;
+  for (const DistanceConstraint& c : m.constraints) {
+    const std::size_t later = constraintLaterPoint(c).index;
+    if (later < first || later >= last) continue;
+    if (worst == nullptr || std::abs(constraintMisfit(c, pose)) > std::abs(constraintMisfit(*worst, pose))) worst = &c;
+  }
+  std::string where;
+  if (worst != nullptr) {
+    const std::string ends = m.points[worst->first.index].name + "–" + m.points[worst->second.index].name;
+    const std::string link = lengthName(m, worst->first, worst->second, "");
+    where = ", worst at " + (link.empty() ? ends : link + " " + ends);
+  }
+  return names + " cannot be assembled" + at + ": Newton did not converge (residual " +
+         io::formatShort(report.residual, 3) + " " + m.lengthUnit + " after " + std::to_string(report.iterations) +
+         " iterations" + where + "); the linkage probably cannot close here";
 }
 
 } // namespace
@@ -279,12 +365,13 @@ void preparePose(const Mechanism& m, Pose& pose) {
   pose.linkAngle.assign(k, 0.0);
   pose.linkOmega.assign(k, 0.0);
   pose.linkAlpha.assign(k, 0.0);
+  pose.assembled = false;
 }
 
 PoseReport solvePoseInto(const Mechanism& m, const DriverState& driver, const SolveRequest& request,
                          Pose& pose, const BranchGuide& guide) {
   const bool acc = request.accelerations;
-  Solver solver{m, driver, request.velocities || acc, acc, pose, guide};
+  Solver solver{m, driver, request.velocities || acc, acc, request.newton, pose, guide};
   return solver.run();
 }
 
@@ -293,6 +380,7 @@ Result<Pose> solvePose(const Mechanism& m, const DriverState& driver, const Solv
   if (auto e = checkFinite(driver.angle, "input angle")) return *e;
   if (auto e = checkFinite(driver.omega, "input omega")) return *e;
   if (auto e = checkFinite(driver.alpha, "input alpha")) return *e;
+  if (auto e = checkNewtonSettings(request.newton)) return *e;
   Pose pose;
   preparePose(m, pose);
   const PoseReport report = solvePoseInto(m, driver, request, pose);
@@ -307,6 +395,8 @@ std::string describeFailure(const Mechanism& m, const PoseReport& report, const 
   const std::size_t i = report.culprit.index;
   const std::string& name = m.points[i].name;
   const std::string at = " at crank angle " + io::formatShort(radToDeg(inputAngle)) + "°";
+  if (std::holds_alternative<FreePoint>(m.points[i].definition) && report.status != PoseStatus::Ok)
+    return describeFreeGroup(m, report, pose, at);
   if (const auto* p = std::get_if<RrpPoint>(&m.points[i].definition); p != nullptr && report.status != PoseStatus::Ok) {
     const std::string rod = lengthName(m, report.culprit, p->first, "rod");
     const std::string& n1 = m.points[p->first.index].name;
@@ -343,6 +433,7 @@ std::string describeFailure(const Mechanism& m, const PoseReport& report, const 
            "| = " + io::formatShort(std::abs(r->firstLength - r->secondLength)) + " " + m.lengthUnit;
   case AssemblyFailure::Coincident:
   case AssemblyFailure::Parallel:
+  case AssemblyFailure::NoConvergence:
   case AssemblyFailure::None:
     break;
   }

@@ -26,6 +26,7 @@ enum class AssemblyFailure {
   TooClose,    ///< |P1P2| < |l1 − l2|: one circle lies inside the other
   Coincident,  ///< P1 and P2 coincide: C is undetermined
   Parallel,    ///< two guides are parallel: their sliders' pin is undetermined
+  NoConvergence,  ///< Newton did not close a group of free points (newton_group.h)
 };
 
 /// Relative tolerance on the assembly limits |l1−l2| ≤ L ≤ l1+l2: a pose past a limit by less

@@ -4,6 +4,7 @@
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/solve/guide_line.h"
+#include "kinematics/solve/newton_group.h"
 #include "kinematics/solve/pose_solver.h"
 
 #include <cmath>
@@ -120,6 +121,7 @@ private:
       return solvePoseInto(m_mech, driver(angle), m_request, m_current);
     }
     const BranchGuide tracked{m_scratch[0].branchSign, {}};
+    m_current.position = m_scratch[0].position;  // free points start from the tracked solution
     return solvePoseInto(m_mech, driver(angle), m_request, m_current, tracked);
   }
 
@@ -127,6 +129,9 @@ private:
   // branch switch cannot be ruled out. `before` (may be null) is the path before `a`.
   bool refine(int depth, double aAngle, const Pose& a, double beforeAngle,
               const Eigen::Vector2d* before, double b, Pose& out) {
+    // Free points warm-start from the pose this step continues, not from stale scratch.
+    out.position = a.position;
+    out.assembled = true;
     const BranchGuide keep{a.branchSign, {}};
     if (solvePoseInto(m_mech, driver(b), kPositionsOnly, out, keep).status == PoseStatus::NotAssemblable)
       return false;
@@ -182,7 +187,7 @@ void allocate(const Mechanism& m, std::size_t n, const SolveRequest& request, Sw
   const std::size_t points = m.points.size();
   const std::size_t links = m.links.size();
   const bool velocities = request.velocities || request.accelerations;
-  out.request = {velocities, request.accelerations};
+  out.request = {velocities, request.accelerations, request.newton};
   out.inputAngle.assign(n, 0.0);
   out.report.assign(n, PoseReport{});
   out.position.assign(points, std::vector<Eigen::Vector2d>(n, Eigen::Vector2d::Zero()));
@@ -237,6 +242,7 @@ double sweepAngle(const SweepSpec& spec, std::size_t index) {
 Result<SweepResult> sweep(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request) {
   if (auto e = checkMechanism(mechanism)) return *e;
   if (auto e = checkSweepSpec(spec)) return *e;
+  if (auto e = checkNewtonSettings(request.newton)) return *e;
   SweepResult out;
   allocate(mechanism, spec.samples, request, out);
   Tracker(mechanism, spec, out.request, out).run();

@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
   QApplication::processEvents();
   auto* doc = window.document();
   auto* canvas = window.canvas();
-  std::printf("cycle: %zu samples; plots and canvas redrawn after every move\n", doc->design().samples);
+  std::printf("cycle: %zu samples; plots and canvas redrawn after every move\n", doc->fourBar()->samples);
 
   const QPointF start = canvas->mapFromScene(linkwright::ui::toQt(doc->pose().position[linkwright::kinematics::fourbar::kC.index]));
   QTest::mousePress(canvas->viewport(), Qt::LeftButton, Qt::NoModifier, start.toPoint());

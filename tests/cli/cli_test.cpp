@@ -2,7 +2,9 @@
 // writes compared with the core's own solution at every row.
 
 #include "app/cli/cli.h"
+#include "tests/cli/run_cli.h"
 
+#include "kinematics/analysis/two_link_arm.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
@@ -18,20 +20,8 @@ namespace {
 
 using namespace linkwright;
 
-struct Run {
-  int code = -1;
-  std::string out;
-  std::string err;
-};
-
-Run run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  Run r;
-  r.code = cli::runCli(args, out, err);
-  r.out = out.str();
-  r.err = err.str();
-  return r;
-}
+using Run = test::CliRun;
+Run run(const std::vector<std::string>& args) { return test::runCliCommand(args); }
 
 std::vector<std::string> splitLines(const std::string& text) {
   std::vector<std::string> lines;
@@ -96,10 +86,10 @@ TEST_CASE("bad usage exits 2 with a message naming the option and the reason", "
       {Args{"--frobnicate"}, "unknown option '--frobnicate'"},
       {Args{"analyze", "--example", "thesis-crank-rocker", "--speed", "3"}, "unknown option '--speed' for 'analyze'"},
       {Args{"classify", "--example", "thesis-crank-rocker", "--rpm", "3"}, "unknown option '--rpm' for 'classify'"},
-      {Args{"analyze", "--example", "thesis-crank-rocker", "stray"}, "unexpected argument 'stray'"},
+      {Args{"analyze", "--example", "thesis-crank-rocker", "stray"}, "--example cannot be used with a document (stray)"},
       {Args{"analyze", "--example"}, "--example needs a value"},
       {Args{"analyze", "--example", "nope"}, "no example named 'nope'"},
-      {Args{"analyze"}, "needs --fourbar FRAME,CRANK,COUPLER,ROCKER or --example NAME"},
+      {Args{"analyze"}, "needs FILE.json, --fourbar FRAME,CRANK,COUPLER,ROCKER or --example NAME"},
       {Args{"analyze", "--fourbar", "60,25,70"}, "--fourbar expects FRAME,CRANK,COUPLER,ROCKER (got '60,25,70')"},
       {Args{"analyze", "--fourbar", "60,25,x,45"}, "--fourbar: 'x' is not a number"},
       {Args{"analyze", "--fourbar", "0,25,70,45"}, "--fourbar: frame length must be positive and finite (got 0)"},
@@ -283,14 +273,15 @@ TEST_CASE("extremes refines the LS3 piston's peak speed and acceleration (seed 0
   CHECK(sawAcceleration);
 }
 
-TEST_CASE("slider-crank examples analyze, and classify says it is for four-bars", "[cli]") {
+TEST_CASE("slider-crank examples analyze and classify", "[cli]") {
   const Run analyze = run({"analyze", "--example", "ls3-engine", "--step", "90"});
   REQUIRE(analyze.code == 0);
   CHECK_THAT(analyze.out, Catch::StartsWith("crank_angle_deg,crank_omega_rad_s,crank_alpha_rad_s2,rod_angle_deg"));
   CHECK(parseCsv(analyze.out).rows.size() == 5);
+  // The rod's transmission angle is worst (72.72° = acos(r/L)) with the crank at 90°.
   const Run classify = run({"classify", "--example", "ls3-engine"});
-  CHECK(classify.code == 2);
-  CHECK_THAT(classify.err, Catch::Contains("is not a four-bar but a slider-crank; classify works on four-bars and shapers"));
+  CHECK(classify.code == 0);
+  CHECK_THAT(classify.out, Catch::Contains("transmission at C    min 72.72° at crank 90.00°, max 90.00° at crank 0.00°"));
   const Run point = run({"analyze", "--example", "ls3-engine", "--coupler-point", "1,2"});
   CHECK(point.code == 2);
   CHECK_THAT(point.err, Catch::Contains("--coupler-point applies to four-bars"));
@@ -307,4 +298,219 @@ TEST_CASE("classify gives the shaper's exact time ratio and stroke", "[cli][shap
   const Run json = run({"classify", "--example", "shaper", "--json"});
   REQUIRE(json.code == 0);
   CHECK_THAT(json.out, Catch::Contains("\"time_ratio\": 1.968"));
+}
+
+// ---- arm: the two-link arm of seed 004 along a straight tip path --------------------------
+
+TEST_CASE("arm follows seed 004's line: every row equals the core's solution", "[cli][arm][published]") {
+  const Run r = run({"arm", "--example", "seed-arm"});
+  REQUIRE(r.code == 0);
+  CHECK(r.err.empty());
+  const Table t = parseCsv(r.out);
+  CHECK(t.header == std::vector<std::string>{"time_s", "tip_x_m", "tip_y_m", "upper_angle_deg", "forearm_angle_deg",
+                                             "upper_omega_rad_s", "forearm_omega_rad_s", "upper_alpha_rad_s2",
+                                             "forearm_alpha_rad_s2", "elbow_x_m", "elbow_y_m"});
+  // The seed's elbow is "down" (its θ1 rises from −39° to 51°): the core's Crossed branch.
+  const kinematics::TwoLinkArm arm{0.3, 0.2};
+  const auto core = kinematics::followLine(arm, kinematics::Branch::Crossed, {{0.3, 0.0}, {0.0, 0.3}, 2.0}, 101);
+  REQUIRE(core.ok());
+  REQUIRE(t.rows.size() == 101);
+  for (std::size_t row = 0; row < t.rows.size(); ++row) {
+    const kinematics::ArmSample& s = core->samples[row];
+    CAPTURE(row);
+    REQUIRE(s.reachable);
+    // The time column prints 12 significant digits (within 5e-12 relative, as analyze's angle
+    // column); everything else round-trips exactly.
+    CHECK(t.value(row, "time_s") == Approx(s.time).epsilon(1e-11));
+    CHECK(t.value(row, "tip_x_m") == s.tip.x());
+    CHECK(t.value(row, "tip_y_m") == s.tip.y());
+    // Angles are unwrapped along the path: equal to the core's up to whole turns.
+    for (const auto& [name, angle] : {std::pair{"upper_angle_deg", s.state.upperAngle}, {"forearm_angle_deg", s.state.forearmAngle}})
+      CHECK(std::remainder(kinematics::degToRad(t.value(row, name)) - angle, 2 * kinematics::kPi) == Approx(0).margin(1e-12));
+    CHECK(t.value(row, "upper_omega_rad_s") == s.state.upperOmega);
+    CHECK(t.value(row, "forearm_omega_rad_s") == s.state.forearmOmega);
+    CHECK(t.value(row, "upper_alpha_rad_s2") == s.state.upperAlpha);
+    CHECK(t.value(row, "forearm_alpha_rad_s2") == s.state.forearmAlpha);
+    CHECK(t.value(row, "elbow_x_m") == s.state.elbow.x());
+    CHECK(t.value(row, "elbow_y_m") == s.state.elbow.y());
+  }
+  // Closed form at the ends: the elbow angle off the tip line is acos(7/9) (|OB| = 0.3 m at
+  // both ends), so θ1 goes from −38.94° to 90° − 38.94° = 51.06°, as the seed's plot shows.
+  const double offLine = kinematics::radToDeg(std::acos(7.0 / 9.0));
+  CHECK(t.value(0, "upper_angle_deg") == Approx(-offLine).epsilon(1e-13));
+  CHECK(t.value(100, "upper_angle_deg") == Approx(90.0 - offLine).epsilon(1e-13));
+  CHECK(t.value(100, "time_s") == Approx(0.3 * std::sqrt(2.0) / 2.0).epsilon(1e-11));
+}
+
+TEST_CASE("arm gives both elbow solutions: up is the core's open branch, mirrored by down", "[cli][arm]") {
+  const Run up = run({"arm", "--example", "seed-arm", "--elbow", "up", "--samples", "11"});
+  const Run down = run({"arm", "--example", "seed-arm", "--samples", "11"});
+  REQUIRE(up.code == 0);
+  REQUIRE(down.code == 0);
+  const Table u = parseCsv(up.out), d = parseCsv(down.out);
+  const auto core = kinematics::followLine({0.3, 0.2}, kinematics::Branch::Open, {{0.3, 0.0}, {0.0, 0.3}, 2.0}, 11);
+  REQUIRE(core.ok());
+  for (std::size_t row = 0; row < 11; ++row) {
+    CAPTURE(row);
+    CHECK(u.value(row, "forearm_omega_rad_s") == core->samples[row].state.forearmOmega);
+    const Eigen::Vector2d tip(u.value(row, "tip_x_m"), u.value(row, "tip_y_m"));
+    const Eigen::Vector2d eu(u.value(row, "elbow_x_m"), u.value(row, "elbow_y_m"));
+    const Eigen::Vector2d ed(d.value(row, "elbow_x_m"), d.value(row, "elbow_y_m"));
+    CHECK(tip.x() * eu.y() - tip.y() * eu.x() > 0.0);  // up: counter-clockwise side of shoulder→tip
+    CHECK(tip.x() * ed.y() - tip.y() * ed.x() < 0.0);
+    // Mirror images about the line shoulder→tip: reflecting one elbow gives the other.
+    const Eigen::Vector2d axis = tip.normalized();
+    CHECK((2.0 * eu.dot(axis) * axis - eu - ed).norm() < 1e-14);
+  }
+}
+
+TEST_CASE("arm reports where the path leaves the workspace, exactly, and exits 3", "[cli][arm][errors]") {
+  // Out along +x at 2 m/s from 0.3 m: beyond r1 + r2 = 0.5 m from t = 0.1 s to the end, 0.2 s.
+  const Run r = run({"arm", "--arm", "0.3,0.2", "--from-point", "0.3,0", "--to-point", "0.7,0", "--speed", "2", "--samples", "9"});
+  CHECK(r.code == 3);
+  CHECK_THAT(r.err, Catch::Contains("4 of 9 samples cannot be reached"));
+  CHECK_THAT(r.err, Catch::Contains("unreachable for t = 0.1 s to 0.2 s (exact): tip from (0.5, 0) m to (0.7, 0) m"));
+  CHECK_THAT(r.err, Catch::Contains("the arm is stretched out at t = 0.1 s, tip (0.5, 0) m"));
+  CHECK(r.out.find("nan") == std::string::npos);
+  const Table t = parseCsv(r.out);
+  REQUIRE(t.rows.size() == 9);  // every time is listed; the unreachable ones with empty joint cells
+  for (std::size_t row = 0; row < 9; ++row) {
+    CAPTURE(row);
+    CHECK_FALSE(t.rows[row][t.column("tip_x_m")].empty());
+    CHECK(t.rows[row][t.column("upper_angle_deg")].empty() == (row > 4));
+    CHECK(t.rows[row][t.column("elbow_y_m")].empty() == (row > 4));
+    CHECK(t.rows[row][t.column("forearm_alpha_rad_s2")].empty() == (row >= 4));  // stretched at t = 0.1 s
+  }
+  // Through the hole |p| < r1 − r2 = 0.1 m at 1 m/s: from t = 0.3 ∓ √(0.1² − 0.05²) s.
+  const Run hole = run({"arm", "--arm", "0.3,0.2", "--from-point", "-0.3,0.05", "--to-point", "0.3,0.05", "--speed", "1"});
+  CHECK(hole.code == 3);
+  CHECK_THAT(hole.err, Catch::Contains("unreachable for t = 0.213397 s to 0.386603 s (exact): tip from (-0.0866025, 0.05) m"));
+  const Run table = run({"arm", "--arm", "0.3,0.2", "--from-point", "0.3,0", "--to-point", "0.7,0", "--speed", "2",
+                         "--samples", "9", "--format", "table"});
+  CHECK(table.code == 3);
+  CHECK_THAT(table.out, Catch::Contains("unreachable"));
+  CHECK_THAT(table.out, Catch::Contains("singular"));
+}
+
+TEST_CASE("arm leaves the rates empty where the arm is folded or stretched out", "[cli][arm]") {
+  // Arm 3, 2 along +x from |p| = 1 (folded) to |p| = 5 (stretched), one sample per second.
+  const Run r = run({"arm", "--arm", "3,2", "--from-point", "1,0", "--to-point", "5,0", "--speed", "1", "--samples", "5", "--unit", "mm"});
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.err, Catch::Contains("the arm is folded at t = 0 s, tip (1, 0) mm"));
+  CHECK_THAT(r.err, Catch::Contains("the arm is stretched out at t = 4 s, tip (5, 0) mm"));
+  const Table t = parseCsv(r.out);
+  REQUIRE(t.rows.size() == 5);
+  for (const std::size_t row : {std::size_t{0}, std::size_t{4}}) {
+    CHECK(t.value(row, "elbow_x_mm") == 3.0);
+    CHECK(t.rows[row][t.column("upper_omega_rad_s")].empty());
+    CHECK(t.rows[row][t.column("forearm_alpha_rad_s2")].empty());
+  }
+  CHECK_FALSE(t.rows[2][t.column("upper_omega_rad_s")].empty());
+  // --step-time lists the grid from 0; here 0.05 s over the seed's 0.2121 s: 5 rows.
+  const Run step = run({"arm", "--example", "seed-arm", "--step-time", "0.05"});
+  REQUIRE(step.code == 0);
+  const Table s = parseCsv(step.out);
+  REQUIRE(s.rows.size() == 5);
+  CHECK(s.rows[3][0] == "0.15");
+}
+
+TEST_CASE("arm -o writes the same CSV to a file", "[cli][arm]") {
+  const auto file = std::filesystem::temp_directory_path() / "linkwright_arm_test.csv";
+  std::filesystem::remove(file);
+  const Run toFile = run({"arm", "--example", "seed-arm", "-o", file.string()});
+  REQUIRE(toFile.code == 0);
+  CHECK(toFile.out.empty());
+  std::ifstream in(file, std::ios::binary);
+  const std::string written((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(written == run({"arm", "--example", "seed-arm"}).out);
+  std::filesystem::remove(file);
+}
+
+TEST_CASE("arm and centres: bad options exit 2 naming the option", "[cli][arm][centres][errors]") {
+  using Args = std::vector<std::string>;
+  auto [args, expected] = GENERATE(table<Args, std::string>({
+      {Args{"arm"}, "arm needs --arm UPPER,FOREARM, or --example seed-arm"},
+      {Args{"arm", "--arm", "0.3,0.2"}, "arm needs --from-point X,Y"},
+      {Args{"arm", "--arm", "-0.3,0.2", "--from-point", "0.3,0", "--to-point", "0,0.3", "--speed", "2"},
+       "--arm: upper length must be positive and finite (got -0.3)"},
+      {Args{"arm", "--arm", "0.3,nan"}, "--arm: forearm length must be positive and finite (got nan)"},
+      {Args{"arm", "--arm", "0.3"}, "--arm expects UPPER,FOREARM (got '0.3')"},
+      {Args{"arm", "--example", "seed-arm", "--speed", "nan"}, "--speed must be positive and finite (got nan)"},
+      {Args{"arm", "--example", "seed-arm", "--speed", "-2"}, "--speed must be positive and finite (got -2)"},
+      {Args{"arm", "--example", "seed-arm", "--from-point", "1,inf"}, "--from-point: y must be finite (got inf)"},
+      {Args{"arm", "--example", "seed-arm", "--to-point", "0.3,0"}, "--to-point must differ from --from-point (both are (0.3, 0))"},
+      {Args{"arm", "--example", "seed-arm", "--frobnicate", "1"}, "unknown option '--frobnicate' for 'arm'"},
+      {Args{"arm", "--example", "seed-arm", "--branch", "open"}, "unknown option '--branch' for 'arm'"},
+      {Args{"arm", "--example", "seed-arm", "--elbow", "left"}, "--elbow must be 'up' or 'down' (got 'left')"},
+      {Args{"arm", "--example", "seed-arm", "--samples", "1"}, "--samples must be at least 2 for arm (got 1)"},
+      {Args{"arm", "--example", "seed-arm", "--step-time", "0"}, "--step-time must be positive and finite (got 0)"},
+      {Args{"arm", "--example", "seed-arm", "--step-time", "0.1", "--samples", "3"}, "--step-time and --samples cannot be used together"},
+      {Args{"arm", "--example", "robot"}, "--example: no arm example named 'robot' (arm has one: seed-arm)"},
+      {Args{"arm", "--example", "seed-arm", "--unit", "mm"}, "--unit: the seed-arm example is in metres"},
+      {Args{"centres", "--example", "thesis-crank-rocker"}, "centres needs --at DEG"},
+      {Args{"centres", "--at", "10"}, "centres needs FILE.json, --fourbar FRAME,CRANK,COUPLER,ROCKER or --example NAME"},
+      {Args{"centres", "--example", "thesis-crank-rocker", "--at", "nan"}, "--at must be finite (got nan)"},
+      {Args{"centres", "--example", "thesis-crank-rocker", "--at", "10,x"}, "--at: 'x' is not a number"},
+      {Args{"centres", "--fourbar", "60,25,-70,45", "--at", "10"}, "--fourbar: coupler length must be positive and finite (got -70)"},
+      {Args{"centres", "--example", "shaper", "--at", "10"}, "instant centres are computed for four-bars and slider-cranks only"},
+  }));
+  CAPTURE(args);
+  const Run r = run(args);
+  CHECK(r.code == 2);
+  CHECK(r.out.empty());
+  CHECK_THAT(r.err, Catch::Contains(expected));
+}
+
+// ---- centres: instant centres and mechanical advantage ------------------------------------
+
+namespace {
+// The number after `label` in the text, e.g. "ω4/ω2 = " → 0.590772611.
+double numberAfter(const std::string& text, const std::string& label) {
+  const auto at = text.find(label);
+  REQUIRE(at != std::string::npos);
+  return std::stod(text.substr(at + label.size()));
+}
+} // namespace
+
+TEST_CASE("centres prints the six centres and a velocity ratio equal to the solver's", "[cli][centres]") {
+  const Run r = run({"centres", "--example", "thesis-crank-rocker", "--at", "90"});
+  REQUIRE(r.code == 0);
+  CHECK(r.err.empty());
+  const auto m = kinematics::makeFourBar({60, 25, 70, 45}, kinematics::Branch::Open);
+  REQUIRE(m.ok());
+  const auto pose = kinematics::solvePose(*m, {kinematics::degToRad(90), 1.0, 0.0});
+  REQUIRE(pose.ok());
+  const double w4 = pose->linkOmega[kinematics::fourbar::kRocker.index];
+  // Printed to 9 significant digits.
+  CHECK(numberAfter(r.out, "ω4/ω2 = ") == Approx(w4).epsilon(1e-8));
+  CHECK(numberAfter(r.out, "T4/T2 = ω2/ω4 = ") == Approx(1.0 / w4).epsilon(1e-8));
+  CHECK_THAT(r.out, Catch::Contains("I12  (0, 0) mm"));
+  CHECK_THAT(r.out, Catch::Contains("I23  (0, 25) mm"));  // B straight above O2
+  // I24 is where the coupler line meets the frame line (y = 0).
+  CHECK_THAT(r.out, Catch::Contains("I24  (-86.6177525, 0) mm"));
+  for (const char* name : {"I13", "I14", "I34"}) CHECK_THAT(r.out, Catch::Contains(name));
+}
+
+TEST_CASE("centres: points at infinity, toggles and angles that do not assemble", "[cli][centres]") {
+  // Parallelogram: coupler translating (I13 at infinity along the crank), ratio exactly 1.
+  const Run parallel = run({"centres", "--fourbar", "60,25,60,25", "--at", "30"});
+  REQUIRE(parallel.code == 0);
+  CHECK_THAT(parallel.out, Catch::Contains("I13  at infinity, direction 30°"));
+  CHECK_THAT(parallel.out, Catch::Contains("I24  at infinity, direction 0°"));
+  CHECK_THAT(parallel.out, Catch::Contains("ω4/ω2 = 1\n"));
+  // The LS3 engine at top dead centre: the slider is at rest, F/T2 infinite; I14 is the
+  // slider's point at infinity normal to the guide.
+  const Run ls3 = run({"centres", "--example", "ls3-engine", "--at", "0", "--at", "45"});
+  REQUIRE(ls3.code == 0);
+  CHECK_THAT(ls3.out, Catch::Contains("I14  at infinity, direction 90°"));
+  CHECK_THAT(ls3.out, Catch::Contains("F/T2 = ω2/v = infinite"));
+  CHECK_THAT(ls3.out, Catch::Contains("dead centre"));
+  CHECK_THAT(ls3.out, Catch::Contains("v/ω2 = -39.5133918 mm/rad"));  // analyze: C_vx = -39.513391788743 mm/s at ω 1
+  // A triple-rocker cannot reach 120°: that angle is reported, the others still printed, exit 3.
+  const Run partial = run({"centres", "--fourbar", "40,30,20,25", "--at", "0,120"});
+  CHECK(partial.code == 3);
+  CHECK_THAT(partial.err, Catch::Contains("crank angle 120°: C cannot be assembled"));
+  CHECK_THAT(partial.out, Catch::Contains("crank angle 0°"));
+  CHECK(run({"--help"}).out.find("centres    instant centres") != std::string::npos);
+  CHECK(run({"--help", "arm"}).out.find("--elbow up|down") != std::string::npos);
 }

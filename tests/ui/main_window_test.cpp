@@ -64,7 +64,7 @@ std::vector<std::string> cliArguments(const kinematics::FourBarDesign& d) {
 
 TEST_CASE("Export ▸ CSV is byte-identical to linkwright-cli analyze", "[ui][window][csv]") {
   ui::MainWindow window;
-  kinematics::FourBarDesign d = window.document()->design();
+  kinematics::FourBarDesign d = *window.document()->fourBar();
   d.couplerPoint = kinematics::CouplerPointSpec{35.0, 20.0};
   d.alpha = 0.25;
   d.samples = 181;
@@ -83,7 +83,7 @@ TEST_CASE("save then open in a new window reproduces the document", "[ui][window
   kinematics::FourBarDesign d;
   {
     ui::MainWindow window;
-    d = window.document()->design();
+    d = *window.document()->fourBar();
     d.lengths.crank = 21.5;
     d.branch = kinematics::Branch::Crossed;
     REQUIRE_FALSE(window.document()->edit(d, "test").has_value());
@@ -94,7 +94,7 @@ TEST_CASE("save then open in a new window reproduces the document", "[ui][window
   }
   ui::MainWindow other;
   REQUIRE(other.openFile(path));
-  CHECK(other.document()->design() == d);
+  CHECK(*other.document()->fourBar() == d);
   CHECK(other.document()->filePath().endsWith("saved.json"));
   CHECK(other.document()->undoStack()->count() == 0);
 }
@@ -108,12 +108,12 @@ TEST_CASE("opening a corrupt file shows an error and changes nothing", "[ui][win
     f.write("{ \"format\": \"linkwright\", \"version\": 1, \"mechanism\": { \"type\": ");
   }
   ui::MainWindow window;
-  kinematics::FourBarDesign d = window.document()->design();
+  kinematics::FourBarDesign d = *window.document()->fourBar();
   d.lengths.rocker = 47.0;
   REQUIRE_FALSE(window.document()->edit(d, "test").has_value());
   const int undoSteps = window.document()->undoStack()->count();
   CHECK_FALSE(window.openFile(path));
-  CHECK(window.document()->design() == d);
+  CHECK(*window.document()->fourBar() == d);
   CHECK(window.document()->undoStack()->count() == undoSteps);
   CHECK(window.banner()->isVisibleTo(&window));
   CHECK(window.banner()->text().contains("broken.json"));
@@ -122,10 +122,10 @@ TEST_CASE("opening a corrupt file shows an error and changes nothing", "[ui][win
 
 TEST_CASE("the window starts on the thesis example and offers every example", "[ui][window]") {
   ui::MainWindow window;
-  CHECK(window.document()->design().lengths == kinematics::FourBarLengths{60, 25, 70, 45});
-  CHECK(window.document()->design().omega == Approx(kinematics::rpmToRadPerSec(10.0)));
+  CHECK(window.document()->fourBar()->lengths == kinematics::FourBarLengths{60, 25, 70, 45});
+  CHECK(window.document()->fourBar()->omega == Approx(kinematics::rpmToRadPerSec(10.0)));
   window.newDocument(kinematics::designFromExample(*kinematics::findFourBarExample("alvi-fourbar")));
-  CHECK(window.document()->design().lengths == kinematics::FourBarLengths{80, 20, 66, 56});
+  CHECK(window.document()->fourBar()->lengths == kinematics::FourBarLengths{80, 20, 66, 56});
   CHECK(window.document()->undoStack()->count() == 0);
 }
 
@@ -163,7 +163,7 @@ TEST_CASE("typing a length in the panel updates the badge and the plotted series
   frame->selectAll();
   QTest::keyClicks(frame, "20");
   QTest::keyClick(frame, Qt::Key_Return);
-  REQUIRE(window.document()->design().lengths.frame == 20.0);
+  REQUIRE(window.document()->fourBar()->lengths.frame == 20.0);
   CHECK(window.analysisPanel()->grashofText().contains("Triple-rocker"));
   // The rocker's ω curve now holds exactly the new sweep's values at its assembled samples.
   const auto& sweep = window.document()->sweep();

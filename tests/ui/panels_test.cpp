@@ -38,11 +38,11 @@ TEST_CASE("typing a length changes the design and the Grashof badge as the core 
   ui::AnalysisPanel analysis(&doc);
   CHECK(analysis.grashofText().contains("Crank-rocker"));
   typeInto(spinOf(lengths.lengthEditor(0)), 20.0);  // 20 + 70 > 25 + 45: non-Grashof
-  CHECK(doc.design().lengths.frame == 20.0);
-  CHECK(doc.analysis().grashof.category == kinematics::GrashofClass::TripleRocker);
+  CHECK(doc.fourBar()->lengths.frame == 20.0);
+  CHECK(doc.analysis().grashof->category == kinematics::GrashofClass::TripleRocker);
   CHECK(analysis.grashofText().contains("Triple-rocker"));
   doc.undoStack()->undo();
-  CHECK(doc.design().lengths.frame == 60.0);
+  CHECK(doc.fourBar()->lengths.frame == 60.0);
   CHECK(spinOf(lengths.lengthEditor(0))->value() == 60.0);
 }
 
@@ -50,9 +50,9 @@ TEST_CASE("a length that cannot be assembled is refused, shown, and the editor s
   ui::MechanismDocument doc;
   ui::LengthsPanel lengths(&doc);
   lengths.show();
-  const kinematics::FourBarDesign before = doc.design();
+  const kinematics::FourBarDesign before = *doc.fourBar();
   typeInto(spinOf(lengths.lengthEditor(0)), 900.0);
-  CHECK(doc.design() == before);
+  CHECK(*doc.fourBar() == before);
   CHECK(lengths.refusalMessage().contains("cannot be assembled at any crank angle"));
   CHECK(spinOf(lengths.lengthEditor(0))->value() == 60.0);
 }
@@ -63,15 +63,15 @@ TEST_CASE("the branch box switches the assembly branch, undoably", "[ui][panels]
   ui::Settings settings;
   ui::MotionPanel motion(&doc, &animator, &settings);
   motion.branchBox()->setCurrentIndex(1);
-  CHECK(doc.design().branch == kinematics::Branch::Crossed);
+  CHECK(doc.fourBar()->branch == kinematics::Branch::Crossed);
   doc.undoStack()->undo();
-  CHECK(doc.design().branch == kinematics::Branch::Open);
+  CHECK(doc.fourBar()->branch == kinematics::Branch::Open);
   CHECK(motion.branchBox()->currentIndex() == 0);
 }
 
 TEST_CASE("a non-Grashof crank rocks between the ends of its range", "[ui][animation]") {
   ui::MechanismDocument doc;
-  kinematics::FourBarDesign d = doc.design();
+  kinematics::FourBarDesign d = *doc.fourBar();
   d.lengths = {40, 30, 20, 25};  // |θ2| ≤ 78.58°
   d.omega = 1.0;
   REQUIRE_FALSE(doc.edit(d, "lengths").has_value());

@@ -12,6 +12,7 @@ inline constexpr QColor kCouplerColor{49, 130, 189};
 inline constexpr QColor kRockerColor{49, 163, 84};
 inline constexpr QColor kCouplerPointColor{117, 107, 177};
 inline constexpr QColor kCouplerFillColor{49, 130, 189, 45};
+inline constexpr int kBodyFillAlpha = 45;
 inline constexpr QColor kFrameColor{90, 90, 90};
 inline constexpr QColor kPinOutlineColor{40, 40, 40};
 inline constexpr QColor kPinFillColor{255, 255, 255};
@@ -43,11 +44,13 @@ inline constexpr double kLabelPointSize = 9.0;
 /// Stacking order, back to front.
 namespace z {
 inline constexpr double kFrame = 0;
+inline constexpr double kSlideway = 0.5;
 inline constexpr double kRange = 1;
 inline constexpr double kPath = 2;
 inline constexpr double kCouplerTriangle = 3;
 inline constexpr double kLinks = 4;
 inline constexpr double kGround = 5;
+inline constexpr double kBlocks = 5.5;
 inline constexpr double kPins = 6;
 inline constexpr double kArrows = 7;
 inline constexpr double kLabels = 8;

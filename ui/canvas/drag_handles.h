@@ -1,28 +1,40 @@
 #pragma once
-// The handles the canvas offers for dragging, in picking order (moving joints before ground
-// pivots, so a pin over a pivot wins), with the point each one sits on, its undo merge key,
-// its name in "Move C" and its status-bar hint.
+// The handles the canvas offers for dragging: which points have one, in picking order
+// (points on links, then moving joints, then ground pivots, so a pin over a pivot wins), with
+// each one's undo merge key, its name in "Move C" and its status-bar hint. A four-bar keeps
+// its named handles (O2, O4, B, C, P), whose drags the core's dragFourBar understands.
+
+#include "ui/canvas/mechanism_drawing.h"
 
 #include "kinematics/model/design_edit.h"
 #include "kinematics/model/ids.h"
+#include "kinematics/model/mechanism_design.h"
 
 #include <QString>
 
-#include <array>
+#include <optional>
+#include <vector>
 
 namespace linkwright::ui {
 
-inline constexpr std::array<kinematics::FourBarHandle, 5> kDragHandles{
-    kinematics::FourBarHandle::CouplerPoint, kinematics::FourBarHandle::C, kinematics::FourBarHandle::B,
-    kinematics::FourBarHandle::O4, kinematics::FourBarHandle::O2};
-
-/// The mechanism point the handle sits on.
+/// The mechanism point a four-bar handle sits on.
 kinematics::PointId handlePoint(kinematics::FourBarHandle handle);
-/// The merge key (edit_design_command.h) of this handle's drags.
+/// The four-bar handle on `point` of a four-bar's mechanism.
+std::optional<kinematics::FourBarHandle> fourBarHandleOn(kinematics::PointId point);
+/// The merge key (edit_design_command.h) of a four-bar handle's drags.
 int handleMergeKey(kinematics::FourBarHandle handle);
 /// The point's symbol: "O₂", "O₄", "B", "C", "P".
 QString handleName(kinematics::FourBarHandle handle);
 /// What dragging it does, for the status bar.
 QString handleHint(kinematics::FourBarHandle handle);
+
+/// The points with a handle, in picking order.
+std::vector<kinematics::PointId> draggablePoints(const DrawingPlan& plan);
+/// The merge key of drags of `point` in `design`.
+int dragMergeKey(const kinematics::Design& design, kinematics::PointId point);
+/// The point's name as drawn ("O₂", "E").
+QString dragPointName(const kinematics::Mechanism& mechanism, kinematics::PointId point);
+/// What dragging `point` does, for the status bar.
+QString dragHint(const kinematics::Design& design, const kinematics::Mechanism& mechanism, kinematics::PointId point);
 
 } // namespace linkwright::ui

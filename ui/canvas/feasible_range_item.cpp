@@ -68,8 +68,12 @@ FeasibleRangeItem::FeasibleRangeItem(QGraphicsItem* parent) : QGraphicsItem(pare
   m_label->setPlacement(QPointF(0.0, 0.0), Qt::AlignHCenter | Qt::AlignVCenter);
 }
 
-void FeasibleRangeItem::setRange(const k::InputRange& range, const QPointF& centre, double radius) {
+void FeasibleRangeItem::setRange(const k::InputRange& inputs, const QPointF& centre, double radius, double phase) {
   prepareGeometryChange();
+  // The crank points at input angle + phase: the arcs are drawn where it points, the label
+  // gives input angles.
+  k::InputRange range = inputs;
+  for (k::AngleRange& r : range.ranges) r = {r.from + phase, r.to + phase};
   m_feasibleArcs = {};
   m_infeasibleSectors = {};
   m_infeasibleArcs = {};
@@ -94,7 +98,7 @@ void FeasibleRangeItem::setRange(const k::InputRange& range, const QPointF& cent
   m_bounds = QRectF(centre - QPointF(r, r), centre + QPointF(r, r));
 
   QStringList parts;
-  for (const k::AngleRange& rr : range.ranges) parts << tr("%1 to %2").arg(degrees(rr.from), degrees(rr.to));
+  for (const k::AngleRange& rr : inputs.ranges) parts << tr("%1 to %2").arg(degrees(rr.from), degrees(rr.to));
   m_label->setText(parts.isEmpty() ? tr("crank cannot be assembled at any angle")
                                    : tr("crank can reach %1").arg(parts.join(tr(" and "))));
   // The label goes where the crank never is: inside the widest unreachable sector, which is

@@ -21,8 +21,9 @@ public:
   explicit FeasibleRangeItem(QGraphicsItem* parent = nullptr);
 
   /// Shows `range` around `centre` (the crank pivot, scene coordinates) at `radius` (the crank
-  /// length). Angles in rad, counter-clockwise from +x, as the core gives them.
-  void setRange(const kinematics::InputRange& range, const QPointF& centre, double radius);
+  /// length). Angles in rad, counter-clockwise from +x, as the core gives them; the crank
+  /// points at input angle + `phase` (rad, the crank tip's phase).
+  void setRange(const kinematics::InputRange& range, const QPointF& centre, double radius, double phase = 0.0);
   void setPresentationScale(double factor);
   /// The sentence shown next to the arc.
   QString labelText() const;

@@ -1,19 +1,23 @@
 #pragma once
-// The items that draw a four-bar, in model units with y up: the frame line, the crank's
-// feasible range, the coupler path, the coupler triangle, the three links, the ground pivots,
-// the joints, the rate arrows and their labels. It reads the document and nothing else: on a
-// design change it rebuilds what depends on the design (path, range, arrow scales, bounds),
-// on motion it only moves items. LinkageView shows it and turns mouse input into edits.
+// The scene that draws the document's linkage, in model units with y up: the mechanism's
+// items (mechanism_items.h: bars, plates, slotted links, slideways and blocks, supports, pins,
+// names, traced paths), the crank's feasible range when it cannot turn fully, the rate arrows
+// and the message a refused drag shows. It reads the document and nothing else: on a design
+// change it rebuilds what depends on the design (items when the structure changed, paths,
+// ranges, arrow scales, bounds), on motion it only moves items. LinkageView shows it and turns
+// mouse input into edits.
+
+#include "ui/canvas/mechanism_drawing.h"
 
 #include "kinematics/model/design_edit.h"
 #include "kinematics/model/ids.h"
 
 #include <QGraphicsScene>
 
-#include <array>
+#include <memory>
 #include <optional>
+#include <vector>
 
-class QGraphicsLineItem;
 class QGraphicsPolygonItem;
 
 namespace linkwright::ui {
@@ -21,16 +25,19 @@ namespace linkwright::ui {
 class ArrowItem;
 class CouplerPathItem;
 class FeasibleRangeItem;
-class GroundPivotItem;
-class JointHandleItem;
 class LabelItem;
 class LinkItem;
 class MechanismDocument;
+class MechanismItems;
+class SliderBlockItem;
+class SlidewayItem;
+class SlottedLinkItem;
 
 class LinkageScene : public QGraphicsScene {
   Q_OBJECT
 public:
   explicit LinkageScene(QObject* parent = nullptr);
+  ~LinkageScene() override;
 
   /// Rebuilds everything from `document` (after a Design or Request change).
   void updateDesign(const MechanismDocument& document);
@@ -47,22 +54,33 @@ public:
   /// The larger side of contentBounds(), never zero.
   double linkageSize() const;
 
-  /// Where `handle` is drawn now (scene units); nullopt for P when there is no coupler point.
+  /// The points that have a drag handle, in picking order.
+  const std::vector<kinematics::PointId>& handlePoints() const { return m_handlePoints; }
+  /// Where the handle on `point` is drawn now (scene units); nullopt if it has none.
+  std::optional<QPointF> handlePosition(kinematics::PointId point) const;
   std::optional<QPointF> handlePosition(kinematics::FourBarHandle handle) const;
   /// Highlights one handle (or none).
-  void setHotHandle(std::optional<kinematics::FourBarHandle> handle);
+  void setHotHandle(std::optional<kinematics::PointId> point);
 
   /// A boxed message next to `scenePos` (why a drag was refused), until hideMessage().
   void showMessage(const QPointF& scenePos, const QString& text);
   void hideMessage();
 
-  /// Read access for the view's tests and for export.
+  /// Read access for the view's tests and for export. Null where the item does not exist.
+  const DrawingPlan& plan() const;
+  const QGraphicsItem* handleItem(kinematics::PointId point) const;
   const QGraphicsItem* handleItem(kinematics::FourBarHandle handle) const;
   const LinkItem* linkItem(kinematics::LinkId link) const;
+  const SlottedLinkItem* slottedLinkItem(kinematics::LinkId link) const;
+  const QGraphicsPolygonItem* bodyItem(kinematics::LinkId link) const;
+  const QGraphicsPolygonItem* couplerTriangleItem() const;
+  const CouplerPathItem* pathItem(kinematics::PointId point) const;
+  const LabelItem* pointLabel(kinematics::PointId point) const;
+  /// The block and slideway of the slider on `joint` (its first guide for a PRP pin).
+  const SliderBlockItem* sliderBlock(kinematics::PointId joint) const;
+  const SlidewayItem* slideway(kinematics::PointId joint) const;
   const FeasibleRangeItem* feasibleRangeItem() const { return m_range; }
-  const CouplerPathItem* couplerPathItem() const { return m_path; }
-  const QGraphicsPolygonItem* couplerTriangleItem() const { return m_couplerTriangle; }
-  /// Arrows at B, C and P; nullptr for other points.
+  /// Arrows at every moving point; nullptr for ground pivots.
   const ArrowItem* velocityArrow(kinematics::PointId point) const;
   const ArrowItem* accelerationArrow(kinematics::PointId point) const;
   const LabelItem* messageItem() const { return m_message; }
@@ -71,31 +89,20 @@ public:
   double accelerationScale() const { return m_accelerationScale; }
 
 private:
-  static constexpr std::size_t kArrowPoints = 3;  // B, C, P
+  void rebuildArrows(std::size_t points);
   void updateArrows(const MechanismDocument& document);
   void computeBounds(const MechanismDocument& document);
   void computeArrowScales(const MechanismDocument& document);
-  static int arrowSlot(kinematics::PointId point);
+  std::optional<std::size_t> sliderIndex(kinematics::PointId joint) const;
 
-  QGraphicsLineItem* m_frame;
+  std::unique_ptr<MechanismItems> m_items;
+  std::vector<kinematics::PointId> m_handlePoints;
   FeasibleRangeItem* m_range;
-  CouplerPathItem* m_path;
-  QGraphicsPolygonItem* m_couplerTriangle;
-  LinkItem* m_crank;
-  LinkItem* m_coupler;
-  LinkItem* m_rocker;
-  GroundPivotItem* m_groundO2;
-  GroundPivotItem* m_groundO4;
-  JointHandleItem* m_pinB;
-  JointHandleItem* m_pinC;
-  JointHandleItem* m_dotP;
-  std::array<LabelItem*, 5> m_pointLabels{};  // O2, O4, B, C, P
-  std::array<ArrowItem*, kArrowPoints> m_velocityArrows{};
-  std::array<ArrowItem*, kArrowPoints> m_accelerationArrows{};
+  std::vector<ArrowItem*> m_velocityArrows;      // per point; null for ground pivots
+  std::vector<ArrowItem*> m_accelerationArrows;
   LabelItem* m_message;
 
   QRectF m_bounds;
-  bool m_hasCouplerPoint = false;
   bool m_showVelocity = false;
   bool m_showAcceleration = false;
   double m_velocityScale = 0.0;

@@ -1,6 +1,7 @@
 #include "ui/canvas/linkage_view.h"
 
 #include "ui/canvas/canvas_style.h"
+#include "ui/canvas/design_drag.h"
 #include "ui/canvas/drag_handles.h"
 #include "ui/canvas/grid_painter.h"
 #include "ui/canvas/label_item.h"
@@ -17,7 +18,6 @@
 namespace linkwright::ui {
 
 namespace k = kinematics;
-using kinematics::FourBarHandle;
 
 namespace {
 
@@ -141,10 +141,10 @@ void LinkageView::ensureSceneRect(bool force) {
 
 QPointF LinkageView::sceneAt(const QPointF& viewportPos) const { return viewportTransform().inverted().map(viewportPos); }
 
-std::optional<FourBarHandle> LinkageView::handleAt(const QPointF& viewportPos) const {
-  std::optional<FourBarHandle> best;
+std::optional<k::PointId> LinkageView::handleAt(const QPointF& viewportPos) const {
+  std::optional<k::PointId> best;
   double bestDistance = canvas::kPickRadiusPx * m_presentationScale;
-  for (const FourBarHandle handle : kDragHandles) {
+  for (const k::PointId handle : m_scene->handlePoints()) {
     const std::optional<QPointF> at = m_scene->handlePosition(handle);
     if (!at) continue;
     const double distance = QLineF(viewportTransform().map(*at), viewportPos).length();
@@ -182,7 +182,7 @@ void LinkageView::scrollByPixels(const QPointF& delta) {
 void LinkageView::drawBackground(QPainter* painter, const QRectF& rect) {
   painter->fillRect(rect, Qt::white);
   const QRectF visible = viewportTransform().inverted().mapRect(QRectF(viewport()->rect()));
-  paintGrid(painter, rect, visible, QString::fromStdString(m_document->design().lengthUnit), m_presentationScale);
+  paintGrid(painter, rect, visible, QString::fromStdString(m_document->lengthUnit()), m_presentationScale);
 }
 
 void LinkageView::wheelEvent(QWheelEvent* event) {
@@ -271,42 +271,43 @@ void LinkageView::resizeEvent(QResizeEvent* event) {
 }
 
 void LinkageView::updateHover(const QPointF& viewportPos) {
-  const std::optional<FourBarHandle> handle = handleAt(viewportPos);
+  const std::optional<k::PointId> handle = handleAt(viewportPos);
   m_scene->setHotHandle(handle);
   if (handle) viewport()->setCursor(Qt::OpenHandCursor);
   else viewport()->unsetCursor();
-  if (handle != m_hover) emit statusMessage(handle ? handleHint(*handle) : QString());
+  if (handle != m_hover)
+    emit statusMessage(handle ? dragHint(m_document->design(), m_document->mechanism(), *handle) : QString());
   m_hover = handle;
 }
 
-void LinkageView::startDrag(FourBarHandle handle, const QPointF& viewportPos) {
+void LinkageView::startDrag(k::PointId point, const QPointF& viewportPos) {
   m_gesture = Gesture::Drag;
-  m_dragHandle = handle;
-  m_grabOffset = *m_scene->handlePosition(handle) - sceneAt(viewportPos);
+  m_dragPoint = point;
+  m_grabOffset = *m_scene->handlePosition(point) - sceneAt(viewportPos);
   m_lastPointer = viewportPos;
   m_lastRefusal.clear();
   ++m_dragCount;
-  m_scene->setHotHandle(handle);
+  m_scene->setHotHandle(point);
   viewport()->setCursor(Qt::ClosedHandCursor);
-  emit statusMessage(handleHint(handle));
+  emit statusMessage(dragHint(m_document->design(), m_document->mechanism(), point));
 }
 
 void LinkageView::dragTo(const QPointF& viewportPos) {
   m_lastPointer = viewportPos;
   const Eigen::Vector2d target = toEigen(sceneAt(viewportPos) + m_grabOffset);
-  const k::Result<k::DragOutcome> outcome = k::dragFourBar(m_document->design(), m_document->crankAngle(), m_dragHandle, target);
+  const k::Result<DesignDrag> outcome = dragDesign(*m_document, m_dragPoint, target);
   if (!outcome) {
     refuse(QString::fromStdString(outcome.error().message), viewportPos);
     return;
   }
-  const int mergeKey = handleMergeKey(m_dragHandle) * kDragsPerKey + m_dragCount % kDragsPerKey;
-  if (const auto why = m_document->edit(outcome->design, tr("Move %1").arg(handleName(m_dragHandle)), mergeKey,
-                                        outcome->crankAngle)) {
+  const int mergeKey = dragMergeKey(m_document->design(), m_dragPoint) * kDragsPerKey + m_dragCount % kDragsPerKey;
+  const QString name = dragPointName(m_document->mechanism(), m_dragPoint);
+  if (const auto why = m_document->edit(outcome->design, tr("Move %1").arg(name), mergeKey, outcome->crankAngle)) {
     refuse(*why, viewportPos);
     return;
   }
-  // The frame was re-anchored at the new O2: scroll so the rest of the drawing stays put.
-  if (m_dragHandle == FourBarHandle::O2) scrollByPixels(QPointF(-outcome->originShift * pixelsPerUnit(), 0.0));
+  // A four-bar's frame was re-anchored at the new O2: scroll so the rest of the drawing stays put.
+  if (outcome->originShift != 0.0) scrollByPixels(QPointF(-outcome->originShift * pixelsPerUnit(), 0.0));
   m_scene->hideMessage();
   m_lastRefusal.clear();
 }

@@ -1,17 +1,17 @@
 #pragma once
 // The linkage canvas: a QGraphicsView over a LinkageScene in model units, y up (the view
 // flips y). It draws a scale grid behind the linkage, zooms with the wheel about the cursor,
-// pans by dragging the background (left or middle button), and turns drags of O2, O4, B, C
-// and P into document edits through the core's dragFourBar, one undo step per drag. An edit
-// the core or the document refuses changes nothing; the reason is shown next to the cursor
-// and emitted as editRefused.
+// pans by dragging the background (left or middle button), and turns drags of the points
+// into document edits through the core (dragFourBar for a four-bar, dragPoint for any other
+// linkage: design_drag.h), one undo step per drag. An edit the core or the document refuses
+// changes nothing; the reason is shown next to the cursor and emitted as editRefused.
 //
 // Fitting: the view fits the drawing when first shown, on resize until the user zooms or
 // pans, after fitToView(), and after a document reset (File ▸ New / Open / Examples, seen as
 // one Design|File change). Dragging O2 re-anchors the frame at O2; the view scrolls by the
 // core's originShift so that O4 and the rest of the drawing stay where they were on screen.
 
-#include "kinematics/model/design_edit.h"
+#include "kinematics/model/ids.h"
 #include "ui/document/mechanism_document.h"
 
 #include <QGraphicsView>
@@ -30,7 +30,7 @@ public:
   /// The scene (model units, y up). Its sceneRect() is the drawing with a margin; draw it
   /// with renderLinkage(), which flips y, rather than QGraphicsScene::render().
   QGraphicsScene* linkageScene() const;
-  /// Arrows of v and a at B, C (and P), to a scale fixed per design; hidden at a toggle.
+  /// Arrows of v and a at every moving point, to a scale fixed per design; hidden at a toggle.
   void setShowVelocityArrows(bool show);
   void setShowAccelerationArrows(bool show);
   /// 1 normal; about 2 for presentation (thicker links, bigger pins and labels).
@@ -71,10 +71,10 @@ private:
 
   void onDocumentChanged(linkwright::ui::Changes what);
   QPointF sceneAt(const QPointF& viewportPos) const;
-  std::optional<kinematics::FourBarHandle> handleAt(const QPointF& viewportPos) const;
+  std::optional<kinematics::PointId> handleAt(const QPointF& viewportPos) const;
   void zoomAbout(const QPointF& viewportPos, double factor);
   void scrollByPixels(const QPointF& delta);
-  void startDrag(kinematics::FourBarHandle handle, const QPointF& viewportPos);
+  void startDrag(kinematics::PointId point, const QPointF& viewportPos);
   void dragTo(const QPointF& viewportPos);
   void refuse(const QString& reason, const QPointF& viewportPos);
   void updateHover(const QPointF& viewportPos);
@@ -86,13 +86,13 @@ private:
   bool m_autoFit = true;
   Gesture m_gesture = Gesture::None;
   Qt::MouseButton m_gestureButton = Qt::NoButton;
-  kinematics::FourBarHandle m_dragHandle = kinematics::FourBarHandle::B;
+  kinematics::PointId m_dragPoint;
   QPointF m_grabOffset;      // handle minus pointer (scene units), fixed for one drag
   QPointF m_lastPointer;     // viewport pixels, last pan or drag position
   QPointF m_scrollResidue;   // sub-pixel remainder of programmatic scrolling
   int m_dragCount = 0;       // makes each drag its own undo step
   QString m_lastRefusal;
-  std::optional<kinematics::FourBarHandle> m_hover;
+  std::optional<kinematics::PointId> m_hover;
 };
 
 } // namespace linkwright::ui

@@ -17,7 +17,7 @@ constexpr qint64 kMaxDocumentBytes = 16 * 1024 * 1024;
 
 } // namespace
 
-std::optional<QString> loadDesignFile(const QString& path, kinematics::FourBarDesign& design) {
+std::optional<QString> loadDesignFile(const QString& path, kinematics::Design& design) {
   const QString name = QFileInfo(path).fileName();
   QFile file(path);
   if (!file.exists()) return tr("Cannot open %1: the file does not exist.").arg(name);
@@ -38,7 +38,7 @@ std::optional<QString> saveFileAtomically(const QString& path, const QByteArray&
   return std::nullopt;
 }
 
-std::optional<QString> saveDesignFile(const QString& path, const kinematics::FourBarDesign& design) {
+std::optional<QString> saveDesignFile(const QString& path, const kinematics::Design& design) {
   return saveFileAtomically(path, QByteArray::fromStdString(kinematics::io::writeDocument(design)));
 }
 

@@ -3,7 +3,7 @@
 // with the same merge key (the moves of one drag, the steps of one slider) merge into a
 // single undo step, keeping the first "before" and the last "after".
 
-#include "kinematics/model/design.h"
+#include "kinematics/model/mechanism_design.h"
 
 #include <QUndoCommand>
 
@@ -11,9 +11,9 @@ namespace linkwright::ui {
 
 class MechanismDocument;
 
-/// A design and the crank angle (rad) it is shown at.
+/// A design (four-bar or any linkage) and the crank angle (rad) it is shown at.
 struct DesignState {
-  kinematics::FourBarDesign design;
+  kinematics::Design design;
   double crankAngle = 0.0;
 };
 
@@ -34,7 +34,8 @@ private:
   int m_mergeKey;
 };
 
-/// Merge keys of the continuous edits; each drag handle and slider has its own.
+/// Merge keys of the continuous edits; each drag handle and slider has its own. Callers
+/// multiply a key by 1000 and add a serial number, so two drags stay two undo steps.
 namespace merge {
 inline constexpr int kDragO2 = 1;
 inline constexpr int kDragO4 = 2;
@@ -47,6 +48,10 @@ inline constexpr int kCouplerLength = 12;
 inline constexpr int kRockerLength = 13;
 inline constexpr int kSpeed = 20;
 inline constexpr int kAlpha = 21;
+/// A dimension field of any linkage: kDimension + field number (dimensions panel).
+inline constexpr int kDimension = 100;
+/// A drag of point i of any linkage: kDragPoint + i.
+inline constexpr int kDragPoint = 1000;
 } // namespace merge
 
 } // namespace linkwright::ui

@@ -4,26 +4,43 @@
 
 #include "kinematics/solve/pose_solver.h"
 
-
 namespace linkwright::ui {
 
 namespace k = kinematics;
 
+namespace {
+
+// Any linkage other than a four-bar has no closed-form range: it must assemble at one sample
+// of its grid at least, and the first failure says why it does not.
+std::optional<QString> refuseUnassemblable(const k::MechanismDesign& design) {
+  const auto swept = k::sweep(design.mechanism, k::designSweepSpec(design), {false, false});
+  if (!swept) return QString::fromStdString(swept.error().message);
+  for (std::size_t j = 0; j < swept->size(); ++j)
+    if (swept->assembled(j)) return std::nullopt;
+  const QString why = swept->firstFailure ? QString::fromStdString(*swept->firstFailure) : QString();
+  return MechanismDocument::tr("This linkage cannot be assembled at any crank angle: %1.").arg(why);
+}
+
+} // namespace
 
 MechanismDocument::MechanismDocument(QObject* parent) : QObject(parent) {
   rebuild();
   connect(&m_undo, &QUndoStack::cleanChanged, this, [this] { emit changed(Change::File); });
 }
 
-std::optional<QString> MechanismDocument::validate(const k::FourBarDesign& design) const {
+std::optional<QString> MechanismDocument::validate(const k::Design& design) const {
   if (auto e = k::checkDesign(design)) return QString::fromStdString(e->message);
-  if (k::fourBarInputRange(design.lengths).ranges.empty())
-    return tr("These lengths cannot be assembled at any crank angle: the coupler and rocker cannot "
-              "reach between the crank tip and the rocker pivot.");
-  return std::nullopt;
+  if (const auto* fourBar = std::get_if<k::FourBarDesign>(&design)) {
+    const k::InputRange range = k::fourBarInputRange(fourBar->lengths);
+    if (range.ranges.empty() && !range.fullRotation)
+      return tr("These lengths cannot be assembled at any crank angle: the coupler and rocker cannot "
+                "reach between the crank tip and the rocker pivot.");
+    return std::nullopt;
+  }
+  return refuseUnassemblable(std::get<k::MechanismDesign>(design));
 }
 
-std::optional<QString> MechanismDocument::edit(const k::FourBarDesign& design, const QString& description, int mergeKey,
+std::optional<QString> MechanismDocument::edit(const k::Design& design, const QString& description, int mergeKey,
                                                std::optional<double> crankAngleAfter) {
   if (auto why = validate(design)) return why;
   const double angleAfter = crankAngleAfter.value_or(m_crankAngle);
@@ -32,7 +49,7 @@ std::optional<QString> MechanismDocument::edit(const k::FourBarDesign& design, c
   return std::nullopt;
 }
 
-void MechanismDocument::applyDesign(const k::FourBarDesign& design, double crankAngle) {
+void MechanismDocument::applyDesign(const k::Design& design, double crankAngle) {
   m_design = design;
   m_crankAngle = crankAngle;
   rebuild();
@@ -54,7 +71,7 @@ void MechanismDocument::setRequest(const k::SolveRequest& request) {
   emit changed(Change::Request);
 }
 
-void MechanismDocument::reset(const k::FourBarDesign& design, const QString& filePath) {
+void MechanismDocument::reset(const k::Design& design, const QString& filePath) {
   m_undo.clear();
   m_design = design;
   m_filePath = filePath;
@@ -74,21 +91,19 @@ void MechanismDocument::markSaved() { m_undo.setClean(); }
 void MechanismDocument::rebuild() {
   // Designs reach here validated (edit/validate, or the document reader), so this builds.
   m_mechanism = k::buildMechanism(m_design).value();
-  m_analysis.grashof = k::classifyGrashof(m_design.lengths);
-  m_analysis.mobility = k::mobility(m_mechanism);
-  m_analysis.inputRange = k::fourBarInputRange(m_design.lengths);
-  m_analysis.transmission = k::fourBarTransmissionRange(m_design.lengths);
-  m_analysis.limits = k::fourBarLimitPositions(m_design.lengths, m_design.branch);
-  m_crankAngle = m_analysis.inputRange.clamp(m_crankAngle);
+  // Sized once per design: free points then start each solve from the last pose shown.
+  k::preparePose(m_mechanism, m_pose);
   resweep();
+  m_analysis = analyseDesign(m_design, m_mechanism, m_sweep);
+  m_crankAngle = m_analysis.inputRange.clamp(m_crankAngle);
   solvePoseNow();
 }
 
 void MechanismDocument::resweep() { m_sweep = k::sweep(m_mechanism, k::designSweepSpec(m_design), m_request).value(); }
 
 void MechanismDocument::solvePoseNow() {
-  k::preparePose(m_mechanism, m_pose);
-  const k::PoseReport report = k::solvePoseInto(m_mechanism, {m_crankAngle, m_design.omega, m_design.alpha}, {true, true}, m_pose);
+  const k::SweepSpec spec = k::designSweepSpec(m_design);
+  const k::PoseReport report = k::solvePoseInto(m_mechanism, {m_crankAngle, spec.omega, spec.alpha}, {true, true}, m_pose);
   m_poseStatus = report.status;
 }
 

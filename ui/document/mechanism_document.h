@@ -1,14 +1,12 @@
 #pragma once
-// The open document: owns the design (what is saved), the undo stack, the motion state (the
-// crank angle the canvas shows) and the solved results the views read. Every view re-reads it
-// when it emits changed(); views never solve anything themselves (STYLE.md, layering rule 2).
+// The open document: owns the design (what is saved: a parametric four-bar or any other
+// linkage), the undo stack, the motion state (the crank angle the canvas shows) and the
+// solved results the views read. Every view re-reads it when it emits changed(); views never
+// solve anything themselves (STYLE.md, layering rule 2).
 
-#include "kinematics/analysis/assembly_range.h"
-#include "kinematics/analysis/grashof.h"
-#include "kinematics/analysis/limit_positions.h"
-#include "kinematics/analysis/mobility.h"
-#include "kinematics/analysis/transmission.h"
-#include "kinematics/model/design.h"
+#include "ui/document/design_analysis.h"
+
+#include "kinematics/model/mechanism_design.h"
 #include "kinematics/solve/pose.h"
 #include "kinematics/solve/sweep.h"
 
@@ -30,22 +28,19 @@ enum class Change {
 Q_DECLARE_FLAGS(Changes, Change)
 Q_DECLARE_OPERATORS_FOR_FLAGS(Changes)
 
-/// Analysis results of the current design, recomputed with it.
-struct DesignAnalysis {
-  kinematics::GrashofReport grashof;
-  kinematics::MobilityReport mobility;
-  kinematics::InputRange inputRange;
-  std::optional<kinematics::TransmissionRange> transmission;
-  kinematics::LimitReport limits;
-};
-
 class MechanismDocument : public QObject {
   Q_OBJECT
 public:
   explicit MechanismDocument(QObject* parent = nullptr);
 
   /// The current design; valid and assemblable somewhere, always.
-  const kinematics::FourBarDesign& design() const { return m_design; }
+  const kinematics::Design& design() const { return m_design; }
+  /// The design if it is a parametric four-bar, else null.
+  const kinematics::FourBarDesign* fourBar() const { return std::get_if<kinematics::FourBarDesign>(&m_design); }
+  /// The design if it is any other linkage, else null.
+  const kinematics::MechanismDesign* linkage() const { return std::get_if<kinematics::MechanismDesign>(&m_design); }
+  /// The design's length unit ("mm").
+  const std::string& lengthUnit() const { return kinematics::designLengthUnit(m_design); }
   /// The solver mechanism built from design().
   const kinematics::Mechanism& mechanism() const { return m_mechanism; }
   const DesignAnalysis& analysis() const { return m_analysis; }
@@ -57,18 +52,18 @@ public:
   kinematics::PoseStatus poseStatus() const { return m_poseStatus; }
 
   /// Checks a candidate design: nullopt if it can be accepted, else why not (a sentence).
-  std::optional<QString> validate(const kinematics::FourBarDesign& design) const;
+  std::optional<QString> validate(const kinematics::Design& design) const;
 
   /// Replaces the design through the undo stack. `mergeKey` ≥ 0 merges consecutive edits
   /// with the same key into one undo step (a drag). `crankAngleAfter` (rad) also moves the
-  /// crank, undoably (dragging B does). Returns the refusal reason, if refused: then nothing
-  /// changes.
-  std::optional<QString> edit(const kinematics::FourBarDesign& design, const QString& description, int mergeKey = -1,
+  /// crank, undoably (dragging B of a four-bar does). Returns the refusal reason, if refused:
+  /// then nothing changes.
+  std::optional<QString> edit(const kinematics::Design& design, const QString& description, int mergeKey = -1,
                               std::optional<double> crankAngleAfter = std::nullopt);
 
   /// Replaces the design and crank angle without touching the undo stack (the undo command
   /// calls it). Emits one changed(Design | Motion).
-  void applyDesign(const kinematics::FourBarDesign& design, double crankAngle);
+  void applyDesign(const kinematics::Design& design, double crankAngle);
 
   /// Crank angle in rad. Clamped into the assemblable range.
   double crankAngle() const { return m_crankAngle; }
@@ -80,8 +75,9 @@ public:
 
   QUndoStack* undoStack() { return &m_undo; }
 
-  /// Starts afresh on `design` (File ▸ New, Examples, Open), clearing undo history.
-  void reset(const kinematics::FourBarDesign& design, const QString& filePath = {});
+  /// Starts afresh on `design` (File ▸ New, Examples, Open), clearing undo history. The
+  /// design must be valid (a template, an example or a file the reader accepted).
+  void reset(const kinematics::Design& design, const QString& filePath = {});
   QString filePath() const { return m_filePath; }
   void setFilePath(const QString& path);
   bool isModified() const { return !m_undo.isClean(); }
@@ -91,11 +87,11 @@ signals:
   void changed(linkwright::ui::Changes what);
 
 private:
-  void rebuild();       // mechanism, analysis, sweep, pose from m_design
+  void rebuild();       // mechanism, sweep, analysis, pose from m_design
   void resweep();       // sweep only (request changed)
   void solvePoseNow();  // pose at m_crankAngle
 
-  kinematics::FourBarDesign m_design;
+  kinematics::Design m_design;
   kinematics::Mechanism m_mechanism;
   DesignAnalysis m_analysis;
   kinematics::SweepResult m_sweep;

@@ -1,5 +1,6 @@
 #include "ui/panels/analysis_panel.h"
 
+#include "ui/document/design_templates.h"
 #include "ui/document/mechanism_document.h"
 
 #include "kinematics/model/units.h"
@@ -19,17 +20,27 @@ QString degrees(double radians, int decimals = 2) { return QString::number(k::ra
 
 QString className(k::GrashofClass c) {
   switch (c) {
-  case k::GrashofClass::CrankRocker: return QObject::tr("Crank-rocker");
-  case k::GrashofClass::DoubleCrank: return QObject::tr("Double-crank (drag link)");
-  case k::GrashofClass::DoubleRocker: return QObject::tr("Double-rocker");
-  case k::GrashofClass::ChangePoint: return QObject::tr("Change point");
-  case k::GrashofClass::TripleRocker: return QObject::tr("Triple-rocker (non-Grashof)");
+  case k::GrashofClass::CrankRocker: return AnalysisPanel::tr("Crank-rocker");
+  case k::GrashofClass::DoubleCrank: return AnalysisPanel::tr("Double-crank (drag link)");
+  case k::GrashofClass::DoubleRocker: return AnalysisPanel::tr("Double-rocker");
+  case k::GrashofClass::ChangePoint: return AnalysisPanel::tr("Change point");
+  case k::GrashofClass::TripleRocker: return AnalysisPanel::tr("Triple-rocker (non-Grashof)");
   }
   return {};
 }
 
-// Green for a Grashof linkage whose crank turns, amber for the rest.
-QString badgeColour(const k::GrashofReport& g) { return g.inputFullyRotates ? "#1b7f3b" : "#a15c00"; }
+QString badge(const QString& colour, const QString& text, const QString& note) {
+  return QString("<span style='background:%1; color:white; padding:3px; font-weight:bold'>&nbsp;%2&nbsp;</span>"
+                 " &nbsp;%3")
+      .arg(colour, text.toHtmlEscaped(), note.toHtmlEscaped());
+}
+
+QString rangesText(const std::vector<k::AngleRange>& ranges) {
+  QStringList parts;
+  for (const k::AngleRange& r : ranges)
+    parts << (r.from == r.to ? degrees(r.from, 1) : degrees(r.from, 1) + " … " + degrees(r.to, 1));
+  return parts.join(", ");
+}
 
 } // namespace
 
@@ -37,23 +48,26 @@ AnalysisPanel::AnalysisPanel(MechanismDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document), m_badge(new QLabel(this)), m_sums(new QLabel(this)),
       m_mobility(new QLabel(this)), m_range(new QLabel(this)), m_transmissionNow(new QLabel(this)),
       m_transmissionRange(new QLabel(this)), m_limits(new QLabel(this)), m_timeRatio(new QLabel(this)),
-      m_warning(new QLabel(this)) {
+      m_stroke(new QLabel(this)), m_notAssembled(new QLabel(this)), m_warning(new QLabel(this)) {
   auto* layout = new QVBoxLayout(this);
   auto* box = new QGroupBox(tr("Analysis"), this);
-  auto* form = new QFormLayout(box);
+  m_form = new QFormLayout(box);
   m_badge->setTextFormat(Qt::RichText);
-  form->addRow(m_badge);
-  form->addRow(tr("S + L, P + Q"), m_sums);
-  form->addRow(tr("Mobility"), m_mobility);
-  form->addRow(tr("Crank range"), m_range);
-  form->addRow(tr("Transmission μ"), m_transmissionNow);
-  form->addRow(tr("μ over cycle"), m_transmissionRange);
-  form->addRow(tr("Rocker limits"), m_limits);
-  form->addRow(tr("Time ratio"), m_timeRatio);
-  for (QLabel* l : {m_sums, m_range, m_transmissionRange, m_limits, m_timeRatio}) l->setWordWrap(true);
+  m_form->addRow(m_badge);
+  m_form->addRow(tr("S + L, P + Q"), m_sums);
+  m_form->addRow(tr("Mobility"), m_mobility);
+  m_form->addRow(tr("Crank range"), m_range);
+  m_form->addRow(tr("Transmission μ"), m_transmissionNow);
+  m_form->addRow(tr("μ over cycle"), m_transmissionRange);
+  m_form->addRow(tr("Rocker limits"), m_limits);
+  m_form->addRow(tr("Time ratio"), m_timeRatio);
+  m_form->addRow(tr("Ram stroke"), m_stroke);
+  m_form->addRow(tr("Not assembled"), m_notAssembled);
+  for (QLabel* l : {m_sums, m_range, m_transmissionNow, m_transmissionRange, m_limits, m_timeRatio, m_stroke, m_notAssembled})
+    l->setWordWrap(true);
   m_warning->setWordWrap(true);
   m_warning->setStyleSheet("color: #a15c00;");
-  form->addRow(m_warning);
+  m_form->addRow(m_warning);
   layout->addWidget(box);
   connect(document, &MechanismDocument::changed, this, [this](Changes what) {
     if (what & Change::Design) refreshDesign();
@@ -65,25 +79,34 @@ AnalysisPanel::AnalysisPanel(MechanismDocument* document, QWidget* parent)
 
 QString AnalysisPanel::grashofText() const { return m_badge->text(); }
 QString AnalysisPanel::transmissionNowText() const { return m_transmissionNow->text(); }
+QString AnalysisPanel::timeRatioText() const { return m_form->isRowVisible(m_timeRatio) ? m_timeRatio->text() : QString(); }
+QString AnalysisPanel::strokeText() const { return m_form->isRowVisible(m_stroke) ? m_stroke->text() : QString(); }
+QString AnalysisPanel::notAssembledText() const {
+  return m_form->isRowVisible(m_notAssembled) ? m_notAssembled->text() : QString();
+}
+QString AnalysisPanel::mobilityText() const { return m_mobility->text(); }
 
 void AnalysisPanel::refreshDesign() {
   const DesignAnalysis& a = m_document->analysis();
-  const QString unit = QString::fromStdString(m_document->design().lengthUnit);
-  const k::GrashofReport& g = a.grashof;
-  m_badge->setText(QString("<span style='background:%1; color:white; padding:3px; font-weight:bold'>&nbsp;%2&nbsp;</span>"
-                           " &nbsp;shortest: %3")
-                       .arg(badgeColour(g), className(g.category), QString::fromUtf8(k::toString(g.shortest).data())));
-  const QString relation = g.category == k::GrashofClass::ChangePoint ? "=" : (g.sPlusL < g.pPlusQ ? "<" : ">");
-  m_sums->setText(QString("%1 %2 %3 %4").arg(g.sPlusL, 0, 'g', 6).arg(relation).arg(g.pPlusQ, 0, 'g', 6).arg(unit));
   const k::MobilityReport& m = a.mobility;
   m_mobility->setText(tr("M = 3(%1 − 1) − 2·%2 − %3 = %4").arg(m.links).arg(m.fullJoints).arg(m.halfJoints).arg(m.mobility));
-  if (a.inputRange.fullRotation) {
-    m_range->setText(tr("full turn"));
-  } else {
-    QStringList parts;
-    for (const k::AngleRange& r : a.inputRange.ranges) parts << degrees(r.from, 1) + " … " + degrees(r.to, 1);
-    m_range->setText(parts.join(", ") + tr(" (rocks between the ends)"));
-  }
+  if (a.inputRange.fullRotation) m_range->setText(tr("full turn"));
+  else m_range->setText(rangesText(a.inputRange.ranges) + tr(" (rocks between the ends)"));
+  const bool fourBar = m_document->fourBar() != nullptr;
+  for (QLabel* row : {m_sums, m_transmissionRange, m_limits}) m_form->setRowVisible(row, fourBar);
+  if (fourBar) refreshFourBar();
+  else refreshLinkage();
+}
+
+void AnalysisPanel::refreshFourBar() {
+  const DesignAnalysis& a = m_document->analysis();
+  const QString unit = QString::fromStdString(m_document->lengthUnit());
+  const k::GrashofReport& g = *a.grashof;
+  // Green for a Grashof linkage whose crank turns, amber for the rest.
+  m_badge->setText(badge(g.inputFullyRotates ? "#1b7f3b" : "#a15c00", className(g.category),
+                         tr("shortest: %1").arg(QString::fromUtf8(k::toString(g.shortest).data()))));
+  const QString relation = g.category == k::GrashofClass::ChangePoint ? "=" : (g.sPlusL < g.pPlusQ ? "<" : ">");
+  m_sums->setText(QString("%1 %2 %3 %4").arg(g.sPlusL, 0, 'g', 6).arg(relation).arg(g.pPlusQ, 0, 'g', 6).arg(unit));
   if (a.transmission)
     m_transmissionRange->setText(tr("%1 … %2 (worst %3 from 90°)")
                                      .arg(degrees(a.transmission->minimum, 1), degrees(a.transmission->maximum, 1),
@@ -96,13 +119,49 @@ void AnalysisPanel::refreshDesign() {
                                                 .arg(*a.limits.timeRatio, 0, 'f', 4)
                                                 .arg(degrees(*a.limits.slowStrokeCrankArc, 1), degrees(*a.limits.quickStrokeCrankArc, 1))
                                           : tr("—"));
+  m_form->setRowVisible(m_timeRatio, true);
+  m_form->setRowVisible(m_stroke, false);
+  m_form->setRowVisible(m_notAssembled, false);
+}
+
+void AnalysisPanel::refreshLinkage() {
+  const DesignAnalysis& a = m_document->analysis();
+  const QString unit = QString::fromStdString(m_document->lengthUnit());
+  m_badge->setText(badge("#3b5b92", kindDisplayName(m_document->design()),
+                         tr("%1 points, %2 moving links").arg(m_document->mechanism().points.size()).arg(m_document->mechanism().links.size())));
+  const auto& q = a.quickReturn;
+  m_form->setRowVisible(m_timeRatio, q.has_value());
+  m_form->setRowVisible(m_stroke, q.has_value());
+  if (q) {
+    m_timeRatio->setText(tr("%1 (strokes %2 / %3)")
+                             .arg(q->timeRatio, 0, 'f', 4)
+                             .arg(degrees(q->slowStrokeCrankArc, 1), degrees(q->quickStrokeCrankArc, 1)));
+    m_stroke->setText(QString("%1 %2").arg(q->stroke, 0, 'f', 2).arg(unit));
+  }
+  const auto& gaps = m_document->sweep().notAssembled;
+  m_form->setRowVisible(m_notAssembled, !gaps.empty());
+  m_notAssembled->setText(rangesText(gaps));
 }
 
 void AnalysisPanel::refreshMotion() {
   const k::Pose& pose = m_document->pose();
-  m_transmissionNow->setText(degrees(pose.transmissionAngle[k::fourbar::kC.index], 1));
+  const k::Mechanism& m = m_document->mechanism();
+  if (m_document->fourBar() != nullptr) {
+    m_transmissionNow->setText(degrees(pose.transmissionAngle[k::fourbar::kC.index], 1));
+  } else {
+    // One angle per dyad that has one (RRR and RRP joints), named by its joint.
+    QStringList parts;
+    for (std::size_t i = 0; i < m.points.size() && i < pose.transmissionAngle.size(); ++i) {
+      const auto& d = m.points[i].definition;
+      if (std::holds_alternative<k::RrrPoint>(d) || std::holds_alternative<k::RrpPoint>(d))
+        parts << QString("%1 %2").arg(QString::fromStdString(m.points[i].name), degrees(pose.transmissionAngle[i], 1));
+    }
+    m_transmissionNow->setText(parts.isEmpty() ? tr("—") : parts.join(", "));
+  }
   m_warning->setVisible(m_document->poseStatus() == k::PoseStatus::Singular);
-  m_warning->setText(tr("Toggle position: coupler and rocker are in line; ω and α are undefined here."));
+  m_warning->setText(m_document->fourBar() != nullptr
+                         ? tr("Toggle position: coupler and rocker are in line; ω and α are undefined here.")
+                         : tr("Toggle position: a dyad is stretched straight or folded; ω and α are undefined here."));
 }
 
 } // namespace linkwright::ui

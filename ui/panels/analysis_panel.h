@@ -1,10 +1,14 @@
 #pragma once
-// What the linkage is: a Grashof badge (class, S+L against P+Q, which link is shortest), the
-// mobility, the transmission angle now and over the cycle, the rocker's limit positions, the
-// time ratio, and the crank's assemblable range. All numbers come from the document.
+// What the linkage is. For a four-bar: a Grashof badge (class, S+L against P+Q, which link is
+// shortest), the transmission angle now and over the cycle, the rocker's limit positions and
+// the time ratio. For any other linkage: its kind, the transmission angle at each dyad joint,
+// a quick return's time ratio and stroke, and the crank angles where it cannot be assembled.
+// Always the mobility and the crank's range. All numbers come from the document; rows that
+// do not apply are hidden.
 
 #include <QWidget>
 
+class QFormLayout;
 class QLabel;
 
 namespace linkwright::ui {
@@ -18,12 +22,19 @@ public:
 
   QString grashofText() const;
   QString transmissionNowText() const;
+  QString timeRatioText() const;
+  QString strokeText() const;
+  QString notAssembledText() const;
+  QString mobilityText() const;
 
 private:
   void refreshDesign();
+  void refreshFourBar();
+  void refreshLinkage();
   void refreshMotion();
 
   MechanismDocument* m_document;
+  QFormLayout* m_form;
   QLabel* m_badge;
   QLabel* m_sums;
   QLabel* m_mobility;
@@ -32,6 +43,8 @@ private:
   QLabel* m_transmissionRange;
   QLabel* m_limits;
   QLabel* m_timeRatio;
+  QLabel* m_stroke;
+  QLabel* m_notAssembled;
   QLabel* m_warning;
 };
 

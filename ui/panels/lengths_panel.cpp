@@ -45,9 +45,14 @@ LengthsPanel::LengthsPanel(MechanismDocument* document, QWidget* parent)
   connect(m_along, &LengthEditor::edited, this, [this] { editCouplerPoint(); });
   connect(m_across, &LengthEditor::edited, this, [this] { editCouplerPoint(); });
   connect(document, &MechanismDocument::changed, this, [this](Changes what) {
+    const bool fourBar = m_document->fourBar() != nullptr;
+    // Back to a four-bar (undo after attaching a dyad): its sliders need ranges again.
+    if ((what & Change::Design) && fourBar && !m_hadFourBar) resetSliderRanges();
     if (what & Change::Design) refresh();
     if ((what & Change::File) && m_document->undoStack()->count() == 0) resetSliderRanges();
+    m_hadFourBar = fourBar;
   });
+  m_hadFourBar = m_document->fourBar() != nullptr;
   resetSliderRanges();
   refresh();
 }
@@ -55,7 +60,8 @@ LengthsPanel::LengthsPanel(MechanismDocument* document, QWidget* parent)
 QString LengthsPanel::refusalMessage() const { return m_message->isVisible() ? m_message->text() : QString(); }
 
 void LengthsPanel::refresh() {
-  const k::FourBarDesign& d = m_document->design();
+  if (m_document->fourBar() == nullptr) return;  // hidden: the dimensions panel edits other linkages
+  const k::FourBarDesign& d = *m_document->fourBar();
   const std::array<double, 4> values{d.lengths.frame, d.lengths.crank, d.lengths.coupler, d.lengths.rocker};
   const QString unit = QString::fromStdString(d.lengthUnit);
   for (std::size_t i = 0; i < 4; ++i) {
@@ -79,7 +85,8 @@ void LengthsPanel::refresh() {
 
 // Sliders span a fixed range per document so they do not jump while in use.
 void LengthsPanel::resetSliderRanges() {
-  const k::FourBarLengths& l = m_document->design().lengths;
+  if (m_document->fourBar() == nullptr) return;
+  const k::FourBarLengths& l = m_document->fourBar()->lengths;
   const double longest = std::max({l.frame, l.crank, l.coupler, l.rocker});
   for (LengthEditor* e : m_lengths) e->setSliderRange(0.02 * longest, 3.0 * longest);
   m_along->setSliderRange(-2.0 * longest, 2.0 * longest);
@@ -87,7 +94,8 @@ void LengthsPanel::resetSliderRanges() {
 }
 
 void LengthsPanel::editLength(int index, double value, bool final) {
-  k::FourBarDesign d = m_document->design();
+  if (m_document->fourBar() == nullptr) return;
+  k::FourBarDesign d = *m_document->fourBar();
   std::array<double*, 4> fields{&d.lengths.frame, &d.lengths.crank, &d.lengths.coupler, &d.lengths.rocker};
   *fields[static_cast<std::size_t>(index)] = value;
   static constexpr std::array<int, 4> keys{merge::kFrameLength, merge::kCrankLength, merge::kCouplerLength, merge::kRockerLength};
@@ -101,7 +109,8 @@ void LengthsPanel::editLength(int index, double value, bool final) {
 }
 
 void LengthsPanel::editCouplerPoint() {
-  k::FourBarDesign d = m_document->design();
+  if (m_document->fourBar() == nullptr) return;
+  k::FourBarDesign d = *m_document->fourBar();
   if (m_hasCouplerPoint->isChecked()) {
     // A new point starts at the coupler's middle.
     const double along = d.couplerPoint ? m_along->value() : d.lengths.coupler / 2.0;

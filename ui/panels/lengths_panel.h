@@ -1,6 +1,6 @@
 #pragma once
-// The side panel where lengths are typed or slid: frame, crank, coupler, rocker, and the
-// coupler point's offsets. Every change goes through the document (validated, undoable); a
+// The side panel where a four-bar's lengths are typed or slid: frame, crank, coupler, rocker,
+// and the coupler point's offsets (other linkages have the dimensions panel instead). Every change goes through the document (validated, undoable); a
 // refused change shows why and the editors snap back to the document's values.
 
 #include <QWidget>
@@ -39,7 +39,8 @@ private:
   LengthEditor* m_along;
   LengthEditor* m_across;
   QLabel* m_message;
-  int m_dragSerial = 0;  // separates consecutive slider drags into their own undo steps
+  int m_dragSerial = 0;
+  bool m_hadFourBar = true;  // separates consecutive slider drags into their own undo steps
 };
 
 } // namespace linkwright::ui

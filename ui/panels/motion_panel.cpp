@@ -2,6 +2,7 @@
 
 #include "ui/animation/crank_animator.h"
 #include "ui/document/edit_design_command.h"
+#include "ui/document/design_fields.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/settings.h"
 
@@ -35,6 +36,7 @@ MotionPanel::MotionPanel(MechanismDocument* document, CrankAnimator* animator, S
   auto* layout = new QVBoxLayout(this);
   auto* drive = new QGroupBox(tr("Drive"), this);
   auto* form = new QFormLayout(drive);
+  m_driveForm = form;
   auto* speedRow = new QHBoxLayout;
   m_speed->setRange(-1e5, 1e5);
   m_speed->setDecimals(4);
@@ -105,19 +107,23 @@ MotionPanel::MotionPanel(MechanismDocument* document, CrankAnimator* animator, S
 }
 
 void MotionPanel::refreshDesign() {
-  const k::FourBarDesign& d = m_document->design();
+  const k::Design& d = m_document->design();
   const bool rpm = m_speedUnit->currentIndex() == 0;
   {
     const QSignalBlocker block(m_speed);
     m_speed->setSuffix(rpm ? tr(" rpm") : tr(" rad/s"));
-    m_speed->setValue(rpm ? k::radPerSecToRpm(d.omega) : d.omega);
+    m_speed->setValue(rpm ? k::radPerSecToRpm(designOmega(d)) : designOmega(d));
   }
   {
     const QSignalBlocker block(m_alpha);
-    m_alpha->setValue(d.alpha);
+    m_alpha->setValue(designAlpha(d));
   }
+  // Other linkages choose a branch per joint, in the dimensions panel.
+  const k::FourBarDesign* fourBar = m_document->fourBar();
+  m_driveForm->setRowVisible(m_branch, fourBar != nullptr);
+  if (fourBar == nullptr) return;
   const QSignalBlocker block(m_branch);
-  m_branch->setCurrentIndex(d.branch == k::Branch::Open ? 0 : 1);
+  m_branch->setCurrentIndex(fourBar->branch == k::Branch::Open ? 0 : 1);
 }
 
 void MotionPanel::refreshMotion() {
@@ -130,20 +136,21 @@ void MotionPanel::refreshMotion() {
 }
 
 void MotionPanel::editSpeed() {
-  k::FourBarDesign d = m_document->design();
   const bool rpm = m_speedUnit->currentIndex() == 0;
-  d.omega = rpm ? k::rpmToRadPerSec(m_speed->value()) : m_speed->value();
+  const double omega = rpm ? k::rpmToRadPerSec(m_speed->value()) : m_speed->value();
+  const k::Design d = withShared(m_document->design(), [omega](auto& x) { x.omega = omega; });
   if (m_document->edit(d, tr("Change crank speed"), merge::kSpeed * 1000 + m_editSerial++ % 1000)) refreshDesign();
 }
 
 void MotionPanel::editAlpha() {
-  k::FourBarDesign d = m_document->design();
-  d.alpha = m_alpha->value();
+  const double alpha = m_alpha->value();
+  const k::Design d = withShared(m_document->design(), [alpha](auto& x) { x.alpha = alpha; });
   if (m_document->edit(d, tr("Change crank acceleration"), merge::kAlpha * 1000 + m_editSerial++ % 1000)) refreshDesign();
 }
 
 void MotionPanel::editBranch() {
-  k::FourBarDesign d = m_document->design();
+  if (m_document->fourBar() == nullptr) return;
+  k::FourBarDesign d = *m_document->fourBar();
   d.branch = m_branch->currentIndex() == 0 ? k::Branch::Open : k::Branch::Crossed;
   if (m_document->edit(d, tr("Switch assembly branch"))) refreshDesign();
 }

@@ -1,5 +1,5 @@
 #pragma once
-// Drive and motion controls: crank speed (rpm or rad/s) and acceleration, assembly branch,
+// Drive and motion controls: crank speed (rpm or rad/s) and acceleration, a four-bar's assembly branch,
 // play / pause, step forward and back by a chosen angle, loop, and the crank angle itself.
 
 #include <QWidget>
@@ -7,6 +7,7 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
 class QLabel;
 class QPushButton;
 class QSlider;
@@ -38,6 +39,7 @@ private:
   Settings* m_settings;
   QDoubleSpinBox* m_speed;
   QComboBox* m_speedUnit;
+  QFormLayout* m_driveForm = nullptr;
   QDoubleSpinBox* m_alpha;
   QComboBox* m_branch;
   QPushButton* m_play;

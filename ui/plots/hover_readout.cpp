@@ -15,16 +15,16 @@ QString formatReadoutNumber(double value) {
   return QString::number(value, 'f', decimals);
 }
 
-QString readoutText(PlotQuantity quantity, QPointF point, AngleUnit unit) {
-  const QuantityKind kind = quantityKind(quantity);
+QString readoutText(const PlotCurve& curve, QPointF point, AngleUnit unit, const QString& lengthUnit) {
+  const QuantityKind kind = quantityKind(curve.quantity);
   // Degrees read best with the degree sign right after the number, as in "at crank 90.0°".
   const bool degreeSign = unit == AngleUnit::Degrees;
   const QString value = kind == QuantityKind::Angle && degreeSign
                             ? formatReadoutNumber(point.y()) + QStringLiteral("°")
-                            : formatReadoutNumber(point.y()) + QLatin1Char(' ') + quantityUnit(kind, unit);
+                            : formatReadoutNumber(point.y()) + QLatin1Char(' ') + quantityUnit(kind, unit, lengthUnit);
   const QString crank = degreeSign ? QString::number(point.x(), 'f', 1) + QStringLiteral("°")
                                    : QString::number(point.x(), 'f', 3) + QLatin1Char(' ') + angleUnitSymbol(unit);
-  return HoverReadout::tr("%1 = %2 at crank %3").arg(quantityName(quantity), value, crank);
+  return HoverReadout::tr("%1 = %2 at crank %3").arg(curve.name, value, crank);
 }
 
 HoverReadout::HoverReadout(QWidget* parent) : QLabel(parent) {
@@ -33,13 +33,13 @@ HoverReadout::HoverReadout(QWidget* parent) : QLabel(parent) {
   clearPoint();
 }
 
-void HoverReadout::showPoint(PlotQuantity quantity, QPointF point, AngleUnit unit, bool inside) {
+void HoverReadout::showPoint(const PlotCurve& curve, QPointF point, AngleUnit unit, const QString& lengthUnit, bool inside) {
   if (!inside) {
     clearPoint();
     QToolTip::hideText();
     return;
   }
-  const QString text = readoutText(quantity, point, unit);
+  const QString text = readoutText(curve, point, unit, lengthUnit);
   setText(text);
   QToolTip::showText(QCursor::pos(), text, this);
 }

@@ -12,16 +12,16 @@ namespace linkwright::ui {
 
 /// `value` with about three significant digits (at least one decimal, at most six).
 QString formatReadoutNumber(double value);
-/// The read-out sentence for `point` (x = crank angle, y = value, in plot units).
-QString readoutText(PlotQuantity quantity, QPointF point, AngleUnit unit);
+/// The read-out sentence for `point` (x = crank angle, y = value, in plot units) on `curve`.
+QString readoutText(const PlotCurve& curve, QPointF point, AngleUnit unit, const QString& lengthUnit = QStringLiteral("mm"));
 
 class HoverReadout : public QLabel {
   Q_OBJECT
 public:
   explicit HoverReadout(QWidget* parent = nullptr);
 
-  /// Shows the read-out of `quantity` at `point`, or the idle hint if `inside` is false.
-  void showPoint(PlotQuantity quantity, QPointF point, AngleUnit unit, bool inside);
+  /// Shows the read-out of `curve` at `point`, or the idle hint if `inside` is false.
+  void showPoint(const PlotCurve& curve, QPointF point, AngleUnit unit, const QString& lengthUnit, bool inside);
   /// Back to the idle hint.
   void clearPoint();
 };

@@ -84,6 +84,16 @@ void LimitMarkers::setYSpan(double lo, double hi) {
   for (const auto& line : m_lines) line->setYSpan(lo, hi);
 }
 
+void LimitMarkers::raise() {
+  for (const auto& line : m_lines) line->raise();
+  const bool shown = m_points->isVisible();
+  m_chart->removeSeries(m_points);
+  m_chart->addSeries(m_points);
+  m_points->attachAxis(m_xAxis);
+  m_points->attachAxis(m_yAxis);
+  setSeriesShown(m_chart, m_points, shown, true);
+}
+
 QList<double> LimitMarkers::lineXs() const {
   QList<double> xs;
   for (const auto& line : m_lines)

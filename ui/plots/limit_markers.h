@@ -43,6 +43,8 @@ public:
   void setPositions(const QList<QPointF>& points, bool showPoints);
   /// The y extent of the lines (the value axis range).
   void setYSpan(double lo, double hi);
+  /// Puts the markers back on top of the chart's series and legend (after curves were added).
+  void raise();
 
   QScatterSeries* points() const { return m_points; }
   /// The x of every line shown, in order.

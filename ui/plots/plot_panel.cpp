@@ -1,5 +1,6 @@
 #include "ui/plots/plot_panel.h"
 
+#include "ui/document/design_fields.h"
 #include "ui/plots/axis_range.h"
 #include "ui/plots/hover_readout.h"
 #include "ui/plots/limit_markers.h"
@@ -9,17 +10,23 @@
 
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace linkwright::ui {
 namespace {
 
-constexpr std::array<QuantityKind, kQuantityKindCount> kKinds{QuantityKind::Angle, QuantityKind::Omega,
-                                                              QuantityKind::Alpha};
+constexpr std::array<QuantityKind, kQuantityKindCount> kKinds{QuantityKind::Angle,    QuantityKind::Omega,
+                                                              QuantityKind::Alpha,    QuantityKind::Position,
+                                                              QuantityKind::Velocity, QuantityKind::Acceleration};
 
 QString titleOf(QuantityKind kind) {
   switch (kind) {
   case QuantityKind::Angle: return PlotPanel::tr("Link angles");
   case QuantityKind::Omega: return PlotPanel::tr("Angular velocities");
   case QuantityKind::Alpha: return PlotPanel::tr("Angular accelerations");
+  case QuantityKind::Position: return PlotPanel::tr("Slider positions");
+  case QuantityKind::Velocity: return PlotPanel::tr("Slider velocities");
+  case QuantityKind::Acceleration: return PlotPanel::tr("Slider accelerations");
   }
   return {};
 }
@@ -35,9 +42,11 @@ PlotPanel::PlotPanel(MechanismDocument* document, QWidget* parent)
   layout->addWidget(m_selector);
   for (const QuantityKind kind : kKinds) {
     auto* view = new QuantityChartView(kind, titleOf(kind), this);
-    view->setMinimumHeight(160);
-    connect(view, &QuantityChartView::curveHovered, this,
-            [this](PlotQuantity q, QPointF p, bool inside) { m_readout->showPoint(q, p, m_unit, inside); });
+    // Small enough that six charts (a slider-crank) fit the window's height.
+    view->setMinimumHeight(110);
+    connect(view, &QuantityChartView::curveHovered, this, [this](PlotQuantity q, QPointF p, bool inside) {
+      if (const PlotCurve* c = curve(q)) m_readout->showPoint(*c, p, m_unit, QString::fromStdString(m_document->lengthUnit()), inside);
+    });
     connect(view, &QuantityChartView::resized, this, &PlotPanel::alignCharts);
     m_views[static_cast<std::size_t>(kind)] = view;
     layout->addWidget(view, 1);
@@ -48,6 +57,7 @@ PlotPanel::PlotPanel(MechanismDocument* document, QWidget* parent)
 
   connect(m_selector, &QuantitySelector::selectionChanged, this, &PlotPanel::onSelectionChanged);
   connect(m_document, &MechanismDocument::changed, this, &PlotPanel::onDocumentChanged);
+  refreshCurves();
   // Ask for exactly what the default selection shows, and plot it.
   applySelection();
 }
@@ -86,6 +96,15 @@ void PlotPanel::setSelection(const QuantitySelection& selection) { m_selector->s
 QuantityChartView* PlotPanel::chartView(QuantityKind kind) const { return m_views[static_cast<std::size_t>(kind)]; }
 
 void PlotPanel::onDocumentChanged(Changes what) {
+  if (what & Change::Design) {
+    // A new structure has new quantities; the request may need to change with them.
+    const std::vector<PlotCurve> before = m_curves;
+    refreshCurves();
+    if (m_curves != before && requestFor(selection(), m_curves) != m_document->request()) {
+      applySelection();
+      return;
+    }
+  }
   if (what & (Changes(Change::Design) | Change::Request))
     refreshData();
   else if (what & Change::Motion)
@@ -97,8 +116,24 @@ void PlotPanel::onSelectionChanged() {
   emit selectionChanged();
 }
 
+void PlotPanel::refreshCurves() {
+  std::vector<PlotCurve> curves = plotCurves(m_document->mechanism(), m_document->pose());
+  if (curves == m_curves && !m_curves.empty()) return;
+  const auto sameQuantities = [](const std::vector<PlotCurve>& a, const std::vector<PlotCurve>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                      [](const PlotCurve& x, const PlotCurve& y) { return x.quantity == y.quantity; });
+  };
+  // Another kind of linkage starts from its own defaults; renamed links keep the user's ticks.
+  const QuantitySelection selection = sameQuantities(curves, m_curves) ? m_selector->selection() : defaultSelection(curves);
+  m_curves = std::move(curves);
+  m_selector->setCurves(m_curves, selection);
+  for (QuantityChartView* view : m_views) view->setCurves(m_curves);
+  if (m_limits) m_limits->raise();  // last in the angle chart's legend, as "rocker limit" reads best
+  m_readout->clearPoint();
+}
+
 void PlotPanel::applySelection() {
-  const kinematics::SolveRequest wanted = requestFor(selection());
+  const kinematics::SolveRequest wanted = requestFor(selection(), m_curves);
   // A new request re-sweeps and comes back as Change::Request, which re-plots; otherwise
   // only the visibility changed and the current sweep serves.
   if (wanted != m_document->request())
@@ -108,18 +143,21 @@ void PlotPanel::applySelection() {
 }
 
 void PlotPanel::refreshData() {
-  const kinematics::FourBarDesign& design = m_document->design();
+  const kinematics::Design& design = m_document->design();
+  const double fromDeg = designFromDeg(design);
+  const double toDeg = designToDeg(design);
+  const QString lengthUnit = QString::fromStdString(m_document->lengthUnit());
   const kinematics::SweepResult& sweep = m_document->sweep();
   const QuantitySelection shown = selection();
   for (QuantityChartView* view : m_views) {
-    view->setVisible(shown.any(view->kind()));
-    view->setData(sweep, shown, m_unit, design.fromDeg, design.toDeg);
+    view->setVisible(shown.any(view->kind(), m_curves));
+    view->setData(sweep, shown, m_unit, fromDeg, toDeg, lengthUnit);
   }
   QuantityChartView* angles = chartView(QuantityKind::Angle);
   m_limits->setYSpan(angles->valueRange().min, angles->valueRange().max);
-  m_limits->setPositions(
-      limitMarkerPoints(m_document->analysis().limits, sweep, design.fromDeg, design.toDeg, m_unit),
-      shown.contains(PlotQuantity::RockerAngle));
+  // Limit positions are a four-bar's (empty otherwise), on its rocker's curve.
+  m_limits->setPositions(limitMarkerPoints(m_document->analysis().limits, sweep, fromDeg, toDeg, m_unit),
+                         m_document->fourBar() != nullptr && shown.contains(PlotQuantity::RockerAngle));
   refreshCursor();
   alignCharts();  // axis labels may have changed width
 }
@@ -132,9 +170,9 @@ void PlotPanel::alignCharts() {
 }
 
 void PlotPanel::refreshCursor() {
-  const kinematics::FourBarDesign& design = m_document->design();
+  const kinematics::Design& design = m_document->design();
   const std::optional<double> xDeg =
-      wrapIntoRange(kinematics::radToDeg(m_document->crankAngle()), design.fromDeg, design.toDeg);
+      wrapIntoRange(kinematics::radToDeg(m_document->crankAngle()), designFromDeg(design), designToDeg(design));
   const std::optional<double> x =
       xDeg ? std::optional<double>(toAngleUnit(kinematics::degToRad(*xDeg), m_unit)) : std::nullopt;
   for (QuantityChartView* view : m_views) view->setCursorX(x);

@@ -1,10 +1,11 @@
 #pragma once
-// The live plots: link angles and transmission angle, ω and α of coupler and rocker against
-// crank angle, one chart each, stacked so they read together. A row of checkboxes picks the
-// quantities; the document is asked to compute only what is shown. Curves are re-read from
-// the document's sweep when the design or request changes; a crank move only moves the
-// cursor on each chart. Hovering a curve reads its value out; the rocker's limit positions
-// are marked on the angle chart.
+// The live plots against crank angle, one chart per kind, stacked so they read together: link
+// and transmission angles, link ω, link α, and for linkages with sliders their positions,
+// velocities and accelerations. The quantities come from the mechanism (plot_quantity.h); a
+// row of checkboxes picks them, and the document is asked to compute only what is shown. Charts
+// with nothing to show are hidden. Curves are re-read from the document's sweep when the
+// design or request changes; a crank move only moves the cursor on each chart. Hovering a
+// curve reads its value out; a four-bar's rocker limit positions are marked on the angle chart.
 
 #include "ui/plots/angle_unit.h"
 #include "ui/plots/plot_quantity.h"
@@ -16,6 +17,7 @@
 
 #include <array>
 #include <memory>
+#include <vector>
 
 class QChartView;
 
@@ -38,8 +40,8 @@ public:
   void setAngleUnit(AngleUnit unit);
   AngleUnit angleUnit() const { return m_unit; }
 
-  /// The charts in display order (angles, ω, α), for image export. A chart with nothing
-  /// selected isHidden().
+  /// The charts in display order (angles, ω, α, position, velocity, acceleration), for image
+  /// export. A chart with nothing selected or nothing to show isHidden().
   QList<QChartView*> chartViews() const;
   /// The same views as plain QGraphicsViews, so code outside ui/plots can export them
   /// without depending on Qt Charts.
@@ -47,6 +49,9 @@ public:
   /// The title of chartViews()[index] ("Link angles", ...); empty for an index out of range.
   QString chartTitle(int index) const;
 
+  /// The mechanism's plottable quantities, and the one of `quantity` (null if it has none).
+  const std::vector<PlotCurve>& curves() const { return m_curves; }
+  const PlotCurve* curve(PlotQuantity quantity) const { return findCurve(m_curves, quantity); }
   /// The quantities shown; setting it ticks the boxes (and emits selectionChanged if it differs).
   QuantitySelection selection() const;
   void setSelection(const QuantitySelection& selection);
@@ -65,6 +70,7 @@ private:
   void onDocumentChanged(Changes what);
   void onSelectionChanged();
   void applySelection();
+  void refreshCurves();
   void refreshData();
   void refreshCursor();
   void alignCharts();
@@ -72,6 +78,7 @@ private:
   MechanismDocument* m_document;
   AngleUnit m_unit = AngleUnit::Degrees;
   QuantitySelector* m_selector;
+  std::vector<PlotCurve> m_curves;
   std::array<QuantityChartView*, kQuantityKindCount> m_views{};
   std::unique_ptr<LimitMarkers> m_limits;
   HoverReadout* m_readout;

@@ -1,8 +1,20 @@
 #include "ui/plots/plot_quantity.h"
 
+#include "ui/link_colors.h"
+
+#include "kinematics/model/fourbar.h"
+#include "kinematics/solve/guide_line.h"
+
 #include <QCoreApplication>
 
+#include <algorithm>
+#include <cmath>
+
 namespace linkwright::ui {
+
+namespace k = kinematics;
+using k::io::ColumnQuantity;
+
 namespace {
 
 // Gives the free functions below a translation context lupdate understands.
@@ -10,102 +22,156 @@ class Text {
   Q_DECLARE_TR_FUNCTIONS(PlotQuantityText)
 };
 
-} // namespace
-
-QuantityKind quantityKind(PlotQuantity q) {
-  switch (q) {
-  case PlotQuantity::CouplerAngle:
-  case PlotQuantity::RockerAngle:
-  case PlotQuantity::TransmissionAngle: return QuantityKind::Angle;
-  case PlotQuantity::CouplerOmega:
-  case PlotQuantity::RockerOmega: return QuantityKind::Omega;
-  case PlotQuantity::CouplerAlpha:
-  case PlotQuantity::RockerAlpha: return QuantityKind::Alpha;
+QuantityKind kindOf(ColumnQuantity c) {
+  switch (c) {
+  case ColumnQuantity::InputAngle:
+  case ColumnQuantity::LinkAngle:
+  case ColumnQuantity::TransmissionAngle: return QuantityKind::Angle;
+  case ColumnQuantity::LinkOmega: return QuantityKind::Omega;
+  case ColumnQuantity::LinkAlpha: return QuantityKind::Alpha;
+  case ColumnQuantity::PointX:
+  case ColumnQuantity::PointY: return QuantityKind::Position;
+  case ColumnQuantity::PointVx:
+  case ColumnQuantity::PointVy: return QuantityKind::Velocity;
+  case ColumnQuantity::PointAx:
+  case ColumnQuantity::PointAy: return QuantityKind::Acceleration;
   }
   return QuantityKind::Angle;
 }
 
-QString quantityKey(PlotQuantity q) {
-  switch (q) {
-  case PlotQuantity::CouplerAngle: return QStringLiteral("coupler_angle");
-  case PlotQuantity::RockerAngle: return QStringLiteral("rocker_angle");
-  case PlotQuantity::TransmissionAngle: return QStringLiteral("transmission_angle");
-  case PlotQuantity::CouplerOmega: return QStringLiteral("coupler_omega");
-  case PlotQuantity::RockerOmega: return QStringLiteral("rocker_omega");
-  case PlotQuantity::CouplerAlpha: return QStringLiteral("coupler_alpha");
-  case PlotQuantity::RockerAlpha: return QStringLiteral("rocker_alpha");
+// The textbook number of moving link `index`: the frame is link 1, the crank link 2, ...
+int linkNumber(std::size_t index) { return static_cast<int>(index) + 2; }
+
+void addLinkCurves(std::vector<PlotCurve>& out, const k::Mechanism& m, ColumnQuantity column, const QString& symbol,
+                   const QString& suffix) {
+  for (std::size_t l = 0; l < m.links.size(); ++l) {
+    if (k::io::isDrivenCrankLink(m, k::LinkId{l})) continue;  // the driver's own, constant or the input
+    const QString name = QString::fromStdString(m.links[l].name);
+    out.push_back({{column, l}, name + suffix, QStringLiteral("%1 %2%3").arg(name, symbol).arg(linkNumber(l)), linkColor(l)});
   }
-  return {};
 }
 
-QString quantityName(PlotQuantity q) {
-  // Subscripts follow the thesis seed: 3 = coupler, 4 = rocker.
-  switch (q) {
-  case PlotQuantity::CouplerAngle: return Text::tr("coupler θ3");
-  case PlotQuantity::RockerAngle: return Text::tr("rocker θ4");
-  case PlotQuantity::TransmissionAngle: return Text::tr("transmission μ");
-  case PlotQuantity::CouplerOmega: return Text::tr("coupler ω3");
-  case PlotQuantity::RockerOmega: return Text::tr("rocker ω4");
-  case PlotQuantity::CouplerAlpha: return Text::tr("coupler α3");
-  case PlotQuantity::RockerAlpha: return Text::tr("rocker α4");
+} // namespace
+
+const PlotQuantity PlotQuantity::CouplerAngle{ColumnQuantity::LinkAngle, k::fourbar::kCoupler.index};
+const PlotQuantity PlotQuantity::RockerAngle{ColumnQuantity::LinkAngle, k::fourbar::kRocker.index};
+const PlotQuantity PlotQuantity::TransmissionAngle{ColumnQuantity::TransmissionAngle, k::fourbar::kC.index};
+const PlotQuantity PlotQuantity::CouplerOmega{ColumnQuantity::LinkOmega, k::fourbar::kCoupler.index};
+const PlotQuantity PlotQuantity::RockerOmega{ColumnQuantity::LinkOmega, k::fourbar::kRocker.index};
+const PlotQuantity PlotQuantity::CouplerAlpha{ColumnQuantity::LinkAlpha, k::fourbar::kCoupler.index};
+const PlotQuantity PlotQuantity::RockerAlpha{ColumnQuantity::LinkAlpha, k::fourbar::kRocker.index};
+
+QuantityKind quantityKind(PlotQuantity q) { return kindOf(q.column); }
+
+std::vector<PlotCurve> plotCurves(const k::Mechanism& m, const k::Pose& pose) {
+  std::vector<PlotCurve> out;
+  addLinkCurves(out, m, ColumnQuantity::LinkAngle, QStringLiteral("θ"), QStringLiteral("_angle"));
+  std::vector<std::size_t> dyads;  // the joints with a transmission angle
+  for (std::size_t i = 0; i < m.points.size(); ++i)
+    if (std::holds_alternative<k::RrrPoint>(m.points[i].definition) || std::holds_alternative<k::RrpPoint>(m.points[i].definition))
+      dyads.push_back(i);
+  for (std::size_t d = 0; d < dyads.size(); ++d) {
+    const QString point = QString::fromStdString(m.points[dyads[d]].name);
+    const bool one = dyads.size() == 1;
+    out.push_back({{ColumnQuantity::TransmissionAngle, dyads[d]},
+                   one ? QStringLiteral("transmission_angle") : QStringLiteral("transmission_angle_") + point,
+                   one ? Text::tr("transmission μ") : Text::tr("μ at %1").arg(point), transmissionColor(d)});
   }
-  return {};
+  addLinkCurves(out, m, ColumnQuantity::LinkOmega, QStringLiteral("ω"), QStringLiteral("_omega"));
+  addLinkCurves(out, m, ColumnQuantity::LinkAlpha, QStringLiteral("α"), QStringLiteral("_alpha"));
+  // A slider on a ground guide: the coordinate its guide mostly runs along (a piston's x).
+  std::size_t sliders = 0;
+  for (std::size_t i = 0; i < m.points.size(); ++i) {
+    const auto* s = std::get_if<k::RrpPoint>(&m.points[i].definition);
+    if (s == nullptr) continue;
+    const std::size_t ordinal = sliders++;
+    if (s->guide.link || i >= pose.position.size()) continue;
+    const Eigen::Vector2d u = k::guideLineAt(m, s->guide, pose).direction;
+    const bool alongX = std::abs(u.x()) >= std::abs(u.y());
+    const QString point = QString::fromStdString(m.points[i].name);
+    const QString axis = alongX ? QStringLiteral("x") : QStringLiteral("y");
+    const QColor color = sliderColor(ordinal);
+    out.push_back({{alongX ? ColumnQuantity::PointX : ColumnQuantity::PointY, i}, point + "_" + axis, point + " " + axis, color});
+    out.push_back({{alongX ? ColumnQuantity::PointVx : ColumnQuantity::PointVy, i}, point + "_v" + axis, point + " v" + axis, color});
+    out.push_back({{alongX ? ColumnQuantity::PointAx : ColumnQuantity::PointAy, i}, point + "_a" + axis, point + " a" + axis, color});
+  }
+  // Checkbox and legend order: by chart.
+  std::stable_sort(out.begin(), out.end(), [](const PlotCurve& a, const PlotCurve& b) {
+    return quantityKind(a.quantity) < quantityKind(b.quantity);
+  });
+  return out;
 }
 
-QColor quantityColor(PlotQuantity q) {
-  // One colour per link on every chart, the canvas's own (ui/canvas/canvas_style.h:
-  // kCouplerColor, kRockerColor; copied, as plots do not depend on the canvas). The
-  // transmission angle is no link: brown, a colour the canvas does not use (its orange is
-  // the crank's).
-  switch (q) {
-  case PlotQuantity::CouplerAngle:
-  case PlotQuantity::CouplerOmega:
-  case PlotQuantity::CouplerAlpha: return QColor(49, 130, 189);
-  case PlotQuantity::RockerAngle:
-  case PlotQuantity::RockerOmega:
-  case PlotQuantity::RockerAlpha: return QColor(49, 163, 84);
-  case PlotQuantity::TransmissionAngle: return QColor(140, 86, 75);
-  }
-  return Qt::black;
+const PlotCurve* findCurve(const std::vector<PlotCurve>& curves, PlotQuantity quantity) {
+  for (const PlotCurve& c : curves)
+    if (c.quantity == quantity) return &c;
+  return nullptr;
 }
 
-QString quantityUnit(QuantityKind kind, AngleUnit unit) {
+QString quantityUnit(QuantityKind kind, AngleUnit unit, const QString& lengthUnit) {
   const QString angle = angleUnitSymbol(unit);
   switch (kind) {
   case QuantityKind::Angle: return angle;
   case QuantityKind::Omega: return angle + QStringLiteral("/s");
   case QuantityKind::Alpha: return angle + QStringLiteral("/s²");
+  case QuantityKind::Position: return lengthUnit;
+  case QuantityKind::Velocity: return lengthUnit + QStringLiteral("/s");
+  case QuantityKind::Acceleration: return lengthUnit + QStringLiteral("/s²");
   }
   return angle;
 }
 
-QString valueAxisTitle(QuantityKind kind, AngleUnit unit) {
-  const QString u = quantityUnit(kind, unit);
+QString valueAxisTitle(QuantityKind kind, AngleUnit unit, const QString& lengthUnit) {
+  const QString u = quantityUnit(kind, unit, lengthUnit);
   switch (kind) {
   case QuantityKind::Angle: return Text::tr("angle [%1]").arg(u);
   case QuantityKind::Omega: return Text::tr("ω [%1]").arg(u);
   case QuantityKind::Alpha: return Text::tr("α [%1]").arg(u);
+  case QuantityKind::Position: return Text::tr("position [%1]").arg(u);
+  case QuantityKind::Velocity: return Text::tr("v [%1]").arg(u);
+  case QuantityKind::Acceleration: return Text::tr("a [%1]").arg(u);
   }
   return u;
 }
 
 QString crankAxisTitle(AngleUnit unit) { return Text::tr("crank angle [%1]").arg(angleUnitSymbol(unit)); }
 
-QuantitySelection QuantitySelection::all() {
+bool QuantitySelection::contains(PlotQuantity q) const {
+  return std::find(m_hidden.begin(), m_hidden.end(), q) == m_hidden.end();
+}
+
+void QuantitySelection::set(PlotQuantity q, bool on) {
+  const auto at = std::find(m_hidden.begin(), m_hidden.end(), q);
+  if (on && at != m_hidden.end()) m_hidden.erase(at);
+  if (!on && at == m_hidden.end()) m_hidden.push_back(q);
+}
+
+bool QuantitySelection::operator==(const QuantitySelection& other) const {
+  return m_hidden.size() == other.m_hidden.size() &&
+         std::all_of(m_hidden.begin(), m_hidden.end(), [&](PlotQuantity q) { return !other.contains(q); });
+}
+
+bool QuantitySelection::any(QuantityKind kind, const std::vector<PlotCurve>& curves) const {
+  return std::any_of(curves.begin(), curves.end(),
+                     [&](const PlotCurve& c) { return quantityKind(c.quantity) == kind && contains(c.quantity); });
+}
+
+QuantitySelection defaultSelection(const std::vector<PlotCurve>& curves) {
   QuantitySelection s;
-  s.m_on.fill(true);
+  const bool sliders = std::any_of(curves.begin(), curves.end(),
+                                   [](const PlotCurve& c) { return quantityKind(c.quantity) == QuantityKind::Position; });
+  if (!sliders) return s;
+  for (const PlotCurve& c : curves) {
+    const QuantityKind kind = quantityKind(c.quantity);
+    if (kind == QuantityKind::Omega || kind == QuantityKind::Alpha) s.set(c.quantity, false);
+  }
   return s;
 }
 
-bool QuantitySelection::any(QuantityKind kind) const {
-  for (const PlotQuantity q : allPlotQuantities())
-    if (quantityKind(q) == kind && contains(q)) return true;
-  return false;
-}
-
-kinematics::SolveRequest requestFor(const QuantitySelection& s) {
-  const bool alpha = s.any(QuantityKind::Alpha);
-  return {s.any(QuantityKind::Omega) || alpha, alpha};
+k::SolveRequest requestFor(const QuantitySelection& s, const std::vector<PlotCurve>& curves) {
+  const bool accelerations = s.any(QuantityKind::Alpha, curves) || s.any(QuantityKind::Acceleration, curves);
+  const bool velocities = s.any(QuantityKind::Omega, curves) || s.any(QuantityKind::Velocity, curves);
+  return {velocities || accelerations, accelerations};
 }
 
 } // namespace linkwright::ui

@@ -1,70 +1,99 @@
 #pragma once
-// The quantities the plots can show, what kind each is (angle, ω, α), which chart it goes on,
-// its name, colour and the SolveRequest a selection of them needs. One table, so the
-// checkboxes, the legends, the read-outs and the request all agree.
+// The quantities the plots can show for the current mechanism, read off its structure the way
+// the CSV columns are (kinematics/io/sweep_columns.h): the angle, ω and α of every moving link
+// but the driven crank, the transmission angle at every dyad joint that has one, and each
+// slider's position, velocity and acceleration along the axis its ground guide mostly runs.
+// Each has a kind (which chart it goes on), a key, a name, a colour (the link's, as on the
+// canvas), and the SolveRequest a selection of them needs follows from their kinds. One
+// table, so the checkboxes, the legends, the read-outs and the request all agree.
 
 #include "ui/plots/angle_unit.h"
 
+#include "kinematics/io/sweep_columns.h"
+#include "kinematics/model/mechanism.h"
 #include "kinematics/solve/pose.h"
 
 #include <QColor>
 #include <QString>
 
 #include <array>
+#include <vector>
 
 namespace linkwright::ui {
 
-enum class PlotQuantity {
-  CouplerAngle, RockerAngle, TransmissionAngle,
-  CouplerOmega, RockerOmega,
-  CouplerAlpha, RockerAlpha,
-};
-inline constexpr int kPlotQuantityCount = 7;
-
 /// What a quantity is; one chart per kind, in this order.
-enum class QuantityKind { Angle, Omega, Alpha };
-inline constexpr int kQuantityKindCount = 3;
+enum class QuantityKind { Angle, Omega, Alpha, Position, Velocity, Acceleration };
+inline constexpr int kQuantityKindCount = 6;
 
-/// All quantities, in checkbox and legend order.
-constexpr std::array<PlotQuantity, kPlotQuantityCount> allPlotQuantities() {
-  return {PlotQuantity::CouplerAngle, PlotQuantity::RockerAngle, PlotQuantity::TransmissionAngle,
-          PlotQuantity::CouplerOmega, PlotQuantity::RockerOmega,
-          PlotQuantity::CouplerAlpha, PlotQuantity::RockerAlpha};
+/// Angle, ω and α are shown in the angle unit; the other kinds in the length unit.
+constexpr bool isAngular(QuantityKind kind) {
+  return kind == QuantityKind::Angle || kind == QuantityKind::Omega || kind == QuantityKind::Alpha;
 }
 
+/// One plottable quantity: a sweep column of a link or a point (its `index`).
+struct PlotQuantity {
+  kinematics::io::ColumnQuantity column = kinematics::io::ColumnQuantity::LinkAngle;
+  std::size_t index = 0;
+  bool operator==(const PlotQuantity&) const = default;
+
+  /// A four-bar's quantities (the ids of kinematics/model/fourbar.h).
+  static const PlotQuantity CouplerAngle;
+  static const PlotQuantity RockerAngle;
+  static const PlotQuantity TransmissionAngle;
+  static const PlotQuantity CouplerOmega;
+  static const PlotQuantity RockerOmega;
+  static const PlotQuantity CouplerAlpha;
+  static const PlotQuantity RockerAlpha;
+};
+
+/// A quantity as the plots show it for one mechanism.
+struct PlotCurve {
+  PlotQuantity quantity;
+  QString key;    ///< stable, untranslated, after the CSV column names: "rocker_omega", "C_x"
+  QString name;   ///< legend and checkbox: "rocker ω4", "transmission μ", "C x"
+  QColor color;   ///< the link's colour on the canvas, for every chart it appears on
+  bool operator==(const PlotCurve&) const = default;
+};
+
 QuantityKind quantityKind(PlotQuantity quantity);
-/// Stable, untranslated key after the CSV column names: "rocker_omega", "transmission_angle".
-QString quantityKey(PlotQuantity quantity);
-/// Legend and checkbox name: "rocker ω4", "transmission μ".
-QString quantityName(PlotQuantity quantity);
-/// Line colour, the same on every chart for the same link.
-QColor quantityColor(PlotQuantity quantity);
-/// Unit of the quantity's values: "deg", "rad/s", "deg/s²", ...
-QString quantityUnit(QuantityKind kind, AngleUnit unit);
-/// The y-axis title of a chart: "angle [deg]", "ω [rad/s]", "α [rad/s²]".
-QString valueAxisTitle(QuantityKind kind, AngleUnit unit);
+
+/// The plottable quantities of `mechanism` solved as `pose`, in checkbox and legend order.
+std::vector<PlotCurve> plotCurves(const kinematics::Mechanism& mechanism, const kinematics::Pose& pose);
+
+/// The curve of `quantity` in `curves`, or null.
+const PlotCurve* findCurve(const std::vector<PlotCurve>& curves, PlotQuantity quantity);
+
+/// Unit of a kind's values: "deg", "rad/s", "deg/s²", "mm", "mm/s", "mm/s²".
+QString quantityUnit(QuantityKind kind, AngleUnit unit, const QString& lengthUnit = QStringLiteral("mm"));
+/// The y-axis title of a chart: "angle [deg]", "ω [rad/s]", "position [mm]", ...
+QString valueAxisTitle(QuantityKind kind, AngleUnit unit, const QString& lengthUnit = QStringLiteral("mm"));
 /// The x-axis title: "crank angle [deg]".
 QString crankAxisTitle(AngleUnit unit);
 
-/// Which quantities are shown.
+/// Which quantities are shown: all but those the user unticked. A quantity the mechanism
+/// does not have is simply never drawn.
 class QuantitySelection {
 public:
   /// Everything selected (the default).
-  static QuantitySelection all();
+  static QuantitySelection all() { return {}; }
 
-  bool contains(PlotQuantity quantity) const { return m_on[index(quantity)]; }
-  void set(PlotQuantity quantity, bool on) { m_on[index(quantity)] = on; }
-  /// True if any quantity of `kind` is selected: its chart is shown.
-  bool any(QuantityKind kind) const;
-  bool operator==(const QuantitySelection&) const = default;
+  bool contains(PlotQuantity quantity) const;
+  void set(PlotQuantity quantity, bool on);
+  /// True if any of `curves` of `kind` is selected: its chart is shown.
+  bool any(QuantityKind kind, const std::vector<PlotCurve>& curves) const;
+  /// Equal when the same quantities are unticked, in whatever order.
+  bool operator==(const QuantitySelection& other) const;
 
 private:
-  static std::size_t index(PlotQuantity q) { return static_cast<std::size_t>(q); }
-  std::array<bool, kPlotQuantityCount> m_on{};
+  std::vector<PlotQuantity> m_hidden;  // in the order they were unticked
 };
 
-/// What the sweep must compute for `selection`: only positions unless an ω or α is shown;
-/// accelerations (which imply velocities) only if an α is shown.
-kinematics::SolveRequest requestFor(const QuantitySelection& selection);
+/// What a new mechanism shows first: everything, except that with sliders the links' ω and α
+/// start unticked, so the slider's three charts and the angles fit the window.
+QuantitySelection defaultSelection(const std::vector<PlotCurve>& curves);
+
+/// What the sweep must compute for `selection` of `curves`: velocities only if an ω or a
+/// velocity is shown; accelerations (which imply velocities) only if an α or an acceleration is.
+kinematics::SolveRequest requestFor(const QuantitySelection& selection, const std::vector<PlotCurve>& curves);
 
 } // namespace linkwright::ui

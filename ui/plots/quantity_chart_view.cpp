@@ -51,25 +51,41 @@ QuantityChartView::QuantityChartView(QuantityKind kind, const QString& title, QW
   // OpenGL stays off (the default): a few 721-point lines draw well under a frame in
   // software, and the OpenGL path cannot be exported as SVG.
 
-  for (const PlotQuantity q : allPlotQuantities()) {
-    if (quantityKind(q) != kind) continue;
-    m_curves.push_back({q, {}});
-    addSegment(m_curves.back());
-  }
   m_cursor = std::make_unique<VerticalMarker>(chart, m_xAxis, m_yAxis, cursorPen(), QStringLiteral("cursor"));
 }
 
 QuantityChartView::~QuantityChartView() = default;
 
+void QuantityChartView::setCurves(const std::vector<PlotCurve>& curves) {
+  std::vector<PlotCurve> mine;
+  for (const PlotCurve& c : curves)
+    if (quantityKind(c.quantity) == m_kind) mine.push_back(c);
+  const bool same = mine.size() == m_curves.size() &&
+                    std::equal(mine.begin(), mine.end(), m_curves.begin(), [](const PlotCurve& a, const Curve& b) { return a == b.curve; });
+  if (same) return;
+  for (Curve& curve : m_curves)
+    for (QLineSeries* segment : curve.segments) {
+      chart()->removeSeries(segment);
+      delete segment;
+    }
+  m_curves.clear();
+  m_curves.reserve(mine.size());
+  for (const PlotCurve& c : mine) {
+    m_curves.push_back({c, {}});
+    addSegment(m_curves.back());
+  }
+  m_cursor->raise();  // over the curves, as before they were replaced
+}
+
 QLineSeries* QuantityChartView::addSegment(Curve& curve) {
   auto* segment = new QLineSeries;
-  segment->setObjectName(quantityKey(curve.quantity));
-  segment->setName(quantityName(curve.quantity));
-  segment->setPen(QPen(quantityColor(curve.quantity), kCurveWidth));
+  segment->setObjectName(curve.curve.key);
+  segment->setName(curve.curve.name);
+  segment->setPen(QPen(curve.curve.color, kCurveWidth));
   chart()->addSeries(segment);
   segment->attachAxis(m_xAxis);
   segment->attachAxis(m_yAxis);
-  const PlotQuantity q = curve.quantity;
+  const PlotQuantity q = curve.curve.quantity;
   connect(segment, &QXYSeries::hovered, this,
           [this, q, segment](const QPointF& p, bool inside) { onSegmentHovered(q, segment, p, inside); });
   curve.segments.append(segment);
@@ -78,12 +94,12 @@ QLineSeries* QuantityChartView::addSegment(Curve& curve) {
 }
 
 void QuantityChartView::setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection,
-                                AngleUnit unit, double fromDeg, double toDeg) {
+                                AngleUnit unit, double fromDeg, double toDeg, const QString& lengthUnit) {
   m_values.clear();
   for (Curve& curve : m_curves) {
-    const bool shown = selection.contains(curve.quantity);
+    const bool shown = selection.contains(curve.curve.quantity);
     if (shown)
-      buildSeriesRuns(sweep, curve.quantity, unit, m_runs);
+      buildSeriesRuns(sweep, curve.curve.quantity, unit, m_runs);
     else
       m_runs.runs.clear();
     for (const QList<QPointF>& run : m_runs.runs)
@@ -96,7 +112,7 @@ void QuantityChartView::setData(const kinematics::SweepResult& sweep, const Quan
   const auto [lo, hi] = m_values.empty() ? std::pair<double, double>{kNone, -kNone} : robustSpan(m_values);
   m_valueRange = niceValueRange(lo, hi);
   applyAxis(m_yAxis, m_valueRange);
-  m_yAxis->setTitleText(valueAxisTitle(m_kind, unit));
+  m_yAxis->setTitleText(valueAxisTitle(m_kind, unit, lengthUnit));
   const AxisRange x = crankAxisRange(fromDeg, toDeg, unit);
   applyAxis(m_xAxis, x);
   m_xAxis->setTickInterval(x.step);
@@ -132,7 +148,7 @@ void QuantityChartView::setCursorX(std::optional<double> x) { m_cursor->setX(x);
 
 QList<QLineSeries*> QuantityChartView::segments(PlotQuantity quantity) const {
   for (const Curve& curve : m_curves)
-    if (curve.quantity == quantity) return curve.segments;
+    if (curve.curve.quantity == quantity) return curve.segments;
   return {};
 }
 

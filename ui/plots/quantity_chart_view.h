@@ -1,6 +1,6 @@
 #pragma once
-// One chart of one kind of quantity (angles, ω or α) against crank angle: a line per selected
-// quantity, split into segments where the sweep has no value, explicit value axes with
+// One chart of one kind of quantity (angles, ω, α, slider positions, velocities or
+// accelerations) against crank angle: a line per selected quantity, split into segments where the sweep has no value, explicit value axes with
 // rounded ranges, and a crank-angle cursor that moves without touching the data.
 
 #include "ui/plots/axis_range.h"
@@ -24,8 +24,12 @@ namespace linkwright::ui {
 class QuantityChartView : public QChartView {
   Q_OBJECT
 public:
-  /// A chart titled `title` for the quantities of `kind`, all hidden until setData.
+  /// A chart titled `title` for the quantities of `kind`; it has no curves until setCurves.
   QuantityChartView(QuantityKind kind, const QString& title, QWidget* parent = nullptr);
+
+  /// Makes one curve for each of `curves` of this chart's kind (the others are ignored),
+  /// hidden until setData. Keeps the series when the curves are the same as before.
+  void setCurves(const std::vector<PlotCurve>& curves);
   ~QuantityChartView() override;
 
   QuantityKind kind() const { return m_kind; }
@@ -36,7 +40,7 @@ public:
   /// Replaces the curves with the sweep's values of the selected quantities (the others are
   /// emptied and hidden) and resets both axes: x over the grid [fromDeg, toDeg].
   void setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection, AngleUnit unit,
-               double fromDeg, double toDeg);
+               double fromDeg, double toDeg, const QString& lengthUnit = QStringLiteral("mm"));
   /// Moves the cursor to `x` (plot units), or hides it. Touches no data series.
   void setCursorX(std::optional<double> x);
   std::optional<double> cursorX() const { return m_cursor->x(); }
@@ -56,7 +60,7 @@ protected:
 
 private:
   struct Curve {
-    PlotQuantity quantity;
+    PlotCurve curve;
     QList<QLineSeries*> segments;
   };
 

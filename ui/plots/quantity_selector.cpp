@@ -3,7 +3,7 @@
 #include "ui/plots/flow_layout.h"
 
 #include <QCheckBox>
-#include <QGridLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QPixmap>
 
@@ -17,58 +17,73 @@ QString groupLabel(QuantityKind kind) {
   case QuantityKind::Angle: return QuantitySelector::tr("Angles:");
   case QuantityKind::Omega: return QuantitySelector::tr("ω:");
   case QuantityKind::Alpha: return QuantitySelector::tr("α:");
+  case QuantityKind::Position: return QuantitySelector::tr("Position:");
+  case QuantityKind::Velocity: return QuantitySelector::tr("v:");
+  case QuantityKind::Acceleration: return QuantitySelector::tr("a:");
   }
   return {};
 }
 
 } // namespace
 
-QuantitySelector::QuantitySelector(QWidget* parent) : QWidget(parent) {
+QuantitySelector::QuantitySelector(QWidget* parent) : QWidget(parent), m_flow(new FlowLayout(this, 10, 0)) {
   // One group per chart (a label and its boxes); groups wrap as wholes when the panel is narrow.
-  auto* flow = new FlowLayout(this, 14, 0);
-  flow->setContentsMargins(4, 2, 4, 2);
-  QHBoxLayout* group = nullptr;
-  std::optional<QuantityKind> groupKind;
-  for (const PlotQuantity q : allPlotQuantities()) {
-    if (quantityKind(q) != groupKind) {
-      groupKind = quantityKind(q);
-      auto* groupWidget = new QWidget(this);
-      group = new QHBoxLayout(groupWidget);
-      group->setContentsMargins(0, 0, 0, 0);
-      group->setSpacing(4);
-      group->addWidget(new QLabel(groupLabel(*groupKind), groupWidget));
-      flow->addWidget(groupWidget);
-    }
-    auto* box = new QCheckBox(quantityName(q), this);
-    box->setObjectName(QStringLiteral("show_") + quantityKey(q));
-    box->setChecked(true);
-    // A swatch of the curve's colour ties the box to its line.
-    QPixmap swatch(10, 10);
-    swatch.fill(quantityColor(q));
-    box->setIcon(QIcon(swatch));
-    box->setIconSize(QSize(10, 10));
-    connect(box, &QCheckBox::toggled, this, [this] {
-      if (!m_applying) emit selectionChanged();
-    });
-    m_boxes[static_cast<std::size_t>(q)] = box;
-    group->addWidget(box);
-  }
+  m_flow->setContentsMargins(4, 2, 4, 2);
 }
 
-QuantitySelection QuantitySelector::selection() const {
-  QuantitySelection s;
-  for (const PlotQuantity q : allPlotQuantities()) s.set(q, checkBox(q)->isChecked());
-  return s;
+void QuantitySelector::setCurves(const std::vector<PlotCurve>& curves, const QuantitySelection& selection) {
+  for (QWidget* group : m_groups) delete group;
+  m_groups.clear();
+  m_boxes.clear();
+  m_curves = curves;
+  m_selection = selection;
+  std::optional<QuantityKind> groupKind;
+  for (std::size_t i = 0; i < curves.size(); ++i) {
+    const PlotCurve& curve = curves[i];
+    // A chart's label stays on one line with its first box; the other boxes wrap one by one,
+    // so a six-bar's many angles fit a narrow panel.
+    auto* item = new QWidget(this);
+    auto* row = new QHBoxLayout(item);
+    row->setContentsMargins(0, 0, 0, 0);
+    row->setSpacing(4);
+    if (quantityKind(curve.quantity) != groupKind) {
+      groupKind = quantityKind(curve.quantity);
+      row->addWidget(new QLabel(groupLabel(*groupKind), item));
+    }
+    m_flow->addWidget(item);
+    m_groups.push_back(item);
+    auto* box = new QCheckBox(curve.name, item);
+    box->setObjectName(QStringLiteral("show_") + curve.key);
+    box->setChecked(selection.contains(curve.quantity));
+    // A swatch of the curve's colour ties the box to its line.
+    QPixmap swatch(10, 10);
+    swatch.fill(curve.color);
+    box->setIcon(QIcon(swatch));
+    box->setIconSize(QSize(10, 10));
+    connect(box, &QCheckBox::toggled, this, [this, q = curve.quantity](bool on) {
+      m_selection.set(q, on);
+      if (!m_applying) emit selectionChanged();
+    });
+    m_boxes.push_back(box);
+    row->addWidget(box);
+  }
+  updateGeometry();
 }
 
 void QuantitySelector::setSelection(const QuantitySelection& selection) {
-  if (selection == this->selection()) return;
+  if (selection == m_selection) return;
   m_applying = true;
-  for (const PlotQuantity q : allPlotQuantities()) checkBox(q)->setChecked(selection.contains(q));
+  m_selection = selection;
+  for (std::size_t i = 0; i < m_curves.size(); ++i) m_boxes[i]->setChecked(selection.contains(m_curves[i].quantity));
+  m_selection = selection;
   m_applying = false;
   emit selectionChanged();
 }
 
-QCheckBox* QuantitySelector::checkBox(PlotQuantity quantity) const { return m_boxes[static_cast<std::size_t>(quantity)]; }
+QCheckBox* QuantitySelector::checkBox(PlotQuantity quantity) const {
+  for (std::size_t i = 0; i < m_curves.size(); ++i)
+    if (m_curves[i].quantity == quantity) return m_boxes[i];
+  return nullptr;
+}
 
 } // namespace linkwright::ui

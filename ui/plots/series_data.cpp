@@ -1,34 +1,57 @@
 #include "ui/plots/series_data.h"
 
-#include "kinematics/model/fourbar.h"
-
 #include <algorithm>
 
 namespace linkwright::ui {
 namespace {
 
 namespace k = kinematics;
+using k::io::ColumnQuantity;
 
-// The sweep column of `q`, or null if the sweep did not compute it.
-const std::vector<double>* column(const k::SweepResult& s, PlotQuantity q) {
-  const auto pick = [&s](const std::vector<std::vector<double>>& columns, std::size_t index) {
-    const bool present = index < columns.size() && columns[index].size() == s.size();
-    return present ? &columns[index] : nullptr;
-  };
-  switch (q) {
-  case PlotQuantity::CouplerAngle: return pick(s.linkAngle, k::fourbar::kCoupler.index);
-  case PlotQuantity::RockerAngle: return pick(s.linkAngle, k::fourbar::kRocker.index);
-  case PlotQuantity::TransmissionAngle: return pick(s.transmissionAngle, k::fourbar::kC.index);
-  case PlotQuantity::CouplerOmega: return pick(s.linkOmega, k::fourbar::kCoupler.index);
-  case PlotQuantity::RockerOmega: return pick(s.linkOmega, k::fourbar::kRocker.index);
-  case PlotQuantity::CouplerAlpha: return pick(s.linkAlpha, k::fourbar::kCoupler.index);
-  case PlotQuantity::RockerAlpha: return pick(s.linkAlpha, k::fourbar::kRocker.index);
+// Reads one quantity's samples from the sweep, in the plot's units; empty if the sweep did
+// not compute its column.
+class Column {
+public:
+  Column(const k::SweepResult& s, PlotQuantity q, AngleUnit unit) : m_q(q), m_unit(unit) {
+    const auto pick = [&s](const auto& columns, std::size_t index) {
+      const bool present = index < columns.size() && columns[index].size() == s.size();
+      return present ? &columns[index] : nullptr;
+    };
+    switch (q.column) {
+    case ColumnQuantity::InputAngle: m_scalar = &s.inputAngle; break;
+    case ColumnQuantity::LinkAngle: m_scalar = pick(s.linkAngle, q.index); break;
+    case ColumnQuantity::LinkOmega: m_scalar = pick(s.linkOmega, q.index); break;
+    case ColumnQuantity::LinkAlpha: m_scalar = pick(s.linkAlpha, q.index); break;
+    case ColumnQuantity::TransmissionAngle: m_scalar = pick(s.transmissionAngle, q.index); break;
+    case ColumnQuantity::PointX:
+    case ColumnQuantity::PointY: m_vector = pick(s.position, q.index); break;
+    case ColumnQuantity::PointVx:
+    case ColumnQuantity::PointVy: m_vector = pick(s.velocity, q.index); break;
+    case ColumnQuantity::PointAx:
+    case ColumnQuantity::PointAy: m_vector = pick(s.acceleration, q.index); break;
+    }
   }
-  return nullptr;
-}
 
+  bool present() const { return m_scalar != nullptr || m_vector != nullptr; }
+
+  double at(std::size_t j) const {
+    if (m_scalar != nullptr) return toAngleUnit((*m_scalar)[j], m_unit);
+    const bool x = m_q.column == ColumnQuantity::PointX || m_q.column == ColumnQuantity::PointVx ||
+                   m_q.column == ColumnQuantity::PointAx;
+    return x ? (*m_vector)[j].x() : (*m_vector)[j].y();
+  }
+
+private:
+  PlotQuantity m_q;
+  AngleUnit m_unit;
+  const std::vector<double>* m_scalar = nullptr;           // angles, rad
+  const std::vector<Eigen::Vector2d>* m_vector = nullptr;  // points, length unit
+};
+
+// Positions exist wherever assembled; rates only where the sample is ok.
 bool sampleCarries(const k::SweepResult& s, PlotQuantity q, std::size_t j) {
-  return quantityKind(q) == QuantityKind::Angle ? s.assembled(j) : s.ok(j);
+  const QuantityKind kind = quantityKind(q);
+  return kind == QuantityKind::Angle || kind == QuantityKind::Position ? s.assembled(j) : s.ok(j);
 }
 
 } // namespace
@@ -40,17 +63,17 @@ qsizetype SeriesRuns::pointCount() const {
 }
 
 bool hasValue(const k::SweepResult& s, PlotQuantity q, std::size_t j) {
-  return column(s, q) != nullptr && sampleCarries(s, q, j);
+  return Column(s, q, AngleUnit::Radians).present() && sampleCarries(s, q, j);
 }
 
 void buildSeriesRuns(const k::SweepResult& s, PlotQuantity q, AngleUnit unit, SeriesRuns& out) {
-  const std::vector<double>* values = column(s, q);
+  const Column values(s, q, unit);
   qsizetype runCount = 0;
   out.minY = 0.0;
   out.maxY = 0.0;
   bool first = true;
   std::size_t j = 0;
-  while (values != nullptr && j < s.size()) {
+  while (values.present() && j < s.size()) {
     if (!sampleCarries(s, q, j)) {
       ++j;
       continue;
@@ -62,7 +85,7 @@ void buildSeriesRuns(const k::SweepResult& s, PlotQuantity q, AngleUnit unit, Se
     run.clear();
     run.reserve(static_cast<qsizetype>(end - j));
     for (; j < end; ++j) {
-      const double y = toAngleUnit((*values)[j], unit);
+      const double y = values.at(j);
       run.append(QPointF(toAngleUnit(s.inputAngle[j], unit), y));
       out.minY = first ? y : std::min(out.minY, y);
       out.maxY = first ? y : std::max(out.maxY, y);

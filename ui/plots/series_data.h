@@ -1,6 +1,6 @@
 #pragma once
-// Turns sweep columns into plot points: x = crank angle, y = one quantity, both in the plot's
-// angle unit. Samples that carry no value are left out and break the line into runs, so a
+// Turns sweep columns into plot points: x = crank angle, y = one quantity, angles in the plot's
+// angle unit (lengths in the mechanism's). Samples that carry no value are left out and break the line into runs, so a
 // curve never bridges a range the linkage cannot reach: positions exist where the sample is
 // assembled, rates (ω, α) only where it is ok (the sweep stores placeholder zeros at toggle
 // and unassembled samples, which must never be plotted).

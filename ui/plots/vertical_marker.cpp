@@ -31,6 +31,14 @@ void VerticalMarker::setYSpan(double lo, double hi) {
   update();
 }
 
+void VerticalMarker::raise() {
+  const QList<QAbstractAxis*> axes = m_series->attachedAxes();
+  m_chart->removeSeries(m_series);  // hands the series back; addSeries takes it again
+  m_chart->addSeries(m_series);
+  for (QAbstractAxis* axis : axes) m_series->attachAxis(axis);
+  update();
+}
+
 void VerticalMarker::update() {
   if (m_x) m_series->replace(QList<QPointF>{{*m_x, m_lo}, {*m_x, m_hi}});
   setSeriesShown(m_chart, m_series, m_x.has_value(), false);

@@ -23,6 +23,8 @@ public:
   void setX(std::optional<double> x);
   /// The y extent the line spans (the value axis range).
   void setYSpan(double lo, double hi);
+  /// Puts the line back on top of the chart's series (after curves were added).
+  void raise();
 
   std::optional<double> x() const { return m_x; }
   QLineSeries* series() const { return m_series; }

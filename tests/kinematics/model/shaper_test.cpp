@@ -121,6 +121,7 @@ TEST_CASE("a Whitworth shaper turns its slotted link fully; a pivot on the crank
   whitworth.rockerPivot = {0.0, -40.0};  // inside the crank circle
   whitworth.rocker = 75.0;                // short enough that the ram on a guide through O4
   whitworth.guideHeight = -40.0;          // stays within the link's reach all the way round
+  CHECK(whitworth.link == 150.0);
   const auto m = makeShaper(whitworth);
   REQUIRE(m.ok());
   const auto s = sweep(*m, {0.0, 2.0 * kPi, 361, 1.0, 0.0});
@@ -128,7 +129,22 @@ TEST_CASE("a Whitworth shaper turns its slotted link fully; a pivot on the crank
   CHECK(s->notAssembled.empty());
   const auto& rockerAngle = s->linkAngle[shaper::kRocker.index];
   CHECK(rockerAngle.back() - rockerAngle.front() == Approx(2.0 * kPi).epsilon(1e-12));
-  CHECK_FALSE(shaperQuickReturn(whitworth).has_value());
+
+  // Its quick return comes from the ram's limits, with O4, D and R collinear: here (guide
+  // through O4) R = O4 ± (a + l)·x̂ and O4 + (a − l)·x̂, so the stroke is 2a, and the crank pins
+  // sit at (±√(100² − 40²), −40): limits at −23.578° and 203.578°, arcs 227.16° and 132.84°.
+  const auto q = shaperQuickReturn(whitworth);
+  REQUIRE(q.has_value());
+  CHECK(q->whitworth);
+  CHECK(q->stroke == Approx(150.0).epsilon(1e-12));
+  const double pinAngle = std::atan2(40.0, std::sqrt(100.0 * 100.0 - 40.0 * 40.0));
+  CHECK(q->slowStrokeCrankArc == Approx(kPi + 2.0 * pinAngle).epsilon(1e-12));
+  CHECK(q->timeRatio == Approx((kPi + 2.0 * pinAngle) / (kPi - 2.0 * pinAngle)).epsilon(1e-12));
+  // Independently: the ram's refined extremes over a sweep sit at those crank angles.
+  const auto x = extremaOf(*m, {0.0, 2.0 * kPi, 37, 1.0, 0.0}, [](const Pose& p, double) { return p.position[shaper::kRam.index].x(); });
+  CHECK(x.maximum.value - x.minimum.value == Approx(q->stroke).epsilon(1e-9));
+  CHECK(std::remainder(x.maximum.inputAngle - q->firstLimitCrankAngle, 2.0 * kPi) == Approx(0.0).margin(1e-6));
+  CHECK(std::remainder(x.minimum.inputAngle - q->secondLimitCrankAngle, 2.0 * kPi) == Approx(0.0).margin(1e-6));
 
   ShaperGeometry onCircle = kSeedShaper;
   onCircle.rockerPivot = {0.0, -100.0};

@@ -7,7 +7,7 @@
 #include "ui/document/mechanism_document.h"
 #include "ui/geometry.h"
 
-#include "kinematics/model/design.h"
+#include "kinematics/model/mechanism_design.h"
 #include "kinematics/model/fourbar.h"
 
 #include <catch2/catch.hpp>
@@ -28,7 +28,7 @@ struct ShownView {
   MechanismDocument document;
   LinkageView view{&document};
 
-  explicit ShownView(const std::optional<kinematics::FourBarDesign>& design = std::nullopt) {
+  explicit ShownView(const std::optional<kinematics::Design>& design = std::nullopt) {
     if (design) document.reset(*design);
     view.resize(800, 600);
     view.show();

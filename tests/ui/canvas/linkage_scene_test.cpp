@@ -49,7 +49,7 @@ TEST_CASE("items move to the new pose after a design change and after motion", "
   requireItemsAtPose(v);
   const QPointF cBefore = v.scene().handleItem(k::FourBarHandle::C)->pos();
 
-  k::FourBarDesign edited = v.document.design();
+  k::FourBarDesign edited = *v.document.fourBar();
   edited.lengths = {50.0, 20.0, 65.0, 40.0};
   REQUIRE_FALSE(v.document.edit(edited, "lengths"));
   requireItemsAtPose(v);
@@ -79,7 +79,7 @@ TEST_CASE("the crank's range is drawn only when the crank cannot turn fully", "[
     // Around O2 at the crank's length, and inside what a fit shows.
     const QRectF bounds = item->boundingRect();
     CHECK(bounds.center().x() == Approx(0.0).margin(1e-9));
-    CHECK(bounds.width() > 2.0 * v.document.design().lengths.crank);
+    CHECK(bounds.width() > 2.0 * v.document.fourBar()->lengths.crank);
     CHECK(v.scene().contentBounds().contains(bounds));
   }
   SECTION("undoing back to a crank-rocker hides it again") {
@@ -95,16 +95,17 @@ TEST_CASE("the crank's range is drawn only when the crank cannot turn fully", "[
 TEST_CASE("the coupler point, its triangle and its path follow the design", "[canvas][scene]") {
   SECTION("no coupler point: nothing drawn for it") {
     ShownView v;
-    CHECK_FALSE(v.scene().handleItem(k::FourBarHandle::CouplerPoint)->isVisible());
-    CHECK_FALSE(v.scene().couplerPathItem()->isVisible());
+    CHECK(v.scene().handleItem(k::FourBarHandle::CouplerPoint) == nullptr);
+    CHECK(v.scene().pathItem(fourbar::kCouplerPoint) == nullptr);
+    CHECK(v.scene().couplerTriangleItem() == nullptr);
     CHECK_FALSE(v.scene().handlePosition(k::FourBarHandle::CouplerPoint));
   }
   SECTION("full rotation: one unbroken path through every sample") {
     k::FourBarDesign design;
     design.couplerPoint = k::CouplerPointSpec{35.0, 15.0};
     ShownView v(design);
-    const QPainterPath path = v.scene().couplerPathItem()->path();
-    CHECK(v.scene().couplerPathItem()->isVisible());
+    const QPainterPath path = v.scene().pathItem(fourbar::kCouplerPoint)->path();
+    CHECK(v.scene().pathItem(fourbar::kCouplerPoint)->isVisible());
     CHECK(countMoveTos(path) == 1);
     CHECK(path.elementCount() == static_cast<int>(v.document.sweep().size()));
     CHECK(v.scene().handleItem(k::FourBarHandle::CouplerPoint)->pos() == v.point(fourbar::kCouplerPoint));
@@ -118,7 +119,7 @@ TEST_CASE("the coupler point, its triangle and its path follow the design", "[ca
     ShownView v(design);
     REQUIRE_FALSE(v.document.sweep().notAssembled.empty());
     // The grid 0°..360° sees the range [−φ, φ] as two runs: from 0° and up to 360°.
-    CHECK(countMoveTos(v.scene().couplerPathItem()->path()) == 2);
+    CHECK(countMoveTos(v.scene().pathItem(fourbar::kCouplerPoint)->path()) == 2);
   }
 }
 

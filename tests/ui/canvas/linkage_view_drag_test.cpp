@@ -34,7 +34,7 @@ QPointF dropTarget(const ShownView& v, const QPointF& grabbed, const QPoint& pre
 
 TEST_CASE("dragging C sets coupler and rocker to reach the drop point and lands C there", "[canvas][drag]") {
   ShownView v;
-  const k::FourBarDesign before = v.document.design();
+  const k::FourBarDesign before = *v.document.fourBar();
   const double angle = v.document.crankAngle();
   const QPointF c = v.point(fourbar::kC);
   const QPoint press = v.pixelOf(c);
@@ -44,14 +44,14 @@ TEST_CASE("dragging C sets coupler and rocker to reach the drop point and lands 
   const QPointF target = dropTarget(v, c, press, drop);
   const auto expected = k::dragFourBar(before, angle, k::FourBarHandle::C, toEigen(target));
   REQUIRE(expected);
-  const k::FourBarLengths& got = v.document.design().lengths;
+  const k::FourBarLengths& got = v.document.fourBar()->lengths;
   CHECK(got.coupler == Approx(expected->design.lengths.coupler).margin(kSceneTolerance));
   CHECK(got.rocker == Approx(expected->design.lengths.rocker).margin(kSceneTolerance));
   CHECK(got.coupler != before.lengths.coupler);
   CHECK(got.rocker != before.lengths.rocker);
   CHECK(got.crank == before.lengths.crank);
   CHECK(got.frame == before.lengths.frame);
-  CHECK(v.document.design().branch == expected->design.branch);
+  CHECK(v.document.fourBar()->branch == expected->design.branch);
   const QPointF landed = v.point(fourbar::kC);
   CHECK(landed.x() == Approx(target.x()).margin(kSceneTolerance));
   CHECK(landed.y() == Approx(target.y()).margin(kSceneTolerance));
@@ -61,28 +61,28 @@ TEST_CASE("dragging C sets coupler and rocker to reach the drop point and lands 
     CHECK(v.document.undoStack()->count() == 1);
     CHECK(v.document.undoStack()->undoText() == "Move C");
     v.document.undoStack()->undo();
-    CHECK(v.document.design() == before);
+    CHECK(*v.document.fourBar() == before);
   }
 }
 
 TEST_CASE("two drags of the same joint are two undo steps", "[canvas][drag]") {
   ShownView v;
-  const k::FourBarDesign original = v.document.design();
+  const k::FourBarDesign original = *v.document.fourBar();
   QPoint press = v.pixelOf(v.point(fourbar::kC));
   v.drag(press, press + QPoint(10, 0));
-  const k::FourBarDesign afterFirst = v.document.design();
+  const k::FourBarDesign afterFirst = *v.document.fourBar();
   press = v.pixelOf(v.point(fourbar::kC));
   v.drag(press, press + QPoint(0, 12));
   REQUIRE(v.document.undoStack()->count() == 2);
   v.document.undoStack()->undo();
-  CHECK(v.document.design() == afterFirst);
+  CHECK(*v.document.fourBar() == afterFirst);
   v.document.undoStack()->undo();
-  CHECK(v.document.design() == original);
+  CHECK(*v.document.fourBar() == original);
 }
 
 TEST_CASE("dragging B changes the crank length and the crank angle", "[canvas][drag]") {
   ShownView v;
-  const k::FourBarDesign before = v.document.design();
+  const k::FourBarDesign before = *v.document.fourBar();
   const double angleBefore = v.document.crankAngle();
   const QPointF b = v.point(fourbar::kB);
   const QPoint press = v.pixelOf(b);
@@ -92,13 +92,13 @@ TEST_CASE("dragging B changes the crank length and the crank angle", "[canvas][d
   const QPointF target = dropTarget(v, b, press, drop);
   const auto expected = k::dragFourBar(before, angleBefore, k::FourBarHandle::B, toEigen(target));
   REQUIRE(expected);
-  CHECK(v.document.design().lengths.crank == Approx(std::hypot(target.x(), target.y())).margin(kSceneTolerance));
-  CHECK(v.document.design().lengths.crank == Approx(expected->design.lengths.crank).margin(kSceneTolerance));
+  CHECK(v.document.fourBar()->lengths.crank == Approx(std::hypot(target.x(), target.y())).margin(kSceneTolerance));
+  CHECK(v.document.fourBar()->lengths.crank == Approx(expected->design.lengths.crank).margin(kSceneTolerance));
   CHECK(v.document.crankAngle() == Approx(expected->crankAngle).margin(kSceneTolerance));
   CHECK(v.document.crankAngle() != Approx(angleBefore).margin(1e-3));
   CHECK(v.document.undoStack()->count() == 1);
   v.document.undoStack()->undo();
-  CHECK(v.document.design() == before);
+  CHECK(*v.document.fourBar() == before);
 }
 
 TEST_CASE("dragging P moves the coupler point on the coupler", "[canvas][drag]") {
@@ -113,24 +113,24 @@ TEST_CASE("dragging P moves the coupler point on the coupler", "[canvas][drag]")
 
   const auto expected = k::dragFourBar(design, angle, k::FourBarHandle::CouplerPoint, toEigen(dropTarget(v, p, press, drop)));
   REQUIRE(expected);
-  REQUIRE(v.document.design().couplerPoint);
-  CHECK(v.document.design().couplerPoint->along == Approx(expected->design.couplerPoint->along).margin(kSceneTolerance));
-  CHECK(v.document.design().couplerPoint->across == Approx(expected->design.couplerPoint->across).margin(kSceneTolerance));
-  CHECK(v.document.design().lengths == design.lengths);
+  REQUIRE(v.document.fourBar()->couplerPoint);
+  CHECK(v.document.fourBar()->couplerPoint->along == Approx(expected->design.couplerPoint->along).margin(kSceneTolerance));
+  CHECK(v.document.fourBar()->couplerPoint->across == Approx(expected->design.couplerPoint->across).margin(kSceneTolerance));
+  CHECK(v.document.fourBar()->lengths == design.lengths);
   CHECK(v.document.undoStack()->undoText() == "Move P");
 }
 
 TEST_CASE("dragging O2 changes the frame length and keeps O4 where it was on screen", "[canvas][drag]") {
   ShownView v;
-  const double frameBefore = v.document.design().lengths.frame;
+  const double frameBefore = v.document.fourBar()->lengths.frame;
   const QPoint o4Before = v.pixelOf(v.point(fourbar::kO4));
   const QPoint press = v.pixelOf(v.point(fourbar::kO2));
   const QPoint drop = press + QPoint(-40, 0);
   const double shift = (v.view.mapToScene(drop) - v.view.mapToScene(press)).x();
   v.drag(press, drop, 8);
 
-  CHECK(v.document.design().lengths.frame == Approx(frameBefore - shift).margin(1e-6));
-  CHECK(v.document.design().lengths.frame > frameBefore);
+  CHECK(v.document.fourBar()->lengths.frame == Approx(frameBefore - shift).margin(1e-6));
+  CHECK(v.document.fourBar()->lengths.frame > frameBefore);
   const QPoint o4After = v.pixelOf(v.point(fourbar::kO4));
   CHECK(std::abs(o4After.x() - o4Before.x()) <= 1);
   CHECK(std::abs(o4After.y() - o4Before.y()) <= 1);
@@ -141,7 +141,7 @@ TEST_CASE("dragging O2 changes the frame length and keeps O4 where it was on scr
 
 TEST_CASE("a drag that cannot be assembled is refused and changes nothing", "[canvas][drag]") {
   ShownView v;
-  const k::FourBarDesign before = v.document.design();
+  const k::FourBarDesign before = *v.document.fourBar();
   QSignalSpy refused(&v.view, &linkwright::ui::LinkageView::editRefused);
   const QPointF b = v.point(fourbar::kB);
   const QPoint press = v.pixelOf(b);
@@ -155,7 +155,7 @@ TEST_CASE("a drag that cannot be assembled is refused and changes nothing", "[ca
   CHECK(v.scene().messageItem()->text().contains("cannot be assembled"));
   QTest::mouseRelease(v.viewport(), Qt::LeftButton, Qt::NoModifier, far);
 
-  CHECK(v.document.design() == before);
+  CHECK(*v.document.fourBar() == before);
   CHECK(v.document.undoStack()->count() == 0);
   REQUIRE(refused.count() >= 1);
   CHECK(refused.first().first().toString().contains("cannot be assembled"));
@@ -164,18 +164,18 @@ TEST_CASE("a drag that cannot be assembled is refused and changes nothing", "[ca
 
 TEST_CASE("a refused move keeps the last good state of the drag", "[canvas][drag]") {
   ShownView v;
-  const k::FourBarDesign initial = v.document.design();
+  const k::FourBarDesign initial = *v.document.fourBar();
   const QPointF b = v.point(fourbar::kB);
   const QPoint press = v.pixelOf(b);
   const QPoint good = press + QPoint(8, 8);
   QTest::mousePress(v.viewport(), Qt::LeftButton, Qt::NoModifier, press);
   QTest::mouseMove(v.viewport(), good);
-  const k::FourBarDesign lastGood = v.document.design();
+  const k::FourBarDesign lastGood = *v.document.fourBar();
   REQUIRE(lastGood != initial);
   QTest::mouseMove(v.viewport(), v.pixelOf(b + QPointF(200.0, 0.0)));
-  CHECK(v.document.design() == lastGood);
+  CHECK(*v.document.fourBar() == lastGood);
   QTest::mouseRelease(v.viewport(), Qt::LeftButton, Qt::NoModifier, v.pixelOf(b + QPointF(200.0, 0.0)));
-  CHECK(v.document.design() == lastGood);
+  CHECK(*v.document.fourBar() == lastGood);
   CHECK(v.document.undoStack()->count() == 1);
 }
 

@@ -2,6 +2,8 @@
 // the request the checkboxes make, units, gaps, the cursor, limit markers and hover read-out.
 #include "ui/plots/plot_panel.h"
 
+#include "four_bar_curves.h"
+
 #include "ui/plots/hover_readout.h"
 #include "ui/plots/limit_markers.h"
 #include "ui/plots/quantity_chart_view.h"
@@ -27,6 +29,8 @@
 #include <memory>
 
 using namespace linkwright::ui;
+using linkwright::ui::test::fourBarCurve;
+using linkwright::ui::test::fourBarQuantities;
 namespace k = linkwright::kinematics;
 
 namespace {
@@ -96,7 +100,9 @@ TEST_CASE("After construction the series hold the document's sweep", "[plot_pane
   CHECK(angles->xAxis()->titleText() == QStringLiteral("crank angle [deg]"));
   CHECK(angles->yAxis()->titleText() == QStringLiteral("angle [deg]"));
   CHECK(panel.chartView(QuantityKind::Omega)->yAxis()->titleText() == QStringLiteral("ω [deg/s]"));
-  CHECK(panel.chartViews().size() == 3);
+  CHECK(panel.chartViews().size() == 6);  // a four-bar has no slider: its three charts are hidden
+  for (const auto kind : {QuantityKind::Position, QuantityKind::Velocity, QuantityKind::Acceleration})
+    CHECK(panel.chartView(kind)->isHidden());
   CHECK(panel.chartTitle(1) == QStringLiteral("Angular velocities"));
   CHECK(panel.chartViews()[1]->chart()->title() == panel.chartTitle(1));
 }
@@ -105,7 +111,7 @@ TEST_CASE("Editing a length re-plots what the core now says", "[plot_panel]") {
   MechanismDocument doc;
   PlotPanel panel(&doc);
   const QList<QPointF> before = plotted(panel, PlotQuantity::RockerAngle);
-  k::FourBarDesign d = doc.design();
+  k::FourBarDesign d = *doc.fourBar();
   d.lengths.coupler = 65.0;
   REQUIRE_FALSE(doc.edit(d, QStringLiteral("coupler")).has_value());
   const QList<QPointF> after = plotted(panel, PlotQuantity::RockerAngle);
@@ -189,8 +195,8 @@ TEST_CASE("A non-Grashof linkage plots nothing outside its assemblable range", "
   REQUIRE(assembled > 0);
   REQUIRE(assembled < static_cast<qsizetype>(s.size()));  // there is a gap to get right
 
-  for (const PlotQuantity q : allPlotQuantities()) {
-    CAPTURE(quantityKey(q));
+  for (const PlotQuantity q : fourBarQuantities()) {
+    CAPTURE(fourBarCurve(q).key);
     const QList<QLineSeries*> segments = panel.chartView(quantityKind(q))->segments(q);
     CHECK(segments.size() >= 2);  // the gap splits the line
     for (const QPointF& p : plotted(panel, q))
@@ -286,7 +292,7 @@ TEST_CASE("Hovering a curve reads out the nearest sample with its unit", "[plot_
   // The mouse is near the line, not on a sample: the read-out snaps to the sample at 90°.
   emit omega->hovered(QPointF(90.2, 0.0), true);
   const double value = k::radToDeg(doc.sweep().linkOmega[kRocker][180]);
-  CHECK(panel.hoverReadout()->text() == readoutText(PlotQuantity::RockerOmega, {90.0, value}, AngleUnit::Degrees));
+  CHECK(panel.hoverReadout()->text() == readoutText(fourBarCurve(PlotQuantity::RockerOmega), {90.0, value}, AngleUnit::Degrees));
   CHECK(panel.hoverReadout()->text().endsWith(QStringLiteral("deg/s at crank 90.0°")));
   emit omega->hovered(QPointF(90.2, 0.0), false);
   CHECK_FALSE(panel.hoverReadout()->text().contains(QStringLiteral("=")));
@@ -307,11 +313,11 @@ TEST_CASE("Legends name the shown curves and nothing else", "[plot_panel]") {
     return labels;
   };
   CHECK(legendLabels(panel.chartViews()[0]) ==
-        QStringList{quantityName(PlotQuantity::CouplerAngle), quantityName(PlotQuantity::RockerAngle),
-                    quantityName(PlotQuantity::TransmissionAngle), QStringLiteral("rocker limit")});
-  CHECK(legendLabels(panel.chartViews()[1]) == QStringList{quantityName(PlotQuantity::RockerOmega)});
+        QStringList{fourBarCurve(PlotQuantity::CouplerAngle).name, fourBarCurve(PlotQuantity::RockerAngle).name,
+                    fourBarCurve(PlotQuantity::TransmissionAngle).name, QStringLiteral("rocker limit")});
+  CHECK(legendLabels(panel.chartViews()[1]) == QStringList{fourBarCurve(PlotQuantity::RockerOmega).name});
   CHECK(legendLabels(panel.chartViews()[2]) ==
-        QStringList{quantityName(PlotQuantity::CouplerAlpha), quantityName(PlotQuantity::RockerAlpha)});
+        QStringList{fourBarCurve(PlotQuantity::CouplerAlpha).name, fourBarCurve(PlotQuantity::RockerAlpha).name});
 
   // A design with gaps adds segments to the curves: still one legend entry per curve.
   const qsizetype segmentsBefore = panel.chartView(QuantityKind::Alpha)->segments(PlotQuantity::RockerAlpha).size();
@@ -319,8 +325,8 @@ TEST_CASE("Legends name the shown curves and nothing else", "[plot_panel]") {
   REQUIRE(panel.chartView(QuantityKind::Alpha)->segments(PlotQuantity::RockerAlpha).size() > segmentsBefore);
   (void)panel.grab();
   CHECK(legendLabels(panel.chartViews()[2]) ==
-        QStringList{quantityName(PlotQuantity::CouplerAlpha), quantityName(PlotQuantity::RockerAlpha)});
-  CHECK(legendLabels(panel.chartViews()[1]) == QStringList{quantityName(PlotQuantity::RockerOmega)});
+        QStringList{fourBarCurve(PlotQuantity::CouplerAlpha).name, fourBarCurve(PlotQuantity::RockerAlpha).name});
+  CHECK(legendLabels(panel.chartViews()[1]) == QStringList{fourBarCurve(PlotQuantity::RockerOmega).name});
 }
 
 TEST_CASE("The plot areas line up so the cursor reads across the charts", "[plot_panel]") {
@@ -358,9 +364,9 @@ TEST_CASE("The checkbox row wraps in a narrow panel", "[plot_panel]") {
   CHECK(panel.minimumSizeHint().width() < 450);
   panel.resize(420, 900);
   (void)panel.grab();
-  for (const PlotQuantity q : allPlotQuantities()) {
+  for (const PlotQuantity q : fourBarQuantities()) {
     const QCheckBox* box = panel.selector()->checkBox(q);
-    CAPTURE(quantityKey(q));
+    CAPTURE(fourBarCurve(q).key);
     CHECK(box->mapTo(&panel, QPoint(box->width(), 0)).x() <= 420);
   }
 }
@@ -386,8 +392,8 @@ TEST_CASE("The panel renders offscreen with curves in their colours", "[plot_pan
       }
     return n;
   };
-  CHECK(count(quantityColor(PlotQuantity::CouplerAngle)) > 500);
-  CHECK(count(quantityColor(PlotQuantity::RockerAngle)) > 500);
+  CHECK(count(fourBarCurve(PlotQuantity::CouplerAngle).color) > 500);
+  CHECK(count(fourBarCurve(PlotQuantity::RockerAngle).color) > 500);
 
   MechanismDocument triple;
   triple.reset(nonGrashof());

@@ -1,0 +1,102 @@
+#include "kinematics/model/point_drag.h"
+
+#include "kinematics/model/mechanism_check.h"
+#include "kinematics/solve/guide_line.h"
+
+#include <cmath>
+
+namespace linkwright::kinematics {
+namespace {
+
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
+
+struct Dragger {
+  Mechanism& m;
+  const Pose& pose;
+  double inputAngle;
+  std::size_t index;
+  const Eigen::Vector2d& target;
+
+  // A length the drag would make (near) zero is refused: the point would sit on its parent.
+  std::optional<Error> lengthTo(PointId parent, double& length) const {
+    length = (target - pose.position[parent.index]).norm();
+    if (length > 1e-9 * (1.0 + pose.position[parent.index].norm())) return std::nullopt;
+    return Error{ErrorCode::InvalidValue, m.points[index].name,
+                 m.points[index].name + " cannot be dropped onto " + m.points[parent.index].name + ": the link between them would have no length"};
+  }
+
+  std::optional<Error> operator()(GroundPoint& g) const {
+    g.position = target;
+    return std::nullopt;
+  }
+  std::optional<Error> operator()(CrankPoint& c) const {
+    if (auto e = lengthTo(c.pivot, c.length)) return e;
+    const Eigen::Vector2d r = target - pose.position[c.pivot.index];
+    c.phase = std::remainder(std::atan2(r.y(), r.x()) - inputAngle, 2.0 * std::acos(-1.0));
+    return std::nullopt;
+  }
+  std::optional<Error> operator()(RrrPoint& r) const {
+    if (auto e = lengthTo(r.first, r.firstLength)) return e;
+    if (auto e = lengthTo(r.second, r.secondLength)) return e;
+    const double side = cross(target - pose.position[r.first.index], target - pose.position[r.second.index]);
+    r.branch = side >= 0.0 ? Branch::Open : Branch::Crossed;
+    return std::nullopt;
+  }
+  std::optional<Error> operator()(RrpPoint& p) const {
+    const GuideLine line = guideLineAt(m, p.guide, pose);
+    const double s = line.direction.dot(target - line.point);
+    const double foot = line.direction.dot(pose.position[p.first.index] - line.point);
+    const Eigen::Vector2d onGuide = line.point + s * line.direction;
+    p.length = (onGuide - pose.position[p.first.index]).norm();
+    if (!(p.length > 0.0))
+      return Error{ErrorCode::InvalidValue, m.points[index].name, m.points[index].name + " cannot sit right under its rod's pin"};
+    p.branch = s >= foot ? Branch::Open : Branch::Crossed;
+    return std::nullopt;
+  }
+  std::optional<Error> operator()(RprPoint& s) const {
+    const Eigen::Vector2d o = pose.position[s.pivot.index];
+    const Eigen::Vector2d e = (pose.position[s.through.index] - o).normalized();
+    s.length = e.dot(target - o);
+    if (s.length > 0.0) return std::nullopt;
+    return Error{ErrorCode::InvalidValue, m.points[index].name,
+                 m.points[index].name + " must stay on the slot's side of " + m.points[s.through.index].name};
+  }
+  std::optional<Error> operator()(PrpPoint&) const {
+    return Error{ErrorCode::InvalidValue, m.points[index].name,
+                 m.points[index].name + " is where its two guides cross: move a guide instead"};
+  }
+  std::optional<Error> operator()(AttachedPoint& a) const {
+    const Link& l = m.links[a.link.index];
+    const Eigen::Vector2d base = pose.position[l.first.index];
+    const Eigen::Vector2d u = (pose.position[l.second.index] - base).normalized();
+    a.along = u.dot(target - base);
+    a.across = perp(u).dot(target - base);
+    return std::nullopt;
+  }
+  std::optional<Error> operator()(FreePoint& f) const {
+    f.guess = target;
+    for (DistanceConstraint& c : m.constraints) {
+      if (c.first.index != index && c.second.index != index) continue;
+      const PointId other = c.first.index == index ? c.second : c.first;
+      if (auto e = lengthTo(other, c.length)) return e;
+    }
+    return std::nullopt;
+  }
+};
+
+} // namespace
+
+Result<Mechanism> dragPoint(const Mechanism& mechanism, const Pose& pose, double inputAngle, PointId point,
+                            const Eigen::Vector2d& target) {
+  if (point.index >= mechanism.points.size() || pose.position.size() != mechanism.points.size())
+    return Error{ErrorCode::InvalidStructure, "point", "the dragged point does not belong to this linkage"};
+  if (!target.allFinite())
+    return Error{ErrorCode::InvalidValue, "target", "the drag target must be a finite position"};
+  Mechanism m = mechanism;
+  if (auto e = std::visit(Dragger{m, pose, inputAngle, point.index, target}, m.points[point.index].definition)) return *e;
+  if (auto e = checkMechanism(m)) return *e;
+  return m;
+}
+
+} // namespace linkwright::kinematics

@@ -1,0 +1,328 @@
+// Speed of the kinematics core (issue 5): the cost per sample of a sweep at each level of a
+// request (positions; + ω and v; + α and a; + a coupler point's path) for the four-bar, the
+// slider-crank and the shaper, sweeps of 36 to 1,000,000 samples, one pose solved into a
+// prepared Pose, and a hand-written closed-form four-bar loop as the baseline the core is
+// judged against. Names read Mechanism/Level/Samples; one item is one sample. docs/benchmarks.md
+// says how to run it and what was measured.
+//
+// Allocations are counted by replacing the global operator new: each benchmark reports
+// `allocs_per_sample` and `allocs_per_call` over its timed loop.
+
+#include "kinematics/model/constraint_form.h"
+#include "kinematics/model/examples.h"
+#include "kinematics/model/sixbar.h"
+#include "kinematics/model/sixbar_newton.h"
+#include "kinematics/model/fourbar.h"
+#include "kinematics/model/mechanism.h"
+#include "kinematics/model/shaper.h"
+#include "kinematics/model/slider_crank.h"
+#include "kinematics/model/units.h"
+#include "kinematics/solve/pose_solver.h"
+#include "kinematics/solve/sweep.h"
+
+#include <benchmark/benchmark.h>
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <new>
+#include <string>
+#include <vector>
+
+using namespace linkwright::kinematics;
+
+// The allocation counter has to be global: operator new has no other place to report to. It
+// is the benchmark's instrument, not program state (the style's "no mutable statics" is about
+// the product).
+namespace {
+std::atomic<std::uint64_t> gAllocations{0};
+
+void* countedAllocation(std::size_t size) {
+  gAllocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+
+void* countedAlignedAllocation(std::size_t size, std::align_val_t alignment) {
+  gAllocations.fetch_add(1, std::memory_order_relaxed);
+  const auto align = static_cast<std::size_t>(alignment);
+  const std::size_t rounded = (size + align - 1) / align * align;  // aligned_alloc's precondition
+  if (void* p = std::aligned_alloc(align, rounded == 0 ? align : rounded)) return p;
+  throw std::bad_alloc();
+}
+} // namespace
+
+void* operator new(std::size_t size) { return countedAllocation(size); }
+void* operator new[](std::size_t size) { return countedAllocation(size); }
+void* operator new(std::size_t size, std::align_val_t a) { return countedAlignedAllocation(size, a); }
+void* operator new[](std::size_t size, std::align_val_t a) { return countedAlignedAllocation(size, a); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+
+namespace {
+
+const std::vector<std::int64_t> kSizes{36, 360, 3600, 36000, 1000000};
+
+// Minor page faults so far: a fresh multi-megabyte allocation is paid for in page faults (the
+// kernel zeroes each new page) when it is first written, not when malloc returns.
+std::int64_t pageFaults() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_minflt;
+}
+
+// Counts allocations and page faults over the timed loop only.
+class Instruments {
+public:
+  Instruments() : m_allocations(gAllocations.load()), m_faults(pageFaults()) {}
+
+  // One item is one sample.
+  void report(benchmark::State& state, std::int64_t samplesPerCall) const {
+    const auto calls = static_cast<double>(state.iterations());
+    const double samples = calls * static_cast<double>(samplesPerCall);
+    const auto allocations = static_cast<double>(gAllocations.load() - m_allocations);
+    state.SetItemsProcessed(state.iterations() * samplesPerCall);
+    state.counters["allocs_per_call"] = allocations / calls;
+    state.counters["allocs_per_sample"] = allocations / samples;
+    state.counters["faults_per_sample"] = static_cast<double>(pageFaults() - m_faults) / samples;
+  }
+
+private:
+  std::uint64_t m_allocations;
+  std::int64_t m_faults;
+};
+
+// --- The linkages ------------------------------------------------------------------------
+
+struct Subject {
+  std::string name;      // "FourBar", "SliderCrank", "Shaper"
+  Mechanism plain;       // as built
+  Mechanism withPath;    // plus one point fixed on the coupler (or rod, or link)
+  double omega = 0.0;    // rad/s, the example's crank speed
+};
+
+const FourBarExample& thesis() {
+  static const FourBarExample example = *findFourBarExample("thesis-crank-rocker");
+  return example;
+}
+
+// The README's coupler point for the thesis linkage (--coupler-point 35,20).
+constexpr CouplerPointSpec kThesisCouplerPoint{35.0, 20.0};
+
+Mechanism withPointOn(Mechanism m, LinkId link, double along, double across) {
+  m.points.push_back({"P", AttachedPoint{link, along, across}});
+  return m;
+}
+
+std::vector<Subject> subjects() {
+  const FourBarExample& t = thesis();
+  const Mechanism sliderCrank = makeSliderCrank(kLs3Engine).value();
+  const Mechanism shaperMechanism = makeShaper(kSeedShaper).value();
+  return {
+      {"FourBar", makeFourBar(t.lengths, t.branch).value(),
+       makeFourBar(t.lengths, t.branch, "mm", kThesisCouplerPoint).value(), t.omega},
+      {"SliderCrank", sliderCrank, withPointOn(sliderCrank, slidercrank::kRod, 0.3 * kLs3Engine.rod, 0.0),
+       2.0 * kPi * 110.0},
+      {"Shaper", shaperMechanism, withPointOn(shaperMechanism, shaper::kLink, 0.5 * kSeedShaper.link, 20.0),
+       2.0 * kPi * 3.0},
+      {"SixBar", makeSixBar(kWattIISixBar).value(), makeSixBar(kWattIISixBar).value(), 2.0 * kPi},  // P is its point
+      {"SixBarNewton", makeStephensonIINewton().value(), makeStephensonIINewton().value(), 2.0 * kPi},
+  };
+}
+
+// --- Sweeps through the core -------------------------------------------------------------
+
+struct Level {
+  const char* name;
+  SolveRequest request;
+  bool path;
+};
+
+constexpr Level kLevels[] = {
+    {"Positions", {false, false}, false},
+    {"Velocities", {true, false}, false},
+    {"Full", {true, true}, false},
+    {"Paths", {true, true}, true},
+};
+
+// sweep() returns its SweepResult by value, so every call allocates the result's columns
+// (and the tracker's scratch poses) afresh; that cost is part of what is measured.
+void sweepBenchmark(benchmark::State& state, const Mechanism& mechanism, double omega, SolveRequest request) {
+  const auto samples = static_cast<std::size_t>(state.range(0));
+  const SweepSpec spec{0.0, 2.0 * kPi, samples, omega, 0.5};
+  {
+    const auto check = sweep(mechanism, spec, request);
+    if (!check.ok() || !check->notAssembled.empty() || !check->singularAngles.empty()) {
+      state.SkipWithError("the benchmark's sweep does not assemble everywhere");
+      return;
+    }
+  }
+  const Instruments instruments;
+  for (auto _ : state) {
+    auto result = sweep(mechanism, spec, request);
+    benchmark::DoNotOptimize(result);
+    benchmark::ClobberMemory();
+  }
+  instruments.report(state, state.range(0));
+}
+
+// --- One pose ------------------------------------------------------------------------------
+
+void poseBenchmark(benchmark::State& state, const Mechanism& mechanism, double omega) {
+  Pose pose;
+  preparePose(mechanism, pose);
+  const SolveRequest full{true, true};
+  const double step = 2.0 * kPi / 3600.0;
+  double angle = 0.0;
+  const Instruments instruments;
+  for (auto _ : state) {
+    const PoseReport r = solvePoseInto(mechanism, {angle, omega, 0.5}, full, pose);
+    benchmark::DoNotOptimize(r);
+    benchmark::DoNotOptimize(pose.linkAlpha.data());
+    benchmark::ClobberMemory();
+    angle = angle + step < 2.0 * kPi ? angle + step : 0.0;
+  }
+  instruments.report(state, 1);
+}
+
+// --- The hand-written baseline -------------------------------------------------------------
+
+// What a careful hand-written closed-form four-bar loop costs: the crank tip, the dyad joint C
+// by the same Heron form as rrr_dyad.h, link angles by atan2, and rates from the differentiated
+// loop a·e^{iθ2} + b·e^{iθ3} = d + c·e^{iθ4} (Norton's formulas, written with the links' unit
+// vectors instead of sines of angle differences). No branch tracking, no checks, open branch.
+struct HandWrittenColumns {
+  std::vector<double> theta3, theta4, omega3, omega4, alpha3, alpha4;
+  explicit HandWrittenColumns(std::size_t n)
+      : theta3(n), theta4(n), omega3(n), omega4(n), alpha3(n), alpha4(n) {}
+};
+
+void handWrittenFourBar(const FourBarLengths& l, double from, double to, double omega2, double alpha2,
+                        HandWrittenColumns& out) {
+  const std::size_t n = out.theta3.size();
+  const double a = l.crank, b = l.coupler, c = l.rocker, d = l.frame;
+  const double step = n > 1 ? (to - from) / static_cast<double>(n - 1) : 0.0;
+  for (std::size_t j = 0; j < n; ++j) {
+    const double theta2 = from + static_cast<double>(j) * step;
+    const double c2 = std::cos(theta2), s2 = std::sin(theta2);
+    const double bx = a * c2, by = a * s2;
+    // Dyad B–C–O4: C = B + along·u + h·n, u = (O4 − B)/L.
+    const double ux = d - bx, uy = -by;
+    const double len = std::sqrt(ux * ux + uy * uy);
+    const double along = (b * b - c * c + len * len) / (2.0 * len);
+    const double h = std::sqrt(std::max(b * b - along * along, 0.0));
+    const double cx = bx + (along * ux - h * uy) / len;
+    const double cy = by + (along * uy + h * ux) / len;
+    // Unit vectors of coupler (B→C) and rocker (O4→C).
+    const double e3x = (cx - bx) / b, e3y = (cy - by) / b;
+    const double e4x = (cx - d) / c, e4y = cy / c;
+    out.theta3[j] = std::atan2(e3y, e3x);
+    out.theta4[j] = std::atan2(e4y, e4x);
+    // Velocity: a·ω2·i·e2 + b·ω3·i·e3 = c·ω4·i·e4; cross with e4, then with e3.
+    const double cross34 = e3x * e4y - e3y * e4x;  // sin(θ4 − θ3)
+    const double cross24 = c2 * e4y - s2 * e4x;    // sin(θ4 − θ2)
+    const double cross23 = c2 * e3y - s2 * e3x;    // sin(θ3 − θ2)
+    const double w3 = -a * omega2 * cross24 / (b * cross34);
+    const double w4 = -a * omega2 * cross23 / (c * cross34);
+    out.omega3[j] = w3;
+    out.omega4[j] = w4;
+    // Acceleration: a(α2·i − ω2²)e2 + b(α3·i − ω3²)e3 = c(α4·i − ω4²)e4. The known part
+    // k = a(α2·i − ω2²)e2 − b·ω3²·e3 + c·ω4²·e4 leaves b·α3·i·e3 − c·α4·i·e4 = −k.
+    const double kx = a * (-alpha2 * s2 - omega2 * omega2 * c2) - b * w3 * w3 * e3x + c * w4 * w4 * e4x;
+    const double ky = a * (alpha2 * c2 - omega2 * omega2 * s2) - b * w3 * w3 * e3y + c * w4 * w4 * e4y;
+    // With i·e = (−ey, ex): (i·e3)·e4 = cross34, (i·e4)·e3 = −cross34, (i·e)·e = 0, so
+    // dotting with e4 gives b·α3·cross34 = −k·e4, and with e3, c·α4·cross34 = −k·e3.
+    out.alpha3[j] = -(kx * e4x + ky * e4y) / (b * cross34);
+    out.alpha4[j] = -(kx * e3x + ky * e3y) / (c * cross34);
+  }
+}
+
+void handWrittenBenchmark(benchmark::State& state) {
+  const auto samples = static_cast<std::size_t>(state.range(0));
+  HandWrittenColumns columns(samples);
+  const FourBarExample& t = thesis();
+  const Instruments instruments;
+  for (auto _ : state) {
+    handWrittenFourBar(t.lengths, 0.0, 2.0 * kPi, t.omega, 0.5, columns);
+    benchmark::DoNotOptimize(columns.alpha4.data());
+    benchmark::ClobberMemory();
+  }
+  instruments.report(state, state.range(0));
+}
+
+// The baseline must compute what the core computes, or the comparison means nothing.
+bool handWrittenMatchesCore() {
+  const FourBarExample& t = thesis();
+  const std::size_t n = 361;
+  HandWrittenColumns hand(n);
+  handWrittenFourBar(t.lengths, 0.0, 2.0 * kPi, t.omega, 0.5, hand);
+  const auto core = sweep(makeFourBar(t.lengths, t.branch).value(), {0.0, 2.0 * kPi, n, t.omega, 0.5});
+  if (!core.ok()) return false;
+  const auto coupler = fourbar::kCoupler.index, rocker = fourbar::kRocker.index;
+  double worst = 0.0;
+  for (std::size_t j = 0; j < n; ++j) {
+    worst = std::max({worst, std::abs(std::remainder(hand.theta3[j] - core->linkAngle[coupler][j], 2.0 * kPi)),
+                      std::abs(std::remainder(hand.theta4[j] - core->linkAngle[rocker][j], 2.0 * kPi)),
+                      std::abs(hand.omega3[j] - core->linkOmega[coupler][j]),
+                      std::abs(hand.omega4[j] - core->linkOmega[rocker][j]),
+                      std::abs(hand.alpha3[j] - core->linkAlpha[coupler][j]),
+                      std::abs(hand.alpha4[j] - core->linkAlpha[rocker][j])});
+  }
+  if (worst > 1e-9) std::fprintf(stderr, "hand-written four-bar differs from the core by %g\n", worst);
+  return worst <= 1e-9;
+}
+
+void registerAll() {
+  for (const Subject& s : subjects()) {
+    for (const Level& level : kLevels) {
+      if (level.path && s.withPath.points.size() == s.plain.points.size()) continue;
+      const Mechanism& m = level.path ? s.withPath : s.plain;
+      const std::string name = s.name + "/" + level.name;
+      auto* b = benchmark::RegisterBenchmark(name.c_str(), sweepBenchmark, m, s.omega, level.request);
+      for (const std::int64_t n : kSizes) b->Arg(n);
+      b->Unit(benchmark::kNanosecond);
+    }
+  }
+  // Newton on the same four-bar (its joint C as a free point), against FourBar/Full above, and
+  // its cost against its tolerance at 3600 samples.
+  const Mechanism closed = makeFourBar(thesis().lengths, thesis().branch).value();
+  const Mechanism newton = withNewtonPoints(closed, solvePose(closed, {0.0, 1.0, 0.0}).value().position);
+  auto* full = benchmark::RegisterBenchmark("FourBar/NewtonFull", sweepBenchmark, newton, thesis().omega, SolveRequest{});
+  for (const std::int64_t n : kSizes) full->Arg(n);
+  full->Unit(benchmark::kNanosecond);
+  for (const double tolerance : {1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14}) {
+    const std::string name = "FourBar/NewtonTolerance/" + std::to_string(static_cast<int>(std::lround(-std::log10(tolerance))));
+    benchmark::RegisterBenchmark(name.c_str(), sweepBenchmark, newton, thesis().omega, SolveRequest{true, true, {tolerance, 50}})
+        ->Arg(3600)
+        ->Unit(benchmark::kNanosecond);
+  }
+  auto* hand = benchmark::RegisterBenchmark("FourBar/HandWritten", handWrittenBenchmark);
+  for (const std::int64_t n : kSizes) hand->Arg(n);
+  hand->Unit(benchmark::kNanosecond);
+  const FourBarExample& t = thesis();
+  benchmark::RegisterBenchmark("FourBar/Pose/Full", poseBenchmark, makeFourBar(t.lengths, t.branch).value(), t.omega)
+      ->Unit(benchmark::kNanosecond);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  if (!handWrittenMatchesCore()) return 1;
+  registerAll();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,125 @@
+// linkwright-cli on documents (FILE.json): any linkage the GUI saves analyses exactly as the
+// built-in example it came from; old-version files still work; bad files fail clearly.
+
+#include "app/cli/cli.h"
+#include "tests/cli/run_cli.h"
+
+#include "kinematics/io/document_json.h"
+#include "kinematics/model/mechanism_design.h"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace {
+
+using namespace linkwright;
+
+using Run = test::CliRun;
+Run run(const std::vector<std::string>& args) { return test::runCliCommand(args); }
+
+// A document in the temporary directory, removed when the test ends.
+class TempDocument {
+public:
+  TempDocument(const std::string& name, const std::string& text)
+      : m_path((std::filesystem::temp_directory_path() / ("linkwright_cli_" + name + ".json")).string()) {
+    std::ofstream(m_path, std::ios::binary) << text;
+  }
+  ~TempDocument() { std::filesystem::remove(m_path); }
+  TempDocument(const TempDocument&) = delete;
+  TempDocument& operator=(const TempDocument&) = delete;
+  const std::string& path() const { return m_path; }
+
+private:
+  std::string m_path;
+};
+
+} // namespace
+
+TEST_CASE("a saved example analyses exactly as the example", "[cli][document]") {
+  for (const std::string name : {"thesis-crank-rocker", "miranda-fourbar", "ls3-engine", "shaper", "whitworth", "watt-i",
+                                 "watt-ii", "stephenson-i", "stephenson-iii", "stephenson-ii", "stephenson-iii-triad"}) {
+    CAPTURE(name);
+    const auto design = kinematics::designForExample(name);
+    REQUIRE(design.has_value());
+    const TempDocument file(name, kinematics::io::writeDocument(*design));
+    const Run fromFile = run({"analyze", file.path(), "--step", "5"});
+    const Run fromExample = run({"analyze", "--example", name, "--step", "5"});
+    INFO(fromFile.err);
+    REQUIRE(fromFile.code == 0);
+    REQUIRE(fromExample.code == 0);
+    CHECK(fromFile.out == fromExample.out);
+    CHECK(run({"extremes", file.path()}).code == 0);
+    CHECK(run({"classify", file.path()}).code == 0);
+  }
+}
+
+TEST_CASE("a document's speed and grid are the defaults", "[cli][document]") {
+  kinematics::MechanismDesign d = kinematics::designFromExample(*kinematics::findMechanismExample("watt-ii"));
+  d.omega = 3.0;
+  d.fromDeg = 10.0;
+  d.toDeg = 40.0;
+  d.samples = 4;
+  const TempDocument file("grid", kinematics::io::writeDocument(d));
+  const Run r = run({"analyze", file.path()});
+  REQUIRE(r.code == 0);
+  std::istringstream lines(r.out);
+  std::string header, first;
+  std::getline(lines, header);
+  std::getline(lines, first);
+  CHECK_THAT(first, Catch::StartsWith("10,3,0,"));  // crank angle, ω, α
+  CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 5);  // header + 4 rows
+}
+
+TEST_CASE("a version 1 document analyses as its four-bar", "[cli][document][migration]") {
+  const std::string v1 = LINKWRIGHT_TEST_DOCUMENTS "/fourbar_v1.json";
+  const Run r = run({"analyze", v1, "--step", "30", "--from", "0", "--to", "60"});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const Run same = run({"analyze", "--fourbar", "60,25,70,45", "--branch", "crossed", "--coupler-point", "35,-20.25",
+                        "--omega", "1.0471975511965976", "--alpha", "0.1", "--step", "30", "--from", "0", "--to", "60"});
+  CHECK(r.out == same.out);
+}
+
+TEST_CASE("bad documents fail with the file and the member named", "[cli][document][errors]") {
+  const std::string good = kinematics::io::writeDocument(*kinematics::designForExample("watt-ii"));
+  SECTION("missing file") {
+    const Run r = run({"analyze", "/nonexistent/dir/x.json"});
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("/nonexistent/dir/x.json: cannot be opened for reading"));
+  }
+  SECTION("corrupt file") {
+    const TempDocument file("corrupt", good.substr(0, good.size() / 3));
+    const Run r = run({"analyze", file.path()});
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains(file.path() + ": not valid JSON"));
+    CHECK(r.out.empty());
+  }
+  SECTION("future version") {
+    std::string text = good;
+    text.replace(text.find("\"version\": 2"), 12, "\"version\": 9");
+    const TempDocument file("future", text);
+    const Run r = run({"classify", file.path()});
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("written by a newer Linkwright"));
+  }
+  SECTION("a document and --example together") {
+    const TempDocument file("both", good);
+    const Run r = run({"analyze", file.path(), "--example", "watt-ii"});
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("--example cannot be used with a document"));
+  }
+  SECTION("two documents") {
+    const Run r = run({"analyze", "a.json", "b.json"});
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("only one document"));
+  }
+  SECTION("four-bar options on a linkage") {
+    const TempDocument file("branch", good);
+    const Run r = run({"analyze", file.path(), "--branch", "crossed"});
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("--branch applies to four-bars"));
+  }
+}

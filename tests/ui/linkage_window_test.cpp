@@ -1,0 +1,151 @@
+// The window with linkages other than four-bars: Export ▸ CSV equals `linkwright-cli analyze
+// --example NAME` byte for byte, File ▸ New and the Examples menu offer every kind and example,
+// save → open in a new window reproduces the linkage, attaching a dyad swaps the four-bar's
+// lengths panel for the dimensions panel, and a corrupt file changes nothing.
+
+#include "ui/dialogs/dyad_request.h"
+#include "ui/document/mechanism_document.h"
+#include "ui/main_window.h"
+#include "ui/message_banner.h"
+#include "ui/panels/dimensions_panel.h"
+#include "ui/panels/lengths_panel.h"
+
+#include "app/cli/cli.h"
+#include "kinematics/model/mechanism_design.h"
+
+#include <catch2/catch.hpp>
+
+#include <QAction>
+#include <QFile>
+#include <QMenu>
+#include <QMenuBar>
+#include <QTemporaryDir>
+
+#include <sstream>
+
+using namespace linkwright;
+namespace k = linkwright::kinematics;
+
+namespace {
+
+QByteArray readAll(const QString& path) {
+  QFile f(path);
+  REQUIRE(f.open(QIODevice::ReadOnly));
+  return f.readAll();
+}
+
+QMenu* topMenu(ui::MainWindow& window, const QString& title) {
+  for (QAction* a : window.menuBar()->actions())
+    if (a->menu() != nullptr && a->text().remove('&') == title) return a->menu();
+  return nullptr;
+}
+
+} // namespace
+
+TEST_CASE("Export ▸ CSV of any example equals linkwright-cli analyze --example", "[ui][window][csv][linkage]") {
+  ui::MainWindow window;
+  QTemporaryDir dir;
+  for (const std::string name : {"ls3-engine", "shaper", "whitworth", "watt-ii", "stephenson-iii"}) {
+    CAPTURE(name);
+    window.newDocument(*k::designForExample(name));
+    const QString path = dir.filePath(QString::fromStdString(name) + ".csv");
+    REQUIRE(window.exportCsv(path));
+    // The document samples every 0.5° (designFromExample); the CLI is asked for the same grid.
+    const auto& design = std::get<k::MechanismDesign>(window.document()->design());
+    std::ostringstream out, err;
+    REQUIRE(cli::runCli({"analyze", "--example", name, "--samples", std::to_string(design.samples)}, out, err) == 0);
+    CHECK(readAll(path).toStdString() == out.str());
+  }
+}
+
+TEST_CASE("File ▸ New offers each kind of linkage and the Examples menu every example", "[ui][window][linkage]") {
+  ui::MainWindow window;
+  QMenu* file = topMenu(window, "File");
+  REQUIRE(file != nullptr);
+  QMenu* newMenu = nullptr;
+  for (QAction* a : file->actions())
+    if (a->menu() != nullptr && a->text().remove('&') == "New") newMenu = a->menu();
+  REQUIRE(newMenu != nullptr);
+  QStringList kinds;
+  for (QAction* a : newMenu->actions()) kinds << a->text().remove('&');
+  CHECK(kinds.size() == 8);
+  for (QAction* a : newMenu->actions()) {
+    CAPTURE(a->text().toStdString());
+    a->trigger();
+    CHECK(window.document()->undoStack()->count() == 0);
+    CHECK(window.document()->poseStatus() != k::PoseStatus::NotAssemblable);
+    CHECK(window.lengthsPanel()->isVisibleTo(&window) == (window.document()->fourBar() != nullptr));
+    CHECK(window.dimensionsPanel()->isVisibleTo(&window) == (window.document()->fourBar() == nullptr));
+  }
+  QMenu* examples = topMenu(window, "Examples");
+  REQUIRE(examples != nullptr);
+  std::vector<std::string> names;
+  for (const auto& e : k::fourBarExamples()) names.push_back(e.name);
+  for (const auto& e : k::mechanismExamples()) names.push_back(e.name);
+  for (const std::string& name : names) {
+    CAPTURE(name);
+    auto* action = examples->findChild<QAction*>(QString::fromStdString("example_" + name));
+    if (action == nullptr) action = window.findChild<QAction*>(QString::fromStdString("example_" + name));
+    REQUIRE(action != nullptr);
+    CHECK_FALSE(action->text().isEmpty());
+    action->trigger();
+    CHECK(window.document()->design() == *k::designForExample(name));
+  }
+}
+
+TEST_CASE("a linkage saved in one window opens the same in another", "[ui][window][file][linkage]") {
+  QTemporaryDir dir;
+  const QString path = dir.filePath("engine.json");
+  k::Design saved;
+  {
+    ui::MainWindow window;
+    window.newDocument(*k::designForExample("ls3-engine"));
+    k::MechanismDesign d = std::get<k::MechanismDesign>(window.document()->design());
+    std::get<k::RrpPoint>(d.mechanism.points[2].definition).length = 150.0;
+    REQUIRE_FALSE(window.document()->edit(d, "rod").has_value());
+    REQUIRE(window.saveTo(path));
+    saved = window.document()->design();
+  }
+  ui::MainWindow other;
+  REQUIRE(other.openFile(path));
+  CHECK(other.document()->design() == saved);
+  CHECK(other.dimensionsPanel()->isVisibleTo(&other));
+  CHECK_FALSE(other.lengthsPanel()->isVisibleTo(&other));
+}
+
+TEST_CASE("a corrupt or newer file leaves an open linkage as it was", "[ui][window][file][errors][linkage]") {
+  QTemporaryDir dir;
+  const QString newer = dir.filePath("newer.json");
+  {
+    QFile f(newer);
+    REQUIRE(f.open(QIODevice::WriteOnly));
+    f.write("{\"format\": \"linkwright\", \"version\": 99}");
+  }
+  ui::MainWindow window;
+  window.newDocument(*k::designForExample("watt-ii"));
+  const k::Design before = window.document()->design();
+  CHECK_FALSE(window.openFile(newer));
+  CHECK(window.banner()->text().contains("newer Linkwright"));
+  CHECK(window.document()->design() == before);
+}
+
+TEST_CASE("attaching a dyad in the window swaps the lengths panel for the dimensions panel", "[ui][window][attach]") {
+  ui::MainWindow window;
+  REQUIRE(window.document()->fourBar() != nullptr);
+  const auto request = ui::suggestDyad(window.document()->mechanism(), window.document()->crankAngle(), ui::DyadKind::Rrr);
+  REQUIRE_FALSE(window.attachDyad(request).has_value());
+  CHECK(window.document()->fourBar() == nullptr);
+  CHECK(window.document()->mechanism().links.size() == 5);
+  CHECK(window.dimensionsPanel()->isVisibleTo(&window));
+  CHECK_FALSE(window.lengthsPanel()->isVisibleTo(&window));
+  window.document()->undoStack()->undo();
+  CHECK(window.document()->fourBar() != nullptr);
+  CHECK(window.lengthsPanel()->isVisibleTo(&window));
+  // A refusal names the reason and changes nothing.
+  ui::DyadRequest taken = request;
+  taken.joint = "C";
+  const auto why = window.attachDyad(taken);
+  REQUIRE(why.has_value());
+  CHECK(why->contains("already a point named C"));
+  CHECK(window.document()->fourBar() != nullptr);
+}

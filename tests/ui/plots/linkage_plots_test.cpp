@@ -1,0 +1,93 @@
+// Plots for linkages other than four-bars: the quantities come from the mechanism (every
+// moving link but the crank, a transmission angle per dyad joint, a slider's stroke), the
+// curves hold the sweep's values, and slider charts appear only where there are sliders.
+#include "ui/plots/plot_panel.h"
+
+#include "ui/plots/limit_markers.h"
+#include "ui/plots/quantity_chart_view.h"
+#include "ui/plots/quantity_selector.h"
+
+#include "kinematics/model/mechanism_design.h"
+#include "kinematics/model/units.h"
+
+#include <QCheckBox>
+#include <QLineSeries>
+#include <QValueAxis>
+
+#include <catch2/catch.hpp>
+
+using namespace linkwright::ui;
+namespace k = linkwright::kinematics;
+using k::io::ColumnQuantity;
+
+namespace {
+
+QList<QPointF> plotted(const PlotPanel& panel, PlotQuantity q) {
+  QList<QPointF> points;
+  for (const QLineSeries* segment : panel.chartView(quantityKind(q))->segments(q)) points += segment->points();
+  return points;
+}
+
+QStringList keys(const std::vector<PlotCurve>& curves) {
+  QStringList out;
+  for (const PlotCurve& c : curves) out << c.key;
+  return out;
+}
+
+} // namespace
+
+TEST_CASE("a slider-crank plots its rod and its piston's stroke, velocity and acceleration", "[plot_panel][linkage]") {
+  MechanismDocument doc;
+  doc.reset(*k::designForExample("ls3-engine"));
+  PlotPanel panel(&doc);
+  CHECK(keys(panel.curves()) ==
+        QStringList{"rod_angle", "transmission_angle", "rod_omega", "rod_alpha", "C_x", "C_vx", "C_ax"});
+  // With a slider, its three charts and the angles show first; the rod's ω and α are a tick away.
+  for (const auto kind : {QuantityKind::Angle, QuantityKind::Position, QuantityKind::Velocity, QuantityKind::Acceleration})
+    CHECK_FALSE(panel.chartView(kind)->isHidden());
+  CHECK(panel.chartView(QuantityKind::Omega)->isHidden());
+  CHECK(panel.chartView(QuantityKind::Alpha)->isHidden());
+  CHECK(doc.request() == k::SolveRequest{true, true});  // the piston's acceleration needs them
+
+  const k::SweepResult& s = doc.sweep();
+  const PlotQuantity x{ColumnQuantity::PointX, 2}, a{ColumnQuantity::PointAx, 2};
+  const QList<QPointF> stroke = plotted(panel, x);
+  const QList<QPointF> accel = plotted(panel, a);
+  REQUIRE(stroke.size() == static_cast<qsizetype>(s.size()));
+  for (std::size_t j : {std::size_t{0}, std::size_t{100}, std::size_t{360}}) {
+    const auto i = static_cast<qsizetype>(j);
+    CHECK(stroke[i].x() == k::radToDeg(s.inputAngle[j]));
+    CHECK(stroke[i].y() == s.position[2][j].x());
+    CHECK(accel[i].y() == s.acceleration[2][j].x());
+  }
+  CHECK(panel.chartView(QuantityKind::Position)->yAxis()->titleText() == QStringLiteral("position [mm]"));
+  CHECK(panel.chartView(QuantityKind::Acceleration)->yAxis()->titleText() == QStringLiteral("a [mm/s²]"));
+
+  panel.selector()->checkBox({ColumnQuantity::LinkOmega, 1})->setChecked(true);
+  CHECK_FALSE(panel.chartView(QuantityKind::Omega)->isHidden());
+  CHECK(plotted(panel, {ColumnQuantity::LinkOmega, 1}).size() == static_cast<qsizetype>(s.size()));
+}
+
+TEST_CASE("a six-bar plots links 3 to 6 and both transmission angles; back to a four-bar restores its curves",
+          "[plot_panel][linkage]") {
+  MechanismDocument doc;
+  PlotPanel panel(&doc);
+  doc.reset(*k::designForExample("watt-ii"));
+  CHECK(keys(panel.curves()) == QStringList{"coupler_angle", "rocker_angle", "link5_angle", "link6_angle",
+                                            "transmission_angle_C", "transmission_angle_E", "coupler_omega",
+                                            "rocker_omega", "link5_omega", "link6_omega", "coupler_alpha",
+                                            "rocker_alpha", "link5_alpha", "link6_alpha"});
+  CHECK(panel.curve({ColumnQuantity::LinkAngle, 3})->name == QStringLiteral("link5 θ5"));
+  CHECK(panel.curve({ColumnQuantity::TransmissionAngle, 6})->name == QStringLiteral("μ at E"));
+  for (const auto kind : {QuantityKind::Position, QuantityKind::Velocity, QuantityKind::Acceleration})
+    CHECK(panel.chartView(kind)->isHidden());
+  const QList<QPointF> link6 = plotted(panel, {ColumnQuantity::LinkAlpha, 4});
+  REQUIRE(link6.size() == static_cast<qsizetype>(doc.sweep().size()));
+  CHECK(link6[42].y() == k::radToDeg(doc.sweep().linkAlpha[4][42]));
+  CHECK(panel.limitMarkers()->lineXs().isEmpty());
+
+  doc.reset(k::FourBarDesign{});
+  CHECK(keys(panel.curves()).size() == 7);
+  CHECK(panel.limitMarkers()->lineXs().size() == 2);
+  CHECK_FALSE(panel.chartView(QuantityKind::Alpha)->isHidden());
+}

@@ -1,0 +1,193 @@
+#include "ui/dialogs/dyad_request.h"
+
+#include "kinematics/model/units.h"
+#include "kinematics/solve/guide_line.h"
+#include "kinematics/solve/pose_solver.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace linkwright::ui {
+
+namespace k = kinematics;
+
+namespace {
+
+bool nameTaken(const k::Mechanism& m, const std::string& name) { return m.findPoint(name).has_value(); }
+
+// Adds the parent if it is new and returns its id in the grown mechanism.
+k::Result<k::PointId> resolveParent(k::Mechanism& m, const ParentChoice& parent) {
+  using Source = ParentChoice::Source;
+  if (parent.source == Source::Existing) {
+    if (parent.point.index >= m.points.size())
+      return k::Error{k::ErrorCode::InvalidStructure, "parent", "the chosen point does not belong to this linkage"};
+    return parent.point;
+  }
+  const bool ground = parent.source == Source::NewGround;
+  const std::string name = freshPointName(m, ground);
+  auto grown = ground ? k::addGroundPivot(m, name, parent.position) : k::addPointOnLink(m, name, parent.link, parent.along, parent.across);
+  if (!grown) return grown.error();
+  m = std::move(*grown);
+  return k::PointId{m.points.size() - 1};
+}
+
+// The parents added and the dyad's spec, or why not.
+struct Prepared {
+  k::Mechanism mechanism;
+  k::PointId first;
+  k::PointId second;
+};
+
+k::Result<Prepared> prepare(const k::Mechanism& mechanism, const DyadRequest& r) {
+  Prepared p{mechanism, {}, {}};
+  if (r.kind != DyadKind::Prp) {
+    const auto first = resolveParent(p.mechanism, r.first);
+    if (!first) return first.error();
+    p.first = *first;
+  }
+  if (r.kind == DyadKind::Rrr || r.kind == DyadKind::Rpr) {
+    const auto second = resolveParent(p.mechanism, r.second);
+    if (!second) return second.error();
+    p.second = *second;
+  }
+  return p;
+}
+
+k::DyadSpec specOf(const DyadRequest& r, const Prepared& p) {
+  switch (r.kind) {
+  case DyadKind::Rrr: return k::RrrDyadSpec{r.joint, p.first, r.firstLength, p.second, r.secondLength, r.branch};
+  case DyadKind::Rrp: return k::RrpDyadSpec{r.joint, p.first, r.firstLength, r.guide, r.branch};
+  case DyadKind::Rpr: return k::RprDyadSpec{r.joint, p.first, p.second, r.firstLength};
+  case DyadKind::Prp: return k::PrpDyadSpec{r.joint, r.guide, r.secondGuide};
+  }
+  return k::RrrDyadSpec{};
+}
+
+// The last point that moves, preferring points fixed on links (where a designer hangs a dyad).
+k::PointId lastMoving(const k::Mechanism& m, bool preferAttached) {
+  for (std::size_t i = m.points.size(); preferAttached && i-- > 0;)
+    if (std::holds_alternative<k::AttachedPoint>(m.points[i].definition)) return {i};
+  for (std::size_t i = m.points.size(); i-- > 0;)
+    if (!std::holds_alternative<k::GroundPoint>(m.points[i].definition)) return {i};
+  return {0};
+}
+
+std::optional<k::PointId> firstGround(const k::Mechanism& m) {
+  for (std::size_t i = 0; i < m.points.size(); ++i)
+    if (std::holds_alternative<k::GroundPoint>(m.points[i].definition)) return k::PointId{i};
+  return std::nullopt;
+}
+
+} // namespace
+
+std::string freshPointName(const k::Mechanism& m, bool groundPivot) {
+  if (groundPivot) {
+    for (int n = 2;; ++n)
+      if (const std::string name = "O" + std::to_string(n); !nameTaken(m, name)) return name;
+  }
+  for (char c = 'E'; c <= 'Z'; ++c)
+    if (c != 'O' && !nameTaken(m, std::string(1, c))) return std::string(1, c);
+  for (int n = 1;; ++n)
+    if (const std::string name = "J" + std::to_string(n); !nameTaken(m, name)) return name;
+}
+
+k::Result<k::Mechanism> applyDyadRequest(const k::Mechanism& mechanism, const DyadRequest& r) {
+  if (r.joint.empty()) return k::Error{k::ErrorCode::InvalidValue, "joint", "the new joint needs a name"};
+  if (nameTaken(mechanism, r.joint))
+    return k::Error{k::ErrorCode::InvalidValue, "joint", "there is already a point named " + r.joint};
+  const auto prepared = prepare(mechanism, r);
+  if (!prepared) return prepared.error();
+  return k::attachDyad(prepared->mechanism, specOf(r, *prepared));
+}
+
+k::Result<k::MechanismDesign> attachToDesign(const k::Design& design, const DyadRequest& r) {
+  k::MechanismDesign out;
+  if (const auto* f = std::get_if<k::FourBarDesign>(&design)) {
+    const auto built = k::buildMechanism(design);
+    if (!built) return built.error();
+    out = {"linkage", *built, f->omega, f->alpha, f->fromDeg, f->toDeg, f->samples};
+  } else {
+    out = std::get<k::MechanismDesign>(design);
+    out.kind = "linkage";
+  }
+  auto grown = applyDyadRequest(out.mechanism, r);
+  if (!grown) return grown.error();
+  out.mechanism = std::move(*grown);
+  return out;
+}
+
+void fillLengths(const k::Mechanism& mechanism, double crankAngle, DyadRequest& r) {
+  if (r.kind == DyadKind::Prp) return;
+  const auto prepared = prepare(mechanism, r);
+  if (!prepared) return;
+  const auto pose = k::solvePose(prepared->mechanism, {crankAngle, 0.0, 0.0}, {false, false});
+  if (!pose) return;
+  const Eigen::Vector2d a = pose->position[prepared->first.index];
+  // The linkage's reach from the first parent: a length scale when distances say nothing.
+  double span = 0.0;
+  for (const Eigen::Vector2d& q : pose->position) span = std::max(span, (q - a).norm());
+  if (!(span > 0.0)) span = 1.0;
+  switch (r.kind) {
+  case DyadKind::Rrr: {
+    const double d = (pose->position[prepared->second.index] - a).norm();
+    r.firstLength = r.secondLength = d > 1e-9 * span ? 0.75 * d : 0.5 * span;
+    break;
+  }
+  case DyadKind::Rrp: {
+    const k::GuideLine line = k::guideLineAt(prepared->mechanism, r.guide, *pose);
+    const double offset = std::abs(k::guideNormal(line).dot(a - line.point));
+    r.firstLength = std::max(1.25 * offset, 0.5 * span);
+    break;
+  }
+  case DyadKind::Rpr: {
+    const double d = (pose->position[prepared->second.index] - a).norm();
+    r.firstLength = d > 1e-9 * span ? 1.25 * d : 0.5 * span;
+    break;
+  }
+  case DyadKind::Prp: break;
+  }
+}
+
+DyadRequest suggestDyad(const k::Mechanism& m, double crankAngle, DyadKind kind) {
+  DyadRequest r;
+  r.kind = kind;
+  r.joint = freshPointName(m);
+  const auto pose = k::solvePose(m, {crankAngle, 0.0, 0.0}, {false, false});
+  const k::PointId moving = lastMoving(m, kind == DyadKind::Rrr);
+  const Eigen::Vector2d at = pose ? pose->position[moving.index] : Eigen::Vector2d::Zero();
+  const std::optional<k::PointId> ground = firstGround(m);
+  const double groundY = pose && ground ? pose->position[ground->index].y() : 0.0;
+  double span = 1.0;
+  if (pose)
+    for (const Eigen::Vector2d& q : pose->position) span = std::max(span, (q - at).norm());
+  using Source = ParentChoice::Source;
+  switch (kind) {
+  case DyadKind::Rrr:
+    r.first.source = Source::Existing;
+    r.first.point = moving;
+    r.second.source = Source::NewGround;
+    r.second.position = Eigen::Vector2d(at.x() + 0.6 * span, groundY);
+    break;
+  case DyadKind::Rrp:
+    r.first.source = Source::Existing;
+    r.first.point = moving;
+    r.guide = k::Guide{std::nullopt, Eigen::Vector2d(at.x(), groundY), 0.0};
+    break;
+  case DyadKind::Rpr:
+    r.first.source = Source::NewGround;
+    r.first.position = Eigen::Vector2d(at.x(), at.y() - 0.6 * span);
+    r.second.source = Source::Existing;
+    r.second.point = moving;
+    break;
+  case DyadKind::Prp:
+    // A block sliding on the last link, pinned to a block in a vertical ground slot.
+    r.guide = k::Guide{m.links.empty() ? std::nullopt : std::optional<k::LinkId>(k::LinkId{m.links.size() - 1}),
+                       Eigen::Vector2d::Zero(), 0.0};
+    r.secondGuide = k::Guide{std::nullopt, at, k::kPi / 2.0};
+    break;
+  }
+  fillLengths(m, crankAngle, r);
+  return r;
+}
+
+} // namespace linkwright::ui

@@ -1,0 +1,33 @@
+#pragma once
+// The kinds of linkage File ▸ New offers, each started from a built-in example as its
+// template, and the names the window shows for a design's kind.
+
+#include "kinematics/model/mechanism_design.h"
+
+#include <QString>
+
+#include <string>
+#include <vector>
+
+namespace linkwright::ui {
+
+struct DesignTemplate {
+  QString label;        ///< menu text, with its mnemonic: "&Slider-crank"
+  std::string kind;     ///< MechanismDesign::kind, or "four-bar"
+  std::string example;  ///< the built-in example it starts from; empty: the default four-bar
+};
+
+/// File ▸ New's kinds, in menu order.
+std::vector<DesignTemplate> designTemplates();
+
+/// A new design of the template's kind.
+kinematics::Design templateDesign(const DesignTemplate& kind);
+
+/// What a design is, for people: "Four-bar", "Slider-crank", "Crank-shaper", "Watt II six-bar".
+QString kindDisplayName(const kinematics::Design& design);
+
+/// A menu line for a built-in example: its description up to the source in brackets,
+/// shortened at a comma to about `maxChars` characters.
+QString exampleMenuText(const std::string& description, int maxChars = 64);
+
+} // namespace linkwright::ui
