@@ -9,6 +9,7 @@ packages=(
   catch2                     # Catch2 2.13 test framework
   qt6-base-dev qt6-charts-dev qt6-svg-dev  # the GUI (Widgets, Charts, SVG export)
   libgl-dev                  # OpenGL headers that Qt6Gui's CMake package requires
+  libbenchmark-dev           # Google Benchmark: the core's speed benchmarks (docs/benchmarks.md)
 )
 
 missing=()
