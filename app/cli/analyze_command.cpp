@@ -3,6 +3,7 @@
 #include "app/cli/text_table.h"
 
 #include "kinematics/analysis/assembly_range.h"
+#include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/units.h"
@@ -42,6 +43,28 @@ void reportUnassembled(const kinematics::SweepResult& result, const ResolvedMech
   else err << "  It can be assembled for crank angles " << rangesText(range.ranges) << " (exact).\n";
 }
 
+// The forces the invocation asks for, or the reason there are none.
+kinematics::Result<std::optional<kinematics::ForceSweep>> forcesFor(const Invocation& inv, const SweptMechanism& swept) {
+  if (!inv.forces) return std::optional<kinematics::ForceSweep>{};
+  const ResolvedMechanism& r = swept.resolved;
+  if (r.dynamics.empty())
+    return Error{ErrorCode::InvalidValue, "--forces",
+                 "--forces needs masses and loads, and " + r.source +
+                     " has none: give them in a document's \"dynamics\" (see docs/document_format.md), or try "
+                     "--example funsho-fourbar"};
+  auto forces = kinematics::sweepForces(r.mechanism, r.dynamics, swept.result);
+  if (!forces) return Error{forces.error().code, "--forces", "--forces: " + forces.error().message};
+  return std::optional<kinematics::ForceSweep>{std::move(*forces)};
+}
+
+// Samples whose kinematics exist but whose forces do not (a structure that locks there).
+void reportUndeterminedForces(const kinematics::SweepResult& result, const kinematics::ForceSweep& forces, std::ostream& err) {
+  for (std::size_t j = 0; j < result.size(); ++j)
+    if (result.ok(j) && !forces.ok(j))
+      err << "linkwright-cli: note: the joint forces are not determined at crank angle " << degreesText(result.inputAngle[j])
+          << " (the Newton–Euler system is singular; force cells left empty)\n";
+}
+
 } // namespace
 
 ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err) {
@@ -53,9 +76,13 @@ ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err)
   if (!swept) return fail(swept.error());
   const kinematics::Mechanism* mechanism = &swept->resolved.mechanism;
   const kinematics::SweepResult* result = &swept->result;
+  const auto forces = forcesFor(inv, *swept);
+  if (!forces) return fail(forces.error());
+  const kinematics::ForceSweep* forceSweep = forces->has_value() ? &**forces : nullptr;
 
   std::ostringstream csv;
-  if (inv.tableFormat) writeSweepTable(csv, *mechanism, *result);
+  if (inv.tableFormat) writeSweepTable(csv, *mechanism, *result, forceSweep);
+  else if (forceSweep) kinematics::io::writeSweepCsv(csv, *mechanism, *result, *forceSweep);
   else kinematics::io::writeSweepCsv(csv, *mechanism, *result);
   if (inv.outputFile) {
     if (auto problem = writeFileAtomically(*inv.outputFile, csv.str())) {
@@ -68,6 +95,7 @@ ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err)
   for (const double angle : result->singularAngles)
     err << "linkwright-cli: note: toggle position at crank angle " << degreesText(angle)
         << ": coupler and rocker are collinear, ω and α are undefined (cells left empty)\n";
+  if (forceSweep) reportUndeterminedForces(*result, *forceSweep, err);
   if (!result->notAssembled.empty()) {
     reportUnassembled(*result, swept->resolved, err);
     return ExitCode::NotAssemblable;

@@ -52,7 +52,8 @@ kinematics::Result<std::vector<double>> parseList(const std::string& option, con
 const std::set<std::string>& optionsOf(Command command) {
   static const std::set<std::string> analyze{"--fourbar", "--example", "--unit", "--rpm", "--omega",
                                              "--alpha", "--from", "--to", "--step", "--samples",
-                                             "--branch", "--coupler-point", "-o", "--output", "--format"};
+                                             "--branch", "--coupler-point", "-o", "--output", "--format",
+                                             "--forces"};
   static const std::set<std::string> extremes{"--fourbar", "--example", "--unit", "--rpm", "--omega", "--alpha", "--from",
                                               "--to", "--step", "--samples", "--branch", "--coupler-point"};
   static const std::set<std::string> classify{"--fourbar", "--example", "--unit", "--branch", "--json"};
@@ -85,7 +86,7 @@ const char* commandName(Command command) {
   }
 }
 
-bool takesValue(const std::string& option) { return option != "--json"; }
+bool takesValue(const std::string& option) { return option != "--json" && option != "--forces"; }
 
 // A number that must be positive and finite (a speed, a time step).
 std::optional<Error> positive(std::optional<double>& target, const std::string& option, const std::string& value) {
@@ -184,6 +185,8 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
     inv.tableFormat = value == "table";
   } else if (option == "--json") {
     inv.json = true;
+  } else if (option == "--forces") {
+    inv.forces = true;
   } else if (option == "--svg") {
     if (value.empty()) return usage(option, option + " needs a file name");
     inv.svgFile = value;

@@ -39,6 +39,7 @@ struct Invocation {
   std::optional<std::string> outputFile;
   bool json = false;
   bool tableFormat = false;  ///< --format table: aligned text instead of CSV (analyze, arm)
+  bool forces = false;       ///< analyze --forces: add joint forces, driving torque and shaking (needs masses)
   // arm: a two-link arm whose tip follows a straight line (lengths in the length unit).
   std::optional<std::pair<double, double>> arm;  ///< upper, forearm; positive, finite
   std::optional<Eigen::Vector2d> fromPoint;      ///< finite

@@ -56,6 +56,10 @@ constexpr const char* kAnalyzeOptions = R"(Speed and range (analyze, extremes):
                       or N evenly spaced angles from --from to --to inclusive
   --coupler-point U,V add point P fixed on the coupler: U along B→C, V 90° CCW from it
   --format csv|table  CSV (default) or an aligned table of the link columns, 4 decimals
+  --forces            (analyze) add inverse dynamics from the masses and loads of the
+                      document's "dynamics" or the example's (funsho-fourbar has them):
+                      joint forces, driving torque, shaking force. The length unit must
+                      be m, cm, mm, in or ft; ω and α are the crank's at every angle
   -o, --output FILE   write the output to FILE (atomically) instead of standard output
 
 Output: RFC 4180 CSV, '.' decimal point, round-trip precision. Columns carry units:
@@ -63,6 +67,14 @@ Output: RFC 4180 CSV, '.' decimal point, round-trip precision. Columns carry uni
   crank, coupler (B→C), rocker (O4→C); transmission_angle_deg; <point>_x_<unit>,
   _y_, _vx_<unit>_s, _vy_, _ax_<unit>_s2, _ay_ for points B, C (and P). Link angles are
   continuous over the sweep. At a toggle position the ω and α cells are empty.
+With --forces, then (world frame, N and N·m, CCW positive): F_<joint>_x_N, _y_N and
+  F_<joint>_N for each pin: the force on a link from the ground at a ground pivot, else
+  from the link defined first (on the coupler from the crank at B, on the rocker from the
+  coupler at C); N_<slider>_N and M_<slider>_Nm for each slider block: the normal force
+  (along the guide direction turned 90° CCW) and couple on it from its guide; T_drive_Nm,
+  the motor torque on the crank; shaking_x_N, shaking_y_N, shaking_N and
+  shaking_moment_Nm, the linkage's force on its frame and that force's moment about the
+  crank pivot, with the motor's reaction. Cells are empty where the forces are undefined.
 )";
 
 constexpr const char* kClassifyOptions = R"(Classify options:
@@ -120,7 +132,8 @@ constexpr const char* kAccuracyOptions = R"(Accuracy options (the speed-accuracy
 constexpr const char* kExitCodes = R"(Exit codes:
   0  success
   1  the output file could not be written
-  2  bad usage or input: unknown option, malformed or invalid value (the message names it)
+  2  bad usage or input: unknown option, malformed or invalid value (the message names it);
+     --forces for a linkage without masses, or with a length unit forces cannot convert
   3  the linkage cannot be assembled over the requested range (rows that assemble are
      still written; the message gives the ranges that do not and the range that does);
      for arm: the tip path leaves the workspace (the message gives the exact times);
@@ -128,6 +141,7 @@ constexpr const char* kExitCodes = R"(Exit codes:
 
 Examples:
   linkwright-cli analyze --fourbar 60,25,70,45 --rpm 10 --step 30
+  linkwright-cli analyze --example funsho-fourbar --forces --step 30
   linkwright-cli arm --example seed-arm --format table
   linkwright-cli centres --example thesis-crank-rocker --at 0,90
 )";

@@ -7,6 +7,7 @@
 #include "app/cli/arguments.h"
 #include "app/cli/exit_codes.h"
 
+#include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/solve/sweep.h"
 
@@ -46,6 +47,8 @@ struct ResolvedMechanism {
   kinematics::Mechanism mechanism;
   std::optional<ResolvedFourBar> fourBar;  ///< set for four-bars: their exact ranges apply
   GridDefaults defaults;
+  kinematics::LinkageDynamics dynamics;  ///< the document's or example's masses and loads (may be empty)
+  std::string source;                    ///< "the example NAME", "FILE", "--fourbar": for messages
 };
 kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& invocation);
 

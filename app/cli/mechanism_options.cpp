@@ -65,6 +65,8 @@ kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& inv) {
     const auto design = readDocumentFile(*inv.documentPath);
     if (!design) return design.error();
     r.defaults = gridOf(*design);
+    r.source = *inv.documentPath;
+    r.dynamics = std::visit([](const auto& d) { return d.dynamics; }, *design);
     if (const auto* f = std::get_if<k::FourBarDesign>(&*design)) {
       r.fourBar = ResolvedFourBar{f->lengths, f->lengthUnit, inv.branch.value_or(f->branch), std::nullopt};
       const auto couplerPoint = inv.couplerPoint ? inv.couplerPoint : f->couplerPoint;
@@ -88,6 +90,8 @@ kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& inv) {
         return k::Error{k::ErrorCode::InvalidValue, "--branch", "--branch applies to four-bars, not to " + other->name};
       r.mechanism = std::move(other->mechanism);
       r.defaults = {other->omega, 0.0, other->fromDeg, other->toDeg, other->stepDeg};
+      r.dynamics = std::move(other->dynamics);
+      r.source = "the example " + other->name;
       return r;
     }
   }
@@ -97,7 +101,12 @@ kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& inv) {
   auto m = k::makeFourBar(fb->lengths, fb->branch, fb->lengthUnit, couplerPoint);
   if (!m) return m.error();
   r.mechanism = std::move(*m);
-  if (const auto& e = fb->example) r.defaults = {e->omega, e->alpha, e->fromDeg, e->toDeg, e->stepDeg};
+  r.source = "--fourbar";
+  if (const auto& e = fb->example) {
+    r.defaults = {e->omega, e->alpha, e->fromDeg, e->toDeg, e->stepDeg};
+    r.dynamics = e->dynamics;
+    r.source = "the example " + e->name;
+  }
   r.fourBar = std::move(*fb);
   return r;
 }

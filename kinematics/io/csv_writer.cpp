@@ -1,5 +1,6 @@
 #include "kinematics/io/csv_writer.h"
 
+#include "kinematics/io/force_columns.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/io/sweep_columns.h"
 
@@ -33,9 +34,13 @@ std::vector<std::string> sweepCsvHeader(const Mechanism& m, const SolveRequest& 
   return names;
 }
 
-void writeSweepCsv(std::ostream& out, const Mechanism& m, const SweepResult& r) {
+namespace {
+
+void writeCsv(std::ostream& out, const Mechanism& m, const SweepResult& r, const ForceSweep* forces) {
   const std::vector<SweepColumn> columns = sweepColumns(m, r.request);
+  const std::vector<ForceColumn> forceCols = forces ? forceColumns(forces->bodies) : std::vector<ForceColumn>{};
   for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << csvField(columns[c].name);
+  for (const ForceColumn& c : forceCols) out << ',' << csvField(c.name);
   out << kLineEnd;
   std::string row;
   for (std::size_t j = 0; j < r.size(); ++j) {
@@ -46,8 +51,20 @@ void writeSweepCsv(std::ostream& out, const Mechanism& m, const SweepResult& r) 
       // At a toggle the rates do not exist: leave the cell empty.
       if (r.ok(j) || !columns[c].isRate()) row += cellText(columns[c], r, j);
     }
+    for (const ForceColumn& c : forceCols) {
+      row += ',';
+      if (forces->ok(j)) row += formatDouble(c.value(*forces, j));
+    }
     out << row << kLineEnd;
   }
+}
+
+} // namespace
+
+void writeSweepCsv(std::ostream& out, const Mechanism& m, const SweepResult& r) { writeCsv(out, m, r, nullptr); }
+
+void writeSweepCsv(std::ostream& out, const Mechanism& m, const SweepResult& r, const ForceSweep& forces) {
+  writeCsv(out, m, r, &forces);
 }
 
 } // namespace linkwright::kinematics::io

@@ -1,5 +1,6 @@
 #include "kinematics/io/document_json.h"
 
+#include "kinematics/io/dynamics_json.h"
 #include "kinematics/io/json.h"
 #include "kinematics/io/json_reader.h"
 #include "kinematics/io/mechanism_json.h"
@@ -72,7 +73,9 @@ template <typename D>
 void writeMotion(std::ostream& s, const D& d) {
   s << "\n  },\n  \"driver\": {\"omega_rad_s\": " << formatDouble(d.omega) << ", \"alpha_rad_s2\": " << formatDouble(d.alpha)
     << "},\n  \"analysis\": {\"from_deg\": " << formatDouble(d.fromDeg) << ", \"to_deg\": " << formatDouble(d.toDeg)
-    << ", \"samples\": " << d.samples << "}\n}\n";
+    << ", \"samples\": " << d.samples << "}";
+  writeDynamicsMember(s, d.dynamics);
+  s << "\n}\n";
 }
 
 template <typename D>
@@ -119,18 +122,30 @@ std::optional<Error> inDocument(std::optional<Error> e) {
   return Error{e->code, path, path + reason};
 }
 
-std::optional<Error> checkRead(const FourBarDesign& d) { return inDocument(checkDesign(d)); }
+std::optional<Error> checkRead(const FourBarDesign& d) {
+  FourBarDesign withoutDynamics = d;
+  withoutDynamics.dynamics = {};
+  if (auto e = inDocument(checkDesign(withoutDynamics))) return e;
+  return checkDocumentDynamics(makeFourBar(d.lengths, d.branch, d.lengthUnit, d.couplerPoint).value(), d.dynamics);
+}
 
 std::optional<Error> checkRead(const MechanismDesign& d) {
   if (auto e = checkMechanism(d.mechanism)) return Error{e->code, "mechanism." + e->field, "mechanism." + e->message};
-  return inDocument(checkDriveAndGrid(d.omega, d.alpha, d.fromDeg, d.toDeg, d.samples));
+  if (auto e = inDocument(checkDriveAndGrid(d.omega, d.alpha, d.fromDeg, d.toDeg, d.samples))) return e;
+  return checkDocumentDynamics(d.mechanism, d.dynamics);
+}
+
+// Version 3 added "dynamics": a design without masses or loads is written as version 2, so
+// Linkwright 2 readers still open it; one with them as 3, so they refuse it rather than drop them.
+int versionFor(const Design& design) {
+  return std::visit([](const auto& d) { return d.dynamics.empty() ? 2 : kDocumentVersion; }, design);
 }
 
 } // namespace
 
 std::string writeDocument(const Design& design) {
   std::ostringstream s;
-  s << "{\n  \"format\": \"linkwright\",\n  \"version\": " << kDocumentVersion << ",\n  \"mechanism\": {\n";
+  s << "{\n  \"format\": \"linkwright\",\n  \"version\": " << versionFor(design) << ",\n  \"mechanism\": {\n";
   if (const auto* f = std::get_if<FourBarDesign>(&design)) writeFourBar(s, *f);
   else writeLinkage(s, std::get<MechanismDesign>(design));
   return s.str();
@@ -152,6 +167,7 @@ Result<Design> readDocument(std::string_view text) {
     FourBarDesign d;
     readFourBar(*mech, r, d);
     readMotion(root, r, d);
+    d.dynamics = readDynamicsMember(root, r);
     if (r.error) return *r.error;
     if (auto e = checkRead(d)) return *e;
     return Design{d};
@@ -165,6 +181,7 @@ Result<Design> readDocument(std::string_view text) {
   d.mechanism = readMechanismMembers(*mech, "mechanism", r);
   d.mechanism.lengthUnit = unit;
   readMotion(root, r, d);
+  d.dynamics = readDynamicsMember(root, r);
   if (r.error) return *r.error;
   if (auto e = checkRead(d)) return *e;
   return Design{d};

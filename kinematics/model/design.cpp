@@ -16,7 +16,17 @@ std::optional<Error> checkDesign(const FourBarDesign& d) {
     if (auto e = checkFinite(d.couplerPoint->along, "couplerPoint.along")) return e;
     if (auto e = checkFinite(d.couplerPoint->across, "couplerPoint.across")) return e;
   }
-  return checkDriveAndGrid(d.omega, d.alpha, d.fromDeg, d.toDeg, d.samples);
+  if (auto e = checkDriveAndGrid(d.omega, d.alpha, d.fromDeg, d.toDeg, d.samples)) return e;
+  if (d.dynamics.empty()) return std::nullopt;
+  return checkDesignDynamics(makeFourBar(d.lengths, d.branch, d.lengthUnit, d.couplerPoint).value(), d.dynamics);
+}
+
+std::optional<Error> checkDesignDynamics(const Mechanism& mechanism, const LinkageDynamics& dynamics) {
+  auto e = checkDynamics(mechanism, dynamics);
+  if (!e) return e;
+  e->field = "dynamics." + e->field;
+  e->message = "dynamics." + e->message;
+  return e;
 }
 
 std::optional<Error> checkDriveAndGrid(double omega, double alpha, double fromDeg, double toDeg, std::size_t samples) {
@@ -54,6 +64,7 @@ FourBarDesign designFromExample(const FourBarExample& e) {
   d.omega = e.omega;
   d.alpha = e.alpha;
   d.couplerPoint = e.couplerPoint;
+  d.dynamics = e.dynamics;
   d.fromDeg = e.fromDeg;
   d.toDeg = e.toDeg;
   d.samples = samplesEveryHalfDegree(e.fromDeg, e.toDeg);

@@ -4,6 +4,7 @@
 // document file stores one, and buildMechanism / designSweepSpec turn it into solver input,
 // so the GUI, the CLI and the files all mean the same linkage.
 
+#include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/model/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/result.h"
@@ -24,15 +25,20 @@ struct FourBarDesign {
   double fromDeg = 0.0;     ///< analysis grid start, degrees
   double toDeg = 360.0;     ///< analysis grid end, degrees
   std::size_t samples = 721;  ///< grid points from fromDeg to toDeg inclusive (≥ 2)
+  LinkageDynamics dynamics;   ///< masses and loads for forces (links "crank", "coupler", "rocker"); empty: none
   bool operator==(const FourBarDesign&) const = default;
 };
 
-/// Error naming the first invalid field ("lengths.coupler", "omega", "samples", ...).
+/// Error naming the first invalid field ("lengths.coupler", "omega", "samples",
+/// "dynamics.links[0].mass", ...).
 std::optional<Error> checkDesign(const FourBarDesign& design);
 
 /// The driver and grid rules every design shares: finite ω, α and angles, toDeg > fromDeg,
 /// 2 ≤ samples ≤ 10 000 000. Fields "omega", "alpha", "fromDeg", "toDeg", "samples".
 std::optional<Error> checkDriveAndGrid(double omega, double alpha, double fromDeg, double toDeg, std::size_t samples);
+
+/// checkDynamics with "dynamics." before the field and the message.
+std::optional<Error> checkDesignDynamics(const Mechanism& mechanism, const LinkageDynamics& dynamics);
 
 /// Grid points every 0.5° from fromDeg to toDeg inclusive: how examples become designs.
 std::size_t samplesEveryHalfDegree(double fromDeg, double toDeg);

@@ -1,6 +1,8 @@
 #pragma once
 // Built-in examples taken from the seed documents, shared by the CLI and (later) the GUI.
+// An example may carry its links' masses and loads (seed 004's four-bar does) for forces.
 
+#include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/shaper.h"
 #include "kinematics/model/sixbar.h"
@@ -25,6 +27,7 @@ struct FourBarExample {
   double toDeg = 360.0;   ///< default table end, degrees
   double stepDeg = 30.0;  ///< default table step, degrees
   std::optional<CouplerPointSpec> couplerPoint;  ///< a point the seed follows on the coupler
+  LinkageDynamics dynamics;  ///< masses and loads, if the seed gives them (else empty)
   bool operator==(const FourBarExample&) const = default;
 };
 
@@ -39,6 +42,7 @@ struct MechanismExample {
   double toDeg = 360.0;
   double stepDeg = 1.0;
   std::optional<ShaperGeometry> shaper;  ///< for a shaper: its dimensions (time ratio, stroke)
+  LinkageDynamics dynamics;  ///< masses and loads, if the example has them (else empty)
   bool operator==(const MechanismExample&) const = default;
 };
 
@@ -67,6 +71,12 @@ inline const SixBarGeometry kStephensonISixBar{SixBarKind::StephensonI, kSixBarB
                                                {30.0, -15.0}, Eigen::Vector2d::Zero(), 100.0, 75.0, Branch::Open};
 inline const SixBarGeometry kStephensonIIISixBar{SixBarKind::StephensonIII, kSixBarBase, Branch::Open, {35.0, 30.0}, {},
                                                  Eigen::Vector2d(100.0, 60.0), 75.0, 55.0, Branch::Open};
+
+/// Seed 004's (Funsho) masses and inertias, as its MATLAB code has them (the code produced
+/// its published figures; its Table 1 differs: coupler 0.4 kg and 0.004 kg·m², rocker centre
+/// 15 mm from C): crank 0.2 kg, 1e-5 kg·m²; coupler 0.6 kg, 4e-4 kg·m²; rocker 0.4 kg,
+/// 8e-5 kg·m²; every centre of mass at its link's midpoint. No gravity, no load.
+LinkageDynamics funshoFourBarDynamics();
 
 /// All built-in four-bar examples, in display order.
 std::vector<FourBarExample> fourBarExamples();

@@ -10,7 +10,8 @@ namespace linkwright::kinematics {
 
 std::optional<Error> checkDesign(const MechanismDesign& d) {
   if (auto e = checkMechanism(d.mechanism)) return e;
-  return checkDriveAndGrid(d.omega, d.alpha, d.fromDeg, d.toDeg, d.samples);
+  if (auto e = checkDriveAndGrid(d.omega, d.alpha, d.fromDeg, d.toDeg, d.samples)) return e;
+  return checkDesignDynamics(d.mechanism, d.dynamics);
 }
 
 std::optional<Error> checkDesign(const Design& d) {
@@ -42,6 +43,7 @@ MechanismDesign designFromExample(const MechanismExample& e) {
   d.kind = e.kind;
   d.mechanism = e.mechanism;
   d.omega = e.omega;
+  d.dynamics = e.dynamics;
   d.fromDeg = e.fromDeg;
   d.toDeg = e.toDeg;
   d.samples = samplesEveryHalfDegree(e.fromDeg, e.toDeg);

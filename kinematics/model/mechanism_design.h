@@ -5,6 +5,7 @@
 // keeps its parametric FourBarDesign (design.h: Grashof class, exact ranges, length drags);
 // Design holds either, so the GUI, the CLI and the document file handle both the same way.
 
+#include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/model/design.h"
 #include "kinematics/model/examples.h"
 #include "kinematics/model/mechanism.h"
@@ -24,14 +25,16 @@ struct MechanismDesign {
   double fromDeg = 0.0;        ///< analysis grid start, degrees
   double toDeg = 360.0;        ///< analysis grid end, degrees
   std::size_t samples = 721;   ///< grid points from fromDeg to toDeg inclusive (≥ 2)
+  LinkageDynamics dynamics;    ///< masses and loads for forces, by link and point name; empty: none
   bool operator==(const MechanismDesign&) const = default;
 };
 
 /// A four-bar (parametric) or any other linkage.
 using Design = std::variant<FourBarDesign, MechanismDesign>;
 
-/// Error naming the first invalid field: the mechanism's ("points[3].firstLength"), or the
-/// driver's and grid's ("omega", "samples", …) as for a four-bar design.
+/// Error naming the first invalid field: the mechanism's ("points[3].firstLength"), the
+/// driver's and grid's ("omega", "samples", …) as for a four-bar design, or the dynamics'
+/// ("dynamics.links[0].mass").
 std::optional<Error> checkDesign(const MechanismDesign& design);
 std::optional<Error> checkDesign(const Design& design);
 

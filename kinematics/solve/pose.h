@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <vector>
 
 namespace linkwright::kinematics {
@@ -25,11 +26,24 @@ struct NewtonSettings {
   bool operator==(const NewtonSettings&) const = default;
 };
 
-/// What to compute beyond positions. A scene computes only what it shows.
+/// Which points and links a request reports: nullopt means all of them, an empty list none.
+/// The solver computes the selected ones and whatever they are defined from (solve_scope.h),
+/// nothing else: a plot of one six-bar link does not solve the rest of the linkage.
+struct Selection {
+  std::optional<std::vector<PointId>> points;
+  std::optional<std::vector<LinkId>> links;
+  bool operator==(const Selection&) const = default;
+};
+
+/// What to compute: positions always, rates if asked, of the selected points and links.
+/// A scene computes only what it shows.
 struct SolveRequest {
   bool velocities = true;     ///< ω of links, v of points
   bool accelerations = true;  ///< α of links, a of points (implies velocities)
   NewtonSettings newton{};    ///< for free points only
+  Selection only{};           ///< default: every point and link
+  /// Pose::transmissionAngle of dyad points (an atan2 each, about 10 % of a four-bar sample).
+  bool transmissionAngles = true;
   bool operator==(const SolveRequest&) const = default;
 };
 
@@ -73,6 +87,10 @@ struct Pose {
   /// For RRR points: the transmission angle at C between C→P1 and C→P2, in [0, π]; for RRP
   /// points the angle between the rod and the guide's normal, in [0, π/2]; else 0.
   std::vector<double> transmissionAngle;
+  /// For RRR and RRP points: how far the dyad is from an assembly limit (length unit): for RRR
+  /// min(l1 + l2 − L, L − |l1 − l2|) with L the distance between its parents, for RRP the rod
+  /// length less the pin's distance from the guide. 0 at a toggle; else 0.
+  std::vector<double> assemblyGap;
   /// For RRR and RRP points: +1 open, −1 crossed, the branch actually used; else 0.
   std::vector<signed char> branchSign;
   /// True when `position` holds an assembled pose (set by solvePoseInto unless the result is

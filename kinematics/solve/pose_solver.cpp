@@ -22,9 +22,11 @@ struct Solver {
   const DriverState& driver;
   bool wantVelocity;
   bool wantAcceleration;
+  bool wantTransmission;
   const NewtonSettings& newton;
   Pose& pose;
   const BranchGuide& guide;
+  const SolveScope* scope;  // null: solve everything
   PoseReport report{};
   bool ratesValid = true;  // false once a dyad was singular: later rates cannot be computed
   int newtonIterations = 0;
@@ -112,15 +114,19 @@ struct Solver {
     const signed char sign = chooseSign(i, r.branch, cand.open, cand.crossed);
     const Eigen::Vector2d c = sign > 0 ? cand.open : cand.crossed;
     pose.position[i] = c;
+    pose.assemblyGap[i] = std::min(r.firstLength + r.secondLength - cand.distance,
+                                   cand.distance - std::abs(r.firstLength - r.secondLength));
     pose.branchSign[i] = sign;
     const Eigen::Vector2d r1 = c - p1;
     const Eigen::Vector2d r2 = c - p2;
-    pose.transmissionAngle[i] = std::atan2(std::abs(cross(r1, r2)), r1.dot(r2));
+    if (wantTransmission) pose.transmissionAngle[i] = std::atan2(std::abs(cross(r1, r2)), r1.dot(r2));
     if (!wantVelocity || !ratesValid) return true;
     Eigen::Vector2d v;
     const Eigen::Vector2d& v1 = pose.velocity[r.first.index];
     const Eigen::Vector2d& v2 = pose.velocity[r.second.index];
-    if (!rrrSolveRates(r1, r2, {r1.dot(v1), r2.dot(v2)}, v)) {
+    // |r1|·|r2| is l1·l2 up to round-off: no square roots for the singularity test.
+    const double scale = r.firstLength * r.secondLength;
+    if (!rrrSolveRates(r1, r2, {r1.dot(v1), r2.dot(v2)}, v, scale)) {
       markSingular(i);
       return true;
     }
@@ -128,15 +134,18 @@ struct Solver {
     if (!wantAcceleration) return true;
     const Eigen::Vector2d rhs(r1.dot(pose.acceleration[r.first.index]) - (v - v1).squaredNorm(),
                               r2.dot(pose.acceleration[r.second.index]) - (v - v2).squaredNorm());
-    rrrSolveRates(r1, r2, rhs, pose.acceleration[i]);  // same matrix: cannot be singular here
+    rrrSolveRates(r1, r2, rhs, pose.acceleration[i], scale);  // same matrix: cannot be singular here
     return true;
   }
 
-  // The driven crank's rates are the driver's, exactly (not a difference of two velocities).
-  bool drivenCrank(const Link& l) {
+  // The driven crank's angle and rates are the driver's, exactly (no atan2, and not a
+  // difference of two velocities). Returns its angle before wrapping, if link l is the crank.
+  std::optional<double> drivenCrankAngle(const Link& l) const {
     const auto* c = std::get_if<CrankPoint>(&m.points[l.second.index].definition);
+    if (c != nullptr && c->pivot == l.first) return driver.angle + c->phase;
     const auto* reversed = std::get_if<CrankPoint>(&m.points[l.first.index].definition);
-    return (c != nullptr && c->pivot == l.first) || (reversed != nullptr && reversed->pivot == l.second);
+    if (reversed != nullptr && reversed->pivot == l.second) return driver.angle + reversed->phase + kPi;
+    return std::nullopt;
   }
 
   // A guide on a link needs that link's angle and rates first (its ends are solved already).
@@ -159,10 +168,11 @@ struct Solver {
     const signed char sign = chooseSign(i, p.branch, open, crossed);
     const Eigen::Vector2d c = sign > 0 ? open : crossed;
     pose.position[i] = c;
+    pose.assemblyGap[i] = cand.reachGap;
     pose.branchSign[i] = sign;
     const Eigen::Vector2d r = c - p1;
     // 90° with the rod along the guide (the best), 0° with it across (the toggle).
-    pose.transmissionAngle[i] = std::atan2(std::abs(r.dot(u)), std::abs(cross(u, r)));
+    if (wantTransmission) pose.transmissionAngle[i] = std::atan2(std::abs(r.dot(u)), std::abs(cross(u, r)));
     if (!wantVelocity || !ratesValid) return true;
     if (p.guide.link) return movingGuideRates(i, p, line, r);
     const Eigen::Vector2d& v1 = pose.velocity[p.first.index];
@@ -210,7 +220,7 @@ struct Solver {
     }
     const Eigen::Vector2d c = l1.point + cross(l2.point - l1.point, l2.direction) / sine * l1.direction;
     pose.position[i] = c;
-    pose.transmissionAngle[i] = std::atan2(std::abs(sine), l1.direction.dot(l2.direction));
+    if (wantTransmission) pose.transmissionAngle[i] = std::atan2(std::abs(sine), l1.direction.dot(l2.direction));
     if (!wantVelocity || !ratesValid) return true;
     const Eigen::Vector2d n1 = guideNormal(l1);
     const Eigen::Vector2d n2 = guideNormal(l2);
@@ -254,12 +264,13 @@ struct Solver {
   void link(std::size_t k) {
     const Link& l = m.links[k];
     const Eigen::Vector2d r = pose.position[l.second.index] - pose.position[l.first.index];
-    pose.linkAngle[k] = std::atan2(r.y(), r.x());
-    if (drivenCrank(l)) {
+    if (const std::optional<double> crankAngle = drivenCrankAngle(l)) {
+      pose.linkAngle[k] = wrapAngle(*crankAngle);
       if (wantVelocity) pose.linkOmega[k] = driver.omega;
       if (wantAcceleration) pose.linkAlpha[k] = driver.alpha;
       return;
     }
+    pose.linkAngle[k] = std::atan2(r.y(), r.x());
     if (!ratesValid) return;
     const double r2 = r.squaredNorm();
     if (wantVelocity)
@@ -295,6 +306,9 @@ struct Solver {
   PoseReport runPoints() {
     for (std::size_t i = 0; i < m.points.size(); ++i) {
       const PointDefinition& def = m.points[i].definition;
+      const bool skip = scope != nullptr && scope->solvePoint[i] == 0;
+      if (skip && std::holds_alternative<FreePoint>(def)) i = freeGroupEnd(m, i) - 1;
+      if (skip) continue;
       if (const auto* g = std::get_if<GroundPoint>(&def)) ground(i, *g);
       else if (const auto* c = std::get_if<CrankPoint>(&def)) crank(i, *c);
       else if (const auto* r = std::get_if<RrrPoint>(&def)) {
@@ -311,7 +325,8 @@ struct Solver {
         i = last - 1;
       } else attached(i, std::get<AttachedPoint>(def));
     }
-    for (std::size_t k = 0; k < m.links.size(); ++k) link(k);
+    for (std::size_t k = 0; k < m.links.size(); ++k)
+      if (scope == nullptr || scope->solveLink[k] != 0) link(k);
     return report;
   }
 };
@@ -361,6 +376,7 @@ void preparePose(const Mechanism& m, Pose& pose) {
   pose.velocity.assign(n, Eigen::Vector2d::Zero());
   pose.acceleration.assign(n, Eigen::Vector2d::Zero());
   pose.transmissionAngle.assign(n, 0.0);
+  pose.assemblyGap.assign(n, 0.0);
   pose.branchSign.assign(n, 0);
   pose.linkAngle.assign(k, 0.0);
   pose.linkOmega.assign(k, 0.0);
@@ -369,9 +385,9 @@ void preparePose(const Mechanism& m, Pose& pose) {
 }
 
 PoseReport solvePoseInto(const Mechanism& m, const DriverState& driver, const SolveRequest& request,
-                         Pose& pose, const BranchGuide& guide) {
+                         Pose& pose, const BranchGuide& guide, const SolveScope* scope) {
   const bool acc = request.accelerations;
-  Solver solver{m, driver, request.velocities || acc, acc, request.newton, pose, guide};
+  Solver solver{m, driver, request.velocities || acc, acc, request.transmissionAngles, request.newton, pose, guide, scope};
   return solver.run();
 }
 

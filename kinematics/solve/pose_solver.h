@@ -8,6 +8,7 @@
 #include "kinematics/model/mechanism.h"
 #include "kinematics/model/result.h"
 #include "kinematics/solve/pose.h"
+#include "kinematics/solve/solve_scope.h"
 
 #include <span>
 #include <string>
@@ -26,8 +27,11 @@ struct BranchGuide {
 void preparePose(const Mechanism& mechanism, Pose& pose);
 
 /// Solves into a prepared pose. Assumes checkMechanism passed. Never throws or allocates.
+/// With a `scope` (built from request.only by scopeOf), only the points and links in it are
+/// solved; entries outside it keep whatever they held. Without one, everything is solved.
 PoseReport solvePoseInto(const Mechanism& mechanism, const DriverState& driver,
-                         const SolveRequest& request, Pose& pose, const BranchGuide& guide = {});
+                         const SolveRequest& request, Pose& pose, const BranchGuide& guide = {},
+                         const SolveScope* scope = nullptr);
 
 /// Convenience: validates, solves with the mechanism's branches, and turns a failure into an
 /// Error whose message names the point, the input angle and the reason.

@@ -53,8 +53,13 @@ double rrrSine(const Eigen::Vector2d& c, const Eigen::Vector2d& p1, const Eigen:
 
 bool rrrSolveRates(const Eigen::Vector2d& r1, const Eigen::Vector2d& r2, const Eigen::Vector2d& rhs,
                    Eigen::Vector2d& x) {
+  return rrrSolveRates(r1, r2, rhs, x, r1.norm() * r2.norm());
+}
+
+bool rrrSolveRates(const Eigen::Vector2d& r1, const Eigen::Vector2d& r2, const Eigen::Vector2d& rhs,
+                   Eigen::Vector2d& x, double scale) {
   const double det = cross(r1, r2);
-  if (!(std::abs(det) > kSingularSine * r1.norm() * r2.norm())) return false;
+  if (!(std::abs(det) > kSingularSine * scale)) return false;
   // Cramer's rule on [r1x r1y; r2x r2y] x = rhs.
   x = Eigen::Vector2d((rhs.x() * r2.y() - r1.y() * rhs.y()) / det,
                       (r1.x() * rhs.y() - rhs.x() * r2.x()) / det);

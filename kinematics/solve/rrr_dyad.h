@@ -59,4 +59,8 @@ double rrrSine(const Eigen::Vector2d& c, const Eigen::Vector2d& p1, const Eigen:
 bool rrrSolveRates(const Eigen::Vector2d& r1, const Eigen::Vector2d& r2, const Eigen::Vector2d& rhs,
                    Eigen::Vector2d& x);
 
+/// The same with |r1|·|r2| given as `scale` (an RRR dyad knows it: l1·l2), saving two roots.
+bool rrrSolveRates(const Eigen::Vector2d& r1, const Eigen::Vector2d& r2, const Eigen::Vector2d& rhs,
+                   Eigen::Vector2d& x, double scale);
+
 } // namespace linkwright::kinematics

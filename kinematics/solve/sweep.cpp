@@ -7,6 +7,7 @@
 #include "kinematics/solve/newton_group.h"
 #include "kinematics/solve/pose_solver.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace linkwright::kinematics {
@@ -18,29 +19,16 @@ namespace {
 // (a full turn halved 40 times is 6e-12 rad) merely bounds the scratch space.
 constexpr double kMinRefineStep = 1e-7;
 constexpr int kMaxRefineDepth = 40;
-constexpr SolveRequest kPositionsOnly{false, false};
-
-double wrapToPi(double angle) { return std::remainder(angle, 2.0 * kPi); }
+const SolveRequest kPositionsOnly{false, false, {}, {}, false};
 
 bool isDyad(const Mechanism& m, std::size_t i) {
   const PointDefinition& def = m.points[i].definition;
   return std::holds_alternative<RrrPoint>(def) || std::holds_alternative<RrpPoint>(def);
 }
 
-// How far the distance between a dyad's parents is from an assembly limit (l1 + l2 or
-// |l1 − l2|): the dyad toggles, and its branch may switch, only where this reaches zero.
-double limitGap(const RrrPoint& r, const Pose& pose) {
-  const double L = (pose.position[r.second.index] - pose.position[r.first.index]).norm();
-  return std::min(r.firstLength + r.secondLength - L, L - std::abs(r.firstLength - r.secondLength));
-}
-
-// For a slider: the rod length less the pin's distance from the guide. A moving guide adds its
-// own motion, so its link's ends count toward the displacement below.
-double limitGap(const Mechanism& m, const RrpPoint& p, const Pose& pose) {
-  const GuideLine line = guideLineAt(m, p.guide, pose);
-  const Eigen::Vector2d d = line.point - pose.position[p.first.index];
-  return p.length - std::abs(line.direction.x() * d.y() - line.direction.y() * d.x());
-}
+// An upper bound on |d| (at most √2 times it) without a square root: the branch test below
+// only needs to overstate how far points moved, never understate it.
+double displacementBound(const Eigen::Vector2d& d) { return std::abs(d.x()) + std::abs(d.y()); }
 
 // How far a guide on link k can move the point of it nearest a slider between poses a and b:
 // its ends' displacement, plus the rotation times the reach of the guide from the link.
@@ -48,27 +36,32 @@ double guideMotion(const Mechanism& m, LinkId k, const Pose& a, const Pose& b) {
   const Link& l = m.links[k.index];
   const double ends = std::max((b.position[l.first.index] - a.position[l.first.index]).norm(),
                                (b.position[l.second.index] - a.position[l.second.index]).norm());
-  const double turn = std::abs(wrapToPi(b.linkAngle[k.index] - a.linkAngle[k.index]));
+  const double turn = std::abs(wrapAngle(b.linkAngle[k.index] - a.linkAngle[k.index]));
   double reach = 0.0;
   for (const Eigen::Vector2d& p : b.position) reach = std::max(reach, (p - b.position[l.first.index]).norm());
   return ends + turn * reach;
 }
 
-// True unless every dyad provably stays away from its toggle between poses a and b. The gap
-// changes no faster than the parents move, so it cannot close if the gaps at both ends exceed
-// the parents' displacement (doubled, since a chord understates the path). Steps over half a
-// radian are always split: there a chord says too little about the path.
-bool branchAmbiguous(const Mechanism& m, double aAngle, const Pose& a, double bAngle, const Pose& b) {
+// True unless every dyad provably stays away from its toggle between poses a and b. The gap to
+// an assembly limit (Pose::assemblyGap) changes no faster than the parents move, so it cannot
+// close if the gaps at both ends exceed the parents' displacement (doubled, since a chord
+// understates the path). Steps over half a radian are always split: there a chord says too
+// little about the path.
+bool branchAmbiguous(const Mechanism& m, const SolveScope& scope, double aAngle, const Pose& a, double bAngle,
+                     const Pose& b) {
   if (std::abs(bAngle - aAngle) > 0.5) return true;
-  for (const Point& p : m.points) {
+  for (std::size_t i = 0; i < m.points.size(); ++i) {
+    if (scope.solvePoint[i] == 0) continue;
+    const Point& p = m.points[i];
+    const double gaps = a.assemblyGap[i] + b.assemblyGap[i];
     if (const auto* r = std::get_if<RrrPoint>(&p.definition)) {
-      const double motion = (b.position[r->first.index] - a.position[r->first.index]).norm() +
-                            (b.position[r->second.index] - a.position[r->second.index]).norm();
-      if (limitGap(*r, a) + limitGap(*r, b) <= 2.0 * motion) return true;
+      const double motion = displacementBound(b.position[r->first.index] - a.position[r->first.index]) +
+                            displacementBound(b.position[r->second.index] - a.position[r->second.index]);
+      if (gaps <= 2.0 * motion) return true;
     } else if (const auto* s = std::get_if<RrpPoint>(&p.definition)) {
-      double motion = (b.position[s->first.index] - a.position[s->first.index]).norm();
+      double motion = displacementBound(b.position[s->first.index] - a.position[s->first.index]);
       if (s->guide.link) motion += guideMotion(m, *s->guide.link, a, b);
-      if (limitGap(m, *s, a) + limitGap(m, *s, b) <= 2.0 * motion) return true;
+      if (gaps <= 2.0 * motion) return true;
     }
   }
   return false;
@@ -77,13 +70,15 @@ bool branchAmbiguous(const Mechanism& m, double aAngle, const Pose& a, double bA
 // Solves one sweep: tracks branches from sample to sample and writes the columns.
 class Tracker {
 public:
-  Tracker(const Mechanism& m, const SweepSpec& spec, const SolveRequest& request, SweepResult& out)
-      : m_mech(m), m_spec(spec), m_request(request), m_out(out), m_scratch(kMaxRefineDepth + 1) {
+  Tracker(const Mechanism& m, const SweepSpec& spec, const SolveRequest& request, const SolveScope& scope,
+          SweepResult& out)
+      : m_mech(m), m_spec(spec), m_request(request), m_scope(scope), m_out(out), m_scratch(kMaxRefineDepth + 1) {
     preparePose(m, m_last);
     preparePose(m, m_current);
     preparePose(m, m_before);
-    for (Pose& p : m_scratch) preparePose(m, p);
     m_predicted.assign(m.points.size(), Eigen::Vector2d::Zero());
+    m_hasFreePoints = std::any_of(m.points.begin(), m.points.end(),
+                                  [](const Point& p) { return std::holds_alternative<FreePoint>(p.definition); });
   }
 
   void run() {
@@ -93,36 +88,49 @@ public:
       const PoseReport report = solveSample(angle);
       m_out.report[j] = report;
       if (report.status == PoseStatus::NotAssemblable) {
+        storeNothing(j);
         m_haveLast = m_haveBefore = false;
         continue;
       }
-      store(j);
-      m_before.position = m_last.position;  // same sizes: copies, no allocation
-      m_beforeAngle = m_lastAngle;
-      m_haveBefore = m_haveLast;
-      m_last = m_current;
-      m_lastAngle = angle;
-      m_haveLast = true;
+      store(j, report.status == PoseStatus::Ok);
+      advance(angle);
     }
   }
 
 private:
   DriverState driver(double angle) const { return {angle, m_spec.omega, m_spec.alpha}; }
 
+  PoseReport solve(double angle, const SolveRequest& request, Pose& pose, const BranchGuide& guide = {}) const {
+    return solvePoseInto(m_mech, driver(angle), request, pose, guide, &m_scope);
+  }
+
+  // The current pose becomes the last, the last's positions the path before it. Swaps, not
+  // copies; free points then warm-start from the last sample's positions.
+  void advance(double angle) {
+    std::swap(m_before.position, m_last.position);
+    std::swap(m_last, m_current);
+    if (m_hasFreePoints) m_current.position = m_last.position;  // same sizes: no allocation
+    m_beforeAngle = m_lastAngle;
+    m_haveBefore = m_haveLast;
+    m_lastAngle = angle;
+    m_haveLast = true;
+  }
+
   PoseReport solveSample(double angle) {
-    if (!m_haveLast) return solvePoseInto(m_mech, driver(angle), m_request, m_current);
+    if (!m_haveLast) return solve(angle, m_request, m_current);
     const BranchGuide keep{m_last.branchSign, {}};
-    PoseReport report = solvePoseInto(m_mech, driver(angle), m_request, m_current, keep);
-    if (report.status == PoseStatus::NotAssemblable || !branchAmbiguous(m_mech, m_lastAngle, m_last, angle, m_current))
+    PoseReport report = solve(angle, m_request, m_current, keep);
+    if (report.status == PoseStatus::NotAssemblable ||
+        !branchAmbiguous(m_mech, m_scope, m_lastAngle, m_last, angle, m_current))
       return report;
     const Eigen::Vector2d* before = m_haveBefore ? m_before.position.data() : nullptr;
-    if (!refine(0, m_lastAngle, m_last, m_beforeAngle, before, angle, m_scratch[0])) {
+    if (!refine(0, m_lastAngle, m_last, m_beforeAngle, before, angle, scratch(0))) {
       // The path leaves the assemblable region between two samples: start afresh here.
-      return solvePoseInto(m_mech, driver(angle), m_request, m_current);
+      return solve(angle, m_request, m_current);
     }
     const BranchGuide tracked{m_scratch[0].branchSign, {}};
     m_current.position = m_scratch[0].position;  // free points start from the tracked solution
-    return solvePoseInto(m_mech, driver(angle), m_request, m_current, tracked);
+    return solve(angle, m_request, m_current, tracked);
   }
 
   // Positions at angle b continuing from pose `a` at angle aAngle; halves the step while a
@@ -133,40 +141,63 @@ private:
     out.position = a.position;
     out.assembled = true;
     const BranchGuide keep{a.branchSign, {}};
-    if (solvePoseInto(m_mech, driver(b), kPositionsOnly, out, keep).status == PoseStatus::NotAssemblable)
-      return false;
-    if (!branchAmbiguous(m_mech, aAngle, a, b, out)) return true;
+    if (solve(b, kPositionsOnly, out, keep).status == PoseStatus::NotAssemblable) return false;
+    if (!branchAmbiguous(m_mech, m_scope, aAngle, a, b, out)) return true;
     if (std::abs(b - aAngle) <= kMinRefineStep || depth == kMaxRefineDepth) {
       if (before == nullptr) return true;
       const double ratio = (b - aAngle) / (aAngle - beforeAngle);
       for (std::size_t i = 0; i < m_predicted.size(); ++i)
         m_predicted[i] = a.position[i] + ratio * (a.position[i] - before[i]);
       const BranchGuide nearest{{}, m_predicted};
-      solvePoseInto(m_mech, driver(b), kPositionsOnly, out, nearest);
+      solve(b, kPositionsOnly, out, nearest);
       return true;
     }
     const double mid = 0.5 * (aAngle + b);
-    Pose& midPose = m_scratch[depth + 1];
+    Pose& midPose = scratch(depth + 1);
     if (!refine(depth + 1, aAngle, a, beforeAngle, before, mid, midPose)) return false;
     return refine(depth + 1, mid, midPose, aAngle, a.position.data(), b, out);
   }
 
-  void store(std::size_t j) {
-    const bool rates = m_out.report[j].status == PoseStatus::Ok;
+  // Every column gets a value at every sample (the columns are reused between sweeps, so a
+  // sample left unwritten would show the previous sweep's numbers): rates are 0 where the
+  // pose is singular.
+  void store(std::size_t j, bool rates) {
+    const bool velocities = m_request.velocities;
+    const bool accelerations = m_request.accelerations;
     for (std::size_t i = 0; i < m_mech.points.size(); ++i) {
+      if (m_scope.reportPoint[i] == 0) continue;
       m_out.position[i][j] = m_current.position[i];
-      if (rates && m_request.velocities) m_out.velocity[i][j] = m_current.velocity[i];
-      if (rates && m_request.accelerations) m_out.acceleration[i][j] = m_current.acceleration[i];
-      if (isDyad(m_mech, i)) m_out.transmissionAngle[i][j] = m_current.transmissionAngle[i];
+      if (velocities) m_out.velocity[i][j] = rates ? m_current.velocity[i] : Eigen::Vector2d::Zero();
+      if (accelerations) m_out.acceleration[i][j] = rates ? m_current.acceleration[i] : Eigen::Vector2d::Zero();
+      if (!m_out.transmissionAngle[i].empty()) m_out.transmissionAngle[i][j] = m_current.transmissionAngle[i];
     }
     for (std::size_t k = 0; k < m_mech.links.size(); ++k) {
+      if (m_scope.reportLink[k] == 0) continue;
       const double raw = m_current.linkAngle[k];
-      m_out.linkAngle[k][j] = m_haveAnyAngle ? m_lastLinkAngle(k) + wrapToPi(raw - m_lastLinkAngle(k)) : raw;
-      if (rates && m_request.velocities) m_out.linkOmega[k][j] = m_current.linkOmega[k];
-      if (rates && m_request.accelerations) m_out.linkAlpha[k][j] = m_current.linkAlpha[k];
+      m_out.linkAngle[k][j] = m_haveAnyAngle ? m_lastLinkAngle(k) + wrapAngle(raw - m_lastLinkAngle(k)) : raw;
+      if (velocities) m_out.linkOmega[k][j] = rates ? m_current.linkOmega[k] : 0.0;
+      if (accelerations) m_out.linkAlpha[k][j] = rates ? m_current.linkAlpha[k] : 0.0;
     }
     m_lastStored = j;
     m_haveAnyAngle = true;
+  }
+
+  // A sample that cannot be assembled: zeros in every column (positions are not valid there).
+  void storeNothing(std::size_t j) {
+    for (auto* columns : {&m_out.position, &m_out.velocity, &m_out.acceleration})
+      for (auto& column : *columns)
+        if (!column.empty()) column[j].setZero();
+    for (auto* columns : {&m_out.linkAngle, &m_out.linkOmega, &m_out.linkAlpha, &m_out.transmissionAngle})
+      for (auto& column : *columns)
+        if (!column.empty()) column[j] = 0.0;
+  }
+
+  // Refinement's poses, sized on first use: most sweeps never refine deeper than a few levels,
+  // so the 41 levels' storage is not allocated up front.
+  Pose& scratch(int depth) {
+    Pose& p = m_scratch[static_cast<std::size_t>(depth)];
+    if (p.position.size() != m_mech.points.size()) preparePose(m_mech, p);
+    return p;
   }
 
   double m_lastLinkAngle(std::size_t k) const { return m_out.linkAngle[k][m_lastStored]; }
@@ -174,32 +205,52 @@ private:
   const Mechanism& m_mech;
   const SweepSpec& m_spec;
   const SolveRequest& m_request;
+  const SolveScope& m_scope;
   SweepResult& m_out;
   Pose m_current, m_last, m_before;
   std::vector<Pose> m_scratch;
   std::vector<Eigen::Vector2d> m_predicted;
   double m_lastAngle = 0.0, m_beforeAngle = 0.0;
-  bool m_haveLast = false, m_haveBefore = false, m_haveAnyAngle = false;
+  bool m_haveLast = false, m_haveBefore = false, m_haveAnyAngle = false, m_hasFreePoints = false;
   std::size_t m_lastStored = 0;
 };
 
-void allocate(const Mechanism& m, std::size_t n, const SolveRequest& request, SweepResult& out) {
-  const std::size_t points = m.points.size();
-  const std::size_t links = m.links.size();
-  const bool velocities = request.velocities || request.accelerations;
-  out.request = {velocities, request.accelerations, request.newton};
-  out.inputAngle.assign(n, 0.0);
-  out.report.assign(n, PoseReport{});
-  out.position.assign(points, std::vector<Eigen::Vector2d>(n, Eigen::Vector2d::Zero()));
-  out.velocity.assign(velocities ? points : 0, std::vector<Eigen::Vector2d>(n, Eigen::Vector2d::Zero()));
-  out.acceleration.assign(request.accelerations ? points : 0,
-                          std::vector<Eigen::Vector2d>(n, Eigen::Vector2d::Zero()));
-  out.linkAngle.assign(links, std::vector<double>(n, 0.0));
-  out.linkOmega.assign(velocities ? links : 0, std::vector<double>(n, 0.0));
-  out.linkAlpha.assign(request.accelerations ? links : 0, std::vector<double>(n, 0.0));
-  out.transmissionAngle.assign(points, {});
-  for (std::size_t i = 0; i < points; ++i)
-    if (isDyad(m, i)) out.transmissionAngle[i].assign(n, 0.0);
+// Sizes `columns` to one column of n samples per selected entry and an empty one for the
+// others (no columns at all for a quantity not wanted), reusing the storage they already have:
+// a sweep repeated into the same result (a drag, a benchmark) allocates nothing and touches no
+// new pages. Values are written by the sweep.
+template <typename T>
+void sizeColumns(std::vector<std::vector<T>>& columns, const std::vector<unsigned char>& selected, bool wanted,
+                 std::size_t n) {
+  if (!wanted) {
+    columns.clear();
+    return;
+  }
+  columns.resize(selected.size());
+  for (std::size_t i = 0; i < selected.size(); ++i) {
+    if (selected[i] != 0) columns[i].resize(n);
+    else columns[i].clear();
+  }
+}
+
+void allocate(const Mechanism& m, std::size_t n, const SolveRequest& request, const SolveScope& scope,
+              SweepResult& out) {
+  out.request = request;
+  out.inputAngle.resize(n);
+  out.report.resize(n);
+  sizeColumns(out.position, scope.reportPoint, true, n);
+  sizeColumns(out.velocity, scope.reportPoint, request.velocities, n);
+  sizeColumns(out.acceleration, scope.reportPoint, request.accelerations, n);
+  sizeColumns(out.linkAngle, scope.reportLink, true, n);
+  sizeColumns(out.linkOmega, scope.reportLink, request.velocities, n);
+  sizeColumns(out.linkAlpha, scope.reportLink, request.accelerations, n);
+  std::vector<unsigned char> dyads = scope.reportPoint;
+  for (std::size_t i = 0; i < dyads.size(); ++i) dyads[i] = dyads[i] != 0 && isDyad(m, i) ? 1 : 0;
+  if (!request.transmissionAngles) std::fill(dyads.begin(), dyads.end(), 0);
+  sizeColumns(out.transmissionAngle, dyads, true, n);
+  out.notAssembled.clear();
+  out.singularAngles.clear();
+  out.firstFailure.reset();
 }
 
 // Collects the runs of failed samples and the singular samples after the loop.
@@ -239,14 +290,24 @@ double sweepAngle(const SweepSpec& spec, std::size_t index) {
   return index + 1 == spec.samples ? spec.toAngle : spec.fromAngle + t * (spec.toAngle - spec.fromAngle);
 }
 
-Result<SweepResult> sweep(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request) {
-  if (auto e = checkMechanism(mechanism)) return *e;
-  if (auto e = checkSweepSpec(spec)) return *e;
-  if (auto e = checkNewtonSettings(request.newton)) return *e;
-  SweepResult out;
-  allocate(mechanism, spec.samples, request, out);
-  Tracker(mechanism, spec, out.request, out).run();
+std::optional<Error> sweepInto(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request,
+                               SweepResult& out) {
+  if (auto e = checkMechanism(mechanism)) return e;
+  if (auto e = checkSweepSpec(spec)) return e;
+  if (auto e = checkNewtonSettings(request.newton)) return e;
+  if (auto e = checkSelection(mechanism, request.only)) return e;
+  SolveRequest normalized = request;
+  normalized.velocities = request.velocities || request.accelerations;
+  const SolveScope scope = scopeOf(mechanism, normalized.only);
+  allocate(mechanism, spec.samples, normalized, scope, out);
+  Tracker(mechanism, spec, out.request, scope, out).run();
   summarize(mechanism, spec, out);
+  return std::nullopt;
+}
+
+Result<SweepResult> sweep(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request) {
+  SweepResult out;
+  if (auto e = sweepInto(mechanism, spec, request, out)) return *e;
   return out;
 }
 

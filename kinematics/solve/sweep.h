@@ -42,7 +42,8 @@ struct AngleRange {
 };
 
 /// Everything a sweep computed. Outer index: point or link id; inner index: sample.
-/// Columns for quantities not requested are empty. Rate columns (velocity, acceleration, ω,
+/// Quantities not requested have no columns (the outer vector is empty); points and links
+/// outside request.only, and points that are not dyads for transmissionAngle, have empty ones. Rate columns (velocity, acceleration, ω,
 /// α) hold 0 at samples that are not ok(): check the report before reading them. Position
 /// columns are valid wherever assembled().
 struct SweepResult {
@@ -73,9 +74,15 @@ std::optional<Error> checkSweepSpec(const SweepSpec& spec);
 /// The input angle of sample `index` (rad).
 double sweepAngle(const SweepSpec& spec, std::size_t index);
 
-/// Runs the sweep. Fails only for an invalid mechanism or spec; samples that cannot be
-/// assembled are reported in the result (report, notAssembled, firstFailure).
+/// Runs the sweep. Fails only for an invalid mechanism, spec or selection; samples that cannot
+/// be assembled are reported in the result (report, notAssembled, firstFailure).
 Result<SweepResult> sweep(const Mechanism& mechanism, const SweepSpec& spec,
                           const SolveRequest& request = {});
+
+/// The same sweep written into `out`, reusing its columns' storage: repeated sweeps of one
+/// size (a drag, an animation, a benchmark) allocate nothing per call beyond the solver's
+/// scratch poses. On error `out` is left as it was.
+std::optional<Error> sweepInto(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request,
+                               SweepResult& out);
 
 } // namespace linkwright::kinematics

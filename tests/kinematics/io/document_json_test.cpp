@@ -130,7 +130,7 @@ TEST_CASE("bad documents are refused with the member named", "[io][document][err
       {"[1, 2]", "document must be a JSON object"},
       {replaced(good, "\"linkwright\"", "\"solvespace\""), "not a Linkwright document"},
       {replaced(good, "\"version\": 2", "\"version\": 7"),
-       "this file is document version 7, written by a newer Linkwright; this one reads up to version 2"},
+       "this file is document version 7, written by a newer Linkwright; this one reads up to version 3"},
       {replaced(good, "\"version\": 2", "\"version\": 1.5"), "version must be a whole number"},
       {replaced(good, "\"version\": 2", "\"version\": \"1\""), "version must be a number"},
       {replaced(good, "\"four-bar\"", "\"six-bar\""), "mechanism.type must be \"four-bar\" or \"linkage\" in a version 2 document (got \"six-bar\")"},

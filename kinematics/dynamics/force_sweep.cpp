@@ -1,0 +1,99 @@
+#include "kinematics/dynamics/force_sweep.h"
+
+#include "kinematics/solve/pose_solver.h"
+
+namespace linkwright::kinematics {
+namespace {
+
+// Every point and link column holds every sample (a sweep of a selection leaves some empty).
+bool hasAllColumns(const Mechanism& m, const SweepResult& s) {
+  const auto full = [&](const auto& columns, std::size_t count) {
+    if (columns.size() != count) return false;
+    for (const auto& column : columns)
+      if (column.size() != s.size()) return false;
+    return true;
+  };
+  return full(s.position, m.points.size()) && full(s.velocity, m.points.size()) &&
+         full(s.acceleration, m.points.size()) && full(s.linkAngle, m.links.size()) &&
+         full(s.linkOmega, m.links.size()) && full(s.linkAlpha, m.links.size());
+}
+
+// The sweep's sample j as a pose (only what inverse dynamics reads).
+void copySample(const SweepResult& s, std::size_t j, Pose& pose) {
+  for (std::size_t i = 0; i < pose.position.size(); ++i) {
+    pose.position[i] = s.position[i][j];
+    pose.velocity[i] = s.velocity[i][j];
+    pose.acceleration[i] = s.acceleration[i][j];
+  }
+  for (std::size_t k = 0; k < pose.linkOmega.size(); ++k) {
+    pose.linkAngle[k] = s.linkAngle[k][j];
+    pose.linkOmega[k] = s.linkOmega[k][j];
+    pose.linkAlpha[k] = s.linkAlpha[k][j];
+  }
+}
+
+void allocate(ForceSweep& out, std::size_t samples) {
+  out.status.assign(samples, PoseStatus::Ok);
+  out.revolute.assign(out.bodies.revolutes.size(), std::vector<Eigen::Vector2d>(samples, Eigen::Vector2d::Zero()));
+  out.normal.assign(out.bodies.prismatics.size(), std::vector<double>(samples, 0.0));
+  out.moment.assign(out.bodies.prismatics.size(), std::vector<double>(samples, 0.0));
+  out.driveTorque.assign(samples, 0.0);
+  out.shakingForce.assign(samples, Eigen::Vector2d::Zero());
+  out.shakingMoment.assign(samples, 0.0);
+}
+
+void store(const PoseForces& f, std::size_t j, ForceSweep& out) {
+  for (std::size_t k = 0; k < f.revolute.size(); ++k) out.revolute[k][j] = f.revolute[k];
+  for (std::size_t k = 0; k < f.normal.size(); ++k) {
+    out.normal[k][j] = f.normal[k];
+    out.moment[k][j] = f.moment[k];
+  }
+  out.driveTorque[j] = f.driveTorque;
+  out.shakingForce[j] = f.shakingForce;
+  out.shakingMoment[j] = f.shakingMoment;
+}
+
+} // namespace
+
+PoseForces ForceSweep::at(std::size_t j) const {
+  PoseForces f;
+  for (const auto& column : revolute) f.revolute.push_back(column[j]);
+  for (const auto& column : normal) f.normal.push_back(column[j]);
+  for (const auto& column : moment) f.moment.push_back(column[j]);
+  f.driveTorque = driveTorque[j];
+  f.shakingForce = shakingForce[j];
+  f.shakingMoment = shakingMoment[j];
+  return f;
+}
+
+Result<ForceSweep> sweepForces(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepResult& sweep) {
+  if (!sweep.request.accelerations)
+    return Error{ErrorCode::InvalidValue, "request.accelerations",
+                 "forces need a sweep with accelerations (request.accelerations was off): inertia forces are m·a"};
+  auto solver = InverseDynamics::create(mechanism, dynamics);
+  if (!solver) return solver.error();
+  InverseDynamics& solve = solver.value();
+  if (!hasAllColumns(mechanism, sweep))
+    return Error{ErrorCode::InvalidStructure, "sweep",
+                 "forces need every point and link of the mechanism solved at every sample (this sweep's columns "
+                 "do not match the mechanism, or it solved a selection only)"};
+  ForceSweep out;
+  out.bodies = solve.bodies();
+  allocate(out, sweep.size());
+  Pose pose;
+  preparePose(mechanism, pose);
+  PoseForces forces;
+  solve.prepare(forces);
+  for (std::size_t j = 0; j < sweep.size(); ++j) {
+    if (!sweep.ok(j)) {
+      out.status[j] = sweep.report[j].status;
+      continue;
+    }
+    copySample(sweep, j, pose);
+    out.status[j] = solve.solveInto(pose, forces);
+    if (out.status[j] == PoseStatus::Ok) store(forces, j, out);
+  }
+  return out;
+}
+
+} // namespace linkwright::kinematics

@@ -1,0 +1,45 @@
+#pragma once
+// Inverse dynamics over a sweep: the forces of inverse_dynamics.h at every sample of a
+// kinematic sweep (sweep.h), stored one column per quantity like SweepResult, for the CSV
+// columns, the plots and the polar load diagrams. The crank's ω and α are the sweep's, so a
+// sweep with α ≠ 0 gives the forces of an accelerating crank.
+
+#include "kinematics/dynamics/inverse_dynamics.h"
+#include "kinematics/dynamics/mass_properties.h"
+#include "kinematics/dynamics/rigid_bodies.h"
+#include "kinematics/model/mechanism.h"
+#include "kinematics/model/result.h"
+#include "kinematics/solve/sweep.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace linkwright::kinematics {
+
+/// Forces over a sweep. Outer index: joint (as in `bodies`); inner index: sample. Samples
+/// whose status is not Ok hold 0: a sample the kinematics could not assemble or flagged
+/// singular keeps the sweep's status, and a sample where the forces are not determined is
+/// Singular.
+struct ForceSweep {
+  BodyModel bodies;                  ///< names the joints the columns belong to
+  std::vector<PoseStatus> status;    ///< per sample
+  std::vector<std::vector<Eigen::Vector2d>> revolute;  ///< N, force on joint.body from joint.hub
+  std::vector<std::vector<double>> normal;             ///< N, per prismatic joint (PoseForces::normal)
+  std::vector<std::vector<double>> moment;             ///< N·m, per prismatic joint
+  std::vector<double> driveTorque;                     ///< N·m, on the driven body, CCW +
+  std::vector<Eigen::Vector2d> shakingForce;           ///< N, on the frame
+  std::vector<double> shakingMoment;                   ///< N·m, about the crank pivot
+
+  std::size_t size() const { return status.size(); }
+  bool ok(std::size_t sample) const { return status[sample] == PoseStatus::Ok; }
+  /// The forces of one sample as a PoseForces (zeros where not ok).
+  PoseForces at(std::size_t sample) const;
+};
+
+/// Solves the forces at every sample of `sweep`, which must come from sweep(mechanism, …)
+/// with accelerations requested (an error otherwise, as for an invalid mechanism, dynamics
+/// or length unit: see InverseDynamics::create).
+Result<ForceSweep> sweepForces(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepResult& sweep);
+
+} // namespace linkwright::kinematics

@@ -1,0 +1,259 @@
+#include "kinematics/dynamics/inverse_dynamics.h"
+
+#include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/units.h"
+
+#include <algorithm>
+
+namespace linkwright::kinematics {
+namespace {
+
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
+
+// First row of a moving body's three equations (the ground has none).
+Eigen::Index rowOf(BodyId body) { return static_cast<Eigen::Index>(3 * (body.index - 1)); }
+
+} // namespace
+
+Result<InverseDynamics> InverseDynamics::create(const Mechanism& mechanism, const LinkageDynamics& dynamics) {
+  if (auto e = checkMechanism(mechanism)) return *e;
+  if (auto e = checkDynamics(mechanism, dynamics)) return *e;
+  const auto metres = metresPerLengthUnit(mechanism.lengthUnit);
+  if (!metres)
+    return Error{ErrorCode::InvalidValue, "lengthUnit",
+                 "lengthUnit must be m, cm, mm, in or ft for forces, which need lengths in metres (got \"" +
+                     mechanism.lengthUnit + "\")"};
+  auto bodies = bodiesOf(mechanism);
+  if (!bodies) return bodies.error();
+  InverseDynamics id;
+  id.m_mechanism = mechanism;
+  id.m_bodies = std::move(*bodies);
+  id.m_metres = *metres;
+  if (auto e = id.resolve(dynamics)) return *e;
+  const auto n = static_cast<Eigen::Index>(id.m_bodies.unknowns());
+  id.m_omega.assign(id.m_bodies.bodies.size(), 0.0);
+  id.m_alpha.assign(id.m_bodies.bodies.size(), 0.0);
+  id.m_prismaticNormal.assign(id.m_bodies.prismatics.size(), Eigen::Vector2d::Zero());
+  id.m_matrix.setZero(n, n);
+  id.m_rhs.setZero(n);
+  id.m_solution.setZero(n);
+  id.m_work.setZero(n);
+  id.m_workspace.setZero(1);
+  id.m_qr = Eigen::ColPivHouseholderQR<Eigen::MatrixXd>(n, n);
+  id.m_qr.setThreshold(kForceRankThreshold);
+  return id;
+}
+
+// Names become ids and bodies; defaults are filled in: the midpoint, a uniform slender bar.
+std::optional<Error> InverseDynamics::resolve(const LinkageDynamics& d) {
+  const Mechanism& m = m_mechanism;
+  for (const LinkMass& l : d.links) {
+    const LinkId link = *m.findLink(l.link);
+    const double length = linkLength(m, link);
+    const double lengthMetres = length * m_metres;
+    const LinkFramePoint centre = l.centre.value_or(LinkFramePoint{0.5 * length, 0.0});
+    const double inertia = l.inertia.value_or(l.mass * lengthMetres * lengthMetres / 12.0);
+    m_masses.push_back({m_bodies.linkBody[link.index], link, l.mass, inertia, centre});
+  }
+  for (const SliderMass& s : d.sliders) {
+    const BodyId block = *m_bodies.findSlider({*m.findPoint(s.point), s.guide});
+    m_masses.push_back({block, std::nullopt, s.mass, s.inertia, {}});
+  }
+  for (const LinkTorque& t : d.loads.torques)
+    m_torques.push_back({m_bodies.linkBody[m.findLink(t.link)->index], t.torque});
+  for (const PointForce& f : d.loads.forces) {
+    if (f.link.empty()) {
+      const BodyId block = *m_bodies.findSlider({*m.findPoint(f.point), f.guide});
+      m_forces.push_back({block, m_bodies.bodies[block.index].reference, f.force});
+    } else {
+      m_forces.push_back({m_bodies.linkBody[m.findLink(f.link)->index], *m.findPoint(f.point), f.force});
+    }
+  }
+  m_gravity = d.loads.gravity;
+  // Loads on a link fixed to the ground go straight into the frame: nothing to solve for.
+  std::erase_if(m_masses, [](const MassElement& e) { return e.body == kGroundBody; });
+  std::erase_if(m_torques, [](const BodyTorque& t) { return t.body == kGroundBody; });
+  std::erase_if(m_forces, [](const BodyForce& f) { return f.body == kGroundBody; });
+  return std::nullopt;
+}
+
+void InverseDynamics::prepare(PoseForces& f) const {
+  f.revolute.assign(m_bodies.revolutes.size(), Eigen::Vector2d::Zero());
+  f.normal.assign(m_bodies.prismatics.size(), 0.0);
+  f.moment.assign(m_bodies.prismatics.size(), 0.0);
+  f.driveTorque = 0.0;
+  f.shakingForce.setZero();
+  f.shakingMoment = 0.0;
+}
+
+// Angular velocity and acceleration of every body: its first link's, else from two of its
+// points; a block's are those of the body it slides on (blocks come after rigid bodies).
+void InverseDynamics::bodyRates(const Pose& pose) {
+  for (std::size_t k = 0; k < m_bodies.bodies.size(); ++k) {
+    const Body& b = m_bodies.bodies[k];
+    double w = 0.0;
+    double a = 0.0;
+    if (b.kind == BodyKind::Slider) {
+      w = m_omega[b.turnsWith.index];
+      a = m_alpha[b.turnsWith.index];
+    } else if (b.kind == BodyKind::Rigid && !b.links.empty()) {
+      w = pose.linkOmega[b.links[0].index];
+      a = pose.linkAlpha[b.links[0].index];
+    } else if (b.kind == BodyKind::Rigid) {
+      const std::size_t p = b.reference.index;
+      const std::size_t q = b.second.index;
+      const Eigen::Vector2d r = pose.position[q] - pose.position[p];
+      w = cross(r, pose.velocity[q] - pose.velocity[p]) / r.squaredNorm();
+      a = cross(r, pose.acceleration[q] - pose.acceleration[p]) / r.squaredNorm();
+    }
+    m_omega[k] = w;
+    m_alpha[k] = a;
+  }
+}
+
+void InverseDynamics::addJoints(const Pose& pose) {
+  const double L = m_scale;
+  const auto& rev = m_bodies.revolutes;
+  for (std::size_t j = 0; j < rev.size(); ++j) {
+    const Eigen::Vector2d p = at(pose, rev[j].point);
+    const auto c = static_cast<Eigen::Index>(2 * j);
+    for (const auto& [body, sign] : {std::pair{rev[j].body, 1.0}, std::pair{rev[j].hub, -1.0}}) {
+      if (body == kGroundBody) continue;
+      const Eigen::Index row = rowOf(body);
+      const Eigen::Vector2d r = p - at(pose, m_bodies.bodies[body.index].reference);
+      m_matrix(row, c) += sign;
+      m_matrix(row + 1, c + 1) += sign;
+      m_matrix(row + 2, c) -= sign * r.y() / L;
+      m_matrix(row + 2, c + 1) += sign * r.x() / L;
+    }
+  }
+  const auto& pri = m_bodies.prismatics;
+  for (std::size_t j = 0; j < pri.size(); ++j) {
+    const Eigen::Vector2d n = perp(prismaticDirection(m_mechanism, pri[j], pose));
+    m_prismaticNormal[j] = n;
+    const Eigen::Vector2d p = at(pose, pri[j].pin);
+    const auto c = static_cast<Eigen::Index>(2 * (rev.size() + j));
+    for (const auto& [body, sign] : {std::pair{pri[j].block, 1.0}, std::pair{pri[j].guide, -1.0}}) {
+      if (body == kGroundBody) continue;
+      const Eigen::Index row = rowOf(body);
+      const Eigen::Vector2d r = p - at(pose, m_bodies.bodies[body.index].reference);
+      m_matrix(row, c) += sign * n.x();
+      m_matrix(row + 1, c) += sign * n.y();
+      m_matrix(row + 2, c) += sign * cross(r, n) / L;
+      m_matrix(row + 2, c + 1) += sign;  // the couple M = L·x: its row and column scalings cancel
+    }
+  }
+  m_matrix(rowOf(m_bodies.driven) + 2, m_matrix.cols() - 1) += 1.0;
+}
+
+// Inertia (and −m g) on the right, external loads moved to it with their sign changed.
+void InverseDynamics::addRightHandSide(const Pose& pose) {
+  const double L = m_scale;
+  const Eigen::Vector2d g = m_gravity.value_or(Eigen::Vector2d::Zero());
+  for (const MassElement& e : m_masses) {
+    const Eigen::Index row = rowOf(e.body);
+    const double w = m_omega[e.body.index];
+    const double alpha = m_alpha[e.body.index];
+    Eigen::Vector2d centre;
+    Eigen::Vector2d accel;
+    if (e.link) {
+      const Link& link = m_mechanism.links[e.link->index];
+      const Eigen::Vector2d a = at(pose, link.first);
+      const Eigen::Vector2d u = (at(pose, link.second) - a).normalized();
+      const Eigen::Vector2d r = m_metres * (e.centre.along * u + e.centre.across * perp(u));
+      centre = a + r;
+      accel = m_metres * pose.acceleration[link.first.index] + alpha * perp(r) - w * w * r;
+    } else {
+      centre = at(pose, m_bodies.bodies[e.body.index].reference);
+      accel = m_metres * pose.acceleration[m_bodies.bodies[e.body.index].reference.index];
+    }
+    const Eigen::Vector2d inertiaForce = e.mass * (accel - g);
+    const Eigen::Vector2d r = centre - at(pose, m_bodies.bodies[e.body.index].reference);
+    m_rhs(row) += inertiaForce.x();
+    m_rhs(row + 1) += inertiaForce.y();
+    m_rhs(row + 2) += (e.inertia * alpha + cross(r, inertiaForce)) / L;
+  }
+  for (const BodyTorque& t : m_torques) m_rhs(rowOf(t.body) + 2) -= t.torque / L;
+  for (const BodyForce& f : m_forces) {
+    const Eigen::Index row = rowOf(f.body);
+    const Eigen::Vector2d r = at(pose, f.point) - at(pose, m_bodies.bodies[f.body.index].reference);
+    m_rhs(row) -= f.force.x();
+    m_rhs(row + 1) -= f.force.y();
+    m_rhs(row + 2) -= cross(r, f.force) / L;
+  }
+}
+
+void InverseDynamics::assemble(const Pose& pose) {
+  const Eigen::Vector2d o = at(pose, m_bodies.crankPivot);
+  double size = 0.0;
+  for (const Eigen::Vector2d& p : pose.position) size = std::max(size, (m_metres * p - o).norm());
+  m_scale = size > 0.0 ? size : 1.0;
+  m_matrix.setZero();
+  m_rhs.setZero();
+  bodyRates(pose);
+  addJoints(pose);
+  addRightHandSide(pose);
+}
+
+void InverseDynamics::extract(const Pose& pose, PoseForces& f) const {
+  const double L = m_scale;
+  const Eigen::Vector2d o = at(pose, m_bodies.crankPivot);
+  f.shakingForce.setZero();
+  f.shakingMoment = 0.0;
+  const auto& rev = m_bodies.revolutes;
+  for (std::size_t j = 0; j < rev.size(); ++j) {
+    f.revolute[j] = m_solution.segment<2>(static_cast<Eigen::Index>(2 * j));
+    if (rev[j].hub != kGroundBody) continue;
+    f.shakingForce -= f.revolute[j];
+    f.shakingMoment -= cross(at(pose, rev[j].point) - o, f.revolute[j]);
+  }
+  const auto& pri = m_bodies.prismatics;
+  for (std::size_t j = 0; j < pri.size(); ++j) {
+    const auto c = static_cast<Eigen::Index>(2 * (rev.size() + j));
+    f.normal[j] = m_solution(c);
+    f.moment[j] = m_solution(c + 1) * L;
+    if (pri[j].guide != kGroundBody) continue;
+    const Eigen::Vector2d onBlock = f.normal[j] * m_prismaticNormal[j];
+    f.shakingForce -= onBlock;
+    f.shakingMoment -= cross(at(pose, pri[j].pin) - o, onBlock) + f.moment[j];
+  }
+  f.driveTorque = m_solution(m_solution.size() - 1) * L;
+  f.shakingMoment -= f.driveTorque;
+}
+
+PoseStatus InverseDynamics::solveInto(const Pose& pose, PoseForces& forces) {
+  assemble(pose);
+  m_qr.compute(m_matrix);
+  if (m_qr.rank() < m_matrix.cols()) {
+    prepare(forces);
+    return PoseStatus::Singular;
+  }
+  // x = P·R⁻¹·Qᵀ·b, written out so it works in the buffers sized at create(): Eigen's solve()
+  // would allocate a copy of b at every sample (its factorization still allocates per column).
+  m_work = m_rhs;
+  m_qr.householderQ().adjoint().applyThisOnTheLeft(m_work, m_workspace);
+  m_qr.matrixQR().triangularView<Eigen::Upper>().solveInPlace(m_work);
+  for (Eigen::Index i = 0; i < m_work.size(); ++i) m_solution(m_qr.colsPermutation().indices()(i)) = m_work(i);
+  if (!m_solution.allFinite()) {
+    prepare(forces);
+    return PoseStatus::Singular;
+  }
+  extract(pose, forces);
+  return PoseStatus::Ok;
+}
+
+Result<PoseForces> forcesAtPose(const Mechanism& mechanism, const LinkageDynamics& dynamics, const Pose& pose) {
+  auto solver = InverseDynamics::create(mechanism, dynamics);
+  if (!solver) return solver.error();
+  InverseDynamics& solve = solver.value();
+  PoseForces forces;
+  solve.prepare(forces);
+  if (solve.solveInto(pose, forces) != PoseStatus::Ok)
+    return Error{ErrorCode::Singular, "pose",
+                 "the joint forces are not determined at this pose: the Newton–Euler system is singular (a toggle "
+                 "position, or links that lock each other)"};
+  return forces;
+}
+
+} // namespace linkwright::kinematics

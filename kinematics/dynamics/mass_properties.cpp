@@ -1,0 +1,115 @@
+#include "kinematics/dynamics/mass_properties.h"
+
+#include "kinematics/dynamics/rigid_bodies.h"
+#include "kinematics/model/validate.h"
+
+#include <cmath>
+#include <set>
+
+namespace linkwright::kinematics {
+namespace {
+
+Error valueError(const std::string& field, const std::string& why) {
+  return Error{ErrorCode::InvalidValue, field, field + " " + why};
+}
+
+std::optional<Error> checkNonNegative(double value, const std::string& field) {
+  if (std::isfinite(value) && value >= 0.0) return std::nullopt;
+  return valueError(field, "must be finite and ≥ 0 (got " + formatNumber(value) + ")");
+}
+
+std::optional<Error> checkVector(const Eigen::Vector2d& v, const std::string& field) {
+  if (auto e = checkFinite(v.x(), field + ".x")) return e;
+  return checkFinite(v.y(), field + ".y");
+}
+
+std::optional<Error> checkLinkName(const Mechanism& m, const std::string& name, const std::string& field) {
+  if (m.findLink(name)) return std::nullopt;
+  return valueError(field, "names no link of this mechanism (got \"" + name + "\")");
+}
+
+bool isSliderPoint(const PointDefinition& def) {
+  return std::holds_alternative<RrpPoint>(def) || std::holds_alternative<RprPoint>(def) ||
+         std::holds_alternative<PrpPoint>(def);
+}
+
+// A slider named by its defining point and, for a prp point, its guide.
+std::optional<Error> checkSliderKey(const Mechanism& m, const std::string& point, int guide, const std::string& field) {
+  const auto id = m.findPoint(point);
+  if (!id) return valueError(field + ".point", "names no point of this mechanism (got \"" + point + "\")");
+  const PointDefinition& def = m.points[id->index].definition;
+  if (!isSliderPoint(def))
+    return valueError(field + ".point", "must name a slider's point (an rrp, rpr or prp point; got \"" + point + "\")");
+  const int guides = std::holds_alternative<PrpPoint>(def) ? 2 : 1;
+  if (guide < 0 || guide >= guides)
+    return valueError(field + ".guide", "must be " + std::string(guides == 2 ? "0 or 1" : "0") + " for " + point +
+                                            " (got " + std::to_string(guide) + ")");
+  return std::nullopt;
+}
+
+std::optional<Error> checkLinkMasses(const Mechanism& m, const std::vector<LinkMass>& links) {
+  std::set<std::string> seen;
+  for (std::size_t k = 0; k < links.size(); ++k) {
+    const LinkMass& l = links[k];
+    const std::string field = "links[" + std::to_string(k) + "]";
+    if (auto e = checkLinkName(m, l.link, field + ".link")) return e;
+    if (!seen.insert(l.link).second) return valueError(field + ".link", "repeats the link \"" + l.link + "\"");
+    if (auto e = checkNonNegative(l.mass, field + ".mass")) return e;
+    if (l.centre) {
+      if (auto e = checkFinite(l.centre->along, field + ".centre.along")) return e;
+      if (auto e = checkFinite(l.centre->across, field + ".centre.across")) return e;
+    }
+    if (l.inertia)
+      if (auto e = checkNonNegative(*l.inertia, field + ".inertia")) return e;
+  }
+  return std::nullopt;
+}
+
+std::optional<Error> checkSliderMasses(const Mechanism& m, const std::vector<SliderMass>& sliders) {
+  std::set<std::pair<std::string, int>> seen;
+  for (std::size_t k = 0; k < sliders.size(); ++k) {
+    const SliderMass& s = sliders[k];
+    const std::string field = "sliders[" + std::to_string(k) + "]";
+    if (auto e = checkSliderKey(m, s.point, s.guide, field)) return e;
+    if (!seen.insert({s.point, s.guide}).second) return valueError(field + ".point", "repeats the slider \"" + s.point + "\"");
+    if (auto e = checkNonNegative(s.mass, field + ".mass")) return e;
+    if (auto e = checkNonNegative(s.inertia, field + ".inertia")) return e;
+  }
+  return std::nullopt;
+}
+
+std::optional<Error> checkForce(const Mechanism& m, const PointForce& f, const std::string& field) {
+  if (auto e = checkVector(f.force, field + ".force")) return e;
+  if (f.link.empty()) return checkSliderKey(m, f.point, f.guide, field);
+  if (auto e = checkLinkName(m, f.link, field + ".link")) return e;
+  const auto point = m.findPoint(f.point);
+  if (!point) return valueError(field + ".point", "names no point of this mechanism (got \"" + f.point + "\")");
+  // A mechanism whose bodies cannot be found fails when forces are solved, with its own reason.
+  const auto bodies = bodiesOf(m);
+  if (bodies && !bodies->holds(bodies->linkBody[m.findLink(f.link)->index], *point))
+    return valueError(field + ".point", "must lie on the body of link " + f.link + " (got \"" + f.point + "\")");
+  return std::nullopt;
+}
+
+} // namespace
+
+bool LinkageDynamics::empty() const {
+  return links.empty() && sliders.empty() && !loads.gravity && loads.torques.empty() && loads.forces.empty();
+}
+
+std::optional<Error> checkDynamics(const Mechanism& m, const LinkageDynamics& d) {
+  if (auto e = checkLinkMasses(m, d.links)) return e;
+  if (auto e = checkSliderMasses(m, d.sliders)) return e;
+  if (d.loads.gravity)
+    if (auto e = checkVector(*d.loads.gravity, "loads.gravity")) return e;
+  for (std::size_t k = 0; k < d.loads.torques.size(); ++k) {
+    const std::string field = "loads.torques[" + std::to_string(k) + "]";
+    if (auto e = checkLinkName(m, d.loads.torques[k].link, field + ".link")) return e;
+    if (auto e = checkFinite(d.loads.torques[k].torque, field + ".torque")) return e;
+  }
+  for (std::size_t k = 0; k < d.loads.forces.size(); ++k)
+    if (auto e = checkForce(m, d.loads.forces[k], "loads.forces[" + std::to_string(k) + "]")) return e;
+  return std::nullopt;
+}
+
+} // namespace linkwright::kinematics

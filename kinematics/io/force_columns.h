@@ -1,0 +1,45 @@
+#pragma once
+// The columns a force sweep (force_sweep.h) is tabulated in, each named with its unit, for the
+// CSV writer, the CLI's text table and the GUI's plots, as sweep_columns.h does for kinematics:
+//   F_<joint>_x_N, F_<joint>_y_N, F_<joint>_N   each revolute joint: the force its hub body
+//                                               exerts on its other body (at a ground pivot, the
+//                                               ground on the link), world frame, and its size
+//   N_<joint>_N, M_<joint>_Nm                   each prismatic joint: the guide body's normal
+//                                               force (along the guide's normal, its direction
+//                                               turned 90° CCW) and couple on the block
+//   T_drive_Nm                                  the driving torque on the crank, CCW positive
+//   shaking_x_N, shaking_y_N, shaking_N         the force the linkage exerts on its frame
+//   shaking_moment_Nm                           its moment about the crank pivot (with the motor's reaction)
+// Joint names are rigid_bodies.h's: the point's name, with the body's when a point holds
+// several joints, and _<rpr point> or _1/_2 for slider blocks.
+
+#include "kinematics/dynamics/force_sweep.h"
+#include "kinematics/dynamics/rigid_bodies.h"
+
+#include <string>
+#include <vector>
+
+namespace linkwright::kinematics::io {
+
+enum class ForceQuantity {
+  JointX, JointY, JointMagnitude, Normal, Moment, DriveTorque, ShakingX, ShakingY, ShakingMagnitude, ShakingMoment,
+};
+
+/// One force column: what it holds and of which joint (`index` into the model's revolutes or
+/// prismatics).
+struct ForceColumn {
+  std::string name;  ///< e.g. "F_O2_x_N"
+  ForceQuantity quantity = ForceQuantity::DriveTorque;
+  std::size_t index = 0;
+  bool operator==(const ForceColumn&) const = default;
+
+  /// The value at `sample` in N or N·m (0 where the sample is not ok: check first).
+  double value(const ForceSweep& forces, std::size_t sample) const;
+  /// True for sizes and the driving torque: the columns of a short table.
+  bool isSummary() const;
+};
+
+/// All force columns of a model, in CSV order.
+std::vector<ForceColumn> forceColumns(const BodyModel& bodies);
+
+} // namespace linkwright::kinematics::io
