@@ -20,6 +20,7 @@ std::string guiUsage() {
          "  --screenshot FILE   render the window to FILE (PNG) and exit, without animating\n"
          "  --crank-angle DEG   crank angle to show, degrees (default 0)\n"
          "  --presentation      large fonts and lines, full screen\n"
+         "  --forces            open on the Forces tab, with force arrows on the canvas\n"
          "  --help, --version\n\n"
          "Exit codes: 0 success, 1 the screenshot could not be written, 2 bad usage or a file\n"
          "that cannot be opened (the message says why).\n";
@@ -39,6 +40,7 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
     if (a == "--help" || a == "-h") o.help = true;
     else if (a == "--version") o.version = true;
     else if (a == "--presentation") o.presentation = true;
+    else if (a == "--forces") o.forces = true;
     else if (a == "--example" || a == "--screenshot" || a == "--crank-angle") {
       const auto v = value();
       if (!v) return std::nullopt;

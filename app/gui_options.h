@@ -1,6 +1,6 @@
 #pragma once
 // The GUI's command line: linkwright [FILE.json] [--example NAME] [--screenshot FILE.png]
-// [--presentation] [--crank-angle DEG] [--help] [--version].
+// [--presentation] [--forces] [--crank-angle DEG] [--help] [--version].
 
 #include <optional>
 #include <string>
@@ -14,6 +14,7 @@ struct GuiOptions {
   std::optional<std::string> screenshot;  ///< render the window to this PNG and exit
   std::optional<double> crankAngleDeg;    ///< crank angle to show (default 0°)
   bool presentation = false;
+  bool forces = false;  ///< start on the Forces tab with force arrows shown
   bool help = false;
   bool version = false;
 };

@@ -21,6 +21,9 @@ namespace {
 int takeScreenshot(linkwright::ui::MainWindow& window, const QString& path) {
   window.show();
   for (int i = 0; i < 5; ++i) QApplication::processEvents();
+  // The plots' width and the quality estimate wait for the window to settle; not here.
+  window.settle();
+  for (int i = 0; i < 5; ++i) QApplication::processEvents();
   if (!window.grab().save(path, "PNG")) {
     std::cerr << "linkwright: cannot write the screenshot " << path.toStdString() << "\n";
     return 1;
@@ -61,6 +64,7 @@ int main(int argc, char** argv) {
   }
   if (options->crankAngleDeg) window.document()->setCrankAngle(k::degToRad(*options->crankAngleDeg));
   if (options->presentation) window.setPresentationMode(true);
+  if (options->forces) window.showForces();
   if (options->screenshot) return takeScreenshot(window, QString::fromStdString(*options->screenshot));
   window.show();
   QTimer::singleShot(0, window.animator(), &linkwright::ui::CrankAnimator::play);

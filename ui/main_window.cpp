@@ -13,7 +13,12 @@
 #include "ui/panels/dimensions_panel.h"
 #include "ui/panels/lengths_panel.h"
 #include "ui/panels/motion_panel.h"
+#include "ui/canvas/force_arrows_item.h"
+#include "ui/document/force_results.h"
+#include "ui/panels/dynamics_panel.h"
+#include "ui/plots/force_plot_panel.h"
 #include "ui/plots/plot_panel.h"
+#include "ui/plots/quality_bar.h"
 #include "ui/settings.h"
 
 #include "kinematics/io/csv_writer.h"
@@ -33,6 +38,7 @@
 #include <QScrollBar>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
@@ -51,7 +57,9 @@ MainWindow::MainWindow(QWidget* parent)
       m_animator(new CrankAnimator(m_document, this)), m_banner(new MessageBanner(this)),
       m_canvas(new LinkageView(m_document, this)), m_plots(new PlotPanel(m_document, this)),
       m_lengths(new LengthsPanel(m_document, this)), m_dimensions(new DimensionsPanel(m_document, this)), m_motion(new MotionPanel(m_document, m_animator, m_settings.get(), this)),
-      m_analysis(new AnalysisPanel(m_document, this)) {
+      m_analysis(new AnalysisPanel(m_document, this)), m_forces(new ForceResults(m_document, this)),
+      m_dynamicsPanel(new DynamicsPanel(m_document, this)), m_forcePlots(new ForcePlotPanel(m_document, m_forces, this)),
+      m_forceArrows(new ForceArrowsItem) {
   setObjectName("MainWindow");
   m_normalFont = font();
   auto* side = new QWidget(this);
@@ -74,7 +82,7 @@ MainWindow::MainWindow(QWidget* parent)
   splitter->setObjectName("MainSplitter");
   splitter->addWidget(scroll);
   splitter->addWidget(m_canvas);
-  splitter->addWidget(m_plots);
+  splitter->addWidget(buildAnalysisTabs());
   splitter->setStretchFactor(0, 0);
   splitter->setStretchFactor(1, 3);
   splitter->setStretchFactor(2, 2);
@@ -89,7 +97,14 @@ MainWindow::MainWindow(QWidget* parent)
   setCentralWidget(central);
 
   buildMenus();
+  m_canvas->linkageScene()->addItem(m_forceArrows);
+  m_forceArrows->setVisible(false);
+  connect(m_forces, &ForceResults::changed, this, [this] { m_forceArrows->setForces(*m_document, *m_forces); });
   m_plots->setAngleUnit(m_settings->anglesInRadians() ? AngleUnit::Radians : AngleUnit::Degrees);
+  m_forcePlots->setAngleUnit(m_settings->anglesInRadians() ? AngleUnit::Radians : AngleUnit::Degrees);
+  m_document->setQuality(m_settings->samplingQuality());
+  connect(m_plots->qualityBar(), &QualityBar::qualityChosen, this,
+          [this](SamplingQuality quality) { m_settings->setSamplingQuality(quality); });
   connect(m_canvas, &LinkageView::editRefused, this, [this](const QString& why) { statusBar()->showMessage(why, 5000); });
   connect(m_canvas, &LinkageView::statusMessage, this, [this](const QString& text) { statusBar()->showMessage(text, 3000); });
   connect(m_document, &MechanismDocument::changed, this, [this](Changes what) {
@@ -100,6 +115,39 @@ MainWindow::MainWindow(QWidget* parent)
   restoreGeometry(m_settings->windowGeometry());
   restoreState(m_settings->windowState());
   newDocument(k::designFromExample(*k::findFourBarExample("thesis-crank-rocker")));
+}
+
+// Kinematics plots and the forces view (masses and loads, torque and joint-force plots, polar
+// load diagrams) share the right-hand pane as tabs.
+QWidget* MainWindow::buildAnalysisTabs() {
+  auto* forces = new QSplitter(Qt::Vertical, this);
+  forces->addWidget(m_dynamicsPanel);
+  forces->addWidget(m_forcePlots);
+  forces->setStretchFactor(1, 1);
+  forces->setChildrenCollapsible(false);
+  m_tabs = new QTabWidget(this);
+  m_tabs->setObjectName("AnalysisTabs");
+  m_tabs->addTab(m_plots, tr("Kinematics"));
+  m_tabs->addTab(forces, tr("Forces"));
+  connect(m_tabs, &QTabWidget::currentChanged, this, &MainWindow::updateForcesNeeded);
+  return m_tabs;
+}
+
+// Forces cost about ten times the kinematics: they are solved only while the Forces tab or
+// the canvas's force arrows show them.
+void MainWindow::updateForcesNeeded() {
+  const bool arrows = m_forceArrowsAction != nullptr && m_forceArrowsAction->isChecked();
+  const bool needed = arrows || m_tabs->currentIndex() == 1;
+  m_document->setForcesNeeded(needed);  // first: the sweep then already has what forces need
+  m_forces->setEnabled(needed);
+  m_forceArrows->setVisible(arrows);
+}
+
+void MainWindow::showForcesTab() { m_tabs->setCurrentIndex(1); }
+
+void MainWindow::showForces() {
+  showForcesTab();
+  m_forceArrowsAction->setChecked(true);
 }
 
 void MainWindow::showPanelsFor() {
@@ -146,6 +194,10 @@ void MainWindow::buildMenus() {
   QAction* acceleration = view->addAction(tr("&Acceleration arrows"));
   acceleration->setCheckable(true);
   connect(acceleration, &QAction::toggled, m_canvas, &LinkageView::setShowAccelerationArrows);
+  m_forceArrowsAction = view->addAction(tr("&Force arrows"));
+  m_forceArrowsAction->setCheckable(true);
+  connect(m_forceArrowsAction, &QAction::toggled, this, &MainWindow::updateForcesNeeded);
+  view->addAction(tr("Forces and &masses"), QKeySequence(Qt::CTRL | Qt::Key_F), this, &MainWindow::showForcesTab);
   QMenu* units = view->addMenu(tr("Angle &unit in plots"));
   auto* group = new QActionGroup(this);
   QAction* degrees = units->addAction(tr("&Degrees"));
@@ -158,6 +210,7 @@ void MainWindow::buildMenus() {
   connect(radians, &QAction::toggled, this, [this](bool on) {
     m_settings->setAnglesInRadians(on);
     m_plots->setAngleUnit(on ? AngleUnit::Radians : AngleUnit::Degrees);
+    m_forcePlots->setAngleUnit(on ? AngleUnit::Radians : AngleUnit::Degrees);
   });
   m_presentationAction = view->addAction(tr("Pr&esentation mode"));
   m_presentationAction->setCheckable(true);
@@ -287,6 +340,11 @@ bool MainWindow::exportPlotImage(int index, const QString& path) {
   return true;
 }
 
+void MainWindow::settle() {
+  m_plots->reportPlotWidth();
+  m_document->measureQualityNow();
+}
+
 void MainWindow::setPresentationMode(bool on) {
   if (on == m_presentation) return;
   m_presentation = on;
@@ -294,6 +352,7 @@ void MainWindow::setPresentationMode(bool on) {
   big.setPointSizeF(m_normalFont.pointSizeF() * 1.6);
   setFont(on ? big : m_normalFont);
   m_canvas->setPresentationScale(on ? 2.0 : 1.0);
+  m_forceArrows->setPresentationScale(on ? 2.0 : 1.0);
   // The class watches the linkage and the plots; Space, the arrows' menu and F11 still work.
   m_sidePanel->setVisible(!on);
   if (m_presentationAction->isChecked() != on) m_presentationAction->setChecked(on);

@@ -14,12 +14,17 @@
 
 class QAction;
 class QMenu;
+class QTabWidget;
 
 namespace linkwright::ui {
 
 class AnalysisPanel;
 class CrankAnimator;
 class DimensionsPanel;
+class DynamicsPanel;
+class ForceArrowsItem;
+class ForcePlotPanel;
+class ForceResults;
 struct DyadRequest;
 class LengthsPanel;
 class LinkageView;
@@ -60,9 +65,14 @@ public:
   bool exportCanvasImage(const QString& path);
   /// Writes plot `index` (0 angles, 1 ω, 2 α) as PNG or SVG.
   bool exportPlotImage(int index, const QString& path);
+  /// Does now what waits for the window to settle: the plots report their width (the sweep
+  /// follows it) and the document measures the quality estimate. For a screenshot or a test.
+  void settle();
   /// Large fonts and lines, full screen, side panels hidden: for the lecture hall.
   void setPresentationMode(bool on);
   bool presentationMode() const { return m_presentation; }
+  /// Shows the Forces tab and the canvas's force arrows (linkwright --forces).
+  void showForces();
 
 protected:
   void closeEvent(QCloseEvent* event) override;
@@ -73,6 +83,9 @@ private:
   void buildExamplesMenu(QMenu* menu);
   void openAttachDyadDialog();
   void showPanelsFor();
+  QWidget* buildAnalysisTabs();
+  void updateForcesNeeded();
+  void showForcesTab();
   void refreshRecentFiles();
   void refreshTitle();
   bool save();
@@ -93,6 +106,12 @@ private:
   DimensionsPanel* m_dimensions;
   MotionPanel* m_motion;
   AnalysisPanel* m_analysis;
+  ForceResults* m_forces;
+  DynamicsPanel* m_dynamicsPanel;
+  ForcePlotPanel* m_forcePlots;
+  ForceArrowsItem* m_forceArrows;  // owned by the canvas's scene
+  QTabWidget* m_tabs = nullptr;
+  QAction* m_forceArrowsAction = nullptr;
   QWidget* m_sidePanel = nullptr;
   QMenu* m_recentMenu = nullptr;
   QAction* m_presentationAction = nullptr;

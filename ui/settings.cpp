@@ -15,6 +15,10 @@ bool Settings::anglesInRadians() const { return m_settings.value("units/anglesIn
 void Settings::setAnglesInRadians(bool radians) { m_settings.setValue("units/anglesInRadians", radians); }
 bool Settings::speedInRpm() const { return m_settings.value("units/speedInRpm", true).toBool(); }
 void Settings::setSpeedInRpm(bool rpm) { m_settings.setValue("units/speedInRpm", rpm); }
+SamplingQuality Settings::samplingQuality() const {
+  return qualityFromKey(m_settings.value("plots/quality", qualityKey(SamplingQuality::Normal)).toString());
+}
+void Settings::setSamplingQuality(SamplingQuality quality) { m_settings.setValue("plots/quality", qualityKey(quality)); }
 
 QStringList Settings::recentFiles() const {
   QStringList existing;

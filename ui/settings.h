@@ -1,5 +1,8 @@
 #pragma once
-// The one class that touches QSettings: window layout, units and recent files persist here.
+// The one class that touches QSettings: window layout, units, the plots' sampling quality and
+// recent files persist here.
+
+#include "ui/document/sampling_quality.h"
 
 #include <QByteArray>
 #include <QSettings>
@@ -22,6 +25,9 @@ public:
   /// true: crank speed typed in rpm (the default); false: rad/s.
   bool speedInRpm() const;
   void setSpeedInRpm(bool rpm);
+  /// The displayed sweep's sampling quality (Normal by default).
+  SamplingQuality samplingQuality() const;
+  void setSamplingQuality(SamplingQuality quality);
 
   /// Most recent first, at most kMaxRecentFiles, only files that still exist.
   QStringList recentFiles() const;

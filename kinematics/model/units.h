@@ -3,6 +3,8 @@
 // seconds; lengths are in whatever unit the mechanism names (see Mechanism::lengthUnit).
 
 #include <cmath>
+#include <optional>
+#include <string>
 
 namespace linkwright::kinematics {
 

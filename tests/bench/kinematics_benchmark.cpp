@@ -1,6 +1,6 @@
 // Speed of the kinematics core (issue 5): the cost per sample of a sweep at each level of a
-// request (positions; + ω and v; + α and a; + a coupler point's path) for the four-bar, the
-// slider-crank and the shaper, sweeps of 36 to 1,000,000 samples, one pose solved into a
+// request (positions; + ω and v; + α and a; + transmission angles; + a coupler point's path;
+// one link only; + forces) for the four-bar, the slider-crank, the shaper and two six-bars, sweeps of 36 to 1,000,000 samples, one pose solved into a
 // prepared Pose, and a hand-written closed-form four-bar loop as the baseline the core is
 // judged against. Names read Mechanism/Level/Samples; one item is one sample. docs/benchmarks.md
 // says how to run it and what was measured.
@@ -8,6 +8,7 @@
 // Allocations are counted by replacing the global operator new: each benchmark reports
 // `allocs_per_sample` and `allocs_per_call` over its timed loop.
 
+#include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/model/constraint_form.h"
 #include "kinematics/model/examples.h"
 #include "kinematics/model/sixbar.h"
@@ -214,6 +215,24 @@ void freshSweepBenchmark(benchmark::State& state, const Mechanism& mechanism, do
   instruments.report(state, state.range(0));
 }
 
+// The "+ forces" level: the Full sweep and then inverse dynamics at every sample
+// (force_sweep.h), for seed 004's four-bar with its masses (funsho-fourbar).
+void forcesBenchmark(benchmark::State& state) {
+  const FourBarExample e = findFourBarExample("funsho-fourbar").value();
+  const Mechanism m = makeFourBar(e.lengths, e.branch).value();
+  const SweepSpec spec{0.0, 2.0 * kPi, static_cast<std::size_t>(state.range(0)), e.omega, 0.5};
+  SweepResult kinematics;
+  const Instruments instruments;
+  for (auto _ : state) {
+    const auto error = sweepInto(m, spec, SolveRequest{}, kinematics);
+    auto forces = sweepForces(m, e.dynamics, kinematics);
+    benchmark::DoNotOptimize(error);
+    benchmark::DoNotOptimize(forces);
+    benchmark::ClobberMemory();
+  }
+  instruments.report(state, state.range(0));
+}
+
 // --- One pose ------------------------------------------------------------------------------
 
 void poseBenchmark(benchmark::State& state, const Mechanism& mechanism, double omega) {
@@ -348,6 +367,9 @@ void registerAll() {
         ->Arg(3600)
         ->Unit(benchmark::kNanosecond);
   }
+  auto* forces = benchmark::RegisterBenchmark("FourBar/Forces", forcesBenchmark);
+  for (const std::int64_t n : kSizes) forces->Arg(n);
+  forces->Unit(benchmark::kNanosecond);
   auto* hand = benchmark::RegisterBenchmark("FourBar/HandWritten", handWrittenBenchmark);
   for (const std::int64_t n : kSizes) hand->Arg(n);
   hand->Unit(benchmark::kNanosecond);

@@ -2,6 +2,8 @@
 // reproduces the document, a corrupt file shows an error and changes nothing, examples load,
 // presentation mode scales up, and images export.
 
+#include "ui/canvas/coupler_path_item.h"
+#include "ui/canvas/linkage_scene.h"
 #include "ui/canvas/linkage_view.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/main_window.h"
@@ -10,15 +12,22 @@
 #include "ui/panels/lengths_panel.h"
 #include "ui/panels/analysis_panel.h"
 #include "ui/plots/plot_panel.h"
+#include "ui/plots/quality_bar.h"
 #include "ui/plots/quantity_chart_view.h"
+#include "ui/plots/quantity_selector.h"
+#include "ui/settings.h"
 
 #include "app/cli/cli.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/examples.h"
+#include "kinematics/model/fourbar.h"
+#include "kinematics/model/mechanism_design.h"
 #include "kinematics/model/units.h"
 
 #include <catch2/catch.hpp>
 
+#include <QCheckBox>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QLineSeries>
@@ -175,4 +184,55 @@ TEST_CASE("typing a length in the panel updates the badge and the plotted series
   while (!sweep.ok(first)) ++first;
   CHECK(plotted.front().x() == Approx(kinematics::radToDeg(sweep.inputAngle[first])));
   CHECK(plotted.front().y() == Approx(kinematics::radToDeg(sweep.linkOmega[kinematics::fourbar::kRocker.index][first])));
+}
+
+TEST_CASE("the quality box sets the plots' sampling, states its cost and error, and is remembered", "[ui][window][quality]") {
+  // Whatever happens here, later windows start on Normal again.
+  struct Restore {
+    ~Restore() { ui::Settings().setSamplingQuality(ui::SamplingQuality::Normal); }
+  } restore;
+  ui::Settings().setSamplingQuality(ui::SamplingQuality::Normal);
+  {
+    ui::MainWindow window;
+    window.resize(1400, 880);
+    window.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&window));
+    window.settle();
+    ui::QualityBar* bar = window.plots()->qualityBar();
+    CHECK(bar->qualityBox()->currentIndex() == static_cast<int>(ui::SamplingQuality::Normal));
+    bar->qualityBox()->setCurrentIndex(static_cast<int>(ui::SamplingQuality::Draft));
+    window.settle();
+    const ui::MechanismDocument& doc = *window.document();
+    CHECK(doc.quality() == ui::SamplingQuality::Draft);
+    CHECK(doc.request().newton.tolerance == 1e-6);
+    CHECK(bar->costText().contains(QStringLiteral("samples/rev · sweep")));
+    REQUIRE(doc.qualityEstimate().error.has_value());
+    CHECK(bar->errorText() == QStringLiteral("worst peak error ") + ui::QualityBar::formatRelative(doc.qualityEstimate().error->worstRate()));
+  }
+  CHECK(ui::Settings().samplingQuality() == ui::SamplingQuality::Draft);
+  ui::MainWindow again;
+  CHECK(again.document()->quality() == ui::SamplingQuality::Draft);
+  CHECK(again.plots()->qualityBar()->qualityBox()->currentIndex() == static_cast<int>(ui::SamplingQuality::Draft));
+}
+
+TEST_CASE("with every plot unticked the sweep has positions only and the canvas still draws the coupler path", "[ui][window][quality]") {
+  ui::MainWindow window;
+  window.resize(1400, 880);
+  window.show();
+  REQUIRE(QTest::qWaitForWindowExposed(&window));
+  window.newDocument(*kinematics::designForExample("miranda-fourbar"));
+  window.settle();
+  for (const ui::PlotCurve& c : window.plots()->curves()) window.plots()->selector()->checkBox(c.quantity)->setChecked(false);
+  const ui::MechanismDocument& doc = *window.document();
+  CHECK_FALSE(doc.request().velocities);
+  CHECK_FALSE(doc.request().accelerations);
+  CHECK(doc.sweep().linkOmega.empty());
+  CHECK(doc.sweep().velocity.empty());
+  const auto& scene = dynamic_cast<const ui::LinkageScene&>(*window.canvas()->linkageScene());
+  const ui::CouplerPathItem* path = scene.pathItem(kinematics::fourbar::kCouplerPoint);
+  REQUIRE(path != nullptr);
+  CHECK(path->isVisible());
+  CHECK(path->path().elementCount() == static_cast<int>(doc.sweep().size()));
+  // The analysis panel's figures are closed form or on the design's grid: still there.
+  CHECK(window.analysisPanel()->grashofText().contains(QStringLiteral("Crank-rocker")));
 }

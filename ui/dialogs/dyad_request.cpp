@@ -105,7 +105,8 @@ k::Result<k::MechanismDesign> attachToDesign(const k::Design& design, const Dyad
   if (const auto* f = std::get_if<k::FourBarDesign>(&design)) {
     const auto built = k::buildMechanism(design);
     if (!built) return built.error();
-    out = {"linkage", *built, f->omega, f->alpha, f->fromDeg, f->toDeg, f->samples};
+    // The four-bar's links keep their names, so its masses and loads carry over.
+    out = {"linkage", *built, f->omega, f->alpha, f->fromDeg, f->toDeg, f->samples, f->dynamics};
   } else {
     out = std::get<k::MechanismDesign>(design);
     out.kind = "linkage";

@@ -48,6 +48,7 @@ std::optional<k::ShaperGeometry> shaperGeometryOf(const k::Mechanism& m, k::Bran
 DesignAnalysis analyseDesign(const k::Design& design, const k::Mechanism& mechanism, const k::SweepResult& sweep) {
   DesignAnalysis a;
   a.mobility = k::mobility(mechanism);
+  a.notAssembled = sweep.notAssembled;
   if (const auto* fourBar = std::get_if<k::FourBarDesign>(&design)) {
     a.grashof = k::classifyGrashof(fourBar->lengths);
     a.inputRange = k::fourBarInputRange(fourBar->lengths);

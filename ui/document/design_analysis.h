@@ -15,6 +15,7 @@
 #include "kinematics/solve/sweep.h"
 
 #include <optional>
+#include <vector>
 
 namespace linkwright::ui {
 
@@ -22,13 +23,16 @@ struct DesignAnalysis {
   kinematics::MobilityReport mobility;
   /// Where the crank can be: the animator turns or rocks within it, the document clamps to it.
   kinematics::InputRange inputRange;
+  /// Runs of the design's grid at which the linkage cannot be assembled (rad), as exported.
+  std::vector<kinematics::AngleRange> notAssembled;
   std::optional<kinematics::GrashofReport> grashof;              ///< four-bars only
   std::optional<kinematics::TransmissionRange> transmission;     ///< four-bars only
   kinematics::LimitReport limits;                                ///< four-bars only (else empty)
   std::optional<kinematics::QuickReturnReport> quickReturn;      ///< shapers and Whitworths
 };
 
-/// Analyses `design`, whose mechanism is `mechanism` and whose sweep over its grid is `sweep`.
+/// Analyses `design`, whose mechanism is `mechanism` and whose sweep over its grid is `sweep`
+/// (positions suffice).
 DesignAnalysis analyseDesign(const kinematics::Design& design, const kinematics::Mechanism& mechanism,
                              const kinematics::SweepResult& sweep);
 

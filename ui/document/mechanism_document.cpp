@@ -1,8 +1,12 @@
 #include "ui/document/mechanism_document.h"
 
+#include "ui/document/design_fields.h"
 #include "ui/document/edit_design_command.h"
 
 #include "kinematics/solve/pose_solver.h"
+
+#include <chrono>
+#include <cmath>
 
 namespace linkwright::ui {
 
@@ -24,6 +28,10 @@ std::optional<QString> refuseUnassemblable(const k::MechanismDesign& design) {
 } // namespace
 
 MechanismDocument::MechanismDocument(QObject* parent) : QObject(parent) {
+  m_request.newton.tolerance = qualityPreset(m_quality).newtonTolerance;
+  m_estimateTimer.setSingleShot(true);
+  m_estimateTimer.setInterval(kEstimateSettleMs);
+  connect(&m_estimateTimer, &QTimer::timeout, this, &MechanismDocument::measureQuality);
   rebuild();
   connect(&m_undo, &QUndoStack::cleanChanged, this, [this] { emit changed(Change::File); });
 }
@@ -65,11 +73,47 @@ void MechanismDocument::setCrankAngle(double angle) {
 }
 
 void MechanismDocument::setRequest(const k::SolveRequest& request) {
-  if (request == m_request) return;
-  m_request = request;
+  k::SolveRequest wanted = request;
+  wanted.newton = m_request.newton;
+  if (wanted == m_request) return;
+  m_request = wanted;
   resweep();
   emit changed(Change::Request);
 }
+
+void MechanismDocument::setQuality(SamplingQuality quality) {
+  if (quality == m_quality) return;
+  m_quality = quality;
+  m_request.newton.tolerance = qualityPreset(quality).newtonTolerance;
+  resweep();
+  scheduleEstimate();
+  emit changed(Change::Request);
+}
+
+void MechanismDocument::setDisplayWidth(double pixels) {
+  if (!std::isfinite(pixels) || pixels <= 0.0 || pixels == m_displayWidth) return;
+  m_displayWidth = pixels;
+  // Most width changes (a window drag) leave the count alone at Draft, or move it by a
+  // sample or two: only a different grid is worth a sweep.
+  if (wantedDisplaySpec() == m_displaySpec) return;
+  resweep();
+  scheduleEstimate();
+  emit changed(Change::Request);
+}
+
+void MechanismDocument::measureQualityNow() {
+  if (qualityEstimatePending()) measureQuality();
+}
+
+void MechanismDocument::measureQuality() {
+  m_estimateTimer.stop();
+  m_estimate = estimatePeakError(m_mechanism, m_displaySpec.omega,
+                                 samplesPerRevolution(m_displaySpec.samples, designToDeg(m_design) - designFromDeg(m_design)),
+                                 m_request.newton);
+  emit changed(Change::Estimate);
+}
+
+void MechanismDocument::scheduleEstimate() { m_estimateTimer.start(); }
 
 void MechanismDocument::reset(const k::Design& design, const QString& filePath) {
   m_undo.clear();
@@ -94,12 +138,45 @@ void MechanismDocument::rebuild() {
   // Sized once per design: free points then start each solve from the last pose shown.
   k::preparePose(m_mechanism, m_pose);
   resweep();
-  m_analysis = analyseDesign(m_design, m_mechanism, m_sweep);
+  // The crank range and gaps the panel states are the design's grid's, as in the CSV export,
+  // whatever the plots' resolution; positions alone decide them. A four-bar whose crank turns
+  // fully (closed form) has no gaps, so it skips this sweep.
+  k::SweepResult grid;
+  const k::FourBarDesign* fb = fourBar();
+  if (fb == nullptr || !k::fourBarInputRange(fb->lengths).fullRotation)
+    grid = k::sweep(m_mechanism, k::designSweepSpec(m_design), {false, false, m_request.newton}).value();
+  m_analysis = analyseDesign(m_design, m_mechanism, grid);
   m_crankAngle = m_analysis.inputRange.clamp(m_crankAngle);
   solvePoseNow();
+  scheduleEstimate();
 }
 
-void MechanismDocument::resweep() { m_sweep = k::sweep(m_mechanism, k::designSweepSpec(m_design), m_request).value(); }
+k::SweepSpec MechanismDocument::wantedDisplaySpec() const {
+  k::SweepSpec spec = k::designSweepSpec(m_design);
+  spec.samples = displaySampleCount(m_quality, m_displayWidth, designToDeg(m_design) - designFromDeg(m_design));
+  return spec;
+}
+
+void MechanismDocument::setForcesNeeded(bool needed) {
+  if (needed == m_forcesNeeded) return;
+  m_forcesNeeded = needed;
+  resweep();
+  emit changed(Change::Request);
+}
+
+void MechanismDocument::resweep() {
+  m_displaySpec = wantedDisplaySpec();
+  // Forces need every point's acceleration (inertia forces are m·a), whatever the plots show.
+  k::SolveRequest request = m_request;
+  if (m_forcesNeeded) {
+    request.velocities = request.accelerations = true;
+    request.only = {};
+  }
+  const auto start = std::chrono::steady_clock::now();
+  // Into the same result: a drag re-sweeps on every frame without new allocations.
+  if (auto error = k::sweepInto(m_mechanism, m_displaySpec, request, m_sweep)) m_sweep = k::SweepResult{};
+  m_sweepMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
 
 void MechanismDocument::solvePoseNow() {
   const k::SweepSpec spec = k::designSweepSpec(m_design);

@@ -3,8 +3,14 @@
 // linkage), the undo stack, the motion state (the crank angle the canvas shows) and the
 // solved results the views read. Every view re-reads it when it emits changed(); views never
 // solve anything themselves (STYLE.md, layering rule 2).
+//
+// Two grids: the analysis (crank range, gaps) uses the design's saved grid, as CSV export
+// does; the displayed sweep spans the same crank angles with as many samples as the plots
+// have pixels times the sampling quality, and computes only the quantities they show.
 
 #include "ui/document/design_analysis.h"
+#include "ui/document/quality_estimate.h"
+#include "ui/document/sampling_quality.h"
 
 #include "kinematics/model/mechanism_design.h"
 #include "kinematics/solve/pose.h"
@@ -12,6 +18,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QTimer>
 #include <QUndoStack>
 
 #include <optional>
@@ -22,8 +29,9 @@ namespace linkwright::ui {
 enum class Change {
   Design = 0x1,      ///< the design and everything solved from it (sweep, analysis, pose)
   Motion = 0x2,      ///< only the crank angle and the pose at it
-  Request = 0x4,     ///< which quantities are computed (the sweep was redone)
+  Request = 0x4,     ///< which quantities or how many samples are computed (the sweep was redone)
   File = 0x8,        ///< file name or modified flag
+  Estimate = 0x10,   ///< the quality estimate was measured anew (qualityEstimate())
 };
 Q_DECLARE_FLAGS(Changes, Change)
 Q_DECLARE_OPERATORS_FOR_FLAGS(Changes)
@@ -43,9 +51,16 @@ public:
   const std::string& lengthUnit() const { return kinematics::designLengthUnit(m_design); }
   /// The solver mechanism built from design().
   const kinematics::Mechanism& mechanism() const { return m_mechanism; }
+  /// Mobility, ranges and limits; crank range and gaps on the design's grid.
   const DesignAnalysis& analysis() const { return m_analysis; }
-  /// The cycle over the design's grid, computing what request() asks for.
+  /// The displayed cycle: the design's crank angles at displaySpec()'s samples, computing what
+  /// request() asks for. The plots and the canvas's paths read it.
   const kinematics::SweepResult& sweep() const { return m_sweep; }
+  /// The grid of sweep(): the design's range, ω and α with displaySampleCount(quality(),
+  /// displayWidth(), span) samples.
+  const kinematics::SweepSpec& displaySpec() const { return m_displaySpec; }
+  /// Wall time of the last computation of sweep(), ms.
+  double sweepMilliseconds() const { return m_sweepMs; }
   /// The pose at crankAngle(), with velocities and accelerations.
   const kinematics::Pose& pose() const { return m_pose; }
   /// Status of pose(): Ok, or Singular at a toggle position.
@@ -69,9 +84,32 @@ public:
   double crankAngle() const { return m_crankAngle; }
   void setCrankAngle(double angle);
 
-  /// Which quantities the sweep computes (plots ask only for what they show).
+  /// Which quantities the sweep computes (plots ask only for what they show). Its Newton
+  /// settings follow quality(); setRequest ignores the ones it is given.
   kinematics::SolveRequest request() const { return m_request; }
   void setRequest(const kinematics::SolveRequest& request);
+
+  /// Samples per pixel and Newton tolerance of the displayed sweep (Normal by default).
+  SamplingQuality quality() const { return m_quality; }
+  void setQuality(SamplingQuality quality);
+  /// Whether something on screen shows forces: then the sweep computes accelerations of every
+  /// point and link whatever request() says (ForceResults solves the forces from it).
+  void setForcesNeeded(bool needed);
+  bool forcesNeeded() const { return m_forcesNeeded; }
+  /// Width in pixels the displayed sweep is drawn across (the plots' plot area);
+  /// kDefaultDisplayWidth until a plot reports one. Resweeps only if the sample count changes.
+  double displayWidth() const { return m_displayWidth; }
+  void setDisplayWidth(double pixels);
+
+  /// The peak error the displayed sampling buys on this design. Measured after the design, the
+  /// sample count or the quality changes, once they have stayed put for kEstimateSettleMs (a
+  /// drag measures once, at its end), then announced with changed(Estimate); never during
+  /// crank motion. Until then it holds the previous measurement and qualityEstimatePending().
+  const QualityEstimate& qualityEstimate() const { return m_estimate; }
+  bool qualityEstimatePending() const { return m_estimateTimer.isActive(); }
+  /// Measures a pending estimate now (and announces it).
+  void measureQualityNow();
+  static constexpr int kEstimateSettleMs = 200;
 
   QUndoStack* undoStack() { return &m_undo; }
 
@@ -88,16 +126,26 @@ signals:
 
 private:
   void rebuild();       // mechanism, sweep, analysis, pose from m_design
-  void resweep();       // sweep only (request changed)
+  void resweep();       // sweep only (request or sampling changed)
   void solvePoseNow();  // pose at m_crankAngle
+  kinematics::SweepSpec wantedDisplaySpec() const;
+  void scheduleEstimate();
+  void measureQuality();  // the timer's: it is no longer active when it fires
 
   kinematics::Design m_design;
   kinematics::Mechanism m_mechanism;
   DesignAnalysis m_analysis;
   kinematics::SweepResult m_sweep;
+  kinematics::SweepSpec m_displaySpec;
+  double m_sweepMs = 0.0;
+  SamplingQuality m_quality = SamplingQuality::Normal;
+  double m_displayWidth = kDefaultDisplayWidth;
+  QualityEstimate m_estimate;
+  QTimer m_estimateTimer;
   kinematics::Pose m_pose;
   kinematics::PoseStatus m_poseStatus = kinematics::PoseStatus::Ok;
   kinematics::SolveRequest m_request{true, true};
+  bool m_forcesNeeded = false;
   double m_crankAngle = 0.0;
   QUndoStack m_undo;
   QString m_filePath;

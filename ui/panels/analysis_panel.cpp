@@ -138,7 +138,7 @@ void AnalysisPanel::refreshLinkage() {
                              .arg(degrees(q->slowStrokeCrankArc, 1), degrees(q->quickStrokeCrankArc, 1)));
     m_stroke->setText(QString("%1 %2").arg(q->stroke, 0, 'f', 2).arg(unit));
   }
-  const auto& gaps = m_document->sweep().notAssembled;
+  const auto& gaps = a.notAssembled;
   m_form->setRowVisible(m_notAssembled, !gaps.empty());
   m_notAssembled->setText(rangesText(gaps));
 }

@@ -5,12 +5,16 @@
 #include "ui/plots/hover_readout.h"
 #include "ui/plots/limit_markers.h"
 #include "ui/plots/plot_area_alignment.h"
+#include "ui/plots/quality_bar.h"
 #include "ui/plots/quantity_chart_view.h"
 #include "ui/plots/quantity_selector.h"
 
+#include <QChart>
+#include <QGraphicsLayout>
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <cmath>
 
 namespace linkwright::ui {
 namespace {
@@ -34,12 +38,17 @@ QString titleOf(QuantityKind kind) {
 } // namespace
 
 PlotPanel::PlotPanel(MechanismDocument* document, QWidget* parent)
-    : QWidget(parent), m_document(document), m_selector(new QuantitySelector(this)),
-      m_readout(new HoverReadout(this)) {
+    : QWidget(parent), m_document(document), m_quality(new QualityBar(document, this)),
+      m_selector(new QuantitySelector(this)), m_readout(new HoverReadout(this)) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->setSpacing(2);
+  layout->addWidget(m_quality);
   layout->addWidget(m_selector);
+  // A window drag resizes the charts on every pixel; the sweep follows once it settles.
+  m_widthTimer.setSingleShot(true);
+  m_widthTimer.setInterval(kResizeSettleMs);
+  connect(&m_widthTimer, &QTimer::timeout, this, &PlotPanel::reportPlotWidth);
   for (const QuantityKind kind : kKinds) {
     auto* view = new QuantityChartView(kind, titleOf(kind), this);
     // Small enough that six charts (a slider-crank) fit the window's height.
@@ -100,7 +109,9 @@ void PlotPanel::onDocumentChanged(Changes what) {
     // A new structure has new quantities; the request may need to change with them.
     const std::vector<PlotCurve> before = m_curves;
     refreshCurves();
-    if (m_curves != before && requestFor(selection(), m_curves) != m_document->request()) {
+    kinematics::SolveRequest wanted = requestFor(selection(), m_curves);
+    wanted.newton = m_document->request().newton;
+    if (m_curves != before && wanted != m_document->request()) {
       applySelection();
       return;
     }
@@ -132,8 +143,25 @@ void PlotPanel::refreshCurves() {
   m_readout->clearPoint();
 }
 
+double PlotPanel::plotAreaWidth() const {
+  for (QuantityChartView* view : m_views) {
+    if (view->isHidden()) continue;
+    view->chart()->layout()->activate();  // margins set by alignCharts take effect here
+    return view->chart()->plotArea().width();
+  }
+  return 0.0;
+}
+
+void PlotPanel::reportPlotWidth() {
+  m_widthTimer.stop();
+  // Hidden charts are not laid out, so their plot area says nothing about the screen.
+  if (!isVisible()) return;
+  if (const double width = plotAreaWidth(); width > 0.0) m_document->setDisplayWidth(std::round(width));
+}
+
 void PlotPanel::applySelection() {
-  const kinematics::SolveRequest wanted = requestFor(selection(), m_curves);
+  kinematics::SolveRequest wanted = requestFor(selection(), m_curves);
+  wanted.newton = m_document->request().newton;  // the quality's, not the selection's
   // A new request re-sweeps and comes back as Change::Request, which re-plots; otherwise
   // only the visibility changed and the current sweep serves.
   if (wanted != m_document->request())
@@ -167,6 +195,8 @@ void PlotPanel::alignCharts() {
   for (QuantityChartView* view : m_views)
     if (!view->isHidden()) shown.append(view->chart());
   alignPlotAreas(shown);
+  // A resize, or new axis labels or legend entries, may have changed the plot area's width.
+  if (!shown.isEmpty()) m_widthTimer.start();
 }
 
 void PlotPanel::refreshCursor() {

@@ -6,6 +6,8 @@
 // with nothing to show are hidden. Curves are re-read from the document's sweep when the
 // design or request changes; a crank move only moves the cursor on each chart. Hovering a
 // curve reads its value out; a four-bar's rocker limit positions are marked on the angle chart.
+// The plots also decide the displayed sweep's resolution: its samples follow the plot area's
+// width (times the quality the bar above the charts sets), reported once a resize settles.
 
 #include "ui/plots/angle_unit.h"
 #include "ui/plots/plot_quantity.h"
@@ -13,6 +15,7 @@
 #include "ui/document/mechanism_document.h"
 
 #include <QList>
+#include <QTimer>
 #include <QWidget>
 
 #include <array>
@@ -29,6 +32,7 @@ class HoverReadout;
 class LimitMarkers;
 class QuantityChartView;
 class QuantitySelector;
+class QualityBar;
 
 class PlotPanel : public QWidget {
   Q_OBJECT
@@ -61,6 +65,15 @@ public:
   LimitMarkers* limitMarkers() const { return m_limits.get(); }
   HoverReadout* hoverReadout() const { return m_readout; }
   QuantitySelector* selector() const { return m_selector; }
+  QualityBar* qualityBar() const { return m_quality; }
+
+  /// Width in pixels of the charts' (aligned) plot area; 0 while no chart is shown.
+  double plotAreaWidth() const;
+  /// Tells the document plotAreaWidth() now, instead of kResizeSettleMs after the last resize
+  /// (a screenshot, a test). Nothing while no chart is shown: then only positions are swept,
+  /// for the canvas, at the last width.
+  void reportPlotWidth();
+  static constexpr int kResizeSettleMs = 150;
 
 signals:
   /// The user (or setSelection) changed which quantities are shown.
@@ -77,7 +90,9 @@ private:
 
   MechanismDocument* m_document;
   AngleUnit m_unit = AngleUnit::Degrees;
+  QualityBar* m_quality;
   QuantitySelector* m_selector;
+  QTimer m_widthTimer;
   std::vector<PlotCurve> m_curves;
   std::array<QuantityChartView*, kQuantityKindCount> m_views{};
   std::unique_ptr<LimitMarkers> m_limits;

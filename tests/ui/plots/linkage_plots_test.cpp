@@ -47,7 +47,7 @@ TEST_CASE("a slider-crank plots its rod and its piston's stroke, velocity and ac
     CHECK_FALSE(panel.chartView(kind)->isHidden());
   CHECK(panel.chartView(QuantityKind::Omega)->isHidden());
   CHECK(panel.chartView(QuantityKind::Alpha)->isHidden());
-  CHECK(doc.request() == k::SolveRequest{true, true});  // the piston's acceleration needs them
+  CHECK((doc.request().velocities && doc.request().accelerations));  // the piston's acceleration needs them
 
   const k::SweepResult& s = doc.sweep();
   const PlotQuantity x{ColumnQuantity::PointX, 2}, a{ColumnQuantity::PointAx, 2};

@@ -126,7 +126,7 @@ TEST_CASE("The checkboxes request only what is shown and hide empty charts", "[p
   MechanismDocument doc;
   PlotPanel panel(&doc);
   QSignalSpy selectionSpy(&panel, &PlotPanel::selectionChanged);
-  CHECK(doc.request() == k::SolveRequest{true, true});
+  CHECK((doc.request().velocities && doc.request().accelerations));
 
   for (const PlotQuantity q : {PlotQuantity::CouplerOmega, PlotQuantity::RockerOmega, PlotQuantity::CouplerAlpha,
                                PlotQuantity::RockerAlpha})
@@ -149,7 +149,7 @@ TEST_CASE("The checkboxes request only what is shown and hide empty charts", "[p
 
   tick(panel, PlotQuantity::RockerAlpha, false);
   tick(panel, PlotQuantity::CouplerOmega, true);
-  CHECK(doc.request() == k::SolveRequest{true, false});
+  CHECK((doc.request().velocities && !doc.request().accelerations));
 
   // A hidden angle curve is emptied and out of the legend; the chart stays for the others.
   tick(panel, PlotQuantity::CouplerAngle, false);

@@ -1,0 +1,89 @@
+// The force plots: the torque curve holds the core's torque at every solved sample, one
+// magnitude curve per joint, the polar diagram one point per solved sample on equal scales,
+// and the cursor and polar dot follow the crank.
+#include "ui/plots/force_plot_panel.h"
+
+#include "ui/document/force_results.h"
+#include "ui/document/mechanism_document.h"
+#include "ui/plots/force_chart_view.h"
+#include "ui/plots/polar_load_view.h"
+
+#include "kinematics/model/mechanism_design.h"
+#include "kinematics/model/units.h"
+
+#include <QComboBox>
+#include <QLineSeries>
+#include <QScatterSeries>
+
+#include <catch2/catch.hpp>
+
+using namespace linkwright::ui;
+namespace k = linkwright::kinematics;
+
+namespace {
+
+std::size_t okSamples(const k::ForceSweep& f) {
+  std::size_t n = 0;
+  for (std::size_t j = 0; j < f.size(); ++j) n += f.ok(j) ? 1 : 0;
+  return n;
+}
+
+QList<QPointF> plotted(const QList<QLineSeries*>& segments) {
+  QList<QPointF> points;
+  for (const QLineSeries* s : segments)
+    if (s->isVisible()) points += s->points();
+  return points;
+}
+
+} // namespace
+
+TEST_CASE("the force plots show the core's torque, joint magnitudes and polar loci", "[forces][plots]") {
+  MechanismDocument doc;
+  doc.reset(*k::designForExample("funsho-fourbar"));
+  ForceResults forces(&doc);
+  forces.setEnabled(true);
+  ForcePlotPanel panel(&doc, &forces);
+  panel.resize(900, 600);
+  panel.show();
+  const k::ForceSweep& f = *forces.cycleForces();
+  const k::SweepResult& s = *forces.cycleSweep();
+
+  const QList<QPointF> torque = plotted(panel.torqueChart()->segments(0));
+  REQUIRE(static_cast<std::size_t>(torque.size()) == okSamples(f));
+  CHECK(torque.front().x() == k::radToDeg(s.inputAngle.front()));
+  CHECK(torque.front().y() == f.driveTorque.front());
+
+  REQUIRE(panel.joints().size() == f.bodies.revolutes.size());
+  for (std::size_t i = 0; i < panel.joints().size(); ++i)
+    CHECK(static_cast<std::size_t>(plotted(panel.jointChart()->segments(i)).size()) == okSamples(f));
+
+  SECTION("the polar diagram has one point per Ok sample, on equal scales") {
+    REQUIRE(panel.jointSelector()->count() == static_cast<int>(f.bodies.revolutes.size()));
+    for (int joint = 0; joint < panel.jointSelector()->count(); ++joint) {
+      panel.jointSelector()->setCurrentIndex(joint);
+      CHECK(static_cast<std::size_t>(panel.polarView()->pointCount()) == okSamples(f));
+      const QList<QPointF> locus = plotted(panel.polarView()->segments());
+      CHECK(locus.front() == QPointF(f.revolute[static_cast<std::size_t>(joint)][0].x(), f.revolute[static_cast<std::size_t>(joint)][0].y()));
+    }
+    CHECK(panel.polarView()->xScale() == Approx(panel.polarView()->yScale()).epsilon(1e-6));
+  }
+  SECTION("the cursor and the polar dot follow the crank") {
+    doc.setCrankAngle(k::degToRad(90.0));
+    REQUIRE(panel.torqueChart()->cursorX().has_value());
+    CHECK(*panel.torqueChart()->cursorX() == Approx(90.0));
+    CHECK(*panel.jointChart()->cursorX() == Approx(90.0));
+    const Eigen::Vector2d at = forces.poseForces()->revolute[static_cast<std::size_t>(panel.jointSelector()->currentIndex())];
+    REQUIRE(panel.polarView()->currentDot()->count() == 1);
+    CHECK(panel.polarView()->currentDot()->at(0) == QPointF(at.x(), at.y()));
+  }
+}
+
+TEST_CASE("without masses the force plots hide and say why", "[forces][plots]") {
+  MechanismDocument doc;
+  ForceResults forces(&doc);
+  forces.setEnabled(true);
+  ForcePlotPanel panel(&doc, &forces);
+  CHECK(panel.statusText().contains("Properties"));
+  CHECK(panel.torqueChart()->isHidden() == false);  // its container hides, not the chart itself
+  CHECK_FALSE(panel.torqueChart()->isVisibleTo(&panel));
+}

@@ -1,0 +1,118 @@
+#include "ui/canvas/force_arrows_item.h"
+
+#include "ui/canvas/canvas_style.h"
+#include "ui/canvas/label_item.h"
+#include "ui/document/force_results.h"
+#include "ui/document/mechanism_document.h"
+#include "ui/geometry.h"
+
+#include "kinematics/dynamics/rigid_bodies.h"
+
+#include <QCoreApplication>
+#include <QPainter>
+
+#include <algorithm>
+#include <cmath>
+
+namespace linkwright::ui {
+
+namespace k = kinematics;
+
+namespace {
+constexpr double kLabelGapPx = 4.0;
+} // namespace
+
+ForceArrowItem::ForceArrowItem(QGraphicsItem* parent) : QGraphicsItem(parent), m_label(new LabelItem(this)) {
+  setFlag(ItemIgnoresTransformations);
+  setZValue(canvas::z::kArrows);
+  m_label->setColor(kForceArrowColor.darker(120));
+}
+
+void ForceArrowItem::setArrow(const QPointF& scenePoint, const QPointF& direction, double lengthPx, const QString& label) {
+  prepareGeometryChange();
+  setPos(scenePoint);
+  const double norm = std::hypot(direction.x(), direction.y());
+  m_direction = norm > 0.0 ? direction / norm : QPointF(1.0, 0.0);
+  m_lengthPx = lengthPx;
+  m_label->setText(label);
+  m_label->setPos(tipPx());
+  m_label->placeToward(m_direction, kLabelGapPx * m_scale);
+}
+
+void ForceArrowItem::setPresentationScale(double factor) {
+  m_scale = factor;
+  m_label->setScale(factor);
+  update();
+}
+
+QString ForceArrowItem::label() const { return m_label->text(); }
+
+QPointF ForceArrowItem::tipPx() const { return QPointF(m_direction.x(), -m_direction.y()) * m_lengthPx; }
+
+QRectF ForceArrowItem::boundingRect() const {
+  const double pad = (canvas::kArrowHeadPx + canvas::kArrowWidthPx) * m_scale;
+  return QRectF(QPointF(0.0, 0.0), tipPx()).normalized().adjusted(-pad, -pad, pad, pad);
+}
+
+void ForceArrowItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) {
+  if (!(m_lengthPx > 1.0)) return;
+  painter->setRenderHint(QPainter::Antialiasing);
+  const QPointF tip = tipPx();
+  const QPointF unit = tip / m_lengthPx;
+  const QPointF normal(-unit.y(), unit.x());
+  const double head = std::min(canvas::kArrowHeadPx * m_scale, 0.6 * m_lengthPx);
+  const QPointF base = tip - head * unit;
+  painter->setPen(QPen(kForceArrowColor, canvas::kArrowWidthPx * m_scale, Qt::SolidLine, Qt::RoundCap));
+  painter->drawLine(QPointF(0.0, 0.0), base);
+  painter->setPen(Qt::NoPen);
+  painter->setBrush(kForceArrowColor);
+  const QPointF triangle[] = {tip, base + 0.4 * head * normal, base - 0.4 * head * normal};
+  painter->drawPolygon(triangle, 3);
+}
+
+ForceArrowsItem::ForceArrowsItem(QGraphicsItem* parent) : QGraphicsItem(parent) {
+  setFlag(ItemHasNoContents);
+  setZValue(canvas::z::kArrows);
+}
+
+ForceArrowItem* ForceArrowsItem::arrowAt(std::size_t index) {
+  while (m_arrows.size() <= index) {
+    auto* arrow = new ForceArrowItem(this);
+    arrow->setPresentationScale(m_scale);
+    m_arrows.push_back(arrow);
+  }
+  return m_arrows[index];
+}
+
+void ForceArrowsItem::setForces(const MechanismDocument& document, const ForceResults& forces) {
+  const k::PoseForces* f = forces.poseForces();
+  const k::BodyModel* bodies = forces.bodies();
+  const double peak = forces.peakJointForce();
+  std::size_t used = 0;
+  if (f != nullptr && bodies != nullptr && peak > 0.0) {
+    const k::Pose& pose = document.pose();
+    const auto place = [&](const Eigen::Vector2d& at, const Eigen::Vector2d& force) {
+      const double size = force.norm();
+      ForceArrowItem* arrow = arrowAt(used++);
+      arrow->setArrow(toQt(at), toQt(force), std::min(1.0, size / peak) * kForceArrowLengthPx * m_scale,
+                      QCoreApplication::translate("ForceArrowsItem", "%1 N").arg(formatForce(size)));
+      arrow->setVisible(true);
+    };
+    for (std::size_t i = 0; i < bodies->revolutes.size() && i < f->revolute.size(); ++i)
+      place(pose.position[bodies->revolutes[i].point.index], f->revolute[i]);
+    for (std::size_t i = 0; i < bodies->prismatics.size() && i < f->normal.size(); ++i) {
+      const k::PrismaticJoint& joint = bodies->prismatics[i];
+      // The core's normal force acts along n = u⊥ (inverse_dynamics.h), u the sliding direction.
+      const Eigen::Vector2d u = k::prismaticDirection(document.mechanism(), joint, pose);
+      place(pose.position[joint.pin.index], f->normal[i] * Eigen::Vector2d(-u.y(), u.x()));
+    }
+  }
+  for (std::size_t i = used; i < m_arrows.size(); ++i) m_arrows[i]->setVisible(false);
+}
+
+void ForceArrowsItem::setPresentationScale(double factor) {
+  m_scale = factor;
+  for (ForceArrowItem* arrow : m_arrows) arrow->setPresentationScale(factor);
+}
+
+} // namespace linkwright::ui

@@ -1,0 +1,105 @@
+#include "ui/panels/mass_table.h"
+
+#include <QHeaderView>
+#include <QLineEdit>
+#include <QLocale>
+#include <QStyledItemDelegate>
+
+namespace linkwright::ui {
+
+namespace {
+
+// Marks a cell that shows a default rather than a value.
+constexpr int kUnsetRole = Qt::UserRole + 1;
+
+// Opens a default cell with an empty editor, so typing replaces "midpoint" rather than
+// appending to it.
+class UnsetAwareDelegate : public QStyledItemDelegate {
+public:
+  using QStyledItemDelegate::QStyledItemDelegate;
+  void setEditorData(QWidget* editor, const QModelIndex& index) const override {
+    if (index.data(kUnsetRole).toBool()) {
+      if (auto* line = qobject_cast<QLineEdit*>(editor)) {
+        line->clear();
+        return;
+      }
+    }
+    QStyledItemDelegate::setEditorData(editor, index);
+  }
+};
+
+std::optional<double> parseNumber(const QString& text, bool& parsed) {
+  bool ok = false;
+  double value = text.trimmed().toDouble(&ok);  // C locale first: files and the CLI write "0.5"
+  if (!ok) value = QLocale().toDouble(text.trimmed(), &ok);
+  parsed = ok;
+  return ok ? std::optional<double>(value) : std::nullopt;
+}
+
+} // namespace
+
+MassTable::MassTable(const QStringList& headers, QWidget* parent) : QTableWidget(parent) {
+  setColumnCount(static_cast<int>(headers.size()));
+  setHorizontalHeaderLabels(headers);
+  setItemDelegate(new UnsetAwareDelegate(this));
+  verticalHeader()->setVisible(false);
+  // Names take what they need; the number columns share the rest, so nothing scrolls sideways.
+  horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+  horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+  horizontalHeader()->setMinimumSectionSize(56);
+  setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  setSelectionMode(QAbstractItemView::SingleSelection);
+  setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
+                  QAbstractItemView::AnyKeyPressed);
+  setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
+  connect(this, &QTableWidget::itemChanged, this, &MassTable::onItemChanged);
+}
+
+QString MassTable::formatValue(double value) { return QString::number(value, 'g', 6); }
+
+void MassTable::setRows(const QStringList& names, const std::vector<std::vector<Cell>>& cells) {
+  m_filling = true;
+  setRowCount(static_cast<int>(names.size()));
+  QFont unsetFont = font();
+  unsetFont.setItalic(true);
+  // Items are updated in place, never replaced: a refresh may run inside the itemChanged
+  // handler of the very item being edited.
+  const auto itemAt = [this](int row, int column) {
+    QTableWidgetItem* it = item(row, column);
+    if (it == nullptr) {
+      it = new QTableWidgetItem;
+      setItem(row, column, it);
+    }
+    return it;
+  };
+  for (int row = 0; row < rowCount(); ++row) {
+    QTableWidgetItem* name = itemAt(row, 0);
+    name->setText(names[row]);
+    name->setFlags(Qt::ItemIsEnabled);
+    const auto& rowCells = cells[static_cast<std::size_t>(row)];
+    for (int column = 1; column < columnCount(); ++column) {
+      const auto index = static_cast<std::size_t>(column - 1);
+      const Cell cell = index < rowCells.size() ? rowCells[index] : Cell{};
+      QTableWidgetItem* it = itemAt(row, column);
+      it->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+      it->setData(kUnsetRole, !cell.value.has_value());
+      it->setText(cell.value ? formatValue(*cell.value) : cell.unsetText);
+      it->setFont(cell.value ? font() : unsetFont);
+      it->setForeground(palette().color(cell.value ? QPalette::Active : QPalette::Disabled, QPalette::Text));
+      it->setToolTip(cell.value ? QString() : cell.unsetToolTip);
+    }
+  }
+  m_filling = false;
+  updateGeometry();
+}
+
+void MassTable::onItemChanged(QTableWidgetItem* item) {
+  if (m_filling || item->column() == 0) return;
+  bool parsed = true;
+  const QString text = item->text().trimmed();
+  const std::optional<double> value = text.isEmpty() ? std::nullopt : parseNumber(text, parsed);
+  emit cellEdited(item->row(), item->column(), value, parsed);
+}
+
+} // namespace linkwright::ui

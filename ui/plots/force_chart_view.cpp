@@ -1,0 +1,135 @@
+#include "ui/plots/force_chart_view.h"
+
+#include "ui/plots/plot_area_alignment.h"
+#include "ui/plots/plot_quantity.h"
+#include "ui/plots/series_visibility.h"
+
+#include <QChart>
+#include <QLegend>
+#include <QLineSeries>
+#include <QValueAxis>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace linkwright::ui {
+
+namespace {
+constexpr qreal kCurveWidth = 2.0;
+QPen cursorPen() { return QPen(QColor(0xc0, 0x20, 0x20), 1.5); }
+} // namespace
+
+void applyAxisRange(QValueAxis* axis, const AxisRange& range) {
+  axis->setRange(range.min, range.max);
+  axis->setTickCount(range.tickCount);
+  axis->setLabelFormat(QStringLiteral("%.%1f").arg(range.decimals));
+}
+
+ForceChartView::ForceChartView(const QString& title, bool fromZero, QWidget* parent)
+    : QChartView(parent), m_fromZero(fromZero), m_xAxis(new QValueAxis), m_yAxis(new QValueAxis) {
+  auto* chart = new QChart;
+  chart->setTitle(title);
+  // The data changes at frame rate while dragging; animations would lag behind it.
+  chart->setAnimationOptions(QChart::NoAnimation);
+  chart->setMargins(kBaseChartMargins);
+  chart->setBackgroundRoundness(0);
+  chart->legend()->setAlignment(Qt::AlignRight);
+  chart->addAxis(m_xAxis, Qt::AlignBottom);
+  chart->addAxis(m_yAxis, Qt::AlignLeft);
+  m_xAxis->setTickType(QValueAxis::TicksDynamic);
+  m_xAxis->setTickAnchor(0.0);
+  setChart(chart);
+  setRenderHint(QPainter::Antialiasing);
+  m_cursor = std::make_unique<VerticalMarker>(chart, m_xAxis, m_yAxis, cursorPen(), QStringLiteral("cursor"));
+}
+
+ForceChartView::~ForceChartView() = default;
+
+void ForceChartView::setCurves(const std::vector<Curve>& curves) {
+  const bool same = curves.size() == m_lines.size() &&
+                    std::equal(curves.begin(), curves.end(), m_lines.begin(), [](const Curve& a, const Line& b) { return a == b.curve; });
+  if (same) return;
+  for (Line& line : m_lines)
+    for (QLineSeries* segment : line.segments) {
+      chart()->removeSeries(segment);
+      delete segment;
+    }
+  m_lines.clear();
+  m_lines.reserve(curves.size());
+  for (const Curve& c : curves) {
+    m_lines.push_back({c, {}});
+    addSegment(m_lines.back());
+  }
+  chart()->legend()->setVisible(curves.size() > 1);
+  m_cursor->raise();
+}
+
+QLineSeries* ForceChartView::addSegment(Line& line) {
+  auto* segment = new QLineSeries;
+  segment->setObjectName(line.curve.key);
+  segment->setName(line.curve.name);
+  segment->setPen(QPen(line.curve.color, kCurveWidth));
+  chart()->addSeries(segment);
+  segment->attachAxis(m_xAxis);
+  segment->attachAxis(m_yAxis);
+  line.segments.append(segment);
+  setSeriesShown(chart(), segment, false, false);
+  return segment;
+}
+
+void ForceChartView::setData(const std::vector<SeriesRuns>& runs, const QString& valueTitle, AngleUnit unit,
+                             double fromDeg, double toDeg) {
+  m_values.clear();
+  static const SeriesRuns kNone;
+  for (std::size_t i = 0; i < m_lines.size(); ++i) {
+    const SeriesRuns& r = i < runs.size() ? runs[i] : kNone;
+    for (const QList<QPointF>& run : r.runs)
+      for (const QPointF& p : run) m_values.push_back(p.y());
+    updateLine(m_lines[i], r);
+  }
+  // Forces grow without bound next to a toggle: such spikes run off the chart rather than
+  // squash every other value flat.
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  auto [lo, hi] = m_values.empty() ? std::pair<double, double>{kInf, -kInf} : robustSpan(m_values);
+  if (m_fromZero && !m_values.empty()) lo = std::min(lo, 0.0);
+  AxisRange y = niceValueRange(lo, hi);
+  if (m_fromZero && lo >= 0.0 && y.min < 0.0) {
+    // Magnitudes: the axis starts at 0, not at the margin below it.
+    y.min = 0.0;
+    y.tickCount = static_cast<int>(std::lround(y.max / y.step)) + 1;
+  }
+  applyAxisRange(m_yAxis, y);
+  m_yAxis->setTitleText(valueTitle);
+  const AxisRange x = crankAxisRange(fromDeg, toDeg, unit);
+  applyAxisRange(m_xAxis, x);
+  m_xAxis->setTickInterval(x.step);
+  m_xAxis->setTitleText(crankAxisTitle(unit));
+  m_cursor->setYSpan(y.min, y.max);
+}
+
+void ForceChartView::updateLine(Line& line, const SeriesRuns& runs) {
+  while (line.segments.size() < runs.runs.size()) addSegment(line);
+  for (qsizetype i = 0; i < line.segments.size(); ++i) {
+    QLineSeries* segment = line.segments[i];
+    if (i < runs.runs.size())
+      segment->replace(runs.runs[i]);
+    else if (segment->count() > 0)
+      segment->replace(QList<QPointF>{});
+    // The first segment stays visible, even empty, so the legend names the curve.
+    setSeriesShown(chart(), segment, i == 0 || i < runs.runs.size(), i == 0);
+  }
+}
+
+void ForceChartView::resizeEvent(QResizeEvent* event) {
+  QChartView::resizeEvent(event);
+  emit resized();
+}
+
+void ForceChartView::setCursorX(std::optional<double> x) { m_cursor->setX(x); }
+
+QList<QLineSeries*> ForceChartView::segments(std::size_t index) const {
+  return index < m_lines.size() ? m_lines[index].segments : QList<QLineSeries*>{};
+}
+
+} // namespace linkwright::ui

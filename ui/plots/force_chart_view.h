@@ -1,0 +1,83 @@
+#pragma once
+// A chart of force quantities against crank angle (the driving torque, the joint reaction
+// magnitudes): a line per curve, split into segments where the forces were not solved,
+// explicit value axes with rounded ranges, and a crank-angle cursor (VerticalMarker) that
+// moves without touching the data. Series are updated with replace(); no animations.
+
+#include "ui/plots/angle_unit.h"
+#include "ui/plots/axis_range.h"
+#include "ui/plots/series_data.h"
+#include "ui/plots/vertical_marker.h"
+
+#include <QChartView>
+#include <QColor>
+#include <QList>
+#include <QString>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+class QLineSeries;
+class QValueAxis;
+
+namespace linkwright::ui {
+
+class ForceChartView : public QChartView {
+  Q_OBJECT
+public:
+  /// One line of the chart.
+  struct Curve {
+    QString key;   ///< object name of its series ("torque", "joint_B")
+    QString name;  ///< legend text
+    QColor color;
+    bool operator==(const Curve&) const = default;
+  };
+
+  /// A chart titled `title`; `fromZero` keeps 0 on the value axis (magnitudes).
+  explicit ForceChartView(const QString& title, bool fromZero, QWidget* parent = nullptr);
+  ~ForceChartView() override;
+
+  /// Makes one line per curve (keeps the series if the curves are unchanged). The legend is
+  /// shown only for more than one curve.
+  void setCurves(const std::vector<Curve>& curves);
+  /// Replaces the lines with `runs` (one per curve, in order; x in `unit`, y in the value
+  /// unit) and resets the axes: x over the grid [fromDeg, toDeg], y around the values.
+  void setData(const std::vector<SeriesRuns>& runs, const QString& valueTitle, AngleUnit unit, double fromDeg,
+               double toDeg);
+  /// Moves the cursor to `x` (plot units), or hides it. Touches no data series.
+  void setCursorX(std::optional<double> x);
+  std::optional<double> cursorX() const { return m_cursor->x(); }
+
+  /// The segments of curve `index`; the first carries the legend entry.
+  QList<QLineSeries*> segments(std::size_t index) const;
+  QValueAxis* xAxis() const { return m_xAxis; }
+  QValueAxis* yAxis() const { return m_yAxis; }
+
+signals:
+  /// The view was resized (and its chart with it).
+  void resized();
+
+protected:
+  void resizeEvent(QResizeEvent* event) override;
+
+private:
+  struct Line {
+    Curve curve;
+    QList<QLineSeries*> segments;
+  };
+  QLineSeries* addSegment(Line& line);
+  void updateLine(Line& line, const SeriesRuns& runs);
+
+  bool m_fromZero;
+  QValueAxis* m_xAxis;
+  QValueAxis* m_yAxis;
+  std::vector<Line> m_lines;
+  std::unique_ptr<VerticalMarker> m_cursor;
+  std::vector<double> m_values;  // y values of one update, reused
+};
+
+/// Applies a rounded range to a value axis (bounds, ticks, label format).
+void applyAxisRange(QValueAxis* axis, const AxisRange& range);
+
+} // namespace linkwright::ui

@@ -1,0 +1,171 @@
+#include "ui/plots/force_plot_panel.h"
+
+#include "ui/document/design_fields.h"
+#include "ui/document/force_results.h"
+#include "ui/document/mechanism_document.h"
+#include "ui/plots/axis_range.h"
+#include "ui/plots/force_chart_view.h"
+#include "ui/plots/plot_area_alignment.h"
+#include "ui/plots/polar_load_view.h"
+
+#include <QChart>
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QTabWidget>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+namespace linkwright::ui {
+
+namespace k = kinematics;
+
+namespace {
+constexpr int kChartMinimumHeight = 200;
+constexpr int kPolarMinimumWidth = 260;
+} // namespace
+
+ForcePlotPanel::ForcePlotPanel(MechanismDocument* document, ForceResults* forces, QWidget* parent)
+    : QWidget(parent), m_document(document), m_forces(forces), m_status(new QLabel(this)),
+      m_torque(new ForceChartView(tr("Driving torque"), false)), m_joints(new ForceChartView(tr("Joint forces"), true)),
+      m_selector(new QComboBox), m_polar(new PolarLoadView), m_charts(new QWidget(this)) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  m_status->setWordWrap(true);
+  m_status->setAlignment(Qt::AlignCenter);
+  m_status->setObjectName(QStringLiteral("forceStatus"));
+  layout->addWidget(m_status);
+
+  // Two pages, each with the pane's full width: the curves against crank angle, and the polar
+  // diagrams (side by side they were too narrow to read in the default window).
+  auto* pages = new QTabWidget(m_charts);
+  pages->setDocumentMode(true);
+  auto* chartsLayout = new QVBoxLayout(m_charts);
+  chartsLayout->setContentsMargins(0, 0, 0, 0);
+  chartsLayout->addWidget(pages);
+  auto* curves = new QWidget;
+  auto* left = new QVBoxLayout(curves);
+  left->setContentsMargins(0, 0, 0, 0);
+  m_torque->setMinimumHeight(kChartMinimumHeight);
+  m_joints->setMinimumHeight(kChartMinimumHeight);
+  left->addWidget(m_torque, 1);
+  left->addWidget(m_joints, 1);
+  auto* polar = new QWidget;
+  auto* right = new QVBoxLayout(polar);
+  right->setContentsMargins(0, 0, 0, 0);
+  auto* selectorRow = new QHBoxLayout;
+  auto* selectorLabel = new QLabel(tr("Polar load diagram of joint"));
+  selectorLabel->setBuddy(m_selector);
+  selectorRow->addWidget(selectorLabel);
+  selectorRow->addWidget(m_selector, 1);
+  right->addLayout(selectorRow);
+  m_polar->setMinimumWidth(kPolarMinimumWidth);
+  right->addWidget(m_polar, 1);
+  pages->addTab(curves, tr("Torque and joint forces"));
+  pages->addTab(polar, tr("Polar load diagrams"));
+  layout->addWidget(m_charts, 1);
+
+  m_torque->setCurves({{QStringLiteral("torque"), tr("T₂"), QColor(230, 85, 13)}});
+  // The two charts share the crank axis: same plot-area edges, so the cursors line up.
+  for (ForceChartView* chart : {m_torque, m_joints}) connect(chart, &ForceChartView::resized, this, &ForcePlotPanel::alignCharts);
+  connect(m_selector, &QComboBox::currentIndexChanged, this, [this] { refreshPolar(); });
+  connect(forces, &ForceResults::changed, this, [this](bool cycle) {
+    if (cycle)
+      refreshAll();
+    else
+      refreshCursor();
+  });
+  refreshAll();
+}
+
+void ForcePlotPanel::setAngleUnit(AngleUnit unit) {
+  if (unit == m_unit) return;
+  m_unit = unit;
+  refreshAll();
+}
+
+QString ForcePlotPanel::statusText() const { return m_status->text(); }
+
+void ForcePlotPanel::refreshAll() {
+  const k::ForceSweep* cycle = m_forces->cycleForces();
+  const k::SweepResult* sweep = m_forces->cycleSweep();
+  QString status = m_forces->message();
+  if (m_forces->state() == ForceResults::State::Disabled) status = tr("Forces are not being computed.");
+  m_status->setText(status);
+  m_status->setVisible(!status.isEmpty());
+  m_charts->setVisible(cycle != nullptr && sweep != nullptr);
+  if (cycle == nullptr || sweep == nullptr) return;
+
+  const k::Design& design = m_document->design();
+  const double fromDeg = designFromDeg(design);
+  const double toDeg = designToDeg(design);
+  m_runs.resize(1);
+  buildTorqueRuns(*sweep, *cycle, m_unit, m_runs[0]);
+  m_torque->setData(m_runs, tr("torque [N·m]"), m_unit, fromDeg, toDeg);
+
+  const std::vector<ForceJoint> joints = forceJoints(cycle->bodies);
+  std::vector<ForceChartView::Curve> curves;
+  for (const ForceJoint& j : joints)
+    curves.push_back({QStringLiteral("joint_") + j.name, j.prismatic ? tr("%1 |N|").arg(j.name) : j.name, j.color});
+  m_joints->setCurves(curves);
+  m_runs.resize(joints.size());
+  for (std::size_t i = 0; i < joints.size(); ++i) buildJointForceRuns(*sweep, *cycle, joints[i], m_unit, m_runs[i]);
+  m_joints->setData(m_runs, tr("|F| [N]"), m_unit, fromDeg, toDeg);
+
+  if (joints != m_jointList) {
+    const QString kept = m_selector->currentText();
+    const QSignalBlocker block(m_selector);
+    m_selector->clear();
+    for (const ForceJoint& j : joints)
+      if (!j.prismatic) m_selector->addItem(j.name);
+    m_selector->setCurrentIndex(std::max(0, m_selector->findText(kept)));
+    m_jointList = joints;
+  }
+  refreshPolar();
+  refreshCursor();
+  alignCharts();  // tick labels and the legend may have changed width
+}
+
+void ForcePlotPanel::alignCharts() {
+  if (m_charts->isVisible()) alignPlotAreas({m_torque->chart(), m_joints->chart()});
+}
+
+std::optional<double> ForcePlotPanel::cursorX() const {
+  const k::Design& design = m_document->design();
+  const std::optional<double> deg =
+      wrapIntoRange(k::radToDeg(m_document->crankAngle()), designFromDeg(design), designToDeg(design));
+  if (!deg) return std::nullopt;
+  return toAngleUnit(k::degToRad(*deg), m_unit);
+}
+
+void ForcePlotPanel::refreshCursor() {
+  const std::optional<double> x = m_forces->cycleForces() != nullptr ? cursorX() : std::nullopt;
+  m_torque->setCursorX(x);
+  m_joints->setCursorX(x);
+  const k::PoseForces* pose = m_forces->poseForces();
+  const int joint = m_selector->currentIndex();
+  if (pose != nullptr && joint >= 0 && static_cast<std::size_t>(joint) < pose->revolute.size()) {
+    const Eigen::Vector2d& f = pose->revolute[static_cast<std::size_t>(joint)];
+    m_polar->setCurrent(QPointF(f.x(), f.y()));
+  } else {
+    m_polar->setCurrent(std::nullopt);
+  }
+}
+
+void ForcePlotPanel::refreshPolar() {
+  const k::ForceSweep* cycle = m_forces->cycleForces();
+  const int joint = m_selector->currentIndex();
+  if (cycle == nullptr || joint < 0) return;
+  // Revolute joints come first in forceJoints, so the selector's index is the revolute index.
+  const auto index = static_cast<std::size_t>(joint);
+  SeriesRuns locus;
+  buildPolarRuns(*cycle, index, locus);
+  m_polar->setLocus(locus, tr("Joint %1: force on %2 from %3")
+                               .arg(m_selector->currentText(),
+                                    QString::fromStdString(cycle->bodies.bodies[cycle->bodies.revolutes[index].body.index].name),
+                                    QString::fromStdString(cycle->bodies.bodies[cycle->bodies.revolutes[index].hub.index].name)),
+                    m_jointList.empty() ? QColor(Qt::black) : m_jointList[index].color);
+  refreshCursor();
+}
+
+} // namespace linkwright::ui

@@ -1,0 +1,64 @@
+#pragma once
+// The force plots: the driving torque and the joint reaction magnitudes against crank angle,
+// and the polar load diagram of the pin joint the combo box picks. Everything comes from a
+// ForceResults (the core's inverse dynamics on the document's cycle); a crank move moves the
+// cursors and the polar dot only. When there are no forces (no masses or loads, an unknown
+// length unit) the charts hide and a line says why.
+
+#include "ui/plots/angle_unit.h"
+#include "ui/plots/force_series.h"
+
+#include <QWidget>
+
+#include <vector>
+
+class QComboBox;
+class QLabel;
+
+namespace linkwright::ui {
+
+class ForceChartView;
+class ForceResults;
+class MechanismDocument;
+class PolarLoadView;
+
+class ForcePlotPanel : public QWidget {
+  Q_OBJECT
+public:
+  /// Reads `forces` (solved from `document`); both must outlive the panel. It does not enable
+  /// `forces`: whoever shows the panel does.
+  ForcePlotPanel(MechanismDocument* document, ForceResults* forces, QWidget* parent = nullptr);
+
+  /// Unit of the crank-angle axes. Degrees by default.
+  void setAngleUnit(AngleUnit unit);
+
+  ForceChartView* torqueChart() const { return m_torque; }
+  ForceChartView* jointChart() const { return m_joints; }
+  PolarLoadView* polarView() const { return m_polar; }
+  QComboBox* jointSelector() const { return m_selector; }
+  /// The line that says why there are no forces, or where they are missing.
+  QString statusText() const;
+  /// The joints on the magnitude chart, in legend order.
+  const std::vector<ForceJoint>& joints() const { return m_jointList; }
+
+private:
+  void refreshAll();
+  void refreshCursor();
+  void refreshPolar();
+  void alignCharts();
+  std::optional<double> cursorX() const;
+
+  MechanismDocument* m_document;
+  ForceResults* m_forces;
+  AngleUnit m_unit = AngleUnit::Degrees;
+  QLabel* m_status;
+  ForceChartView* m_torque;
+  ForceChartView* m_joints;
+  QComboBox* m_selector;
+  PolarLoadView* m_polar;
+  QWidget* m_charts;
+  std::vector<ForceJoint> m_jointList;
+  std::vector<SeriesRuns> m_runs;  // reused between updates
+};
+
+} // namespace linkwright::ui

@@ -1,0 +1,93 @@
+#include "ui/plots/force_series.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace linkwright::ui {
+
+namespace k = kinematics;
+
+namespace {
+
+// Distinct from the link colours, so a joint curve is not mistaken for a link's.
+constexpr std::array<QColor, 8> kJointPalette{
+    QColor{31, 119, 180}, QColor{214, 39, 40},  QColor{44, 160, 44},  QColor{148, 103, 189},
+    QColor{255, 127, 14}, QColor{23, 190, 207}, QColor{140, 86, 75},  QColor{127, 127, 127},
+};
+
+// Fills `out` with (x(j), y(j)) for the runs of samples where `ok(j)`; reuses its lists.
+template <typename Ok, typename X, typename Y>
+void buildRuns(std::size_t samples, Ok ok, X x, Y y, SeriesRuns& out) {
+  qsizetype runCount = 0;
+  bool first = true;
+  out.minY = 0.0;
+  out.maxY = 0.0;
+  std::size_t j = 0;
+  while (j < samples) {
+    if (!ok(j)) {
+      ++j;
+      continue;
+    }
+    std::size_t end = j;
+    while (end < samples && ok(end)) ++end;
+    if (runCount == out.runs.size()) out.runs.emplace_back();
+    QList<QPointF>& run = out.runs[runCount++];
+    run.clear();
+    run.reserve(static_cast<qsizetype>(end - j));
+    for (; j < end; ++j) {
+      const double value = y(j);
+      run.append(QPointF(x(j), value));
+      out.minY = first ? value : std::min(out.minY, value);
+      out.maxY = first ? value : std::max(out.maxY, value);
+      first = false;
+    }
+  }
+  out.runs.resize(runCount);
+}
+
+// The force columns belong to this sweep (same sample count), else nothing is plotted.
+std::size_t samplesOf(const k::SweepResult& sweep, const k::ForceSweep& forces) {
+  return sweep.size() == forces.size() ? forces.size() : 0;
+}
+
+} // namespace
+
+std::vector<ForceJoint> forceJoints(const k::BodyModel& bodies) {
+  std::vector<ForceJoint> joints;
+  for (std::size_t i = 0; i < bodies.revolutes.size(); ++i)
+    joints.push_back({QString::fromStdString(bodies.revolutes[i].name), false, i, QColor()});
+  for (std::size_t i = 0; i < bodies.prismatics.size(); ++i)
+    joints.push_back({QString::fromStdString(bodies.prismatics[i].name), true, i, QColor()});
+  for (std::size_t i = 0; i < joints.size(); ++i) joints[i].color = kJointPalette[i % kJointPalette.size()];
+  return joints;
+}
+
+void buildTorqueRuns(const k::SweepResult& sweep, const k::ForceSweep& forces, AngleUnit unit, SeriesRuns& out) {
+  buildRuns(
+      samplesOf(sweep, forces), [&](std::size_t j) { return forces.ok(j); },
+      [&](std::size_t j) { return toAngleUnit(sweep.inputAngle[j], unit); },
+      [&](std::size_t j) { return forces.driveTorque[j]; }, out);
+}
+
+void buildJointForceRuns(const k::SweepResult& sweep, const k::ForceSweep& forces, const ForceJoint& joint,
+                         AngleUnit unit, SeriesRuns& out) {
+  const auto x = [&](std::size_t j) { return toAngleUnit(sweep.inputAngle[j], unit); };
+  const auto ok = [&](std::size_t j) { return forces.ok(j); };
+  const bool present = joint.prismatic ? joint.index < forces.normal.size() : joint.index < forces.revolute.size();
+  const std::size_t samples = present ? samplesOf(sweep, forces) : 0;
+  if (joint.prismatic)
+    buildRuns(samples, ok, x, [&](std::size_t j) { return std::abs(forces.normal[joint.index][j]); }, out);
+  else
+    buildRuns(samples, ok, x, [&](std::size_t j) { return forces.revolute[joint.index][j].norm(); }, out);
+}
+
+void buildPolarRuns(const k::ForceSweep& forces, std::size_t revolute, SeriesRuns& out) {
+  const std::size_t samples = revolute < forces.revolute.size() ? forces.size() : 0;
+  buildRuns(
+      samples, [&](std::size_t j) { return forces.ok(j); },
+      [&](std::size_t j) { return forces.revolute[revolute][j].x(); },
+      [&](std::size_t j) { return forces.revolute[revolute][j].y(); }, out);
+}
+
+} // namespace linkwright::ui

@@ -1,0 +1,47 @@
+#pragma once
+// Turns the core's force columns (kinematics::ForceSweep) into plot points: the driving torque
+// and each joint's reaction magnitude against crank angle, and each pin joint's force vector
+// as a polar locus. Samples whose forces were not solved (status not Ok: unassembled, a toggle,
+// a singular force system) are left out and break the lines into runs, as series_data.h does
+// for the kinematic curves.
+
+#include "ui/plots/angle_unit.h"
+#include "ui/plots/series_data.h"
+
+#include "kinematics/dynamics/force_sweep.h"
+#include "kinematics/dynamics/rigid_bodies.h"
+#include "kinematics/solve/sweep.h"
+
+#include <QColor>
+#include <QString>
+
+#include <vector>
+
+namespace linkwright::ui {
+
+/// One joint as the force plots name and colour it.
+struct ForceJoint {
+  QString name;           ///< the core's joint name: "A", "B", "C_coupler", …
+  bool prismatic = false; ///< a slider's guide (its reaction is the normal force N)
+  std::size_t index = 0;  ///< into ForceSweep::revolute, or ::normal when prismatic
+  QColor color;
+  bool operator==(const ForceJoint&) const = default;
+};
+
+/// The joints of `bodies`: the revolute ones, then the prismatic ones.
+std::vector<ForceJoint> forceJoints(const kinematics::BodyModel& bodies);
+
+/// x = crank angle (in `unit`), y = driving torque (N·m), at the samples whose forces are Ok.
+/// `sweep` is the kinematic sweep `forces` was solved on.
+void buildTorqueRuns(const kinematics::SweepResult& sweep, const kinematics::ForceSweep& forces, AngleUnit unit,
+                     SeriesRuns& out);
+
+/// x = crank angle (in `unit`), y = |F| of a pin joint or |N| of a slider's (N).
+void buildJointForceRuns(const kinematics::SweepResult& sweep, const kinematics::ForceSweep& forces,
+                         const ForceJoint& joint, AngleUnit unit, SeriesRuns& out);
+
+/// The polar load diagram of revolute joint `revolute`: x = Fx, y = Fy (N, world frame; the
+/// force on the joint's body from its hub), one point per Ok sample, in sweep order.
+void buildPolarRuns(const kinematics::ForceSweep& forces, std::size_t revolute, SeriesRuns& out);
+
+} // namespace linkwright::ui
