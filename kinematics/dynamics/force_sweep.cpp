@@ -18,20 +18,6 @@ bool hasAllColumns(const Mechanism& m, const SweepResult& s) {
          full(s.linkOmega, m.links.size()) && full(s.linkAlpha, m.links.size());
 }
 
-// The sweep's sample j as a pose (only what inverse dynamics reads).
-void copySample(const SweepResult& s, std::size_t j, Pose& pose) {
-  for (std::size_t i = 0; i < pose.position.size(); ++i) {
-    pose.position[i] = s.position[i][j];
-    pose.velocity[i] = s.velocity[i][j];
-    pose.acceleration[i] = s.acceleration[i][j];
-  }
-  for (std::size_t k = 0; k < pose.linkOmega.size(); ++k) {
-    pose.linkAngle[k] = s.linkAngle[k][j];
-    pose.linkOmega[k] = s.linkOmega[k][j];
-    pose.linkAlpha[k] = s.linkAlpha[k][j];
-  }
-}
-
 void allocate(ForceSweep& out, std::size_t samples) {
   out.status.assign(samples, PoseStatus::Ok);
   out.revolute.assign(out.bodies.revolutes.size(), std::vector<Eigen::Vector2d>(samples, Eigen::Vector2d::Zero()));
@@ -89,7 +75,7 @@ Result<ForceSweep> sweepForces(const Mechanism& mechanism, const LinkageDynamics
       out.status[j] = sweep.report[j].status;
       continue;
     }
-    copySample(sweep, j, pose);
+    copySampleToPose(sweep, j, pose);
     out.status[j] = solve.solveInto(pose, forces);
     if (out.status[j] == PoseStatus::Ok) store(forces, j, out);
   }

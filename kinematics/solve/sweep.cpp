@@ -305,6 +305,19 @@ std::optional<Error> sweepInto(const Mechanism& mechanism, const SweepSpec& spec
   return std::nullopt;
 }
 
+void copySampleToPose(const SweepResult& s, std::size_t j, Pose& pose) {
+  for (std::size_t i = 0; i < pose.position.size(); ++i) {
+    pose.position[i] = s.position[i][j];
+    pose.velocity[i] = s.velocity[i][j];
+    pose.acceleration[i] = s.acceleration[i][j];
+  }
+  for (std::size_t k = 0; k < pose.linkAngle.size(); ++k) {
+    pose.linkAngle[k] = s.linkAngle[k][j];
+    pose.linkOmega[k] = s.linkOmega[k][j];
+    pose.linkAlpha[k] = s.linkAlpha[k][j];
+  }
+}
+
 Result<SweepResult> sweep(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request) {
   SweepResult out;
   if (auto e = sweepInto(mechanism, spec, request, out)) return *e;

@@ -74,6 +74,11 @@ std::optional<Error> checkSweepSpec(const SweepSpec& spec);
 /// The input angle of sample `index` (rad).
 double sweepAngle(const SweepSpec& spec, std::size_t index);
 
+/// Copies sample j of a sweep into a prepared pose: positions, velocities and accelerations of
+/// every point, angle, ω and α of every link. The sweep must hold all of them (the default
+/// request, no selection); the pose's other entries are left as they were.
+void copySampleToPose(const SweepResult& sweep, std::size_t sample, Pose& pose);
+
 /// Runs the sweep. Fails only for an invalid mechanism, spec or selection; samples that cannot
 /// be assembled are reported in the result (report, notAssembled, firstFailure).
 Result<SweepResult> sweep(const Mechanism& mechanism, const SweepSpec& spec,

@@ -95,16 +95,7 @@ inline std::vector<DynamicsCase> dynamicsCases() {
 inline kinematics::Pose poseAt(const kinematics::Mechanism& m, const kinematics::SweepResult& s, std::size_t j) {
   kinematics::Pose p;
   kinematics::preparePose(m, p);
-  for (std::size_t i = 0; i < m.points.size(); ++i) {
-    p.position[i] = s.position[i][j];
-    p.velocity[i] = s.velocity[i][j];
-    p.acceleration[i] = s.acceleration[i][j];
-  }
-  for (std::size_t k = 0; k < m.links.size(); ++k) {
-    p.linkAngle[k] = s.linkAngle[k][j];
-    p.linkOmega[k] = s.linkOmega[k][j];
-    p.linkAlpha[k] = s.linkAlpha[k][j];
-  }
+  kinematics::copySampleToPose(s, j, p);
   return p;
 }
 
