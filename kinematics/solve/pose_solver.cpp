@@ -9,6 +9,8 @@
 #include "kinematics/solve/rrp_dyad.h"
 
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <cmath>
 
 namespace linkwright::kinematics {
@@ -121,36 +123,26 @@ struct Solver {
     const Eigen::Vector2d r2 = c - p2;
     if (wantTransmission) pose.transmissionAngle[i] = std::atan2(std::abs(cross(r1, r2)), r1.dot(r2));
     if (!wantVelocity || !ratesValid) return true;
-    Eigen::Vector2d v;
-    const Eigen::Vector2d& v1 = pose.velocity[r.first.index];
-    const Eigen::Vector2d& v2 = pose.velocity[r.second.index];
     // |r1|·|r2| is l1·l2 up to round-off: no square roots for the singularity test.
-    const double scale = r.firstLength * r.secondLength;
-    if (!rrrSolveRates(r1, r2, {r1.dot(v1), r2.dot(v2)}, v, scale)) {
+    double inverse = 0.0;
+    if (!rrrInverseDeterminant(r1, r2, r.firstLength * r.secondLength, inverse)) {
       markSingular(i);
       return true;
     }
+    const Eigen::Vector2d& v1 = pose.velocity[r.first.index];
+    const Eigen::Vector2d& v2 = pose.velocity[r.second.index];
+    const Eigen::Vector2d v = rrrSolve(r1, r2, inverse, {r1.dot(v1), r2.dot(v2)});
     pose.velocity[i] = v;
     if (!wantAcceleration) return true;
-    const Eigen::Vector2d rhs(r1.dot(pose.acceleration[r.first.index]) - (v - v1).squaredNorm(),
-                              r2.dot(pose.acceleration[r.second.index]) - (v - v2).squaredNorm());
-    rrrSolveRates(r1, r2, rhs, pose.acceleration[i], scale);  // same matrix: cannot be singular here
+    pose.acceleration[i] = rrrSolve(r1, r2, inverse,
+                                    {r1.dot(pose.acceleration[r.first.index]) - (v - v1).squaredNorm(),
+                                     r2.dot(pose.acceleration[r.second.index]) - (v - v2).squaredNorm()});
     return true;
-  }
-
-  // The driven crank's angle and rates are the driver's, exactly (no atan2, and not a
-  // difference of two velocities). Returns its angle before wrapping, if link l is the crank.
-  std::optional<double> drivenCrankAngle(const Link& l) const {
-    const auto* c = std::get_if<CrankPoint>(&m.points[l.second.index].definition);
-    if (c != nullptr && c->pivot == l.first) return driver.angle + c->phase;
-    const auto* reversed = std::get_if<CrankPoint>(&m.points[l.first.index].definition);
-    if (reversed != nullptr && reversed->pivot == l.second) return driver.angle + reversed->phase + kPi;
-    return std::nullopt;
   }
 
   // A guide on a link needs that link's angle and rates first (its ends are solved already).
   GuideLine guideLine(const Guide& g) {
-    if (g.link) link(g.link->index);
+    if (g.link) link(*g.link, crankPhaseOf(m, *g.link));
     return guideLineAt(m, g, pose);
   }
 
@@ -261,27 +253,29 @@ struct Solver {
     return true;
   }
 
-  void link(std::size_t k) {
-    const Link& l = m.links[k];
-    const Eigen::Vector2d r = pose.position[l.second.index] - pose.position[l.first.index];
-    if (const std::optional<double> crankAngle = drivenCrankAngle(l)) {
-      pose.linkAngle[k] = wrapAngle(*crankAngle);
+  // The driven crank's angle and rates are the driver's, exactly (no atan2, and not a
+  // difference of two velocities).
+  void link(LinkId id, std::optional<double> crankPhase) {
+    const std::size_t k = id.index;
+    if (crankPhase) {
+      pose.linkAngle[k] = wrapAngle(driver.angle + *crankPhase);
       if (wantVelocity) pose.linkOmega[k] = driver.omega;
       if (wantAcceleration) pose.linkAlpha[k] = driver.alpha;
       return;
     }
+    const Link& l = m.links[k];
+    const Eigen::Vector2d r = pose.position[l.second.index] - pose.position[l.first.index];
     pose.linkAngle[k] = std::atan2(r.y(), r.x());
-    if (!ratesValid) return;
-    const double r2 = r.squaredNorm();
-    if (wantVelocity)
-      pose.linkOmega[k] = cross(r, pose.velocity[l.second.index] - pose.velocity[l.first.index]) / r2;
+    if (!ratesValid || !wantVelocity) return;
+    const double inverse = 1.0 / r.squaredNorm();
+    pose.linkOmega[k] = cross(r, pose.velocity[l.second.index] - pose.velocity[l.first.index]) * inverse;
     if (wantAcceleration)
-      pose.linkAlpha[k] = cross(r, pose.acceleration[l.second.index] - pose.acceleration[l.first.index]) / r2;
+      pose.linkAlpha[k] = cross(r, pose.acceleration[l.second.index] - pose.acceleration[l.first.index]) * inverse;
   }
 
   void attached(std::size_t i, const AttachedPoint& a) {
     const std::size_t k = a.link.index;
-    link(k);  // the link's ends are solved already; its rates may not have been yet
+    link(a.link, crankPhaseOf(m, a.link));  // its ends are solved already; its rates may not be yet
     const Link& l = m.links[k];
     const Eigen::Vector2d base = pose.position[l.first.index];
     const Eigen::Vector2d u(std::cos(pose.linkAngle[k]), std::sin(pose.linkAngle[k]));
@@ -296,37 +290,44 @@ struct Solver {
   }
 
   PoseReport run() {
-    report = runPoints();
+    runPoints();
+    return finish();
+  }
+
+  PoseReport finish() {
     report.iterations = newtonIterations;
     report.residual = newtonResidual;
     pose.assembled = report.status != PoseStatus::NotAssemblable;
     return report;
   }
 
+  // Solves point i (a free point: its whole group). False if it cannot be assembled.
+  bool point(std::size_t i) {
+    const PointDefinition& def = m.points[i].definition;
+    if (const auto* r = std::get_if<RrrPoint>(&def)) return rrr(i, *r);
+    if (const auto* c = std::get_if<CrankPoint>(&def)) crank(i, *c);
+    else if (const auto* g = std::get_if<GroundPoint>(&def)) ground(i, *g);
+    else if (const auto* p = std::get_if<RrpPoint>(&def)) return rrp(i, *p);
+    else if (const auto* s = std::get_if<RprPoint>(&def)) return rpr(i, *s);
+    else if (const auto* q = std::get_if<PrpPoint>(&def)) return prp(i, *q);
+    else if (std::holds_alternative<FreePoint>(def)) return freeGroup(i, freeGroupEnd(m, i));
+    else attached(i, std::get<AttachedPoint>(def));
+    return true;
+  }
+
+  // Everything, in the mechanism's order; or the scope's lists, made once per sweep.
   PoseReport runPoints() {
-    for (std::size_t i = 0; i < m.points.size(); ++i) {
-      const PointDefinition& def = m.points[i].definition;
-      const bool skip = scope != nullptr && scope->solvePoint[i] == 0;
-      if (skip && std::holds_alternative<FreePoint>(def)) i = freeGroupEnd(m, i) - 1;
-      if (skip) continue;
-      if (const auto* g = std::get_if<GroundPoint>(&def)) ground(i, *g);
-      else if (const auto* c = std::get_if<CrankPoint>(&def)) crank(i, *c);
-      else if (const auto* r = std::get_if<RrrPoint>(&def)) {
-        if (!rrr(i, *r)) return report;
-      } else if (const auto* p = std::get_if<RrpPoint>(&def)) {
-        if (!rrp(i, *p)) return report;
-      } else if (const auto* s = std::get_if<RprPoint>(&def)) {
-        if (!rpr(i, *s)) return report;
-      } else if (const auto* q = std::get_if<PrpPoint>(&def)) {
-        if (!prp(i, *q)) return report;
-      } else if (std::holds_alternative<FreePoint>(def)) {
-        const std::size_t last = freeGroupEnd(m, i);
-        if (!freeGroup(i, last)) return report;
-        i = last - 1;
-      } else attached(i, std::get<AttachedPoint>(def));
+    if (scope != nullptr) {
+      for (const PointId p : scope->pointSteps)
+        if (!point(p.index)) return report;
+      for (const LinkStep& l : scope->linkSteps) link(l.link, l.crankPhase);
+      return report;
     }
-    for (std::size_t k = 0; k < m.links.size(); ++k)
-      if (scope == nullptr || scope->solveLink[k] != 0) link(k);
+    for (std::size_t i = 0; i < m.points.size(); ++i) {
+      if (!point(i)) return report;
+      if (isFreePoint(m, PointId{i})) i = freeGroupEnd(m, i) - 1;
+    }
+    for (std::size_t k = 0; k < m.links.size(); ++k) link(LinkId{k}, crankPhaseOf(m, LinkId{k}));
     return report;
   }
 };
@@ -389,6 +390,27 @@ PoseReport solvePoseInto(const Mechanism& m, const DriverState& driver, const So
   const bool acc = request.accelerations;
   Solver solver{m, driver, request.velocities || acc, acc, request.transmissionAngles, request.newton, pose, guide, scope};
   return solver.run();
+}
+
+void solveBlockInto(const Mechanism& m, std::span<const DriverState> drivers, const SolveRequest& request,
+                    std::span<Pose* const> poses, const BranchGuide& guide, const SolveScope& scope,
+                    std::span<PoseReport> reports) {
+  const bool acc = request.accelerations;
+  const std::size_t n = std::min(drivers.size(), kMaxBlock);
+  std::array<std::optional<Solver>, kMaxBlock> solvers;
+  std::array<bool, kMaxBlock> going{};
+  for (std::size_t b = 0; b < n; ++b) {
+    solvers[b].emplace(Solver{m, drivers[b], request.velocities || acc, acc, request.transmissionAngles,
+                              request.newton, *poses[b], guide, &scope});
+    going[b] = true;
+  }
+  for (const PointId p : scope.pointSteps)
+    for (std::size_t b = 0; b < n; ++b)
+      if (going[b]) going[b] = solvers[b]->point(p.index);
+  for (const LinkStep& l : scope.linkSteps)
+    for (std::size_t b = 0; b < n; ++b)
+      if (going[b]) solvers[b]->link(l.link, l.crankPhase);
+  for (std::size_t b = 0; b < n; ++b) reports[b] = solvers[b]->finish();
 }
 
 Result<Pose> solvePose(const Mechanism& m, const DriverState& driver, const SolveRequest& request) {

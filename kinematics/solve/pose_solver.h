@@ -33,6 +33,19 @@ PoseReport solvePoseInto(const Mechanism& mechanism, const DriverState& driver,
                          const SolveRequest& request, Pose& pose, const BranchGuide& guide = {},
                          const SolveScope* scope = nullptr);
 
+/// The most poses solveBlockInto solves at once.
+inline constexpr std::size_t kMaxBlock = 8;
+
+/// Solves up to kMaxBlock poses of one mechanism at once, all with the same guide, into
+/// prepared poses: each step of the scope runs for every pose before the next step. The poses
+/// are independent, so their chains of square roots, divisions and library calls overlap in the
+/// processor instead of each waiting on its own (a four-bar sweep's sample: about 150 → 125 ns).
+/// The numbers are those solvePoseInto gives pose by pose. Mechanisms without free points only
+/// (Newton starts each pose from the one before). Never throws or allocates.
+void solveBlockInto(const Mechanism& mechanism, std::span<const DriverState> drivers, const SolveRequest& request,
+                    std::span<Pose* const> poses, const BranchGuide& guide, const SolveScope& scope,
+                    std::span<PoseReport> reports);
+
 /// Convenience: validates, solves with the mechanism's branches, and turns a failure into an
 /// Error whose message names the point, the input angle and the reason.
 Result<Pose> solvePose(const Mechanism& mechanism, const DriverState& driver,

@@ -17,6 +17,9 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <cmath>
+
 namespace linkwright::kinematics {
 
 /// Why a dyad cannot be assembled.
@@ -48,8 +51,41 @@ struct RrrCandidates {
 };
 
 /// Solves the dyad's position for both branches. Lengths positive, points finite.
-RrrCandidates rrrCandidates(const Eigen::Vector2d& p1, double l1, const Eigen::Vector2d& p2,
-                            double l2);
+inline RrrCandidates rrrCandidates(const Eigen::Vector2d& p1, double l1, const Eigen::Vector2d& p2, double l2) {
+  RrrCandidates out;
+  const Eigen::Vector2d d = p2 - p1;
+  const double L = d.norm();
+  out.distance = L;
+  const double slack = kAssemblyTolerance * (l1 + l2);
+  if (L <= slack) {
+    out.failure = AssemblyFailure::Coincident;
+    return out;
+  }
+  // Heron's factors: each is a distance to one assembly limit, computed without cancellation.
+  double reach = l1 + l2 - L;        // ≥ 0 unless too far
+  double inner = L - std::abs(l1 - l2);  // ≥ 0 unless too close
+  if (reach < -slack) {
+    out.failure = AssemblyFailure::TooFar;
+    return out;
+  }
+  if (inner < -slack) {
+    out.failure = AssemblyFailure::TooClose;
+    return out;
+  }
+  reach = std::max(reach, 0.0);
+  inner = std::max(inner, 0.0);
+  // One division, made while the factors are multiplied, instead of three after them.
+  const double inverse = 1.0 / L;
+  const double h = 0.5 * std::sqrt(reach * (l1 + l2 + L) * inner * (L + std::abs(l1 - l2))) * inverse;
+  const double a = 0.5 * (l1 * l1 - l2 * l2 + L * L) * inverse;
+  const Eigen::Vector2d u = d * inverse;
+  const Eigen::Vector2d n(-u.y(), u.x());
+  const Eigen::Vector2d foot = p1 + a * u;
+  out.open = foot + h * n;
+  out.crossed = foot - h * n;
+  out.halfSeparation = h;
+  return out;
+}
 
 /// |sin| of the angle at C between C→P1 and C→P2 (0 at a toggle position).
 double rrrSine(const Eigen::Vector2d& c, const Eigen::Vector2d& p1, const Eigen::Vector2d& p2);
@@ -59,8 +95,21 @@ double rrrSine(const Eigen::Vector2d& c, const Eigen::Vector2d& p1, const Eigen:
 bool rrrSolveRates(const Eigen::Vector2d& r1, const Eigen::Vector2d& r2, const Eigen::Vector2d& rhs,
                    Eigen::Vector2d& x);
 
-/// The same with |r1|·|r2| given as `scale` (an RRR dyad knows it: l1·l2), saving two roots.
-bool rrrSolveRates(const Eigen::Vector2d& r1, const Eigen::Vector2d& r2, const Eigen::Vector2d& rhs,
-                   Eigen::Vector2d& x, double scale);
+/// 1 / (r1 × r2), the rate equations' determinant inverted once for velocity and acceleration,
+/// into `inverse`; false (leaving it untouched) when |r1×r2| ≤ kSingularSine·scale, scale being
+/// |r1|·|r2| (an RRR dyad knows it without square roots: l1·l2).
+inline bool rrrInverseDeterminant(const Eigen::Vector2d& r1, const Eigen::Vector2d& r2, double scale, double& inverse) {
+  const double det = r1.x() * r2.y() - r1.y() * r2.x();
+  if (!(std::abs(det) > kSingularSine * scale)) return false;
+  inverse = 1.0 / det;
+  return true;
+}
+
+/// x with [r1ᵀ; r2ᵀ] x = rhs by Cramer's rule, given 1 / (r1 × r2).
+inline Eigen::Vector2d rrrSolve(const Eigen::Vector2d& r1, const Eigen::Vector2d& r2, double inverseDeterminant,
+                                const Eigen::Vector2d& rhs) {
+  return {(rhs.x() * r2.y() - r1.y() * rhs.y()) * inverseDeterminant,
+          (r1.x() * rhs.y() - rhs.x() * r2.x()) * inverseDeterminant};
+}
 
 } // namespace linkwright::kinematics

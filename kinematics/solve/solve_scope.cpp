@@ -100,6 +100,13 @@ SolveScope scopeOf(const Mechanism& m, const Selection& selection) {
     if (isFreePoint(m, PointId{i})) closure.needFreeGroupOf(i);
     closure.needDefinitionOf(i);
   }
+  for (std::size_t i = 0; i < m.points.size(); ++i) {
+    if (!s.solvePoint[i]) continue;
+    s.pointSteps.push_back(PointId{i});
+    if (isFreePoint(m, PointId{i})) i = freeGroupEnd(m, i) - 1;
+  }
+  for (std::size_t k = 0; k < m.links.size(); ++k)
+    if (s.solveLink[k]) s.linkSteps.push_back({LinkId{k}, crankPhaseOf(m, LinkId{k})});
   return s;
 }
 

@@ -6,9 +6,12 @@
 #include "kinematics/solve/guide_line.h"
 #include "kinematics/solve/newton_group.h"
 #include "kinematics/solve/pose_solver.h"
+#include "kinematics/solve/sample_writer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <span>
 
 namespace linkwright::kinematics {
 namespace {
@@ -24,6 +27,14 @@ const SolveRequest kPositionsOnly{false, false, {}, {}, false};
 bool isDyad(const Mechanism& m, std::size_t i) {
   const PointDefinition& def = m.points[i].definition;
   return std::holds_alternative<RrrPoint>(def) || std::holds_alternative<RrpPoint>(def);
+}
+
+// The dyads a scope solves: the points whose branch a sweep tracks.
+std::vector<std::size_t> dyadsIn(const Mechanism& m, const SolveScope& scope) {
+  std::vector<std::size_t> out;
+  for (const PointId p : scope.pointSteps)
+    if (isDyad(m, p.index)) out.push_back(p.index);
+  return out;
 }
 
 // An upper bound on |d| (at most √2 times it) without a square root: the branch test below
@@ -47,11 +58,11 @@ double guideMotion(const Mechanism& m, LinkId k, const Pose& a, const Pose& b) {
 // close if the gaps at both ends exceed the parents' displacement (doubled, since a chord
 // understates the path). Steps over half a radian are always split: there a chord says too
 // little about the path.
-bool branchAmbiguous(const Mechanism& m, const SolveScope& scope, double aAngle, const Pose& a, double bAngle,
-                     const Pose& b) {
+// `dyads`: the RRR and RRP points solved (dyadsIn).
+bool branchAmbiguous(const Mechanism& m, std::span<const std::size_t> dyads, double aAngle, const Pose& a,
+                     double bAngle, const Pose& b) {
   if (std::abs(bAngle - aAngle) > 0.5) return true;
-  for (std::size_t i = 0; i < m.points.size(); ++i) {
-    if (scope.solvePoint[i] == 0) continue;
+  for (const std::size_t i : dyads) {
     const Point& p = m.points[i];
     const double gaps = a.assemblyGap[i] + b.assemblyGap[i];
     if (const auto* r = std::get_if<RrrPoint>(&p.definition)) {
@@ -72,44 +83,100 @@ class Tracker {
 public:
   Tracker(const Mechanism& m, const SweepSpec& spec, const SolveRequest& request, const SolveScope& scope,
           SweepResult& out)
-      : m_mech(m), m_spec(spec), m_request(request), m_scope(scope), m_out(out), m_scratch(kMaxRefineDepth + 1) {
-    preparePose(m, m_last);
-    preparePose(m, m_current);
-    preparePose(m, m_before);
+      : m_mech(m), m_spec(spec), m_request(request), m_scope(scope), m_out(out), m_writer(m, out), m_dyads(dyadsIn(m, scope)),
+        m_scratch(kMaxRefineDepth + 1) {
+    for (Pose& p : m_poses) preparePose(m, p);
     m_predicted.assign(m.points.size(), Eigen::Vector2d::Zero());
     m_hasFreePoints = std::any_of(m.points.begin(), m.points.end(),
                                   [](const Point& p) { return std::holds_alternative<FreePoint>(p.definition); });
   }
 
+  // Samples run in blocks (solveBlock) while the branches are plainly continuous; the first
+  // sample, any sample near a toggle or a gap, and linkages with free points (whose Newton
+  // starts from the previous sample) run one at a time.
   void run() {
-    for (std::size_t j = 0; j < m_spec.samples; ++j) {
-      const double angle = sweepAngle(m_spec, j);
-      m_out.inputAngle[j] = angle;
-      const PoseReport report = solveSample(angle);
-      m_out.report[j] = report;
-      if (report.status == PoseStatus::NotAssemblable) {
-        storeNothing(j);
-        m_haveLast = m_haveBefore = false;
-        continue;
-      }
-      store(j, report.status == PoseStatus::Ok);
-      advance(angle);
+    for (std::size_t j = 0; j < m_spec.samples;) {
+      if (m_haveLast && !m_hasFreePoints) j = solveBlock(j);
+      if (j < m_spec.samples) solveOne(j++);
     }
+    m_writer.finish(m_mech, m_out);
   }
 
 private:
+  double angleAt(std::size_t j) const { return sweepAngle(m_spec, j); }
+
+  void solveOne(std::size_t j) {
+    const double angle = angleAt(j);
+    m_out.inputAngle[j] = angle;
+    const PoseReport report = solveSample(angle);
+    m_out.report[j] = report;
+    if (report.status == PoseStatus::NotAssemblable) {
+      m_writer.writeNothing(j);
+      m_haveLast = m_haveBefore = false;
+      return;
+    }
+    m_writer.write(j, *m_current, report.status == PoseStatus::Ok);
+    advance(angle);
+  }
+
+  // Solves up to kMaxBlock samples from j at once with the last sample's branches
+  // (solveBlockInto: their chains of roots and divisions overlap in the processor), and keeps
+  // them up to the first one that failed or whose branch continuity is not plain: that one,
+  // whose index is returned, is then solved alone, with refinement. Same numbers as solveOne.
+  std::size_t solveBlock(std::size_t j) {
+    const std::size_t count = std::min(kMaxBlock, m_spec.samples - j);
+    if (m_block[0].position.size() != m_mech.points.size())
+      for (Pose& p : m_block) preparePose(m_mech, p);
+    std::array<DriverState, kMaxBlock> drivers;
+    std::array<Pose*, kMaxBlock> poses;
+    for (std::size_t b = 0; b < count; ++b) {
+      drivers[b] = driver(angleAt(j + b));
+      poses[b] = &m_block[b];
+    }
+    std::array<PoseReport, kMaxBlock> reports;
+    const BranchGuide keep{m_last->branchSign, {}};
+    solveBlockInto(m_mech, {drivers.data(), count}, m_request, {poses.data(), count}, keep, m_scope,
+                   {reports.data(), count});
+    std::size_t kept = 0;
+    for (; kept < count; ++kept) {
+      const double angle = drivers[kept].angle;
+      const double previousAngle = kept == 0 ? m_lastAngle : drivers[kept - 1].angle;
+      const Pose& previous = kept == 0 ? *m_last : m_block[kept - 1];
+      if (reports[kept].status == PoseStatus::NotAssemblable ||
+          branchAmbiguous(m_mech, m_dyads, previousAngle, previous, angle, m_block[kept]))
+        break;
+      m_out.inputAngle[j + kept] = angle;
+      m_out.report[j + kept] = reports[kept];
+      m_writer.write(j + kept, m_block[kept], reports[kept].status == PoseStatus::Ok);
+    }
+    if (kept > 0) keepBlockEnd(kept, drivers);
+    return j + kept;
+  }
+
+  // The last kept block pose becomes the last sample, the one before it (or the old last) the
+  // sample before: swaps, no copies.
+  void keepBlockEnd(std::size_t kept, const std::array<DriverState, kMaxBlock>& drivers) {
+    std::swap(*m_last, m_block[kept - 1]);
+    std::swap(m_before->position, m_block[kept >= 2 ? kept - 2 : 0].position);
+    m_beforeAngle = kept >= 2 ? drivers[kept - 2].angle : m_lastAngle;
+    m_lastAngle = drivers[kept - 1].angle;
+    m_haveBefore = true;
+  }
+
   DriverState driver(double angle) const { return {angle, m_spec.omega, m_spec.alpha}; }
 
   PoseReport solve(double angle, const SolveRequest& request, Pose& pose, const BranchGuide& guide = {}) const {
     return solvePoseInto(m_mech, driver(angle), request, pose, guide, &m_scope);
   }
 
-  // The current pose becomes the last, the last's positions the path before it. Swaps, not
-  // copies; free points then warm-start from the last sample's positions.
+  // The current pose becomes the last, the last the one before it: the three poses rotate, no
+  // copies. Free points then warm-start from the last sample's positions.
   void advance(double angle) {
-    std::swap(m_before.position, m_last.position);
-    std::swap(m_last, m_current);
-    if (m_hasFreePoints) m_current.position = m_last.position;  // same sizes: no allocation
+    Pose* const oldest = m_before;
+    m_before = m_last;
+    m_last = m_current;
+    m_current = oldest;
+    if (m_hasFreePoints) m_current->position = m_last->position;  // same sizes: no allocation
     m_beforeAngle = m_lastAngle;
     m_haveBefore = m_haveLast;
     m_lastAngle = angle;
@@ -117,20 +184,20 @@ private:
   }
 
   PoseReport solveSample(double angle) {
-    if (!m_haveLast) return solve(angle, m_request, m_current);
-    const BranchGuide keep{m_last.branchSign, {}};
-    PoseReport report = solve(angle, m_request, m_current, keep);
+    if (!m_haveLast) return solve(angle, m_request, *m_current);
+    const BranchGuide keep{m_last->branchSign, {}};
+    PoseReport report = solve(angle, m_request, *m_current, keep);
     if (report.status == PoseStatus::NotAssemblable ||
-        !branchAmbiguous(m_mech, m_scope, m_lastAngle, m_last, angle, m_current))
+        !branchAmbiguous(m_mech, m_dyads, m_lastAngle, *m_last, angle, *m_current))
       return report;
-    const Eigen::Vector2d* before = m_haveBefore ? m_before.position.data() : nullptr;
-    if (!refine(0, m_lastAngle, m_last, m_beforeAngle, before, angle, scratch(0))) {
+    const Eigen::Vector2d* before = m_haveBefore ? m_before->position.data() : nullptr;
+    if (!refine(0, m_lastAngle, *m_last, m_beforeAngle, before, angle, scratch(0))) {
       // The path leaves the assemblable region between two samples: start afresh here.
-      return solve(angle, m_request, m_current);
+      return solve(angle, m_request, *m_current);
     }
     const BranchGuide tracked{m_scratch[0].branchSign, {}};
-    m_current.position = m_scratch[0].position;  // free points start from the tracked solution
-    return solve(angle, m_request, m_current, tracked);
+    m_current->position = m_scratch[0].position;  // free points start from the tracked solution
+    return solve(angle, m_request, *m_current, tracked);
   }
 
   // Positions at angle b continuing from pose `a` at angle aAngle; halves the step while a
@@ -142,7 +209,7 @@ private:
     out.assembled = true;
     const BranchGuide keep{a.branchSign, {}};
     if (solve(b, kPositionsOnly, out, keep).status == PoseStatus::NotAssemblable) return false;
-    if (!branchAmbiguous(m_mech, m_scope, aAngle, a, b, out)) return true;
+    if (!branchAmbiguous(m_mech, m_dyads, aAngle, a, b, out)) return true;
     if (std::abs(b - aAngle) <= kMinRefineStep || depth == kMaxRefineDepth) {
       if (before == nullptr) return true;
       const double ratio = (b - aAngle) / (aAngle - beforeAngle);
@@ -158,40 +225,6 @@ private:
     return refine(depth + 1, mid, midPose, aAngle, a.position.data(), b, out);
   }
 
-  // Every column gets a value at every sample (the columns are reused between sweeps, so a
-  // sample left unwritten would show the previous sweep's numbers): rates are 0 where the
-  // pose is singular.
-  void store(std::size_t j, bool rates) {
-    const bool velocities = m_request.velocities;
-    const bool accelerations = m_request.accelerations;
-    for (std::size_t i = 0; i < m_mech.points.size(); ++i) {
-      if (m_scope.reportPoint[i] == 0) continue;
-      m_out.position[i][j] = m_current.position[i];
-      if (velocities) m_out.velocity[i][j] = rates ? m_current.velocity[i] : Eigen::Vector2d::Zero();
-      if (accelerations) m_out.acceleration[i][j] = rates ? m_current.acceleration[i] : Eigen::Vector2d::Zero();
-      if (!m_out.transmissionAngle[i].empty()) m_out.transmissionAngle[i][j] = m_current.transmissionAngle[i];
-    }
-    for (std::size_t k = 0; k < m_mech.links.size(); ++k) {
-      if (m_scope.reportLink[k] == 0) continue;
-      const double raw = m_current.linkAngle[k];
-      m_out.linkAngle[k][j] = m_haveAnyAngle ? m_lastLinkAngle(k) + wrapAngle(raw - m_lastLinkAngle(k)) : raw;
-      if (velocities) m_out.linkOmega[k][j] = rates ? m_current.linkOmega[k] : 0.0;
-      if (accelerations) m_out.linkAlpha[k][j] = rates ? m_current.linkAlpha[k] : 0.0;
-    }
-    m_lastStored = j;
-    m_haveAnyAngle = true;
-  }
-
-  // A sample that cannot be assembled: zeros in every column (positions are not valid there).
-  void storeNothing(std::size_t j) {
-    for (auto* columns : {&m_out.position, &m_out.velocity, &m_out.acceleration})
-      for (auto& column : *columns)
-        if (!column.empty()) column[j].setZero();
-    for (auto* columns : {&m_out.linkAngle, &m_out.linkOmega, &m_out.linkAlpha, &m_out.transmissionAngle})
-      for (auto& column : *columns)
-        if (!column.empty()) column[j] = 0.0;
-  }
-
   // Refinement's poses, sized on first use: most sweeps never refine deeper than a few levels,
   // so the 41 levels' storage is not allocated up front.
   Pose& scratch(int depth) {
@@ -200,19 +233,22 @@ private:
     return p;
   }
 
-  double m_lastLinkAngle(std::size_t k) const { return m_out.linkAngle[k][m_lastStored]; }
-
   const Mechanism& m_mech;
   const SweepSpec& m_spec;
   const SolveRequest& m_request;
   const SolveScope& m_scope;
   SweepResult& m_out;
-  Pose m_current, m_last, m_before;
+  SampleWriter m_writer;
+  std::vector<std::size_t> m_dyads;
+  Pose m_poses[3];
+  std::array<Pose, kMaxBlock> m_block;
+  Pose* m_current = &m_poses[0];
+  Pose* m_last = &m_poses[1];
+  Pose* m_before = &m_poses[2];
   std::vector<Pose> m_scratch;
   std::vector<Eigen::Vector2d> m_predicted;
   double m_lastAngle = 0.0, m_beforeAngle = 0.0;
-  bool m_haveLast = false, m_haveBefore = false, m_haveAnyAngle = false, m_hasFreePoints = false;
-  std::size_t m_lastStored = 0;
+  bool m_haveLast = false, m_haveBefore = false, m_hasFreePoints = false;
 };
 
 // Sizes `columns` to one column of n samples per selected entry and an empty one for the

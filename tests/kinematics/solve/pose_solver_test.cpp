@@ -2,9 +2,13 @@
 // the thesis's closed-form loop equations (with the α4 typo fixed), the request flags, the
 // branch convention and guide, points on the coupler, and the failure reports.
 
+#include "kinematics/model/examples.h"
 #include "kinematics/model/fourbar.h"
+#include "kinematics/model/shaper.h"
+#include "kinematics/model/sixbar.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
+#include "kinematics/solve/solve_scope.h"
 
 #include "tests/support/approx.h"
 
@@ -245,4 +249,43 @@ TEST_CASE("solvePose rejects a non-finite driver state or an invalid mechanism",
   const auto structure = solvePose(broken, {0.0, 1.0, 0.0});
   REQUIRE_FALSE(structure.ok());
   CHECK(structure.error().code == ErrorCode::InvalidStructure);
+}
+
+// solveBlockInto runs each step across the block before the next; the poses must come out
+// exactly as solvePoseInto gives them one by one, whatever the linkage, and a pose that fails
+// must not disturb the others.
+TEST_CASE("solveBlockInto gives solvePoseInto's numbers pose by pose", "[pose_solver]") {
+  const auto fourBar = makeFourBar(kThesis, Branch::Open);
+  const auto shaper = makeShaper(kSeedShaper);  // an RRP slider on a moving guide, points on links
+  const auto sixBar = makeSixBar(kWattIISixBar);
+  const auto tripleRocker = makeFourBar({60.0, 50.0, 35.0, 40.0}, Branch::Open);  // fails past ±85°
+  REQUIRE((fourBar.ok() && shaper.ok() && sixBar.ok() && tripleRocker.ok()));
+  for (const Mechanism* m : {&*fourBar, &*shaper, &*sixBar, &*tripleRocker}) {
+    const SolveScope scope = scopeOf(*m, {});
+    std::vector<DriverState> drivers;
+    std::vector<Pose> block(kMaxBlock);
+    std::vector<Pose*> poses;
+    for (std::size_t b = 0; b < kMaxBlock; ++b) {
+      drivers.push_back({degToRad(-40.0 + 20.0 * static_cast<double>(b)), 1.5, -0.5});
+      preparePose(*m, block[b]);
+      poses.push_back(&block[b]);
+    }
+    std::vector<PoseReport> reports(kMaxBlock);
+    solveBlockInto(*m, drivers, {}, poses, {}, scope, reports);
+    std::size_t failed = 0;
+    for (std::size_t b = 0; b < kMaxBlock; ++b) {
+      CAPTURE(b);
+      Pose alone;
+      preparePose(*m, alone);
+      const PoseReport expected = solvePoseInto(*m, drivers[b], {}, alone);
+      CHECK(reports[b] == expected);
+      if (expected.status == PoseStatus::NotAssemblable) {
+        ++failed;
+        continue;
+      }
+      CHECK(block[b] == alone);
+    }
+    // The triple-rocker's block runs from −40° to 100°: 100° cannot be assembled.
+    CHECK(failed == (m == &*tripleRocker ? 1U : 0U));
+  }
 }

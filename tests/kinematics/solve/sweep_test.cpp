@@ -142,6 +142,8 @@ TEST_CASE("sweep reports the samples it could not assemble", "[sweep][errors]") 
     CAPTURE(j);
     const bool inside = j <= 85 || j >= 275;
     CHECK(r->assembled(j) == inside);
+    // Ground pivots are written once per sweep, not per sample: still 0 where nothing assembles.
+    CHECK(r->position[fourbar::kO4.index][j] == (inside ? Eigen::Vector2d(60.0, 0.0) : Eigen::Vector2d::Zero()));
     if (!inside) {
       CHECK(r->report[j].status == PoseStatus::NotAssemblable);
       CHECK(r->report[j].culprit == fourbar::kC);

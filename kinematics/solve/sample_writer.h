@@ -1,0 +1,60 @@
+#pragma once
+// Copies one solved pose into a sweep's columns (sweep.h). The columns a request selected are
+// found once per sweep and kept as raw pointers, so a sample costs one copy per stored
+// quantity: a four-bar's full sample is 21 values, and looking each column up through the
+// result's nested vectors every time cost as much as solving the dyad.
+//
+// A ground pivot's columns are the same at every sample (its position where the linkage
+// assembles, zero velocity and acceleration), so they are filled once, by finish().
+//
+// Link angles are unwrapped on the way in: each stored angle is the previous stored angle
+// plus the wrapped difference, so a column is continuous through ±180°.
+
+#include "kinematics/model/mechanism.h"
+#include "kinematics/solve/pose.h"
+#include "kinematics/solve/sweep.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace linkwright::kinematics {
+
+class SampleWriter {
+public:
+  /// Binds to `out`'s columns as allocated: call after they are sized, and do not resize them
+  /// while the writer is used.
+  SampleWriter(const Mechanism& mechanism, SweepResult& out);
+
+  /// Writes sample j from `pose`. Rate columns get 0 unless `rates` (a singular pose).
+  void write(std::size_t j, const Pose& pose, bool rates);
+
+  /// A sample that could not be assembled: 0 in every column (its positions are not valid).
+  void writeNothing(std::size_t j);
+
+  /// Fills the ground pivots' columns, once every sample's report is in `out`.
+  void finish(const Mechanism& mechanism, SweepResult& out) const;
+
+private:
+  struct PointSlot {
+    std::size_t point;
+    Eigen::Vector2d* position;
+    Eigen::Vector2d* velocity;      // null: not requested
+    Eigen::Vector2d* acceleration;  // null: not requested
+    double* transmission;           // null: not requested, or not a dyad
+  };
+  struct LinkSlot {
+    std::size_t link;
+    double* angle;
+    double* omega;  // null: not requested
+    double* alpha;  // null: not requested
+  };
+
+  std::vector<PointSlot> m_points;  // moving points
+  std::vector<PointSlot> m_ground;  // ground pivots
+  std::vector<LinkSlot> m_links;
+  bool m_haveAngle = false;  // a sample has been written: later angles continue from it
+  std::size_t m_lastWritten = 0;
+};
+
+} // namespace linkwright::kinematics
