@@ -2,7 +2,6 @@
 
 #include "ui/plots/plot_area_alignment.h"
 #include "ui/plots/plot_quantity.h"
-#include "ui/plots/series_visibility.h"
 
 #include <QChart>
 #include <QLegend>
@@ -16,7 +15,6 @@
 namespace linkwright::ui {
 
 namespace {
-constexpr qreal kCurveWidth = 2.0;
 QPen cursorPen() { return QPen(QColor(0xc0, 0x20, 0x20), 1.5); }
 } // namespace
 
@@ -48,34 +46,15 @@ ForceChartView::~ForceChartView() = default;
 
 void ForceChartView::setCurves(const std::vector<Curve>& curves) {
   const bool same = curves.size() == m_lines.size() &&
-                    std::equal(curves.begin(), curves.end(), m_lines.begin(), [](const Curve& a, const Line& b) { return a == b.curve; });
+                    std::equal(curves.begin(), curves.end(), m_lines.begin(),
+                               [](const Curve& a, const SegmentedLine& b) { return a == b.style(); });
   if (same) return;
-  for (Line& line : m_lines)
-    for (QLineSeries* segment : line.segments) {
-      chart()->removeSeries(segment);
-      delete segment;
-    }
+  for (SegmentedLine& line : m_lines) line.removeFromChart();
   m_lines.clear();
   m_lines.reserve(curves.size());
-  for (const Curve& c : curves) {
-    m_lines.push_back({c, {}});
-    addSegment(m_lines.back());
-  }
+  for (const Curve& c : curves) m_lines.emplace_back(chart(), m_xAxis, m_yAxis, c);
   chart()->legend()->setVisible(curves.size() > 1);
   m_cursor->raise();
-}
-
-QLineSeries* ForceChartView::addSegment(Line& line) {
-  auto* segment = new QLineSeries;
-  segment->setObjectName(line.curve.key);
-  segment->setName(line.curve.name);
-  segment->setPen(QPen(line.curve.color, kCurveWidth));
-  chart()->addSeries(segment);
-  segment->attachAxis(m_xAxis);
-  segment->attachAxis(m_yAxis);
-  line.segments.append(segment);
-  setSeriesShown(chart(), segment, false, false);
-  return segment;
 }
 
 void ForceChartView::setData(const std::vector<SeriesRuns>& runs, const QString& valueTitle, AngleUnit unit,
@@ -86,7 +65,7 @@ void ForceChartView::setData(const std::vector<SeriesRuns>& runs, const QString&
     const SeriesRuns& r = i < runs.size() ? runs[i] : kNone;
     for (const QList<QPointF>& run : r.runs)
       for (const QPointF& p : run) m_values.push_back(p.y());
-    updateLine(m_lines[i], r);
+    m_lines[i].setRuns(r, true);
   }
   // Forces grow without bound next to a toggle: such spikes run off the chart rather than
   // squash every other value flat.
@@ -108,19 +87,6 @@ void ForceChartView::setData(const std::vector<SeriesRuns>& runs, const QString&
   m_cursor->setYSpan(y.min, y.max);
 }
 
-void ForceChartView::updateLine(Line& line, const SeriesRuns& runs) {
-  while (line.segments.size() < runs.runs.size()) addSegment(line);
-  for (qsizetype i = 0; i < line.segments.size(); ++i) {
-    QLineSeries* segment = line.segments[i];
-    if (i < runs.runs.size())
-      segment->replace(runs.runs[i]);
-    else if (segment->count() > 0)
-      segment->replace(QList<QPointF>{});
-    // The first segment stays visible, even empty, so the legend names the curve.
-    setSeriesShown(chart(), segment, i == 0 || i < runs.runs.size(), i == 0);
-  }
-}
-
 void ForceChartView::resizeEvent(QResizeEvent* event) {
   QChartView::resizeEvent(event);
   emit resized();
@@ -129,7 +95,7 @@ void ForceChartView::resizeEvent(QResizeEvent* event) {
 void ForceChartView::setCursorX(std::optional<double> x) { m_cursor->setX(x); }
 
 QList<QLineSeries*> ForceChartView::segments(std::size_t index) const {
-  return index < m_lines.size() ? m_lines[index].segments : QList<QLineSeries*>{};
+  return index < m_lines.size() ? m_lines[index].segments() : QList<QLineSeries*>{};
 }
 
 } // namespace linkwright::ui

@@ -6,11 +6,11 @@
 
 #include "ui/plots/angle_unit.h"
 #include "ui/plots/axis_range.h"
+#include "ui/plots/segmented_line.h"
 #include "ui/plots/series_data.h"
 #include "ui/plots/vertical_marker.h"
 
 #include <QChartView>
-#include <QColor>
 #include <QList>
 #include <QString>
 
@@ -26,13 +26,8 @@ namespace linkwright::ui {
 class ForceChartView : public QChartView {
   Q_OBJECT
 public:
-  /// One line of the chart.
-  struct Curve {
-    QString key;   ///< object name of its series ("torque", "joint_B")
-    QString name;  ///< legend text
-    QColor color;
-    bool operator==(const Curve&) const = default;
-  };
+  /// One line of the chart: its series' object name ("torque", "joint_B"), legend text, colour.
+  using Curve = SegmentedLine::Style;
 
   /// A chart titled `title`; `fromZero` keeps 0 on the value axis (magnitudes).
   explicit ForceChartView(const QString& title, bool fromZero, QWidget* parent = nullptr);
@@ -62,17 +57,10 @@ protected:
   void resizeEvent(QResizeEvent* event) override;
 
 private:
-  struct Line {
-    Curve curve;
-    QList<QLineSeries*> segments;
-  };
-  QLineSeries* addSegment(Line& line);
-  void updateLine(Line& line, const SeriesRuns& runs);
-
   bool m_fromZero;
   QValueAxis* m_xAxis;
   QValueAxis* m_yAxis;
-  std::vector<Line> m_lines;
+  std::vector<SegmentedLine> m_lines;
   std::unique_ptr<VerticalMarker> m_cursor;
   std::vector<double> m_values;  // y values of one update, reused
 };

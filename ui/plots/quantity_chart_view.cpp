@@ -1,7 +1,6 @@
 #include "ui/plots/quantity_chart_view.h"
 
 #include "ui/plots/plot_area_alignment.h"
-#include "ui/plots/series_visibility.h"
 
 #include <QChart>
 #include <QLineSeries>
@@ -13,8 +12,6 @@
 
 namespace linkwright::ui {
 namespace {
-
-constexpr qreal kCurveWidth = 2.0;
 
 QPen cursorPen() { return QPen(QColor(0xc0, 0x20, 0x20), 1.5); }
 
@@ -63,34 +60,18 @@ void QuantityChartView::setCurves(const std::vector<PlotCurve>& curves) {
   const bool same = mine.size() == m_curves.size() &&
                     std::equal(mine.begin(), mine.end(), m_curves.begin(), [](const PlotCurve& a, const Curve& b) { return a == b.curve; });
   if (same) return;
-  for (Curve& curve : m_curves)
-    for (QLineSeries* segment : curve.segments) {
-      chart()->removeSeries(segment);
-      delete segment;
-    }
+  for (Curve& curve : m_curves) curve.line.removeFromChart();
   m_curves.clear();
   m_curves.reserve(mine.size());
   for (const PlotCurve& c : mine) {
-    m_curves.push_back({c, {}});
-    addSegment(m_curves.back());
+    const PlotQuantity q = c.quantity;
+    auto hover = [this, q](QLineSeries* segment) {
+      connect(segment, &QXYSeries::hovered, this,
+              [this, q, segment](const QPointF& p, bool inside) { onSegmentHovered(q, segment, p, inside); });
+    };
+    m_curves.push_back({c, SegmentedLine(chart(), m_xAxis, m_yAxis, {c.key, c.name, c.color}, hover)});
   }
   m_cursor->raise();  // over the curves, as before they were replaced
-}
-
-QLineSeries* QuantityChartView::addSegment(Curve& curve) {
-  auto* segment = new QLineSeries;
-  segment->setObjectName(curve.curve.key);
-  segment->setName(curve.curve.name);
-  segment->setPen(QPen(curve.curve.color, kCurveWidth));
-  chart()->addSeries(segment);
-  segment->attachAxis(m_xAxis);
-  segment->attachAxis(m_yAxis);
-  const PlotQuantity q = curve.curve.quantity;
-  connect(segment, &QXYSeries::hovered, this,
-          [this, q, segment](const QPointF& p, bool inside) { onSegmentHovered(q, segment, p, inside); });
-  curve.segments.append(segment);
-  setSeriesShown(chart(), segment, false, false);
-  return segment;
 }
 
 void QuantityChartView::setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection,
@@ -104,7 +85,7 @@ void QuantityChartView::setData(const kinematics::SweepResult& sweep, const Quan
       m_runs.runs.clear();
     for (const QList<QPointF>& run : m_runs.runs)
       for (const QPointF& p : run) m_values.push_back(p.y());
-    updateCurve(curve, shown);
+    curve.line.setRuns(m_runs, shown);
   }
   // Spikes next to a toggle would squash every other value flat: they run off the chart
   // instead, and the hover read-out still gives their value.
@@ -118,19 +99,6 @@ void QuantityChartView::setData(const kinematics::SweepResult& sweep, const Quan
   m_xAxis->setTickInterval(x.step);
   m_xAxis->setTitleText(crankAxisTitle(unit));
   m_cursor->setYSpan(m_valueRange.min, m_valueRange.max);
-}
-
-void QuantityChartView::updateCurve(Curve& curve, bool shown) {
-  while (curve.segments.size() < m_runs.runs.size()) addSegment(curve);
-  for (qsizetype i = 0; i < curve.segments.size(); ++i) {
-    QLineSeries* segment = curve.segments[i];
-    if (i < m_runs.runs.size())
-      segment->replace(m_runs.runs[i]);
-    else if (segment->count() > 0)
-      segment->replace(QList<QPointF>{});
-    // The first segment stays visible while selected, even empty, so the legend names it.
-    setSeriesShown(chart(), segment, shown && (i == 0 || i < m_runs.runs.size()), i == 0);
-  }
 }
 
 void QuantityChartView::applyAxis(QValueAxis* axis, const AxisRange& range) {
@@ -148,7 +116,7 @@ void QuantityChartView::setCursorX(std::optional<double> x) { m_cursor->setX(x);
 
 QList<QLineSeries*> QuantityChartView::segments(PlotQuantity quantity) const {
   for (const Curve& curve : m_curves)
-    if (curve.curve.quantity == quantity) return curve.segments;
+    if (curve.curve.quantity == quantity) return curve.line.segments();
   return {};
 }
 

@@ -5,6 +5,7 @@
 
 #include "ui/plots/axis_range.h"
 #include "ui/plots/plot_quantity.h"
+#include "ui/plots/segmented_line.h"
 #include "ui/plots/series_data.h"
 #include "ui/plots/vertical_marker.h"
 
@@ -61,11 +62,9 @@ protected:
 private:
   struct Curve {
     PlotCurve curve;
-    QList<QLineSeries*> segments;
+    SegmentedLine line;
   };
 
-  QLineSeries* addSegment(Curve& curve);
-  void updateCurve(Curve& curve, bool shown);
   void applyAxis(QValueAxis* axis, const AxisRange& range);
   void onSegmentHovered(PlotQuantity quantity, const QLineSeries* segment, QPointF point, bool inside);
 
