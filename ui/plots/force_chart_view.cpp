@@ -1,6 +1,6 @@
 #include "ui/plots/force_chart_view.h"
 
-#include "ui/plots/plot_area_alignment.h"
+#include "ui/plots/crank_angle_chart.h"
 #include "ui/plots/plot_quantity.h"
 
 #include <QChart>
@@ -14,32 +14,12 @@
 
 namespace linkwright::ui {
 
-namespace {
-QPen cursorPen() { return QPen(QColor(0xc0, 0x20, 0x20), 1.5); }
-} // namespace
-
-void applyAxisRange(QValueAxis* axis, const AxisRange& range) {
-  axis->setRange(range.min, range.max);
-  axis->setTickCount(range.tickCount);
-  axis->setLabelFormat(QStringLiteral("%.%1f").arg(range.decimals));
-}
-
 ForceChartView::ForceChartView(const QString& title, bool fromZero, QWidget* parent)
     : QChartView(parent), m_fromZero(fromZero), m_xAxis(new QValueAxis), m_yAxis(new QValueAxis) {
-  auto* chart = new QChart;
-  chart->setTitle(title);
-  // The data changes at frame rate while dragging; animations would lag behind it.
-  chart->setAnimationOptions(QChart::NoAnimation);
-  chart->setMargins(kBaseChartMargins);
-  chart->setBackgroundRoundness(0);
-  chart->legend()->setAlignment(Qt::AlignRight);
-  chart->addAxis(m_xAxis, Qt::AlignBottom);
-  chart->addAxis(m_yAxis, Qt::AlignLeft);
-  m_xAxis->setTickType(QValueAxis::TicksDynamic);
-  m_xAxis->setTickAnchor(0.0);
+  QChart* chart = makeCrankAngleChart(title, m_xAxis, m_yAxis);
   setChart(chart);
   setRenderHint(QPainter::Antialiasing);
-  m_cursor = std::make_unique<VerticalMarker>(chart, m_xAxis, m_yAxis, cursorPen(), QStringLiteral("cursor"));
+  m_cursor = makeCrankCursor(chart, m_xAxis, m_yAxis);
 }
 
 ForceChartView::~ForceChartView() = default;

@@ -65,7 +65,5 @@ private:
   std::vector<double> m_values;  // y values of one update, reused
 };
 
-/// Applies a rounded range to a value axis (bounds, ticks, label format).
-void applyAxisRange(QValueAxis* axis, const AxisRange& range);
 
 } // namespace linkwright::ui

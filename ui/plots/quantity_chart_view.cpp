@@ -1,6 +1,6 @@
 #include "ui/plots/quantity_chart_view.h"
 
-#include "ui/plots/plot_area_alignment.h"
+#include "ui/plots/crank_angle_chart.h"
 
 #include <QChart>
 #include <QLineSeries>
@@ -12,8 +12,6 @@
 
 namespace linkwright::ui {
 namespace {
-
-QPen cursorPen() { return QPen(QColor(0xc0, 0x20, 0x20), 1.5); }
 
 QPointF nearestByX(const QList<QPointF>& points, qreal x) {
   QPointF best = points.isEmpty() ? QPointF(x, 0.0) : points.front();
@@ -32,23 +30,12 @@ QPointF nearestByX(const QList<QPointF>& points, qreal x) {
 
 QuantityChartView::QuantityChartView(QuantityKind kind, const QString& title, QWidget* parent)
     : QChartView(parent), m_kind(kind), m_xAxis(new QValueAxis), m_yAxis(new QValueAxis) {
-  auto* chart = new QChart;
-  chart->setTitle(title);
-  // Animations would make every edit and drag lag behind; the data changes at frame rate.
-  chart->setAnimationOptions(QChart::NoAnimation);
-  chart->setMargins(kBaseChartMargins);
-  chart->setBackgroundRoundness(0);
-  chart->legend()->setAlignment(Qt::AlignRight);
-  chart->addAxis(m_xAxis, Qt::AlignBottom);
-  chart->addAxis(m_yAxis, Qt::AlignLeft);
-  m_xAxis->setTickType(QValueAxis::TicksDynamic);
-  m_xAxis->setTickAnchor(0.0);
+  QChart* chart = makeCrankAngleChart(title, m_xAxis, m_yAxis);
   setChart(chart);  // the view owns the chart, the chart its axes and series
   setRenderHint(QPainter::Antialiasing);
   // OpenGL stays off (the default): a few 721-point lines draw well under a frame in
   // software, and the OpenGL path cannot be exported as SVG.
-
-  m_cursor = std::make_unique<VerticalMarker>(chart, m_xAxis, m_yAxis, cursorPen(), QStringLiteral("cursor"));
+  m_cursor = makeCrankCursor(chart, m_xAxis, m_yAxis);
 }
 
 QuantityChartView::~QuantityChartView() = default;
@@ -92,19 +79,13 @@ void QuantityChartView::setData(const kinematics::SweepResult& sweep, const Quan
   constexpr double kNone = std::numeric_limits<double>::infinity();
   const auto [lo, hi] = m_values.empty() ? std::pair<double, double>{kNone, -kNone} : robustSpan(m_values);
   m_valueRange = niceValueRange(lo, hi);
-  applyAxis(m_yAxis, m_valueRange);
+  applyAxisRange(m_yAxis, m_valueRange);
   m_yAxis->setTitleText(valueAxisTitle(m_kind, unit, lengthUnit));
   const AxisRange x = crankAxisRange(fromDeg, toDeg, unit);
-  applyAxis(m_xAxis, x);
+  applyAxisRange(m_xAxis, x);
   m_xAxis->setTickInterval(x.step);
   m_xAxis->setTitleText(crankAxisTitle(unit));
   m_cursor->setYSpan(m_valueRange.min, m_valueRange.max);
-}
-
-void QuantityChartView::applyAxis(QValueAxis* axis, const AxisRange& range) {
-  axis->setRange(range.min, range.max);
-  axis->setTickCount(range.tickCount);
-  axis->setLabelFormat(QStringLiteral("%.%1f").arg(range.decimals));
 }
 
 void QuantityChartView::resizeEvent(QResizeEvent* event) {

@@ -65,7 +65,6 @@ private:
     SegmentedLine line;
   };
 
-  void applyAxis(QValueAxis* axis, const AxisRange& range);
   void onSegmentHovered(PlotQuantity quantity, const QLineSeries* segment, QPointF point, bool inside);
 
   QuantityKind m_kind;

@@ -1,0 +1,38 @@
+#include "ui/plots/crank_angle_chart.h"
+
+#include "ui/plots/plot_area_alignment.h"
+
+#include <QChart>
+#include <QLegend>
+#include <QPen>
+#include <QValueAxis>
+
+namespace linkwright::ui {
+
+QChart* makeCrankAngleChart(const QString& title, QValueAxis* xAxis, QValueAxis* yAxis) {
+  auto* chart = new QChart;
+  chart->setTitle(title);
+  // The data changes at frame rate while dragging; animations would lag behind it.
+  chart->setAnimationOptions(QChart::NoAnimation);
+  chart->setMargins(kBaseChartMargins);
+  chart->setBackgroundRoundness(0);
+  chart->legend()->setAlignment(Qt::AlignRight);
+  chart->addAxis(xAxis, Qt::AlignBottom);
+  chart->addAxis(yAxis, Qt::AlignLeft);
+  xAxis->setTickType(QValueAxis::TicksDynamic);
+  xAxis->setTickAnchor(0.0);
+  return chart;
+}
+
+std::unique_ptr<VerticalMarker> makeCrankCursor(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis) {
+  return std::make_unique<VerticalMarker>(chart, xAxis, yAxis, QPen(QColor(0xc0, 0x20, 0x20), 1.5),
+                                          QStringLiteral("cursor"));
+}
+
+void applyAxisRange(QValueAxis* axis, const AxisRange& range) {
+  axis->setRange(range.min, range.max);
+  axis->setTickCount(range.tickCount);
+  axis->setLabelFormat(QStringLiteral("%.%1f").arg(range.decimals));
+}
+
+} // namespace linkwright::ui

@@ -1,0 +1,28 @@
+#pragma once
+// What the kinematics and force charts share: a chart of values against crank angle (title,
+// no animation, the common margins, legend on the right, a value axis below with ticks
+// anchored at 0° and one at the left), its red crank cursor, and the rounded axis ranges.
+
+#include "ui/plots/axis_range.h"
+#include "ui/plots/vertical_marker.h"
+
+#include <QString>
+
+#include <memory>
+
+class QChart;
+class QValueAxis;
+
+namespace linkwright::ui {
+
+/// A new chart titled `title` holding `xAxis` (crank angle) and `yAxis`; the caller's view
+/// takes ownership with setChart().
+QChart* makeCrankAngleChart(const QString& title, QValueAxis* xAxis, QValueAxis* yAxis);
+
+/// The crank-angle cursor of such a chart.
+std::unique_ptr<VerticalMarker> makeCrankCursor(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis);
+
+/// Applies a rounded range to a value axis (bounds, ticks, label format).
+void applyAxisRange(QValueAxis* axis, const AxisRange& range);
+
+} // namespace linkwright::ui
