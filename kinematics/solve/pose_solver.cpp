@@ -10,8 +10,8 @@
 
 #include <algorithm>
 #include <array>
-#include <optional>
 #include <cmath>
+#include <optional>
 
 namespace linkwright::kinematics {
 namespace {
@@ -383,6 +383,8 @@ void preparePose(const Mechanism& m, Pose& pose) {
   pose.linkOmega.assign(k, 0.0);
   pose.linkAlpha.assign(k, 0.0);
   pose.assembled = false;
+  for (std::size_t i = 0; i < n; ++i)
+    if (const auto* g = std::get_if<GroundPoint>(&m.points[i].definition)) pose.position[i] = g->position;
 }
 
 PoseReport solvePoseInto(const Mechanism& m, const DriverState& driver, const SolveRequest& request,

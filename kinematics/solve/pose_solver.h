@@ -23,12 +23,14 @@ struct BranchGuide {
   std::span<const Eigen::Vector2d> predicted;
 };
 
-/// Sizes `pose` for `mechanism` (call once; solvePoseInto then never allocates).
+/// Sizes `pose` for `mechanism` (call once; solvePoseInto then never allocates) and places
+/// its ground pivots, which a scoped solve (solve_scope.h) does not touch again.
 void preparePose(const Mechanism& mechanism, Pose& pose);
 
 /// Solves into a prepared pose. Assumes checkMechanism passed. Never throws or allocates.
 /// With a `scope` (built from request.only by scopeOf), only the points and links in it are
-/// solved; entries outside it keep whatever they held. Without one, everything is solved.
+/// solved (the ground pivots are where preparePose put them); entries outside it keep whatever
+/// they held. Without one, everything is solved.
 PoseReport solvePoseInto(const Mechanism& mechanism, const DriverState& driver,
                          const SolveRequest& request, Pose& pose, const BranchGuide& guide = {},
                          const SolveScope* scope = nullptr);

@@ -101,7 +101,7 @@ SolveScope scopeOf(const Mechanism& m, const Selection& selection) {
     closure.needDefinitionOf(i);
   }
   for (std::size_t i = 0; i < m.points.size(); ++i) {
-    if (!s.solvePoint[i]) continue;
+    if (!s.solvePoint[i] || std::holds_alternative<GroundPoint>(m.points[i].definition)) continue;
     s.pointSteps.push_back(PointId{i});
     if (isFreePoint(m, PointId{i})) i = freeGroupEnd(m, i) - 1;
   }

@@ -32,7 +32,9 @@ struct SolveScope {
   std::vector<unsigned char> solveLink;    ///< per link: 1 if its angle (and rates) are computed
   std::vector<unsigned char> reportPoint;  ///< per point: 1 if selected (a result column)
   std::vector<unsigned char> reportLink;   ///< per link: 1 if selected
-  std::vector<PointId> pointSteps;         ///< the points solved, in order; a free group by its first point
+  /// The points solved, in order; a free group by its first point. Not the ground pivots:
+  /// preparePose places them, and they never move.
+  std::vector<PointId> pointSteps;
   std::vector<LinkStep> linkSteps;         ///< the links solved, in order
 };
 

@@ -8,6 +8,7 @@
 #include "kinematics/model/sixbar.h"
 #include "kinematics/model/sixbar_newton.h"
 #include "kinematics/model/units.h"
+#include "kinematics/solve/pose_solver.h"
 #include "kinematics/solve/solve_scope.h"
 #include "kinematics/solve/sweep.h"
 
@@ -33,6 +34,21 @@ TEST_CASE("no selection solves and reports everything", "[sweep][scope]") {
   CHECK(s.reportPoint == Marks(m.points.size(), 1));
   CHECK(s.solveLink == Marks(m.links.size(), 1));
   CHECK(s.reportLink == Marks(m.links.size(), 1));
+}
+
+TEST_CASE("the solver's steps leave out the ground pivots, which a prepared pose holds", "[sweep][scope]") {
+  const Mechanism m = wattII();  // O2, O4, B, C, P, O6, E: O2, O4 and O6 are ground pivots
+  const SolveScope s = scopeOf(m, Selection{});
+  std::vector<std::size_t> steps;
+  for (const PointId p : s.pointSteps) steps.push_back(p.index);
+  CHECK(steps == std::vector<std::size_t>{2, 3, 4, 6});
+  Pose pose;
+  preparePose(m, pose);
+  for (const std::size_t i : {0, 1, 5}) CHECK(pose.position[i] == std::get<GroundPoint>(m.points[i].definition).position);
+  // So a scoped solve of a prepared pose places them all the same.
+  REQUIRE(solvePoseInto(m, {0.3, 1.0, 0.0}, {}, pose, {}, &s).status == PoseStatus::Ok);
+  const Pose whole = solvePose(m, {0.3, 1.0, 0.0}).value();
+  for (std::size_t i = 0; i < m.points.size(); ++i) CHECK(pose.position[i] == whole.position[i]);
 }
 
 TEST_CASE("a six-bar's base rocker needs only the base four-bar", "[sweep][scope]") {
