@@ -1,9 +1,10 @@
 // Speed of the kinematics core (issue 5): the cost per sample of a sweep at each level of a
 // request (positions; + ω and v; + α and a; + transmission angles; + a coupler point's path;
-// one link only; + forces) for the four-bar, the slider-crank, the shaper and two six-bars, sweeps of 36 to 1,000,000 samples, one pose solved into a
-// prepared Pose, and a hand-written closed-form four-bar loop as the baseline the core is
-// judged against. Names read Mechanism/Level/Samples; one item is one sample. docs/benchmarks.md
-// says how to run it and what was measured.
+// one link only; + forces) for the four-bar, the slider-crank, the shaper and two six-bars,
+// sweeps of 36 to 1,000,000 samples, one pose solved into a prepared Pose, and hand-written
+// closed-form four-bar loops as the baseline the core is judged against. Names read
+// Mechanism/Level/Samples; one item is one sample. docs/benchmarks.md says how to run it and
+// what was measured.
 //
 // Allocations are counted by replacing the global operator new: each benchmark reports
 // `allocs_per_sample` and `allocs_per_call` over its timed loop.
@@ -260,10 +261,20 @@ void poseBenchmark(benchmark::State& state, const Mechanism& mechanism, double o
 // vectors instead of sines of angle differences). No branch tracking, no checks, open branch.
 struct HandWrittenColumns {
   std::vector<double> theta3, theta4, omega3, omega4, alpha3, alpha4;
-  explicit HandWrittenColumns(std::size_t n)
-      : theta3(n), theta4(n), omega3(n), omega4(n), alpha3(n), alpha4(n) {}
+  // The rest of what FourBar/Full stores, filled only by the "everything" variant: the crank's
+  // angle and rates, and the moving joints' positions, velocities and accelerations.
+  std::vector<double> theta2, omega2, alpha2;
+  std::vector<Eigen::Vector2d> b, vB, aB, c, vC, aC;
+  HandWrittenColumns(std::size_t n, bool everything)
+      : theta3(n), theta4(n), omega3(n), omega4(n), alpha3(n), alpha4(n) {
+    if (!everything) return;
+    for (auto* column : {&theta2, &omega2, &alpha2}) column->resize(n);
+    for (auto* column : {&b, &vB, &aB, &c, &vC, &aC}) column->resize(n);
+  }
 };
 
+// Everything: also store what FourBar/Full stores beyond the six output columns.
+template <bool Everything>
 void handWrittenFourBar(const FourBarLengths& l, double from, double to, double omega2, double alpha2,
                         HandWrittenColumns& out) {
   const std::size_t n = out.theta3.size();
@@ -299,41 +310,75 @@ void handWrittenFourBar(const FourBarLengths& l, double from, double to, double 
     const double ky = a * (alpha2 * c2 - omega2 * omega2 * s2) - b * w3 * w3 * e3y + c * w4 * w4 * e4y;
     // With i·e = (−ey, ex): (i·e3)·e4 = cross34, (i·e4)·e3 = −cross34, (i·e)·e = 0, so
     // dotting with e4 gives b·α3·cross34 = −k·e4, and with e3, c·α4·cross34 = −k·e3.
-    out.alpha3[j] = -(kx * e4x + ky * e4y) / (b * cross34);
-    out.alpha4[j] = -(kx * e3x + ky * e3y) / (c * cross34);
+    const double a3 = -(kx * e4x + ky * e4y) / (b * cross34);
+    const double a4 = -(kx * e3x + ky * e3y) / (c * cross34);
+    out.alpha3[j] = a3;
+    out.alpha4[j] = a4;
+    if constexpr (Everything) {
+      out.theta2[j] = theta2;
+      out.omega2[j] = omega2;
+      out.alpha2[j] = alpha2;
+      // B = a·e2 and C = O4 + c·e4: v = ω·i·(r), a = α·i·(r) − ω²·r about the fixed pivots.
+      out.b[j] = {bx, by};
+      out.vB[j] = {-omega2 * by, omega2 * bx};
+      out.aB[j] = {-alpha2 * by - omega2 * omega2 * bx, alpha2 * bx - omega2 * omega2 * by};
+      const double rx = cx - d, ry = cy;
+      out.c[j] = {cx, cy};
+      out.vC[j] = {-w4 * ry, w4 * rx};
+      out.aC[j] = {-a4 * ry - w4 * w4 * rx, a4 * rx - w4 * w4 * ry};
+    }
   }
 }
 
+template <bool Everything>
 void handWrittenBenchmark(benchmark::State& state) {
   const auto samples = static_cast<std::size_t>(state.range(0));
-  HandWrittenColumns columns(samples);
+  HandWrittenColumns columns(samples, Everything);
   const FourBarExample& t = thesis();
   const Instruments instruments;
   for (auto _ : state) {
-    handWrittenFourBar(t.lengths, 0.0, 2.0 * kPi, t.omega, 0.5, columns);
+    handWrittenFourBar<Everything>(t.lengths, 0.0, 2.0 * kPi, t.omega, 0.5, columns);
     benchmark::DoNotOptimize(columns.alpha4.data());
+    benchmark::DoNotOptimize(columns.aC.data());
     benchmark::ClobberMemory();
   }
   instruments.report(state, state.range(0));
 }
 
-// The baseline must compute what the core computes, or the comparison means nothing.
+// The baselines must compute what the core computes, or the comparison means nothing: every
+// column the "everything" loop fills against the core's, relative to the value's size.
 bool handWrittenMatchesCore() {
   const FourBarExample& t = thesis();
   const std::size_t n = 361;
-  HandWrittenColumns hand(n);
-  handWrittenFourBar(t.lengths, 0.0, 2.0 * kPi, t.omega, 0.5, hand);
+  HandWrittenColumns hand(n, true);
+  handWrittenFourBar<true>(t.lengths, 0.0, 2.0 * kPi, t.omega, 0.5, hand);
   const auto core = sweep(makeFourBar(t.lengths, t.branch).value(), {0.0, 2.0 * kPi, n, t.omega, 0.5});
   if (!core.ok()) return false;
-  const auto coupler = fourbar::kCoupler.index, rocker = fourbar::kRocker.index;
   double worst = 0.0;
+  auto angle = [&](double h, double c) { worst = std::max(worst, std::abs(std::remainder(h - c, 2.0 * kPi))); };
+  auto value = [&](double h, double c) { worst = std::max(worst, std::abs(h - c) / std::max(1.0, std::abs(c))); };
+  auto point = [&](const Eigen::Vector2d& h, const Eigen::Vector2d& c) {
+    value(h.x(), c.x());
+    value(h.y(), c.y());
+  };
+  const auto crank = fourbar::kCrank.index, coupler = fourbar::kCoupler.index, rocker = fourbar::kRocker.index;
+  const auto b = fourbar::kB.index, c = fourbar::kC.index;
   for (std::size_t j = 0; j < n; ++j) {
-    worst = std::max({worst, std::abs(std::remainder(hand.theta3[j] - core->linkAngle[coupler][j], 2.0 * kPi)),
-                      std::abs(std::remainder(hand.theta4[j] - core->linkAngle[rocker][j], 2.0 * kPi)),
-                      std::abs(hand.omega3[j] - core->linkOmega[coupler][j]),
-                      std::abs(hand.omega4[j] - core->linkOmega[rocker][j]),
-                      std::abs(hand.alpha3[j] - core->linkAlpha[coupler][j]),
-                      std::abs(hand.alpha4[j] - core->linkAlpha[rocker][j])});
+    angle(hand.theta2[j], core->linkAngle[crank][j]);
+    angle(hand.theta3[j], core->linkAngle[coupler][j]);
+    angle(hand.theta4[j], core->linkAngle[rocker][j]);
+    value(hand.omega2[j], core->linkOmega[crank][j]);
+    value(hand.omega3[j], core->linkOmega[coupler][j]);
+    value(hand.omega4[j], core->linkOmega[rocker][j]);
+    value(hand.alpha2[j], core->linkAlpha[crank][j]);
+    value(hand.alpha3[j], core->linkAlpha[coupler][j]);
+    value(hand.alpha4[j], core->linkAlpha[rocker][j]);
+    point(hand.b[j], core->position[b][j]);
+    point(hand.vB[j], core->velocity[b][j]);
+    point(hand.aB[j], core->acceleration[b][j]);
+    point(hand.c[j], core->position[c][j]);
+    point(hand.vC[j], core->velocity[c][j]);
+    point(hand.aC[j], core->acceleration[c][j]);
   }
   if (worst > 1e-9) std::fprintf(stderr, "hand-written four-bar differs from the core by %g\n", worst);
   return worst <= 1e-9;
@@ -370,9 +415,12 @@ void registerAll() {
   auto* forces = benchmark::RegisterBenchmark("FourBar/Forces", forcesBenchmark);
   for (const std::int64_t n : kSizes) forces->Arg(n);
   forces->Unit(benchmark::kNanosecond);
-  auto* hand = benchmark::RegisterBenchmark("FourBar/HandWritten", handWrittenBenchmark);
+  auto* hand = benchmark::RegisterBenchmark("FourBar/HandWritten", handWrittenBenchmark<false>);
   for (const std::int64_t n : kSizes) hand->Arg(n);
   hand->Unit(benchmark::kNanosecond);
+  auto* handFull = benchmark::RegisterBenchmark("FourBar/HandWrittenFull", handWrittenBenchmark<true>);
+  for (const std::int64_t n : kSizes) handFull->Arg(n);
+  handFull->Unit(benchmark::kNanosecond);
   const FourBarExample& t = thesis();
   benchmark::RegisterBenchmark("FourBar/Pose/Full", poseBenchmark, makeFourBar(t.lengths, t.branch).value(), t.omega)
       ->Unit(benchmark::kNanosecond);
