@@ -19,72 +19,85 @@ namespace {
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
 
-struct Solver {
-  const Mechanism& m;
-  const DriverState& driver;
-  bool wantVelocity;
-  bool wantAcceleration;
-  bool wantTransmission;
-  const NewtonSettings& newton;
-  Pose& pose;
-  const BranchGuide& guide;
-  const SolveScope* scope;  // null: solve everything
+// One pose being solved: its driver state, where it goes, and how its solve went.
+struct Lane {
+  const DriverState* driver = nullptr;
+  Pose* pose = nullptr;
   PoseReport report{};
   bool ratesValid = true;  // false once a dyad was singular: later rates cannot be computed
   int newtonIterations = 0;
   double newtonResidual = 0.0;
+};
 
-  void markSingular(std::size_t i) {
-    if (report.status == PoseStatus::Ok) report = {PoseStatus::Singular, PointId{i}, AssemblyFailure::None};
-    ratesValid = false;
+// Solves a block of poses (lanes) step by step: each point, then each link, for every lane
+// before the next. The loop over the lanes sits inside each step, so a step is dispatched once
+// per block and its lanes run back to back: their chains of roots, divisions and library calls
+// overlap in the processor. One pose is a block of one lane.
+struct Solver {
+  const Mechanism& m;
+  bool wantVelocity;
+  bool wantAcceleration;
+  bool wantTransmission;
+  const NewtonSettings& newton;
+  const BranchGuide& guide;
+  std::span<Lane> lanes;
+  std::size_t live = lanes.size();  // lanes[live..] are not solved further: one before them failed
+
+  static void markSingular(Lane& lane, std::size_t i) {
+    if (lane.report.status == PoseStatus::Ok) lane.report = {PoseStatus::Singular, PointId{i}, AssemblyFailure::None};
+    lane.ratesValid = false;
   }
 
   // Where Newton starts: the sweep's extrapolated prediction if given; else this pose's own
   // positions if they hold an assembly (the previous sample or frame: positions only move a
   // little between them); else the user's guesses. True unless it is the guesses.
-  bool startFreeGroup(std::size_t first, std::size_t last) {
+  bool startFreeGroup(Pose& pose, std::size_t first, std::size_t last) const {
     if (!guide.predicted.empty()) {
       for (std::size_t i = first; i < last; ++i) pose.position[i] = guide.predicted[i];
       return true;
     }
     if (pose.assembled) return true;
-    startFromGuesses(first, last);
+    startFromGuesses(pose, first, last);
     return false;
   }
 
-  void startFromGuesses(std::size_t first, std::size_t last) {
+  void startFromGuesses(Pose& pose, std::size_t first, std::size_t last) const {
     for (std::size_t i = first; i < last; ++i) pose.position[i] = std::get<FreePoint>(m.points[i].definition).guess;
   }
 
   // A group of free points, by Newton. A warm start that fails to converge (a jump too far
   // from the last pose) is retried once from the guesses, the assembly the user means; if
   // that fails too, the linkage most likely cannot close here.
-  bool freeGroup(std::size_t first, std::size_t last) {
-    const bool rates = wantVelocity && ratesValid;
-    const bool warm = startFreeGroup(first, last);
+  bool freeGroup(Lane& lane, std::size_t first, std::size_t last) const {
+    Pose& pose = *lane.pose;
+    const bool rates = wantVelocity && lane.ratesValid;
+    const bool warm = startFreeGroup(pose, first, last);
     NewtonOutcome out = solveFreeGroup(m, first, last, newton, rates, rates && wantAcceleration, pose);
     if (out.status == NewtonStatus::NoConvergence && warm) {
-      newtonIterations += out.iterations;
-      startFromGuesses(first, last);
+      lane.newtonIterations += out.iterations;
+      startFromGuesses(pose, first, last);
       out = solveFreeGroup(m, first, last, newton, rates, rates && wantAcceleration, pose);
     }
-    newtonIterations += out.iterations;
-    newtonResidual = std::max(newtonResidual, out.residual);
+    lane.newtonIterations += out.iterations;
+    lane.newtonResidual = std::max(lane.newtonResidual, out.residual);
     if (out.status == NewtonStatus::NoConvergence) {
-      report = {PoseStatus::NotAssemblable, PointId{first}, AssemblyFailure::NoConvergence};
+      lane.report = {PoseStatus::NotAssemblable, PointId{first}, AssemblyFailure::NoConvergence};
       return false;
     }
-    if (out.status == NewtonStatus::Singular) markSingular(first);
+    if (out.status == NewtonStatus::Singular) markSingular(lane, first);
     return true;
   }
 
-  void ground(std::size_t i, const GroundPoint& g) {
+  void ground(Lane& lane, std::size_t i, const GroundPoint& g) const {
+    Pose& pose = *lane.pose;
     pose.position[i] = g.position;
     if (wantVelocity) pose.velocity[i].setZero();
     if (wantAcceleration) pose.acceleration[i].setZero();
   }
 
-  void crank(std::size_t i, const CrankPoint& c) {
+  void crank(Lane& lane, std::size_t i, const CrankPoint& c) const {
+    const DriverState& driver = *lane.driver;
+    Pose& pose = *lane.pose;
     const double phi = driver.angle + c.phase;
     const Eigen::Vector2d radial(std::cos(phi), std::sin(phi));
     const Eigen::Vector2d o = pose.position[c.pivot.index];
@@ -105,12 +118,13 @@ struct Solver {
     return branch == Branch::Open ? 1 : -1;
   }
 
-  bool rrr(std::size_t i, const RrrPoint& r) {
+  bool rrr(Lane& lane, std::size_t i, const RrrPoint& r) const {
+    Pose& pose = *lane.pose;
     const Eigen::Vector2d& p1 = pose.position[r.first.index];
     const Eigen::Vector2d& p2 = pose.position[r.second.index];
     const RrrCandidates cand = rrrCandidates(p1, r.firstLength, p2, r.secondLength);
     if (cand.failure != AssemblyFailure::None) {
-      report = {PoseStatus::NotAssemblable, PointId{i}, cand.failure};
+      lane.report = {PoseStatus::NotAssemblable, PointId{i}, cand.failure};
       return false;
     }
     const signed char sign = chooseSign(i, r.branch, cand.open, cand.crossed);
@@ -122,11 +136,11 @@ struct Solver {
     const Eigen::Vector2d r1 = c - p1;
     const Eigen::Vector2d r2 = c - p2;
     if (wantTransmission) pose.transmissionAngle[i] = std::atan2(std::abs(cross(r1, r2)), r1.dot(r2));
-    if (!wantVelocity || !ratesValid) return true;
+    if (!wantVelocity || !lane.ratesValid) return true;
     // |r1|·|r2| is l1·l2 up to round-off: no square roots for the singularity test.
     double inverse = 0.0;
     if (!rrrInverseDeterminant(r1, r2, r.firstLength * r.secondLength, inverse)) {
-      markSingular(i);
+      markSingular(lane, i);
       return true;
     }
     const Eigen::Vector2d& v1 = pose.velocity[r.first.index];
@@ -141,18 +155,20 @@ struct Solver {
   }
 
   // A guide on a link needs that link's angle and rates first (its ends are solved already).
-  GuideLine guideLine(const Guide& g) {
-    if (g.link) link(*g.link, crankPhaseOf(m, *g.link));
+  GuideLine guideLine(Lane& lane, const Guide& g) const {
+    Pose& pose = *lane.pose;
+    if (g.link) link(lane, *g.link, crankPhaseOf(m, *g.link));
     return guideLineAt(m, g, pose);
   }
 
-  bool rrp(std::size_t i, const RrpPoint& p) {
+  bool rrp(Lane& lane, std::size_t i, const RrpPoint& p) const {
+    Pose& pose = *lane.pose;
     const Eigen::Vector2d& p1 = pose.position[p.first.index];
-    const GuideLine line = guideLine(p.guide);
+    const GuideLine line = guideLine(lane, p.guide);
     const Eigen::Vector2d& u = line.direction;
     const RrpCandidates cand = rrpCandidates(p1, p.length, line.point, u);
     if (cand.failure != AssemblyFailure::None) {
-      report = {PoseStatus::NotAssemblable, PointId{i}, cand.failure};
+      lane.report = {PoseStatus::NotAssemblable, PointId{i}, cand.failure};
       return false;
     }
     const Eigen::Vector2d open = line.point + cand.open * u;
@@ -165,12 +181,12 @@ struct Solver {
     const Eigen::Vector2d r = c - p1;
     // 90° with the rod along the guide (the best), 0° with it across (the toggle).
     if (wantTransmission) pose.transmissionAngle[i] = std::atan2(std::abs(r.dot(u)), std::abs(cross(u, r)));
-    if (!wantVelocity || !ratesValid) return true;
-    if (p.guide.link) return movingGuideRates(i, p, line, r);
+    if (!wantVelocity || !lane.ratesValid) return true;
+    if (p.guide.link) return movingGuideRates(lane, i, p, line, r);
     const Eigen::Vector2d& v1 = pose.velocity[p.first.index];
     double sDot = 0.0;
     if (!rrpSolveRate(r, u, r.dot(v1), sDot)) {
-      markSingular(i);
+      markSingular(lane, i);
       return true;
     }
     pose.velocity[i] = sDot * u;
@@ -183,13 +199,15 @@ struct Solver {
 
   // A slider on a moving guide: the rod's r·(vC − v1) = 0 and the guide's row (guide_line.h),
   // the same 2×2 matrix [r; n] for velocity and acceleration (singular with the rod across).
-  bool movingGuideRates(std::size_t i, const RrpPoint& p, const GuideLine& line, const Eigen::Vector2d& r) {
+  bool movingGuideRates(Lane& lane, std::size_t i, const RrpPoint& p, const GuideLine& line,
+                        const Eigen::Vector2d& r) const {
+    Pose& pose = *lane.pose;
     const Eigen::Vector2d n = guideNormal(line);
     const Eigen::Vector2d& c = pose.position[i];
     const Eigen::Vector2d& v1 = pose.velocity[p.first.index];
     Eigen::Vector2d v;
     if (!rrrSolveRates(r, n, {r.dot(v1), guideVelocityRhs(m, p.guide, line, pose, c)}, v)) {
-      markSingular(i);
+      markSingular(lane, i);
       return true;
     }
     pose.velocity[i] = v;
@@ -202,23 +220,24 @@ struct Solver {
 
   // Two sliders pinned together: C = G1 + s·u1 on both lines, s = ((G2 − G1)×u2)/(u1×u2). The
   // rates solve the two guides' rows [n1; n2] (guide_line.h), singular as the guides turn parallel.
-  bool prp(std::size_t i, const PrpPoint& p) {
-    const GuideLine l1 = guideLine(p.first);
-    const GuideLine l2 = guideLine(p.second);
+  bool prp(Lane& lane, std::size_t i, const PrpPoint& p) const {
+    Pose& pose = *lane.pose;
+    const GuideLine l1 = guideLine(lane, p.first);
+    const GuideLine l2 = guideLine(lane, p.second);
     const double sine = cross(l1.direction, l2.direction);
     if (!(std::abs(sine) > kSingularSine * kSingularSine)) {
-      report = {PoseStatus::NotAssemblable, PointId{i}, AssemblyFailure::Parallel};
+      lane.report = {PoseStatus::NotAssemblable, PointId{i}, AssemblyFailure::Parallel};
       return false;
     }
     const Eigen::Vector2d c = l1.point + cross(l2.point - l1.point, l2.direction) / sine * l1.direction;
     pose.position[i] = c;
     if (wantTransmission) pose.transmissionAngle[i] = std::atan2(std::abs(sine), l1.direction.dot(l2.direction));
-    if (!wantVelocity || !ratesValid) return true;
+    if (!wantVelocity || !lane.ratesValid) return true;
     const Eigen::Vector2d n1 = guideNormal(l1);
     const Eigen::Vector2d n2 = guideNormal(l2);
     Eigen::Vector2d v;
     if (!rrrSolveRates(n1, n2, {guideVelocityRhs(m, p.first, l1, pose, c), guideVelocityRhs(m, p.second, l2, pose, c)}, v)) {
-      markSingular(i);
+      markSingular(lane, i);
       return true;
     }
     pose.velocity[i] = v;
@@ -231,18 +250,19 @@ struct Solver {
 
   // The slotted link's tip: D = O + l·e with e = r/|r|, r = P − O (derivation in rpr_point
   // terms: the slot's angle φ has φ̇ = r×ṙ/|r|² and φ̈ = r×r̈/|r|² − 2φ̇(r·ṙ)/|r|²).
-  bool rpr(std::size_t i, const RprPoint& s) {
+  bool rpr(Lane& lane, std::size_t i, const RprPoint& s) const {
+    Pose& pose = *lane.pose;
     const Eigen::Vector2d& o = pose.position[s.pivot.index];
     const Eigen::Vector2d r = pose.position[s.through.index] - o;
     const double r2 = r.squaredNorm();
     if (!(r2 > 0.0)) {
-      report = {PoseStatus::NotAssemblable, PointId{i}, AssemblyFailure::Coincident};
+      lane.report = {PoseStatus::NotAssemblable, PointId{i}, AssemblyFailure::Coincident};
       return false;
     }
     const double len = std::sqrt(r2);
     const Eigen::Vector2d e = r / len;
     pose.position[i] = o + s.length * e;
-    if (!wantVelocity || !ratesValid) return true;
+    if (!wantVelocity || !lane.ratesValid) return true;
     const Eigen::Vector2d rDot = pose.velocity[s.through.index] - pose.velocity[s.pivot.index];
     const double phiDot = cross(r, rDot) / r2;
     pose.velocity[i] = pose.velocity[s.pivot.index] + s.length * phiDot * perp(e);
@@ -255,7 +275,9 @@ struct Solver {
 
   // The driven crank's angle and rates are the driver's, exactly (no atan2, and not a
   // difference of two velocities).
-  void link(LinkId id, std::optional<double> crankPhase) {
+  void link(Lane& lane, LinkId id, std::optional<double> crankPhase) const {
+    const DriverState& driver = *lane.driver;
+    Pose& pose = *lane.pose;
     const std::size_t k = id.index;
     if (crankPhase) {
       pose.linkAngle[k] = wrapAngle(driver.angle + *crankPhase);
@@ -266,22 +288,23 @@ struct Solver {
     const Link& l = m.links[k];
     const Eigen::Vector2d r = pose.position[l.second.index] - pose.position[l.first.index];
     pose.linkAngle[k] = std::atan2(r.y(), r.x());
-    if (!ratesValid || !wantVelocity) return;
+    if (!lane.ratesValid || !wantVelocity) return;
     const double inverse = 1.0 / r.squaredNorm();
     pose.linkOmega[k] = cross(r, pose.velocity[l.second.index] - pose.velocity[l.first.index]) * inverse;
     if (wantAcceleration)
       pose.linkAlpha[k] = cross(r, pose.acceleration[l.second.index] - pose.acceleration[l.first.index]) * inverse;
   }
 
-  void attached(std::size_t i, const AttachedPoint& a) {
+  void attached(Lane& lane, std::size_t i, const AttachedPoint& a) const {
+    Pose& pose = *lane.pose;
     const std::size_t k = a.link.index;
-    link(a.link, crankPhaseOf(m, a.link));  // its ends are solved already; its rates may not be yet
+    link(lane, a.link, crankPhaseOf(m, a.link));  // its ends are solved already; its rates may not be yet
     const Link& l = m.links[k];
     const Eigen::Vector2d base = pose.position[l.first.index];
     const Eigen::Vector2d u(std::cos(pose.linkAngle[k]), std::sin(pose.linkAngle[k]));
     const Eigen::Vector2d offset = a.along * u + a.across * perp(u);
     pose.position[i] = base + offset;
-    if (!ratesValid) return;
+    if (!lane.ratesValid) return;
     const double w = pose.linkOmega[k];
     if (wantVelocity) pose.velocity[i] = pose.velocity[l.first.index] + w * perp(offset);
     if (wantAcceleration)
@@ -289,46 +312,67 @@ struct Solver {
           pose.acceleration[l.first.index] + pose.linkAlpha[k] * perp(offset) - w * w * offset;
   }
 
-  PoseReport run() {
-    runPoints();
-    return finish();
+  // Point i, defined by `def`, in one lane (a free point: its whole group). False if it cannot
+  // be assembled there.
+  bool solve(Lane& lane, std::size_t i, const GroundPoint& g) const {
+    ground(lane, i, g);
+    return true;
   }
-
-  PoseReport finish() {
-    report.iterations = newtonIterations;
-    report.residual = newtonResidual;
-    pose.assembled = report.status != PoseStatus::NotAssemblable;
-    return report;
+  bool solve(Lane& lane, std::size_t i, const CrankPoint& c) const {
+    crank(lane, i, c);
+    return true;
   }
-
-  // Solves point i (a free point: its whole group). False if it cannot be assembled.
-  bool point(std::size_t i) {
-    const PointDefinition& def = m.points[i].definition;
-    if (const auto* r = std::get_if<RrrPoint>(&def)) return rrr(i, *r);
-    if (const auto* c = std::get_if<CrankPoint>(&def)) crank(i, *c);
-    else if (const auto* g = std::get_if<GroundPoint>(&def)) ground(i, *g);
-    else if (const auto* p = std::get_if<RrpPoint>(&def)) return rrp(i, *p);
-    else if (const auto* s = std::get_if<RprPoint>(&def)) return rpr(i, *s);
-    else if (const auto* q = std::get_if<PrpPoint>(&def)) return prp(i, *q);
-    else if (std::holds_alternative<FreePoint>(def)) return freeGroup(i, freeGroupEnd(m, i));
-    else attached(i, std::get<AttachedPoint>(def));
+  bool solve(Lane& lane, std::size_t i, const RrrPoint& r) const { return rrr(lane, i, r); }
+  bool solve(Lane& lane, std::size_t i, const RrpPoint& p) const { return rrp(lane, i, p); }
+  bool solve(Lane& lane, std::size_t i, const RprPoint& s) const { return rpr(lane, i, s); }
+  bool solve(Lane& lane, std::size_t i, const PrpPoint& q) const { return prp(lane, i, q); }
+  bool solve(Lane& lane, std::size_t i, const FreePoint&) const { return freeGroup(lane, i, freeGroupEnd(m, i)); }
+  bool solve(Lane& lane, std::size_t i, const AttachedPoint& a) const {
+    attached(lane, i, a);
     return true;
   }
 
-  // Everything, in the mechanism's order; or the scope's lists, made once per sweep.
-  PoseReport runPoints() {
+  // Point i in every live lane. A lane that cannot be assembled stops the block there: a sweep
+  // keeps no pose after a failed one, so the lanes after it are not solved at all.
+  void point(std::size_t i) {
+    std::visit(
+        [&](const auto& def) {
+          for (std::size_t b = 0; b < live; ++b) {
+            if (!solve(lanes[b], i, def)) {
+              live = b;
+              return;
+            }
+          }
+        },
+        m.points[i].definition);
+  }
+
+  void link(LinkId id, std::optional<double> crankPhase) {
+    for (std::size_t b = 0; b < live; ++b) link(lanes[b], id, crankPhase);
+  }
+
+  // Everything, in the mechanism's order; or the scope's lists, made once per sweep. Returns
+  // how many lanes were solved: all of them, or up to and including the first that failed.
+  std::size_t run(const SolveScope* scope) {
+    const std::size_t all = live;
     if (scope != nullptr) {
-      for (const PointId p : scope->pointSteps)
-        if (!point(p.index)) return report;
+      for (const PointId p : scope->pointSteps) point(p.index);
       for (const LinkStep& l : scope->linkSteps) link(l.link, l.crankPhase);
-      return report;
+    } else {
+      for (std::size_t i = 0; i < m.points.size(); ++i) {
+        point(i);
+        if (isFreePoint(m, PointId{i})) i = freeGroupEnd(m, i) - 1;
+      }
+      for (std::size_t k = 0; k < m.links.size(); ++k) link(LinkId{k}, crankPhaseOf(m, LinkId{k}));
     }
-    for (std::size_t i = 0; i < m.points.size(); ++i) {
-      if (!point(i)) return report;
-      if (isFreePoint(m, PointId{i})) i = freeGroupEnd(m, i) - 1;
+    const std::size_t solved = live < all ? live + 1 : all;
+    for (std::size_t b = 0; b < solved; ++b) {
+      Lane& lane = lanes[b];
+      lane.report.iterations = lane.newtonIterations;
+      lane.report.residual = lane.newtonResidual;
+      lane.pose->assembled = lane.report.status != PoseStatus::NotAssemblable;
     }
-    for (std::size_t k = 0; k < m.links.size(); ++k) link(LinkId{k}, crankPhaseOf(m, LinkId{k}));
-    return report;
+    return solved;
   }
 };
 
@@ -387,32 +431,31 @@ void preparePose(const Mechanism& m, Pose& pose) {
     if (const auto* g = std::get_if<GroundPoint>(&m.points[i].definition)) pose.position[i] = g->position;
 }
 
-PoseReport solvePoseInto(const Mechanism& m, const DriverState& driver, const SolveRequest& request,
-                         Pose& pose, const BranchGuide& guide, const SolveScope* scope) {
+namespace {
+
+Solver solverFor(const Mechanism& m, const SolveRequest& request, const BranchGuide& guide, std::span<Lane> lanes) {
   const bool acc = request.accelerations;
-  Solver solver{m, driver, request.velocities || acc, acc, request.transmissionAngles, request.newton, pose, guide, scope};
-  return solver.run();
+  return Solver{m, request.velocities || acc, acc, request.transmissionAngles, request.newton, guide, lanes};
 }
 
-void solveBlockInto(const Mechanism& m, std::span<const DriverState> drivers, const SolveRequest& request,
-                    std::span<Pose* const> poses, const BranchGuide& guide, const SolveScope& scope,
-                    std::span<PoseReport> reports) {
-  const bool acc = request.accelerations;
+} // namespace
+
+PoseReport solvePoseInto(const Mechanism& m, const DriverState& driver, const SolveRequest& request,
+                         Pose& pose, const BranchGuide& guide, const SolveScope* scope) {
+  Lane lane{&driver, &pose};
+  solverFor(m, request, guide, {&lane, 1}).run(scope);
+  return lane.report;
+}
+
+std::size_t solveBlockInto(const Mechanism& m, std::span<const DriverState> drivers, const SolveRequest& request,
+                           std::span<Pose* const> poses, const BranchGuide& guide, const SolveScope& scope,
+                           std::span<PoseReport> reports) {
   const std::size_t n = std::min(drivers.size(), kMaxBlock);
-  std::array<std::optional<Solver>, kMaxBlock> solvers;
-  std::array<bool, kMaxBlock> going{};
-  for (std::size_t b = 0; b < n; ++b) {
-    solvers[b].emplace(Solver{m, drivers[b], request.velocities || acc, acc, request.transmissionAngles,
-                              request.newton, *poses[b], guide, &scope});
-    going[b] = true;
-  }
-  for (const PointId p : scope.pointSteps)
-    for (std::size_t b = 0; b < n; ++b)
-      if (going[b]) going[b] = solvers[b]->point(p.index);
-  for (const LinkStep& l : scope.linkSteps)
-    for (std::size_t b = 0; b < n; ++b)
-      if (going[b]) solvers[b]->link(l.link, l.crankPhase);
-  for (std::size_t b = 0; b < n; ++b) reports[b] = solvers[b]->finish();
+  std::array<Lane, kMaxBlock> lanes;
+  for (std::size_t b = 0; b < n; ++b) lanes[b] = Lane{&drivers[b], poses[b]};
+  const std::size_t solved = solverFor(m, request, guide, {lanes.data(), n}).run(&scope);
+  for (std::size_t b = 0; b < solved; ++b) reports[b] = lanes[b].report;
+  return solved;
 }
 
 Result<Pose> solvePose(const Mechanism& m, const DriverState& driver, const SolveRequest& request) {

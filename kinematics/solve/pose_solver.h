@@ -41,12 +41,15 @@ inline constexpr std::size_t kMaxBlock = 8;
 /// Solves up to kMaxBlock poses of one mechanism at once, all with the same guide, into
 /// prepared poses: each step of the scope runs for every pose before the next step. The poses
 /// are independent, so their chains of square roots, divisions and library calls overlap in the
-/// processor instead of each waiting on its own (a four-bar sweep's sample: about 150 → 125 ns).
-/// The numbers are those solvePoseInto gives pose by pose. Mechanisms without free points only
-/// (Newton starts each pose from the one before). Never throws or allocates.
-void solveBlockInto(const Mechanism& mechanism, std::span<const DriverState> drivers, const SolveRequest& request,
-                    std::span<Pose* const> poses, const BranchGuide& guide, const SolveScope& scope,
-                    std::span<PoseReport> reports);
+/// processor instead of each waiting on its own. The numbers are those solvePoseInto gives pose
+/// by pose. Returns how many poses were solved, their reports in `reports`: all of them, or up
+/// to and including the first that cannot be assembled. A sweep keeps nothing after that one,
+/// so the poses after it are not solved further and what they hold means nothing. Mechanisms
+/// without free points only (Newton starts each pose from the one before). Never throws or
+/// allocates.
+std::size_t solveBlockInto(const Mechanism& mechanism, std::span<const DriverState> drivers,
+                           const SolveRequest& request, std::span<Pose* const> poses, const BranchGuide& guide,
+                           const SolveScope& scope, std::span<PoseReport> reports);
 
 /// Convenience: validates, solves with the mechanism's branches, and turns a failure into an
 /// Error whose message names the point, the input angle and the reason.

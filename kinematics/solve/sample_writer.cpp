@@ -29,30 +29,33 @@ SampleWriter::SampleWriter(const Mechanism& m, SweepResult& out) {
   }
 }
 
-void SampleWriter::write(std::size_t j, const Pose& pose, bool rates) {
+void SampleWriter::write(std::size_t j, const Pose& pose) {
   for (const PointSlot& s : m_points) {
     s.position[j] = pose.position[s.point];
-    if (s.velocity != nullptr) s.velocity[j] = rates ? pose.velocity[s.point] : Eigen::Vector2d::Zero();
-    if (s.acceleration != nullptr) s.acceleration[j] = rates ? pose.acceleration[s.point] : Eigen::Vector2d::Zero();
+    if (s.velocity != nullptr) s.velocity[j] = pose.velocity[s.point];
+    if (s.acceleration != nullptr) s.acceleration[j] = pose.acceleration[s.point];
     if (s.transmission != nullptr) s.transmission[j] = pose.transmissionAngle[s.point];
   }
   for (const LinkSlot& s : m_links) {
     const double raw = pose.linkAngle[s.link];
     const double last = s.angle[m_lastWritten];
     s.angle[j] = m_haveAngle ? last + wrapAngle(raw - last) : raw;
-    if (s.omega != nullptr) s.omega[j] = rates ? pose.linkOmega[s.link] : 0.0;
-    if (s.alpha != nullptr) s.alpha[j] = rates ? pose.linkAlpha[s.link] : 0.0;
+    if (s.omega != nullptr) s.omega[j] = pose.linkOmega[s.link];
+    if (s.alpha != nullptr) s.alpha[j] = pose.linkAlpha[s.link];
   }
   m_lastWritten = j;
   m_haveAngle = true;
 }
 
+// Every sample gets the pivot's position, then the few that did not assemble get zero.
 void SampleWriter::finish(const Mechanism& m, SweepResult& out) const {
+  const std::size_t n = out.size();
   for (const PointSlot& s : m_ground) {
-    const Eigen::Vector2d at = std::get<GroundPoint>(m.points[s.point].definition).position;
-    for (std::size_t j = 0; j < out.size(); ++j) s.position[j] = out.assembled(j) ? at : Eigen::Vector2d::Zero();
-    if (s.velocity != nullptr) std::fill_n(s.velocity, out.size(), Eigen::Vector2d::Zero());
-    if (s.acceleration != nullptr) std::fill_n(s.acceleration, out.size(), Eigen::Vector2d::Zero());
+    std::fill_n(s.position, n, std::get<GroundPoint>(m.points[s.point].definition).position);
+    for (std::size_t j = 0; j < n; ++j)
+      if (!out.assembled(j)) s.position[j].setZero();
+    if (s.velocity != nullptr) std::fill_n(s.velocity, n, Eigen::Vector2d::Zero());
+    if (s.acceleration != nullptr) std::fill_n(s.acceleration, n, Eigen::Vector2d::Zero());
   }
 }
 
@@ -68,6 +71,13 @@ void SampleWriter::writeNothing(std::size_t j) {
     if (s.omega != nullptr) s.omega[j] = 0.0;
     if (s.alpha != nullptr) s.alpha[j] = 0.0;
   }
+}
+
+void clearRates(Pose& pose) {
+  std::fill(pose.velocity.begin(), pose.velocity.end(), Eigen::Vector2d::Zero());
+  std::fill(pose.acceleration.begin(), pose.acceleration.end(), Eigen::Vector2d::Zero());
+  std::fill(pose.linkOmega.begin(), pose.linkOmega.end(), 0.0);
+  std::fill(pose.linkAlpha.begin(), pose.linkAlpha.end(), 0.0);
 }
 
 } // namespace linkwright::kinematics

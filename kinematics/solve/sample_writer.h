@@ -26,8 +26,9 @@ public:
   /// while the writer is used.
   SampleWriter(const Mechanism& mechanism, SweepResult& out);
 
-  /// Writes sample j from `pose`. Rate columns get 0 unless `rates` (a singular pose).
-  void write(std::size_t j, const Pose& pose, bool rates);
+  /// Writes sample j from `pose`, rates as they are: a singular pose's must be cleared first
+  /// (clearRates), since the solver leaves those it could not compute as they were.
+  void write(std::size_t j, const Pose& pose);
 
   /// A sample that could not be assembled: 0 in every column (its positions are not valid).
   void writeNothing(std::size_t j);
@@ -56,5 +57,8 @@ private:
   bool m_haveAngle = false;  // a sample has been written: later angles continue from it
   std::size_t m_lastWritten = 0;
 };
+
+/// Zeroes every velocity and acceleration of `pose`: a singular pose's rate columns read 0.
+void clearRates(Pose& pose);
 
 } // namespace linkwright::kinematics

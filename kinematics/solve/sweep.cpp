@@ -115,7 +115,8 @@ private:
       m_haveLast = m_haveBefore = false;
       return;
     }
-    m_writer.write(j, *m_current, report.status == PoseStatus::Ok);
+    if (report.status == PoseStatus::Singular) clearRates(*m_current);
+    m_writer.write(j, *m_current);
     advance(angle);
   }
 
@@ -135,10 +136,10 @@ private:
     }
     std::array<PoseReport, kMaxBlock> reports;
     const BranchGuide keep{m_last->branchSign, {}};
-    solveBlockInto(m_mech, {drivers.data(), count}, m_request, {poses.data(), count}, keep, m_scope,
-                   {reports.data(), count});
+    const std::size_t solved = solveBlockInto(m_mech, {drivers.data(), count}, m_request, {poses.data(), count},
+                                              keep, m_scope, {reports.data(), count});
     std::size_t kept = 0;
-    for (; kept < count; ++kept) {
+    for (; kept < solved; ++kept) {
       const double angle = drivers[kept].angle;
       const double previousAngle = kept == 0 ? m_lastAngle : drivers[kept - 1].angle;
       const Pose& previous = kept == 0 ? *m_last : m_block[kept - 1];
@@ -147,7 +148,8 @@ private:
         break;
       m_out.inputAngle[j + kept] = angle;
       m_out.report[j + kept] = reports[kept];
-      m_writer.write(j + kept, m_block[kept], reports[kept].status == PoseStatus::Ok);
+      if (reports[kept].status == PoseStatus::Singular) clearRates(m_block[kept]);
+      m_writer.write(j + kept, m_block[kept]);
     }
     if (kept > 0) keepBlockEnd(kept, drivers);
     return j + kept;

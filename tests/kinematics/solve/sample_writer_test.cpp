@@ -42,7 +42,7 @@ TEST_CASE("SampleWriter copies a pose into every selected column", "[sweep]") {
   SweepResult out = columnsFor(m, 3);
   SampleWriter writer(m, out);
   const Pose p = solved(m, 30.0);
-  writer.write(1, p, true);
+  writer.write(1, p);
   CHECK(out.position[kC][1] == p.position[kC]);
   CHECK(out.velocity[kB][1] == p.velocity[kB]);
   CHECK(out.acceleration[kC][1] == p.acceleration[kC]);
@@ -51,8 +51,10 @@ TEST_CASE("SampleWriter copies a pose into every selected column", "[sweep]") {
   CHECK(out.linkOmega[kRocker][1] == p.linkOmega[kRocker]);
   CHECK(out.linkAlpha[kRocker][1] == p.linkAlpha[kRocker]);
 
-  // A singular sample keeps its positions and angles; its rates read 0.
-  writer.write(2, p, false);
+  // A singular sample keeps its positions and angles; its rates, cleared, read 0.
+  Pose singular = p;
+  clearRates(singular);
+  writer.write(2, singular);
   CHECK(out.position[kC][2] == p.position[kC]);
   CHECK(out.velocity[kC][2] == Eigen::Vector2d::Zero());
   CHECK(out.acceleration[kB][2] == Eigen::Vector2d::Zero());
@@ -67,7 +69,7 @@ TEST_CASE("SampleWriter leaves out what the request did not select", "[sweep]") 
   request.only = Selection{std::vector<PointId>{}, std::vector<LinkId>{fourbar::kRocker}};
   SweepResult out = columnsFor(m, 2, request);
   SampleWriter writer(m, out);
-  writer.write(0, solved(m, 10.0), true);
+  writer.write(0, solved(m, 10.0));
   CHECK(out.position[kC].empty());
   CHECK(out.linkAngle[kCrank].empty());
   CHECK(out.acceleration.empty());
@@ -79,10 +81,10 @@ TEST_CASE("SampleWriter unwraps link angles, also across a failed sample", "[swe
   SweepResult out = columnsFor(m, 4);
   SampleWriter writer(m, out);
   Pose p = solved(m, 170.0);
-  writer.write(0, p, true);
+  writer.write(0, p);
   CHECK(out.linkAngle[kCrank][0] == within(degToRad(170.0), 1e-15));
   p.linkAngle[kCrank] = degToRad(-175.0);  // the pose's angle wraps; the column must not
-  writer.write(1, p, true);
+  writer.write(1, p);
   CHECK(out.linkAngle[kCrank][1] == within(degToRad(185.0), 1e-14));
   writer.writeNothing(2);
   CHECK(out.linkAngle[kCrank][2] == 0.0);
@@ -90,7 +92,7 @@ TEST_CASE("SampleWriter unwraps link angles, also across a failed sample", "[swe
   CHECK(out.velocity[kC][2] == Eigen::Vector2d::Zero());
   CHECK(out.transmissionAngle[kC][2] == 0.0);
   p.linkAngle[kCrank] = degToRad(-160.0);  // continues from sample 1, not from the failed one
-  writer.write(3, p, true);
+  writer.write(3, p);
   CHECK(out.linkAngle[kCrank][3] == within(degToRad(200.0), 1e-14));
 }
 
