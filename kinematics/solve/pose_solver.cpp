@@ -118,15 +118,26 @@ struct Solver {
     return branch == Branch::Open ? 1 : -1;
   }
 
-  bool rrr(Lane& lane, std::size_t i, const RrrPoint& r) const {
+  // An RRR dyad in every live lane, in two passes: first both candidates in every lane (two
+  // square roots and a division each, a chain the processor can overlap only across lanes), then
+  // the choice and the rates. One pass per lane would leave each lane's chain waiting on itself.
+  void pointInLanes(std::size_t i, const RrrPoint& r) {
+    std::array<RrrCandidates, kMaxBlock> cand;
+    for (std::size_t b = 0; b < live; ++b) {
+      const Pose& pose = *lanes[b].pose;
+      cand[b] = rrrCandidates(pose.position[r.first.index], r.firstLength, pose.position[r.second.index], r.secondLength);
+      if (cand[b].failure != AssemblyFailure::None) {
+        lanes[b].report = {PoseStatus::NotAssemblable, PointId{i}, cand[b].failure};
+        live = b;
+      }
+    }
+    for (std::size_t b = 0; b < live; ++b) rrr(lanes[b], i, r, cand[b]);
+  }
+
+  void rrr(Lane& lane, std::size_t i, const RrrPoint& r, const RrrCandidates& cand) const {
     Pose& pose = *lane.pose;
     const Eigen::Vector2d& p1 = pose.position[r.first.index];
     const Eigen::Vector2d& p2 = pose.position[r.second.index];
-    const RrrCandidates cand = rrrCandidates(p1, r.firstLength, p2, r.secondLength);
-    if (cand.failure != AssemblyFailure::None) {
-      lane.report = {PoseStatus::NotAssemblable, PointId{i}, cand.failure};
-      return false;
-    }
     const signed char sign = chooseSign(i, r.branch, cand.open, cand.crossed);
     const Eigen::Vector2d c = sign > 0 ? cand.open : cand.crossed;
     pose.position[i] = c;
@@ -136,22 +147,21 @@ struct Solver {
     const Eigen::Vector2d r1 = c - p1;
     const Eigen::Vector2d r2 = c - p2;
     if (wantTransmission) pose.transmissionAngle[i] = std::atan2(std::abs(cross(r1, r2)), r1.dot(r2));
-    if (!wantVelocity || !lane.ratesValid) return true;
+    if (!wantVelocity || !lane.ratesValid) return;
     // |r1|·|r2| is l1·l2 up to round-off: no square roots for the singularity test.
     double inverse = 0.0;
     if (!rrrInverseDeterminant(r1, r2, r.firstLength * r.secondLength, inverse)) {
       markSingular(lane, i);
-      return true;
+      return;
     }
     const Eigen::Vector2d& v1 = pose.velocity[r.first.index];
     const Eigen::Vector2d& v2 = pose.velocity[r.second.index];
     const Eigen::Vector2d v = rrrSolve(r1, r2, inverse, {r1.dot(v1), r2.dot(v2)});
     pose.velocity[i] = v;
-    if (!wantAcceleration) return true;
+    if (!wantAcceleration) return;
     pose.acceleration[i] = rrrSolve(r1, r2, inverse,
                                     {r1.dot(pose.acceleration[r.first.index]) - (v - v1).squaredNorm(),
                                      r2.dot(pose.acceleration[r.second.index]) - (v - v2).squaredNorm()});
-    return true;
   }
 
   // A guide on a link needs that link's angle and rates first (its ends are solved already).
@@ -276,19 +286,31 @@ struct Solver {
   // The driven crank's angle and rates are the driver's, exactly (no atan2, and not a
   // difference of two velocities).
   void link(Lane& lane, LinkId id, std::optional<double> crankPhase) const {
+    if (crankPhase) return crankLink(lane, id.index, *crankPhase);
+    linkAngle(lane, id.index);
+    linkRates(lane, id.index);
+  }
+
+  void crankLink(Lane& lane, std::size_t k, double phase) const {
     const DriverState& driver = *lane.driver;
     Pose& pose = *lane.pose;
-    const std::size_t k = id.index;
-    if (crankPhase) {
-      pose.linkAngle[k] = wrapAngle(driver.angle + *crankPhase);
-      if (wantVelocity) pose.linkOmega[k] = driver.omega;
-      if (wantAcceleration) pose.linkAlpha[k] = driver.alpha;
-      return;
-    }
+    pose.linkAngle[k] = wrapAngle(driver.angle + phase);
+    if (wantVelocity) pose.linkOmega[k] = driver.omega;
+    if (wantAcceleration) pose.linkAlpha[k] = driver.alpha;
+  }
+
+  void linkAngle(Lane& lane, std::size_t k) const {
+    Pose& pose = *lane.pose;
     const Link& l = m.links[k];
     const Eigen::Vector2d r = pose.position[l.second.index] - pose.position[l.first.index];
     pose.linkAngle[k] = std::atan2(r.y(), r.x());
+  }
+
+  void linkRates(Lane& lane, std::size_t k) const {
     if (!lane.ratesValid || !wantVelocity) return;
+    Pose& pose = *lane.pose;
+    const Link& l = m.links[k];
+    const Eigen::Vector2d r = pose.position[l.second.index] - pose.position[l.first.index];
     const double inverse = 1.0 / r.squaredNorm();
     pose.linkOmega[k] = cross(r, pose.velocity[l.second.index] - pose.velocity[l.first.index]) * inverse;
     if (wantAcceleration)
@@ -322,7 +344,6 @@ struct Solver {
     crank(lane, i, c);
     return true;
   }
-  bool solve(Lane& lane, std::size_t i, const RrrPoint& r) const { return rrr(lane, i, r); }
   bool solve(Lane& lane, std::size_t i, const RrpPoint& p) const { return rrp(lane, i, p); }
   bool solve(Lane& lane, std::size_t i, const RprPoint& s) const { return rpr(lane, i, s); }
   bool solve(Lane& lane, std::size_t i, const PrpPoint& q) const { return prp(lane, i, q); }
@@ -335,20 +356,28 @@ struct Solver {
   // Point i in every live lane. A lane that cannot be assembled stops the block there: a sweep
   // keeps no pose after a failed one, so the lanes after it are not solved at all.
   void point(std::size_t i) {
-    std::visit(
-        [&](const auto& def) {
-          for (std::size_t b = 0; b < live; ++b) {
-            if (!solve(lanes[b], i, def)) {
-              live = b;
-              return;
-            }
-          }
-        },
-        m.points[i].definition);
+    std::visit([&](const auto& def) { pointInLanes(i, def); }, m.points[i].definition);
   }
 
+  template <typename Definition>
+  void pointInLanes(std::size_t i, const Definition& def) {
+    for (std::size_t b = 0; b < live; ++b) {
+      if (!solve(lanes[b], i, def)) {
+        live = b;
+        return;
+      }
+    }
+  }
+
+  // A link in every live lane. The rates go first, all lanes together: with no library call
+  // among them their values stay in registers; then the angles, one atan2 per lane.
   void link(LinkId id, std::optional<double> crankPhase) {
-    for (std::size_t b = 0; b < live; ++b) link(lanes[b], id, crankPhase);
+    if (crankPhase) {
+      for (std::size_t b = 0; b < live; ++b) crankLink(lanes[b], id.index, *crankPhase);
+      return;
+    }
+    for (std::size_t b = 0; b < live; ++b) linkRates(lanes[b], id.index);
+    for (std::size_t b = 0; b < live; ++b) linkAngle(lanes[b], id.index);
   }
 
   // Everything, in the mechanism's order; or the scope's lists, made once per sweep. Returns

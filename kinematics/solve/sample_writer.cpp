@@ -14,6 +14,15 @@ T* columnData(std::vector<std::vector<T>>& columns, std::size_t i) {
   return columns[i].data();
 }
 
+// Copies field[i] of each pose into column[j], column[j + 1], … The column and the index are
+// held in locals: a store through the column may alias the writer's slots as far as the
+// compiler knows, so it would reload them for every sample.
+template <typename T>
+void copyColumn(T* column, std::size_t j, std::span<const Pose> poses, std::vector<T> Pose::*field, std::size_t i) {
+  if (column == nullptr) return;
+  for (std::size_t b = 0; b < poses.size(); ++b) column[j + b] = (poses[b].*field)[i];
+}
+
 } // namespace
 
 SampleWriter::SampleWriter(const Mechanism& m, SweepResult& out) {
@@ -29,21 +38,29 @@ SampleWriter::SampleWriter(const Mechanism& m, SweepResult& out) {
   }
 }
 
-void SampleWriter::write(std::size_t j, const Pose& pose) {
+
+void SampleWriter::write(std::size_t j, std::span<const Pose> poses) {
+  if (poses.empty()) return;
   for (const PointSlot& s : m_points) {
-    s.position[j] = pose.position[s.point];
-    if (s.velocity != nullptr) s.velocity[j] = pose.velocity[s.point];
-    if (s.acceleration != nullptr) s.acceleration[j] = pose.acceleration[s.point];
-    if (s.transmission != nullptr) s.transmission[j] = pose.transmissionAngle[s.point];
+    copyColumn(s.position, j, poses, &Pose::position, s.point);
+    copyColumn(s.velocity, j, poses, &Pose::velocity, s.point);
+    copyColumn(s.acceleration, j, poses, &Pose::acceleration, s.point);
+    copyColumn(s.transmission, j, poses, &Pose::transmissionAngle, s.point);
   }
   for (const LinkSlot& s : m_links) {
-    const double raw = pose.linkAngle[s.link];
-    const double last = s.angle[m_lastWritten];
-    s.angle[j] = m_haveAngle ? last + wrapAngle(raw - last) : raw;
-    if (s.omega != nullptr) s.omega[j] = pose.linkOmega[s.link];
-    if (s.alpha != nullptr) s.alpha[j] = pose.linkAlpha[s.link];
+    double* const angle = s.angle;
+    const std::size_t k = s.link;
+    double last = m_haveAngle ? angle[m_lastWritten] + wrapAngle(poses[0].linkAngle[k] - angle[m_lastWritten])
+                              : poses[0].linkAngle[k];
+    angle[j] = last;
+    for (std::size_t b = 1; b < poses.size(); ++b) {
+      last += wrapAngle(poses[b].linkAngle[k] - last);
+      angle[j + b] = last;
+    }
+    copyColumn(s.omega, j, poses, &Pose::linkOmega, k);
+    copyColumn(s.alpha, j, poses, &Pose::linkAlpha, k);
   }
-  m_lastWritten = j;
+  m_lastWritten = j + poses.size() - 1;
   m_haveAngle = true;
 }
 
@@ -52,14 +69,16 @@ void SampleWriter::finish(const Mechanism& m, SweepResult& out) const {
   const std::size_t n = out.size();
   for (const PointSlot& s : m_ground) {
     std::fill_n(s.position, n, std::get<GroundPoint>(m.points[s.point].definition).position);
-    for (std::size_t j = 0; j < n; ++j)
-      if (!out.assembled(j)) s.position[j].setZero();
+    if (m_wroteNothing)
+      for (std::size_t j = 0; j < n; ++j)
+        if (!out.assembled(j)) s.position[j].setZero();
     if (s.velocity != nullptr) std::fill_n(s.velocity, n, Eigen::Vector2d::Zero());
     if (s.acceleration != nullptr) std::fill_n(s.acceleration, n, Eigen::Vector2d::Zero());
   }
 }
 
 void SampleWriter::writeNothing(std::size_t j) {
+  m_wroteNothing = true;
   for (const PointSlot& s : m_points) {
     s.position[j].setZero();
     if (s.velocity != nullptr) s.velocity[j].setZero();

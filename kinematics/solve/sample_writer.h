@@ -16,6 +16,7 @@
 
 #include <Eigen/Core>
 
+#include <span>
 #include <vector>
 
 namespace linkwright::kinematics {
@@ -26,14 +27,17 @@ public:
   /// while the writer is used.
   SampleWriter(const Mechanism& mechanism, SweepResult& out);
 
-  /// Writes sample j from `pose`, rates as they are: a singular pose's must be cleared first
-  /// (clearRates), since the solver leaves those it could not compute as they were.
-  void write(std::size_t j, const Pose& pose);
+  /// Writes samples j, j+1, … from `poses`, rates as they are: a singular pose's must be
+  /// cleared first (clearRates), since the solver leaves those it could not compute as they
+  /// were. A block is written column by column: each column's pointer is loaded once.
+  void write(std::size_t j, std::span<const Pose> poses);
+  void write(std::size_t j, const Pose& pose) { write(j, {&pose, 1}); }
 
   /// A sample that could not be assembled: 0 in every column (its positions are not valid).
   void writeNothing(std::size_t j);
 
-  /// Fills the ground pivots' columns, once every sample's report is in `out`.
+  /// Fills the ground pivots' columns, once every sample's report is in `out`: zero at the
+  /// samples given to writeNothing, the pivot's place at the others.
   void finish(const Mechanism& mechanism, SweepResult& out) const;
 
 private:
@@ -56,6 +60,7 @@ private:
   std::vector<LinkSlot> m_links;
   bool m_haveAngle = false;  // a sample has been written: later angles continue from it
   std::size_t m_lastWritten = 0;
+  bool m_wroteNothing = false;  // some sample did not assemble: finish() zeroes its pivots
 };
 
 /// Zeroes every velocity and acceleration of `pose`: a singular pose's rate columns read 0.

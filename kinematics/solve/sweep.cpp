@@ -29,11 +29,23 @@ bool isDyad(const Mechanism& m, std::size_t i) {
   return std::holds_alternative<RrrPoint>(def) || std::holds_alternative<RrpPoint>(def);
 }
 
-// The dyads a scope solves: the points whose branch a sweep tracks.
-std::vector<std::size_t> dyadsIn(const Mechanism& m, const SolveScope& scope) {
-  std::vector<std::size_t> out;
-  for (const PointId p : scope.pointSteps)
-    if (isDyad(m, p.index)) out.push_back(p.index);
+// A dyad whose branch a sweep tracks, with what moves it: its parent points (`second` is
+// absent for a slider, whose other parent is its guide) and the link carrying its guide.
+struct TrackedDyad {
+  std::size_t point;
+  std::size_t first;
+  std::optional<std::size_t> second;
+  std::optional<LinkId> guideLink;
+};
+
+// The dyads a scope solves, looked up once per sweep.
+std::vector<TrackedDyad> dyadsIn(const Mechanism& m, const SolveScope& scope) {
+  std::vector<TrackedDyad> out;
+  for (const PointId p : scope.pointSteps) {
+    const PointDefinition& def = m.points[p.index].definition;
+    if (const auto* r = std::get_if<RrrPoint>(&def)) out.push_back({p.index, r->first.index, r->second.index, {}});
+    if (const auto* s = std::get_if<RrpPoint>(&def)) out.push_back({p.index, s->first.index, {}, s->guide.link});
+  }
   return out;
 }
 
@@ -59,21 +71,14 @@ double guideMotion(const Mechanism& m, LinkId k, const Pose& a, const Pose& b) {
 // understates the path). Steps over half a radian are always split: there a chord says too
 // little about the path.
 // `dyads`: the RRR and RRP points solved (dyadsIn).
-bool branchAmbiguous(const Mechanism& m, std::span<const std::size_t> dyads, double aAngle, const Pose& a,
+bool branchAmbiguous(const Mechanism& m, std::span<const TrackedDyad> dyads, double aAngle, const Pose& a,
                      double bAngle, const Pose& b) {
   if (std::abs(bAngle - aAngle) > 0.5) return true;
-  for (const std::size_t i : dyads) {
-    const Point& p = m.points[i];
-    const double gaps = a.assemblyGap[i] + b.assemblyGap[i];
-    if (const auto* r = std::get_if<RrrPoint>(&p.definition)) {
-      const double motion = displacementBound(b.position[r->first.index] - a.position[r->first.index]) +
-                            displacementBound(b.position[r->second.index] - a.position[r->second.index]);
-      if (gaps <= 2.0 * motion) return true;
-    } else if (const auto* s = std::get_if<RrpPoint>(&p.definition)) {
-      double motion = displacementBound(b.position[s->first.index] - a.position[s->first.index]);
-      if (s->guide.link) motion += guideMotion(m, *s->guide.link, a, b);
-      if (gaps <= 2.0 * motion) return true;
-    }
+  for (const TrackedDyad& d : dyads) {
+    double motion = displacementBound(b.position[d.first] - a.position[d.first]);
+    if (d.second) motion += displacementBound(b.position[*d.second] - a.position[*d.second]);
+    if (d.guideLink) motion += guideMotion(m, *d.guideLink, a, b);
+    if (a.assemblyGap[d.point] + b.assemblyGap[d.point] <= 2.0 * motion) return true;
   }
   return false;
 }
@@ -126,18 +131,18 @@ private:
   // whose index is returned, is then solved alone, with refinement. Same numbers as solveOne.
   std::size_t solveBlock(std::size_t j) {
     const std::size_t count = std::min(kMaxBlock, m_spec.samples - j);
-    if (m_block[0].position.size() != m_mech.points.size())
-      for (Pose& p : m_block) preparePose(m_mech, p);
-    std::array<DriverState, kMaxBlock> drivers;
-    std::array<Pose*, kMaxBlock> poses;
-    for (std::size_t b = 0; b < count; ++b) {
-      drivers[b] = driver(angleAt(j + b));
-      poses[b] = &m_block[b];
+    if (m_block[0].position.size() != m_mech.points.size()) {
+      for (std::size_t b = 0; b < kMaxBlock; ++b) {
+        preparePose(m_mech, m_block[b]);
+        m_blockPoses[b] = &m_block[b];
+      }
     }
-    std::array<PoseReport, kMaxBlock> reports;
+    std::array<DriverState, kMaxBlock>& drivers = m_blockDrivers;
+    std::array<PoseReport, kMaxBlock>& reports = m_blockReports;
+    for (std::size_t b = 0; b < count; ++b) drivers[b] = driver(angleAt(j + b));
     const BranchGuide keep{m_last->branchSign, {}};
-    const std::size_t solved = solveBlockInto(m_mech, {drivers.data(), count}, m_request, {poses.data(), count},
-                                              keep, m_scope, {reports.data(), count});
+    const std::size_t solved = solveBlockInto(m_mech, {drivers.data(), count}, m_request,
+                                              {m_blockPoses.data(), count}, keep, m_scope, {reports.data(), count});
     std::size_t kept = 0;
     for (; kept < solved; ++kept) {
       const double angle = drivers[kept].angle;
@@ -146,11 +151,13 @@ private:
       if (reports[kept].status == PoseStatus::NotAssemblable ||
           branchAmbiguous(m_mech, m_dyads, previousAngle, previous, angle, m_block[kept]))
         break;
-      m_out.inputAngle[j + kept] = angle;
-      m_out.report[j + kept] = reports[kept];
-      if (reports[kept].status == PoseStatus::Singular) clearRates(m_block[kept]);
-      m_writer.write(j + kept, m_block[kept]);
     }
+    for (std::size_t b = 0; b < kept; ++b) {
+      m_out.inputAngle[j + b] = drivers[b].angle;
+      m_out.report[j + b] = reports[b];
+      if (reports[b].status == PoseStatus::Singular) clearRates(m_block[b]);
+    }
+    m_writer.write(j, {m_block.data(), kept});
     if (kept > 0) keepBlockEnd(kept, drivers);
     return j + kept;
   }
@@ -241,9 +248,12 @@ private:
   const SolveScope& m_scope;
   SweepResult& m_out;
   SampleWriter m_writer;
-  std::vector<std::size_t> m_dyads;
+  std::vector<TrackedDyad> m_dyads;
   Pose m_poses[3];
-  std::array<Pose, kMaxBlock> m_block;
+  std::array<Pose, kMaxBlock> m_block;  // a block's poses, and their drivers and reports
+  std::array<Pose*, kMaxBlock> m_blockPoses{};
+  std::array<DriverState, kMaxBlock> m_blockDrivers{};
+  std::array<PoseReport, kMaxBlock> m_blockReports{};
   Pose* m_current = &m_poses[0];
   Pose* m_last = &m_poses[1];
   Pose* m_before = &m_poses[2];

@@ -102,7 +102,8 @@ TEST_CASE("SampleWriter fills a ground pivot's columns only where the linkage as
   out.position[kO4].assign(3, Eigen::Vector2d(-1.0, -1.0));  // stale values from an earlier sweep
   out.velocity[kO4].assign(3, Eigen::Vector2d(-1.0, -1.0));
   out.report[1].status = PoseStatus::NotAssemblable;
-  const SampleWriter writer(m, out);
+  SampleWriter writer(m, out);
+  writer.writeNothing(1);
   writer.finish(m, out);
   CHECK(out.position[kO4][0] == Eigen::Vector2d(kThesis.frame, 0.0));
   CHECK(out.position[kO4][1] == Eigen::Vector2d::Zero());
