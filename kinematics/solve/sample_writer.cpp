@@ -38,7 +38,6 @@ SampleWriter::SampleWriter(const Mechanism& m, SweepResult& out) {
   }
 }
 
-
 void SampleWriter::write(std::size_t j, std::span<const Pose> poses) {
   if (poses.empty()) return;
   for (const PointSlot& s : m_points) {

@@ -1,7 +1,7 @@
 #pragma once
-// Copies one solved pose into a sweep's columns (sweep.h). The columns a request selected are
-// found once per sweep and kept as raw pointers, so a sample costs one copy per stored
-// quantity: a four-bar's full sample is 21 values, and looking each column up through the
+// Copies solved poses, one or a block of them, into a sweep's columns (sweep.h). The columns a
+// request selected are found once per sweep and kept as raw pointers, so a sample costs one
+// copy per stored quantity: a four-bar's full sample is 21 values, and looking each column up through the
 // result's nested vectors every time cost as much as solving the dyad.
 //
 // A ground pivot's columns are the same at every sample (its position where the linkage

@@ -1,6 +1,7 @@
 // Tests kinematics/solve/sample_writer.h: a pose lands in the selected columns only, angles are
-// unwrapped across ±180° (also across a gap), rates are 0 at a singular sample, a failed sample
-// is 0 everywhere, and the ground pivots' columns are filled by finish().
+// unwrapped across ±180° (also across a gap and inside a block), a block lands as its poses
+// would one by one, rates are 0 at a singular sample, a failed sample is 0 everywhere, and the
+// ground pivots' columns are filled by finish().
 
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
@@ -11,6 +12,9 @@
 #include "tests/support/approx.h"
 
 #include <catch2/catch.hpp>
+
+#include <span>
+#include <vector>
 
 using namespace linkwright::kinematics;
 using linkwright::test::kThesis;
@@ -94,6 +98,30 @@ TEST_CASE("SampleWriter unwraps link angles, also across a failed sample", "[swe
   p.linkAngle[kCrank] = degToRad(-160.0);  // continues from sample 1, not from the failed one
   writer.write(3, p);
   CHECK(out.linkAngle[kCrank][3] == within(degToRad(200.0), 1e-14));
+}
+
+TEST_CASE("SampleWriter writes a block as it writes its poses one by one", "[sweep]") {
+  const Mechanism m = makeFourBar(kThesis, Branch::Open).value();
+  std::vector<Pose> block{solved(m, 150.0), solved(m, 170.0), solved(m, 190.0), solved(m, 210.0)};
+  SweepResult oneByOne = columnsFor(m, 6);
+  SweepResult together = columnsFor(m, 6);
+  SampleWriter single(m, oneByOne);
+  SampleWriter blockwise(m, together);
+  single.write(0, block[0]);
+  blockwise.write(0, block[0]);
+  for (std::size_t b = 1; b < block.size(); ++b) single.write(b, block[b]);
+  blockwise.write(1, std::span<const Pose>(block).subspan(1));  // the crank wraps past 180° inside the block
+  for (std::size_t j = 0; j < block.size(); ++j) {
+    CHECK(together.position[kC][j] == oneByOne.position[kC][j]);
+    CHECK(together.velocity[kB][j] == oneByOne.velocity[kB][j]);
+    CHECK(together.acceleration[kC][j] == oneByOne.acceleration[kC][j]);
+    CHECK(together.transmissionAngle[kC][j] == oneByOne.transmissionAngle[kC][j]);
+    CHECK(together.linkAngle[kCrank][j] == oneByOne.linkAngle[kCrank][j]);
+    CHECK(together.linkOmega[kRocker][j] == oneByOne.linkOmega[kRocker][j]);
+    CHECK(together.linkAlpha[kRocker][j] == oneByOne.linkAlpha[kRocker][j]);
+  }
+  CHECK(together.linkAngle[kCrank][3] == within(degToRad(210.0), 1e-14));
+  CHECK(together.position[kC][3] == block[3].position[kC]);
 }
 
 TEST_CASE("SampleWriter fills a ground pivot's columns only where the linkage assembles", "[sweep]") {
