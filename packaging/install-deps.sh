@@ -1,6 +1,12 @@
 #!/usr/bin/env bash
 # Installs Linkwright's build and test dependencies from Debian 12 packages.
 # Does nothing when everything is present; uses sudo when not run as root.
+#
+#   packaging/install-deps.sh            what building, testing and packaging need
+#   packaging/install-deps.sh --checks   also the tools CI checks the package with
+#
+# Packages are installed with --no-install-recommends, so every package the build reads must
+# be named here or be a hard dependency of one named here; packaging/audit-deps.sh checks it.
 set -euo pipefail
 
 packages=(
@@ -9,8 +15,24 @@ packages=(
   catch2                     # Catch2 2.13 test framework
   qt6-base-dev qt6-charts-dev qt6-svg-dev  # the GUI (Widgets, Charts, SVG export)
   libgl-dev                  # OpenGL headers that Qt6Gui's CMake package requires
+  libqt6opengl6-dev          # Qt6OpenGL: Qt6Charts' CMake package requires it, yet it is only a
+                             # Recommends of qt6-base-dev, which --no-install-recommends skips
   libbenchmark-dev           # Google Benchmark: the core's speed benchmarks (docs/benchmarks.md)
+  help2man                   # the manual pages, made from each program's --help
+  dpkg-dev file              # cpack -G DEB: dpkg-shlibdeps finds the package's dependencies
 )
+
+check_packages=(
+  lintian                    # Debian's package checker
+  appstream desktop-file-utils  # validate the AppStream data and the desktop entry
+  mmdebstrap                 # a fresh Debian 12 root (packaging/fresh-root.sh)
+)
+
+case "${1:-}" in
+  "") ;;
+  --checks) packages+=("${check_packages[@]}") ;;
+  *) echo "usage: packaging/install-deps.sh [--checks]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# A fresh Debian 12 root, to prove what a new user's machine needs: nothing in it but Debian's
+# minimal base (mmdebstrap --variant=minbase) and what our scripts install.
+#
+#   packaging/fresh-root.sh create ROOT        make ROOT anew from the host's Debian apt sources
+#   packaging/fresh-root.sh run ROOT COMMAND   run the bash COMMAND as root inside ROOT, in /src,
+#                                              which is this source tree
+#   packaging/fresh-root.sh remove ROOT        delete ROOT
+#
+# Every mount (/proc, /dev/pts, the source tree, the apt download cache) is made inside a private mount
+# namespace that dies with the command, so none outlives it on any exit path and the host's
+# /dev and /proc are never touched: the root's /dev holds its own device nodes. remove refuses
+# to delete a root that still has anything mounted under it.
+set -euo pipefail
+
+usage() { sed -n '4,7s/^# \{0,1\}//p' "$0" >&2; exit 2; }
+[[ $# -ge 2 ]] || usage
+action=$1
+root=$(realpath -m "$2")
+source_dir=$(cd "$(dirname "$0")/.." && pwd)
+# Downloaded .deb files are kept here between runs, so a second run does not fetch Qt again.
+apt_cache=${LINKWRIGHT_APT_CACHE:-/var/cache/linkwright/apt-archives}
+
+[[ $(id -u) -eq 0 ]] || { echo "fresh-root: needs root (chroot and mounts)" >&2; exit 2; }
+[[ "$root" != / && "$root" != "$source_dir"* ]] || { echo "fresh-root: refusing root $root" >&2; exit 2; }
+
+mounted_under() { findmnt -rn -o TARGET | awk -v r="$root" 'index($0, r "/") == 1 || $0 == r'; }
+
+remove_root() {
+  if [[ -n "$(mounted_under)" ]]; then
+    echo "fresh-root: not removing $root: still mounted: $(mounted_under | tr '\n' ' ')" >&2
+    exit 1
+  fi
+  rm -rf --one-file-system "$root"
+}
+
+# The host's Debian sources (deb822 or one-line), so the root uses the same archive and snapshot.
+debian_sources() {
+  local f
+  for f in /etc/apt/sources.list.d/*.sources /etc/apt/sources.list.d/*.list /etc/apt/sources.list; do
+    [[ -s "$f" ]] && grep -qE '^[^#]*(deb\.debian\.org|debian)' "$f" && echo "$f"
+  done
+  return 0
+}
+
+case "$action" in
+  create)
+    command -v mmdebstrap >/dev/null || { echo "fresh-root: mmdebstrap missing: packaging/install-deps.sh --checks" >&2; exit 2; }
+    mapfile -t sources < <(debian_sources)
+    [[ ${#sources[@]} -gt 0 ]] || { echo "fresh-root: no Debian apt sources on this host" >&2; exit 2; }
+    [[ -e "$root" ]] && remove_root
+    mkdir -p "$(dirname "$root")"
+    # Root mode creates the device nodes in the root itself; no bind mount of /dev is needed.
+    mmdebstrap --quiet --variant=minbase --mode=root bookworm "$root" "${sources[@]}"
+    cp /etc/resolv.conf "$root/etc/resolv.conf"
+    mkdir -p "$root/src"
+    echo "fresh-root: Debian 12 minimal root at $root ($(chroot "$root" dpkg-query -W | wc -l) packages)"
+    ;;
+  run)
+    [[ $# -eq 3 ]] || usage
+    [[ -x "$root/usr/bin/apt-get" ]] || { echo "fresh-root: $root is not a root made by create" >&2; exit 2; }
+    mkdir -p "$apt_cache/partial"
+    # unshare gives a private mount namespace (propagation private): these mounts are
+    # invisible to the host and vanish when the command ends, however it ends.
+    unshare --mount --fork -- bash -euc '
+      root=$1 src=$2 cache=$3 command=$4
+      mount -t proc proc "$root/proc"
+      # A pty instance of its own, for apt and dpkg logs.
+      mount -t devpts -o newinstance,ptmxmode=0666 devpts "$root/dev/pts"
+      mount --bind "$src" "$root/src"
+      mount --bind "$cache" "$root/var/cache/apt/archives"
+      exec chroot "$root" /usr/bin/env -i HOME=/root LANG=C.UTF-8 TERM=dumb CI="${CI:-}" \
+        PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
+        DEBIAN_FRONTEND=noninteractive /bin/bash -euo pipefail -c "cd /src && $command"
+    ' fresh-root "$root" "$source_dir" "$apt_cache" "$3"
+    ;;
+  remove)
+    remove_root
+    ;;
+  *) usage ;;
+esac
