@@ -11,10 +11,11 @@ std::string guiUsage() {
   std::string names;
   for (const auto& e : kinematics::fourBarExamples()) names += "\n                      " + e.name;
   for (const auto& e : kinematics::mechanismExamples()) names += "\n                      " + e.name;
-  return "Usage: linkwright [FILE.json] [OPTIONS]\n\n"
+  return "Usage: linkwright [FILE] [OPTIONS]\n\n"
          "Linkwright: design and analyse planar linkages (four-bars, slider-cranks, quick\n"
-         "returns, six-bars). Opens FILE.json (any kind), or the thesis crank-rocker example,\n"
-         "and animates it.\n\n"
+         "returns, six-bars). Opens FILE, a Linkwright document of any kind (.linkwright, or\n"
+         ".json as older versions saved it), or the thesis crank-rocker example, and\n"
+         "animates it.\n\n"
          "Options:\n"
          "  --example NAME      start on a built-in example:" + names + "\n"
          "  --screenshot FILE   render the window to FILE (PNG) and exit, without animating\n"

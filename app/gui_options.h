@@ -1,5 +1,5 @@
 #pragma once
-// The GUI's command line: linkwright [FILE.json] [--example NAME] [--screenshot FILE.png]
+// The GUI's command line: linkwright [FILE] [--example NAME] [--screenshot FILE.png]
 // [--presentation] [--forces] [--crank-angle DEG] [--help] [--version].
 
 #include <optional>

@@ -48,10 +48,6 @@ namespace linkwright::ui {
 
 namespace k = kinematics;
 
-namespace {
-const QString kDocumentFilter = QObject::tr("Linkwright documents (*.json)");
-}
-
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), m_settings(std::make_unique<Settings>()), m_document(new MechanismDocument(this)),
       m_animator(new CrankAnimator(m_document, this)), m_banner(new MessageBanner(this)),
@@ -393,15 +389,14 @@ bool MainWindow::save() {
 }
 
 bool MainWindow::saveAs() {
-  QString path = QFileDialog::getSaveFileName(this, tr("Save linkage"), m_document->filePath(), kDocumentFilter);
+  const QString path = QFileDialog::getSaveFileName(this, tr("Save linkage"), m_document->filePath(), saveDocumentFilter());
   if (path.isEmpty()) return false;
-  if (QFileInfo(path).suffix().isEmpty()) path += ".json";
-  return saveTo(path);
+  return saveTo(withDocumentSuffix(path));
 }
 
 void MainWindow::open() {
   if (!maybeSave()) return;
-  const QString path = QFileDialog::getOpenFileName(this, tr("Open linkage"), QString(), kDocumentFilter);
+  const QString path = QFileDialog::getOpenFileName(this, tr("Open linkage"), QString(), openDocumentFilter());
   if (!path.isEmpty()) openFile(path);
 }
 

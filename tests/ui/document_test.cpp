@@ -113,6 +113,21 @@ TEST_CASE("save then open reproduces the document", "[ui][document][file]") {
   CHECK(back == kinematics::Design{d});
 }
 
+TEST_CASE("documents are saved as .linkwright and opened from .linkwright or .json", "[ui][document][file]") {
+  CHECK(ui::withDocumentSuffix("/tmp/arm") == "/tmp/arm.linkwright");
+  CHECK(ui::withDocumentSuffix("/tmp/arm.json") == "/tmp/arm.json");
+  CHECK(ui::withDocumentSuffix("/tmp/v1.2/arm") == "/tmp/v1.2/arm.linkwright");
+  CHECK(ui::saveDocumentFilter().startsWith("Linkwright documents (*.linkwright)"));
+  CHECK(ui::openDocumentFilter().contains("*.linkwright *.json"));
+  // The content is the same JSON whatever the extension.
+  QTemporaryDir dir;
+  const QString path = dir.filePath("linkage.linkwright");
+  REQUIRE_FALSE(ui::saveDesignFile(path, withCrank(24.0)).has_value());
+  kinematics::Design back;
+  REQUIRE_FALSE(ui::loadDesignFile(path, back).has_value());
+  CHECK(back == kinematics::Design{withCrank(24.0)});
+}
+
 TEST_CASE("missing, corrupt and newer files are refused with the reason", "[ui][document][file][errors]") {
   QTemporaryDir dir;
   const QString corrupt = dir.filePath("corrupt.json");

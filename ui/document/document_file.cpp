@@ -17,6 +17,18 @@ constexpr qint64 kMaxDocumentBytes = 16 * 1024 * 1024;
 
 } // namespace
 
+QString openDocumentFilter() {
+  return tr("Linkwright documents (*.linkwright *.json);;All files (*)");
+}
+
+QString saveDocumentFilter() {
+  return tr("Linkwright documents (*.linkwright);;JSON documents (*.json)");
+}
+
+QString withDocumentSuffix(const QString& path) {
+  return QFileInfo(path).suffix().isEmpty() ? path + ".linkwright" : path;
+}
+
 std::optional<QString> loadDesignFile(const QString& path, kinematics::Design& design) {
   const QString name = QFileInfo(path).fileName();
   QFile file(path);

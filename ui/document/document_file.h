@@ -11,6 +11,15 @@
 
 namespace linkwright::ui {
 
+/// File dialog filters: Open takes `.linkwright` and `.json` documents alike; Save offers
+/// `.linkwright` first, the extension the desktop's MIME type (packaging/linkwright-mime.xml)
+/// opens in the designer, so a double-click does not claim every JSON file.
+QString openDocumentFilter();
+QString saveDocumentFilter();
+
+/// `path` with `.linkwright` appended when it has no extension of its own.
+QString withDocumentSuffix(const QString& path);
+
 /// Reads `path` into `design`; on failure returns the message and leaves `design` untouched.
 std::optional<QString> loadDesignFile(const QString& path, kinematics::Design& design);
 
