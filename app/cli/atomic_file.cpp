@@ -15,12 +15,14 @@ std::optional<std::string> writeFileAtomically(const std::string& path, const st
   {
     std::ofstream file(temp, std::ios::binary | std::ios::trunc);
     if (!file) return "cannot write " + path + ": " + std::strerror(errno);
+    errno = 0;
     file << contents;
     file.flush();
     if (!file) {
+      const int why = errno;  // EFBIG or ENOSPC from the failed write, before remove() runs
       std::error_code ignored;
       std::filesystem::remove(temp, ignored);
-      return "cannot write " + path + ": write failed";
+      return "cannot write " + path + ": " + (why != 0 ? std::strerror(why) : "write failed");
     }
   }
   std::error_code ec;

@@ -3,6 +3,7 @@
 
 #include "app/cli/cli.h"
 #include "tests/cli/run_cli.h"
+#include "tests/support/file_size_limit.h"
 
 #include "kinematics/analysis/two_link_arm.h"
 #include "kinematics/model/fourbar.h"
@@ -235,6 +236,25 @@ TEST_CASE("analyze -o writes the same CSV to a file, atomically", "[cli]") {
   const Run bad = run({"analyze", "--example", "thesis-crank-rocker", "-o", (dir / "missing" / "x.csv").string()});
   CHECK(bad.code == 1);
   CHECK_THAT(bad.err, Catch::Contains("cannot write"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("analyze -o to a full disk keeps the previous file and says why", "[cli][errors]") {
+  const auto dir = std::filesystem::temp_directory_path() / "linkwright_cli_full_disk_test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto file = dir / "thesis.csv";
+  REQUIRE(run({"analyze", "--example", "thesis-crank-rocker", "--step", "90", "-o", file.string()}).code == 0);
+  const auto before = std::filesystem::file_size(file);
+  Run full;
+  {
+    test::FileSizeLimit limit(100);  // smaller than the table: the write fails part-way
+    full = run({"analyze", "--example", "thesis-crank-rocker", "--step", "30", "-o", file.string()});
+  }
+  CHECK(full.code == 1);
+  CHECK_THAT(full.err, Catch::Contains("cannot write " + file.string() + ": File too large"));
+  CHECK(std::filesystem::file_size(file) == before);
+  CHECK_FALSE(std::filesystem::exists(dir / "thesis.csv.linkwright-tmp"));
   std::filesystem::remove_all(dir);
 }
 

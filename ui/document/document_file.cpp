@@ -45,7 +45,10 @@ std::optional<QString> loadDesignFile(const QString& path, kinematics::Design& d
 std::optional<QString> saveFileAtomically(const QString& path, const QByteArray& bytes) {
   QSaveFile file(path);
   if (!file.open(QIODevice::WriteOnly)) return tr("Cannot write %1: %2.").arg(QFileInfo(path).fileName(), file.errorString());
-  if (file.write(bytes) != bytes.size() || !file.commit())
+  // flush() before commit(): Qt 6.4's commit() does not see a failed flush of QFileDevice's
+  // write buffer, and would rename a truncated file over the previous one (seen with a
+  // file-size limit standing in for a full disk).
+  if (file.write(bytes) != bytes.size() || !file.flush() || !file.commit())
     return tr("Cannot write %1: %2. The previous file, if any, is unchanged.").arg(QFileInfo(path).fileName(), file.errorString());
   return std::nullopt;
 }
