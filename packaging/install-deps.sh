@@ -4,6 +4,7 @@
 #
 #   packaging/install-deps.sh            what building, testing and packaging need
 #   packaging/install-deps.sh --checks   also the tools CI checks the package with
+#   packaging/install-deps.sh --fuzz     also clang and libFuzzer (tests/fuzz, sanitizer builds)
 #
 # Packages are installed with --no-install-recommends, so every package the build reads must
 # be named here or be a hard dependency of one named here; packaging/audit-deps.sh checks it.
@@ -12,6 +13,7 @@ set -euo pipefail
 packages=(
   g++ cmake make             # toolchain (C++20, CMake >= 3.25)
   libeigen3-dev              # linear algebra for the kinematics core
+  nlohmann-json3-dev         # the document reader's JSON parser
   catch2                     # Catch2 2.13 test framework
   qt6-base-dev qt6-charts-dev qt6-svg-dev  # the GUI (Widgets, Charts, SVG export)
   libgl-dev                  # OpenGL headers that Qt6Gui's CMake package requires
@@ -28,10 +30,16 @@ check_packages=(
   mmdebstrap                 # a fresh Debian 12 root (packaging/fresh-root.sh)
 )
 
+fuzz_packages=(
+  clang                      # libFuzzer's compiler (Debian 12: clang 14)
+  libclang-rt-14-dev         # the libFuzzer and sanitizer runtimes, only a Recommends of clang
+)
+
 case "${1:-}" in
   "") ;;
   --checks) packages+=("${check_packages[@]}") ;;
-  *) echo "usage: packaging/install-deps.sh [--checks]" >&2; exit 2 ;;
+  --fuzz) packages+=("${fuzz_packages[@]}") ;;
+  *) echo "usage: packaging/install-deps.sh [--checks | --fuzz]" >&2; exit 2 ;;
 esac
 
 missing=()

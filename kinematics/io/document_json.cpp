@@ -13,7 +13,6 @@
 namespace linkwright::kinematics::io {
 namespace {
 
-using Type = JsonValue::Type;
 
 Error documentError(const std::string& path, const std::string& why) {
   return Error{ErrorCode::InvalidValue, path, path + " " + why};
@@ -155,7 +154,7 @@ Result<Design> readDocument(std::string_view text) {
   const Result<JsonValue> parsed = parseJson(text);
   if (!parsed) return Error{ErrorCode::InvalidValue, "json", "not valid JSON: " + parsed.error().message};
   const JsonValue& root = *parsed;
-  if (root.type != Type::Object) return documentError("document", "must be a JSON object");
+  if (!root.is_object()) return documentError("document", "must be a JSON object");
   JsonReader r;
   const Result<int> version = checkHeader(root, r);
   if (!version) return version.error();

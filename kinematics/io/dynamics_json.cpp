@@ -8,7 +8,6 @@
 namespace linkwright::kinematics::io {
 namespace {
 
-using Type = JsonValue::Type;
 
 std::string xy(const Eigen::Vector2d& v, const char* x, const char* y) {
   return "\"" + std::string(x) + "\": " + formatDouble(v.x()) + ", \"" + y + "\": " + formatDouble(v.y());
@@ -50,10 +49,11 @@ int readGuide(const JsonValue& v, const std::string& path, JsonReader& r) {
 
 void readLinks(const JsonValue& d, JsonReader& r, LinkageDynamics& out) {
   const JsonValue* links = r.object(d, "links", "dynamics.links", false);
-  for (std::size_t k = 0; links != nullptr && k < links->object.size() && !r.error; ++k) {
-    const auto& [name, v] = links->object[k];
+  if (links == nullptr) return;
+  for (const auto& [name, v] : links->items()) {
+    if (r.error) break;
     const std::string path = "dynamics.links." + name;
-    if (v.type != Type::Object) {
+    if (!v.is_object()) {
       r.fail(path, "must be an object");
       break;
     }
@@ -70,13 +70,13 @@ void readLinks(const JsonValue& d, JsonReader& r, LinkageDynamics& out) {
 template <typename F>
 void readArray(const JsonValue& d, const std::string& key, JsonReader& r, F item) {
   const JsonValue* list = r.array(d, key, "dynamics." + key, false);
-  for (std::size_t k = 0; list != nullptr && k < list->array.size() && !r.error; ++k) {
+  for (std::size_t k = 0; list != nullptr && k < list->size() && !r.error; ++k) {
     const std::string path = "dynamics." + key + "[" + std::to_string(k) + "]";
-    if (list->array[k].type != Type::Object) {
+    if (!(*list)[k].is_object()) {
       r.fail(path, "must be an object");
       break;
     }
-    item(list->array[k], path);
+    item((*list)[k], path);
   }
 }
 

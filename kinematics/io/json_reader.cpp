@@ -6,28 +6,26 @@
 
 namespace linkwright::kinematics::io {
 
-using Type = JsonValue::Type;
-
 const JsonValue* JsonReader::object(const JsonValue& parent, const std::string& key, const std::string& path, bool required) {
   const JsonValue* v = member(parent, key, path, required);
-  if (v != nullptr && v->type != Type::Object) return fail(path, "must be an object");
+  if (v != nullptr && !v->is_object()) return fail(path, "must be an object");
   return v;
 }
 
 const JsonValue* JsonReader::array(const JsonValue& parent, const std::string& key, const std::string& path, bool required) {
   const JsonValue* v = member(parent, key, path, required);
-  if (v != nullptr && v->type != Type::Array) return fail(path, "must be an array");
+  if (v != nullptr && !v->is_array()) return fail(path, "must be an array");
   return v;
 }
 
 std::optional<double> JsonReader::number(const JsonValue& parent, const std::string& key, const std::string& path) {
   const JsonValue* v = member(parent, key, path, true);
   if (v == nullptr) return std::nullopt;
-  if (v->type != Type::Number) {
+  if (!v->is_number()) {
     fail(path, "must be a number");
     return std::nullopt;
   }
-  return v->number;
+  return v->get<double>();
 }
 
 std::optional<double> JsonReader::positive(const JsonValue& parent, const std::string& key, const std::string& path) {
@@ -42,11 +40,11 @@ std::optional<double> JsonReader::positive(const JsonValue& parent, const std::s
 std::optional<std::string> JsonReader::string(const JsonValue& parent, const std::string& key, const std::string& path) {
   const JsonValue* v = member(parent, key, path, true);
   if (v == nullptr) return std::nullopt;
-  if (v->type != Type::String) {
+  if (!v->is_string()) {
     fail(path, "must be a string");
     return std::nullopt;
   }
-  return v->string;
+  return v->get<std::string>();
 }
 
 std::nullptr_t JsonReader::fail(const std::string& path, const std::string& why) {
@@ -56,7 +54,7 @@ std::nullptr_t JsonReader::fail(const std::string& path, const std::string& why)
 
 const JsonValue* JsonReader::member(const JsonValue& parent, const std::string& key, const std::string& path, bool required) {
   if (error) return nullptr;
-  const JsonValue* v = parent.find(key);
+  const JsonValue* v = findMember(parent, key);
   if (v == nullptr && required) return fail(path, "is missing");
   return v;
 }

@@ -24,7 +24,7 @@ public:
   std::optional<double> positive(const JsonValue& parent, const std::string& key, const std::string& path);
   std::optional<std::string> string(const JsonValue& parent, const std::string& key, const std::string& path);
   /// Whether `parent` has a member `key` (any type).
-  static bool has(const JsonValue& parent, const std::string& key) { return parent.find(key) != nullptr; }
+  static bool has(const JsonValue& parent, const std::string& key) { return findMember(parent, key) != nullptr; }
 
   /// Records `path + " " + why` as the error unless one is recorded already.
   std::nullptr_t fail(const std::string& path, const std::string& why);

@@ -8,7 +8,6 @@
 namespace linkwright::kinematics::io {
 namespace {
 
-using Type = JsonValue::Type;
 
 const char* branchName(Branch b) { return b == Branch::Open ? "open" : "crossed"; }
 
@@ -140,13 +139,13 @@ private:
 // The names in an array of {"name": …} objects, in order; a repeat is an error.
 std::map<std::string, std::size_t> names(const JsonValue& list, const std::string& path, JsonReader& r) {
   std::map<std::string, std::size_t> out;
-  for (std::size_t i = 0; i < list.array.size() && !r.error; ++i) {
+  for (std::size_t i = 0; i < list.size() && !r.error; ++i) {
     const std::string at = path + "[" + std::to_string(i) + "]";
-    if (list.array[i].type != Type::Object) {
+    if (!list[i].is_object()) {
       r.fail(at, "must be an object");
       break;
     }
-    const std::string name = r.string(list.array[i], "name", at + ".name").value_or("");
+    const std::string name = r.string(list[i], "name", at + ".name").value_or("");
     if (!r.error && !out.emplace(name, i).second) r.fail(at + ".name", "repeats the name '" + name + "'");
   }
   return out;
@@ -185,20 +184,20 @@ Mechanism readMechanismMembers(const JsonValue& mech, const std::string& path, J
   const auto pointIds = names(*points, path + ".points", r);
   const auto linkIds = names(*links, path + ".links", r);
   PointReader reader(r, pointIds, linkIds);
-  for (std::size_t i = 0; i < points->array.size() && !r.error; ++i) {
+  for (std::size_t i = 0; i < points->size() && !r.error; ++i) {
     const std::string at = path + ".points[" + std::to_string(i) + "]";
-    const JsonValue& v = points->array[i];
-    m.points.push_back({v.find("name")->string, reader.read(v, at)});
+    const JsonValue& v = (*points)[i];
+    m.points.push_back({v.at("name").get<std::string>(), reader.read(v, at)});
   }
-  for (std::size_t k = 0; k < links->array.size() && !r.error; ++k) {
+  for (std::size_t k = 0; k < links->size() && !r.error; ++k) {
     const std::string at = path + ".links[" + std::to_string(k) + "]";
-    const JsonValue& v = links->array[k];
-    m.links.push_back({v.find("name")->string, reader.point(v, "first", at), reader.point(v, "second", at)});
+    const JsonValue& v = (*links)[k];
+    m.links.push_back({v.at("name").get<std::string>(), reader.point(v, "first", at), reader.point(v, "second", at)});
   }
-  for (std::size_t c = 0; constraints != nullptr && c < constraints->array.size() && !r.error; ++c) {
+  for (std::size_t c = 0; constraints != nullptr && c < constraints->size() && !r.error; ++c) {
     const std::string at = path + ".constraints[" + std::to_string(c) + "]";
-    const JsonValue& v = constraints->array[c];
-    if (v.type != Type::Object) {
+    const JsonValue& v = (*constraints)[c];
+    if (!v.is_object()) {
       r.fail(at, "must be an object");
       break;
     }

@@ -126,7 +126,7 @@ TEST_CASE("the document text is what the format note says", "[io][document]") {
 TEST_CASE("bad documents are refused with the member named", "[io][document][errors]") {
   const std::string good = writeDocument(sampleDesign());
   auto [text, expected] = GENERATE_COPY(table<std::string, std::string>({
-      {"not json", "not valid JSON: line 1, column 1"},
+      {"not json", "not valid JSON: line 1, column 2: syntax error while parsing value - invalid literal"},
       {"[1, 2]", "document must be a JSON object"},
       {replaced(good, "\"linkwright\"", "\"solvespace\""), "not a Linkwright document"},
       {replaced(good, "\"version\": 2", "\"version\": 7"),

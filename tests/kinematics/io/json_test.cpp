@@ -1,4 +1,5 @@
-// The strict JSON reader behind documents: values, escapes, and errors with line and column.
+// The JSON reader behind documents (nlohmann-json): values, escapes, order, depth, and errors
+// with line and column.
 
 #include "kinematics/io/json.h"
 
@@ -11,50 +12,52 @@ using namespace linkwright::kinematics::io;
 TEST_CASE("parses every JSON value kind and keeps member order", "[io][json]") {
   const auto v = parseJson(R"( {"b": [1, -2.5e3, true, false, null], "a": {"s": "x\"\\\/\n\u00e9\ud83d\ude00"}} )");
   REQUIRE(v.ok());
-  REQUIRE(v->type == JsonValue::Type::Object);
-  REQUIRE(v->object.size() == 2);
-  CHECK(v->object[0].first == "b");  // file order, not sorted
-  const JsonValue* b = v->find("b");
+  REQUIRE(v->is_object());
+  REQUIRE(v->size() == 2);
+  CHECK(v->begin().key() == "b");  // file order, not sorted
+  const JsonValue* b = findMember(*v, "b");
   REQUIRE(b != nullptr);
-  REQUIRE(b->array.size() == 5);
-  CHECK(b->array[0].number == 1.0);
-  CHECK(b->array[1].number == -2500.0);
-  CHECK(b->array[2].boolean);
-  CHECK(b->array[3].type == JsonValue::Type::Bool);
-  CHECK_FALSE(b->array[3].boolean);
-  CHECK(b->array[4].type == JsonValue::Type::Null);
-  CHECK(v->find("a")->find("s")->string == "x\"\\/\n\xc3\xa9\xf0\x9f\x98\x80");  // é and 😀 in UTF-8
-  CHECK(v->find("missing") == nullptr);
+  REQUIRE(b->size() == 5);
+  CHECK((*b)[0].get<double>() == 1.0);
+  CHECK((*b)[1].get<double>() == -2500.0);
+  CHECK((*b)[2].get<bool>());
+  CHECK((*b)[3].is_boolean());
+  CHECK_FALSE((*b)[3].get<bool>());
+  CHECK((*b)[4].is_null());
+  CHECK(findMember(*findMember(*v, "a"), "s")->get<std::string>() == "x\"\\/\n\xc3\xa9\xf0\x9f\x98\x80");  // é and 😀 in UTF-8
+  CHECK(findMember(*v, "missing") == nullptr);
+  CHECK(findMember(*b, "b") == nullptr);  // an array has no members
 }
 
 TEST_CASE("numbers read back bit for bit", "[io][json]") {
   const auto v = parseJson("[0.1, 1.0471975511965976, 5e-324, 1.7976931348623157e308]");
   REQUIRE(v.ok());
-  CHECK(v->array[0].number == 0.1);
-  CHECK(v->array[1].number == 1.0471975511965976);
-  CHECK(v->array[2].number == 5e-324);
-  CHECK(v->array[3].number == 1.7976931348623157e308);
+  CHECK((*v)[0].get<double>() == 0.1);
+  CHECK((*v)[1].get<double>() == 1.0471975511965976);
+  CHECK((*v)[2].get<double>() == 5e-324);
+  CHECK((*v)[3].get<double>() == 1.7976931348623157e308);
 }
 
 TEST_CASE("malformed JSON is refused with line, column and what was expected", "[io][json][errors]") {
   auto [text, expected] = GENERATE(table<std::string, std::string>({
-      {"", "line 1, column 1: unexpected end of the document"},
-      {"{\"a\" 1}", "line 1, column 6: expected ':'"},
-      {"{\"a\": 1,\n \"b\": }", "line 2, column 7: expected a value"},
-      {"[1, 2", "line 1, column 6: expected ',' or ']'"},
-      {"[01]", "line 1, column 3: expected ',' or ']'"},
-      {"[1.]", "expected a digit after '.'"},
-      {"[1e]", "expected an exponent"},
-      {"[1e999]", "number out of range"},
-      {"\"abc", "unterminated string"},
-      {"\"a\tb\"", "control character in string"},
-      {"\"\\q\"", "invalid escape in string"},
-      {"\"\\u12G4\"", "expected four hex digits"},
-      {"\"\\ud800x\"", "invalid surrogate pair"},
-      {"[NaN]", "expected a value"},
-      {"{a: 1}", "expected a member name in quotes"},
-      {"{} {}", "unexpected text after the document"},
-      {std::string(100, '[') + std::string(100, ']'), "nesting deeper than 64"},
+      {"", "line 1, column 1: syntax error while parsing value - unexpected end of input"},
+      {"{\"a\" 1}", "line 1, column 6: syntax error while parsing object separator - unexpected number literal; expected ':'"},
+      {"{\"a\": 1,\n \"b\": }", "line 2, column 7: syntax error while parsing value - unexpected '}'"},
+      {"[1, 2", "line 1, column 6: syntax error while parsing array - unexpected end of input; expected ']'"},
+      {"[01]", "line 1, column 3: syntax error while parsing array - unexpected number literal"},
+      {"[1.]", "expected digit after '.'"},
+      {"[1e]", "expected '+', '-', or digit after exponent"},
+      {"[1e999]", "number overflow parsing '1e999': beyond the range of a double"},
+      {"\"abc", "missing closing quote"},
+      {"\"a\tb\"", "control character U+0009 (HT) must be escaped"},
+      {"\"\\q\"", "forbidden character after backslash"},
+      {"\"\\u12G4\"", "'\\u' must be followed by 4 hex digits"},
+      {"\"\\ud800x\"", "surrogate U+D800..U+DBFF must be followed by U+DC00..U+DFFF"},
+      {"\"\xff\"", "ill-formed UTF-8 byte"},
+      {"[NaN]", "line 1, column 2: syntax error while parsing value - invalid literal"},
+      {"{a: 1}", "expected string literal"},
+      {"{} {}", "line 1, column 4: syntax error while parsing value - unexpected '{'; expected end of input"},
+      {std::string(65, '[') + std::string(65, ']'), "nesting deeper than 64"},
   }));
   CAPTURE(text);
   const auto v = parseJson(text);
@@ -62,10 +65,15 @@ TEST_CASE("malformed JSON is refused with line, column and what was expected", "
   CHECK_THAT(v.error().message, Catch::Contains(expected));
 }
 
+TEST_CASE("nesting up to the limit is accepted", "[io][json]") {
+  CHECK(parseJson(std::string(kMaxJsonDepth, '[') + std::string(kMaxJsonDepth, ']')).ok());
+}
+
 TEST_CASE("jsonQuote escapes what JSON requires", "[io][json]") {
   CHECK(jsonQuote("mm") == "\"mm\"");
   CHECK(jsonQuote("a\"b\\c\nd\x01") == "\"a\\\"b\\\\c\\nd\\u0001\"");
   const auto back = parseJson(jsonQuote("tab\there \"q\" \x1f"));
   REQUIRE(back.ok());
-  CHECK(back->string == "tab\there \"q\" \x1f");
+  CHECK(back->get<std::string>() == "tab\there \"q\" \x1f");
+  CHECK(jsonQuote("bad\xff") == "\"bad\xef\xbf\xbd\"");  // invalid UTF-8 written as U+FFFD
 }
