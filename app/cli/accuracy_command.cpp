@@ -100,8 +100,10 @@ k::Result<std::vector<Row>> measure(const Subject& s) {
   if (!reference) return k::Error{reference.error().code, "--example", s.name + ": " + reference.error().message};
   std::vector<Row> rows;
   for (const std::size_t n : kSampleCounts) {
-    for (const auto& [method, derivative] : {std::pair{"samples", k::DerivativeMethod::Exact}, {"frames", k::DerivativeMethod::FiniteDifference}}) {
-      Row r{s.name, method, n, 0.0, {}};
+    for (const auto& choice : {std::pair{"samples", k::DerivativeMethod::Exact}, {"frames", k::DerivativeMethod::FiniteDifference}}) {
+      // A plain local, not a structured binding: clang 14 cannot capture those in a lambda.
+      const k::DerivativeMethod derivative = choice.second;
+      Row r{s.name, choice.first, n, 0.0, {}};
       const auto read = timed([&] { return k::sampledPeaks(s.mechanism, s.omega, n, derivative); }, r.microseconds);
       if (!read) return read.error();
       r.error = k::peakError(*read, *reference);

@@ -1,0 +1,117 @@
+#include "tests/fuzz/fuzz_checks.h"
+
+#include "app/cli/arguments.h"
+#include "app/cli/cli.h"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+namespace linkwright::fuzz {
+namespace {
+
+constexpr std::size_t kMaxArguments = 32;
+constexpr std::size_t kMaxArgumentBytes = 256;
+
+bool isTokenChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '+' || c == '-'; }
+
+// One CLI run: its exit code must be a documented one and no output may hold a non-finite
+// number. Exit 2 (bad input) must say why.
+std::optional<std::string> checkRun(const std::vector<std::string>& args, std::string_view document = {}) {
+  std::ostringstream out, err;
+  const int code = cli::runCli(args, out, err);
+  std::string call, typed(document);
+  for (const auto& a : args) {
+    call += " '" + a + "'";
+    typed += "\n" + a;
+  }
+  if (code < 0 || code > 3) return "exit code " + std::to_string(code) + " for" + call;
+  if (code == 2 && err.str().empty()) return "exit code 2 without a message for" + call;
+  if (const auto token = nonFiniteToken(out.str(), typed)) return "'" + *token + "' in the output of" + call;
+  if (const auto token = nonFiniteToken(err.str(), typed)) return "'" + *token + "' in the messages of" + call;
+  return std::nullopt;
+}
+
+std::string lowerCase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+} // namespace
+
+std::optional<std::string> nonFiniteToken(std::string_view text, std::string_view typed) {
+  std::optional<std::string> typedLower;  // made only when a nan or inf turns up
+  std::size_t i = 0;
+  while (i < text.size()) {
+    if (!isTokenChar(text[i])) {
+      ++i;
+      continue;
+    }
+    std::size_t end = i;
+    while (end < text.size() && isTokenChar(text[end])) ++end;
+    const std::string token(text.substr(i, end - i));
+    const std::size_t sign = token[0] == '-' || token[0] == '+' ? 1 : 0;
+    const std::string bare = token.size() - sign == 3 ? lowerCase(token.substr(sign)) : std::string();
+    if (bare == "nan" || bare == "inf") {
+      if (!typedLower) typedLower = lowerCase(std::string(typed));
+      if (typedLower->find(lowerCase(token)) == std::string::npos) return token;
+    }
+    i = end;
+  }
+  return std::nullopt;
+}
+
+std::vector<std::string> splitArguments(std::string_view bytes) {
+  std::vector<std::string> args;
+  std::size_t start = 0;
+  while (start <= bytes.size() && args.size() < kMaxArguments) {
+    const std::size_t nul = bytes.find('\0', start);
+    const std::size_t end = nul == std::string_view::npos ? bytes.size() : nul;
+    args.emplace_back(bytes.substr(start, std::min(end - start, kMaxArgumentBytes)));
+    if (nul == std::string_view::npos) break;
+    start = nul + 1;
+  }
+  return args;
+}
+
+std::optional<std::string> checkDocument(std::string_view bytes, const std::string& scratchPath) {
+  {
+    std::ofstream file(scratchPath, std::ios::binary | std::ios::trunc);
+    file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    if (!file) return "cannot write the scratch file " + scratchPath;
+  }
+  const std::vector<std::vector<std::string>> runs = {
+      {"analyze", scratchPath, "--samples", "13"},
+      {"analyze", scratchPath, "--samples", "13", "--forces"},
+      {"classify", scratchPath},
+  };
+  for (const auto& args : runs)
+    if (auto finding = checkRun(args, bytes)) return finding;
+  return std::nullopt;
+}
+
+std::optional<std::string> checkArguments(std::string_view bytes) {
+  const auto args = splitArguments(bytes);
+  const auto parsed = cli::parseArguments(args);
+  if (!parsed) {
+    if (parsed.error().message.empty()) return std::string("a parse error without a message");
+    std::string typed;
+    for (const auto& a : args) typed += a + "\n";
+    if (const auto token = nonFiniteToken(parsed.error().message, typed)) return "'" + *token + "' in the parse error";
+    return std::nullopt;
+  }
+  using cli::Command;
+  const auto& inv = *parsed;
+  const Command c = inv.command;
+  // A sweep is run only on a grid of at most a few thousand angles, so no input makes an
+  // iteration slow (the default grid of --fourbar is 1°, of an example its own few hundred).
+  const bool smallGrid = inv.samples ? *inv.samples <= 4000 : (!inv.stepDeg || *inv.stepDeg >= 0.1);
+  const bool cheap = c == Command::Classify || c == Command::Centres || c == Command::Examples ||
+                     c == Command::Help || c == Command::Version ||
+                     ((c == Command::Analyze || c == Command::Extremes) && smallGrid);
+  if (!cheap || inv.outputFile || inv.svgFile || inv.documentPath) return std::nullopt;
+  return checkRun(args);
+}
+
+} // namespace linkwright::fuzz

@@ -1,0 +1,36 @@
+#pragma once
+// What a fuzzed input must never do, as plain functions: the libFuzzer targets call them
+// and abort on a finding, and fuzz_regression_test.cpp runs every stored input through them
+// in the ordinary test suite, so a crash once found stays fixed.
+//
+// The promise checked: any input gives a clear error or a result, never a crash, a hang, an
+// exit code outside the documented ones, or "nan"/"inf" in any output.
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace linkwright::fuzz {
+
+/// A document's bytes as linkwright-cli sees them: written to `scratchPath`, then analyze and
+/// analyze --forces over a 13-sample grid, and classify. Returns what went wrong, or nothing.
+/// (extremes, whose refinement costs ten times more, is left to the arguments fuzzer and the
+/// soak, so that the loader runs fast enough to be fuzzed for 10^7 inputs.)
+std::optional<std::string> checkDocument(std::string_view bytes, const std::string& scratchPath);
+
+/// NUL-separated command-line arguments: parsed, and run when the command is cheap and writes
+/// no file (classify, centres, examples, help, version, and analyze or extremes on a grid of at
+/// most a few thousand angles). Returns what went wrong, or nothing.
+std::optional<std::string> checkArguments(std::string_view bytes);
+
+/// The arguments in NUL-separated bytes (at most 32, each at most 256 bytes: the rest is
+/// dropped, so an input cannot ask for unbounded work).
+std::vector<std::string> splitArguments(std::string_view bytes);
+
+/// The first "nan" or "inf" written as a number in `text` ("-nan", "inf", "+INF"…) that the
+/// user did not type (is not part of `typed`: the arguments or the document, which messages
+/// quote), or nothing. Words such as "infinite" or "at infinity" are not numbers and pass.
+std::optional<std::string> nonFiniteToken(std::string_view text, std::string_view typed = {});
+
+} // namespace linkwright::fuzz
