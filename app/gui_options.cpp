@@ -2,6 +2,9 @@
 
 #include "kinematics/model/mechanism_design.h"
 
+#include <QCommandLineParser>
+#include <QStringList>
+
 #include <charconv>
 #include <cmath>
 
@@ -28,50 +31,61 @@ std::string guiUsage() {
 }
 
 std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, std::string& error) {
-  GuiOptions o;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&]() -> std::optional<std::string> {
-      if (i + 1 >= args.size()) {
-        error = a + " needs a value";
-        return std::nullopt;
-      }
-      return args[++i];
-    };
-    if (a == "--help" || a == "-h") o.help = true;
-    else if (a == "--version") o.version = true;
-    else if (a == "--presentation") o.presentation = true;
-    else if (a == "--forces") o.forces = true;
-    else if (a == "--example" || a == "--screenshot" || a == "--crank-angle") {
-      const auto v = value();
-      if (!v) return std::nullopt;
-      if (a == "--example") {
-        if (!kinematics::designForExample(*v)) {
-          error = "--example: no example named '" + *v + "' (see --help)";
-          return std::nullopt;
-        }
-        o.example = *v;
-      } else if (a == "--screenshot") {
-        o.screenshot = *v;
-      } else {
-        double deg = 0.0;
-        const auto [ptr, ec] = std::from_chars(v->data(), v->data() + v->size(), deg);
-        if (ec != std::errc{} || ptr != v->data() + v->size() || !std::isfinite(deg)) {
-          error = "--crank-angle: '" + *v + "' is not a finite number";
-          return std::nullopt;
-        }
-        o.crankAngleDeg = deg;
-      }
-    } else if (!a.empty() && a[0] == '-') {
-      error = "unknown option '" + a + "' (see linkwright --help)";
-      return std::nullopt;
-    } else if (o.file) {
-      error = "only one file can be opened (got '" + *o.file + "' and '" + a + "')";
-      return std::nullopt;
-    } else {
-      o.file = a;
-    }
+  // QCommandLineParser (Qt Core) does the splitting: --name=value and --name value, -h,
+  // unknown options and missing values, with its own messages.
+  QCommandLineParser parser;
+  const QCommandLineOption help({"h", "help"}, {});
+  const QCommandLineOption version("version", {});
+  const QCommandLineOption presentation("presentation", {});
+  const QCommandLineOption forces("forces", {});
+  const QCommandLineOption example("example", {}, "NAME");
+  const QCommandLineOption screenshot("screenshot", {}, "FILE");
+  const QCommandLineOption crankAngle("crank-angle", {}, "DEG");
+  parser.addOptions({help, version, presentation, forces, example, screenshot, crankAngle});
+  parser.addPositionalArgument("file", {});
+  QStringList arguments{"linkwright"};
+  for (const std::string& a : args) arguments << QString::fromStdString(a);
+  if (!parser.parse(arguments)) {
+    error = parser.errorText().toStdString() + " (see linkwright --help)";
+    return std::nullopt;
   }
+  for (const auto& option : {example, screenshot, crankAngle})
+    if (parser.values(option).size() > 1) {
+      error = "--" + option.names().front().toStdString() + " is given more than once";
+      return std::nullopt;
+    }
+
+  GuiOptions o;
+  o.help = parser.isSet(help);
+  o.version = parser.isSet(version);
+  o.presentation = parser.isSet(presentation);
+  o.forces = parser.isSet(forces);
+  if (parser.isSet(example)) {
+    const std::string name = parser.value(example).toStdString();
+    if (!kinematics::designForExample(name)) {
+      error = "--example: no example named '" + name + "' (see --help)";
+      return std::nullopt;
+    }
+    o.example = name;
+  }
+  if (parser.isSet(screenshot)) o.screenshot = parser.value(screenshot).toStdString();
+  if (parser.isSet(crankAngle)) {
+    // std::from_chars, not QString::toDouble: '.' is the decimal point whatever the locale.
+    const std::string text = parser.value(crankAngle).toStdString();
+    double deg = 0.0;
+    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), deg);
+    if (ec != std::errc{} || ptr != text.data() + text.size() || !std::isfinite(deg)) {
+      error = "--crank-angle: '" + text + "' is not a finite number";
+      return std::nullopt;
+    }
+    o.crankAngleDeg = deg;
+  }
+  const QStringList files = parser.positionalArguments();
+  if (files.size() > 1) {
+    error = "only one file can be opened (got '" + files[0].toStdString() + "' and '" + files[1].toStdString() + "')";
+    return std::nullopt;
+  }
+  if (!files.isEmpty()) o.file = files.front().toStdString();
   if (o.file && o.example) {
     error = "give a file or --example, not both";
     return std::nullopt;

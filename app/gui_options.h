@@ -19,7 +19,9 @@ struct GuiOptions {
   bool version = false;
 };
 
-/// Parses the arguments after the program name; `error` gets a message naming the option.
+/// Parses the arguments after the program name (with QCommandLineParser, so it needs no
+/// QApplication: --help and --version work without a display); `error` gets a message
+/// naming the option.
 std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, std::string& error);
 
 /// The --help text, with exit codes.

@@ -1,0 +1,63 @@
+// The designer's command line (app/gui_options.h): every option, both value forms, and a
+// message naming the option for each kind of mistake.
+
+#include "app/gui_options.h"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+using namespace linkwright;
+
+namespace {
+
+struct Parsed {
+  std::optional<app::GuiOptions> options;
+  std::string error;
+};
+
+Parsed parse(const std::vector<std::string>& args) {
+  Parsed p;
+  p.options = app::parseGuiOptions(args, p.error);
+  return p;
+}
+
+} // namespace
+
+TEST_CASE("the designer's options are read in both value forms", "[ui][options]") {
+  const auto p = parse({"--example=shaper", "--screenshot", "shot.png", "--crank-angle", "-30.5", "--presentation", "--forces"});
+  REQUIRE(p.options);
+  CHECK(p.options->example == "shaper");
+  CHECK(p.options->screenshot == "shot.png");
+  CHECK(p.options->crankAngleDeg == -30.5);
+  CHECK(p.options->presentation);
+  CHECK(p.options->forces);
+  CHECK_FALSE(p.options->file);
+
+  const auto file = parse({"arm.linkwright", "--crank-angle=90"});
+  REQUIRE(file.options);
+  CHECK(file.options->file == "arm.linkwright");
+  CHECK(file.options->crankAngleDeg == 90.0);
+
+  CHECK(parse({"-h"}).options->help);
+  CHECK(parse({"--version"}).options->version);
+  CHECK_FALSE(parse({}).options->help);
+}
+
+TEST_CASE("mistakes on the designer's command line name the option", "[ui][options][errors]") {
+  auto [args, message] = GENERATE(table<std::vector<std::string>, std::string>({
+      {{"--bogus"}, "Unknown option 'bogus'"},
+      {{"--example"}, "Missing value after '--example'"},
+      {{"--example", "nope"}, "--example: no example named 'nope'"},
+      {{"--crank-angle", "1,5"}, "--crank-angle: '1,5' is not a finite number"},
+      {{"--crank-angle", "inf"}, "--crank-angle: 'inf' is not a finite number"},
+      {{"--screenshot", "a.png", "--screenshot", "b.png"}, "--screenshot is given more than once"},
+      {{"a.linkwright", "b.linkwright"}, "only one file can be opened (got 'a.linkwright' and 'b.linkwright')"},
+      {{"a.linkwright", "--example", "shaper"}, "give a file or --example, not both"},
+  }));
+  CAPTURE(args);
+  const auto p = parse(args);
+  CHECK_FALSE(p.options);
+  CHECK_THAT(p.error, Catch::Contains(message));
+}
