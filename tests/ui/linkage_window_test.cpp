@@ -13,6 +13,8 @@
 #include "app/cli/cli.h"
 #include "kinematics/model/mechanism_design.h"
 
+#include "tests/ui/support/read_file.h"
+
 #include <catch2/catch.hpp>
 
 #include <QAction>
@@ -24,15 +26,10 @@
 #include <sstream>
 
 using namespace linkwright;
+using test::readAll;
 namespace k = linkwright::kinematics;
 
 namespace {
-
-QByteArray readAll(const QString& path) {
-  QFile f(path);
-  REQUIRE(f.open(QIODevice::ReadOnly));
-  return f.readAll();
-}
 
 QMenu* topMenu(ui::MainWindow& window, const QString& title) {
   for (QAction* a : window.menuBar()->actions())

@@ -24,6 +24,8 @@
 #include "kinematics/model/mechanism_design.h"
 #include "kinematics/model/units.h"
 
+#include "tests/ui/support/read_file.h"
+
 #include <catch2/catch.hpp>
 
 #include <QCheckBox>
@@ -38,14 +40,9 @@
 #include <sstream>
 
 using namespace linkwright;
+using test::readAll;
 
 namespace {
-
-QByteArray readAll(const QString& path) {
-  QFile f(path);
-  REQUIRE(f.open(QIODevice::ReadOnly));
-  return f.readAll();
-}
 
 // The linkwright-cli command line that describes the same table as the design.
 std::vector<std::string> cliArguments(const kinematics::FourBarDesign& d) {

@@ -13,6 +13,8 @@
 #include "kinematics/model/mechanism_design.h"
 #include "tests/support/file_size_limit.h"
 
+#include "tests/ui/support/read_file.h"
+
 #include <catch2/catch.hpp>
 
 #include <QDir>
@@ -21,14 +23,9 @@
 #include <QTemporaryDir>
 
 using namespace linkwright;
+using test::readAll;
 
 namespace {
-
-QByteArray readAll(const QString& path) {
-  QFile f(path);
-  REQUIRE(f.open(QIODevice::ReadOnly));
-  return f.readAll();
-}
 
 // A window whose document was saved to `path` and then edited, so a save has work to do.
 void saveThenEdit(ui::MainWindow& window, const QString& path) {
