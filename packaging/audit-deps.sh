@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Dependency audit: every package-config file and library that CMake found for a configured
-# build must come from a Debian package that packaging/install-deps.sh names, or from a hard
-# Depends/Pre-Depends (never a Recommends) of one of them. A package that is on this machine
+# Dependency audit: every package-config file, library and program that CMake found for a
+# configured build must come from a Debian package that packaging/install-deps.sh names, from
+# a hard Depends/Pre-Depends (never a Recommends) of one of them, or from an Essential package
+# (which every Debian system has, gzip for one). A package that is on this machine
 # only because someone installed it by hand fails the audit, so CI cannot pass on a machine
 # where a new user's first command would fail (libqt6opengl6-dev was such a package).
 #
@@ -26,13 +27,16 @@ mapfile -t named < <(sed -n '/^packages=(/,/^)/p' "$here/install-deps.sh" |
   sed -e 's/#.*//' -e 's/packages=(//' -e 's/)//' | tr -s ' \t' '\n' | sed '/^$/d')
 [[ ${#named[@]} -gt 0 ]] || { echo "audit-deps: no packages=( … ) list in install-deps.sh" >&2; exit 2; }
 
-# Their closure over hard dependencies, among the installed packages. apt-cache prints every
+# Their closure over hard dependencies, among the installed packages, and the Essential ones. apt-cache prints every
 # package it visits unindented; alternatives (|Depends) are visited too, which can only
 # make the closure larger than strictly needed, never hide a missing package.
 declare -A allowed=()
 while read -r p; do allowed[$p]=1; done < <(
   apt-cache depends --recurse --installed --no-recommends --no-suggests --no-conflicts \
     --no-breaks --no-replaces --no-enhances "${named[@]}" | grep -v '^ ' | sed 's/:.*//')
+while read -r p essential; do
+  [[ "$essential" == yes ]] && allowed[$p]=1
+done < <(dpkg-query -W -f='${Package} ${Essential}\n')
 
 # The file a cache entry stands for: a library or header directory's own path, or for a
 # package-config directory (<Name>_DIR) its <Name>Config.cmake / <name>-config.cmake.
@@ -65,7 +69,8 @@ while IFS= read -r line; do
   file=$(file_for_entry "$name" "$path")
   [[ -n "$file" ]] || continue
   real=$(readlink -f "$file")
-  owner=$(dpkg -S "$file" 2>/dev/null || dpkg -S "$real" 2>/dev/null || true)
+  # Merged /usr: dpkg may list /usr/bin/gzip as /bin/gzip.
+  owner=$(dpkg -S "$file" 2>/dev/null || dpkg -S "$real" 2>/dev/null || dpkg -S "${real#/usr}" 2>/dev/null || true)
   owner=${owner%%: *}
   owner=${owner%%:*}
   checked=$((checked + 1))
@@ -74,7 +79,7 @@ while IFS= read -r line; do
   elif [[ -z "${allowed[$owner]:-}" ]]; then
     undeclared+=("$name=$path comes from $owner, which install-deps.sh neither names nor hard-depends on")
   fi
-done < <(grep -E '^[A-Za-z0-9_]+_(DIR|LIBRARY|INCLUDE_DIR):(PATH|FILEPATH)=' "$cache" |
+done < <(grep -E '^[A-Za-z0-9_]+_(DIR|LIBRARY|INCLUDE_DIR|EXECUTABLE):(PATH|FILEPATH)=' "$cache" |
   grep -v '^CMAKE_')
 
 if [[ ${#undeclared[@]} -gt 0 ]]; then
@@ -83,4 +88,4 @@ if [[ ${#undeclared[@]} -gt 0 ]]; then
   echo "Name the package in install-deps.sh (a Recommends does not count: it uses --no-install-recommends)." >&2
   exit 1
 fi
-echo "audit-deps: all $checked dependencies CMake found come from packages install-deps.sh installs (${#named[@]} named, ${#allowed[@]} with their hard dependencies)"
+echo "audit-deps: all $checked dependencies CMake found come from packages install-deps.sh installs (${#named[@]} named, ${#allowed[@]} with their hard dependencies and the Essential packages)"
