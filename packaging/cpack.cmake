@@ -34,7 +34,8 @@ set(manpages)
 function(linkwright_manpage target summary)
   set(page ${packaging_out}/${target}.1)
   add_custom_command(OUTPUT ${page}
-    COMMAND ${HELP2MAN_EXECUTABLE} --no-info --section=1 --name=${summary}
+    # In the C locale help2man would write the help's '−' and '°' as '???'.
+    COMMAND ${CMAKE_COMMAND} -E env LC_ALL=C.UTF-8 ${HELP2MAN_EXECUTABLE} --locale=C.UTF-8 --no-info --section=1 --name=${summary}
             --include=${CMAKE_CURRENT_FUNCTION_LIST_DIR}/manpage.h2m --output=${page} $<TARGET_FILE:${target}>
     DEPENDS ${target} ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/manpage.h2m VERBATIM)
   linkwright_gzip(${page} ${page}.gz)
