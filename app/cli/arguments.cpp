@@ -103,7 +103,7 @@ std::optional<Error> point(std::optional<Eigen::Vector2d>& target, const std::st
   auto list = parseList(option, value, 2, "X,Y");
   if (!list) return list.error();
   for (const auto& [v, axis] : {std::pair{(*list)[0], "x"}, {(*list)[1], "y"}})
-    if (auto e = kinematics::checkFinite(v, axis)) return usage(option, option + ": " + e->message);
+    if (auto e = kinematics::checkCoordinate(v, axis)) return usage(option, option + ": " + e->message);
   target = Eigen::Vector2d((*list)[0], (*list)[1]);
   return std::nullopt;
 }
@@ -114,7 +114,7 @@ std::optional<Error> applyArmOrCentres(Invocation& inv, const std::string& optio
     auto list = parseList(option, value, 2, "UPPER,FOREARM");
     if (!list) return list.error();
     for (const auto& [v, name] : {std::pair{(*list)[0], "upper"}, {(*list)[1], "forearm"}})
-      if (auto e = kinematics::checkPositive(v, name)) return usage(option, option + ": " + e->message);
+      if (auto e = kinematics::checkLength(v, name)) return usage(option, option + ": " + e->message);
     inv.arm = std::pair{(*list)[0], (*list)[1]};
   } else if (option == "--from-point") return point(inv.fromPoint, option, value);
   else if (option == "--to-point") return point(inv.toPoint, option, value);

@@ -7,6 +7,7 @@
 #include "app/cli/commands.h"
 
 #include "kinematics/analysis/two_link_arm.h"
+#include "kinematics/model/validate.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/units.h"
 
@@ -28,8 +29,7 @@ constexpr const char* kSeedArmName = "seed-arm";
 const k::TwoLinkArm kSeedArm{0.3, 0.2};
 const k::LinePath kSeedPath{{0.3, 0.0}, {0.0, 0.3}, 2.0};
 constexpr long long kDefaultSamples = 101;
-// As for analyze: more rows than this is a typo, not a request.
-constexpr long long kMaxSamples = 10'000'000;
+using k::kMaxSamples;  // the input domain's (validate.h)
 
 struct ArmRequest {
   k::TwoLinkArm arm;
@@ -66,6 +66,14 @@ k::Result<std::vector<double>> timeGrid(const Invocation& inv, double duration) 
   return times;
 }
 
+// The option that sets a field checkArmPath names.
+std::string optionFor(const std::string& field) {
+  if (field == "speed") return "--speed";
+  if (field.rfind("from.", 0) == 0) return "--from-point";
+  if (field.rfind("to.", 0) == 0) return "--to-point";
+  return "--arm";  // upper, forearm, or their spread
+}
+
 k::Result<ArmRequest> armRequest(const Invocation& inv) {
   ArmRequest r;
   if (inv.example) {
@@ -83,6 +91,10 @@ k::Result<ArmRequest> armRequest(const Invocation& inv) {
   if (inv.toPoint) r.path.to = *inv.toPoint;
   if (inv.speed) r.path.speed = *inv.speed;
   if (inv.elbow) r.elbow = *inv.elbow;
+  if (auto e = k::checkArmPath(r.arm, r.path)) {
+    const std::string option = optionFor(e->field);
+    return badValue(option, option + ": " + e->message);
+  }
   const double length = (r.path.to - r.path.from).norm();
   if (!(length > 0.0))
     return badValue("--to-point", "--to-point must differ from --from-point (both are " + pointText(r.path.from) + ")");

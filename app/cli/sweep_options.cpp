@@ -2,8 +2,10 @@
 
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/units.h"
+#include "kinematics/model/validate.h"
 
 #include <cmath>
+#include <tuple>
 
 namespace linkwright::cli {
 namespace {
@@ -12,24 +14,31 @@ using kinematics::Error;
 using kinematics::ErrorCode;
 using kinematics::io::formatShort;
 
-// Enough for a millidegree grid over many turns; more is a typo, not a request.
-constexpr long long kMaxSamples = 10'000'000;
+using kinematics::kMaxSamples;
 
 Error badValue(const std::string& option, const std::string& why) {
   return Error{ErrorCode::InvalidValue, option, option + " " + why};
 }
 
-std::optional<Error> checkOption(const std::optional<double>& value, const std::string& option) {
-  if (value && !std::isfinite(*value)) return badValue(option, "must be finite (got " + formatShort(*value) + ")");
+// The input domain (kinematics/model/validate.h), named by the option the user typed.
+std::optional<Error> checkOptions(const Invocation& inv) {
+  using namespace kinematics;
+  if (inv.rpm && !(std::isfinite(*inv.rpm) && std::abs(rpmToRadPerSec(*inv.rpm)) <= kMaxOmega))
+    return badValue("--rpm", "must be finite and within ±" + formatShort(kMaxOmega * 60.0 / (2.0 * kPi), 3) +
+                                 " rev/min, 1e6 rad/s (got " + formatNumber(*inv.rpm) + ")");
+  for (const auto& [value, option, max, unit] :
+       {std::tuple{inv.omega, "--omega", kMaxOmega, "rad/s"}, {inv.alpha, "--alpha", kMaxAlpha, "rad/s²"},
+        {inv.fromDeg, "--from", kMaxAngleDeg, "degrees"}, {inv.toDeg, "--to", kMaxAngleDeg, "degrees"},
+        {inv.stepDeg, "--step", 2.0 * kMaxAngleDeg, "degrees"}})
+    if (value)
+      if (auto e = checkMagnitude(*value, option, max, unit)) return e;
   return std::nullopt;
 }
 
 } // namespace
 
 kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Invocation& inv, const GridDefaults& d) {
-  for (const auto& [value, option] : {std::pair{inv.rpm, "--rpm"}, {inv.omega, "--omega"}, {inv.alpha, "--alpha"},
-                                      {inv.fromDeg, "--from"}, {inv.toDeg, "--to"}, {inv.stepDeg, "--step"}})
-    if (auto e = checkOption(value, option)) return *e;
+  if (auto e = checkOptions(inv)) return *e;
   kinematics::SweepSpec spec;
   spec.omega = inv.rpm ? kinematics::rpmToRadPerSec(*inv.rpm)
                        : inv.omega.value_or(d.omega);

@@ -53,8 +53,8 @@ InstantCentre intersect(const Line& l1, const Line& l2, double scale) {
 }
 
 std::optional<Error> checkPoint(const Eigen::Vector2d& p, const std::string& name) {
-  if (auto e = checkFinite(p.x(), name + ".x")) return e;
-  return checkFinite(p.y(), name + ".y");
+  if (auto e = checkCoordinate(p.x(), name + ".x")) return e;
+  return checkCoordinate(p.y(), name + ".y");
 }
 
 // Error if the two ends of a link coincide (the link has no direction there).

@@ -53,7 +53,8 @@ double PeakError::worstRate() const { return std::max({omega, alpha, speed, acce
 
 Result<PeakSet> exactPeaks(const Mechanism& m, double omega, std::size_t n) {
   if (auto e = checkMechanism(m)) return *e;
-  if (auto e = checkPositive(omega, "omega")) return *e;
+  if (!(omega > 0.0)) return Error{ErrorCode::InvalidValue, "omega", "omega must be positive (got " + formatNumber(omega) + ")"};
+  if (auto e = checkMagnitude(omega, "omega", kMaxOmega, "rad/s")) return *e;
   if (n < 3) return Error{ErrorCode::InvalidValue, "samples", "samples per revolution must be at least 3 (got " + std::to_string(n) + ")"};
   const SweepSpec spec{0.0, kTurn, n + 1, omega, 0.0};
   const auto full = sweep(m, spec);
@@ -98,7 +99,8 @@ Result<PeakSet> exactPeaks(const Mechanism& m, double omega, std::size_t n) {
 Result<PeakSet> sampledPeaks(const Mechanism& m, double omega, std::size_t n, DerivativeMethod method,
                              const NewtonSettings& newton) {
   if (auto e = checkMechanism(m)) return *e;
-  if (auto e = checkPositive(omega, "omega")) return *e;
+  if (!(omega > 0.0)) return Error{ErrorCode::InvalidValue, "omega", "omega must be positive (got " + formatNumber(omega) + ")"};
+  if (auto e = checkMagnitude(omega, "omega", kMaxOmega, "rad/s")) return *e;
   if (n < 3) return Error{ErrorCode::InvalidValue, "samples", "samples per revolution must be at least 3 (got " + std::to_string(n) + ")"};
   const bool exact = method == DerivativeMethod::Exact;
   const auto s = oneTurn(m, omega, n, SolveRequest{exact, exact, newton});

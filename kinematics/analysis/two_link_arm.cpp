@@ -45,8 +45,8 @@ std::vector<double> circleCrossings(const LinePath& path, double duration, doubl
 
 Result<ArmState> solveTwoLinkArm(const TwoLinkArm& arm, Branch elbow, const Eigen::Vector2d& p, const Eigen::Vector2d& v,
                                  const Eigen::Vector2d& a) {
-  if (auto e = checkPositive(arm.upper, "upper")) return *e;
-  if (auto e = checkPositive(arm.forearm, "forearm")) return *e;
+  if (auto e = checkLength(arm.upper, "upper")) return *e;
+  if (auto e = checkLength(arm.forearm, "forearm")) return *e;
   const RrrCandidates c = rrrCandidates(Eigen::Vector2d::Zero(), arm.upper, p, arm.forearm);
   if (c.failure != AssemblyFailure::None)
     return Error{ErrorCode::NotAssemblable, "tip",
@@ -70,11 +70,23 @@ Result<ArmState> solveTwoLinkArm(const TwoLinkArm& arm, Branch elbow, const Eige
   return s;
 }
 
-Result<ArmPathResult> followLine(const TwoLinkArm& arm, Branch elbow, const LinePath& path, std::size_t samples) {
-  if (auto e = checkPositive(arm.upper, "upper")) return *e;
-  if (auto e = checkPositive(arm.forearm, "forearm")) return *e;
+std::optional<Error> checkArmPath(const TwoLinkArm& arm, const LinePath& path) {
+  if (auto e = checkLength(arm.upper, "upper")) return e;
+  if (auto e = checkLength(arm.forearm, "forearm")) return e;
   if (!(std::isfinite(path.speed) && path.speed > 0.0))
     return Error{ErrorCode::InvalidValue, "speed", "speed must be positive and finite (got " + formatNumber(path.speed) + ")"};
+  if (auto e = checkMagnitude(path.speed, "speed", kMaxLength, "length units/s")) return e;
+  for (const auto& [point, name] : {std::pair{path.from, "from"}, {path.to, "to"}}) {
+    if (auto e = checkCoordinate(point.x(), std::string(name) + ".x")) return e;
+    if (auto e = checkCoordinate(point.y(), std::string(name) + ".y")) return e;
+  }
+  const double reach = std::max({arm.upper, arm.forearm, path.from.cwiseAbs().maxCoeff(), path.to.cwiseAbs().maxCoeff()});
+  return checkScale(std::min(arm.upper, arm.forearm), "the shorter arm link", reach, "the arm's largest dimension",
+                    "length units");
+}
+
+Result<ArmPathResult> followLine(const TwoLinkArm& arm, Branch elbow, const LinePath& path, std::size_t samples) {
+  if (auto e = checkArmPath(arm, path)) return *e;
   const double length = (path.to - path.from).norm();
   if (!(length > 0.0)) return Error{ErrorCode::InvalidValue, "path", "path must have distinct end points"};
   if (samples < 2) return Error{ErrorCode::InvalidValue, "samples", "samples must be at least 2 (got " + std::to_string(samples) + ")"};

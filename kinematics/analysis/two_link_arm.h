@@ -70,4 +70,9 @@ struct ArmPathResult {
 };
 Result<ArmPathResult> followLine(const TwoLinkArm& arm, Branch elbow, const LinePath& path, std::size_t samples);
 
+/// Error naming the field unless the arm and its path lie in the input domain (validate.h):
+/// link lengths, end points, a positive speed up to kMaxLength per second, and a largest
+/// dimension at most kMaxLengthRatio times the shorter link.
+std::optional<Error> checkArmPath(const TwoLinkArm& arm, const LinePath& path);
+
 } // namespace linkwright::kinematics

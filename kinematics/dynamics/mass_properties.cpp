@@ -13,14 +13,17 @@ Error valueError(const std::string& field, const std::string& why) {
   return Error{ErrorCode::InvalidValue, field, field + " " + why};
 }
 
-std::optional<Error> checkNonNegative(double value, const std::string& field) {
-  if (std::isfinite(value) && value >= 0.0) return std::nullopt;
-  return valueError(field, "must be finite and ≥ 0 (got " + formatNumber(value) + ")");
+std::optional<Error> checkMass(double value, const std::string& field) {
+  return checkNonNegative(value, field, kMaxMass, "kg");
 }
 
-std::optional<Error> checkVector(const Eigen::Vector2d& v, const std::string& field) {
-  if (auto e = checkFinite(v.x(), field + ".x")) return e;
-  return checkFinite(v.y(), field + ".y");
+std::optional<Error> checkInertia(double value, const std::string& field) {
+  return checkNonNegative(value, field, kMaxInertia, "kg·m²");
+}
+
+std::optional<Error> checkVector(const Eigen::Vector2d& v, const std::string& field, double max, const std::string& unit) {
+  if (auto e = checkMagnitude(v.x(), field + ".x", max, unit)) return e;
+  return checkMagnitude(v.y(), field + ".y", max, unit);
 }
 
 std::optional<Error> checkLinkName(const Mechanism& m, const std::string& name, const std::string& field) {
@@ -54,13 +57,13 @@ std::optional<Error> checkLinkMasses(const Mechanism& m, const std::vector<LinkM
     const std::string field = "links[" + std::to_string(k) + "]";
     if (auto e = checkLinkName(m, l.link, field + ".link")) return e;
     if (!seen.insert(l.link).second) return valueError(field + ".link", "repeats the link \"" + l.link + "\"");
-    if (auto e = checkNonNegative(l.mass, field + ".mass")) return e;
+    if (auto e = checkMass(l.mass, field + ".mass")) return e;
     if (l.centre) {
-      if (auto e = checkFinite(l.centre->along, field + ".centre.along")) return e;
-      if (auto e = checkFinite(l.centre->across, field + ".centre.across")) return e;
+      if (auto e = checkCoordinate(l.centre->along, field + ".centre.along")) return e;
+      if (auto e = checkCoordinate(l.centre->across, field + ".centre.across")) return e;
     }
     if (l.inertia)
-      if (auto e = checkNonNegative(*l.inertia, field + ".inertia")) return e;
+      if (auto e = checkInertia(*l.inertia, field + ".inertia")) return e;
   }
   return std::nullopt;
 }
@@ -72,14 +75,14 @@ std::optional<Error> checkSliderMasses(const Mechanism& m, const std::vector<Sli
     const std::string field = "sliders[" + std::to_string(k) + "]";
     if (auto e = checkSliderKey(m, s.point, s.guide, field)) return e;
     if (!seen.insert({s.point, s.guide}).second) return valueError(field + ".point", "repeats the slider \"" + s.point + "\"");
-    if (auto e = checkNonNegative(s.mass, field + ".mass")) return e;
-    if (auto e = checkNonNegative(s.inertia, field + ".inertia")) return e;
+    if (auto e = checkMass(s.mass, field + ".mass")) return e;
+    if (auto e = checkInertia(s.inertia, field + ".inertia")) return e;
   }
   return std::nullopt;
 }
 
 std::optional<Error> checkForce(const Mechanism& m, const PointForce& f, const std::string& field) {
-  if (auto e = checkVector(f.force, field + ".force")) return e;
+  if (auto e = checkVector(f.force, field + ".force", kMaxForce, "N")) return e;
   if (f.link.empty()) return checkSliderKey(m, f.point, f.guide, field);
   if (auto e = checkLinkName(m, f.link, field + ".link")) return e;
   const auto point = m.findPoint(f.point);
@@ -101,11 +104,11 @@ std::optional<Error> checkDynamics(const Mechanism& m, const LinkageDynamics& d)
   if (auto e = checkLinkMasses(m, d.links)) return e;
   if (auto e = checkSliderMasses(m, d.sliders)) return e;
   if (d.loads.gravity)
-    if (auto e = checkVector(*d.loads.gravity, "loads.gravity")) return e;
+    if (auto e = checkVector(*d.loads.gravity, "loads.gravity", kMaxGravity, "m/s²")) return e;
   for (std::size_t k = 0; k < d.loads.torques.size(); ++k) {
     const std::string field = "loads.torques[" + std::to_string(k) + "]";
     if (auto e = checkLinkName(m, d.loads.torques[k].link, field + ".link")) return e;
-    if (auto e = checkFinite(d.loads.torques[k].torque, field + ".torque")) return e;
+    if (auto e = checkMagnitude(d.loads.torques[k].torque, field + ".torque", kMaxTorque, "N·m")) return e;
   }
   for (std::size_t k = 0; k < d.loads.forces.size(); ++k)
     if (auto e = checkForce(m, d.loads.forces[k], "loads.forces[" + std::to_string(k) + "]")) return e;

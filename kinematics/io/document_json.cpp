@@ -57,7 +57,7 @@ void readFourBar(const JsonValue& mech, JsonReader& r, FourBarDesign& d) {
 
 // Maps checkDesign's field names onto document paths, so the message names what is in the file.
 std::string documentPath(const std::string& field) {
-  if (field.rfind("lengths.", 0) == 0) return "mechanism." + field;
+  if (field == "lengths" || field.rfind("lengths.", 0) == 0) return "mechanism." + field;
   if (field == "couplerPoint.along") return "mechanism.coupler_point.along";
   if (field == "couplerPoint.across") return "mechanism.coupler_point.across";
   if (field == "omega") return "driver.omega_rad_s";

@@ -13,12 +13,15 @@ std::optional<Error> checkDesign(const FourBarDesign& d) {
     return e;
   }
   if (d.couplerPoint) {
-    if (auto e = checkFinite(d.couplerPoint->along, "couplerPoint.along")) return e;
-    if (auto e = checkFinite(d.couplerPoint->across, "couplerPoint.across")) return e;
+    if (auto e = checkCoordinate(d.couplerPoint->along, "couplerPoint.along")) return e;
+    if (auto e = checkCoordinate(d.couplerPoint->across, "couplerPoint.across")) return e;
   }
+  // The lengths' spread (checkLinkageScale) is checked where the linkage is built.
+  const auto mechanism = makeFourBar(d.lengths, d.branch, d.lengthUnit, d.couplerPoint);
+  if (!mechanism) return mechanism.error();
   if (auto e = checkDriveAndGrid(d.omega, d.alpha, d.fromDeg, d.toDeg, d.samples)) return e;
   if (d.dynamics.empty()) return std::nullopt;
-  return checkDesignDynamics(makeFourBar(d.lengths, d.branch, d.lengthUnit, d.couplerPoint).value(), d.dynamics);
+  return checkDesignDynamics(*mechanism, d.dynamics);
 }
 
 std::optional<Error> checkDesignDynamics(const Mechanism& mechanism, const LinkageDynamics& dynamics) {
@@ -30,16 +33,16 @@ std::optional<Error> checkDesignDynamics(const Mechanism& mechanism, const Linka
 }
 
 std::optional<Error> checkDriveAndGrid(double omega, double alpha, double fromDeg, double toDeg, std::size_t samples) {
-  if (auto e = checkFinite(omega, "omega")) return e;
-  if (auto e = checkFinite(alpha, "alpha")) return e;
-  if (auto e = checkFinite(fromDeg, "fromDeg")) return e;
-  if (auto e = checkFinite(toDeg, "toDeg")) return e;
+  if (auto e = checkMagnitude(omega, "omega", kMaxOmega, "rad/s")) return e;
+  if (auto e = checkMagnitude(alpha, "alpha", kMaxAlpha, "rad/s²")) return e;
+  if (auto e = checkMagnitude(fromDeg, "fromDeg", kMaxAngleDeg, "degrees")) return e;
+  if (auto e = checkMagnitude(toDeg, "toDeg", kMaxAngleDeg, "degrees")) return e;
   if (toDeg <= fromDeg)
     return Error{ErrorCode::InvalidValue, "toDeg",
                  "toDeg must be greater than fromDeg (got " + formatNumber(fromDeg) + " to " + formatNumber(toDeg) + ")"};
-  if (samples < 2 || samples > 10'000'000)
+  if (samples < 2 || samples > static_cast<std::size_t>(kMaxSamples))
     return Error{ErrorCode::InvalidValue, "samples",
-                 "samples must be between 2 and 10000000 (got " + std::to_string(samples) + ")"};
+                 "samples must be between 2 and " + std::to_string(kMaxSamples) + " (got " + std::to_string(samples) + ")"};
   return std::nullopt;
 }
 

@@ -1,22 +1,23 @@
 #include "kinematics/model/fourbar.h"
 
+#include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/validate.h"
 
 namespace linkwright::kinematics {
 
 std::optional<Error> checkFourBarLengths(const FourBarLengths& l) {
-  if (auto e = checkPositive(l.frame, "frame")) return e;
-  if (auto e = checkPositive(l.crank, "crank")) return e;
-  if (auto e = checkPositive(l.coupler, "coupler")) return e;
-  return checkPositive(l.rocker, "rocker");
+  if (auto e = checkLength(l.frame, "frame")) return e;
+  if (auto e = checkLength(l.crank, "crank")) return e;
+  if (auto e = checkLength(l.coupler, "coupler")) return e;
+  return checkLength(l.rocker, "rocker");
 }
 
 Result<Mechanism> makeFourBar(const FourBarLengths& l, Branch branch, const std::string& lengthUnit,
                               std::optional<CouplerPointSpec> couplerPoint) {
   if (auto e = checkFourBarLengths(l)) return *e;
   if (couplerPoint) {
-    if (auto e = checkFinite(couplerPoint->along, "coupler point along")) return *e;
-    if (auto e = checkFinite(couplerPoint->across, "coupler point across")) return *e;
+    if (auto e = checkCoordinate(couplerPoint->along, "coupler point along")) return *e;
+    if (auto e = checkCoordinate(couplerPoint->across, "coupler point across")) return *e;
   }
   Mechanism m;
   m.lengthUnit = lengthUnit;
@@ -33,6 +34,7 @@ Result<Mechanism> makeFourBar(const FourBarLengths& l, Branch branch, const std:
   };
   if (couplerPoint)
     m.points.push_back({"P", AttachedPoint{fourbar::kCoupler, couplerPoint->along, couplerPoint->across}});
+  if (auto e = checkLinkageScale(m)) return *e;
   return m;
 }
 

@@ -3,8 +3,10 @@
 #include "kinematics/model/constraint_form.h"
 #include "kinematics/model/validate.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
+#include <vector>
 
 namespace linkwright::kinematics {
 namespace {
@@ -35,36 +37,36 @@ std::optional<Error> checkGuide(const Mechanism& m, const Guide& g, std::size_t 
     if (link.first.index >= i || link.second.index >= i)
       return structureError(field + ".link", "must be a link between points defined before it");
   }
-  if (auto e = checkFinite(g.point.x(), field + ".x")) return e;
-  if (auto e = checkFinite(g.point.y(), field + ".y")) return e;
-  return checkFinite(g.angle, field + ".angle");
+  if (auto e = checkCoordinate(g.point.x(), field + ".x")) return e;
+  if (auto e = checkCoordinate(g.point.y(), field + ".y")) return e;
+  return checkCoordinate(g.angle, field + ".angle");
 }
 
 std::optional<Error> checkPoint(const Mechanism& m, std::size_t i, int& cranks) {
   const PointDefinition& def = m.points[i].definition;
   if (const auto* g = std::get_if<GroundPoint>(&def)) {
-    if (auto e = checkFinite(g->position.x(), pointField(i, "x"))) return e;
-    return checkFinite(g->position.y(), pointField(i, "y"));
+    if (auto e = checkCoordinate(g->position.x(), pointField(i, "x"))) return e;
+    return checkCoordinate(g->position.y(), pointField(i, "y"));
   }
   if (const auto* c = std::get_if<CrankPoint>(&def)) {
     ++cranks;
     if (auto e = checkEarlier(c->pivot, i, "pivot")) return e;
     if (!std::holds_alternative<GroundPoint>(m.points[c->pivot.index].definition))
       return structureError(pointField(i, "pivot"), "must be a ground point");
-    if (auto e = checkPositive(c->length, pointField(i, "length"))) return e;
-    return checkFinite(c->phase, pointField(i, "phase"));
+    if (auto e = checkLength(c->length, pointField(i, "length"))) return e;
+    return checkCoordinate(c->phase, pointField(i, "phase"));
   }
   if (const auto* r = std::get_if<RrrPoint>(&def)) {
     if (auto e = checkEarlier(r->first, i, "first")) return e;
     if (auto e = checkEarlier(r->second, i, "second")) return e;
     if (r->first == r->second)
       return structureError(pointField(i, "second"), "must differ from its first point");
-    if (auto e = checkPositive(r->firstLength, pointField(i, "firstLength"))) return e;
-    return checkPositive(r->secondLength, pointField(i, "secondLength"));
+    if (auto e = checkLength(r->firstLength, pointField(i, "firstLength"))) return e;
+    return checkLength(r->secondLength, pointField(i, "secondLength"));
   }
   if (const auto* p = std::get_if<RrpPoint>(&def)) {
     if (auto e = checkEarlier(p->first, i, "first")) return e;
-    if (auto e = checkPositive(p->length, pointField(i, "length"))) return e;
+    if (auto e = checkLength(p->length, pointField(i, "length"))) return e;
     return checkGuide(m, p->guide, i, "guide");
   }
   if (const auto* q = std::get_if<PrpPoint>(&def)) {
@@ -75,11 +77,11 @@ std::optional<Error> checkPoint(const Mechanism& m, std::size_t i, int& cranks) 
     if (auto e = checkEarlier(s->pivot, i, "pivot")) return e;
     if (auto e = checkEarlier(s->through, i, "through")) return e;
     if (s->pivot == s->through) return structureError(pointField(i, "through"), "must differ from its pivot");
-    return checkPositive(s->length, pointField(i, "length"));
+    return checkLength(s->length, pointField(i, "length"));
   }
   if (const auto* f = std::get_if<FreePoint>(&def)) {
-    if (auto e = checkFinite(f->guess.x(), pointField(i, "guess.x"))) return e;
-    return checkFinite(f->guess.y(), pointField(i, "guess.y"));
+    if (auto e = checkCoordinate(f->guess.x(), pointField(i, "guess.x"))) return e;
+    return checkCoordinate(f->guess.y(), pointField(i, "guess.y"));
   }
   const auto& a = std::get<AttachedPoint>(def);
   if (a.link.index >= m.links.size())
@@ -87,8 +89,8 @@ std::optional<Error> checkPoint(const Mechanism& m, std::size_t i, int& cranks) 
   const Link& link = m.links[a.link.index];
   if (link.first.index >= i || link.second.index >= i)
     return structureError(pointField(i, "link"), "must be a link between points defined before it");
-  if (auto e = checkFinite(a.along, pointField(i, "along"))) return e;
-  return checkFinite(a.across, pointField(i, "across"));
+  if (auto e = checkCoordinate(a.along, pointField(i, "along"))) return e;
+  return checkCoordinate(a.across, pointField(i, "across"));
 }
 
 // A link is rigid only if one end is defined at a fixed distance from the other.
@@ -157,7 +159,72 @@ std::optional<Error> checkFreeGroup(const Mechanism& m, std::size_t first, std::
   return std::nullopt;
 }
 
+// One length or coordinate of a linkage, named for messages ("link coupler", "O4.x").
+struct Dimension {
+  double value = 0.0;
+  std::string name;
+};
+
+// The name of the link joining a and b, if one does, else "a–b".
+std::string lengthName(const Mechanism& m, PointId a, PointId b) {
+  for (const Link& link : m.links)
+    if ((link.first == a && link.second == b) || (link.first == b && link.second == a)) return "link " + link.name;
+  return "the length " + m.points[a.index].name + "–" + m.points[b.index].name;
+}
+
+// Every length and every coordinate the mechanism's numbers hold.
+void dimensionsOf(const Mechanism& m, std::vector<Dimension>& lengths, std::vector<Dimension>& coordinates) {
+  const auto coordinate = [&](double v, std::size_t i, const char* member) {
+    coordinates.push_back({std::abs(v), m.points[i].name + "." + member});
+  };
+  for (std::size_t i = 0; i < m.points.size(); ++i) {
+    const PointId self{i};
+    const PointDefinition& def = m.points[i].definition;
+    if (const auto* g = std::get_if<GroundPoint>(&def)) {
+      coordinate(g->position.x(), i, "x");
+      coordinate(g->position.y(), i, "y");
+    } else if (const auto* c = std::get_if<CrankPoint>(&def)) {
+      lengths.push_back({c->length, lengthName(m, c->pivot, self)});
+    } else if (const auto* r = std::get_if<RrrPoint>(&def)) {
+      lengths.push_back({r->firstLength, lengthName(m, r->first, self)});
+      lengths.push_back({r->secondLength, lengthName(m, r->second, self)});
+    } else if (const auto* p = std::get_if<RrpPoint>(&def)) {
+      lengths.push_back({p->length, lengthName(m, p->first, self)});
+      coordinate(p->guide.point.x(), i, "guide.x");
+      coordinate(p->guide.point.y(), i, "guide.y");
+    } else if (const auto* s = std::get_if<RprPoint>(&def)) {
+      lengths.push_back({s->length, lengthName(m, s->pivot, self)});
+    } else if (const auto* q = std::get_if<PrpPoint>(&def)) {
+      for (const Guide* guide : {&q->first, &q->second}) {
+        coordinate(guide->point.x(), i, "guide.x");
+        coordinate(guide->point.y(), i, "guide.y");
+      }
+    } else if (const auto* a = std::get_if<AttachedPoint>(&def)) {
+      coordinate(a->along, i, "along");
+      coordinate(a->across, i, "across");
+    } else if (const auto* f = std::get_if<FreePoint>(&def)) {
+      coordinate(f->guess.x(), i, "guess.x");
+      coordinate(f->guess.y(), i, "guess.y");
+    }
+  }
+  for (const DistanceConstraint& c : m.constraints) lengths.push_back({c.length, lengthName(m, c.first, c.second)});
+}
+
 } // namespace
+
+std::optional<Error> checkLinkageScale(const Mechanism& m) {
+  std::vector<Dimension> lengths, coordinates;
+  dimensionsOf(m, lengths, coordinates);
+  if (lengths.empty()) return std::nullopt;
+  const auto byValue = [](const Dimension& a, const Dimension& b) { return a.value < b.value; };
+  const Dimension& shortest = *std::min_element(lengths.begin(), lengths.end(), byValue);
+  Dimension largest = *std::max_element(lengths.begin(), lengths.end(), byValue);
+  if (!coordinates.empty()) {
+    const Dimension& far = *std::max_element(coordinates.begin(), coordinates.end(), byValue);
+    if (far.value > largest.value) largest = far;
+  }
+  return checkScale(shortest.value, shortest.name, largest.value, largest.name, m.lengthUnit);
+}
 
 std::optional<Error> checkMechanism(const Mechanism& m) {
   std::set<std::string> names;
@@ -190,7 +257,7 @@ std::optional<Error> checkMechanism(const Mechanism& m) {
     if (!isRigidPair(m, link.first, link.second))
       return structureError(field, "joins points that are not held at a fixed distance");
   }
-  return std::nullopt;
+  return checkLinkageScale(m);
 }
 
 } // namespace linkwright::kinematics

@@ -1,5 +1,6 @@
 #include "kinematics/model/shaper.h"
 
+#include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/validate.h"
 
 #include <cmath>
@@ -7,12 +8,12 @@
 namespace linkwright::kinematics {
 
 std::optional<Error> checkShaper(const ShaperGeometry& g) {
-  if (auto e = checkPositive(g.crank, "crank")) return e;
-  if (auto e = checkPositive(g.rocker, "rocker")) return e;
-  if (auto e = checkPositive(g.link, "link")) return e;
-  if (auto e = checkFinite(g.rockerPivot.x(), "rocker pivot x")) return e;
-  if (auto e = checkFinite(g.rockerPivot.y(), "rocker pivot y")) return e;
-  if (auto e = checkFinite(g.guideHeight, "guide height")) return e;
+  if (auto e = checkLength(g.crank, "crank")) return e;
+  if (auto e = checkLength(g.rocker, "rocker")) return e;
+  if (auto e = checkLength(g.link, "link")) return e;
+  if (auto e = checkCoordinate(g.rockerPivot.x(), "rocker pivot x")) return e;
+  if (auto e = checkCoordinate(g.rockerPivot.y(), "rocker pivot y")) return e;
+  if (auto e = checkCoordinate(g.guideHeight, "guide height")) return e;
   // Outside the crank circle the slotted link rocks (crank-shaper); inside it turns fully
   // (Whitworth). On the circle the pin would pass through the pivot.
   if (std::abs(g.rockerPivot.norm() - g.crank) <= 1e-12 * g.crank)
@@ -38,6 +39,7 @@ Result<Mechanism> makeShaper(const ShaperGeometry& g, Branch branch, const std::
       {"rocker", shaper::kO4, shaper::kD},
       {"link", shaper::kD, shaper::kRam},
   };
+  if (auto e = checkLinkageScale(m)) return *e;
   return m;
 }
 

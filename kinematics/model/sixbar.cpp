@@ -21,17 +21,17 @@ LinkId firstCarrier(SixBarKind kind) {
 bool groundTernary(SixBarKind kind) { return kind == SixBarKind::WattII || kind == SixBarKind::StephensonIII; }
 
 std::optional<Error> checkGeometry(const SixBarGeometry& g) {
-  if (auto e = checkFinite(g.first.along, "first.along")) return e;
-  if (auto e = checkFinite(g.first.across, "first.across")) return e;
+  if (auto e = checkCoordinate(g.first.along, "first.along")) return e;
+  if (auto e = checkCoordinate(g.first.across, "first.across")) return e;
   if (groundTernary(g.kind)) {
-    if (auto e = checkFinite(g.groundPivot.x(), "groundPivot.x")) return e;
-    if (auto e = checkFinite(g.groundPivot.y(), "groundPivot.y")) return e;
+    if (auto e = checkCoordinate(g.groundPivot.x(), "groundPivot.x")) return e;
+    if (auto e = checkCoordinate(g.groundPivot.y(), "groundPivot.y")) return e;
   } else {
-    if (auto e = checkFinite(g.second.along, "second.along")) return e;
-    if (auto e = checkFinite(g.second.across, "second.across")) return e;
+    if (auto e = checkCoordinate(g.second.along, "second.along")) return e;
+    if (auto e = checkCoordinate(g.second.across, "second.across")) return e;
   }
-  if (auto e = checkPositive(g.link5, "link5")) return e;
-  return checkPositive(g.link6, "link6");
+  if (auto e = checkLength(g.link5, "link5")) return e;
+  return checkLength(g.link6, "link6");
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include "kinematics/model/sixbar_newton.h"
 
+#include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/validate.h"
 
 #include <initializer_list>
@@ -9,13 +10,13 @@ namespace linkwright::kinematics {
 namespace {
 
 std::optional<Error> checkPoint(const Eigen::Vector2d& p, const std::string& field) {
-  if (auto e = checkFinite(p.x(), field + ".x")) return e;
-  return checkFinite(p.y(), field + ".y");
+  if (auto e = checkCoordinate(p.x(), field + ".x")) return e;
+  return checkCoordinate(p.y(), field + ".y");
 }
 
 std::optional<Error> checkLengths(std::initializer_list<std::pair<double, const char*>> lengths) {
   for (const auto& [value, field] : lengths)
-    if (auto e = checkPositive(value, field)) return e;
+    if (auto e = checkLength(value, field)) return e;
   return std::nullopt;
 }
 
@@ -64,6 +65,7 @@ Result<Mechanism> makeStephensonIIINewton(const StephensonIIIGeometry& g, const 
   m.constraints = {
       {kB, kC, g.coupler}, {kC, kD, g.cd}, {kC, kE, g.ce}, {kD, kE, g.de}, {kO4, kD, g.rocker4}, {kO6, kE, g.rocker6},
   };
+  if (auto e = checkLinkageScale(m)) return *e;
   return m;
 }
 
@@ -88,6 +90,7 @@ Result<Mechanism> makeStephensonIINewton(const StephensonIIGeometry& g, const st
       {kJ1, kJ2, g.j1j2}, {kJ1, kJ3, g.j1j3}, {kJ2, kJ3, g.j2j3}, {kJ5, kJ4, g.j5j4},
       {kJ5, kJ6, g.j5j6}, {kJ4, kJ6, g.j4j6}, {kJ3, kJ4, g.link5}, {kJ2, kJ6, g.link6},
   };
+  if (auto e = checkLinkageScale(m)) return *e;
   return m;
 }
 

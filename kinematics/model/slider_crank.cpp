@@ -1,14 +1,15 @@
 #include "kinematics/model/slider_crank.h"
 
 #include "kinematics/model/units.h"
+#include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/validate.h"
 
 namespace linkwright::kinematics {
 
 std::optional<Error> checkSliderCrank(const SliderCrankGeometry& g) {
-  if (auto e = checkPositive(g.crank, "crank")) return e;
-  if (auto e = checkPositive(g.rod, "rod")) return e;
-  return checkFinite(g.offset, "offset");
+  if (auto e = checkLength(g.crank, "crank")) return e;
+  if (auto e = checkLength(g.rod, "rod")) return e;
+  return checkCoordinate(g.offset, "offset");
 }
 
 Result<Mechanism> makeSliderCrank(const SliderCrankGeometry& g, Branch branch, const std::string& lengthUnit) {
@@ -24,6 +25,7 @@ Result<Mechanism> makeSliderCrank(const SliderCrankGeometry& g, Branch branch, c
       {"crank", slidercrank::kO2, slidercrank::kB},
       {"rod", slidercrank::kB, slidercrank::kC},
   };
+  if (auto e = checkLinkageScale(m)) return *e;
   return m;
 }
 

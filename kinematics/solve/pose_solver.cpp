@@ -489,9 +489,9 @@ std::size_t solveBlockInto(const Mechanism& m, std::span<const DriverState> driv
 
 Result<Pose> solvePose(const Mechanism& m, const DriverState& driver, const SolveRequest& request) {
   if (auto e = checkMechanism(m)) return *e;
-  if (auto e = checkFinite(driver.angle, "input angle")) return *e;
-  if (auto e = checkFinite(driver.omega, "input omega")) return *e;
-  if (auto e = checkFinite(driver.alpha, "input alpha")) return *e;
+  if (auto e = checkMagnitude(driver.angle, "input angle", degToRad(kMaxAngleDeg), "rad (1e6 degrees)")) return *e;
+  if (auto e = checkMagnitude(driver.omega, "input omega", kMaxOmega, "rad/s")) return *e;
+  if (auto e = checkMagnitude(driver.alpha, "input alpha", kMaxAlpha, "rad/s²")) return *e;
   if (auto e = checkNewtonSettings(request.newton)) return *e;
   Pose pose;
   preparePose(m, pose);

@@ -323,12 +323,13 @@ void summarize(const Mechanism& m, const SweepSpec& spec, SweepResult& out) {
 } // namespace
 
 std::optional<Error> checkSweepSpec(const SweepSpec& spec) {
-  if (auto e = checkFinite(spec.fromAngle, "from angle")) return e;
-  if (auto e = checkFinite(spec.toAngle, "to angle")) return e;
-  if (auto e = checkFinite(spec.omega, "omega")) return e;
-  if (auto e = checkFinite(spec.alpha, "alpha")) return e;
-  if (spec.samples == 0)
-    return Error{ErrorCode::InvalidValue, "samples", "samples must be at least 1 (got 0)"};
+  if (auto e = checkMagnitude(spec.fromAngle, "from angle", degToRad(kMaxAngleDeg), "rad (1e6 degrees)")) return e;
+  if (auto e = checkMagnitude(spec.toAngle, "to angle", degToRad(kMaxAngleDeg), "rad (1e6 degrees)")) return e;
+  if (auto e = checkMagnitude(spec.omega, "omega", kMaxOmega, "rad/s")) return e;
+  if (auto e = checkMagnitude(spec.alpha, "alpha", kMaxAlpha, "rad/s²")) return e;
+  if (spec.samples == 0 || spec.samples > static_cast<std::size_t>(kMaxSamples))
+    return Error{ErrorCode::InvalidValue, "samples",
+                 "samples must be between 1 and " + std::to_string(kMaxSamples) + " (got " + std::to_string(spec.samples) + ")"};
   return std::nullopt;
 }
 

@@ -25,7 +25,7 @@ TEST_CASE("checkDesign names the first invalid field", "[model][design][errors]"
   expectField(bad, "lengths.rocker", "rocker length must be positive and finite (got -1)");
   bad = d;
   bad.omega = nan;
-  expectField(bad, "omega", "omega must be finite (got nan)");
+  expectField(bad, "omega", "omega must be finite and within ±1e6 rad/s (got nan)");
   bad = d;
   bad.couplerPoint = CouplerPointSpec{1.0, INFINITY};
   expectField(bad, "couplerPoint.across", "must be finite (got inf)");
