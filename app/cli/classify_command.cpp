@@ -17,7 +17,7 @@ namespace linkwright::cli {
 namespace {
 
 namespace k = kinematics;
-using k::io::formatDouble;
+using k::io::formatJsonNumber;
 using k::io::formatFixed;
 
 // Everything classify reports, computed once and printed as text or JSON.
@@ -31,7 +31,7 @@ struct Classification {
 };
 
 std::string deg(double radians) { return formatFixed(k::radToDeg(radians), 2) + "°"; }
-std::string jsonDeg(double radians) { return formatDouble(k::radToDeg(radians)); }
+std::string jsonDeg(double radians) { return formatJsonNumber(k::radToDeg(radians)); }
 std::string branchName(k::Branch b) { return b == k::Branch::Open ? "open" : "crossed"; }
 
 std::string jsonString(const std::string& s) {
@@ -86,13 +86,13 @@ void printText(const Classification& c, std::ostream& out) {
 void printJson(const Classification& c, std::ostream& out) {
   const auto& l = c.fourBar.lengths;
   const auto& g = c.grashof;
-  out << "{\n  \"lengths\": {\"frame\": " << formatDouble(l.frame) << ", \"crank\": " << formatDouble(l.crank)
-      << ", \"coupler\": " << formatDouble(l.coupler) << ", \"rocker\": " << formatDouble(l.rocker)
+  out << "{\n  \"lengths\": {\"frame\": " << formatJsonNumber(l.frame) << ", \"crank\": " << formatJsonNumber(l.crank)
+      << ", \"coupler\": " << formatJsonNumber(l.coupler) << ", \"rocker\": " << formatJsonNumber(l.rocker)
       << "},\n  \"length_unit\": " << jsonString(c.fourBar.lengthUnit) << ",\n  \"branch\": \""
       << branchName(c.fourBar.branch) << "\",\n";
   out << "  \"grashof\": {\"class\": \"" << k::toString(g.category) << "\", \"shortest\": \"" << k::toString(g.shortest)
-      << "\", \"longest\": \"" << k::toString(g.longest) << "\", \"s_plus_l\": " << formatDouble(g.sPlusL)
-      << ", \"p_plus_q\": " << formatDouble(g.pPlusQ) << ", \"crank_fully_rotates\": "
+      << "\", \"longest\": \"" << k::toString(g.longest) << "\", \"s_plus_l\": " << formatJsonNumber(g.sPlusL)
+      << ", \"p_plus_q\": " << formatJsonNumber(g.pPlusQ) << ", \"crank_fully_rotates\": "
       << (g.inputFullyRotates ? "true" : "false") << ", \"rocker_fully_rotates\": "
       << (g.outputFullyRotates ? "true" : "false") << "},\n";
   out << "  \"mobility\": {\"links\": " << c.mobility.links << ", \"full_joints\": " << c.mobility.fullJoints
@@ -115,7 +115,7 @@ void printJson(const Classification& c, std::ostream& out) {
         << jsonDeg(p.crankAngle) << ", \"rocker_angle_deg\": " << jsonDeg(p.rockerAngle) << "}";
   }
   out << "],\n  \"rocker_swing_deg\": " << jsonOptional(c.limits.rockerSwing, jsonDeg)
-      << ",\n  \"time_ratio\": " << jsonOptional(c.limits.timeRatio, formatDouble)
+      << ",\n  \"time_ratio\": " << jsonOptional(c.limits.timeRatio, formatJsonNumber)
       << ",\n  \"slow_stroke_crank_arc_deg\": " << jsonOptional(c.limits.slowStrokeCrankArc, jsonDeg)
       << ",\n  \"quick_stroke_crank_arc_deg\": " << jsonOptional(c.limits.quickStrokeCrankArc, jsonDeg) << "\n}\n";
 }
@@ -132,10 +132,10 @@ ExitCode classifyShaper(const k::MechanismExample& e, bool json, std::ostream& o
     out << "{\n  \"mechanism\": \"" << e.kind << "\",\n  \"mobility\": " << m.mobility;
     if (q)
       out << ",\n  \"limit_crank_angles_deg\": [" << jsonDeg(q->firstLimitCrankAngle) << ", " << jsonDeg(q->secondLimitCrankAngle)
-          << "],\n  \"time_ratio\": " << formatDouble(q->timeRatio) << ",\n  \"slow_stroke_crank_arc_deg\": "
+          << "],\n  \"time_ratio\": " << formatJsonNumber(q->timeRatio) << ",\n  \"slow_stroke_crank_arc_deg\": "
           << jsonDeg(q->slowStrokeCrankArc) << ",\n  \"quick_stroke_crank_arc_deg\": " << jsonDeg(q->quickStrokeCrankArc)
           << ",\n  \"rocker_swing_deg\": " << jsonDeg(q->rockerSwing) << ",\n  \"whitworth\": " << (q->whitworth ? "true" : "false")
-          << ",\n  \"stroke\": " << formatDouble(q->stroke);
+          << ",\n  \"stroke\": " << formatJsonNumber(q->stroke);
     out << ",\n  \"length_unit\": \"" << e.mechanism.lengthUnit << "\"\n}\n";
     return ExitCode::Success;
   }

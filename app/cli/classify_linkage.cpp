@@ -17,7 +17,7 @@ namespace linkwright::cli {
 namespace {
 
 namespace k = kinematics;
-using k::io::formatDouble;
+using k::io::formatJsonNumber;
 using k::io::formatFixed;
 
 // A full turn every 0.25°: fine enough that a refined extremum's bracket is one step.
@@ -26,7 +26,7 @@ constexpr std::size_t kSamples = 1441;
 // Crank angles are shown within [0°, 360°): the sweep's last sample is its first.
 double turn(double radians) { return radians - 2.0 * k::kPi * std::floor(radians / (2.0 * k::kPi)); }
 std::string deg(double radians) { return formatFixed(k::radToDeg(radians), 2) + "°"; }
-std::string jsonDeg(double radians) { return formatDouble(k::radToDeg(radians)); }
+std::string jsonDeg(double radians) { return formatJsonNumber(k::radToDeg(radians)); }
 
 struct TransmissionExtremes {
   std::string point;

@@ -70,8 +70,8 @@ std::string documentPath(const std::string& field) {
 // The driver and analysis members, shared by both kinds of design.
 template <typename D>
 void writeMotion(std::ostream& s, const D& d) {
-  s << "\n  },\n  \"driver\": {\"omega_rad_s\": " << formatDouble(d.omega) << ", \"alpha_rad_s2\": " << formatDouble(d.alpha)
-    << "},\n  \"analysis\": {\"from_deg\": " << formatDouble(d.fromDeg) << ", \"to_deg\": " << formatDouble(d.toDeg)
+  s << "\n  },\n  \"driver\": {\"omega_rad_s\": " << formatJsonNumber(d.omega) << ", \"alpha_rad_s2\": " << formatJsonNumber(d.alpha)
+    << "},\n  \"analysis\": {\"from_deg\": " << formatJsonNumber(d.fromDeg) << ", \"to_deg\": " << formatJsonNumber(d.toDeg)
     << ", \"samples\": " << d.samples << "}";
   writeDynamicsMember(s, d.dynamics);
   s << "\n}\n";
@@ -97,11 +97,11 @@ void writeFourBar(std::ostream& s, const FourBarDesign& d) {
   const auto& l = d.lengths;
   s << "    \"type\": \"four-bar\",\n    \"length_unit\": " << jsonQuote(d.lengthUnit)
     << ",\n    \"branch\": \"" << (d.branch == Branch::Open ? "open" : "crossed") << "\",\n";
-  s << "    \"lengths\": {\"frame\": " << formatDouble(l.frame) << ", \"crank\": " << formatDouble(l.crank)
-    << ", \"coupler\": " << formatDouble(l.coupler) << ", \"rocker\": " << formatDouble(l.rocker) << "}";
+  s << "    \"lengths\": {\"frame\": " << formatJsonNumber(l.frame) << ", \"crank\": " << formatJsonNumber(l.crank)
+    << ", \"coupler\": " << formatJsonNumber(l.coupler) << ", \"rocker\": " << formatJsonNumber(l.rocker) << "}";
   if (d.couplerPoint)
-    s << ",\n    \"coupler_point\": {\"along\": " << formatDouble(d.couplerPoint->along)
-      << ", \"across\": " << formatDouble(d.couplerPoint->across) << "}";
+    s << ",\n    \"coupler_point\": {\"along\": " << formatJsonNumber(d.couplerPoint->along)
+      << ", \"across\": " << formatJsonNumber(d.couplerPoint->across) << "}";
   writeMotion(s, d);
 }
 

@@ -10,14 +10,14 @@ namespace {
 
 
 std::string xy(const Eigen::Vector2d& v, const char* x, const char* y) {
-  return "\"" + std::string(x) + "\": " + formatDouble(v.x()) + ", \"" + y + "\": " + formatDouble(v.y());
+  return "\"" + std::string(x) + "\": " + formatJsonNumber(v.x()) + ", \"" + y + "\": " + formatJsonNumber(v.y());
 }
 
 std::string linkMember(const LinkMass& l) {
-  std::string s = jsonQuote(l.link) + ": {\"mass_kg\": " + formatDouble(l.mass);
+  std::string s = jsonQuote(l.link) + ": {\"mass_kg\": " + formatJsonNumber(l.mass);
   if (l.centre)
-    s += ", \"centre\": {\"along\": " + formatDouble(l.centre->along) + ", \"across\": " + formatDouble(l.centre->across) + "}";
-  if (l.inertia) s += ", \"inertia_kg_m2\": " + formatDouble(*l.inertia);
+    s += ", \"centre\": {\"along\": " + formatJsonNumber(l.centre->along) + ", \"across\": " + formatJsonNumber(l.centre->across) + "}";
+  if (l.inertia) s += ", \"inertia_kg_m2\": " + formatJsonNumber(*l.inertia);
   return s + "}";
 }
 
@@ -137,15 +137,15 @@ void writeDynamicsMember(std::ostream& out, const LinkageDynamics& d) {
   bool first = true;
   writeList(out, first, "links", d.links, linkMember, true);
   writeList(out, first, "sliders", d.sliders, [](const SliderMass& s) {
-    return "{\"point\": " + jsonQuote(s.point) + guideMember(s.guide) + ", \"mass_kg\": " + formatDouble(s.mass) +
-           ", \"inertia_kg_m2\": " + formatDouble(s.inertia) + "}";
+    return "{\"point\": " + jsonQuote(s.point) + guideMember(s.guide) + ", \"mass_kg\": " + formatJsonNumber(s.mass) +
+           ", \"inertia_kg_m2\": " + formatJsonNumber(s.inertia) + "}";
   });
   if (d.loads.gravity) {
     out << (first ? "\n" : ",\n") << "    \"gravity_m_s2\": {" << xy(*d.loads.gravity, "x", "y") << "}";
     first = false;
   }
   writeList(out, first, "torques", d.loads.torques, [](const LinkTorque& t) {
-    return "{\"link\": " + jsonQuote(t.link) + ", \"torque_N_m\": " + formatDouble(t.torque) + "}";
+    return "{\"link\": " + jsonQuote(t.link) + ", \"torque_N_m\": " + formatJsonNumber(t.torque) + "}";
   });
   writeList(out, first, "forces", d.loads.forces, forceMember);
   out << "\n  }";

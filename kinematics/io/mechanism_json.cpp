@@ -18,41 +18,41 @@ public:
 
   void operator()(const GroundPoint& g) { m_out << "\"type\": \"ground\"" << xy(g.position); }
   void operator()(const CrankPoint& c) {
-    m_out << "\"type\": \"crank\", \"pivot\": " << point(c.pivot) << ", \"length\": " << formatDouble(c.length)
-          << ", \"phase_rad\": " << formatDouble(c.phase);
+    m_out << "\"type\": \"crank\", \"pivot\": " << point(c.pivot) << ", \"length\": " << formatJsonNumber(c.length)
+          << ", \"phase_rad\": " << formatJsonNumber(c.phase);
   }
   void operator()(const RrrPoint& r) {
-    m_out << "\"type\": \"rrr\", \"first\": " << point(r.first) << ", \"first_length\": " << formatDouble(r.firstLength)
-          << ", \"second\": " << point(r.second) << ", \"second_length\": " << formatDouble(r.secondLength)
+    m_out << "\"type\": \"rrr\", \"first\": " << point(r.first) << ", \"first_length\": " << formatJsonNumber(r.firstLength)
+          << ", \"second\": " << point(r.second) << ", \"second_length\": " << formatJsonNumber(r.secondLength)
           << ", \"branch\": \"" << branchName(r.branch) << "\"";
   }
   void operator()(const RrpPoint& p) {
-    m_out << "\"type\": \"rrp\", \"first\": " << point(p.first) << ", \"length\": " << formatDouble(p.length)
+    m_out << "\"type\": \"rrp\", \"first\": " << point(p.first) << ", \"length\": " << formatJsonNumber(p.length)
           << ", \"branch\": \"" << branchName(p.branch) << "\", \"guide\": " << guide(p.guide);
   }
   void operator()(const RprPoint& s) {
     m_out << "\"type\": \"rpr\", \"pivot\": " << point(s.pivot) << ", \"through\": " << point(s.through)
-          << ", \"length\": " << formatDouble(s.length);
+          << ", \"length\": " << formatJsonNumber(s.length);
   }
   void operator()(const PrpPoint& q) {
     m_out << "\"type\": \"prp\", \"first_guide\": " << guide(q.first) << ", \"second_guide\": " << guide(q.second);
   }
   void operator()(const AttachedPoint& a) {
     m_out << "\"type\": \"attached\", \"link\": " << jsonQuote(m_m.links[a.link.index].name)
-          << ", \"along\": " << formatDouble(a.along) << ", \"across\": " << formatDouble(a.across);
+          << ", \"along\": " << formatJsonNumber(a.along) << ", \"across\": " << formatJsonNumber(a.across);
   }
   void operator()(const FreePoint& f) { m_out << "\"type\": \"free\"" << xy(f.guess); }
 
 private:
   std::string point(PointId id) const { return jsonQuote(m_m.points[id.index].name); }
   static std::string xy(const Eigen::Vector2d& p) {
-    return ", \"x\": " + formatDouble(p.x()) + ", \"y\": " + formatDouble(p.y());
+    return ", \"x\": " + formatJsonNumber(p.x()) + ", \"y\": " + formatJsonNumber(p.y());
   }
   std::string guide(const Guide& g) const {
     std::string s = "{";
     if (g.link) s += "\"link\": " + jsonQuote(m_m.links[g.link->index].name) + ", ";
-    return s + "\"x\": " + formatDouble(g.point.x()) + ", \"y\": " + formatDouble(g.point.y()) +
-           ", \"angle_rad\": " + formatDouble(g.angle) + "}";
+    return s + "\"x\": " + formatJsonNumber(g.point.x()) + ", \"y\": " + formatJsonNumber(g.point.y()) +
+           ", \"angle_rad\": " + formatJsonNumber(g.angle) + "}";
   }
 
   std::ostream& m_out;
@@ -171,7 +171,7 @@ void writeMechanismMembers(std::ostream& out, const Mechanism& m) {
   for (std::size_t c = 0; c < m.constraints.size(); ++c)
     out << (c == 0 ? "\n" : ",\n") << "      {\"first\": " << jsonQuote(m.points[m.constraints[c].first.index].name)
         << ", \"second\": " << jsonQuote(m.points[m.constraints[c].second.index].name)
-        << ", \"length\": " << formatDouble(m.constraints[c].length) << "}";
+        << ", \"length\": " << formatJsonNumber(m.constraints[c].length) << "}";
   out << "\n    ]";
 }
 

@@ -6,7 +6,12 @@
 
 namespace linkwright::kinematics::io {
 
+namespace {
+const std::string kUndefined = "undefined";
+}
+
 std::string formatDouble(double value) {
+  if (!std::isfinite(value)) return "";
   if (value == 0.0) return "0";  // also folds -0 into 0
   std::array<char, 32> buffer{};
   const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
@@ -14,7 +19,10 @@ std::string formatDouble(double value) {
   return std::string(buffer.data(), end);
 }
 
+std::string formatJsonNumber(double value) { return std::isfinite(value) ? formatDouble(value) : "null"; }
+
 std::string formatShort(double value, int significant) {
+  if (!std::isfinite(value)) return kUndefined;
   if (value == 0.0) return "0";
   std::array<char, 64> buffer{};
   const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
@@ -24,6 +32,7 @@ std::string formatShort(double value, int significant) {
 }
 
 std::string formatFixed(double value, int decimals) {
+  if (!std::isfinite(value)) return kUndefined;
   std::array<char, 64> buffer{};
   const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
                                        std::chars_format::fixed, decimals);

@@ -20,7 +20,12 @@ Error valueError(const std::string& field, const std::string& message) {
 
 } // namespace
 
-std::string formatNumber(double value) { return io::formatDouble(value); }
+std::string formatNumber(double value) {
+  // The value the user gave, as they gave it: a message may quote "nan" or "inf" back.
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  return io::formatDouble(value);
+}
 
 std::optional<Error> checkCoordinate(double value, const std::string& field) {
   if (!std::isfinite(value)) return valueError(field, field + " must be finite (got " + formatNumber(value) + ")");

@@ -44,7 +44,8 @@ inline constexpr double kMaxForce = 1e24;         ///< N
 inline constexpr double kMaxTorque = 1e33;        ///< N·m
 inline constexpr double kMaxGravity = 1e6;        ///< m/s²
 
-/// Formats a double for messages with round-trip precision ("70", "-0.5", "nan", "inf").
+/// Formats a value the user gave, for messages quoting it, with round-trip precision ("70",
+/// "-0.5", and "nan" or "inf" as typed).
 std::string formatNumber(double value);
 
 /// Error unless `value` is finite and within ±kMaxLength: a coordinate, an offset, a point's

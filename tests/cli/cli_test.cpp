@@ -2,6 +2,7 @@
 // writes compared with the core's own solution at every row.
 
 #include "app/cli/cli.h"
+#include "app/cli/text_table.h"
 #include "tests/cli/run_cli.h"
 #include "tests/support/file_size_limit.h"
 
@@ -9,12 +10,14 @@
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
+#include "kinematics/solve/sweep.h"
 
 #include <catch2/catch.hpp>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace {
@@ -277,6 +280,17 @@ TEST_CASE("values outside the input domain exit 2 naming the option, the value a
   CHECK(r.code == 2);
   CHECK(r.out.empty());
   CHECK_THAT(r.err, Catch::Contains(message));
+}
+
+TEST_CASE("the text table writes a value that is still not finite as undefined", "[cli][errors]") {
+  // The last guard of --format table: whatever let a non-finite number into a sweep.
+  const auto m = kinematics::makeFourBar({60, 25, 70, 45}, kinematics::Branch::Open).value();
+  auto s = kinematics::sweep(m, {0.0, 1.0, 3, 1.0, 0.0}).value();
+  s.linkAlpha[kinematics::fourbar::kRocker.index][1] = std::numeric_limits<double>::quiet_NaN();
+  std::ostringstream out;
+  cli::writeSweepTable(out, m, s);
+  CHECK(out.str().find("nan") == std::string::npos);
+  CHECK(out.str().find("undefined") != std::string::npos);
 }
 
 TEST_CASE("examples lists every built-in example", "[cli]") {

@@ -1,5 +1,7 @@
 #include "ui/canvas/feasible_range_item.h"
 
+#include "ui/number_text.h"
+
 #include "ui/canvas/canvas_style.h"
 #include "ui/canvas/label_item.h"
 
@@ -57,7 +59,7 @@ std::vector<Arc> complementOf(const std::vector<k::AngleRange>& ranges) {
   return gaps;
 }
 
-QString degrees(double angle) { return QString::number(k::radToDeg(angle), 'f', 1) + QChar(0x00B0); }
+QString degrees(double angle) { return numberText(k::radToDeg(angle), 'f', 1) + QChar(0x00B0); }
 
 } // namespace
 

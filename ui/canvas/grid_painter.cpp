@@ -1,5 +1,7 @@
 #include "ui/canvas/grid_painter.h"
 
+#include "ui/number_text.h"
+
 #include "ui/canvas/canvas_style.h"
 
 #include <QCoreApplication>
@@ -25,7 +27,7 @@ double gridSpacing(double pixelsPerUnit, double minPixels) {
 QString formatGridValue(double value, double spacing) {
   const int decimals = std::max(0, static_cast<int>(-std::floor(std::log10(spacing) + 1e-9)));
   if (std::abs(value) < 0.5 * spacing) value = 0.0;  // no "-0"
-  return QString::number(value, 'f', decimals);
+  return numberText(value, 'f', decimals);
 }
 
 namespace {

@@ -1,5 +1,7 @@
 #include "ui/canvas/linkage_scene.h"
 
+#include "ui/number_text.h"
+
 #include "ui/canvas/arrow_item.h"
 #include "ui/canvas/canvas_style.h"
 #include "ui/canvas/drag_handles.h"
@@ -29,7 +31,7 @@ constexpr double kMessageWidthPx = 340.0;
 QString formatMagnitude(double value) {
   if (!(value > 0.0) || !std::isfinite(value)) return QStringLiteral("0");
   const int digits = static_cast<int>(std::floor(std::log10(value)));
-  return QString::number(value, 'f', std::clamp(2 - digits, 0, 6));
+  return numberText(value, 'f', std::clamp(2 - digits, 0, 6));
 }
 
 } // namespace

@@ -1,5 +1,7 @@
 #include "ui/document/force_results.h"
 
+#include "ui/number_text.h"
+
 #include "ui/document/dynamics_fields.h"
 
 #include <algorithm>
@@ -132,7 +134,7 @@ QString formatForce(double value) {
   const double size = std::abs(value);
   if (size == 0.0) return QStringLiteral("0");
   const int digits = static_cast<int>(std::floor(std::log10(size)));
-  return QString::number(value, 'f', std::clamp(2 - digits, 0, 6));
+  return numberText(value, 'f', std::clamp(2 - digits, 0, 6));
 }
 
 } // namespace linkwright::ui

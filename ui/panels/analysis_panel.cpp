@@ -1,5 +1,7 @@
 #include "ui/panels/analysis_panel.h"
 
+#include "ui/number_text.h"
+
 #include "ui/document/design_templates.h"
 #include "ui/document/mechanism_document.h"
 
@@ -16,7 +18,7 @@ namespace k = kinematics;
 
 namespace {
 
-QString degrees(double radians, int decimals = 2) { return QString::number(k::radToDeg(radians), 'f', decimals) + "°"; }
+QString degrees(double radians, int decimals = 2) { return numberText(k::radToDeg(radians), 'f', decimals) + "°"; }
 
 QString className(k::GrashofClass c) {
   switch (c) {
@@ -106,7 +108,7 @@ void AnalysisPanel::refreshFourBar() {
   m_badge->setText(badge(g.inputFullyRotates ? "#1b7f3b" : "#a15c00", className(g.category),
                          tr("shortest: %1").arg(QString::fromUtf8(k::toString(g.shortest).data()))));
   const QString relation = g.category == k::GrashofClass::ChangePoint ? "=" : (g.sPlusL < g.pPlusQ ? "<" : ">");
-  m_sums->setText(QString("%1 %2 %3 %4").arg(g.sPlusL, 0, 'g', 6).arg(relation).arg(g.pPlusQ, 0, 'g', 6).arg(unit));
+  m_sums->setText(QString("%1 %2 %3 %4").arg(numberText(g.sPlusL), relation, numberText(g.pPlusQ), unit));
   if (a.transmission)
     m_transmissionRange->setText(tr("%1 … %2 (worst %3 from 90°)")
                                      .arg(degrees(a.transmission->minimum, 1), degrees(a.transmission->maximum, 1),
@@ -116,7 +118,7 @@ void AnalysisPanel::refreshFourBar() {
     limits << tr("θ₂ %1 → θ₄ %2").arg(degrees(p.crankAngle, 1), degrees(p.rockerAngle, 1));
   m_limits->setText(limits.isEmpty() ? tr("none") : limits.join("\n"));
   m_timeRatio->setText(a.limits.timeRatio ? tr("%1 (strokes %2 / %3)")
-                                                .arg(*a.limits.timeRatio, 0, 'f', 4)
+                                                .arg(numberText(*a.limits.timeRatio, 'f', 4))
                                                 .arg(degrees(*a.limits.slowStrokeCrankArc, 1), degrees(*a.limits.quickStrokeCrankArc, 1))
                                           : tr("—"));
   m_form->setRowVisible(m_timeRatio, true);
@@ -134,9 +136,9 @@ void AnalysisPanel::refreshLinkage() {
   m_form->setRowVisible(m_stroke, q.has_value());
   if (q) {
     m_timeRatio->setText(tr("%1 (strokes %2 / %3)")
-                             .arg(q->timeRatio, 0, 'f', 4)
+                             .arg(numberText(q->timeRatio, 'f', 4))
                              .arg(degrees(q->slowStrokeCrankArc, 1), degrees(q->quickStrokeCrankArc, 1)));
-    m_stroke->setText(QString("%1 %2").arg(q->stroke, 0, 'f', 2).arg(unit));
+    m_stroke->setText(QString("%1 %2").arg(numberText(q->stroke, 'f', 2), unit));
   }
   const auto& gaps = a.notAssembled;
   m_form->setRowVisible(m_notAssembled, !gaps.empty());

@@ -1,5 +1,7 @@
 #include "ui/panels/mass_table.h"
 
+#include "ui/number_text.h"
+
 #include <QHeaderView>
 #include <QLineEdit>
 #include <QLocale>
@@ -56,7 +58,7 @@ MassTable::MassTable(const QStringList& headers, QWidget* parent) : QTableWidget
   connect(this, &QTableWidget::itemChanged, this, &MassTable::onItemChanged);
 }
 
-QString MassTable::formatValue(double value) { return QString::number(value, 'g', 6); }
+QString MassTable::formatValue(double value) { return numberText(value, 'g', 6); }
 
 void MassTable::setRows(const QStringList& names, const std::vector<std::vector<Cell>>& cells) {
   m_filling = true;

@@ -1,5 +1,7 @@
 #include "ui/panels/motion_panel.h"
 
+#include "ui/number_text.h"
+
 #include "ui/animation/crank_animator.h"
 #include "ui/document/edit_design_command.h"
 #include "ui/document/design_fields.h"
@@ -132,7 +134,7 @@ void MotionPanel::refreshMotion() {
     const QSignalBlocker block(m_angle);
     m_angle->setValue(static_cast<int>(std::lround(deg * 10.0)));
   }
-  m_angleText->setText(tr("Crank angle θ₂ = %1°").arg(deg, 0, 'f', 1));
+  m_angleText->setText(tr("Crank angle θ₂ = %1°").arg(numberText(deg, 'f', 1)));
 }
 
 void MotionPanel::editSpeed() {

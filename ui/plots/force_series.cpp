@@ -16,9 +16,11 @@ constexpr std::array<QColor, 8> kJointPalette{
     QColor{255, 127, 14}, QColor{23, 190, 207}, QColor{140, 86, 75},  QColor{127, 127, 127},
 };
 
-// Fills `out` with (x(j), y(j)) for the runs of samples where `ok(j)`; reuses its lists.
+// Fills `out` with (x(j), y(j)) for the runs of samples where `ok(j)` and y(j) is finite (the
+// last guard: a value that is still not finite is left out, never drawn); reuses its lists.
 template <typename Ok, typename X, typename Y>
-void buildRuns(std::size_t samples, Ok ok, X x, Y y, SeriesRuns& out) {
+void buildRuns(std::size_t samples, Ok okSample, X x, Y y, SeriesRuns& out) {
+  const auto ok = [&](std::size_t j) { return okSample(j) && std::isfinite(y(j)); };
   qsizetype runCount = 0;
   bool first = true;
   out.minY = 0.0;

@@ -1,5 +1,7 @@
 #include "ui/plots/hover_readout.h"
 
+#include "ui/number_text.h"
+
 #include <QCursor>
 #include <QToolTip>
 
@@ -12,7 +14,7 @@ QString formatReadoutNumber(double value) {
   const double magnitude = std::abs(value);
   const int leading = magnitude > 0.0 ? static_cast<int>(std::floor(std::log10(magnitude))) : 0;
   const int decimals = std::clamp(2 - leading, 1, 6);
-  return QString::number(value, 'f', decimals);
+  return numberText(value, 'f', decimals);
 }
 
 QString readoutText(const PlotCurve& curve, QPointF point, AngleUnit unit, const QString& lengthUnit) {
@@ -22,8 +24,8 @@ QString readoutText(const PlotCurve& curve, QPointF point, AngleUnit unit, const
   const QString value = kind == QuantityKind::Angle && degreeSign
                             ? formatReadoutNumber(point.y()) + QStringLiteral("°")
                             : formatReadoutNumber(point.y()) + QLatin1Char(' ') + quantityUnit(kind, unit, lengthUnit);
-  const QString crank = degreeSign ? QString::number(point.x(), 'f', 1) + QStringLiteral("°")
-                                   : QString::number(point.x(), 'f', 3) + QLatin1Char(' ') + angleUnitSymbol(unit);
+  const QString crank = degreeSign ? numberText(point.x(), 'f', 1) + QStringLiteral("°")
+                                   : numberText(point.x(), 'f', 3) + QLatin1Char(' ') + angleUnitSymbol(unit);
   return HoverReadout::tr("%1 = %2 at crank %3").arg(curve.name, value, crank);
 }
 

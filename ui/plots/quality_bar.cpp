@@ -1,5 +1,7 @@
 #include "ui/plots/quality_bar.h"
 
+#include "ui/number_text.h"
+
 #include "kinematics/model/units.h"
 
 #include <QComboBox>
@@ -127,7 +129,7 @@ void QualityBar::refreshError() {
                          "<tr><td>extreme angles</td><td>%7°</td></tr></table>"
                          "<p>Crank at constant speed (α₂ = 0).</p>")
                           .arg(e.samplesPerRevolution)
-                          .arg(e.measureMilliseconds, 0, 'f', 1)
+                          .arg(numberText(e.measureMilliseconds, 'f', 1))
                           .arg(formatRelative(p.omega), formatRelative(p.alpha), formatRelative(p.speed),
                                formatRelative(p.acceleration))
                           .arg(kinematics::radToDeg(p.angle), 0, 'g', 2));

@@ -1,6 +1,7 @@
 #include "ui/plots/series_data.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace linkwright::ui {
 namespace {
@@ -73,13 +74,15 @@ void buildSeriesRuns(const k::SweepResult& s, PlotQuantity q, AngleUnit unit, Se
   out.maxY = 0.0;
   bool first = true;
   std::size_t j = 0;
+  // The last guard: a value that is still not finite is left out like a missing one.
+  const auto plottable = [&](std::size_t k) { return sampleCarries(s, q, k) && std::isfinite(values.at(k)); };
   while (values.present() && j < s.size()) {
-    if (!sampleCarries(s, q, j)) {
+    if (!plottable(j)) {
       ++j;
       continue;
     }
     std::size_t end = j;
-    while (end < s.size() && sampleCarries(s, q, end)) ++end;
+    while (end < s.size() && plottable(end)) ++end;
     if (runCount == out.runs.size()) out.runs.emplace_back();
     QList<QPointF>& run = out.runs[runCount++];
     run.clear();

@@ -14,6 +14,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstdlib>
+#include <limits>
 #include <locale>
 #include <sstream>
 #include <string>
@@ -187,6 +188,24 @@ TEST_CASE("writeSweepCsv leaves the rate cells empty at a toggle", "[csv_writer]
     }
   }
   CHECK(csv(m, r).find("nan") == std::string::npos);
+}
+
+TEST_CASE("writeSweepCsv writes a value that is still not finite as an empty cell", "[csv_writer]") {
+  // The last guard: whatever let a non-finite number into a sweep, the CSV never says nan or inf.
+  const Mechanism m = fourBar(kThesis);
+  SweepResult r = run(m, {0.0, kPi, 3, 1.0, 0.0});
+  r.linkOmega[fourbar::kCoupler.index][1] = std::numeric_limits<double>::quiet_NaN();
+  r.acceleration[fourbar::kC.index][1].x() = -std::numeric_limits<double>::infinity();
+  const std::string text = csv(m, r);
+  CHECK(text.find("nan") == std::string::npos);
+  CHECK(text.find("inf") == std::string::npos);
+  const std::vector<std::string> header = cells(lines(text)[0]);
+  const std::vector<std::string> row = cells(lines(text)[2]);
+  REQUIRE(row.size() == header.size());
+  for (std::size_t k = 0; k < row.size(); ++k) {
+    CAPTURE(header[k]);
+    CHECK(row[k].empty() == (header[k] == "coupler_omega_rad_s" || header[k] == "C_ax_mm_s2"));
+  }
 }
 
 TEST_CASE("csvField quotes per RFC 4180 only where needed", "[csv_writer]") {

@@ -7,6 +7,7 @@
 #include "kinematics/model/examples.h"
 
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include <catch2/catch.hpp>
@@ -121,6 +122,18 @@ TEST_CASE("the document text is what the format note says", "[io][document]") {
   CHECK_THAT(text, Catch::StartsWith("{\n  \"format\": \"linkwright\",\n  \"version\": 2,"));
   CHECK_THAT(text, Catch::Contains("\"lengths\": {\"frame\": 60, \"crank\": 25, \"coupler\": 70, \"rocker\": 45}"));
   CHECK_THAT(text, Catch::Contains("\"omega_rad_s\": 1.0471975511965976"));
+}
+
+TEST_CASE("a value that is still not finite is written as null, which the reader refuses", "[io][document][errors]") {
+  // The last guard: a document never holds nan or inf, even from a design that skipped checks.
+  auto d = sampleDesign();
+  d.omega = std::numeric_limits<double>::infinity();
+  const std::string text = writeDocument(d);
+  CHECK_THAT(text, Catch::Contains("\"omega_rad_s\": null"));
+  CHECK(text.find("inf") == std::string::npos);
+  const auto back = readDocument(text);
+  REQUIRE_FALSE(back.ok());
+  CHECK(back.error().message == "driver.omega_rad_s must be a number");
 }
 
 TEST_CASE("bad documents are refused with the member named", "[io][document][errors]") {

@@ -65,7 +65,7 @@ TEST_CASE("formatDouble round-trips random bit patterns", "[number_format]") {
   SUCCEED("20000 random doubles read back exactly");
 }
 
-TEST_CASE("formatDouble is the shortest text, with fixed spellings for the specials", "[number_format]") {
+TEST_CASE("formatDouble is the shortest text, and never nan or inf", "[number_format]") {
   CHECK(formatDouble(70.0) == "70");
   CHECK(formatDouble(-70.0) == "-70");
   CHECK(formatDouble(0.1) == "0.1");
@@ -73,9 +73,22 @@ TEST_CASE("formatDouble is the shortest text, with fixed spellings for the speci
   CHECK(formatDouble(1e-6) == "1e-06");
   CHECK(formatDouble(0.0) == "0");
   CHECK(formatDouble(-0.0) == "0");  // −0 reads as a sign that is not there
-  CHECK(formatDouble(std::numeric_limits<double>::quiet_NaN()) == "nan");
-  CHECK(formatDouble(std::numeric_limits<double>::infinity()) == "inf");
-  CHECK(formatDouble(-std::numeric_limits<double>::infinity()) == "-inf");
+  // The last guard: a value that is not finite is an empty CSV cell, never "nan" or "inf".
+  CHECK(formatDouble(std::numeric_limits<double>::quiet_NaN()).empty());
+  CHECK(formatDouble(std::numeric_limits<double>::infinity()).empty());
+  CHECK(formatDouble(-std::numeric_limits<double>::infinity()).empty());
+}
+
+TEST_CASE("the other writers spell a value that is not finite as null or undefined", "[number_format]") {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  CHECK(formatJsonNumber(0.25) == "0.25");
+  CHECK(formatJsonNumber(nan) == "null");
+  CHECK(formatJsonNumber(-inf) == "null");
+  CHECK(formatShort(inf) == "undefined");
+  CHECK(formatShort(nan, 3) == "undefined");
+  CHECK(formatFixed(-inf, 4) == "undefined");
+  CHECK(formatFixed(nan, 2) == "undefined");
 }
 
 TEST_CASE("formatShort keeps the requested significant digits", "[number_format]") {

@@ -6,6 +6,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <limits>
+
 using namespace linkwright::ui;
 namespace k = linkwright::kinematics;
 
@@ -70,6 +72,19 @@ TEST_CASE("Angles are plotted wherever assembled, rates only where ok", "[series
 
   buildSeriesRuns(sweep, PlotQuantity::TransmissionAngle, AngleUnit::Radians, runs);
   CHECK(runs.pointCount() == 5);
+}
+
+TEST_CASE("A value that is still not finite is left out of the plot like a missing one", "[series_data]") {
+  // The last guard: whatever let it through, nan or inf never becomes a point.
+  k::SweepResult sweep = handMadeSweep();
+  sweep.linkOmega[k::fourbar::kRocker.index][1] = std::numeric_limits<double>::quiet_NaN();
+  sweep.linkAngle[k::fourbar::kRocker.index][2] = std::numeric_limits<double>::infinity();
+  SeriesRuns runs;
+  buildSeriesRuns(sweep, PlotQuantity::RockerOmega, AngleUnit::Radians, runs);
+  CHECK(runLengths(runs) == QList<qsizetype>{1, 1, 1});  // 0, 3, 5
+  CHECK(runs.maxY == 15.0);
+  buildSeriesRuns(sweep, PlotQuantity::RockerAngle, AngleUnit::Radians, runs);
+  CHECK(runLengths(runs) == QList<qsizetype>{2, 1, 1});  // 0–1, 3, 5
 }
 
 TEST_CASE("Degrees convert x and y, rates per second too", "[series_data]") {

@@ -1,0 +1,16 @@
+// ui/number_text.h: the GUI's read-outs never show nan or inf.
+
+#include "ui/number_text.h"
+
+#include <catch2/catch.hpp>
+
+#include <limits>
+
+using linkwright::ui::numberText;
+
+TEST_CASE("read-outs show numbers as QString::number does, and undefined for the rest", "[ui][number_text]") {
+  CHECK(numberText(25.2149, 'f', 1) == "25.2");
+  CHECK(numberText(1.5e-7) == "1.5e-07");
+  CHECK(numberText(std::numeric_limits<double>::quiet_NaN(), 'f', 2) == "undefined");
+  CHECK(numberText(-std::numeric_limits<double>::infinity()) == "undefined");
+}
