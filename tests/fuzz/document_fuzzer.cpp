@@ -8,9 +8,19 @@
 #include <string>
 #include <unistd.h>
 
+namespace {
+
+// One scratch file per process (libFuzzer's -jobs run several side by side), removed at exit.
+struct ScratchFile {
+  std::string path = "/tmp/linkwright-document-fuzzer-" + std::to_string(getpid()) + ".linkwright";
+  ~ScratchFile() { std::remove(path.c_str()); }
+};
+
+} // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  // One scratch file per process: libFuzzer's -jobs run several processes side by side.
-  static const std::string scratch = "/tmp/linkwright-document-fuzzer-" + std::to_string(getpid()) + ".linkwright";
+  static const ScratchFile scratchFile;
+  const std::string& scratch = scratchFile.path;
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
   if (const auto finding = linkwright::fuzz::checkDocument(bytes, scratch)) {
     std::fprintf(stderr, "linkwright document fuzzer: %s\n", finding->c_str());
