@@ -68,6 +68,31 @@ TEST_CASE("an edit that can never be assembled is refused and changes nothing", 
   CHECK(whyNegative->contains("coupler length must be positive and finite (got -3)"));
 }
 
+TEST_CASE("an edit outside the input domain is refused with the field, value and range", "[ui][document][errors]") {
+  // The GUI's fields go through the core's checks: the same ranges as documents and the CLI.
+  MechanismDocument doc;
+  const kinematics::FourBarDesign before = *doc.fourBar();
+  kinematics::FourBarDesign huge = before;
+  huge.lengths.rocker = 2e9;
+  const auto whyHuge = doc.edit(huge, "rocker");
+  REQUIRE(whyHuge.has_value());
+  INFO(whyHuge->toStdString());
+  CHECK(whyHuge->contains("rocker length must be between 1e-6 and 1e9 (got 2e+09)"));
+  kinematics::FourBarDesign spread = before;
+  spread.lengths.crank = 1e-5;  // 70 mm coupler: 7e6 times the crank
+  const auto whySpread = doc.edit(spread, "crank");
+  REQUIRE(whySpread.has_value());
+  CHECK(whySpread->contains("lengths span too wide a range"));
+  kinematics::FourBarDesign fast = before;
+  fast.omega = 2e6;
+  const auto whyFast = doc.edit(fast, "speed");
+  REQUIRE(whyFast.has_value());
+  INFO(whyFast->toStdString());
+  CHECK(whyFast->contains("omega must be finite and within ±1e6 rad/s (got 2e+06)"));
+  CHECK(*doc.fourBar() == before);
+  CHECK(doc.undoStack()->count() == 0);
+}
+
 TEST_CASE("consecutive edits with one merge key are one undo step", "[ui][document]") {
   MechanismDocument doc;
   const kinematics::FourBarDesign start = *doc.fourBar();
