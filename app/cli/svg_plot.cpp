@@ -28,10 +28,12 @@ std::string escaped(const std::string& text) {
 
 std::string logLogPlotSvg(const std::string& title, const std::string& xTitle, const std::string& yTitle,
                           const std::vector<PlotSeries>& series) {
+  // A log-log plot shows positive finite points only; the rest would become no coordinate.
+  const auto plotted = [](double x, double y) { return x > 0 && y > 0 && std::isfinite(x) && std::isfinite(y); };
   double x0 = 1e300, x1 = 0, y0 = 1e300, y1 = 0;
   for (const auto& s : series)
     for (const auto& [x, y] : s.points) {
-      if (!(x > 0 && y > 0)) continue;
+      if (!plotted(x, y)) continue;
       x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
     }
   if (x1 <= 0) x0 = y0 = 1, x1 = y1 = 10;
@@ -63,10 +65,10 @@ std::string logLogPlotSvg(const std::string& title, const std::string& xTitle, c
     s << "<polyline fill=\"none\" stroke=\"" << ser.colour << "\" stroke-width=\"2\""
       << (ser.dashed ? " stroke-dasharray=\"6 4\"" : "") << " points=\"";
     for (const auto& [x, y] : ser.points)
-      if (x > 0 && y > 0) s << num(px(x)) << "," << num(py(y)) << " ";
+      if (plotted(x, y)) s << num(px(x)) << "," << num(py(y)) << " ";
     s << "\"/>\n";
     for (const auto& [x, y] : ser.points)
-      if (x > 0 && y > 0) s << "<circle cx=\"" << num(px(x)) << "\" cy=\"" << num(py(y)) << "\" r=\"3\" fill=\"" << ser.colour << "\"/>\n";
+      if (plotted(x, y)) s << "<circle cx=\"" << num(px(x)) << "\" cy=\"" << num(py(y)) << "\" r=\"3\" fill=\"" << ser.colour << "\"/>\n";
     const double ly = kTop + 14 + 20.0 * static_cast<double>(i);
     s << "<line x1=\"" << num(kLeft + pw + 14) << "\" y1=\"" << num(ly - 4) << "\" x2=\"" << num(kLeft + pw + 40) << "\" y2=\""
       << num(ly - 4) << "\" stroke=\"" << ser.colour << "\" stroke-width=\"2\"" << (ser.dashed ? " stroke-dasharray=\"6 4\"" : "")

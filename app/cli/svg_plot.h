@@ -11,7 +11,7 @@ struct PlotSeries {
   std::string label;
   std::string colour;  ///< any SVG colour, e.g. "#1f77b4"
   bool dashed = false;
-  std::vector<std::pair<double, double>> points;  ///< (x, y), both > 0
+  std::vector<std::pair<double, double>> points;  ///< (x, y); only points with both positive and finite are drawn
 };
 
 /// A log-log plot of `series` with decade grid lines, axis titles and a legend.

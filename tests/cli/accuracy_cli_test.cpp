@@ -1,11 +1,14 @@
 // linkwright-cli accuracy: the measured speed-accuracy table and its plot.
 
+#include "app/cli/svg_plot.h"
 #include "tests/cli/run_cli.h"
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace {
@@ -55,4 +58,17 @@ TEST_CASE("accuracy names what it cannot measure", "[cli][accuracy][errors]") {
   CHECK_THAT(err, Catch::Contains("no example named 'nope'"));
   CHECK(run({"accuracy", "--samples", "3"}, out, err) == 2);
   CHECK_THAT(err, Catch::Contains("unknown option '--samples' for 'accuracy'"));
+}
+
+TEST_CASE("the SVG plot leaves out points that are not positive and finite", "[cli][accuracy][errors]") {
+  // The last guard of accuracy --svg: an infinite error would otherwise become no coordinate.
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::string svg = linkwright::cli::logLogPlotSvg("t", "x", "y",
+      {{"s", "#000", false, {{10.0, 1e-3}, {100.0, inf}, {inf, 1e-4}, {1000.0, std::nan("")}, {1e4, 1e-6}}}});
+  CHECK(svg.find("undefined") == std::string::npos);
+  CHECK(svg.find("inf") == std::string::npos);
+  CHECK(svg.find("nan") == std::string::npos);
+  std::size_t circles = 0;
+  for (std::size_t at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1)) ++circles;
+  CHECK(circles == 2);
 }
