@@ -72,12 +72,18 @@ inline RrrCandidates rrrCandidates(const Eigen::Vector2d& p1, double l1, const E
     out.failure = AssemblyFailure::TooClose;
     return out;
   }
+  const bool pastLimit = reach < 0.0 || inner < 0.0;
   reach = std::max(reach, 0.0);
   inner = std::max(inner, 0.0);
   // One division, made while the factors are multiplied, instead of three after them.
   const double inverse = 1.0 / L;
   const double h = 0.5 * std::sqrt(reach * (l1 + l2 + L) * inner * (L + std::abs(l1 - l2))) * inverse;
-  const double a = 0.5 * (l1 * l1 - l2 * l2 + L * L) * inverse;
+  double a = 0.5 * (l1 * l1 - l2 * l2 + L * L) * inverse;
+  // Past a limit (within the slack) the circles do not meet, and the foot can lie beyond the
+  // first circle: by slack·l2/L at the inner limit, without bound as the parents close in.
+  // At ±l1 the first length holds exactly and the second misses by the gap, at most
+  // kAssemblyTolerance·(l1 + l2).
+  if (pastLimit) a = std::clamp(a, -l1, l1);
   const Eigen::Vector2d u = d * inverse;
   const Eigen::Vector2d n(-u.y(), u.x());
   const Eigen::Vector2d foot = p1 + a * u;

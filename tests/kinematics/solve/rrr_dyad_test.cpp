@@ -91,6 +91,28 @@ TEST_CASE("rrrCandidates treats a gap within kAssemblyTolerance as the limit its
         AssemblyFailure::TooClose);
 }
 
+TEST_CASE("rrrCandidates past a limit within the tolerance keeps both lengths to it", "[rrr_dyad]") {
+  // Found by the random-linkage soak (a kite 1e-10 off its change point): past the inner limit
+  // the foot of the old formula lay slack·l2/L beyond the first circle, here 1e-5 for a
+  // tolerance of 2e-10. Now the first length holds and the second misses by the gap.
+  struct Case {
+    double l1, l2, distance;
+  };
+  const double l = 1.0, d = 1e-6, gap = 1e-11;  // gap < kAssemblyTolerance·(l1 + l2) = 2e-10
+  for (const Case c : {Case{l, l - d, d - gap}, Case{l - d, l, d - gap}, Case{l, 2.0 * l, 3.0 * l + gap},
+                       Case{2.0 * l, l, 3.0 * l + gap}}) {
+    CAPTURE(c.l1, c.l2, c.distance);
+    const Eigen::Vector2d p1(0.3, -0.2);
+    const Eigen::Vector2d p2 = p1 + c.distance * Eigen::Vector2d(0.6, 0.8);
+    const RrrCandidates r = rrrCandidates(p1, c.l1, p2, c.l2);
+    REQUIRE(r.failure == AssemblyFailure::None);
+    CHECK(r.halfSeparation == 0.0);
+    const double tolerance = kAssemblyTolerance * (c.l1 + c.l2);
+    CHECK((r.open - p1).norm() == within(c.l1, tolerance));
+    CHECK((r.open - p2).norm() == within(c.l2, tolerance));
+  }
+}
+
 TEST_CASE("rrrCandidates keeps h accurate next to a toggle (Heron's form)", "[rrr_dyad]") {
   // l1 = l2 = 1 and L = 2 − ε: h = √(1 − (L/2)²) = √((1 − L/2)(1 + L/2)), where 1 − L/2 is exact
   // (Sterbenz). The textbook √(l1² − a²) would lose about half the digits here (1e-16/ε).
