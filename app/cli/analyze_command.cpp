@@ -95,6 +95,10 @@ ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err)
   for (const double angle : result->singularAngles)
     err << "linkwright-cli: note: toggle position at crank angle " << degreesText(angle)
         << ": coupler and rocker are collinear, ω and α are undefined (cells left empty)\n";
+  for (const kinematics::AngleRange& step : result->lockedBetween)
+    err << "linkwright-cli: note: the linkage locks between crank angles " << degreesText(step.from) << " and "
+        << degreesText(step.to) << " (a dyad passes its assembly limit between these samples); from "
+        << degreesText(step.to) << " on it is assembled afresh on the chosen branches, so points jump there\n";
   if (forceSweep) reportUndeterminedForces(*result, *forceSweep, err);
   if (!result->notAssembled.empty()) {
     reportUnassembled(*result, swept->resolved, err);

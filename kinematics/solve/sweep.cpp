@@ -202,7 +202,9 @@ private:
     const Eigen::Vector2d* before = m_haveBefore ? m_before->position.data() : nullptr;
     if (!refine(0, m_lastAngle, *m_last, m_beforeAngle, before, angle, scratch(0))) {
       // The path leaves the assemblable region between two samples: start afresh here.
-      return solve(angle, m_request, *m_current);
+      const PoseReport afresh = solve(angle, m_request, *m_current);
+      if (afresh.status != PoseStatus::NotAssemblable) m_out.lockedBetween.push_back({m_lastAngle, angle});
+      return afresh;
     }
     const BranchGuide tracked{m_scratch[0].branchSign, {}};
     m_current->position = m_scratch[0].position;  // free points start from the tracked solution
@@ -298,6 +300,7 @@ void allocate(const Mechanism& m, std::size_t n, const SolveRequest& request, co
   sizeColumns(out.transmissionAngle, dyads, true, n);
   out.notAssembled.clear();
   out.singularAngles.clear();
+  out.lockedBetween.clear();
   out.firstFailure.reset();
 }
 
@@ -321,6 +324,12 @@ void summarize(const Mechanism& m, const SweepSpec& spec, SweepResult& out) {
 }
 
 } // namespace
+
+bool SweepResult::lockedAfter(std::size_t sample) const {
+  return sample + 1 < size() && std::any_of(lockedBetween.begin(), lockedBetween.end(), [&](const AngleRange& step) {
+           return step.from == inputAngle[sample] && step.to == inputAngle[sample + 1];
+         });
+}
 
 std::optional<Error> checkSweepSpec(const SweepSpec& spec) {
   if (auto e = checkMagnitude(spec.fromAngle, "from angle", degToRad(kMaxAngleDeg), "rad (1e6 degrees)")) return e;

@@ -63,6 +63,11 @@ struct SweepResult {
   std::vector<std::vector<double>> transmissionAngle;  ///< rad, for RRR points; others empty
   std::vector<AngleRange> notAssembled;  ///< runs of consecutive samples that failed
   std::vector<double> singularAngles;    ///< samples where rates are undefined (toggle)
+  /// Steps from one assembled sample to the next that the linkage cannot make: somewhere
+  /// between them a dyad passes its assembly limit, so the crank cannot turn through (a lock
+  /// too short to hold a sample). The later sample is assembled afresh on the mechanism's own
+  /// branches, so points may jump across the step; it is not motion.
+  std::vector<AngleRange> lockedBetween;
   std::optional<std::string> firstFailure;  ///< sentence describing the first failed sample
 
   std::size_t size() const { return inputAngle.size(); }
@@ -70,6 +75,8 @@ struct SweepResult {
   bool assembled(std::size_t sample) const {
     return report[sample].status != PoseStatus::NotAssemblable;
   }
+  /// True if the linkage locks between `sample` and the next (lockedBetween holds that step).
+  bool lockedAfter(std::size_t sample) const;
 };
 
 /// Error naming the field if the spec has a non-finite angle, ω or α, or zero samples.

@@ -3,6 +3,7 @@
 
 #include "app/cli/cli.h"
 #include "tests/cli/run_cli.h"
+#include "tests/support/locking_six_bar.h"
 
 #include "kinematics/io/document_json.h"
 #include "kinematics/model/mechanism_design.h"
@@ -71,6 +72,22 @@ TEST_CASE("a document's speed and grid are the defaults", "[cli][document]") {
   std::getline(lines, first);
   CHECK_THAT(first, Catch::StartsWith("10,3,0,"));  // crank angle, ω, α
   CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 5);  // header + 4 rows
+}
+
+TEST_CASE("analyze notes a lock between two samples", "[cli][document]") {
+  // Its dyad E locks near 291.65°, between two 5° samples.
+  kinematics::MechanismDesign d;
+  d.kind = "stephenson-iii";
+  d.mechanism = *kinematics::makeSixBar(test::lockingSixBar());
+  d.samples = 73;
+  const TempDocument file("lock", kinematics::io::writeDocument(d));
+  const Run r = run({"analyze", file.path()});
+  CHECK(r.code == 0);  // every row is there
+  CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 74);
+  // (Its four-bar is also at a change point: a toggle note for 180° comes first.)
+  CHECK_THAT(r.err, Catch::EndsWith("\nlinkwright-cli: note: the linkage locks between crank angles 290° and 295° (a dyad "
+                                    "passes its assembly limit between these samples); from 295° on it is assembled "
+                                    "afresh on the chosen branches, so points jump there\n"));
 }
 
 TEST_CASE("a version 1 document analyses as its four-bar", "[cli][document][migration]") {

@@ -16,6 +16,7 @@
 #include "kinematics/model/point_drag.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
+#include "tests/support/locking_six_bar.h"
 
 #include <catch2/catch.hpp>
 
@@ -80,6 +81,25 @@ TEST_CASE("a slider-crank and a Watt II solve through the document", "[ui][linka
   CHECK(doc.mechanism().points.size() == 7);
   CHECK(doc.mechanism().links.size() == 5);
   CHECK(doc.poseStatus() == k::PoseStatus::Ok);
+}
+
+TEST_CASE("a lock between two samples splits the range the crank can turn through", "[ui][linkage][analysis]") {
+  // In 5° steps every sample assembles, but the linkage locks between 290° and 295°, so the
+  // animator must not turn it through a full circle.
+  k::MechanismDesign d;
+  d.kind = "stephenson-iii";
+  d.mechanism = *k::makeSixBar(test::lockingSixBar());
+  d.samples = 73;
+  MechanismDocument doc;
+  doc.reset(d);
+  CHECK(doc.analysis().notAssembled.empty());  // the grid's samples all assemble
+  const k::InputRange& range = doc.analysis().inputRange;
+  CHECK_FALSE(range.fullRotation);
+  REQUIRE(range.ranges.size() == 2);
+  CHECK(k::radToDeg(range.ranges[0].from) == Approx(0.0));
+  CHECK(k::radToDeg(range.ranges[0].to) == Approx(290.0));
+  CHECK(k::radToDeg(range.ranges[1].from) == Approx(295.0));
+  CHECK(k::radToDeg(range.ranges[1].to) == Approx(360.0));
 }
 
 TEST_CASE("a shaper shows its quick return; a Whitworth too", "[ui][linkage][analysis]") {

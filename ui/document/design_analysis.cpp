@@ -17,7 +17,7 @@ k::InputRange assembledRange(const k::SweepResult& sweep) {
       continue;
     }
     const std::size_t first = j;
-    while (j + 1 < sweep.size() && sweep.assembled(j + 1)) ++j;
+    while (j + 1 < sweep.size() && sweep.assembled(j + 1) && !sweep.lockedAfter(j)) ++j;
     range.ranges.push_back({sweep.inputAngle[first], sweep.inputAngle[j]});
     ++j;
   }

@@ -36,7 +36,8 @@ struct DesignAnalysis {
 DesignAnalysis analyseDesign(const kinematics::Design& design, const kinematics::Mechanism& mechanism,
                              const kinematics::SweepResult& sweep);
 
-/// The input ranges over which `sweep` assembled, one per run of assembled samples; a full
+/// The input ranges over which `sweep` assembled, one per run of assembled samples (a lock
+/// between two samples, SweepResult::lockedBetween, ends a run); a full
 /// turn when every sample of a grid spanning 360° or more assembled.
 kinematics::InputRange assembledRange(const kinematics::SweepResult& sweep);
 

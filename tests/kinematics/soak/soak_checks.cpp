@@ -125,7 +125,11 @@ void checkRates(const k::Mechanism& m, const k::SweepSpec& spec, const k::SweepR
   if (pose)
     for (std::size_t i = 0; i < m.points.size(); ++i)
       if (pose->branchSign[i] != 0) gap = std::min(gap, pose->assemblyGap[i]);
-  const double h = 1e-3 / (std::abs(spec.omega) + std::sqrt(std::abs(spec.alpha)));
+  // The crank turns 1e-3 rad over the stencil's step h, less near a toggle: there the n-th
+  // derivative grows like (size/gap)^n, and the Richardson estimate of the truncation error
+  // only holds while a step of the crank moves the dyad by much less than its gap.
+  const double turn = 1e-3 * std::min(1.0, 10.0 * gap / size);
+  const double h = turn / (std::abs(spec.omega) + std::sqrt(std::abs(spec.alpha)));
   const auto poses = pose && gap > 1e-3 * size ? stencil(m, spec, s, j, h, size) : std::nullopt;
   if (!poses) {
     ++c.ratesSkipped;
@@ -171,7 +175,8 @@ SweepCheck checkSweep(const k::Mechanism& m, const k::SweepSpec& spec, const k::
     if (c.findings.size() > before) continue;
     if (!first) first = j;
     checkClosure(m, s, size, *first, j, c);
-    if (j + 1 < s.size() && s.ok(j) && s.ok(j + 1) && spec.omega != 0.0) checkContinuity(m, spec, s, size, j, c);
+    if (j + 1 < s.size() && s.ok(j) && s.ok(j + 1) && spec.omega != 0.0 && !s.lockedAfter(j))
+      checkContinuity(m, spec, s, size, j, c);
   }
   // Rates at up to rateSamples samples spread evenly over the ok ones.
   std::vector<std::size_t> ok;

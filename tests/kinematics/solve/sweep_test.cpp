@@ -1,6 +1,6 @@
 // Tests kinematics/solve/sweep.h: the sample grid, the spec checks, the column layout for
 // each request, agreement with single poses, angle unwrapping, and the report of samples
-// that could not be assembled or were singular.
+// that could not be assembled, locked between two samples, or were singular.
 
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
@@ -8,6 +8,7 @@
 #include "kinematics/solve/sweep.h"
 
 #include "tests/support/approx.h"
+#include "tests/support/locking_six_bar.h"
 
 #include <catch2/catch.hpp>
 
@@ -157,6 +158,28 @@ TEST_CASE("sweep reports the samples it could not assemble", "[sweep][errors]") 
   REQUIRE(never->notAssembled.size() == 1);
   CHECK(never->notAssembled[0] == AngleRange{0.0, 1.0});
   CHECK(never->firstFailure.has_value());
+}
+
+TEST_CASE("sweep reports a lock too short to hold a sample", "[sweep][errors]") {
+  const auto m = makeSixBar(linkwright::test::lockingSixBar());
+  REQUIRE(m.ok());
+
+  const auto coarse = sweep(*m, {0.0, 2.0 * kPi, 73, 1.0, 0.0});
+  REQUIRE(coarse.ok());
+  CHECK(coarse->notAssembled.empty());
+  REQUIRE(coarse->lockedBetween.size() == 1);
+  CHECK(radToDeg(coarse->lockedBetween[0].from) == within(290.0, 1e-12));
+  CHECK(radToDeg(coarse->lockedBetween[0].to) == within(295.0, 1e-12));
+  for (std::size_t j = 0; j + 1 < coarse->size(); ++j) CHECK(coarse->lockedAfter(j) == (j == 58));
+
+  // In 0.05° steps the lock holds a sample, and it is the only one that fails.
+  const auto fine = sweep(*m, {0.0, 2.0 * kPi, 7201, 1.0, 0.0});
+  REQUIRE(fine.ok());
+  CHECK(fine->lockedBetween.empty());
+  REQUIRE(fine->notAssembled.size() == 1);
+  CHECK(radToDeg(fine->notAssembled[0].from) > 290.0);
+  CHECK(radToDeg(fine->notAssembled[0].to) < 295.0);
+  CHECK(fine->report[5833].culprit == PointId{6});  // E
 }
 
 TEST_CASE("sweep lists the singular samples and keeps their positions", "[sweep]") {
