@@ -8,6 +8,7 @@
 #include "kinematics/analysis/quick_return.h"
 #include "kinematics/model/examples.h"
 #include "kinematics/analysis/transmission.h"
+#include "kinematics/io/json.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/units.h"
 
@@ -33,15 +34,6 @@ struct Classification {
 std::string deg(double radians) { return formatFixed(k::radToDeg(radians), 2) + "°"; }
 std::string jsonDeg(double radians) { return formatJsonNumber(k::radToDeg(radians)); }
 std::string branchName(k::Branch b) { return b == k::Branch::Open ? "open" : "crossed"; }
-
-std::string jsonString(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
 
 template <typename T>
 std::string jsonOptional(const std::optional<T>& value, std::string (*format)(double)) {
@@ -88,7 +80,7 @@ void printJson(const Classification& c, std::ostream& out) {
   const auto& g = c.grashof;
   out << "{\n  \"lengths\": {\"frame\": " << formatJsonNumber(l.frame) << ", \"crank\": " << formatJsonNumber(l.crank)
       << ", \"coupler\": " << formatJsonNumber(l.coupler) << ", \"rocker\": " << formatJsonNumber(l.rocker)
-      << "},\n  \"length_unit\": " << jsonString(c.fourBar.lengthUnit) << ",\n  \"branch\": \""
+      << "},\n  \"length_unit\": " << k::io::jsonQuote(c.fourBar.lengthUnit) << ",\n  \"branch\": \""
       << branchName(c.fourBar.branch) << "\",\n";
   out << "  \"grashof\": {\"class\": \"" << k::toString(g.category) << "\", \"shortest\": \"" << k::toString(g.shortest)
       << "\", \"longest\": \"" << k::toString(g.longest) << "\", \"s_plus_l\": " << formatJsonNumber(g.sPlusL)
@@ -129,14 +121,14 @@ ExitCode classifyShaper(const k::MechanismExample& e, bool json, std::ostream& o
   const auto q = k::shaperQuickReturn(*e.shaper);
   const k::MobilityReport m = k::mobility(e.mechanism);
   if (json) {
-    out << "{\n  \"mechanism\": \"" << e.kind << "\",\n  \"mobility\": " << m.mobility;
+    out << "{\n  \"mechanism\": " << k::io::jsonQuote(e.kind) << ",\n  \"mobility\": " << m.mobility;
     if (q)
       out << ",\n  \"limit_crank_angles_deg\": [" << jsonDeg(q->firstLimitCrankAngle) << ", " << jsonDeg(q->secondLimitCrankAngle)
           << "],\n  \"time_ratio\": " << formatJsonNumber(q->timeRatio) << ",\n  \"slow_stroke_crank_arc_deg\": "
           << jsonDeg(q->slowStrokeCrankArc) << ",\n  \"quick_stroke_crank_arc_deg\": " << jsonDeg(q->quickStrokeCrankArc)
           << ",\n  \"rocker_swing_deg\": " << jsonDeg(q->rockerSwing) << ",\n  \"whitworth\": " << (q->whitworth ? "true" : "false")
           << ",\n  \"stroke\": " << formatJsonNumber(q->stroke);
-    out << ",\n  \"length_unit\": \"" << e.mechanism.lengthUnit << "\"\n}\n";
+    out << ",\n  \"length_unit\": " << k::io::jsonQuote(e.mechanism.lengthUnit) << "\n}\n";
     return ExitCode::Success;
   }
   out << e.kind << std::string(e.kind.size() < 21 ? 21 - e.kind.size() : 1, ' ') << e.description << "\n";

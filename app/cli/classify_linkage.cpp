@@ -6,6 +6,7 @@
 
 #include "kinematics/analysis/extrema.h"
 #include "kinematics/analysis/mobility.h"
+#include "kinematics/io/json.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
@@ -62,7 +63,7 @@ ExitCode classifyLinkage(const std::string& kind, const k::Mechanism& m, bool js
   const bool none = sweep->notAssembled.size() == 1 && sweep->notAssembled.front().from == 0.0 &&
                     sweep->notAssembled.front().to == spec.toAngle;
   if (json) {
-    out << "{\n  \"mechanism\": \"" << kind << "\",\n  \"mobility\": {\"links\": " << mob.links << ", \"full_joints\": "
+    out << "{\n  \"mechanism\": " << k::io::jsonQuote(kind) << ",\n  \"mobility\": {\"links\": " << mob.links << ", \"full_joints\": "
         << mob.fullJoints << ", \"half_joints\": " << mob.halfJoints << ", \"mobility\": " << mob.mobility
         << "},\n  \"not_assembled_crank_ranges_deg\": [";
     for (std::size_t i = 0; i < sweep->notAssembled.size(); ++i)
@@ -70,11 +71,11 @@ ExitCode classifyLinkage(const std::string& kind, const k::Mechanism& m, bool js
     out << "],\n  \"transmission_angles_deg\": [";
     for (std::size_t i = 0; i < transmission.size(); ++i) {
       const auto& t = transmission[i];
-      out << (i ? ", " : "") << "{\"point\": \"" << t.point << "\", \"min\": " << jsonDeg(t.extrema.minimum.value)
+      out << (i ? ", " : "") << "{\"point\": " << k::io::jsonQuote(t.point) << ", \"min\": " << jsonDeg(t.extrema.minimum.value)
           << ", \"min_at_crank\": " << jsonDeg(turn(t.extrema.minimum.inputAngle)) << ", \"max\": " << jsonDeg(t.extrema.maximum.value)
           << ", \"max_at_crank\": " << jsonDeg(turn(t.extrema.maximum.inputAngle)) << "}";
     }
-    out << "],\n  \"length_unit\": \"" << m.lengthUnit << "\"\n}\n";
+    out << "],\n  \"length_unit\": " << k::io::jsonQuote(m.lengthUnit) << "\n}\n";
   } else {
     out << "linkage              " << kind << ": " << m.points.size() << " points, " << m.links.size() << " moving links\n";
     out << "mobility (Gruebler)  M = 3(" << mob.links << " - 1) - 2*" << mob.fullJoints << " - " << mob.halfJoints

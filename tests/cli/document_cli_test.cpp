@@ -6,6 +6,7 @@
 #include "tests/support/locking_six_bar.h"
 
 #include "kinematics/io/document_json.h"
+#include "kinematics/io/json.h"
 #include "kinematics/model/mechanism_design.h"
 
 #include <catch2/catch.hpp>
@@ -88,6 +89,23 @@ TEST_CASE("analyze notes a lock between two samples", "[cli][document]") {
   CHECK_THAT(r.err, Catch::EndsWith("\nlinkwright-cli: note: the linkage locks between crank angles 290° and 295° (a dyad "
                                     "passes its assembly limit between these samples); from 295° on it is assembled "
                                     "afresh on the chosen branches, so points jump there\n"));
+}
+
+TEST_CASE("classify --json escapes the document's own names", "[cli][document][json]") {
+  // Point names come from the file: quotes, backslashes and control characters in them must
+  // still give valid JSON that reads back to the same strings.
+  kinematics::MechanismDesign d = kinematics::designFromExample(*kinematics::findMechanismExample("watt-ii"));
+  const std::string name = "C \"rocker\" \\ end\t1";
+  d.mechanism.points[3].name = name;
+  const TempDocument file("escape", kinematics::io::writeDocument(d));
+  const Run r = run({"classify", file.path(), "--json"});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const auto json = kinematics::io::parseJson(r.out);
+  INFO(r.out);
+  REQUIRE(json.ok());
+  CHECK((*json)["transmission_angles_deg"][0]["point"] == name);
+  CHECK(r.out.find('\t') == std::string::npos);
 }
 
 TEST_CASE("a version 1 document analyses as its four-bar", "[cli][document][migration]") {
