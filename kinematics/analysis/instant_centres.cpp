@@ -2,6 +2,7 @@
 
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/validate.h"
+#include "kinematics/model/vec2.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,9 +14,6 @@
 
 namespace linkwright::kinematics {
 namespace {
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
 
 // ±d name the same point at infinity; one representative keeps output and comparisons stable.
 Eigen::Vector2d canonicalDirection(const Eigen::Vector2d& d) {

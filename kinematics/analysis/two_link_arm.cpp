@@ -2,6 +2,7 @@
 
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/validate.h"
+#include "kinematics/model/vec2.h"
 #include "kinematics/solve/rrr_dyad.h"
 
 #include <algorithm>
@@ -10,14 +11,12 @@
 namespace linkwright::kinematics {
 namespace {
 
-Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
-
 // Solves [r1·e1⊥  r2·e2⊥] x = rhs; false when the arm is stretched or folded.
 bool solveJoints(double r1, const Eigen::Vector2d& e1, double r2, const Eigen::Vector2d& e2, const Eigen::Vector2d& rhs,
                  double& x1, double& x2) {
   const Eigen::Vector2d c1 = r1 * perp(e1);
   const Eigen::Vector2d c2 = r2 * perp(e2);
-  const double det = c1.x() * c2.y() - c1.y() * c2.x();
+  const double det = cross(c1, c2);
   if (!(std::abs(det) > kSingularSine * r1 * r2)) return false;
   x1 = (rhs.x() * c2.y() - c2.x() * rhs.y()) / det;
   x2 = (c1.x() * rhs.y() - rhs.x() * c1.y()) / det;

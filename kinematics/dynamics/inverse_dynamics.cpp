@@ -2,14 +2,12 @@
 
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/units.h"
+#include "kinematics/model/vec2.h"
 
 #include <algorithm>
 
 namespace linkwright::kinematics {
 namespace {
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
 
 // First row of a moving body's three equations (the ground has none).
 Eigen::Index rowOf(BodyId body) { return static_cast<Eigen::Index>(3 * (body.index - 1)); }

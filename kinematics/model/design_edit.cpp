@@ -1,16 +1,11 @@
 #include "kinematics/model/design_edit.h"
 
+#include "kinematics/model/vec2.h"
 #include "kinematics/solve/pose_solver.h"
 
 #include <cmath>
 
 namespace linkwright::kinematics {
-namespace {
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-} // namespace
-
 Result<DragOutcome> dragFourBar(const FourBarDesign& design, double crankAngle, FourBarHandle handle,
                                 const Eigen::Vector2d& target) {
   DragOutcome out{design, crankAngle, 0.0};

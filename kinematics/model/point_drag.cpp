@@ -1,15 +1,13 @@
 #include "kinematics/model/point_drag.h"
 
 #include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/vec2.h"
 #include "kinematics/solve/guide_line.h"
 
 #include <cmath>
 
 namespace linkwright::kinematics {
 namespace {
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
 
 struct Dragger {
   Mechanism& m;

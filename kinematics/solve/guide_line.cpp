@@ -1,14 +1,10 @@
 #include "kinematics/solve/guide_line.h"
 
+#include "kinematics/model/vec2.h"
+
 #include <cmath>
 
 namespace linkwright::kinematics {
-namespace {
-
-Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
-
-} // namespace
-
 GuideLine guideLineAt(const Mechanism& m, const Guide& guide, const Pose& pose) {
   if (!guide.link) return {guide.point, Eigen::Vector2d(std::cos(guide.angle), std::sin(guide.angle))};
   const Link& l = m.links[guide.link->index];

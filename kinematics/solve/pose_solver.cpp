@@ -4,6 +4,7 @@
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
+#include "kinematics/model/vec2.h"
 #include "kinematics/solve/guide_line.h"
 #include "kinematics/solve/newton_group.h"
 #include "kinematics/solve/rrp_dyad.h"
@@ -15,9 +16,6 @@
 
 namespace linkwright::kinematics {
 namespace {
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
 
 // One pose being solved: its driver state, where it goes, and how its solve went.
 struct Lane {

@@ -1,15 +1,11 @@
 #include "kinematics/solve/rrr_dyad.h"
 
+#include "kinematics/model/vec2.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace linkwright::kinematics {
-namespace {
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-} // namespace
-
 double rrrSine(const Eigen::Vector2d& c, const Eigen::Vector2d& p1, const Eigen::Vector2d& p2) {
   const Eigen::Vector2d r1 = c - p1;
   const Eigen::Vector2d r2 = c - p2;

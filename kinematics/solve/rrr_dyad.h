@@ -15,6 +15,8 @@
 //   The matrix is singular when C, P1, P2 are collinear (h = 0, transmission angle 0° or
 //   180°): the position exists, the rates do not. We flag that instead of dividing by ~0.
 
+#include "kinematics/model/vec2.h"
+
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -105,7 +107,7 @@ bool rrrSolveRates(const Eigen::Vector2d& r1, const Eigen::Vector2d& r2, const E
 /// into `inverse`; false (leaving it untouched) when |r1×r2| ≤ kSingularSine·scale, scale being
 /// |r1|·|r2| (an RRR dyad knows it without square roots: l1·l2).
 inline bool rrrInverseDeterminant(const Eigen::Vector2d& r1, const Eigen::Vector2d& r2, double scale, double& inverse) {
-  const double det = r1.x() * r2.y() - r1.y() * r2.x();
+  const double det = cross(r1, r2);
   if (!(std::abs(det) > kSingularSine * scale)) return false;
   inverse = 1.0 / det;
   return true;

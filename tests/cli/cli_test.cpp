@@ -9,6 +9,7 @@
 #include "kinematics/analysis/two_link_arm.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
+#include "kinematics/model/vec2.h"
 #include "kinematics/solve/pose_solver.h"
 #include "kinematics/solve/sweep.h"
 
@@ -411,8 +412,8 @@ TEST_CASE("arm gives both elbow solutions: up is the core's open branch, mirrore
     const Eigen::Vector2d tip(u.value(row, "tip_x_m"), u.value(row, "tip_y_m"));
     const Eigen::Vector2d eu(u.value(row, "elbow_x_m"), u.value(row, "elbow_y_m"));
     const Eigen::Vector2d ed(d.value(row, "elbow_x_m"), d.value(row, "elbow_y_m"));
-    CHECK(tip.x() * eu.y() - tip.y() * eu.x() > 0.0);  // up: counter-clockwise side of shoulder→tip
-    CHECK(tip.x() * ed.y() - tip.y() * ed.x() < 0.0);
+    CHECK(kinematics::cross(tip, eu) > 0.0);  // up: counter-clockwise side of shoulder→tip
+    CHECK(kinematics::cross(tip, ed) < 0.0);
     // Mirror images about the line shoulder→tip: reflecting one elbow gives the other.
     const Eigen::Vector2d axis = tip.normalized();
     CHECK((2.0 * eu.dot(axis) * axis - eu - ed).norm() < 1e-14);

@@ -10,6 +10,7 @@
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/slider_crank.h"
 #include "kinematics/model/units.h"
+#include "kinematics/model/vec2.h"
 #include "kinematics/solve/pose_solver.h"
 
 #include <catch2/catch.hpp>
@@ -19,8 +20,6 @@
 using namespace linkwright::kinematics;
 
 namespace {
-
-Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
 
 // Velocity of point p of a link turning at omega about the finite centre `centre`.
 Eigen::Vector2d spin(double omega, const InstantCentre& centre, const Eigen::Vector2d& p) {

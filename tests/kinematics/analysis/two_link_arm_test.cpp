@@ -4,6 +4,7 @@
 
 #include "kinematics/analysis/two_link_arm.h"
 #include "kinematics/model/units.h"
+#include "kinematics/model/vec2.h"
 
 #include <catch2/catch.hpp>
 
@@ -14,7 +15,6 @@ using namespace linkwright::kinematics;
 namespace {
 constexpr TwoLinkArm kSeedArm{0.3, 0.2};  // seed 004: r1 = OA = 0.3 m, r2 = AB = 0.2 m
 const LinePath kSeedPath{{0.3, 0.0}, {0.0, 0.3}, 2.0};
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 } // namespace
 
 TEST_CASE("both elbow solutions put the links at their lengths and the tip on target", "[analysis][arm]") {

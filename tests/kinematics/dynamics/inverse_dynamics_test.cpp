@@ -6,6 +6,7 @@
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/shaper.h"
 #include "kinematics/model/slider_crank.h"
+#include "kinematics/model/vec2.h"
 #include "kinematics/solve/pose_solver.h"
 
 #include "tests/kinematics/dynamics/dynamics_cases.h"
@@ -15,13 +16,6 @@
 #include <cmath>
 
 using namespace linkwright::kinematics;
-
-namespace {
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
-
-} // namespace
 
 TEST_CASE("inverse dynamics: massless four-bar with a load torque matches virtual work", "[dynamics]") {
   // Statics: T2·ω2 + TL·ω4 = 0, so T2 = −TL·ω4/ω2 (the velocity ratio from the kinematics).

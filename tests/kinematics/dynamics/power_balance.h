@@ -7,6 +7,7 @@
 #include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/dynamics/rigid_bodies.h"
 #include "kinematics/model/units.h"
+#include "kinematics/model/vec2.h"
 #include "kinematics/solve/guide_line.h"
 #include "kinematics/solve/pose.h"
 
@@ -30,10 +31,6 @@ struct PowerBalance {
 };
 
 namespace detail {
-
-inline Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
-
-inline double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // ω and α of the body a slider block turns with, read from the pose's links, or for a slotted
 // link from its pivot and tip (two points of one rigid body).
@@ -85,11 +82,11 @@ inline PowerBalance powerBalance(const kinematics::Mechanism& m, const kinematic
     const double length = e.norm();
     const Eigen::Vector2d u = e / length;
     const LinkFramePoint c = l.centre.value_or(LinkFramePoint{0.5 * length / s, 0.0});
-    const Eigen::Vector2d r = s * (c.along * u + c.across * detail::perp(u));
+    const Eigen::Vector2d r = s * (c.along * u + c.across * kinematics::perp(u));
     const double w = p.linkOmega[k.index];
     const double alpha = p.linkAlpha[k.index];
-    const Eigen::Vector2d v = s * p.velocity[link.first.index] + w * detail::perp(r);
-    const Eigen::Vector2d acc = s * p.acceleration[link.first.index] + alpha * detail::perp(r) - w * w * r;
+    const Eigen::Vector2d v = s * p.velocity[link.first.index] + w * kinematics::perp(r);
+    const Eigen::Vector2d acc = s * p.acceleration[link.first.index] + alpha * kinematics::perp(r) - w * w * r;
     addMass(l.mass, l.inertia.value_or(l.mass * length * length / 12.0), w, alpha, v, acc);
   }
   for (const SliderMass& sm : d.sliders) {

@@ -5,6 +5,7 @@
 #include "kinematics/model/attach_dyad.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
+#include "kinematics/model/vec2.h"
 #include "kinematics/solve/pose_solver.h"
 #include "kinematics/solve/sweep.h"
 
@@ -16,8 +17,6 @@ using namespace linkwright::kinematics;
 using linkwright::test::within;
 
 namespace {
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 Mechanism thesisFourBar() { return makeFourBar(linkwright::test::kThesis, Branch::Open).value(); }
 

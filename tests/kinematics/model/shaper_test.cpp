@@ -7,6 +7,7 @@
 #include "kinematics/analysis/quick_return.h"
 #include "kinematics/model/examples.h"
 #include "kinematics/model/units.h"
+#include "kinematics/model/vec2.h"
 #include "kinematics/solve/pose_solver.h"
 
 #include "tests/support/extrema.h"
@@ -17,12 +18,6 @@
 
 using namespace linkwright::kinematics;
 using linkwright::test::extremaOf;
-
-namespace {
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-} // namespace
 
 TEST_CASE("the shaper closes its loops and has mobility 1", "[model][shaper]") {
   const auto m = makeShaper(kSeedShaper);

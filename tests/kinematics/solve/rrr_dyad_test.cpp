@@ -2,6 +2,7 @@
 // the assembly limits with their relative tolerance, Heron's accuracy near a toggle, and the
 // 2×2 rate system with its singularity test.
 
+#include "kinematics/model/vec2.h"
 #include "kinematics/solve/rrr_dyad.h"
 
 #include "tests/support/approx.h"
@@ -16,7 +17,6 @@ using linkwright::test::near;
 using linkwright::test::within;
 
 namespace {
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 } // namespace
 
 TEST_CASE("rrrCandidates solves a 3-4-5 triangle on both branches", "[rrr_dyad]") {
