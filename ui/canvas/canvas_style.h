@@ -11,7 +11,6 @@ inline constexpr QColor kCrankColor{230, 85, 13};
 inline constexpr QColor kCouplerColor{49, 130, 189};
 inline constexpr QColor kRockerColor{49, 163, 84};
 inline constexpr QColor kCouplerPointColor{117, 107, 177};
-inline constexpr QColor kCouplerFillColor{49, 130, 189, 45};
 inline constexpr int kBodyFillAlpha = 45;
 inline constexpr QColor kFrameColor{90, 90, 90};
 inline constexpr QColor kPinOutlineColor{40, 40, 40};

@@ -59,17 +59,6 @@ int handleMergeKey(FourBarHandle handle) {
   return -1;
 }
 
-QString handleName(FourBarHandle handle) {
-  switch (handle) {
-  case FourBarHandle::O2: return QStringLiteral("O\u2082");
-  case FourBarHandle::O4: return QStringLiteral("O\u2084");
-  case FourBarHandle::B: return QStringLiteral("B");
-  case FourBarHandle::C: return QStringLiteral("C");
-  case FourBarHandle::CouplerPoint: return QStringLiteral("P");
-  }
-  return {};
-}
-
 QString handleHint(FourBarHandle handle) {
   switch (handle) {
   case FourBarHandle::O2: return tr("Drag O\u2082 along the frame line to change the frame length");

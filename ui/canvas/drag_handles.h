@@ -23,8 +23,6 @@ kinematics::PointId handlePoint(kinematics::FourBarHandle handle);
 std::optional<kinematics::FourBarHandle> fourBarHandleOn(kinematics::PointId point);
 /// The merge key (edit_design_command.h) of a four-bar handle's drags.
 int handleMergeKey(kinematics::FourBarHandle handle);
-/// The point's symbol: "O₂", "O₄", "B", "C", "P".
-QString handleName(kinematics::FourBarHandle handle);
 /// What dragging it does, for the status bar.
 QString handleHint(kinematics::FourBarHandle handle);
 
