@@ -1,6 +1,6 @@
 #include "app/gui_options.h"
 
-#include "kinematics/model/mechanism_design.h"
+#include "kinematics/design/mechanism_design.h"
 
 #include <QCommandLineParser>
 #include <QStringList>

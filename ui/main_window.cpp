@@ -21,8 +21,8 @@
 #include "ui/plots/quality_bar.h"
 #include "ui/settings.h"
 
+#include "kinematics/design/examples.h"
 #include "kinematics/io/csv_writer.h"
-#include "kinematics/model/examples.h"
 
 #include <QAction>
 #include <QActionGroup>

@@ -5,7 +5,7 @@
 // the document; it computes nothing itself. Each file and export action has a dialog-free
 // twin (openFile, saveTo, exportCsv, ...) that the menus call and the tests use.
 
-#include "kinematics/model/mechanism_design.h"
+#include "kinematics/design/mechanism_design.h"
 
 #include <QMainWindow>
 

@@ -6,12 +6,12 @@
 #include "app/cli/svg_plot.h"
 
 #include "kinematics/analysis/sampling_accuracy.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/constraint_form.h"
-#include "kinematics/model/examples.h"
-#include "kinematics/solve/pose_solver.h"
 #include "kinematics/model/units.h"
+#include "kinematics/solve/pose_solver.h"
 
 #include <algorithm>
 #include <chrono>

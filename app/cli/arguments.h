@@ -3,7 +3,7 @@
 // std::from_chars, so '.' is the decimal point whatever the locale. Every error names the
 // option and the reason.
 
-#include "kinematics/model/examples.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/result.h"
 

@@ -18,7 +18,7 @@
 // for bit. Unknown members are ignored (a newer minor writer may add some); a missing or
 // mistyped member is an error naming its path ("mechanism.lengths.coupler").
 
-#include "kinematics/model/mechanism_design.h"
+#include "kinematics/design/mechanism_design.h"
 #include "kinematics/model/result.h"
 
 #include <string>

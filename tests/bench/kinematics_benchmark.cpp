@@ -10,13 +10,13 @@
 // `allocs_per_sample` and `allocs_per_call` over its timed loop.
 
 #include "kinematics/dynamics/force_sweep.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/constraint_form.h"
-#include "kinematics/model/examples.h"
-#include "kinematics/model/sixbar.h"
-#include "kinematics/model/sixbar_newton.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/model/shaper.h"
+#include "kinematics/model/sixbar.h"
+#include "kinematics/model/sixbar_newton.h"
 #include "kinematics/model/slider_crank.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"

@@ -5,9 +5,9 @@
 #include "tests/cli/run_cli.h"
 #include "tests/support/locking_six_bar.h"
 
+#include "kinematics/design/mechanism_design.h"
 #include "kinematics/io/document_json.h"
 #include "kinematics/io/json.h"
-#include "kinematics/model/mechanism_design.h"
 
 #include <catch2/catch.hpp>
 

@@ -5,10 +5,10 @@
 #include "app/cli/cli.h"
 #include "tests/cli/run_cli.h"
 
+#include "kinematics/design/examples.h"
+#include "kinematics/design/mechanism_design.h"
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/document_json.h"
-#include "kinematics/model/examples.h"
-#include "kinematics/model/mechanism_design.h"
 #include "kinematics/model/units.h"
 
 #include <catch2/catch.hpp>

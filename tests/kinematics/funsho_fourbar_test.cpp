@@ -16,7 +16,7 @@
 // F_O4 = on the rocker from the ground = (XD, YD); T_drive = TM.
 
 #include "kinematics/dynamics/force_sweep.h"
-#include "kinematics/model/examples.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/sweep.h"

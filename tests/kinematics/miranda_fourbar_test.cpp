@@ -3,7 +3,7 @@
 // by refining between samples rather than reading them off frames.
 
 #include "kinematics/analysis/extrema.h"
-#include "kinematics/model/examples.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
 

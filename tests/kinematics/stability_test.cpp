@@ -14,7 +14,7 @@
 
 #include "kinematics/analysis/assembly_range.h"
 #include "kinematics/analysis/grashof.h"
-#include "kinematics/model/examples.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/slider_crank.h"
 #include "kinematics/model/units.h"

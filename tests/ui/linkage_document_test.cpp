@@ -13,7 +13,7 @@
 #include "ui/panels/analysis_panel.h"
 #include "ui/panels/dimensions_panel.h"
 
-#include "kinematics/model/point_drag.h"
+#include "kinematics/design/point_drag.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
 #include "tests/support/locking_six_bar.h"

@@ -11,7 +11,7 @@
 #include "ui/panels/lengths_panel.h"
 
 #include "app/cli/cli.h"
-#include "kinematics/model/mechanism_design.h"
+#include "kinematics/design/mechanism_design.h"
 
 #include "tests/ui/support/read_file.h"
 

@@ -18,10 +18,10 @@
 #include "ui/settings.h"
 
 #include "app/cli/cli.h"
+#include "kinematics/design/examples.h"
+#include "kinematics/design/mechanism_design.h"
 #include "kinematics/io/number_format.h"
-#include "kinematics/model/examples.h"
 #include "kinematics/model/fourbar.h"
-#include "kinematics/model/mechanism_design.h"
 #include "kinematics/model/units.h"
 
 #include "tests/ui/support/read_file.h"

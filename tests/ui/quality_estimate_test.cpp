@@ -8,8 +8,8 @@
 #include "ui/plots/quality_bar.h"
 
 #include "kinematics/analysis/sampling_accuracy.h"
-#include "kinematics/model/examples.h"
-#include "kinematics/model/mechanism_design.h"
+#include "kinematics/design/examples.h"
+#include "kinematics/design/mechanism_design.h"
 
 #include <catch2/catch.hpp>
 

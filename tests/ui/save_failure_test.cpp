@@ -10,7 +10,7 @@
 #include "ui/main_window.h"
 #include "ui/message_banner.h"
 
-#include "kinematics/model/mechanism_design.h"
+#include "kinematics/design/mechanism_design.h"
 #include "tests/support/file_size_limit.h"
 
 #include "tests/ui/support/read_file.h"

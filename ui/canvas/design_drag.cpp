@@ -3,8 +3,8 @@
 #include "ui/canvas/drag_handles.h"
 #include "ui/document/mechanism_document.h"
 
-#include "kinematics/model/design_edit.h"
-#include "kinematics/model/point_drag.h"
+#include "kinematics/design/design_edit.h"
+#include "kinematics/design/point_drag.h"
 #include "kinematics/solve/pose_solver.h"
 
 namespace linkwright::ui {

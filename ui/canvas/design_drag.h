@@ -5,7 +5,7 @@
 // shown at, so the dragged point lands under the pointer; if not, the solver's sentence says
 // why.
 
-#include "kinematics/model/mechanism_design.h"
+#include "kinematics/design/mechanism_design.h"
 #include "kinematics/model/result.h"
 #include "kinematics/solve/pose.h"
 

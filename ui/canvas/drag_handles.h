@@ -6,9 +6,9 @@
 
 #include "ui/canvas/mechanism_drawing.h"
 
-#include "kinematics/model/design_edit.h"
+#include "kinematics/design/design_edit.h"
+#include "kinematics/design/mechanism_design.h"
 #include "kinematics/model/ids.h"
-#include "kinematics/model/mechanism_design.h"
 
 #include <QString>
 

@@ -9,7 +9,7 @@
 
 #include "ui/canvas/mechanism_drawing.h"
 
-#include "kinematics/model/design_edit.h"
+#include "kinematics/design/design_edit.h"
 #include "kinematics/model/ids.h"
 
 #include <QGraphicsScene>

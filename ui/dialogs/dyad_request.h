@@ -5,9 +5,9 @@
 // Suggestions pre-fill a request from the current pose so that it assembles there: the
 // parents' positions come from the core's pose solver, the lengths from their distances.
 
+#include "kinematics/design/mechanism_design.h"
 #include "kinematics/model/attach_dyad.h"
 #include "kinematics/model/mechanism.h"
-#include "kinematics/model/mechanism_design.h"
 #include "kinematics/model/result.h"
 
 #include <Eigen/Core>

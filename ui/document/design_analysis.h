@@ -11,7 +11,7 @@
 #include "kinematics/analysis/mobility.h"
 #include "kinematics/analysis/quick_return.h"
 #include "kinematics/analysis/transmission.h"
-#include "kinematics/model/mechanism_design.h"
+#include "kinematics/design/mechanism_design.h"
 #include "kinematics/solve/sweep.h"
 
 #include <optional>

@@ -2,7 +2,7 @@
 // The drive and grid fields that every kind of design has (crank ω and α, the analysis
 // grid), read and changed without caring which kind it is.
 
-#include "kinematics/model/mechanism_design.h"
+#include "kinematics/design/mechanism_design.h"
 
 #include <variant>
 

@@ -2,7 +2,7 @@
 // The kinds of linkage File ▸ New offers, each started from a built-in example as its
 // template, and the names the window shows for a design's kind.
 
-#include "kinematics/model/mechanism_design.h"
+#include "kinematics/design/mechanism_design.h"
 
 #include <QString>
 

@@ -2,8 +2,8 @@
 // The masses and loads of either kind of design (FourBarDesign::dynamics,
 // MechanismDesign::dynamics), read and replaced without caring which kind it is.
 
+#include "kinematics/design/mechanism_design.h"
 #include "kinematics/dynamics/mass_properties.h"
-#include "kinematics/model/mechanism_design.h"
 
 #include <variant>
 

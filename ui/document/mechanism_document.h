@@ -12,7 +12,7 @@
 #include "ui/document/quality_estimate.h"
 #include "ui/document/sampling_quality.h"
 
-#include "kinematics/model/mechanism_design.h"
+#include "kinematics/design/mechanism_design.h"
 #include "kinematics/solve/pose.h"
 #include "kinematics/solve/sweep.h"
 

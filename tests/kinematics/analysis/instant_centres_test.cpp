@@ -6,7 +6,7 @@
 
 #include "kinematics/analysis/instant_centres.h"
 #include "kinematics/analysis/limit_positions.h"
-#include "kinematics/model/examples.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/slider_crank.h"
 #include "kinematics/model/units.h"

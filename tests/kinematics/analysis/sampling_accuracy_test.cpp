@@ -3,8 +3,8 @@
 // tolerance a request sets is the accuracy it gets.
 
 #include "kinematics/analysis/sampling_accuracy.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/constraint_form.h"
-#include "kinematics/model/examples.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
 

@@ -4,8 +4,8 @@
 // Stephenson II, a PRP yoke), with round-number properties chosen to exercise every term:
 // centres off the link line, α2 ≠ 0, gravity, torques and forces on links and sliders.
 
+#include "kinematics/design/examples.h"
 #include "kinematics/dynamics/mass_properties.h"
-#include "kinematics/model/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/shaper.h"
 #include "kinematics/model/sixbar.h"

@@ -2,7 +2,7 @@
 // linkage, virtual work over a turn, and how samples that are not Ok are reported.
 
 #include "kinematics/dynamics/force_sweep.h"
-#include "kinematics/model/examples.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/slider_crank.h"
 #include "kinematics/solve/sweep.h"

@@ -2,7 +2,7 @@
 // reactions against momentum, units, and a toggle position reported as Singular.
 
 #include "kinematics/dynamics/inverse_dynamics.h"
-#include "kinematics/model/examples.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/shaper.h"
 #include "kinematics/model/slider_crank.h"

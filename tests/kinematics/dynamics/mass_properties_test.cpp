@@ -1,7 +1,7 @@
 // Validation of masses and loads (mass_properties.h) and the length units forces accept.
 
 #include "kinematics/dynamics/mass_properties.h"
-#include "kinematics/model/examples.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/slider_crank.h"
 #include "kinematics/model/units.h"

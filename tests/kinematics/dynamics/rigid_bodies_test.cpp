@@ -2,7 +2,7 @@
 // body holds, the hub rule, the driven body and the Gruebler count of every kind of linkage.
 
 #include "kinematics/dynamics/rigid_bodies.h"
-#include "kinematics/model/examples.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/shaper.h"
 #include "kinematics/model/sixbar.h"

@@ -3,8 +3,8 @@
 // is refused with a message naming the member.
 
 #include "kinematics/io/document_json.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/attach_dyad.h"
-#include "kinematics/model/examples.h"
 
 #include <fstream>
 #include <limits>

@@ -3,9 +3,9 @@
 // still open, and bad values are refused naming the document member.
 
 #include "kinematics/io/document_json.h"
+#include "kinematics/design/examples.h"
+#include "kinematics/design/mechanism_design.h"
 #include "kinematics/io/dynamics_json.h"
-#include "kinematics/model/examples.h"
-#include "kinematics/model/mechanism_design.h"
 
 #include "tests/kinematics/dynamics/dynamics_cases.h"
 

@@ -2,12 +2,12 @@
 // blocks and the frame, values from the force sweep, empty cells where forces are undefined.
 
 #include "kinematics/io/csv_writer.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/io/force_columns.h"
 #include "kinematics/io/number_format.h"
-#include "kinematics/model/units.h"
-#include "kinematics/model/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/shaper.h"
+#include "kinematics/model/units.h"
 
 #include <catch2/catch.hpp>
 

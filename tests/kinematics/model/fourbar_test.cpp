@@ -1,7 +1,7 @@
-// Tests kinematics/model/fourbar.h (and the seed examples of model/examples.h): the built
+// Tests kinematics/model/fourbar.h (and the seed examples of design/examples.h): the built
 // mechanism's layout, ids and lengths, and the length checks with their messages.
 
-#include "kinematics/model/examples.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/units.h"

@@ -5,7 +5,7 @@
 #include "kinematics/analysis/extrema.h"
 #include "kinematics/analysis/mobility.h"
 #include "kinematics/analysis/quick_return.h"
-#include "kinematics/model/examples.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/vec2.h"
 #include "kinematics/solve/pose_solver.h"

@@ -2,7 +2,7 @@
 // the Watt/Stephenson topology it claims, and exact rates that agree with finite differences.
 
 #include "kinematics/analysis/mobility.h"
-#include "kinematics/model/examples.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/sixbar.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/sweep.h"

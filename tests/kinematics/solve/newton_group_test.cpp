@@ -5,7 +5,7 @@
 // checkMechanism gives for free points and distance constraints.
 
 #include "kinematics/model/constraint_form.h"
-#include "kinematics/model/examples.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/units.h"

@@ -2,7 +2,7 @@
 // the thesis's closed-form loop equations (with the α4 typo fixed), the request flags, the
 // branch convention and guide, points on the coupler, and the failure reports.
 
-#include "kinematics/model/examples.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/shaper.h"
 #include "kinematics/model/sixbar.h"

@@ -3,7 +3,7 @@
 // rest is neither computed nor stored, and that sweeping again into one result leaves nothing
 // of the previous sweep behind.
 
-#include "kinematics/model/examples.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/sixbar.h"
 #include "kinematics/model/sixbar_newton.h"

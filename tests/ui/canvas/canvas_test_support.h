@@ -7,7 +7,7 @@
 #include "ui/document/mechanism_document.h"
 #include "ui/geometry.h"
 
-#include "kinematics/model/mechanism_design.h"
+#include "kinematics/design/mechanism_design.h"
 #include "kinematics/model/fourbar.h"
 
 #include <catch2/catch.hpp>

@@ -11,7 +11,7 @@
 #include "ui/canvas/slotted_link_item.h"
 #include "ui/dialogs/dyad_request.h"
 
-#include "kinematics/model/point_drag.h"
+#include "kinematics/design/point_drag.h"
 #include "kinematics/solve/pose_solver.h"
 
 #include <QGraphicsPolygonItem>

@@ -5,7 +5,7 @@
 
 #include "ui/canvas/label_item.h"
 
-#include "kinematics/model/design_edit.h"
+#include "kinematics/design/design_edit.h"
 
 #include <QSignalSpy>
 

@@ -6,7 +6,7 @@
 #include "ui/document/mechanism_document.h"
 #include "ui/panels/mass_table.h"
 
-#include "kinematics/model/mechanism_design.h"
+#include "kinematics/design/mechanism_design.h"
 
 #include <QCheckBox>
 

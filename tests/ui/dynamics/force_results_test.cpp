@@ -5,9 +5,9 @@
 
 #include "ui/document/mechanism_document.h"
 
+#include "kinematics/design/mechanism_design.h"
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/dynamics/inverse_dynamics.h"
-#include "kinematics/model/mechanism_design.h"
 
 #include <QSignalSpy>
 

@@ -7,7 +7,7 @@
 #include "ui/panels/dynamics_panel.h"
 #include "ui/plots/force_plot_panel.h"
 
-#include "kinematics/model/mechanism_design.h"
+#include "kinematics/design/mechanism_design.h"
 #include "kinematics/model/units.h"
 
 #include <QApplication>

@@ -4,7 +4,7 @@
 
 #include "ui/plots/plot_quantity.h"
 
-#include "kinematics/model/design.h"
+#include "kinematics/design/design.h"
 #include "kinematics/solve/pose_solver.h"
 
 #include <vector>

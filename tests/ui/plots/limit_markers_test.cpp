@@ -2,7 +2,7 @@
 #include "ui/plots/limit_markers.h"
 
 #include "kinematics/analysis/limit_positions.h"
-#include "kinematics/model/design.h"
+#include "kinematics/design/design.h"
 #include "kinematics/model/units.h"
 
 #include <catch2/catch.hpp>

@@ -7,7 +7,7 @@
 #include "ui/plots/quantity_chart_view.h"
 #include "ui/plots/quantity_selector.h"
 
-#include "kinematics/model/mechanism_design.h"
+#include "kinematics/design/mechanism_design.h"
 #include "kinematics/model/units.h"
 
 #include <QCheckBox>

@@ -1,7 +1,7 @@
 // Tests ui/plots/series_data.h: which samples become points, and how gaps split the runs.
 #include "ui/plots/series_data.h"
 
-#include "kinematics/model/design.h"
+#include "kinematics/design/design.h"
 #include "kinematics/model/units.h"
 
 #include <catch2/catch.hpp>

@@ -5,9 +5,9 @@
 // keeps its parametric FourBarDesign (design.h: Grashof class, exact ranges, length drags);
 // Design holds either, so the GUI, the CLI and the document file handle both the same way.
 
+#include "kinematics/design/design.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/dynamics/mass_properties.h"
-#include "kinematics/model/design.h"
-#include "kinematics/model/examples.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/model/result.h"
 #include "kinematics/solve/sweep.h"

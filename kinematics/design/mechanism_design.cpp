@@ -1,4 +1,4 @@
-#include "kinematics/model/mechanism_design.h"
+#include "kinematics/design/mechanism_design.h"
 
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/units.h"

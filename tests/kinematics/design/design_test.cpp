@@ -1,6 +1,6 @@
 // FourBarDesign: validation names the field; the built mechanism and grid match the design.
 
-#include "kinematics/model/design.h"
+#include "kinematics/design/design.h"
 #include "kinematics/model/units.h"
 
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-#include "kinematics/model/point_drag.h"
+#include "kinematics/design/point_drag.h"
 
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/vec2.h"

@@ -4,7 +4,7 @@
 // kinematics of its own and the rule is tested here. The frame line stays the +x axis, so the
 // ground pivots move along it.
 
-#include "kinematics/model/design.h"
+#include "kinematics/design/design.h"
 
 #include <Eigen/Core>
 

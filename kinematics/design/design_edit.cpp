@@ -1,4 +1,4 @@
-#include "kinematics/model/design_edit.h"
+#include "kinematics/design/design_edit.h"
 
 #include "kinematics/model/vec2.h"
 #include "kinematics/solve/pose_solver.h"

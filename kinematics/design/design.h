@@ -4,8 +4,8 @@
 // document file stores one, and buildMechanism / designSweepSpec turn it into solver input,
 // so the GUI, the CLI and the files all mean the same linkage.
 
+#include "kinematics/design/examples.h"
 #include "kinematics/dynamics/mass_properties.h"
-#include "kinematics/model/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/result.h"
 #include "kinematics/solve/sweep.h"

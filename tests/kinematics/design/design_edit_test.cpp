@@ -1,7 +1,7 @@
 // Dragging a four-bar's points: each handle changes exactly the lengths it should, the
 // dragged point ends where it was dropped, and impossible drags are refused with a reason.
 
-#include "kinematics/model/design_edit.h"
+#include "kinematics/design/design_edit.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
 

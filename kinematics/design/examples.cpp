@@ -1,4 +1,4 @@
-#include "kinematics/model/examples.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/sixbar_newton.h"
 
 #include "kinematics/model/units.h"

@@ -1,4 +1,4 @@
-#include "kinematics/model/design.h"
+#include "kinematics/design/design.h"
 
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
