@@ -120,6 +120,20 @@ TEST_CASE("a shaper shows its quick return; a Whitworth too", "[ui][linkage][ana
   CHECK(panel.timeRatioText().isEmpty());
 }
 
+TEST_CASE("a four-bar stored as a general linkage still shows its Grashof class and limits", "[ui][linkage][analysis]") {
+  // What the panel shows depends on what the linkage is, not on how the design was stored.
+  k::MechanismDesign d;
+  d.mechanism = *k::makeFourBar({20.0, 25.0, 70.0, 45.0}, k::Branch::Open);  // 20 + 70 > 25 + 45
+  MechanismDocument doc;
+  ui::AnalysisPanel panel(&doc);
+  doc.reset(d);
+  REQUIRE(doc.fourBar() == nullptr);
+  REQUIRE(doc.analysis().grashof.has_value());
+  CHECK(doc.analysis().grashof->category == k::GrashofClass::TripleRocker);
+  CHECK(panel.grashofText().contains("Triple-rocker"));
+  CHECK(doc.analysis().inputRange == k::fourBarInputRange({20.0, 25.0, 70.0, 45.0}));
+}
+
 TEST_CASE("a drag of any point goes through dragPoint, is one undo step, and undo restores it exactly",
           "[ui][linkage][drag]") {
   for (const std::string name : {"ls3-engine", "watt-ii", "shaper"}) {

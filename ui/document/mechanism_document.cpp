@@ -145,7 +145,7 @@ void MechanismDocument::rebuild() {
   const k::FourBarDesign* fb = fourBar();
   if (fb == nullptr || !k::fourBarInputRange(fb->lengths).fullRotation)
     grid = k::sweep(m_mechanism, k::designSweepSpec(m_design), {false, false, m_request.newton}).value();
-  m_analysis = analyseDesign(m_design, m_mechanism, grid);
+  m_analysis = k::analyseDesign(m_mechanism, grid);
   m_crankAngle = m_analysis.inputRange.clamp(m_crankAngle);
   solvePoseNow();
   scheduleEstimate();

@@ -8,10 +8,10 @@
 // does; the displayed sweep spans the same crank angles with as many samples as the plots
 // have pixels times the sampling quality, and computes only the quantities they show.
 
-#include "ui/document/design_analysis.h"
 #include "ui/document/quality_estimate.h"
 #include "ui/document/sampling_quality.h"
 
+#include "kinematics/design/design_analysis.h"
 #include "kinematics/design/mechanism_design.h"
 #include "kinematics/solve/pose.h"
 #include "kinematics/solve/sweep.h"
@@ -52,7 +52,7 @@ public:
   /// The solver mechanism built from design().
   const kinematics::Mechanism& mechanism() const { return m_mechanism; }
   /// Mobility, ranges and limits; crank range and gaps on the design's grid.
-  const DesignAnalysis& analysis() const { return m_analysis; }
+  const kinematics::DesignAnalysis& analysis() const { return m_analysis; }
   /// The displayed cycle: the design's crank angles at displaySpec()'s samples, computing what
   /// request() asks for. The plots and the canvas's paths read it.
   const kinematics::SweepResult& sweep() const { return m_sweep; }
@@ -134,7 +134,7 @@ private:
 
   kinematics::Design m_design;
   kinematics::Mechanism m_mechanism;
-  DesignAnalysis m_analysis;
+  kinematics::DesignAnalysis m_analysis;
   kinematics::SweepResult m_sweep;
   kinematics::SweepSpec m_displaySpec;
   double m_sweepMs = 0.0;

@@ -89,19 +89,20 @@ QString AnalysisPanel::notAssembledText() const {
 QString AnalysisPanel::mobilityText() const { return m_mobility->text(); }
 
 void AnalysisPanel::refreshDesign() {
-  const DesignAnalysis& a = m_document->analysis();
+  const k::DesignAnalysis& a = m_document->analysis();
   const k::MobilityReport& m = a.mobility;
   m_mobility->setText(tr("M = 3(%1 − 1) − 2·%2 − %3 = %4").arg(m.links).arg(m.fullJoints).arg(m.halfJoints).arg(m.mobility));
   if (a.inputRange.fullRotation) m_range->setText(tr("full turn"));
   else m_range->setText(rangesText(a.inputRange.ranges) + tr(" (rocks between the ends)"));
-  const bool fourBar = m_document->fourBar() != nullptr;
+  // A four-bar's rows for any linkage that is one, however it was built or stored.
+  const bool fourBar = a.grashof.has_value();
   for (QLabel* row : {m_sums, m_transmissionRange, m_limits}) m_form->setRowVisible(row, fourBar);
   if (fourBar) refreshFourBar();
   else refreshLinkage();
 }
 
 void AnalysisPanel::refreshFourBar() {
-  const DesignAnalysis& a = m_document->analysis();
+  const k::DesignAnalysis& a = m_document->analysis();
   const QString unit = QString::fromStdString(m_document->lengthUnit());
   const k::GrashofReport& g = *a.grashof;
   // Green for a Grashof linkage whose crank turns, amber for the rest.
@@ -127,7 +128,7 @@ void AnalysisPanel::refreshFourBar() {
 }
 
 void AnalysisPanel::refreshLinkage() {
-  const DesignAnalysis& a = m_document->analysis();
+  const k::DesignAnalysis& a = m_document->analysis();
   const QString unit = QString::fromStdString(m_document->lengthUnit());
   m_badge->setText(badge("#3b5b92", kindDisplayName(m_document->design()),
                          tr("%1 points, %2 moving links").arg(m_document->mechanism().points.size()).arg(m_document->mechanism().links.size())));

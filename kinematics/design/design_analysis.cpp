@@ -1,0 +1,73 @@
+#include "kinematics/design/design_analysis.h"
+
+#include "kinematics/model/recognise.h"
+#include "kinematics/model/units.h"
+
+#include <algorithm>
+
+namespace linkwright::kinematics {
+namespace {
+
+// The four-bar analyses measure the crank from the frame line; the mechanism's input angle
+// differs by the frame's direction and the crank's phase (zero for makeFourBar's four-bars,
+// which are then left bit for bit as the closed forms give them).
+void toInputAngles(const FourBarStructure& s, DesignAnalysis& a) {
+  const double shift = s.inputAngle(0.0);
+  if (shift == 0.0) return;
+  for (AngleRange& r : a.inputRange.ranges) {
+    r.from += shift;
+    r.to += shift;
+  }
+  if (a.transmission) {
+    a.transmission->minimumAtCrank += shift;
+    a.transmission->maximumAtCrank += shift;
+  }
+  for (LimitPosition& p : a.limits.positions) {
+    p.crankAngle = wrapAngle(p.crankAngle + shift);
+    if (p.crankAngle < 0.0) p.crankAngle += 2.0 * kPi;
+    p.rockerAngle = wrapAngle(p.rockerAngle + s.frameAngle);
+  }
+  std::sort(a.limits.positions.begin(), a.limits.positions.end(),
+            [](const LimitPosition& x, const LimitPosition& y) { return x.crankAngle < y.crankAngle; });
+}
+
+} // namespace
+
+InputRange assembledRange(const SweepResult& sweep) {
+  InputRange range;
+  std::size_t j = 0;
+  while (j < sweep.size()) {
+    if (!sweep.assembled(j)) {
+      ++j;
+      continue;
+    }
+    const std::size_t first = j;
+    while (j + 1 < sweep.size() && sweep.assembled(j + 1) && !sweep.lockedAfter(j)) ++j;
+    range.ranges.push_back({sweep.inputAngle[first], sweep.inputAngle[j]});
+    ++j;
+  }
+  const bool everySample = range.ranges.size() == 1 && sweep.notAssembled.empty();
+  const double span = sweep.size() > 1 ? sweep.inputAngle.back() - sweep.inputAngle.front() : 0.0;
+  range.fullRotation = everySample && span >= 2.0 * kPi * (1.0 - 1e-12);
+  if (range.fullRotation) range.ranges.clear();
+  return range;
+}
+
+DesignAnalysis analyseDesign(const Mechanism& mechanism, const SweepResult& gridSweep) {
+  DesignAnalysis a;
+  a.mobility = mobility(mechanism);
+  a.notAssembled = gridSweep.notAssembled;
+  if (const auto fourBar = asFourBar(mechanism)) {
+    a.grashof = classifyGrashof(fourBar->lengths);
+    a.inputRange = fourBarInputRange(fourBar->lengths);
+    a.transmission = fourBarTransmissionRange(fourBar->lengths);
+    a.limits = fourBarLimitPositions(fourBar->lengths, fourBar->branch);
+    toInputAngles(*fourBar, a);
+    return a;
+  }
+  a.inputRange = assembledRange(gridSweep);
+  if (const auto q = asQuickReturn(mechanism)) a.quickReturn = shaperQuickReturn(q->geometry, q->ramBranch);
+  return a;
+}
+
+} // namespace linkwright::kinematics

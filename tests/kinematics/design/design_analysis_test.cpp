@@ -1,0 +1,104 @@
+// Tests kinematics/design/design_analysis.h: the analysis depends on what a linkage is, not on
+// how it was stored. A four-bar drawn as a general linkage, in any position, gets the closed
+// forms in input angles (checked against the solver: the range assembles and nothing outside
+// it does; at each limit the crank and coupler are in line); a quick return is recognised
+// without its kind; a lock between samples ends an assembled range.
+
+#include "kinematics/analysis/assembly_range.h"
+#include "kinematics/design/design_analysis.h"
+#include "kinematics/design/examples.h"
+#include "kinematics/model/fourbar.h"
+#include "kinematics/model/shaper.h"
+#include "kinematics/model/units.h"
+#include "kinematics/model/vec2.h"
+#include "kinematics/solve/pose_solver.h"
+
+#include "tests/support/approx.h"
+#include "tests/support/locking_six_bar.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace linkwright::kinematics;
+using linkwright::test::within;
+
+namespace {
+
+// A triple rocker (60/50/35/40: the crank rocks within ±85.46° of the frame line) drawn with
+// its frame at `frameDeg` and its crank's phase `phaseDeg`, C's parents as (O4, B).
+Mechanism tripleRocker(double frameDeg, double phaseDeg) {
+  const FourBarLengths l{60.0, 50.0, 35.0, 40.0};
+  const Eigen::Vector2d o2(-30.0, 12.0);
+  const double f = degToRad(frameDeg);
+  Mechanism m;
+  m.points = {{"O2", GroundPoint{o2}},
+              {"O4", GroundPoint{o2 + l.frame * Eigen::Vector2d(std::cos(f), std::sin(f))}},
+              {"B", CrankPoint{PointId{0}, l.crank, degToRad(phaseDeg)}},
+              {"C", RrrPoint{PointId{1}, l.rocker, PointId{2}, l.coupler, Branch::Crossed}}};
+  m.links = {{"crank", PointId{0}, PointId{2}}, {"rocker", PointId{1}, PointId{3}}, {"coupler", PointId{2}, PointId{3}}};
+  return m;
+}
+
+} // namespace
+
+TEST_CASE("a four-bar analyses the same whether built as one or not", "[design][analysis]") {
+  const Mechanism m = *makeFourBar(linkwright::test::kThesis, Branch::Crossed);
+  const DesignAnalysis a = analyseDesign(m, SweepResult{});
+  REQUIRE(a.grashof.has_value());
+  CHECK(*a.grashof == classifyGrashof(linkwright::test::kThesis));
+  CHECK(a.inputRange == fourBarInputRange(linkwright::test::kThesis));
+  CHECK(a.transmission == fourBarTransmissionRange(linkwright::test::kThesis));
+  CHECK(a.limits == fourBarLimitPositions(linkwright::test::kThesis, Branch::Crossed));
+  CHECK_FALSE(a.quickReturn.has_value());
+}
+
+TEST_CASE("a four-bar in any position gets its exact range and limits in input angles", "[design][analysis]") {
+  for (const double frameDeg : {0.0, 30.0, -135.0})
+    for (const double phaseDeg : {0.0, 10.0}) {
+      CAPTURE(frameDeg, phaseDeg);
+      const Mechanism m = tripleRocker(frameDeg, phaseDeg);
+      const DesignAnalysis a = analyseDesign(m, SweepResult{});
+      REQUIRE(a.grashof.has_value());
+      CHECK_FALSE(a.inputRange.fullRotation);
+      REQUIRE(a.inputRange.ranges.size() == 1);
+      const AngleRange r = a.inputRange.ranges[0];
+      // Just inside the range the solver assembles; just outside it does not.
+      for (const double edge : {r.from, r.to}) {
+        const double inward = edge == r.from ? 1.0 : -1.0;
+        CHECK(solvePose(m, {edge + inward * 1e-6, 0.0, 0.0}).ok());
+        CHECK_FALSE(solvePose(m, {edge - inward * 1e-6, 0.0, 0.0}).ok());
+      }
+      // At each limit position the coupler is in line with the crank, the rocker at the angle given.
+      REQUIRE_FALSE(a.limits.positions.empty());
+      for (const LimitPosition& p : a.limits.positions) {
+        const auto pose = solvePose(m, {p.crankAngle, 0.0, 0.0}, {false, false});
+        REQUIRE(pose.ok());
+        const Eigen::Vector2d crank = pose->position[2] - pose->position[0];
+        const Eigen::Vector2d coupler = pose->position[3] - pose->position[2];
+        CHECK(std::abs(cross(crank.normalized(), coupler.normalized())) == within(0.0, 1e-6));
+        const Eigen::Vector2d rocker = pose->position[3] - pose->position[1];
+        CHECK(wrapAngle(std::atan2(rocker.y(), rocker.x()) - p.rockerAngle) == within(0.0, 1e-9));
+      }
+    }
+}
+
+TEST_CASE("a quick return is recognised from its structure, whatever its kind says", "[design][analysis]") {
+  for (const ShaperGeometry& g : {kSeedShaper, kWhitworth}) {
+    const DesignAnalysis a = analyseDesign(*makeShaper(g), SweepResult{});
+    REQUIRE(a.quickReturn.has_value());
+    CHECK(*a.quickReturn == *shaperQuickReturn(g, Branch::Open));
+    CHECK_FALSE(a.grashof.has_value());
+  }
+}
+
+TEST_CASE("assembledRange ends a range at a lock between two samples", "[design][analysis]") {
+  const Mechanism m = *makeSixBar(linkwright::test::lockingSixBar());
+  const auto sweep = linkwright::kinematics::sweep(m, {0.0, 2.0 * kPi, 73, 1.0, 0.0}, {false, false});
+  REQUIRE(sweep.ok());
+  const InputRange r = assembledRange(*sweep);
+  CHECK_FALSE(r.fullRotation);
+  REQUIRE(r.ranges.size() == 2);
+  CHECK(radToDeg(r.ranges[0].to) == within(290.0, 1e-12));
+  CHECK(radToDeg(r.ranges[1].from) == within(295.0, 1e-12));
+}
