@@ -5,6 +5,7 @@
 #include "ui/document/edit_design_command.h"
 #include "ui/document/mechanism_document.h"
 
+#include "kinematics/design/mechanism_design.h"
 #include "kinematics/model/units.h"
 
 #include <catch2/catch.hpp>
@@ -49,6 +50,27 @@ TEST_CASE("an edit changes the design, the analysis and the sweep; undo restores
   CHECK(doc.analysis().grashof->category == kinematics::GrashofClass::CrankRocker);
   doc.undoStack()->redo();
   CHECK(*doc.fourBar() == after);
+}
+
+TEST_CASE("an edit sweeps each grid once", "[ui][document]") {
+  // A linkage's edit needs its design grid (validation, then the analysis) and the display
+  // grid; the validation's sweep serves the analysis. A fully rotating four-bar has a closed
+  // form for both, so only the display is swept.
+  MechanismDocument doc;
+  doc.reset(*kinematics::designForExample("watt-ii"));
+  auto linkage = std::get<kinematics::MechanismDesign>(doc.design());
+  std::get<kinematics::RrrPoint>(linkage.mechanism.points.back().definition).firstLength += 1.0;
+  long before = doc.sweepsRun();
+  REQUIRE_FALSE(doc.edit(linkage, "length").has_value());
+  CHECK(doc.sweepsRun() - before == 2);
+  before = doc.sweepsRun();
+  doc.undoStack()->undo();  // nothing validated it: its grid is swept again, once
+  CHECK(doc.sweepsRun() - before == 2);
+
+  doc.reset(kinematics::FourBarDesign{});
+  before = doc.sweepsRun();
+  REQUIRE_FALSE(doc.edit(withCrank(20.0), "crank").has_value());
+  CHECK(doc.sweepsRun() - before == 1);
 }
 
 TEST_CASE("an edit that can never be assembled is refused and changes nothing", "[ui][document][errors]") {
@@ -99,7 +121,7 @@ TEST_CASE("consecutive edits with one merge key are one undo step", "[ui][docume
   for (double crank = 24.0; crank > 20.0; crank -= 0.5) {
     kinematics::FourBarDesign d = *doc.fourBar();
     d.lengths.crank = crank;
-    REQUIRE_FALSE(doc.edit(d, "drag", ui::merge::kDragB).has_value());
+    REQUIRE_FALSE(doc.edit(d, "drag", ui::MergeKey{ui::ContinuousEdit::DragPoint, kinematics::fourbar::kB.index}).has_value());
   }
   CHECK(doc.undoStack()->count() == 1);
   doc.undoStack()->undo();
@@ -195,7 +217,7 @@ TEST_CASE("an edit that moves the crank restores the crank angle on undo", "[ui]
   doc.setCrankAngle(0.5);
   kinematics::FourBarDesign d = *doc.fourBar();
   d.lengths.crank = 22.0;
-  REQUIRE_FALSE(doc.edit(d, "move B", ui::merge::kDragB, 1.25).has_value());
+  REQUIRE_FALSE(doc.edit(d, "move B", ui::MergeKey{ui::ContinuousEdit::DragPoint, kinematics::fourbar::kB.index}, 1.25).has_value());
   CHECK(doc.crankAngle() == 1.25);
   doc.undoStack()->undo();
   CHECK(doc.crankAngle() == 0.5);

@@ -147,7 +147,7 @@ TEST_CASE("a drag of any point goes through dragPoint, is one undo step, and und
     for (const double dy : {1.0, 2.0, 3.0}) {
       const auto dragged = ui::dragDesign(doc, last, at + Eigen::Vector2d(2.0, dy));
       REQUIRE(dragged);
-      REQUIRE_FALSE(doc.edit(dragged->design, "drag", 7000).has_value());
+      REQUIRE_FALSE(doc.edit(dragged->design, "drag", ui::MergeKey{ui::ContinuousEdit::DragPoint, last.index}).has_value());
     }
     CHECK(doc.design() != before);
     CHECK(doc.undoStack()->count() == 1);

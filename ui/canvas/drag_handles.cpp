@@ -48,17 +48,6 @@ std::optional<FourBarHandle> fourBarHandleOn(k::PointId point) {
   return std::nullopt;
 }
 
-int handleMergeKey(FourBarHandle handle) {
-  switch (handle) {
-  case FourBarHandle::O2: return merge::kDragO2;
-  case FourBarHandle::O4: return merge::kDragO4;
-  case FourBarHandle::B: return merge::kDragB;
-  case FourBarHandle::C: return merge::kDragC;
-  case FourBarHandle::CouplerPoint: return merge::kDragCouplerPoint;
-  }
-  return -1;
-}
-
 QString handleHint(FourBarHandle handle) {
   switch (handle) {
   case FourBarHandle::O2: return tr("Drag O\u2082 along the frame line to change the frame length");
@@ -81,12 +70,6 @@ std::vector<k::PointId> draggablePoints(const DrawingPlan& plan) {
   for (std::size_t i = n; i-- > 0;)
     if (plan.draggable[i] && plan.ground[i]) points.push_back({i});
   return points;
-}
-
-int dragMergeKey(const k::Design& design, k::PointId point) {
-  if (std::holds_alternative<k::FourBarDesign>(design))
-    if (const auto handle = fourBarHandleOn(point)) return handleMergeKey(*handle);
-  return merge::kDragPoint + static_cast<int>(point.index);
 }
 
 QString dragPointName(const k::Mechanism& mechanism, k::PointId point) {

@@ -21,15 +21,11 @@ namespace linkwright::ui {
 kinematics::PointId handlePoint(kinematics::FourBarHandle handle);
 /// The four-bar handle on `point` of a four-bar's mechanism.
 std::optional<kinematics::FourBarHandle> fourBarHandleOn(kinematics::PointId point);
-/// The merge key (edit_design_command.h) of a four-bar handle's drags.
-int handleMergeKey(kinematics::FourBarHandle handle);
 /// What dragging it does, for the status bar.
 QString handleHint(kinematics::FourBarHandle handle);
 
 /// The points with a handle, in picking order.
 std::vector<kinematics::PointId> draggablePoints(const DrawingPlan& plan);
-/// The merge key of drags of `point` in `design`.
-int dragMergeKey(const kinematics::Design& design, kinematics::PointId point);
 /// The point's name as drawn ("O₂", "E").
 QString dragPointName(const kinematics::Mechanism& mechanism, kinematics::PointId point);
 /// What dragging `point` does, for the status bar.

@@ -29,7 +29,6 @@ constexpr double kSceneRectSizes = 1000.0;
 constexpr double kMaxSceneRectPixels = 1.0e9;
 constexpr double kFitMarginPx = 40.0;      // room for pins, ground supports and labels
 constexpr double kWheelStep = 1.2;         // zoom per wheel notch
-constexpr int kDragsPerKey = 1000;         // merge key = handle key · 1000 + drag number
 
 } // namespace
 
@@ -300,7 +299,7 @@ void LinkageView::dragTo(const QPointF& viewportPos) {
     refuse(QString::fromStdString(outcome.error().message), viewportPos);
     return;
   }
-  const int mergeKey = dragMergeKey(m_document->design(), m_dragPoint) * kDragsPerKey + m_dragCount % kDragsPerKey;
+  const MergeKey mergeKey{ContinuousEdit::DragPoint, m_dragPoint.index, m_dragCount};
   const QString name = dragPointName(m_document->mechanism(), m_dragPoint);
   if (const auto why = m_document->edit(outcome->design, tr("Move %1").arg(name), mergeKey, outcome->crankAngle)) {
     refuse(*why, viewportPos);

@@ -5,7 +5,7 @@
 namespace linkwright::ui {
 
 EditDesignCommand::EditDesignCommand(MechanismDocument* document, DesignState before, DesignState after,
-                                     const QString& text, int mergeKey)
+                                     const QString& text, std::optional<MergeKey> mergeKey)
     : QUndoCommand(text), m_document(document), m_before(std::move(before)), m_after(std::move(after)),
       m_mergeKey(mergeKey) {}
 
@@ -15,7 +15,7 @@ void EditDesignCommand::redo() { m_document->applyDesign(m_after.design, m_after
 
 bool EditDesignCommand::mergeWith(const QUndoCommand* other) {
   const auto* next = dynamic_cast<const EditDesignCommand*>(other);
-  if (next == nullptr || m_mergeKey < 0 || next->m_mergeKey != m_mergeKey) return false;
+  if (next == nullptr || !m_mergeKey || next->m_mergeKey != m_mergeKey) return false;
   m_after = next->m_after;
   return true;
 }

@@ -7,9 +7,25 @@
 
 #include <QUndoCommand>
 
+#include <cstddef>
+#include <optional>
+
 namespace linkwright::ui {
 
 class MechanismDocument;
+
+/// What a continuous edit changes, for merging its steps.
+enum class ContinuousEdit { DragPoint, Length, CouplerPoint, Speed, Acceleration };
+
+/// Consecutive edits with equal keys (the moves of one drag, the steps of one slider) merge
+/// into one undo step. `serial` tells one drag or press of the same thing from the next, so
+/// two drags of a point stay two undo steps.
+struct MergeKey {
+  ContinuousEdit edit = ContinuousEdit::DragPoint;
+  std::size_t item = 0;  ///< the point dragged, or the length (0 frame … 3 rocker) changed
+  int serial = 0;
+  bool operator==(const MergeKey&) const = default;
+};
 
 /// A design (four-bar or any linkage) and the crank angle (rad) it is shown at.
 struct DesignState {
@@ -19,39 +35,23 @@ struct DesignState {
 
 class EditDesignCommand : public QUndoCommand {
 public:
-  /// `mergeKey` < 0: never merges.
-  EditDesignCommand(MechanismDocument* document, DesignState before, DesignState after, const QString& text, int mergeKey);
+  /// Without a merge key the edit never merges.
+  EditDesignCommand(MechanismDocument* document, DesignState before, DesignState after, const QString& text,
+                    std::optional<MergeKey> mergeKey);
 
   void undo() override;
   void redo() override;
-  int id() const override { return m_mergeKey; }
+  /// One id for every mergeable edit (QUndoStack only offers equal ids to mergeWith, which
+  /// compares the keys); -1: never merges.
+  int id() const override { return m_mergeKey ? 0 : -1; }
   bool mergeWith(const QUndoCommand* other) override;
 
 private:
   MechanismDocument* m_document;
   DesignState m_before;
   DesignState m_after;
-  int m_mergeKey;
+  std::optional<MergeKey> m_mergeKey;
 };
 
-/// Merge keys of the continuous edits; each drag handle and slider has its own. Callers
-/// multiply a key by 1000 and add a serial number, so two drags stay two undo steps.
-namespace merge {
-inline constexpr int kDragO2 = 1;
-inline constexpr int kDragO4 = 2;
-inline constexpr int kDragB = 3;
-inline constexpr int kDragC = 4;
-inline constexpr int kDragCouplerPoint = 5;
-inline constexpr int kFrameLength = 10;
-inline constexpr int kCrankLength = 11;
-inline constexpr int kCouplerLength = 12;
-inline constexpr int kRockerLength = 13;
-inline constexpr int kSpeed = 20;
-inline constexpr int kAlpha = 21;
-/// A dimension field of any linkage: kDimension + field number (dimensions panel).
-inline constexpr int kDimension = 100;
-/// A drag of point i of any linkage: kDragPoint + i.
-inline constexpr int kDragPoint = 1000;
-} // namespace merge
 
 } // namespace linkwright::ui

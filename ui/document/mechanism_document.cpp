@@ -5,27 +5,13 @@
 
 #include "kinematics/solve/pose_solver.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
 namespace linkwright::ui {
 
 namespace k = kinematics;
-
-namespace {
-
-// Any linkage other than a four-bar has no closed-form range: it must assemble at one sample
-// of its grid at least, and the first failure says why it does not.
-std::optional<QString> refuseUnassemblable(const k::MechanismDesign& design) {
-  const auto swept = k::sweep(design.mechanism, k::designSweepSpec(design), {false, false});
-  if (!swept) return QString::fromStdString(swept.error().message);
-  for (std::size_t j = 0; j < swept->size(); ++j)
-    if (swept->assembled(j)) return std::nullopt;
-  const QString why = swept->firstFailure ? QString::fromStdString(*swept->firstFailure) : QString();
-  return MechanismDocument::tr("This linkage cannot be assembled at any crank angle: %1.").arg(why);
-}
-
-} // namespace
 
 MechanismDocument::MechanismDocument(QObject* parent) : QObject(parent) {
   m_request.newton.tolerance = qualityPreset(m_quality).newtonTolerance;
@@ -45,10 +31,33 @@ std::optional<QString> MechanismDocument::validate(const k::Design& design) cons
                 "reach between the crank tip and the rocker pivot.");
     return std::nullopt;
   }
-  return refuseUnassemblable(std::get<k::MechanismDesign>(design));
+  // Any linkage other than a four-bar has no closed-form range: it must assemble at one sample
+  // of its grid at least, and the first failure says why it does not.
+  const auto& linkage = std::get<k::MechanismDesign>(design);
+  k::SweepResult grid = sweepGrid(linkage.mechanism, k::designSweepSpec(linkage));
+  const bool assembles = std::any_of(grid.report.begin(), grid.report.end(),
+                                     [](const k::PoseReport& r) { return r.status != k::PoseStatus::NotAssemblable; });
+  const std::optional<std::string> why = grid.firstFailure;
+  m_validatedGrid = ValidatedGrid{design, m_request, std::move(grid)};
+  if (assembles) return std::nullopt;
+  return tr("This linkage cannot be assembled at any crank angle: %1.").arg(QString::fromStdString(why.value_or("")));
 }
 
-std::optional<QString> MechanismDocument::edit(const k::Design& design, const QString& description, int mergeKey,
+k::SweepResult MechanismDocument::sweepGrid(const k::Mechanism& mechanism, const k::SweepSpec& spec) const {
+  ++m_sweepsRun;
+  // Only validated designs get here (checkDesign passed), so the sweep runs.
+  return k::sweep(mechanism, spec, {false, false, m_request.newton}).value();
+}
+
+std::optional<k::SweepResult> MechanismDocument::takeValidatedGrid(const k::Design& design) {
+  std::optional<ValidatedGrid> cached = std::move(m_validatedGrid);
+  m_validatedGrid.reset();
+  if (!cached || cached->design != design || cached->request.newton != m_request.newton) return std::nullopt;
+  return std::move(cached->grid);
+}
+
+std::optional<QString> MechanismDocument::edit(const k::Design& design, const QString& description,
+                                               std::optional<MergeKey> mergeKey,
                                                std::optional<double> crankAngleAfter) {
   if (auto why = validate(design)) return why;
   const double angleAfter = crankAngleAfter.value_or(m_crankAngle);
@@ -140,11 +149,14 @@ void MechanismDocument::rebuild() {
   resweep();
   // The crank range and gaps the panel states are the design's grid's, as in the CSV export,
   // whatever the plots' resolution; positions alone decide them. A four-bar whose crank turns
-  // fully (closed form) has no gaps, so it skips this sweep.
+  // fully (closed form) has no gaps, so it skips this sweep; after an edit, the sweep that
+  // validated the design a moment ago serves.
   k::SweepResult grid;
   const k::FourBarDesign* fb = fourBar();
-  if (fb == nullptr || !k::fourBarInputRange(fb->lengths).fullRotation)
-    grid = k::sweep(m_mechanism, k::designSweepSpec(m_design), {false, false, m_request.newton}).value();
+  if (fb == nullptr || !k::fourBarInputRange(fb->lengths).fullRotation) {
+    if (auto validated = takeValidatedGrid(m_design)) grid = std::move(*validated);
+    else grid = sweepGrid(m_mechanism, k::designSweepSpec(m_design));
+  }
   m_analysis = k::analyseDesign(m_mechanism, grid);
   m_crankAngle = m_analysis.inputRange.clamp(m_crankAngle);
   solvePoseNow();
@@ -172,6 +184,7 @@ void MechanismDocument::resweep() {
     request.velocities = request.accelerations = true;
     request.only = {};
   }
+  ++m_sweepsRun;
   const auto start = std::chrono::steady_clock::now();
   // Into the same result: a drag re-sweeps on every frame without new allocations.
   if (auto error = k::sweepInto(m_mechanism, m_displaySpec, request, m_sweep)) m_sweep = k::SweepResult{};

@@ -8,6 +8,7 @@
 // does; the displayed sweep spans the same crank angles with as many samples as the plots
 // have pixels times the sampling quality, and computes only the quantities they show.
 
+#include "ui/document/edit_design_command.h"
 #include "ui/document/quality_estimate.h"
 #include "ui/document/sampling_quality.h"
 
@@ -61,6 +62,9 @@ public:
   const kinematics::SweepSpec& displaySpec() const { return m_displaySpec; }
   /// Wall time of the last computation of sweep(), ms.
   double sweepMilliseconds() const { return m_sweepMs; }
+  /// How many sweeps the document has run (display, grid and validation ones): tests read it
+  /// to show that an edit does each piece of work once.
+  long sweepsRun() const { return m_sweepsRun; }
   /// The pose at crankAngle(), with velocities and accelerations.
   const kinematics::Pose& pose() const { return m_pose; }
   /// Status of pose(): Ok, or Singular at a toggle position.
@@ -69,11 +73,12 @@ public:
   /// Checks a candidate design: nullopt if it can be accepted, else why not (a sentence).
   std::optional<QString> validate(const kinematics::Design& design) const;
 
-  /// Replaces the design through the undo stack. `mergeKey` ≥ 0 merges consecutive edits
-  /// with the same key into one undo step (a drag). `crankAngleAfter` (rad) also moves the
+  /// Replaces the design through the undo stack. Consecutive edits with the same `mergeKey`
+  /// merge into one undo step (a drag). `crankAngleAfter` (rad) also moves the
   /// crank, undoably (dragging B of a four-bar does). Returns the refusal reason, if refused:
   /// then nothing changes.
-  std::optional<QString> edit(const kinematics::Design& design, const QString& description, int mergeKey = -1,
+  std::optional<QString> edit(const kinematics::Design& design, const QString& description,
+                              std::optional<MergeKey> mergeKey = std::nullopt,
                               std::optional<double> crankAngleAfter = std::nullopt);
 
   /// Replaces the design and crank angle without touching the undo stack (the undo command
@@ -131,6 +136,17 @@ private:
   kinematics::SweepSpec wantedDisplaySpec() const;
   void scheduleEstimate();
   void measureQuality();  // the timer's: it is no longer active when it fires
+  // The design's own grid, positions only: what validation and the analysis read.
+  kinematics::SweepResult sweepGrid(const kinematics::Mechanism& mechanism, const kinematics::SweepSpec& spec) const;
+  // The grid sweep validate() ran for `design`, if it is the last one validated.
+  std::optional<kinematics::SweepResult> takeValidatedGrid(const kinematics::Design& design);
+
+  // What validate() swept last, so that applying the design it accepted does not sweep again.
+  struct ValidatedGrid {
+    kinematics::Design design;
+    kinematics::SolveRequest request;
+    kinematics::SweepResult grid;
+  };
 
   kinematics::Design m_design;
   kinematics::Mechanism m_mechanism;
@@ -138,6 +154,8 @@ private:
   kinematics::SweepResult m_sweep;
   kinematics::SweepSpec m_displaySpec;
   double m_sweepMs = 0.0;
+  mutable long m_sweepsRun = 0;
+  mutable std::optional<ValidatedGrid> m_validatedGrid;
   SamplingQuality m_quality = SamplingQuality::Normal;
   double m_displayWidth = kDefaultDisplayWidth;
   QualityEstimate m_estimate;

@@ -98,10 +98,9 @@ void LengthsPanel::editLength(int index, double value, bool final) {
   k::FourBarDesign d = *m_document->fourBar();
   std::array<double*, 4> fields{&d.lengths.frame, &d.lengths.crank, &d.lengths.coupler, &d.lengths.rocker};
   *fields[static_cast<std::size_t>(index)] = value;
-  static constexpr std::array<int, 4> keys{merge::kFrameLength, merge::kCrankLength, merge::kCouplerLength, merge::kRockerLength};
   const std::array<QString, 4> what{tr("Change frame length"), tr("Change crank length"), tr("Change coupler length"),
                                     tr("Change rocker length")};
-  const int key = keys[static_cast<std::size_t>(index)] * 1000 + m_dragSerial % 1000;
+  const MergeKey key{ContinuousEdit::Length, static_cast<std::size_t>(index), m_dragSerial};
   if (auto why = m_document->edit(d, what[static_cast<std::size_t>(index)], key)) showRefusal(*why);
   else m_message->hide();
   if (final) ++m_dragSerial;
@@ -119,7 +118,7 @@ void LengthsPanel::editCouplerPoint() {
   } else {
     d.couplerPoint.reset();
   }
-  if (auto why = m_document->edit(d, tr("Change coupler point"), merge::kDragCouplerPoint * 1000 + m_dragSerial % 1000))
+  if (auto why = m_document->edit(d, tr("Change coupler point"), MergeKey{ContinuousEdit::CouplerPoint, 0, m_dragSerial}))
     showRefusal(*why);
   else m_message->hide();
   ++m_dragSerial;

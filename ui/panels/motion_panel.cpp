@@ -141,13 +141,13 @@ void MotionPanel::editSpeed() {
   const bool rpm = m_speedUnit->currentIndex() == 0;
   const double omega = rpm ? k::rpmToRadPerSec(m_speed->value()) : m_speed->value();
   const k::Design d = withShared(m_document->design(), [omega](auto& x) { x.omega = omega; });
-  if (m_document->edit(d, tr("Change crank speed"), merge::kSpeed * 1000 + m_editSerial++ % 1000)) refreshDesign();
+  if (m_document->edit(d, tr("Change crank speed"), MergeKey{ContinuousEdit::Speed, 0, m_editSerial++})) refreshDesign();
 }
 
 void MotionPanel::editAlpha() {
   const double alpha = m_alpha->value();
   const k::Design d = withShared(m_document->design(), [alpha](auto& x) { x.alpha = alpha; });
-  if (m_document->edit(d, tr("Change crank acceleration"), merge::kAlpha * 1000 + m_editSerial++ % 1000)) refreshDesign();
+  if (m_document->edit(d, tr("Change crank acceleration"), MergeKey{ContinuousEdit::Acceleration, 0, m_editSerial++})) refreshDesign();
 }
 
 void MotionPanel::editBranch() {
