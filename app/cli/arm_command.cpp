@@ -8,6 +8,7 @@
 
 #include "kinematics/analysis/two_link_arm.h"
 #include "kinematics/model/validate.h"
+#include "kinematics/io/csv_writer.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/units.h"
 
@@ -184,7 +185,7 @@ std::string csvCell(const ArmColumn& c, const ArmRow& r) {
 }
 
 void writeCsv(std::ostream& out, const std::vector<ArmColumn>& columns, const std::vector<ArmRow>& rows) {
-  for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << columns[c].name;
+  for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << k::io::csvField(columns[c].name);
   out << "\r\n";
   for (const ArmRow& row : rows) {
     for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << csvCell(columns[c], row);
