@@ -3,7 +3,6 @@
 #include "ui/animation/crank_animator.h"
 #include "ui/canvas/linkage_view.h"
 #include "ui/dialogs/attach_dyad_dialog.h"
-#include "ui/dialogs/dyad_request.h"
 #include "ui/document/design_templates.h"
 #include "ui/document/document_file.h"
 #include "ui/document/mechanism_document.h"
@@ -21,6 +20,7 @@
 #include "ui/plots/quality_bar.h"
 #include "ui/settings.h"
 
+#include "kinematics/design/dyad_request.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/io/csv_writer.h"
 
@@ -251,8 +251,8 @@ void MainWindow::buildExamplesMenu(QMenu* menu) {
   for (const k::MechanismExample& e : k::mechanismExamples()) addExample(e.name, e.description);
 }
 
-std::optional<QString> MainWindow::attachDyad(const DyadRequest& request) {
-  const auto attached = attachToDesign(m_document->design(), request);
+std::optional<QString> MainWindow::attachDyad(const kinematics::DyadRequest& request) {
+  const auto attached = kinematics::attachToDesign(m_document->design(), request);
   if (!attached) return QString::fromStdString(attached.error().message);
   return m_document->edit(*attached, tr("Attach %1").arg(QString::fromStdString(request.joint)));
 }
@@ -260,7 +260,7 @@ std::optional<QString> MainWindow::attachDyad(const DyadRequest& request) {
 void MainWindow::openAttachDyadDialog() {
   m_animator->pause();
   AttachDyadDialog dialog(m_document->mechanism(), m_document->crankAngle(),
-                          [this](const DyadRequest& request) { return attachDyad(request); }, this);
+                          [this](const kinematics::DyadRequest& request) { return attachDyad(request); }, this);
   dialog.exec();
 }
 

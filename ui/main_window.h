@@ -16,6 +16,10 @@ class QAction;
 class QMenu;
 class QTabWidget;
 
+namespace linkwright::kinematics {
+struct DyadRequest;
+}
+
 namespace linkwright::ui {
 
 class AnalysisPanel;
@@ -25,7 +29,6 @@ class DynamicsPanel;
 class ForceArrowsItem;
 class ForcePlotPanel;
 class ForceResults;
-struct DyadRequest;
 class LengthsPanel;
 class LinkageView;
 class MechanismDocument;
@@ -54,7 +57,7 @@ public:
   void newDocument(const kinematics::Design& design);
   /// Attaches a dyad to the current linkage, undoably (Edit ▸ Attach dyad… without the
   /// dialog). Returns the reason if the core or the document refuses; then nothing changes.
-  std::optional<QString> attachDyad(const DyadRequest& request);
+  std::optional<QString> attachDyad(const kinematics::DyadRequest& request);
   /// Opens a document; on failure shows why in the banner and changes nothing.
   bool openFile(const QString& path);
   /// Saves to `path` (atomically) and makes it the document's file.

@@ -6,13 +6,13 @@
 
 #include "ui/canvas/design_drag.h"
 #include "ui/dialogs/attach_dyad_dialog.h"
-#include "ui/dialogs/dyad_request.h"
 #include "ui/document/design_templates.h"
 #include "ui/document/document_file.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/panels/analysis_panel.h"
 #include "ui/panels/dimensions_panel.h"
 
+#include "kinematics/design/dyad_request.h"
 #include "kinematics/design/point_drag.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
@@ -209,9 +209,9 @@ TEST_CASE("the dimensions panel edits any linkage through the document", "[ui][l
 TEST_CASE("attaching a dyad to a four-bar adds two links, undoably", "[ui][linkage][attach]") {
   MechanismDocument doc;  // the thesis crank-rocker
   const k::Design fourBar = doc.design();
-  const ui::DyadRequest request = ui::suggestDyad(doc.mechanism(), doc.crankAngle(), ui::DyadKind::Rrr);
+  const k::DyadRequest request = k::suggestDyad(doc.mechanism(), doc.crankAngle(), k::DyadKind::Rrr);
   CHECK(request.joint == "E");
-  const auto attached = ui::attachToDesign(doc.design(), request);
+  const auto attached = k::attachToDesign(doc.design(), request);
   REQUIRE(attached);
   REQUIRE_FALSE(doc.edit(*attached, "attach").has_value());
   REQUIRE(doc.linkage() != nullptr);
@@ -225,13 +225,13 @@ TEST_CASE("attaching a dyad to a four-bar adds two links, undoably", "[ui][linka
 }
 
 TEST_CASE("every kind of dyad attaches to a slider-crank from its suggestion", "[ui][linkage][attach]") {
-  for (const auto kind : {ui::DyadKind::Rrr, ui::DyadKind::Rrp, ui::DyadKind::Rpr, ui::DyadKind::Prp}) {
+  for (const auto kind : {k::DyadKind::Rrr, k::DyadKind::Rrp, k::DyadKind::Rpr, k::DyadKind::Prp}) {
     CAPTURE(static_cast<int>(kind));
     MechanismDocument doc;
     doc.reset(example("ls3-engine"));
     const std::size_t points = doc.mechanism().points.size();
-    const ui::DyadRequest request = ui::suggestDyad(doc.mechanism(), doc.crankAngle(), kind);
-    const auto attached = ui::attachToDesign(doc.design(), request);
+    const k::DyadRequest request = k::suggestDyad(doc.mechanism(), doc.crankAngle(), kind);
+    const auto attached = k::attachToDesign(doc.design(), request);
     REQUIRE(attached);
     const auto refusal = doc.edit(*attached, "attach");
     CAPTURE(refusal.value_or(QString()).toStdString());
@@ -245,15 +245,15 @@ TEST_CASE("the dialog attaches, or shows the core's refusal and changes nothing"
   MechanismDocument doc;
   doc.reset(example("shaper"));
   const k::Design before = doc.design();
-  const auto apply = [&doc](const ui::DyadRequest& r) -> std::optional<QString> {
-    const auto attached = ui::attachToDesign(doc.design(), r);
+  const auto apply = [&doc](const k::DyadRequest& r) -> std::optional<QString> {
+    const auto attached = k::attachToDesign(doc.design(), r);
     if (!attached) return QString::fromStdString(attached.error().message);
     return doc.edit(*attached, "attach");
   };
   ui::AttachDyadDialog dialog(doc.mechanism(), doc.crankAngle(), apply);
   CHECK(dialog.grab().save(QStringLiteral("/tmp/linkwright_attach_dyad.png")));
   // A joint name already taken: refused by name, dialog open, document unchanged.
-  ui::DyadRequest bad = dialog.request();
+  k::DyadRequest bad = dialog.request();
   bad.joint = "B";
   dialog.setRequest(bad);
   dialog.accept();
@@ -261,14 +261,14 @@ TEST_CASE("the dialog attaches, or shows the core's refusal and changes nothing"
   CHECK(dialog.result() != QDialog::Accepted);
   CHECK(doc.design() == before);
   // RRR lengths that cannot close: the document refuses with the solver's sentence.
-  ui::DyadRequest tooShort = ui::suggestDyad(doc.mechanism(), doc.crankAngle(), ui::DyadKind::Rrr);
+  k::DyadRequest tooShort = k::suggestDyad(doc.mechanism(), doc.crankAngle(), k::DyadKind::Rrr);
   tooShort.firstLength = tooShort.secondLength = 1e-3;
   dialog.setRequest(tooShort);
   dialog.accept();
   CHECK(dialog.errorText().contains("cannot be assembled"));
   CHECK(doc.design() == before);
   // The suggestion (a new ground pivot, lengths from the pose) is accepted.
-  dialog.setRequest(ui::suggestDyad(doc.mechanism(), doc.crankAngle(), ui::DyadKind::Rrr));
+  dialog.setRequest(k::suggestDyad(doc.mechanism(), doc.crankAngle(), k::DyadKind::Rrr));
   dialog.accept();
   CHECK(dialog.result() == QDialog::Accepted);
   CHECK(doc.mechanism().points.size() == 7);  // a new ground pivot and the joint

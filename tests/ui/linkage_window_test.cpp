@@ -3,7 +3,6 @@
 // save → open in a new window reproduces the linkage, attaching a dyad swaps the four-bar's
 // lengths panel for the dimensions panel, and a corrupt file changes nothing.
 
-#include "ui/dialogs/dyad_request.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/main_window.h"
 #include "ui/message_banner.h"
@@ -11,6 +10,7 @@
 #include "ui/panels/lengths_panel.h"
 
 #include "app/cli/cli.h"
+#include "kinematics/design/dyad_request.h"
 #include "kinematics/design/mechanism_design.h"
 
 #include "tests/ui/support/read_file.h"
@@ -129,7 +129,7 @@ TEST_CASE("a corrupt or newer file leaves an open linkage as it was", "[ui][wind
 TEST_CASE("attaching a dyad in the window swaps the lengths panel for the dimensions panel", "[ui][window][attach]") {
   ui::MainWindow window;
   REQUIRE(window.document()->fourBar() != nullptr);
-  const auto request = ui::suggestDyad(window.document()->mechanism(), window.document()->crankAngle(), ui::DyadKind::Rrr);
+  const auto request = k::suggestDyad(window.document()->mechanism(), window.document()->crankAngle(), k::DyadKind::Rrr);
   REQUIRE_FALSE(window.attachDyad(request).has_value());
   CHECK(window.document()->fourBar() == nullptr);
   CHECK(window.document()->mechanism().links.size() == 5);
@@ -139,7 +139,7 @@ TEST_CASE("attaching a dyad in the window swaps the lengths panel for the dimens
   CHECK(window.document()->fourBar() != nullptr);
   CHECK(window.lengthsPanel()->isVisibleTo(&window));
   // A refusal names the reason and changes nothing.
-  ui::DyadRequest taken = request;
+  k::DyadRequest taken = request;
   taken.joint = "C";
   const auto why = window.attachDyad(taken);
   REQUIRE(why.has_value());

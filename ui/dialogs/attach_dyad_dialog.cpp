@@ -71,12 +71,12 @@ AttachDyadDialog::AttachDyadDialog(const k::Mechanism& mechanism, double crankAn
   // New parents or a new guide: lengths that assemble at the current pose again.
   for (ParentEditor* e : {m_first, m_second}) connect(e, &ParentEditor::changed, this, &AttachDyadDialog::parentsChanged);
   connect(m_guide, &GuideEditor::changed, this, &AttachDyadDialog::parentsChanged);
-  setRequest(suggestDyad(m_mechanism, m_crankAngle, DyadKind::Rrr));
+  setRequest(kinematics::suggestDyad(m_mechanism, m_crankAngle, kinematics::DyadKind::Rrr));
 }
 
-DyadRequest AttachDyadDialog::request() const {
-  DyadRequest r;
-  r.kind = static_cast<DyadKind>(m_kind->currentIndex());
+kinematics::DyadRequest AttachDyadDialog::request() const {
+  kinematics::DyadRequest r;
+  r.kind = static_cast<kinematics::DyadKind>(m_kind->currentIndex());
   r.joint = m_joint->text().trimmed().toStdString();
   r.first = m_first->choice();
   r.second = m_second->choice();
@@ -88,7 +88,7 @@ DyadRequest AttachDyadDialog::request() const {
   return r;
 }
 
-void AttachDyadDialog::setRequest(const DyadRequest& r) {
+void AttachDyadDialog::setRequest(const kinematics::DyadRequest& r) {
   {
     const QSignalBlocker block(m_kind);
     m_kind->setCurrentIndex(static_cast<int>(r.kind));
@@ -116,21 +116,21 @@ void AttachDyadDialog::accept() {
 }
 
 void AttachDyadDialog::kindChanged() {
-  setRequest(suggestDyad(m_mechanism, m_crankAngle, static_cast<DyadKind>(m_kind->currentIndex())));
+  setRequest(kinematics::suggestDyad(m_mechanism, m_crankAngle, static_cast<kinematics::DyadKind>(m_kind->currentIndex())));
   m_error->hide();
 }
 
 void AttachDyadDialog::parentsChanged() {
-  DyadRequest r = request();
-  fillLengths(m_mechanism, m_crankAngle, r);
+  kinematics::DyadRequest r = request();
+  kinematics::fillLengths(m_mechanism, m_crankAngle, r);
   const QSignalBlocker a(m_firstLength), b(m_secondLength);
   m_firstLength->setValue(r.firstLength);
   m_secondLength->setValue(r.secondLength);
 }
 
 void AttachDyadDialog::showKindFields() {
-  const auto kind = static_cast<DyadKind>(m_kind->currentIndex());
-  const bool rrr = kind == DyadKind::Rrr, rrp = kind == DyadKind::Rrp, rpr = kind == DyadKind::Rpr, prp = kind == DyadKind::Prp;
+  const auto kind = static_cast<kinematics::DyadKind>(m_kind->currentIndex());
+  const bool rrr = kind == kinematics::DyadKind::Rrr, rrp = kind == kinematics::DyadKind::Rrp, rpr = kind == kinematics::DyadKind::Rpr, prp = kind == kinematics::DyadKind::Prp;
   m_firstBox->setVisible(!prp);
   m_firstBox->setTitle(rpr ? tr("Pivot of the slotted link") : rrp ? tr("The rod's other end") : tr("First parent"));
   m_secondBox->setVisible(rrr || rpr);

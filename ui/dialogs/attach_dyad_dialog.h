@@ -5,7 +5,7 @@
 // the request to `apply`; if that refuses, the dialog stays open with the reason and the
 // document is unchanged.
 
-#include "ui/dialogs/dyad_request.h"
+#include "kinematics/design/dyad_request.h"
 
 #include <QDialog>
 
@@ -28,15 +28,15 @@ class AttachDyadDialog : public QDialog {
   Q_OBJECT
 public:
   /// Applies a request; returns the refusal reason, or nullopt once it is done.
-  using Apply = std::function<std::optional<QString>(const DyadRequest&)>;
+  using Apply = std::function<std::optional<QString>(const kinematics::DyadRequest&)>;
 
   /// For `mechanism` shown at `crankAngle` (rad).
   AttachDyadDialog(const kinematics::Mechanism& mechanism, double crankAngle, Apply apply, QWidget* parent = nullptr);
 
   /// The request the fields describe now.
-  DyadRequest request() const;
+  kinematics::DyadRequest request() const;
   /// Shows `request` in the fields (a new suggestion, or a test's).
-  void setRequest(const DyadRequest& request);
+  void setRequest(const kinematics::DyadRequest& request);
   QString errorText() const;
 
   void accept() override;

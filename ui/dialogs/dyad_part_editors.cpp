@@ -46,7 +46,7 @@ ParentEditor::ParentEditor(QWidget* parent)
   connect(m_link, &QComboBox::currentIndexChanged, this, &ParentEditor::changed);
 }
 
-void ParentEditor::setChoices(const k::Mechanism& m, const ParentChoice& choice) {
+void ParentEditor::setChoices(const k::Mechanism& m, const kinematics::ParentChoice& choice) {
   const QSignalBlocker blockSource(m_source), blockLink(m_link), blockA(m_a), blockB(m_b);
   m_source->clear();
   for (const k::Point& p : m.points) m_source->addItem(pointDisplayName(p.name));
@@ -58,7 +58,7 @@ void ParentEditor::setChoices(const k::Mechanism& m, const ParentChoice& choice)
   const QString unit = QStringLiteral(" ") + QString::fromStdString(m.lengthUnit);
   m_a->setSuffix(unit);
   m_b->setSuffix(unit);
-  using Source = ParentChoice::Source;
+  using Source = kinematics::ParentChoice::Source;
   switch (choice.source) {
   case Source::Existing: m_source->setCurrentIndex(static_cast<int>(choice.point.index)); break;
   case Source::OnLink:
@@ -76,18 +76,18 @@ void ParentEditor::setChoices(const k::Mechanism& m, const ParentChoice& choice)
   showFields();
 }
 
-ParentChoice ParentEditor::choice() const {
-  ParentChoice c;
+kinematics::ParentChoice ParentEditor::choice() const {
+  kinematics::ParentChoice c;
   const auto index = static_cast<std::size_t>(std::max(0, m_source->currentIndex()));
   if (index < m_points) {
     c.point = k::PointId{index};
   } else if (index == m_points) {
-    c.source = ParentChoice::Source::OnLink;
+    c.source = kinematics::ParentChoice::Source::OnLink;
     c.link = k::LinkId{static_cast<std::size_t>(std::max(0, m_link->currentIndex()))};
     c.along = m_a->value();
     c.across = m_b->value();
   } else {
-    c.source = ParentChoice::Source::NewGround;
+    c.source = kinematics::ParentChoice::Source::NewGround;
     c.position = Eigen::Vector2d(m_a->value(), m_b->value());
   }
   return c;

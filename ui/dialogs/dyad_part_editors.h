@@ -3,7 +3,7 @@
 // new point on a link at along/across, or a new ground pivot at x, y) and a guide editor (on
 // the ground through x, y, or on a link at along/across, with its angle).
 
-#include "ui/dialogs/dyad_request.h"
+#include "kinematics/design/dyad_request.h"
 
 #include <QWidget>
 
@@ -19,8 +19,8 @@ public:
   explicit ParentEditor(QWidget* parent = nullptr);
 
   /// Lists `mechanism`'s points and links (length unit in the suffixes) and shows `choice`.
-  void setChoices(const kinematics::Mechanism& mechanism, const ParentChoice& choice);
-  ParentChoice choice() const;
+  void setChoices(const kinematics::Mechanism& mechanism, const kinematics::ParentChoice& choice);
+  kinematics::ParentChoice choice() const;
 
 signals:
   void changed();

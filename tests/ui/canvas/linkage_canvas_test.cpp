@@ -9,8 +9,8 @@
 #include "ui/canvas/slider_block_item.h"
 #include "ui/canvas/slideway_item.h"
 #include "ui/canvas/slotted_link_item.h"
-#include "ui/dialogs/dyad_request.h"
 
+#include "kinematics/design/dyad_request.h"
 #include "kinematics/design/point_drag.h"
 #include "kinematics/solve/pose_solver.h"
 
@@ -144,8 +144,8 @@ TEST_CASE("dragging a linkage's joint with the mouse goes through dragPoint and 
 
 TEST_CASE("a PRP pin has no handle; its two blocks sit on their guides", "[canvas][linkage]") {
   ShownView v(example("ls3-engine"));
-  const auto request = ui::suggestDyad(v.document.mechanism(), v.document.crankAngle(), ui::DyadKind::Prp);
-  const auto attached = ui::attachToDesign(v.document.design(), request);
+  const auto request = k::suggestDyad(v.document.mechanism(), v.document.crankAngle(), k::DyadKind::Prp);
+  const auto attached = k::attachToDesign(v.document.design(), request);
   REQUIRE(attached);
   REQUIRE_FALSE(v.document.edit(*attached, "attach").has_value());
   const k::PointId pin{v.document.mechanism().points.size() - 1};

@@ -14,7 +14,7 @@
 
 #include <string>
 
-namespace linkwright::ui {
+namespace linkwright::kinematics {
 
 enum class DyadKind { Rrr, Rrp, Rpr, Prp };
 
@@ -22,8 +22,8 @@ enum class DyadKind { Rrr, Rrp, Rpr, Prp };
 struct ParentChoice {
   enum class Source { Existing, OnLink, NewGround };
   Source source = Source::Existing;
-  kinematics::PointId point;                              ///< Existing
-  kinematics::LinkId link;                                ///< OnLink
+  PointId point;                              ///< Existing
+  LinkId link;                                ///< OnLink
   double along = 0.0;                                     ///< OnLink, length unit
   double across = 0.0;                                    ///< OnLink, length unit
   Eigen::Vector2d position = Eigen::Vector2d::Zero();     ///< NewGround, length unit
@@ -36,31 +36,31 @@ struct DyadRequest {
   ParentChoice second;      ///< RRR: second parent; RPR: the point the slot passes through
   double firstLength = 1.0;   ///< RRR: to first; RRP: the rod; RPR: the slotted link
   double secondLength = 1.0;  ///< RRR: to second
-  kinematics::Guide guide;        ///< RRP: the slider's guide; PRP: the first guide
-  kinematics::Guide secondGuide;  ///< PRP: the second guide
-  kinematics::Branch branch = kinematics::Branch::Open;
+  Guide guide;        ///< RRP: the slider's guide; PRP: the first guide
+  Guide secondGuide;  ///< PRP: the second guide
+  Branch branch = Branch::Open;
 };
 
 /// Adds the new parents, then the dyad. An Error (the core's) names what is wrong; the input
 /// mechanism is never changed.
-kinematics::Result<kinematics::Mechanism> applyDyadRequest(const kinematics::Mechanism& mechanism, const DyadRequest& request);
+Result<Mechanism> applyDyadRequest(const Mechanism& mechanism, const DyadRequest& request);
 
 /// `design` with the dyad attached: a four-bar becomes a general linkage first; the kind
 /// becomes "linkage", since it is no longer the textbook mechanism it was.
-kinematics::Result<kinematics::MechanismDesign> attachToDesign(const kinematics::Design& design, const DyadRequest& request);
+Result<MechanismDesign> attachToDesign(const Design& design, const DyadRequest& request);
 
 /// A request of `kind` for `mechanism` at `crankAngle` (rad): parents picked from its last
 /// points, a fresh joint name, lengths from fillLengths.
-DyadRequest suggestDyad(const kinematics::Mechanism& mechanism, double crankAngle, DyadKind kind);
+DyadRequest suggestDyad(const Mechanism& mechanism, double crankAngle, DyadKind kind);
 
 /// Sets the request's lengths from the distances between its parents at `crankAngle`, so that
 /// it assembles there: an RRR's links three quarters of the parents' distance each, an RRP's
 /// rod longer than its end's distance from the guide, an RPR's slotted link past the point it
 /// slides through. Leaves them as they are if the parents cannot be placed.
-void fillLengths(const kinematics::Mechanism& mechanism, double crankAngle, DyadRequest& request);
+void fillLengths(const Mechanism& mechanism, double crankAngle, DyadRequest& request);
 
 /// A point name not used in `mechanism`: the next free letter from E (skipping O), or "O<n>"
 /// for a ground pivot.
-std::string freshPointName(const kinematics::Mechanism& mechanism, bool groundPivot = false);
+std::string freshPointName(const Mechanism& mechanism, bool groundPivot = false);
 
-} // namespace linkwright::ui
+} // namespace linkwright::kinematics

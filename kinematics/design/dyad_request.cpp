@@ -1,4 +1,4 @@
-#include "ui/dialogs/dyad_request.h"
+#include "kinematics/design/dyad_request.h"
 
 #include "kinematics/model/units.h"
 #include "kinematics/solve/guide_line.h"
@@ -7,38 +7,36 @@
 #include <algorithm>
 #include <cmath>
 
-namespace linkwright::ui {
-
-namespace k = kinematics;
+namespace linkwright::kinematics {
 
 namespace {
 
-bool nameTaken(const k::Mechanism& m, const std::string& name) { return m.findPoint(name).has_value(); }
+bool nameTaken(const Mechanism& m, const std::string& name) { return m.findPoint(name).has_value(); }
 
 // Adds the parent if it is new and returns its id in the grown mechanism.
-k::Result<k::PointId> resolveParent(k::Mechanism& m, const ParentChoice& parent) {
+Result<PointId> resolveParent(Mechanism& m, const ParentChoice& parent) {
   using Source = ParentChoice::Source;
   if (parent.source == Source::Existing) {
     if (parent.point.index >= m.points.size())
-      return k::Error{k::ErrorCode::InvalidStructure, "parent", "the chosen point does not belong to this linkage"};
+      return Error{ErrorCode::InvalidStructure, "parent", "the chosen point does not belong to this linkage"};
     return parent.point;
   }
   const bool ground = parent.source == Source::NewGround;
   const std::string name = freshPointName(m, ground);
-  auto grown = ground ? k::addGroundPivot(m, name, parent.position) : k::addPointOnLink(m, name, parent.link, parent.along, parent.across);
+  auto grown = ground ? addGroundPivot(m, name, parent.position) : addPointOnLink(m, name, parent.link, parent.along, parent.across);
   if (!grown) return grown.error();
   m = std::move(*grown);
-  return k::PointId{m.points.size() - 1};
+  return PointId{m.points.size() - 1};
 }
 
 // The parents added and the dyad's spec, or why not.
 struct Prepared {
-  k::Mechanism mechanism;
-  k::PointId first;
-  k::PointId second;
+  Mechanism mechanism;
+  PointId first;
+  PointId second;
 };
 
-k::Result<Prepared> prepare(const k::Mechanism& mechanism, const DyadRequest& r) {
+Result<Prepared> prepare(const Mechanism& mechanism, const DyadRequest& r) {
   Prepared p{mechanism, {}, {}};
   if (r.kind != DyadKind::Prp) {
     const auto first = resolveParent(p.mechanism, r.first);
@@ -53,34 +51,34 @@ k::Result<Prepared> prepare(const k::Mechanism& mechanism, const DyadRequest& r)
   return p;
 }
 
-k::DyadSpec specOf(const DyadRequest& r, const Prepared& p) {
+DyadSpec specOf(const DyadRequest& r, const Prepared& p) {
   switch (r.kind) {
-  case DyadKind::Rrr: return k::RrrDyadSpec{r.joint, p.first, r.firstLength, p.second, r.secondLength, r.branch};
-  case DyadKind::Rrp: return k::RrpDyadSpec{r.joint, p.first, r.firstLength, r.guide, r.branch};
-  case DyadKind::Rpr: return k::RprDyadSpec{r.joint, p.first, p.second, r.firstLength};
-  case DyadKind::Prp: return k::PrpDyadSpec{r.joint, r.guide, r.secondGuide};
+  case DyadKind::Rrr: return RrrDyadSpec{r.joint, p.first, r.firstLength, p.second, r.secondLength, r.branch};
+  case DyadKind::Rrp: return RrpDyadSpec{r.joint, p.first, r.firstLength, r.guide, r.branch};
+  case DyadKind::Rpr: return RprDyadSpec{r.joint, p.first, p.second, r.firstLength};
+  case DyadKind::Prp: return PrpDyadSpec{r.joint, r.guide, r.secondGuide};
   }
-  return k::RrrDyadSpec{};
+  return RrrDyadSpec{};
 }
 
 // The last point that moves, preferring points fixed on links (where a designer hangs a dyad).
-k::PointId lastMoving(const k::Mechanism& m, bool preferAttached) {
+PointId lastMoving(const Mechanism& m, bool preferAttached) {
   for (std::size_t i = m.points.size(); preferAttached && i-- > 0;)
-    if (std::holds_alternative<k::AttachedPoint>(m.points[i].definition)) return {i};
+    if (std::holds_alternative<AttachedPoint>(m.points[i].definition)) return {i};
   for (std::size_t i = m.points.size(); i-- > 0;)
-    if (!std::holds_alternative<k::GroundPoint>(m.points[i].definition)) return {i};
+    if (!std::holds_alternative<GroundPoint>(m.points[i].definition)) return {i};
   return {0};
 }
 
-std::optional<k::PointId> firstGround(const k::Mechanism& m) {
+std::optional<PointId> firstGround(const Mechanism& m) {
   for (std::size_t i = 0; i < m.points.size(); ++i)
-    if (std::holds_alternative<k::GroundPoint>(m.points[i].definition)) return k::PointId{i};
+    if (std::holds_alternative<GroundPoint>(m.points[i].definition)) return PointId{i};
   return std::nullopt;
 }
 
 } // namespace
 
-std::string freshPointName(const k::Mechanism& m, bool groundPivot) {
+std::string freshPointName(const Mechanism& m, bool groundPivot) {
   if (groundPivot) {
     for (int n = 2;; ++n)
       if (const std::string name = "O" + std::to_string(n); !nameTaken(m, name)) return name;
@@ -91,24 +89,24 @@ std::string freshPointName(const k::Mechanism& m, bool groundPivot) {
     if (const std::string name = "J" + std::to_string(n); !nameTaken(m, name)) return name;
 }
 
-k::Result<k::Mechanism> applyDyadRequest(const k::Mechanism& mechanism, const DyadRequest& r) {
-  if (r.joint.empty()) return k::Error{k::ErrorCode::InvalidValue, "joint", "the new joint needs a name"};
+Result<Mechanism> applyDyadRequest(const Mechanism& mechanism, const DyadRequest& r) {
+  if (r.joint.empty()) return Error{ErrorCode::InvalidValue, "joint", "the new joint needs a name"};
   if (nameTaken(mechanism, r.joint))
-    return k::Error{k::ErrorCode::InvalidValue, "joint", "there is already a point named " + r.joint};
+    return Error{ErrorCode::InvalidValue, "joint", "there is already a point named " + r.joint};
   const auto prepared = prepare(mechanism, r);
   if (!prepared) return prepared.error();
-  return k::attachDyad(prepared->mechanism, specOf(r, *prepared));
+  return attachDyad(prepared->mechanism, specOf(r, *prepared));
 }
 
-k::Result<k::MechanismDesign> attachToDesign(const k::Design& design, const DyadRequest& r) {
-  k::MechanismDesign out;
-  if (const auto* f = std::get_if<k::FourBarDesign>(&design)) {
-    const auto built = k::buildMechanism(design);
+Result<MechanismDesign> attachToDesign(const Design& design, const DyadRequest& r) {
+  MechanismDesign out;
+  if (const auto* f = std::get_if<FourBarDesign>(&design)) {
+    const auto built = buildMechanism(design);
     if (!built) return built.error();
     // The four-bar's links keep their names, so its masses and loads carry over.
     out = {"linkage", *built, f->omega, f->alpha, f->fromDeg, f->toDeg, f->samples, f->dynamics};
   } else {
-    out = std::get<k::MechanismDesign>(design);
+    out = std::get<MechanismDesign>(design);
     out.kind = "linkage";
   }
   auto grown = applyDyadRequest(out.mechanism, r);
@@ -117,11 +115,11 @@ k::Result<k::MechanismDesign> attachToDesign(const k::Design& design, const Dyad
   return out;
 }
 
-void fillLengths(const k::Mechanism& mechanism, double crankAngle, DyadRequest& r) {
+void fillLengths(const Mechanism& mechanism, double crankAngle, DyadRequest& r) {
   if (r.kind == DyadKind::Prp) return;
   const auto prepared = prepare(mechanism, r);
   if (!prepared) return;
-  const auto pose = k::solvePose(prepared->mechanism, {crankAngle, 0.0, 0.0}, {false, false});
+  const auto pose = solvePose(prepared->mechanism, {crankAngle, 0.0, 0.0}, {false, false});
   if (!pose) return;
   const Eigen::Vector2d a = pose->position[prepared->first.index];
   // The linkage's reach from the first parent: a length scale when distances say nothing.
@@ -135,8 +133,8 @@ void fillLengths(const k::Mechanism& mechanism, double crankAngle, DyadRequest& 
     break;
   }
   case DyadKind::Rrp: {
-    const k::GuideLine line = k::guideLineAt(prepared->mechanism, r.guide, *pose);
-    const double offset = std::abs(k::guideNormal(line).dot(a - line.point));
+    const GuideLine line = guideLineAt(prepared->mechanism, r.guide, *pose);
+    const double offset = std::abs(guideNormal(line).dot(a - line.point));
     r.firstLength = std::max(1.25 * offset, 0.5 * span);
     break;
   }
@@ -149,14 +147,14 @@ void fillLengths(const k::Mechanism& mechanism, double crankAngle, DyadRequest& 
   }
 }
 
-DyadRequest suggestDyad(const k::Mechanism& m, double crankAngle, DyadKind kind) {
+DyadRequest suggestDyad(const Mechanism& m, double crankAngle, DyadKind kind) {
   DyadRequest r;
   r.kind = kind;
   r.joint = freshPointName(m);
-  const auto pose = k::solvePose(m, {crankAngle, 0.0, 0.0}, {false, false});
-  const k::PointId moving = lastMoving(m, kind == DyadKind::Rrr);
+  const auto pose = solvePose(m, {crankAngle, 0.0, 0.0}, {false, false});
+  const PointId moving = lastMoving(m, kind == DyadKind::Rrr);
   const Eigen::Vector2d at = pose ? pose->position[moving.index] : Eigen::Vector2d::Zero();
-  const std::optional<k::PointId> ground = firstGround(m);
+  const std::optional<PointId> ground = firstGround(m);
   const double groundY = pose && ground ? pose->position[ground->index].y() : 0.0;
   double span = 1.0;
   if (pose)
@@ -172,7 +170,7 @@ DyadRequest suggestDyad(const k::Mechanism& m, double crankAngle, DyadKind kind)
   case DyadKind::Rrp:
     r.first.source = Source::Existing;
     r.first.point = moving;
-    r.guide = k::Guide{std::nullopt, Eigen::Vector2d(at.x(), groundY), 0.0};
+    r.guide = Guide{std::nullopt, Eigen::Vector2d(at.x(), groundY), 0.0};
     break;
   case DyadKind::Rpr:
     r.first.source = Source::NewGround;
@@ -182,13 +180,13 @@ DyadRequest suggestDyad(const k::Mechanism& m, double crankAngle, DyadKind kind)
     break;
   case DyadKind::Prp:
     // A block sliding on the last link, pinned to a block in a vertical ground slot.
-    r.guide = k::Guide{m.links.empty() ? std::nullopt : std::optional<k::LinkId>(k::LinkId{m.links.size() - 1}),
+    r.guide = Guide{m.links.empty() ? std::nullopt : std::optional<LinkId>(LinkId{m.links.size() - 1}),
                        Eigen::Vector2d::Zero(), 0.0};
-    r.secondGuide = k::Guide{std::nullopt, at, k::kPi / 2.0};
+    r.secondGuide = Guide{std::nullopt, at, kPi / 2.0};
     break;
   }
   fillLengths(m, crankAngle, r);
   return r;
 }
 
-} // namespace linkwright::ui
+} // namespace linkwright::kinematics
