@@ -1,5 +1,7 @@
 #include "ui/message_banner.h"
 
+#include "ui/colors.h"
+
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QToolButton>
@@ -24,7 +26,8 @@ MessageBanner::MessageBanner(QWidget* parent) : QFrame(parent), m_text(new QLabe
 void MessageBanner::showMessage(const QString& text, Kind kind) {
   const bool error = kind == Kind::Error;
   setStyleSheet(QString("linkwright--ui--MessageBanner { background: %1; border: 1px solid %2; border-radius: 4px; }")
-                    .arg(error ? "#fde7e9" : "#e7f0fd", error ? "#d13438" : "#2b6cb0"));
+                    .arg((error ? kErrorBannerColor : kInfoBannerColor).name(),
+                         (error ? kErrorBannerBorderColor : kInfoBannerBorderColor).name()));
   m_text->setText(text);
   show();
 }

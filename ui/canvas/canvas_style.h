@@ -1,31 +1,11 @@
 #pragma once
-// The canvas's look in one place: colours, pixel sizes at presentation scale 1 and the
-// stacking order of the items. Sizes are in device-independent pixels; items multiply them by
-// the view's presentation scale (2 for a projector).
+// The canvas's look in one place: pixel sizes at presentation scale 1 and the stacking order
+// of the items (its colours are in ui/colors.h). Sizes are in device-independent pixels; items
+// multiply them by the view's presentation scale (2 for a projector).
 
-#include <QColor>
+#include "ui/colors.h"
 
 namespace linkwright::ui::canvas {
-
-inline constexpr QColor kCrankColor{230, 85, 13};
-inline constexpr QColor kCouplerColor{49, 130, 189};
-inline constexpr QColor kRockerColor{49, 163, 84};
-inline constexpr QColor kCouplerPointColor{117, 107, 177};
-inline constexpr int kBodyFillAlpha = 45;
-inline constexpr QColor kFrameColor{90, 90, 90};
-inline constexpr QColor kPinOutlineColor{40, 40, 40};
-inline constexpr QColor kPinFillColor{255, 255, 255};
-inline constexpr QColor kHotColor{255, 200, 0, 110};
-inline constexpr QColor kVelocityColor{197, 27, 125};
-inline constexpr QColor kAccelerationColor{0, 128, 128};
-inline constexpr QColor kFeasibleColor{140, 200, 90, 130};
-inline constexpr QColor kInfeasibleColor{150, 150, 150};
-inline constexpr QColor kInfeasibleFillColor{150, 150, 150, 40};
-inline constexpr QColor kLabelColor{50, 50, 50};
-inline constexpr QColor kRefusalColor{190, 20, 20};
-inline constexpr QColor kGridColor{232, 232, 232};
-inline constexpr QColor kGridAxisColor{200, 200, 200};
-inline constexpr QColor kGridLabelColor{150, 150, 150};
 
 inline constexpr double kLinkWidthPx = 6.0;
 inline constexpr double kFrameWidthPx = 1.0;

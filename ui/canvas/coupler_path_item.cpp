@@ -9,7 +9,7 @@
 namespace linkwright::ui {
 
 CouplerPathItem::CouplerPathItem(QGraphicsItem* parent) : QGraphicsPathItem(parent) {
-  QPen pen(canvas::kCouplerPointColor, canvas::kPathWidthPx, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin);
+  QPen pen(kCouplerPointColor, canvas::kPathWidthPx, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin);
   pen.setCosmetic(true);
   setPen(pen);
   setBrush(Qt::NoBrush);

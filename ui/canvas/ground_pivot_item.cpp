@@ -37,22 +37,22 @@ void GroundPivotItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, 
   painter->setRenderHint(QPainter::Antialiasing);
   if (m_hot) {
     painter->setPen(Qt::NoPen);
-    painter->setBrush(canvas::kHotColor);
+    painter->setBrush(kHotColor);
     painter->drawEllipse(QPointF(0, 0), canvas::kHotRadiusPx, canvas::kHotRadiusPx);
   }
-  QPen pen(canvas::kPinOutlineColor, canvas::kOutlineWidthPx);
+  QPen pen(kPinOutlineColor, canvas::kOutlineWidthPx);
   pen.setJoinStyle(Qt::RoundJoin);
   painter->setPen(pen);
-  painter->setBrush(QColor(225, 225, 225));
+  painter->setBrush(kGroundFillColor);
   const QPointF triangle[] = {{0.0, 0.0}, {-kHalfBase * 0.75, kHeight}, {kHalfBase * 0.75, kHeight}};
   painter->drawPolygon(triangle, 3);
   painter->drawLine(QPointF(-kHalfBase - 3.0, kHeight), QPointF(kHalfBase + 3.0, kHeight));
-  QPen hatch(canvas::kPinOutlineColor, 1.0);
+  QPen hatch(kPinOutlineColor, 1.0);
   painter->setPen(hatch);
   for (double x = -kHalfBase; x <= kHalfBase + 3.0; x += kHatchStep)
     painter->drawLine(QPointF(x, kHeight), QPointF(x - kHatchDepth, kHeight + kHatchDepth));
   painter->setPen(pen);
-  painter->setBrush(canvas::kPinFillColor);
+  painter->setBrush(kPinFillColor);
   painter->drawEllipse(QPointF(0, 0), canvas::kPinRadiusPx, canvas::kPinRadiusPx);
 }
 

@@ -27,12 +27,12 @@ void JointHandleItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, 
   painter->setRenderHint(QPainter::Antialiasing);
   if (m_hot) {
     painter->setPen(Qt::NoPen);
-    painter->setBrush(canvas::kHotColor);
+    painter->setBrush(kHotColor);
     painter->drawEllipse(QPointF(0, 0), canvas::kHotRadiusPx, canvas::kHotRadiusPx);
   }
   if (m_style == Style::Pin) {
-    painter->setPen(QPen(canvas::kPinOutlineColor, canvas::kOutlineWidthPx));
-    painter->setBrush(canvas::kPinFillColor);
+    painter->setPen(QPen(kPinOutlineColor, canvas::kOutlineWidthPx));
+    painter->setBrush(kPinFillColor);
     painter->drawEllipse(QPointF(0, 0), canvas::kPinRadiusPx, canvas::kPinRadiusPx);
   } else {
     painter->setPen(QPen(Qt::white, 1.0));

@@ -13,7 +13,7 @@ namespace {
 constexpr double kBoxPaddingPx = 3.0;
 }
 
-LabelItem::LabelItem(QGraphicsItem* parent) : QGraphicsItem(parent), m_color(canvas::kLabelColor) {
+LabelItem::LabelItem(QGraphicsItem* parent) : QGraphicsItem(parent), m_color(kLabelColor) {
   setFlag(ItemIgnoresTransformations);
   m_font.setPointSizeF(canvas::kLabelPointSize);
   setZValue(canvas::z::kLabels);
@@ -82,7 +82,7 @@ void LabelItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidge
   const QRectF rect = textRect();
   if (m_boxed) {
     painter->setPen(QPen(m_color, 1.0));
-    painter->setBrush(QColor(255, 255, 255, 235));
+    painter->setBrush(kLabelBoxColor);
     painter->drawRoundedRect(rect.adjusted(-kBoxPaddingPx, -kBoxPaddingPx, kBoxPaddingPx, kBoxPaddingPx), 3.0, 3.0);
   }
   painter->setFont(m_font);

@@ -43,7 +43,7 @@ LinkageScene::LinkageScene(QObject* parent)
   addItem(m_message);
   m_message->setBoxed(true);
   m_message->setMaximumWidth(kMessageWidthPx);
-  m_message->setColor(canvas::kRefusalColor);
+  m_message->setColor(kRefusalColor);
   m_message->setPlacement(QPointF(14.0, 14.0), Qt::AlignLeft | Qt::AlignTop);
   m_message->setZValue(canvas::z::kMessage);
   m_message->setVisible(false);
@@ -85,8 +85,8 @@ void LinkageScene::rebuildArrows(std::size_t points) {
   m_accelerationArrows.assign(points, nullptr);
   for (std::size_t i = 0; i < points; ++i) {
     if (m_items->plan().ground[i]) continue;
-    m_velocityArrows[i] = new ArrowItem(canvas::kVelocityColor);
-    m_accelerationArrows[i] = new ArrowItem(canvas::kAccelerationColor);
+    m_velocityArrows[i] = new ArrowItem(kVelocityColor);
+    m_accelerationArrows[i] = new ArrowItem(kAccelerationColor);
     for (ArrowItem* arrow : {m_velocityArrows[i], m_accelerationArrows[i]}) {
       addItem(arrow);
       arrow->setVisible(false);

@@ -10,7 +10,7 @@
 #include "ui/canvas/slideway_item.h"
 #include "ui/canvas/slotted_link_item.h"
 #include "ui/geometry.h"
-#include "ui/link_colors.h"
+#include "ui/colors.h"
 
 #include "kinematics/solve/guide_line.h"
 
@@ -72,7 +72,7 @@ MechanismItems::MechanismItems(QGraphicsScene* scene, const k::Mechanism& m, Dra
   for (const BodyShape& body : m_plan.bodies) {
     auto* plate = add(new QGraphicsPolygonItem);
     QColor fill = linkColor(body.link.index);
-    fill.setAlpha(canvas::kBodyFillAlpha);
+    fill.setAlpha(kBodyFillAlpha);
     plate->setBrush(fill);
     plate->setPen(cosmeticPen(linkColor(body.link.index), kPlateSideFraction * canvas::kLinkWidthPx));
     plate->setZValue(canvas::z::kCouplerTriangle);
@@ -81,11 +81,11 @@ MechanismItems::MechanismItems(QGraphicsScene* scene, const k::Mechanism& m, Dra
   for (const SlotShape& slot : m_plan.slottedLinks) {
     m_slots.push_back(add(new SlottedLinkItem(linkColor(slot.link.index))));
     // The block is a body of its own (the dyad's middle link): neutral, so it reads on the bar.
-    m_slotBlocks.push_back(add(new SliderBlockItem(canvas::kFrameColor, kSlotBlockLengthPx, kSlotBlockHeightPx)));
+    m_slotBlocks.push_back(add(new SliderBlockItem(kFrameColor, kSlotBlockLengthPx, kSlotBlockHeightPx)));
   }
   for (const SliderShape& slider : m_plan.sliders) {
     const k::Guide& guide = sliderGuide(m, slider);
-    const QColor guideColor = guide.link ? linkColor(guide.link->index) : canvas::kFrameColor;
+    const QColor guideColor = guide.link ? linkColor(guide.link->index) : kFrameColor;
     m_slideways.push_back(add(new SlidewayItem(slider.onGround, kBlockHeightPx + 2.0, guideColor)));
     m_blocks.push_back(add(new SliderBlockItem(sliderColor(slider.ordinal), kBlockLengthPx, kBlockHeightPx)));
   }
@@ -93,18 +93,18 @@ MechanismItems::MechanismItems(QGraphicsScene* scene, const k::Mechanism& m, Dra
   m_slotReach.assign(m_plan.slottedLinks.size(), 0.0);
   for (std::size_t i = 0; i < m_plan.frameLines.size(); ++i) {
     auto* line = add(new QGraphicsLineItem);
-    line->setPen(cosmeticPen(canvas::kFrameColor, canvas::kFrameWidthPx, Qt::DashLine));
+    line->setPen(cosmeticPen(kFrameColor, canvas::kFrameWidthPx, Qt::DashLine));
     line->setZValue(canvas::z::kFrame);
     m_frameLines.push_back(line);
   }
-  for (std::size_t i = 0; i < m_plan.constraintBars.size(); ++i) m_constraintBars.push_back(add(new LinkItem(canvas::kFrameColor)));
+  for (std::size_t i = 0; i < m_plan.constraintBars.size(); ++i) m_constraintBars.push_back(add(new LinkItem(kFrameColor)));
   m_grounds.assign(points, nullptr);
   m_joints.assign(points, nullptr);
   m_labels.assign(points, nullptr);
   m_paths.assign(points, nullptr);
   for (std::size_t i = 0; i < points; ++i) {
     if (m_plan.ground[i]) m_grounds[i] = add(new GroundPivotItem);
-    else if (m_plan.attached[i]) m_joints[i] = add(new JointHandleItem(JointHandleItem::Style::Dot, canvas::kCouplerPointColor));
+    else if (m_plan.attached[i]) m_joints[i] = add(new JointHandleItem(JointHandleItem::Style::Dot, kCouplerPointColor));
     else m_joints[i] = add(new JointHandleItem(JointHandleItem::Style::Pin));
     m_labels[i] = add(new LabelItem);
     m_labels[i]->setText(pointDisplayName(m.points[i].name));
@@ -305,7 +305,7 @@ void MechanismItems::setPresentationScale(double factor) {
   for (SlidewayItem* s : m_slideways) s->setPresentationScale(factor);
   for (CouplerPathItem* p : m_paths)
     if (p != nullptr) p->setPresentationScale(factor);
-  for (QGraphicsLineItem* line : m_frameLines) line->setPen(cosmeticPen(canvas::kFrameColor, canvas::kFrameWidthPx * factor, Qt::DashLine));
+  for (QGraphicsLineItem* line : m_frameLines) line->setPen(cosmeticPen(kFrameColor, canvas::kFrameWidthPx * factor, Qt::DashLine));
   for (std::size_t b = 0; b < m_bodies.size(); ++b)
     m_bodies[b]->setPen(cosmeticPen(linkColor(m_plan.bodies[b].link.index), kPlateSideFraction * canvas::kLinkWidthPx * factor));
   const auto scaleAll = [factor](const auto& items) {

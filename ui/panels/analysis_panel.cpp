@@ -1,5 +1,6 @@
 #include "ui/panels/analysis_panel.h"
 
+#include "ui/colors.h"
 #include "ui/number_text.h"
 
 #include "ui/document/design_templates.h"
@@ -31,10 +32,10 @@ QString className(k::GrashofClass c) {
   return {};
 }
 
-QString badge(const QString& colour, const QString& text, const QString& note) {
+QString badge(const QColor& colour, const QString& text, const QString& note) {
   return QString("<span style='background:%1; color:white; padding:3px; font-weight:bold'>&nbsp;%2&nbsp;</span>"
                  " &nbsp;%3")
-      .arg(colour, text.toHtmlEscaped(), note.toHtmlEscaped());
+      .arg(colour.name(), text.toHtmlEscaped(), note.toHtmlEscaped());
 }
 
 QString rangesText(const std::vector<k::AngleRange>& ranges) {
@@ -106,7 +107,7 @@ void AnalysisPanel::refreshFourBar() {
   const QString unit = QString::fromStdString(m_document->lengthUnit());
   const k::GrashofReport& g = *a.grashof;
   // Green for a Grashof linkage whose crank turns, amber for the rest.
-  m_badge->setText(badge(g.inputFullyRotates ? "#1b7f3b" : "#a15c00", className(g.category),
+  m_badge->setText(badge(g.inputFullyRotates ? kGrashofCrankBadgeColor : kGrashofRockerBadgeColor, className(g.category),
                          tr("shortest: %1").arg(QString::fromUtf8(k::toString(g.shortest).data()))));
   const QString relation = g.category == k::GrashofClass::ChangePoint ? "=" : (g.sPlusL < g.pPlusQ ? "<" : ">");
   m_sums->setText(QString("%1 %2 %3 %4").arg(numberText(g.sPlusL), relation, numberText(g.pPlusQ), unit));
@@ -130,7 +131,7 @@ void AnalysisPanel::refreshFourBar() {
 void AnalysisPanel::refreshLinkage() {
   const k::DesignAnalysis& a = m_document->analysis();
   const QString unit = QString::fromStdString(m_document->lengthUnit());
-  m_badge->setText(badge("#3b5b92", kindDisplayName(m_document->design()),
+  m_badge->setText(badge(kLinkageBadgeColor, kindDisplayName(m_document->design()),
                          tr("%1 points, %2 moving links").arg(m_document->mechanism().points.size()).arg(m_document->mechanism().links.size())));
   const auto& q = a.quickReturn;
   m_form->setRowVisible(m_timeRatio, q.has_value());

@@ -1,5 +1,6 @@
 #include "ui/panels/dynamics_panel.h"
 
+#include "ui/colors.h"
 #include "ui/document/dynamics_fields.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/panels/mass_table.h"
@@ -58,7 +59,7 @@ DynamicsPanel::DynamicsPanel(MechanismDocument* document, QWidget* parent)
       m_extraLoads(new QLabel) {
   auto* layout = new QVBoxLayout(this);
   m_refusal->setWordWrap(true);
-  m_refusal->setStyleSheet(QStringLiteral("color: #be1414"));
+  m_refusal->setStyleSheet(QStringLiteral("color: %1").arg(kRefusalColor.name()));
   m_refusal->setVisible(false);
   layout->addWidget(m_refusal);
 

@@ -1,5 +1,6 @@
 #include "ui/plots/crank_angle_chart.h"
 
+#include "ui/colors.h"
 #include "ui/plots/plot_area_alignment.h"
 
 #include <QChart>
@@ -25,7 +26,7 @@ QChart* makeCrankAngleChart(const QString& title, QValueAxis* xAxis, QValueAxis*
 }
 
 std::unique_ptr<VerticalMarker> makeCrankCursor(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis) {
-  return std::make_unique<VerticalMarker>(chart, xAxis, yAxis, QPen(QColor(0xc0, 0x20, 0x20), 1.5),
+  return std::make_unique<VerticalMarker>(chart, xAxis, yAxis, QPen(kCrankCursorColor, 1.5),
                                           QStringLiteral("cursor"));
 }
 

@@ -1,5 +1,6 @@
 #include "ui/plots/force_plot_panel.h"
 
+#include "ui/colors.h"
 #include "ui/document/design_fields.h"
 #include "ui/document/force_results.h"
 #include "ui/document/mechanism_document.h"
@@ -65,7 +66,7 @@ ForcePlotPanel::ForcePlotPanel(MechanismDocument* document, ForceResults* forces
   pages->addTab(polar, tr("Polar load diagrams"));
   layout->addWidget(m_charts, 1);
 
-  m_torque->setCurves({{QStringLiteral("torque"), tr("T₂"), QColor(230, 85, 13)}});
+  m_torque->setCurves({{QStringLiteral("torque"), tr("T₂"), kCrankColor}});
   // The two charts share the crank axis: same plot-area edges, so the cursors line up.
   for (ForceChartView* chart : {m_torque, m_joints}) connect(chart, &ForceChartView::resized, this, &ForcePlotPanel::alignCharts);
   connect(m_selector, &QComboBox::currentIndexChanged, this, [this] { refreshPolar(); });

@@ -1,5 +1,7 @@
 #include "ui/plots/force_series.h"
 
+#include "ui/colors.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -9,12 +11,6 @@ namespace linkwright::ui {
 namespace k = kinematics;
 
 namespace {
-
-// Distinct from the link colours, so a joint curve is not mistaken for a link's.
-constexpr std::array<QColor, 8> kJointPalette{
-    QColor{31, 119, 180}, QColor{214, 39, 40},  QColor{44, 160, 44},  QColor{148, 103, 189},
-    QColor{255, 127, 14}, QColor{23, 190, 207}, QColor{140, 86, 75},  QColor{127, 127, 127},
-};
 
 // Fills `out` with (x(j), y(j)) for the runs of samples where `ok(j)` and y(j) is finite (the
 // last guard: a value that is still not finite is left out, never drawn); reuses its lists.
@@ -61,7 +57,7 @@ std::vector<ForceJoint> forceJoints(const k::BodyModel& bodies) {
     joints.push_back({QString::fromStdString(bodies.revolutes[i].name), false, i, QColor()});
   for (std::size_t i = 0; i < bodies.prismatics.size(); ++i)
     joints.push_back({QString::fromStdString(bodies.prismatics[i].name), true, i, QColor()});
-  for (std::size_t i = 0; i < joints.size(); ++i) joints[i].color = kJointPalette[i % kJointPalette.size()];
+  for (std::size_t i = 0; i < joints.size(); ++i) joints[i].color = jointForceColor(i);
   return joints;
 }
 

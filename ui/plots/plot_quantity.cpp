@@ -1,6 +1,6 @@
 #include "ui/plots/plot_quantity.h"
 
-#include "ui/link_colors.h"
+#include "ui/colors.h"
 
 #include "kinematics/model/fourbar.h"
 #include "kinematics/solve/guide_line.h"

@@ -18,6 +18,7 @@
 namespace k = linkwright::kinematics;
 namespace fourbar = linkwright::kinematics::fourbar;
 namespace canvas = linkwright::ui::canvas;
+namespace ui = linkwright::ui;
 using linkwright::ui::test::nonGrashofDesign;
 using linkwright::ui::test::ShownView;
 
@@ -74,15 +75,15 @@ TEST_CASE("the view renders the linkage with its grid", "[canvas][render]") {
   REQUIRE_FALSE(image.isNull());
   CHECK(image.save("/tmp/linkwright_canvas_default.png"));
   // Every link is visible: a 6 px bar gives hundreds of pixels of its colour.
-  CHECK(countNear(image, canvas::kCrankColor) > 100);
-  CHECK(countNear(image, canvas::kCouplerColor) > 100);
-  CHECK(countNear(image, canvas::kRockerColor) > 100);
-  CHECK(longestLine(image, canvas::kGridColor) > image.width() / 2);
+  CHECK(countNear(image, ui::kCrankColor) > 100);
+  CHECK(countNear(image, ui::kCouplerColor) > 100);
+  CHECK(countNear(image, ui::kRockerColor) > 100);
+  CHECK(longestLine(image, ui::kGridColor) > image.width() / 2);
   // The crank is drawn where the view maps it: its midpoint has the crank's colour.
   const QPoint middle = v.pixelOf((v.point(fourbar::kO2) + v.point(fourbar::kB)) / 2.0);
   const QColor atMiddle = image.pixelColor(middle);
-  CHECK(std::abs(atMiddle.red() - canvas::kCrankColor.red()) < 24);
-  CHECK(std::abs(atMiddle.blue() - canvas::kCrankColor.blue()) < 24);
+  CHECK(std::abs(atMiddle.red() - ui::kCrankColor.red()) < 24);
+  CHECK(std::abs(atMiddle.blue() - ui::kCrankColor.blue()) < 24);
 }
 
 TEST_CASE("a non-Grashof linkage shows its unreachable crank angles", "[canvas][render]") {
@@ -91,17 +92,17 @@ TEST_CASE("a non-Grashof linkage shows its unreachable crank angles", "[canvas][
   ShownView v(design);
   const QImage image = grabView(v);
   CHECK(image.save("/tmp/linkwright_canvas_nongrashof.png"));
-  CHECK(countNear(image, overWhite(canvas::kFeasibleColor)) > 500);
-  CHECK(countNear(image, canvas::kCouplerPointColor) > 50);
+  CHECK(countNear(image, overWhite(ui::kFeasibleColor)) > 500);
+  CHECK(countNear(image, ui::kCouplerPointColor) > 50);
 }
 
 TEST_CASE("presentation mode renders bigger", "[canvas][render]") {
   ShownView v;
-  const int normal = countNear(grabView(v), canvas::kCouplerColor);
+  const int normal = countNear(grabView(v), ui::kCouplerColor);
   v.view.setPresentationScale(2.0);
   const QImage big = grabView(v);
   CHECK(big.save("/tmp/linkwright_canvas_presentation.png"));
-  CHECK(countNear(big, canvas::kCouplerColor) > 3 * normal / 2);
+  CHECK(countNear(big, ui::kCouplerColor) > 3 * normal / 2);
 }
 
 TEST_CASE("the export draws the scene upright, without the grid", "[canvas][render]") {
@@ -113,13 +114,13 @@ TEST_CASE("the export draws the scene upright, without the grid", "[canvas][rend
   v.view.renderLinkage(&painter, QRectF(0, 0, 900, 700));
   painter.end();
   CHECK(image.save("/tmp/linkwright_canvas_export.png"));
-  CHECK(countNear(image, canvas::kCouplerColor) > 100);
-  CHECK(longestLine(image, canvas::kGridColor) < image.width() / 4);
+  CHECK(countNear(image, ui::kCouplerColor) > 100);
+  CHECK(longestLine(image, ui::kGridColor) < image.width() / 4);
   // y up: C (above the frame line) is in the upper part of the picture, the frame line lower.
   int couplerRows = 0, couplerRowSum = 0;
   for (int y = 0; y < image.height(); ++y)
     for (int x = 0; x < image.width(); ++x)
-      if (image.pixelColor(x, y) == canvas::kCouplerColor) {
+      if (image.pixelColor(x, y) == ui::kCouplerColor) {
         ++couplerRows;
         couplerRowSum += y;
       }
@@ -141,20 +142,20 @@ TEST_CASE("a refused drag shows its reason next to the cursor", "[canvas][render
   const QRectF message = item->deviceTransform(v.view.viewportTransform()).mapRect(item->boundingRect());
   QTest::mouseRelease(v.viewport(), Qt::LeftButton, Qt::NoModifier, far);
   CHECK(image.save("/tmp/linkwright_canvas_refused.png"));
-  CHECK(countNear(image, canvas::kRefusalColor) > 30);
+  CHECK(countNear(image, ui::kRefusalColor) > 30);
   CHECK(QRectF(v.viewport()->rect()).contains(message));
-  CHECK(countNear(grabView(v), canvas::kRefusalColor) == 0);
+  CHECK(countNear(grabView(v), ui::kRefusalColor) == 0);
 }
 
 TEST_CASE("zoomed in, pins and links keep their pixel size", "[canvas][render]") {
   ShownView v;
-  const int normal = countNear(grabView(v), canvas::kPinOutlineColor);
+  const int normal = countNear(grabView(v), ui::kPinOutlineColor);
   v.wheel(v.pixelOf(v.point(fourbar::kB)), 20);  // 38 times closer
   const QImage image = grabView(v);
   CHECK(image.save("/tmp/linkwright_canvas_zoomed.png"));
   // Fewer pins are in view, but none has grown: outline pixels do not multiply.
-  CHECK(countNear(image, canvas::kPinOutlineColor) <= normal);
-  CHECK(countNear(image, canvas::kCrankColor) > 100);
+  CHECK(countNear(image, ui::kPinOutlineColor) <= normal);
+  CHECK(countNear(image, ui::kCrankColor) > 100);
 }
 
 TEST_CASE("QGraphicsView::render, as the image export uses it, draws the labels too", "[canvas][render]") {
@@ -172,8 +173,8 @@ TEST_CASE("QGraphicsView::render, as the image export uses it, draws the labels 
   v.view.render(&painter, QRectF(), v.viewport()->rect());
   painter.end();
   CHECK(rendered.save("/tmp/linkwright_canvas_render_metres.png"));
-  const int labelsShown = countNear(shown, canvas::kLabelColor);
+  const int labelsShown = countNear(shown, ui::kLabelColor);
   REQUIRE(labelsShown > 20);
-  CHECK(countNear(rendered, canvas::kLabelColor) >= labelsShown * 9 / 10);
-  CHECK(countNear(rendered, canvas::kVelocityColor.darker(120)) >= countNear(shown, canvas::kVelocityColor.darker(120)) * 9 / 10);
+  CHECK(countNear(rendered, ui::kLabelColor) >= labelsShown * 9 / 10);
+  CHECK(countNear(rendered, ui::kVelocityColor.darker(120)) >= countNear(shown, ui::kVelocityColor.darker(120)) * 9 / 10);
 }
