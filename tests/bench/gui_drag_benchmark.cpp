@@ -1,17 +1,18 @@
-// Drag-to-redraw latency of the real window, offscreen: a mouse drag of joint C on the canvas,
-// each move followed by everything it triggers (dragFourBar, the document's 720-interval
-// sweep, the analysis, the canvas items, all plot series) and the repaint that Qt then does
-// of the widgets that changed; also the worst case of repainting the whole window. Prints
-// the median and the 95th percentile per move. Timing lives here, never
-// in a pass/fail test.
+// Drag-to-redraw latency of the real window, offscreen: a mouse drag of a joint on the canvas
+// (C of the default four-bar, or the last point of a built-in example), each move followed by
+// everything it triggers (the drag, the document's validation and sweeps, the analysis, the
+// canvas items, all plot series) and the repaint that Qt then does of the widgets that
+// changed; also the worst case of repainting the whole window. Prints the median and the 95th
+// percentile per move. Timing lives here, never in a pass/fail test.
 //
-//   build/bin/linkwright_gui_benchmark [moves]      (default 400)
+//   build/bin/linkwright_gui_benchmark [moves] [example]      (default 400, the thesis four-bar)
 
 #include "ui/canvas/linkage_view.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/geometry.h"
 #include "ui/main_window.h"
 
+#include "kinematics/design/mechanism_design.h"
 #include "kinematics/model/fourbar.h"
 
 #include <QApplication>
@@ -45,9 +46,21 @@ int main(int argc, char** argv) {
   QApplication::processEvents();
   auto* doc = window.document();
   auto* canvas = window.canvas();
-  std::printf("cycle: %zu samples; plots and canvas redrawn after every move\n", doc->fourBar()->samples);
+  if (argc > 2) {
+    const auto example = linkwright::kinematics::designForExample(argv[2]);
+    if (!example) {
+      std::fprintf(stderr, "linkwright_gui_benchmark: no example named %s\n", argv[2]);
+      return 2;
+    }
+    doc->reset(*example);
+    QApplication::processEvents();
+  }
+  const std::size_t dragged = doc->fourBar() ? linkwright::kinematics::fourbar::kC.index : doc->mechanism().points.size() - 1;
+  std::printf("%s, dragging %s: %zu samples; plots and canvas redrawn after every move\n", argc > 2 ? argv[2] : "thesis four-bar",
+              doc->mechanism().points[dragged].name.c_str(), linkwright::kinematics::designSweepSpec(doc->design()).samples);
 
-  const QPointF start = canvas->mapFromScene(linkwright::ui::toQt(doc->pose().position[linkwright::kinematics::fourbar::kC.index]));
+  const QPointF start = canvas->mapFromScene(linkwright::ui::toQt(doc->pose().position[dragged]));
+  const long sweepsBefore = doc->sweepsRun();
   QTest::mousePress(canvas->viewport(), Qt::LeftButton, Qt::NoModifier, start.toPoint());
   std::vector<double> total, solve, full;
   total.reserve(static_cast<std::size_t>(moves));
@@ -70,7 +83,8 @@ int main(int argc, char** argv) {
     full.push_back(std::chrono::duration<double, std::milli>(t3 - t2).count() + solve.back());
   }
   QTest::mouseRelease(canvas->viewport(), Qt::LeftButton, Qt::NoModifier, start.toPoint());
-  std::printf("moves: %d, undo steps: %d\n", moves, doc->undoStack()->count());
+  std::printf("moves: %d, undo steps: %d, sweeps: %.2f per move\n", moves, doc->undoStack()->count(),
+              static_cast<double>(doc->sweepsRun() - sweepsBefore) / moves);
   std::printf("drag handling (core solve + document + item updates): median %.2f ms, p95 %.2f ms\n",
               percentile(solve, 0.5), percentile(solve, 0.95));
   std::printf("drag to redraw (handling + Qt's repaint of what changed): median %.2f ms, p95 %.2f ms, max %.2f ms\n",
