@@ -28,6 +28,7 @@ check_packages=(
   lintian                    # Debian's package checker
   appstream desktop-file-utils  # validate the AppStream data and the desktop entry
   mmdebstrap                 # a fresh Debian 12 root (packaging/fresh-root.sh)
+  clang-format               # the code style (.clang-format), checked by CI
 )
 
 fuzz_packages=(
