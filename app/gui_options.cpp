@@ -20,7 +20,9 @@ std::string guiUsage() {
          ".json as older versions saved it), or the thesis crank-rocker example, and\n"
          "animates it.\n\n"
          "Options:\n"
-         "  --example NAME      start on a built-in example:" + names + "\n"
+         "  --example NAME      start on a built-in example:" +
+         names +
+         "\n"
          "  --screenshot FILE   render the window to FILE (PNG) and exit, without animating\n"
          "  --crank-angle DEG   crank angle to show, degrees (default 0)\n"
          "  --presentation      large fonts and lines, full screen\n"
@@ -93,4 +95,4 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
   return o;
 }
 
-} // namespace linkwright::app
+}  // namespace linkwright::app

@@ -27,4 +27,4 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
 /// The --help text, with exit codes.
 std::string guiUsage();
 
-} // namespace linkwright::app
+}  // namespace linkwright::app

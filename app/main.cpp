@@ -31,7 +31,7 @@ int takeScreenshot(linkwright::ui::MainWindow& window, const QString& path) {
   return 0;
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);

@@ -13,8 +13,8 @@
 namespace linkwright::ui {
 
 inline constexpr std::array<QColor, 8> kLinkPalette{
-    QColor{230, 85, 13},   QColor{49, 130, 189}, QColor{49, 163, 84},  QColor{166, 118, 29},
-    QColor{23, 150, 170},  QColor{188, 80, 144}, QColor{90, 90, 160},  QColor{120, 120, 40},
+    QColor{230, 85, 13},  QColor{49, 130, 189}, QColor{49, 163, 84}, QColor{166, 118, 29},
+    QColor{23, 150, 170}, QColor{188, 80, 144}, QColor{90, 90, 160}, QColor{120, 120, 40},
 };
 
 /// The colour of moving link `index` (Mechanism::links order).
@@ -35,8 +35,8 @@ inline QColor transmissionColor(std::size_t ordinal) {
 /// The colour of the `ordinal`-th joint's force curves.
 inline QColor jointForceColor(std::size_t ordinal) {
   static constexpr std::array<QColor, 8> palette{
-      QColor{31, 119, 180}, QColor{214, 39, 40},  QColor{44, 160, 44},  QColor{148, 103, 189},
-      QColor{255, 127, 14}, QColor{23, 190, 207}, QColor{140, 86, 75},  QColor{127, 127, 127},
+      QColor{31, 119, 180}, QColor{214, 39, 40},  QColor{44, 160, 44}, QColor{148, 103, 189},
+      QColor{255, 127, 14}, QColor{23, 190, 207}, QColor{140, 86, 75}, QColor{127, 127, 127},
   };
   return palette[ordinal % palette.size()];
 }
@@ -70,7 +70,7 @@ inline constexpr QColor kLimitLineColor{0x55, 0x55, 0x55};
 inline constexpr QColor kLimitPointColor{0, 0, 0};
 
 // The panels and the message banner.
-inline constexpr QColor kGrashofCrankBadgeColor{0x1b, 0x7f, 0x3b};  ///< the crank turns fully
+inline constexpr QColor kGrashofCrankBadgeColor{0x1b, 0x7f, 0x3b};   ///< the crank turns fully
 inline constexpr QColor kGrashofRockerBadgeColor{0xa1, 0x5c, 0x00};  ///< it does not
 inline constexpr QColor kLinkageBadgeColor{0x3b, 0x5b, 0x92};
 inline constexpr QColor kErrorBannerColor{0xfd, 0xe7, 0xe9};
@@ -78,4 +78,4 @@ inline constexpr QColor kErrorBannerBorderColor{0xd1, 0x34, 0x38};
 inline constexpr QColor kInfoBannerColor{0xe7, 0xf0, 0xfd};
 inline constexpr QColor kInfoBannerBorderColor{0x2b, 0x6c, 0xb0};
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -11,4 +11,4 @@ namespace linkwright::ui {
 inline QPointF toQt(const Eigen::Vector2d& v) { return {v.x(), v.y()}; }
 inline Eigen::Vector2d toEigen(const QPointF& p) { return {p.x(), p.y()}; }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -1,20 +1,20 @@
 #include "ui/main_window.h"
 
 #include "ui/animation/crank_animator.h"
+#include "ui/canvas/force_arrows_item.h"
 #include "ui/canvas/linkage_view.h"
 #include "ui/dialogs/attach_dyad_dialog.h"
 #include "ui/document/design_templates.h"
 #include "ui/document/document_file.h"
+#include "ui/document/force_results.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/export/view_image.h"
 #include "ui/message_banner.h"
 #include "ui/panels/analysis_panel.h"
 #include "ui/panels/dimensions_panel.h"
+#include "ui/panels/dynamics_panel.h"
 #include "ui/panels/lengths_panel.h"
 #include "ui/panels/motion_panel.h"
-#include "ui/canvas/force_arrows_item.h"
-#include "ui/document/force_results.h"
-#include "ui/panels/dynamics_panel.h"
 #include "ui/plots/force_plot_panel.h"
 #include "ui/plots/plot_panel.h"
 #include "ui/plots/quality_bar.h"
@@ -52,10 +52,11 @@ MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), m_settings(std::make_unique<Settings>()), m_document(new MechanismDocument(this)),
       m_animator(new CrankAnimator(m_document, this)), m_banner(new MessageBanner(this)),
       m_canvas(new LinkageView(m_document, this)), m_plots(new PlotPanel(m_document, this)),
-      m_lengths(new LengthsPanel(m_document, this)), m_dimensions(new DimensionsPanel(m_document, this)), m_motion(new MotionPanel(m_document, m_animator, m_settings.get(), this)),
+      m_lengths(new LengthsPanel(m_document, this)), m_dimensions(new DimensionsPanel(m_document, this)),
+      m_motion(new MotionPanel(m_document, m_animator, m_settings.get(), this)),
       m_analysis(new AnalysisPanel(m_document, this)), m_forces(new ForceResults(m_document, this)),
-      m_dynamicsPanel(new DynamicsPanel(m_document, this)), m_forcePlots(new ForcePlotPanel(m_document, m_forces, this)),
-      m_forceArrows(new ForceArrowsItem) {
+      m_dynamicsPanel(new DynamicsPanel(m_document, this)),
+      m_forcePlots(new ForcePlotPanel(m_document, m_forces, this)), m_forceArrows(new ForceArrowsItem) {
   setObjectName("MainWindow");
   m_normalFont = font();
   auto* side = new QWidget(this);
@@ -101,8 +102,10 @@ MainWindow::MainWindow(QWidget* parent)
   m_document->setQuality(m_settings->samplingQuality());
   connect(m_plots->qualityBar(), &QualityBar::qualityChosen, this,
           [this](SamplingQuality quality) { m_settings->setSamplingQuality(quality); });
-  connect(m_canvas, &LinkageView::editRefused, this, [this](const QString& why) { statusBar()->showMessage(why, 5000); });
-  connect(m_canvas, &LinkageView::statusMessage, this, [this](const QString& text) { statusBar()->showMessage(text, 3000); });
+  connect(m_canvas, &LinkageView::editRefused, this,
+          [this](const QString& why) { statusBar()->showMessage(why, 5000); });
+  connect(m_canvas, &LinkageView::statusMessage, this,
+          [this](const QString& text) { statusBar()->showMessage(text, 3000); });
   connect(m_document, &MechanismDocument::changed, this, [this](Changes what) {
     if (what & (Change::File | Change::Design)) refreshTitle();
     if (what & Change::Design) showPanelsFor();
@@ -259,8 +262,9 @@ std::optional<QString> MainWindow::attachDyad(const kinematics::DyadRequest& req
 
 void MainWindow::openAttachDyadDialog() {
   m_animator->pause();
-  AttachDyadDialog dialog(m_document->mechanism(), m_document->crankAngle(),
-                          [this](const kinematics::DyadRequest& request) { return attachDyad(request); }, this);
+  AttachDyadDialog dialog(
+      m_document->mechanism(), m_document->crankAngle(),
+      [this](const kinematics::DyadRequest& request) { return attachDyad(request); }, this);
   dialog.exec();
 }
 
@@ -370,9 +374,12 @@ void MainWindow::refreshRecentFiles() {
   m_recentMenu->clear();
   const QStringList files = m_settings->recentFiles();
   for (const QString& path : files)
-    m_recentMenu->addAction(QFileInfo(path).fileName(), this, [this, path] {
-      if (maybeSave()) openFile(path);
-    })->setStatusTip(path);
+    m_recentMenu
+        ->addAction(QFileInfo(path).fileName(), this,
+                    [this, path] {
+                      if (maybeSave()) openFile(path);
+                    })
+        ->setStatusTip(path);
   m_recentMenu->setEnabled(!files.isEmpty());
 }
 
@@ -389,7 +396,8 @@ bool MainWindow::save() {
 }
 
 bool MainWindow::saveAs() {
-  const QString path = QFileDialog::getSaveFileName(this, tr("Save linkage"), m_document->filePath(), saveDocumentFilter());
+  const QString path =
+      QFileDialog::getSaveFileName(this, tr("Save linkage"), m_document->filePath(), saveDocumentFilter());
   if (path.isEmpty()) return false;
   return saveTo(withDocumentSuffix(path));
 }
@@ -439,4 +447,4 @@ bool MainWindow::maybeSave() {
 
 void MainWindow::showError(const QString& message) { m_banner->showMessage(message, MessageBanner::Kind::Error); }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -122,4 +122,4 @@ private:
   QFont m_normalFont;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -34,4 +34,4 @@ void MessageBanner::showMessage(const QString& text, Kind kind) {
 
 QString MessageBanner::text() const { return isHidden() ? QString() : m_text->text(); }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

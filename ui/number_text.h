@@ -15,4 +15,4 @@ inline QString numberText(double value, char format = 'g', int precision = 6) {
   return QString::number(value, format, precision);
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -18,7 +18,9 @@ void Settings::setSpeedInRpm(bool rpm) { m_settings.setValue("units/speedInRpm",
 SamplingQuality Settings::samplingQuality() const {
   return qualityFromKey(m_settings.value("plots/quality", qualityKey(SamplingQuality::Normal)).toString());
 }
-void Settings::setSamplingQuality(SamplingQuality quality) { m_settings.setValue("plots/quality", qualityKey(quality)); }
+void Settings::setSamplingQuality(SamplingQuality quality) {
+  m_settings.setValue("plots/quality", qualityKey(quality));
+}
 
 QStringList Settings::recentFiles() const {
   QStringList existing;
@@ -36,4 +38,4 @@ void Settings::addRecentFile(const QString& path) {
   m_settings.setValue("files/recent", files);
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -39,4 +39,4 @@ private:
   mutable QSettings m_settings;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -43,7 +43,8 @@ k::Result<Subject> subject(const std::string& name) {
     return Subject{name, *m, f->omega};
   }
   if (const auto e = k::findMechanismExample(name)) return Subject{name, e->mechanism, e->omega};
-  return k::Error{k::ErrorCode::InvalidValue, "--example", "--example: no example named '" + name + "' (see linkwright-cli examples)"};
+  return k::Error{k::ErrorCode::InvalidValue, "--example",
+                  "--example: no example named '" + name + "' (see linkwright-cli examples)"};
 }
 
 // The median wall time of a few runs, in microseconds, and the last run's result.
@@ -79,15 +80,17 @@ k::Result<std::vector<Row>> measureNewton(const Subject& s) {
   if (!start) return start.error();
   const k::Mechanism newton = k::withNewtonPoints(s.mechanism, start->position);
   Row closed{s.name, "closed-form", kNewtonSamples, 0.0, {}, "-"};
-  const auto exact = timed([&] { return k::sampledPeaks(s.mechanism, s.omega, kNewtonSamples, k::DerivativeMethod::Exact); },
-                           closed.microseconds);
+  const auto exact =
+      timed([&] { return k::sampledPeaks(s.mechanism, s.omega, kNewtonSamples, k::DerivativeMethod::Exact); },
+            closed.microseconds);
   if (!exact) return exact.error();
   std::vector<Row> rows{closed};
   for (const double tolerance : kNewtonTolerances) {
     Row r{s.name, "newton-" + k::io::formatShort(tolerance, 1), kNewtonSamples, 0.0, {}, "closed-form"};
     const k::NewtonSettings settings{tolerance, 50};
-    const auto read = timed([&] { return k::sampledPeaks(newton, s.omega, kNewtonSamples, k::DerivativeMethod::Exact, settings); },
-                            r.microseconds);
+    const auto read =
+        timed([&] { return k::sampledPeaks(newton, s.omega, kNewtonSamples, k::DerivativeMethod::Exact, settings); },
+              r.microseconds);
     if (!read) return read.error();
     r.error = k::peakError(*read, *exact);
     rows.push_back(r);
@@ -100,7 +103,8 @@ k::Result<std::vector<Row>> measure(const Subject& s) {
   if (!reference) return k::Error{reference.error().code, "--example", s.name + ": " + reference.error().message};
   std::vector<Row> rows;
   for (const std::size_t n : kSampleCounts) {
-    for (const auto& choice : {std::pair{"samples", k::DerivativeMethod::Exact}, {"frames", k::DerivativeMethod::FiniteDifference}}) {
+    for (const auto& choice :
+         {std::pair{"samples", k::DerivativeMethod::Exact}, {"frames", k::DerivativeMethod::FiniteDifference}}) {
       // A plain local, not a structured binding: clang 14 cannot capture those in a lambda.
       const k::DerivativeMethod derivative = choice.second;
       Row r{s.name, choice.first, n, 0.0, {}};
@@ -123,12 +127,13 @@ k::Result<std::vector<Row>> measure(const Subject& s) {
 
 std::string csv(const std::vector<Row>& rows) {
   std::vector<std::vector<std::string>> table;
-  table.push_back({"example", "method", "samples_per_rev", "time_us", "omega_rel_error", "alpha_rel_error", "speed_rel_error",
-                   "acceleration_rel_error", "angle_error_deg", "reference"});
+  table.push_back({"example", "method", "samples_per_rev", "time_us", "omega_rel_error", "alpha_rel_error",
+                   "speed_rel_error", "acceleration_rel_error", "angle_error_deg", "reference"});
   for (const Row& r : rows)
     table.push_back({r.example, r.method, std::to_string(r.samples), k::io::formatShort(r.microseconds, 4),
-                     k::io::formatShort(r.error.omega, 3), k::io::formatShort(r.error.alpha, 3), k::io::formatShort(r.error.speed, 3),
-                     k::io::formatShort(r.error.acceleration, 3), k::io::formatShort(k::radToDeg(r.error.angle), 3), r.reference});
+                     k::io::formatShort(r.error.omega, 3), k::io::formatShort(r.error.alpha, 3),
+                     k::io::formatShort(r.error.speed, 3), k::io::formatShort(r.error.acceleration, 3),
+                     k::io::formatShort(k::radToDeg(r.error.angle), 3), r.reference});
   std::ostringstream out;
   for (const auto& cells : table) {
     for (std::size_t i = 0; i < cells.size(); ++i) out << (i ? "," : "") << k::io::csvField(cells[i]);
@@ -146,8 +151,10 @@ std::string plot(const std::vector<Row>& rows) {
     double& w = worst[r.method][r.samples];
     w = std::max({w, r.error.worstRate(), 1e-16});
   }
-  const std::pair<const char*, const char*> styles[] = {{"frames", "#d62728"}, {"samples", "#1f77b4"}, {"refined", "#2ca02c"}};
-  const std::map<std::string, std::string> labels{{"frames", "frame differences"}, {"samples", "read off samples"}, {"refined", "refined (Linkwright)"}};
+  const std::pair<const char*, const char*> styles[] = {
+      {"frames", "#d62728"}, {"samples", "#1f77b4"}, {"refined", "#2ca02c"}};
+  const std::map<std::string, std::string> labels{
+      {"frames", "frame differences"}, {"samples", "read off samples"}, {"refined", "refined (Linkwright)"}};
   std::vector<PlotSeries> series;
   for (const auto& [method, colour] : styles) {
     PlotSeries s{labels.at(method), colour, std::string(method) == "frames", {}};
@@ -158,7 +165,7 @@ std::string plot(const std::vector<Row>& rows) {
                        "relative error", series);
 }
 
-} // namespace
+}  // namespace
 
 ExitCode runAccuracy(const Invocation& inv, std::ostream& out, std::ostream& err) {
   std::vector<std::string> names(std::begin(kDefaultExamples), std::end(kDefaultExamples));
@@ -190,4 +197,4 @@ ExitCode runAccuracy(const Invocation& inv, std::ostream& out, std::ostream& err
   return ExitCode::Success;
 }
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

@@ -44,7 +44,8 @@ void reportUnassembled(const kinematics::SweepResult& result, const ResolvedMech
 }
 
 // The forces the invocation asks for, or the reason there are none.
-kinematics::Result<std::optional<kinematics::ForceSweep>> forcesFor(const Invocation& inv, const SweptMechanism& swept) {
+kinematics::Result<std::optional<kinematics::ForceSweep>> forcesFor(const Invocation& inv,
+                                                                    const SweptMechanism& swept) {
   if (!inv.forces) return std::optional<kinematics::ForceSweep>{};
   const ResolvedMechanism& r = swept.resolved;
   if (r.dynamics.empty())
@@ -58,14 +59,15 @@ kinematics::Result<std::optional<kinematics::ForceSweep>> forcesFor(const Invoca
 }
 
 // Samples whose kinematics exist but whose forces do not (a structure that locks there).
-void reportUndeterminedForces(const kinematics::SweepResult& result, const kinematics::ForceSweep& forces, std::ostream& err) {
+void reportUndeterminedForces(const kinematics::SweepResult& result, const kinematics::ForceSweep& forces,
+                              std::ostream& err) {
   for (std::size_t j = 0; j < result.size(); ++j)
     if (result.ok(j) && !forces.ok(j))
-      err << "linkwright-cli: note: the joint forces are not determined at crank angle " << degreesText(result.inputAngle[j])
-          << " (the Newton–Euler system is singular; force cells left empty)\n";
+      err << "linkwright-cli: note: the joint forces are not determined at crank angle "
+          << degreesText(result.inputAngle[j]) << " (the Newton–Euler system is singular; force cells left empty)\n";
 }
 
-} // namespace
+}  // namespace
 
 ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err) {
   const auto fail = [&](const Error& e) {
@@ -107,4 +109,4 @@ ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err)
   return ExitCode::Success;
 }
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

@@ -35,11 +35,10 @@ std::vector<std::string> splitCommas(const std::string& text) {
 }
 
 // Reads N comma-separated numbers; the error names the option and quotes the bad part.
-kinematics::Result<std::vector<double>> parseList(const std::string& option, const std::string& text,
-                                                  std::size_t count, const std::string& shape) {
+kinematics::Result<std::vector<double>> parseList(const std::string& option, const std::string& text, std::size_t count,
+                                                  const std::string& shape) {
   const std::vector<std::string> parts = splitCommas(text);
-  if (parts.size() != count)
-    return usage(option, option + " expects " + shape + " (got '" + text + "')");
+  if (parts.size() != count) return usage(option, option + " expects " + shape + " (got '" + text + "')");
   std::vector<double> values;
   for (const std::string& part : parts) {
     const auto value = parseNumber(part);
@@ -50,15 +49,16 @@ kinematics::Result<std::vector<double>> parseList(const std::string& option, con
 }
 
 const std::set<std::string>& optionsOf(Command command) {
-  static const std::set<std::string> analyze{"--fourbar", "--example", "--unit", "--rpm", "--omega",
-                                             "--alpha", "--from", "--to", "--step", "--samples",
-                                             "--branch", "--coupler-point", "-o", "--output", "--format",
-                                             "--forces"};
-  static const std::set<std::string> extremes{"--fourbar", "--example", "--unit", "--rpm", "--omega", "--alpha", "--from",
-                                              "--to", "--step", "--samples", "--branch", "--coupler-point"};
+  static const std::set<std::string> analyze{
+      "--fourbar", "--example", "--unit",   "--rpm",           "--omega", "--alpha",  "--from",   "--to",
+      "--step",    "--samples", "--branch", "--coupler-point", "-o",      "--output", "--format", "--forces"};
+  static const std::set<std::string> extremes{"--fourbar", "--example", "--unit",   "--rpm",
+                                              "--omega",   "--alpha",   "--from",   "--to",
+                                              "--step",    "--samples", "--branch", "--coupler-point"};
   static const std::set<std::string> classify{"--fourbar", "--example", "--unit", "--branch", "--json"};
-  static const std::set<std::string> arm{"--example", "--arm", "--from-point", "--to-point", "--speed", "--samples",
-                                         "--step-time", "--elbow", "--unit", "-o", "--output", "--format"};
+  static const std::set<std::string> arm{"--example", "--arm",     "--from-point", "--to-point",
+                                         "--speed",   "--samples", "--step-time",  "--elbow",
+                                         "--unit",    "-o",        "--output",     "--format"};
   static const std::set<std::string> centres{"--fourbar", "--example", "--unit", "--branch", "--at"};
   static const std::set<std::string> accuracy{"--example", "-o", "--output", "--svg"};
   static const std::set<std::string> none{};
@@ -99,7 +99,8 @@ std::optional<Error> positive(std::optional<double>& target, const std::string& 
 }
 
 // X,Y with both finite.
-std::optional<Error> point(std::optional<Eigen::Vector2d>& target, const std::string& option, const std::string& value) {
+std::optional<Error> point(std::optional<Eigen::Vector2d>& target, const std::string& option,
+                           const std::string& value) {
   auto list = parseList(option, value, 2, "X,Y");
   if (!list) return list.error();
   for (const auto& [v, axis] : {std::pair{(*list)[0], "x"}, {(*list)[1], "y"}})
@@ -157,7 +158,8 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
   } else if (option == "--example") {
     inv.example = value;
   } else if (option == "--unit") {
-    if (value.empty() || value.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ") != std::string::npos)
+    if (value.empty() ||
+        value.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ") != std::string::npos)
       return usage(option, option + " must be a unit name made of letters, e.g. mm, m, in (got '" + value + "')");
     inv.lengthUnit = value;
   } else if (option == "--rpm") return number(inv.rpm);
@@ -207,7 +209,8 @@ std::optional<Error> checkArm(const Invocation& inv) {
                                                                  {inv.speed.has_value(), "--speed", "V"}};
   for (const auto& [given, option, shape] : required)
     if (!given)
-      return usage(option, "arm needs " + option + " " + shape + ", or --example seed-arm (see linkwright-cli --help arm)");
+      return usage(option,
+                   "arm needs " + option + " " + shape + ", or --example seed-arm (see linkwright-cli --help arm)");
   return std::nullopt;
 }
 
@@ -222,18 +225,21 @@ std::optional<Error> checkCombination(const Invocation& inv) {
                                   " needs FILE.json, --fourbar FRAME,CRANK,COUPLER,ROCKER or --example NAME");
   if (inv.fourBar && inv.example) return usage("--example", "--fourbar and --example cannot be used together");
   if (inv.documentPath && (inv.fourBar || inv.example))
-    return usage(inv.fourBar ? "--fourbar" : "--example",
-                 std::string(inv.fourBar ? "--fourbar" : "--example") + " cannot be used with a document (" + *inv.documentPath + ")");
+    return usage(inv.fourBar ? "--fourbar" : "--example", std::string(inv.fourBar ? "--fourbar" : "--example") +
+                                                              " cannot be used with a document (" + *inv.documentPath +
+                                                              ")");
   if (inv.rpm && inv.omega) return usage("--omega", "--rpm and --omega cannot be used together");
   if (inv.stepDeg && inv.samples) return usage("--samples", "--step and --samples cannot be used together");
   return std::nullopt;
 }
 
-} // namespace
+}  // namespace
 
 kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& args) {
   Invocation inv;
-  if (args.empty()) return usage("COMMAND", "missing command (analyze, extremes, classify, arm, centres, accuracy or examples; see --help)");
+  if (args.empty())
+    return usage("COMMAND",
+                 "missing command (analyze, extremes, classify, arm, centres, accuracy or examples; see --help)");
   const std::string& first = args[0];
   if (first == "--help" || first == "-h" || first == "help") {
     inv.command = Command::Help;
@@ -251,8 +257,11 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   else if (first == "arm") inv.command = Command::Arm;
   else if (first == "centres") inv.command = Command::Centres;
   else if (first == "accuracy") inv.command = Command::Accuracy;
-  else if (!first.empty() && first[0] == '-') return usage(first, "unknown option '" + first + "' (see linkwright-cli --help)");
-  else return usage(first, "unknown command '" + first + "' (commands: analyze, extremes, classify, arm, centres, accuracy, examples; see --help)");
+  else if (!first.empty() && first[0] == '-')
+    return usage(first, "unknown option '" + first + "' (see linkwright-cli --help)");
+  else
+    return usage(first, "unknown command '" + first +
+                            "' (commands: analyze, extremes, classify, arm, centres, accuracy, examples; see --help)");
   if (inv.command == Command::Arm) inv.lengthUnit = "m";  // the arm's seed (004) works in metres
 
   std::set<std::string> seen;
@@ -272,7 +281,9 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
     const bool takesDocument = inv.command == Command::Analyze || inv.command == Command::Extremes ||
                                inv.command == Command::Classify || inv.command == Command::Centres;
     if (takesDocument && !option.empty() && option[0] != '-' && !inlineValue) {
-      if (inv.documentPath) return usage(option, "only one document can be analysed at a time (got '" + *inv.documentPath + "' and '" + option + "')");
+      if (inv.documentPath)
+        return usage(option, "only one document can be analysed at a time (got '" + *inv.documentPath + "' and '" +
+                                 option + "')");
       inv.documentPath = option;
       continue;
     }
@@ -282,7 +293,8 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
                                commandName(inv.command) + ")");
     }
     const std::string canonical = option == "-o" ? "--output" : option;
-    if (canonical != "--at" && !seen.insert(canonical).second) return usage(option, option + " is given more than once");
+    if (canonical != "--at" && !seen.insert(canonical).second)
+      return usage(option, option + " is given more than once");
     std::string value;
     if (takesValue(option)) {
       if (inlineValue) value = *inlineValue;
@@ -297,4 +309,4 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   return inv;
 }
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

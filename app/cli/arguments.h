@@ -55,4 +55,4 @@ struct Invocation {
 /// Parses the arguments after the program name.
 kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& args);
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

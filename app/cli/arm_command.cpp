@@ -7,10 +7,10 @@
 #include "app/cli/commands.h"
 
 #include "kinematics/analysis/two_link_arm.h"
-#include "kinematics/model/validate.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/units.h"
+#include "kinematics/model/validate.h"
 
 #include <algorithm>
 #include <cmath>
@@ -36,9 +36,9 @@ struct ArmRequest {
   k::TwoLinkArm arm;
   k::LinePath path;
   k::Branch elbow = k::Branch::Open;
-  double duration = 0.0;        ///< s
-  Eigen::Vector2d velocity;     ///< of the tip, length unit / s
-  std::vector<double> times;    ///< s
+  double duration = 0.0;      ///< s
+  Eigen::Vector2d velocity;   ///< of the tip, length unit / s
+  std::vector<double> times;  ///< s
 };
 
 k::Error badValue(const std::string& option, const std::string& message) {
@@ -62,7 +62,8 @@ k::Result<std::vector<double>> timeGrid(const Invocation& inv, double duration) 
   }
   const long long n = inv.samples.value_or(kDefaultSamples);
   if (n > kMaxSamples)
-    return badValue("--samples", "--samples must be between 2 and " + std::to_string(kMaxSamples) + " (got " + std::to_string(n) + ")");
+    return badValue("--samples", "--samples must be between 2 and " + std::to_string(kMaxSamples) + " (got " +
+                                     std::to_string(n) + ")");
   for (long long j = 0; j < n; ++j) times.push_back(duration * static_cast<double>(j) / static_cast<double>(n - 1));
   return times;
 }
@@ -79,10 +80,13 @@ k::Result<ArmRequest> armRequest(const Invocation& inv) {
   ArmRequest r;
   if (inv.example) {
     if (*inv.example != kSeedArmName)
-      return badValue("--example", "--example: no arm example named '" + *inv.example + "' (arm has one: " + kSeedArmName + ")");
+      return badValue("--example",
+                      "--example: no arm example named '" + *inv.example + "' (arm has one: " + kSeedArmName + ")");
     if (inv.lengthUnit != "m")
-      return badValue("--unit", "--unit: the " + std::string(kSeedArmName) + " example is in metres; give --arm, --from-point, "
-                                "--to-point and --speed without --example to work in " + inv.lengthUnit);
+      return badValue("--unit", "--unit: the " + std::string(kSeedArmName) +
+                                    " example is in metres; give --arm, --from-point, "
+                                    "--to-point and --speed without --example to work in " +
+                                    inv.lengthUnit);
     r.arm = kSeedArm;
     r.path = kSeedPath;
     r.elbow = k::Branch::Crossed;
@@ -218,14 +222,14 @@ bool reportUnreachable(const ArmRequest& r, const std::vector<ArmRow>& rows, con
   const std::size_t missed = static_cast<std::size_t>(
       std::count_if(rows.begin(), rows.end(), [](const ArmRow& row) { return row.status == RowStatus::Unreachable; }));
   if ((!exact || exact->unreachable.empty()) && missed == 0) return false;
-  err << "linkwright-cli: the tip leaves the arm's workspace (" << formatShort(std::abs(r.arm.upper - r.arm.forearm)) << " "
-      << u << " to " << formatShort(r.arm.upper + r.arm.forearm) << " " << u << " from the shoulder): " << missed << " of "
-      << rows.size() << " samples cannot be reached; their joint cells are left empty.\n";
+  err << "linkwright-cli: the tip leaves the arm's workspace (" << formatShort(std::abs(r.arm.upper - r.arm.forearm))
+      << " " << u << " to " << formatShort(r.arm.upper + r.arm.forearm) << " " << u << " from the shoulder): " << missed
+      << " of " << rows.size() << " samples cannot be reached; their joint cells are left empty.\n";
   if (exact)
     for (const auto& [from, to] : exact->unreachable)
       err << "  unreachable for t = " << formatShort(from) << " s to " << formatShort(to) << " s (exact): tip from "
-          << pointText(r.path.from + r.velocity * from) << " " << u << " to " << pointText(r.path.from + r.velocity * to)
-          << " " << u << "\n";
+          << pointText(r.path.from + r.velocity * from) << " " << u << " to "
+          << pointText(r.path.from + r.velocity * to) << " " << u << "\n";
   return true;
 }
 
@@ -235,13 +239,13 @@ void reportSingular(const ArmRequest& r, const std::vector<ArmRow>& rows, const 
     const double reach = row.tip.norm();
     const double outer = r.arm.upper + r.arm.forearm, inner = std::abs(r.arm.upper - r.arm.forearm);
     const bool stretched = std::abs(reach - outer) < std::abs(reach - inner);
-    err << "linkwright-cli: note: the arm is " << (stretched ? "stretched out" : "folded") << " at t = "
-        << formatShort(row.time) << " s, tip " << pointText(row.tip) << " " << u
+    err << "linkwright-cli: note: the arm is " << (stretched ? "stretched out" : "folded")
+        << " at t = " << formatShort(row.time) << " s, tip " << pointText(row.tip) << " " << u
         << ": joint rates are undefined there (ω and α cells left empty)\n";
   }
 }
 
-} // namespace
+}  // namespace
 
 ExitCode runArm(const Invocation& inv, std::ostream& out, std::ostream& err) {
   const auto request = armRequest(inv);
@@ -266,4 +270,4 @@ ExitCode runArm(const Invocation& inv, std::ostream& out, std::ostream& err) {
   return reportUnreachable(*request, rows, inv.lengthUnit, err) ? ExitCode::NotAssemblable : ExitCode::Success;
 }
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

@@ -35,4 +35,4 @@ std::optional<std::string> writeFileAtomically(const std::string& path, const st
   return std::nullopt;
 }
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

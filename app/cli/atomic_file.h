@@ -10,4 +10,4 @@ namespace linkwright::cli {
 /// nullopt on success, else a sentence naming the file and the reason.
 std::optional<std::string> writeFileAtomically(const std::string& path, const std::string& contents);
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

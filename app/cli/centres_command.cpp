@@ -89,8 +89,9 @@ void printPose(std::ostream& out, const k::InstantCentres& c, const std::string&
     const k::InstantCentre* centre;
     int i, j;
     const char* pin;
-  } rows[] = {{"I12", &c.i12, 1, 2, "O2"}, {"I13", &c.i13, 1, 3, nullptr}, {"I14", &c.i14, 1, 4, fourBar ? "O4" : nullptr},
-              {"I23", &c.i23, 2, 3, "B"},  {"I24", &c.i24, 2, 4, nullptr}, {"I34", &c.i34, 3, 4, "C"}};
+  } rows[] = {
+      {"I12", &c.i12, 1, 2, "O2"}, {"I13", &c.i13, 1, 3, nullptr}, {"I14", &c.i14, 1, 4, fourBar ? "O4" : nullptr},
+      {"I23", &c.i23, 2, 3, "B"},  {"I24", &c.i24, 2, 4, nullptr}, {"I34", &c.i34, 3, 4, "C"}};
   for (const auto& row : rows) {
     std::string note = centreNote(*row.centre, row.i, row.j, b, row.pin);
     if (!fourBar && row.centre == &c.i14) note = "the slider translates along the guide";
@@ -110,9 +111,9 @@ void printPose(std::ostream& out, const k::InstantCentres& c, const std::string&
 
 void printHeader(std::ostream& out, const k::InstantCentres& c, const std::string& unit) {
   const BodyNames b = bodiesOf(c.linkage);
-  out << "instant centres of the " << (c.linkage == k::CentreLinkage::FourBar ? "four-bar" : "slider-crank") << ": bodies 1 "
-      << b.names[1] << ", 2 " << b.names[2] << ", 3 " << b.names[3] << ", 4 " << b.names[4] << "; lengths in " << unit
-      << ", directions CCW from +x\n";
+  out << "instant centres of the " << (c.linkage == k::CentreLinkage::FourBar ? "four-bar" : "slider-crank")
+      << ": bodies 1 " << b.names[1] << ", 2 " << b.names[2] << ", 3 " << b.names[3] << ", 4 " << b.names[4]
+      << "; lengths in " << unit << ", directions CCW from +x\n";
   if (c.linkage == k::CentreLinkage::SliderCrank)
     out << "slider velocity v and force F along the guide, direction "
         << formatShort(k::radToDeg(std::atan2(c.guideDirection.y(), c.guideDirection.x()))) << "°\n";
@@ -120,7 +121,7 @@ void printHeader(std::ostream& out, const k::InstantCentres& c, const std::strin
          "negative when the output turns against the input\n";
 }
 
-} // namespace
+}  // namespace
 
 ExitCode runCentres(const Invocation& inv, std::ostream& out, std::ostream& err) {
   const auto resolved = resolveMechanism(inv);
@@ -152,4 +153,4 @@ ExitCode runCentres(const Invocation& inv, std::ostream& out, std::ostream& err)
   return code;
 }
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

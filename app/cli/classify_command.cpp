@@ -18,8 +18,8 @@ namespace linkwright::cli {
 namespace {
 
 namespace k = kinematics;
-using k::io::formatJsonNumber;
 using k::io::formatFixed;
+using k::io::formatJsonNumber;
 
 // Everything classify reports, computed once and printed as text or JSON.
 struct Classification {
@@ -44,10 +44,11 @@ void printText(const Classification& c, std::ostream& out) {
   const auto& l = c.fourBar.lengths;
   const std::string& u = c.fourBar.lengthUnit;
   const auto len = [&](double v) { return k::io::formatShort(v) + " " + u; };
-  out << "four-bar             frame " << len(l.frame) << ", crank " << len(l.crank) << ", coupler "
-      << len(l.coupler) << ", rocker " << len(l.rocker) << ", branch " << branchName(c.fourBar.branch) << "\n";
-  out << "Grashof class        " << k::toString(c.grashof.category) << " (shortest link: "
-      << k::toString(c.grashof.shortest) << ", longest: " << k::toString(c.grashof.longest) << ")\n";
+  out << "four-bar             frame " << len(l.frame) << ", crank " << len(l.crank) << ", coupler " << len(l.coupler)
+      << ", rocker " << len(l.rocker) << ", branch " << branchName(c.fourBar.branch) << "\n";
+  out << "Grashof class        " << k::toString(c.grashof.category)
+      << " (shortest link: " << k::toString(c.grashof.shortest) << ", longest: " << k::toString(c.grashof.longest)
+      << ")\n";
   out << "S + L, P + Q         " << len(c.grashof.sPlusL) << ", " << len(c.grashof.pPlusQ) << "\n";
   out << "mobility (Gruebler)  M = 3(" << c.mobility.links << " - 1) - 2*" << c.mobility.fullJoints << " - "
       << c.mobility.halfJoints << " = " << c.mobility.mobility << "\n";
@@ -61,9 +62,10 @@ void printText(const Classification& c, std::ostream& out) {
     out << "\n";
   }
   if (c.transmission)
-    out << "transmission angle   min " << deg(c.transmission->minimum) << " at crank " << deg(c.transmission->minimumAtCrank)
-        << ", max " << deg(c.transmission->maximum) << " at crank " << deg(c.transmission->maximumAtCrank)
-        << " (worst deviation from 90°: " << deg(c.transmission->worstDeviation) << ")\n";
+    out << "transmission angle   min " << deg(c.transmission->minimum) << " at crank "
+        << deg(c.transmission->minimumAtCrank) << ", max " << deg(c.transmission->maximum) << " at crank "
+        << deg(c.transmission->maximumAtCrank) << " (worst deviation from 90°: " << deg(c.transmission->worstDeviation)
+        << ")\n";
   for (const auto& p : c.limits.positions)
     out << "rocker limit         " << (p.extended ? "extended" : "folded  ") << " crank " << deg(p.crankAngle)
         << ", rocker " << deg(p.rockerAngle) << "\n";
@@ -84,9 +86,9 @@ void printJson(const Classification& c, std::ostream& out) {
       << branchName(c.fourBar.branch) << "\",\n";
   out << "  \"grashof\": {\"class\": \"" << k::toString(g.category) << "\", \"shortest\": \"" << k::toString(g.shortest)
       << "\", \"longest\": \"" << k::toString(g.longest) << "\", \"s_plus_l\": " << formatJsonNumber(g.sPlusL)
-      << ", \"p_plus_q\": " << formatJsonNumber(g.pPlusQ) << ", \"crank_fully_rotates\": "
-      << (g.inputFullyRotates ? "true" : "false") << ", \"rocker_fully_rotates\": "
-      << (g.outputFullyRotates ? "true" : "false") << "},\n";
+      << ", \"p_plus_q\": " << formatJsonNumber(g.pPlusQ)
+      << ", \"crank_fully_rotates\": " << (g.inputFullyRotates ? "true" : "false")
+      << ", \"rocker_fully_rotates\": " << (g.outputFullyRotates ? "true" : "false") << "},\n";
   out << "  \"mobility\": {\"links\": " << c.mobility.links << ", \"full_joints\": " << c.mobility.fullJoints
       << ", \"half_joints\": " << c.mobility.halfJoints << ", \"mobility\": " << c.mobility.mobility << "},\n";
   out << "  \"assemblable_crank_range_deg\": {\"full_rotation\": " << (c.range.fullRotation ? "true" : "false")
@@ -95,16 +97,18 @@ void printJson(const Classification& c, std::ostream& out) {
     out << (i ? ", " : "") << "[" << jsonDeg(c.range.ranges[i].from) << ", " << jsonDeg(c.range.ranges[i].to) << "]";
   out << "]},\n  \"transmission_angle_deg\": ";
   if (c.transmission)
-    out << "{\"min\": " << jsonDeg(c.transmission->minimum) << ", \"min_at_crank\": " << jsonDeg(c.transmission->minimumAtCrank)
-        << ", \"max\": " << jsonDeg(c.transmission->maximum) << ", \"max_at_crank\": " << jsonDeg(c.transmission->maximumAtCrank)
+    out << "{\"min\": " << jsonDeg(c.transmission->minimum)
+        << ", \"min_at_crank\": " << jsonDeg(c.transmission->minimumAtCrank)
+        << ", \"max\": " << jsonDeg(c.transmission->maximum)
+        << ", \"max_at_crank\": " << jsonDeg(c.transmission->maximumAtCrank)
         << ", \"worst_deviation_from_90\": " << jsonDeg(c.transmission->worstDeviation) << "}";
-  else
-    out << "null";
+  else out << "null";
   out << ",\n  \"rocker_limit_positions\": [";
   for (std::size_t i = 0; i < c.limits.positions.size(); ++i) {
     const auto& p = c.limits.positions[i];
-    out << (i ? ", " : "") << "{\"kind\": \"" << (p.extended ? "extended" : "folded") << "\", \"crank_angle_deg\": "
-        << jsonDeg(p.crankAngle) << ", \"rocker_angle_deg\": " << jsonDeg(p.rockerAngle) << "}";
+    out << (i ? ", " : "") << "{\"kind\": \"" << (p.extended ? "extended" : "folded")
+        << "\", \"crank_angle_deg\": " << jsonDeg(p.crankAngle) << ", \"rocker_angle_deg\": " << jsonDeg(p.rockerAngle)
+        << "}";
   }
   out << "],\n  \"rocker_swing_deg\": " << jsonOptional(c.limits.rockerSwing, jsonDeg)
       << ",\n  \"time_ratio\": " << jsonOptional(c.limits.timeRatio, formatJsonNumber)
@@ -112,7 +116,7 @@ void printJson(const Classification& c, std::ostream& out) {
       << ",\n  \"quick_stroke_crank_arc_deg\": " << jsonOptional(c.limits.quickStrokeCrankArc, jsonDeg) << "\n}\n";
 }
 
-} // namespace
+}  // namespace
 
 namespace {
 
@@ -123,16 +127,19 @@ ExitCode classifyShaper(const k::MechanismExample& e, bool json, std::ostream& o
   if (json) {
     out << "{\n  \"mechanism\": " << k::io::jsonQuote(e.kind) << ",\n  \"mobility\": " << m.mobility;
     if (q)
-      out << ",\n  \"limit_crank_angles_deg\": [" << jsonDeg(q->firstLimitCrankAngle) << ", " << jsonDeg(q->secondLimitCrankAngle)
-          << "],\n  \"time_ratio\": " << formatJsonNumber(q->timeRatio) << ",\n  \"slow_stroke_crank_arc_deg\": "
-          << jsonDeg(q->slowStrokeCrankArc) << ",\n  \"quick_stroke_crank_arc_deg\": " << jsonDeg(q->quickStrokeCrankArc)
-          << ",\n  \"rocker_swing_deg\": " << jsonDeg(q->rockerSwing) << ",\n  \"whitworth\": " << (q->whitworth ? "true" : "false")
+      out << ",\n  \"limit_crank_angles_deg\": [" << jsonDeg(q->firstLimitCrankAngle) << ", "
+          << jsonDeg(q->secondLimitCrankAngle) << "],\n  \"time_ratio\": " << formatJsonNumber(q->timeRatio)
+          << ",\n  \"slow_stroke_crank_arc_deg\": " << jsonDeg(q->slowStrokeCrankArc)
+          << ",\n  \"quick_stroke_crank_arc_deg\": " << jsonDeg(q->quickStrokeCrankArc)
+          << ",\n  \"rocker_swing_deg\": " << jsonDeg(q->rockerSwing)
+          << ",\n  \"whitworth\": " << (q->whitworth ? "true" : "false")
           << ",\n  \"stroke\": " << formatJsonNumber(q->stroke);
     out << ",\n  \"length_unit\": " << k::io::jsonQuote(e.mechanism.lengthUnit) << "\n}\n";
     return ExitCode::Success;
   }
   out << e.kind << std::string(e.kind.size() < 21 ? 21 - e.kind.size() : 1, ' ') << e.description << "\n";
-  out << "mobility (Gruebler)  M = 3(" << m.links << " - 1) - 2*" << m.fullJoints << " - " << m.halfJoints << " = " << m.mobility << "\n";
+  out << "mobility (Gruebler)  M = 3(" << m.links << " - 1) - 2*" << m.fullJoints << " - " << m.halfJoints << " = "
+      << m.mobility << "\n";
   if (!q) {
     out << "quick return         none: the ram has no two limit positions\n";
     return ExitCode::Success;
@@ -151,7 +158,7 @@ ExitCode classifyShaper(const k::MechanismExample& e, bool json, std::ostream& o
   return ExitCode::Success;
 }
 
-} // namespace
+}  // namespace
 
 ExitCode runClassify(const Invocation& inv, std::ostream& out, std::ostream& err) {
   if (inv.example)
@@ -194,4 +201,4 @@ ExitCode runClassify(const Invocation& inv, std::ostream& out, std::ostream& err
   return ExitCode::Success;
 }
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

@@ -18,8 +18,8 @@ namespace linkwright::cli {
 namespace {
 
 namespace k = kinematics;
-using k::io::formatJsonNumber;
 using k::io::formatFixed;
+using k::io::formatJsonNumber;
 
 // A full turn every 0.25°: fine enough that a refined extremum's bracket is one step.
 constexpr std::size_t kSamples = 1441;
@@ -49,9 +49,10 @@ std::vector<TransmissionExtremes> transmissionExtremes(const k::Mechanism& m, co
   return out;
 }
 
-} // namespace
+}  // namespace
 
-ExitCode classifyLinkage(const std::string& kind, const k::Mechanism& m, bool json, std::ostream& out, std::ostream& err) {
+ExitCode classifyLinkage(const std::string& kind, const k::Mechanism& m, bool json, std::ostream& out,
+                         std::ostream& err) {
   const k::SweepSpec spec{0.0, 2.0 * k::kPi, kSamples, 1.0, 0.0};
   const auto sweep = k::sweep(m, spec, {false, false});
   if (!sweep) {
@@ -63,21 +64,25 @@ ExitCode classifyLinkage(const std::string& kind, const k::Mechanism& m, bool js
   const bool none = sweep->notAssembled.size() == 1 && sweep->notAssembled.front().from == 0.0 &&
                     sweep->notAssembled.front().to == spec.toAngle;
   if (json) {
-    out << "{\n  \"mechanism\": " << k::io::jsonQuote(kind) << ",\n  \"mobility\": {\"links\": " << mob.links << ", \"full_joints\": "
-        << mob.fullJoints << ", \"half_joints\": " << mob.halfJoints << ", \"mobility\": " << mob.mobility
-        << "},\n  \"not_assembled_crank_ranges_deg\": [";
+    out << "{\n  \"mechanism\": " << k::io::jsonQuote(kind) << ",\n  \"mobility\": {\"links\": " << mob.links
+        << ", \"full_joints\": " << mob.fullJoints << ", \"half_joints\": " << mob.halfJoints
+        << ", \"mobility\": " << mob.mobility << "},\n  \"not_assembled_crank_ranges_deg\": [";
     for (std::size_t i = 0; i < sweep->notAssembled.size(); ++i)
-      out << (i ? ", " : "") << "[" << jsonDeg(sweep->notAssembled[i].from) << ", " << jsonDeg(sweep->notAssembled[i].to) << "]";
+      out << (i ? ", " : "") << "[" << jsonDeg(sweep->notAssembled[i].from) << ", "
+          << jsonDeg(sweep->notAssembled[i].to) << "]";
     out << "],\n  \"transmission_angles_deg\": [";
     for (std::size_t i = 0; i < transmission.size(); ++i) {
       const auto& t = transmission[i];
-      out << (i ? ", " : "") << "{\"point\": " << k::io::jsonQuote(t.point) << ", \"min\": " << jsonDeg(t.extrema.minimum.value)
-          << ", \"min_at_crank\": " << jsonDeg(turn(t.extrema.minimum.inputAngle)) << ", \"max\": " << jsonDeg(t.extrema.maximum.value)
+      out << (i ? ", " : "") << "{\"point\": " << k::io::jsonQuote(t.point)
+          << ", \"min\": " << jsonDeg(t.extrema.minimum.value)
+          << ", \"min_at_crank\": " << jsonDeg(turn(t.extrema.minimum.inputAngle))
+          << ", \"max\": " << jsonDeg(t.extrema.maximum.value)
           << ", \"max_at_crank\": " << jsonDeg(turn(t.extrema.maximum.inputAngle)) << "}";
     }
     out << "],\n  \"length_unit\": " << k::io::jsonQuote(m.lengthUnit) << "\n}\n";
   } else {
-    out << "linkage              " << kind << ": " << m.points.size() << " points, " << m.links.size() << " moving links\n";
+    out << "linkage              " << kind << ": " << m.points.size() << " points, " << m.links.size()
+        << " moving links\n";
     out << "mobility (Gruebler)  M = 3(" << mob.links << " - 1) - 2*" << mob.fullJoints << " - " << mob.halfJoints
         << " = " << mob.mobility << "\n";
     out << "assembles            ";
@@ -101,4 +106,4 @@ ExitCode classifyLinkage(const std::string& kind, const k::Mechanism& m, bool js
   return ExitCode::Success;
 }
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

@@ -15,4 +15,4 @@ namespace linkwright::cli {
 ExitCode classifyLinkage(const std::string& kind, const kinematics::Mechanism& mechanism, bool json, std::ostream& out,
                          std::ostream& err);
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

@@ -81,7 +81,8 @@ constexpr const char* kClassifyOptions = R"(Classify options:
   --json              machine-readable output
 )";
 
-constexpr const char* kCentresOptions = R"(Centres options (with the mechanism options; four-bars and the slider-crank example):
+constexpr const char* kCentresOptions =
+    R"(Centres options (with the mechanism options; four-bars and the slider-crank example):
   --at DEG[,DEG...]   crank angle(s), degrees CCW from the frame line; repeatable
 Output: the six instant centres Iij of bodies 1 frame, 2 crank, 3 coupler (rod), 4 rocker
   (slider), as (x, y) in the length unit or "at infinity" with a direction; the velocity
@@ -89,7 +90,8 @@ Output: the six instant centres Iij of bodies 1 frame, 2 crank, 3 coupler (rod),
   T4/T2 = ω2/ω4 (slider: F/T2 = ω2/v, per length unit), signed, infinite at a toggle.
 )";
 
-constexpr const char* kArmOptions = R"(Arm options (lengths in the length unit, default m; the shoulder is at the origin):
+constexpr const char* kArmOptions =
+    R"(Arm options (lengths in the length unit, default m; the shoulder is at the origin):
   --example seed-arm  seed 004's arm and path: --arm 0.3,0.2 --from-point 0.3,0
                       --to-point 0,0.3 --speed 2 --elbow down, 101 samples; options
                       given with it replace the example's values
@@ -146,7 +148,7 @@ Examples:
   linkwright-cli centres --example thesis-crank-rocker --at 0,90
 )";
 
-} // namespace
+}  // namespace
 
 std::string helpText(const std::string& topic) {
   std::string text = kUsage;
@@ -169,16 +171,16 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   const Invocation& inv = *parsed;
   switch (inv.command) {
   case Command::Help:
-    if (!inv.helpTopic.empty() && inv.helpTopic != "analyze" && inv.helpTopic != "classify" && inv.helpTopic != "extremes" &&
-        inv.helpTopic != "arm" && inv.helpTopic != "centres" && inv.helpTopic != "accuracy" && inv.helpTopic != "examples" && inv.helpTopic != "linkwright-cli") {
-      err << "linkwright-cli: no help for '" << inv.helpTopic << "' (commands: analyze, extremes, classify, arm, centres, examples)\n";
+    if (!inv.helpTopic.empty() && inv.helpTopic != "analyze" && inv.helpTopic != "classify" &&
+        inv.helpTopic != "extremes" && inv.helpTopic != "arm" && inv.helpTopic != "centres" &&
+        inv.helpTopic != "accuracy" && inv.helpTopic != "examples" && inv.helpTopic != "linkwright-cli") {
+      err << "linkwright-cli: no help for '" << inv.helpTopic
+          << "' (commands: analyze, extremes, classify, arm, centres, examples)\n";
       return toInt(ExitCode::BadInput);
     }
     out << helpText(inv.helpTopic == "linkwright-cli" || inv.helpTopic == "examples" ? "" : inv.helpTopic);
     return toInt(ExitCode::Success);
-  case Command::Version:
-    out << "linkwright-cli " << LINKWRIGHT_VERSION << "\n";
-    return toInt(ExitCode::Success);
+  case Command::Version: out << "linkwright-cli " << LINKWRIGHT_VERSION << "\n"; return toInt(ExitCode::Success);
   case Command::Examples: return toInt(runExamples(out));
   case Command::Analyze: return toInt(runAnalyze(inv, out, err));
   case Command::Classify: return toInt(runClassify(inv, out, err));
@@ -190,4 +192,4 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   return toInt(ExitCode::BadInput);
 }
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

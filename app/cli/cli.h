@@ -14,4 +14,4 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
 /// The full --help text, or a command's help for topic "analyze" / "classify".
 std::string helpText(const std::string& topic = {});
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

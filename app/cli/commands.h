@@ -63,4 +63,4 @@ struct SweptMechanism {
 };
 kinematics::Result<SweptMechanism> sweepInvocation(const Invocation& invocation);
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

@@ -12,4 +12,4 @@ enum class ExitCode : int {
 
 inline int toInt(ExitCode code) { return static_cast<int>(code); }
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

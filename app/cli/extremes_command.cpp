@@ -17,7 +17,8 @@ namespace k = kinematics;
 // Refines the extremes of a quantity known at each sample (where `valid`) and on a pose.
 std::optional<k::Extrema> refineOver(const k::Mechanism& m, const k::SweepSpec& spec, const k::SweepResult& r,
                                      const std::function<bool(std::size_t)>& valid,
-                                     const std::function<double(std::size_t)>& sampled, const k::PoseQuantity& quantity) {
+                                     const std::function<double(std::size_t)>& sampled,
+                                     const k::PoseQuantity& quantity) {
   std::vector<double> values(r.size(), 0.0);
   std::vector<bool> mask(r.size(), false);
   for (std::size_t j = 0; j < r.size(); ++j) {
@@ -48,7 +49,7 @@ void printRow(std::ostream& out, const std::string& name, const k::Extrema& e) {
       << std::setw(14) << angleText(e.maximum.inputAngle) << "\n";
 }
 
-} // namespace
+}  // namespace
 
 ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err) {
   const auto fail = [&](const k::Error& e) {
@@ -62,10 +63,11 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
   const auto* result = &swept->result;
 
   out << "extremes over crank angles " << k::io::formatShort(k::radToDeg(spec->fromAngle)) << "° to "
-      << k::io::formatShort(k::radToDeg(spec->toAngle)) << "°, refined between " << spec->samples
-      << " samples; crank " << k::io::formatShort(spec->omega) << " rad/s, " << k::io::formatShort(spec->alpha) << " rad/s²\n";
+      << k::io::formatShort(k::radToDeg(spec->toAngle)) << "°, refined between " << spec->samples << " samples; crank "
+      << k::io::formatShort(spec->omega) << " rad/s, " << k::io::formatShort(spec->alpha) << " rad/s²\n";
   out << std::left << std::setw(26) << "quantity" << std::right << std::setw(18) << "minimum" << std::setw(14)
-      << "at crank_deg" << std::setw(18) << "maximum" << std::setw(14) << "at crank_deg" << "\n";
+      << "at crank_deg" << std::setw(18) << "maximum" << std::setw(14) << "at crank_deg"
+      << "\n";
   for (const k::io::SweepColumn& column : k::io::sweepColumns(resolved->mechanism, result->request)) {
     if (column.quantity == k::io::ColumnQuantity::InputAngle) continue;
     if (const auto e = columnExtrema(resolved->mechanism, *spec, *result, column)) printRow(out, column.name, *e);
@@ -86,10 +88,11 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
     if (accel) printRow(out, m.points[i].name + "_accel_" + u + "_s2", *accel);
   }
   if (!result->notAssembled.empty()) {
-    err << "linkwright-cli: the linkage cannot be assembled over the whole range; extremes are over the part that can\n";
+    err << "linkwright-cli: the linkage cannot be assembled over the whole range; extremes are over the part that "
+           "can\n";
     return ExitCode::NotAssemblable;
   }
   return ExitCode::Success;
 }
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

@@ -15,7 +15,8 @@ namespace {
 GridDefaults gridOf(const k::Design& d) {
   return std::visit(
       [](const auto& x) {
-        return GridDefaults{x.omega, x.alpha, x.fromDeg, x.toDeg, (x.toDeg - x.fromDeg) / static_cast<double>(x.samples - 1)};
+        return GridDefaults{x.omega, x.alpha, x.fromDeg, x.toDeg,
+                            (x.toDeg - x.fromDeg) / static_cast<double>(x.samples - 1)};
       },
       d);
 }
@@ -31,7 +32,7 @@ k::Result<k::Design> readDocumentFile(const std::string& path) {
   return design;
 }
 
-} // namespace
+}  // namespace
 
 kinematics::Result<ResolvedFourBar> resolveFourBar(const Invocation& inv) {
   ResolvedFourBar r;
@@ -77,15 +78,16 @@ kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& inv) {
     }
     if (inv.couplerPoint || inv.branch)
       return k::Error{k::ErrorCode::InvalidValue, inv.couplerPoint ? "--coupler-point" : "--branch",
-                      std::string(inv.couplerPoint ? "--coupler-point" : "--branch") + " applies to four-bars, not to this " +
-                          std::get<k::MechanismDesign>(*design).kind};
+                      std::string(inv.couplerPoint ? "--coupler-point" : "--branch") +
+                          " applies to four-bars, not to this " + std::get<k::MechanismDesign>(*design).kind};
     r.mechanism = std::get<k::MechanismDesign>(*design).mechanism;
     return r;
   }
   if (inv.example) {
     if (auto other = k::findMechanismExample(*inv.example)) {
       if (inv.couplerPoint)
-        return k::Error{k::ErrorCode::InvalidValue, "--coupler-point", "--coupler-point applies to four-bars, not to " + other->name};
+        return k::Error{k::ErrorCode::InvalidValue, "--coupler-point",
+                        "--coupler-point applies to four-bars, not to " + other->name};
       if (inv.branch)
         return k::Error{k::ErrorCode::InvalidValue, "--branch", "--branch applies to four-bars, not to " + other->name};
       r.mechanism = std::move(other->mechanism);
@@ -97,7 +99,8 @@ kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& inv) {
   }
   auto fb = resolveFourBar(inv);
   if (!fb) return fb.error();
-  const auto couplerPoint = inv.couplerPoint ? inv.couplerPoint : (fb->example ? fb->example->couplerPoint : std::nullopt);
+  const auto couplerPoint =
+      inv.couplerPoint ? inv.couplerPoint : (fb->example ? fb->example->couplerPoint : std::nullopt);
   auto m = k::makeFourBar(fb->lengths, fb->branch, fb->lengthUnit, couplerPoint);
   if (!m) return m.error();
   r.mechanism = std::move(*m);
@@ -111,4 +114,4 @@ kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& inv) {
   return r;
 }
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

@@ -24,7 +24,7 @@ std::string escaped(const std::string& text) {
   return out;
 }
 
-} // namespace
+}  // namespace
 
 std::string logLogPlotSvg(const std::string& title, const std::string& xTitle, const std::string& yTitle,
                           const std::vector<PlotSeries>& series) {
@@ -52,14 +52,14 @@ std::string logLogPlotSvg(const std::string& title, const std::string& xTitle, c
       << "\" y2=\"" << num(kTop + ph) << "\" stroke=\"#ddd\"/>\n<text x=\"" << num(px(std::pow(10, d))) << "\" y=\""
       << num(kTop + ph + 18) << "\" text-anchor=\"middle\">1e" << static_cast<int>(d) << "</text>\n";
   for (double d = ly0; d <= ly1; ++d)
-    s << "<line x1=\"" << num(kLeft) << "\" y1=\"" << num(py(std::pow(10, d))) << "\" x2=\"" << num(kLeft + pw) << "\" y2=\""
-      << num(py(std::pow(10, d))) << "\" stroke=\"#ddd\"/>\n<text x=\"" << num(kLeft - 8) << "\" y=\""
+    s << "<line x1=\"" << num(kLeft) << "\" y1=\"" << num(py(std::pow(10, d))) << "\" x2=\"" << num(kLeft + pw)
+      << "\" y2=\"" << num(py(std::pow(10, d))) << "\" stroke=\"#ddd\"/>\n<text x=\"" << num(kLeft - 8) << "\" y=\""
       << num(py(std::pow(10, d)) + 4) << "\" text-anchor=\"end\">1e" << static_cast<int>(d) << "</text>\n";
   s << "<rect x=\"" << num(kLeft) << "\" y=\"" << num(kTop) << "\" width=\"" << num(pw) << "\" height=\"" << num(ph)
     << "\" fill=\"none\" stroke=\"#333\"/>\n";
-  s << "<text x=\"" << num(kLeft + pw / 2) << "\" y=\"" << num(kHeight - 16) << "\" text-anchor=\"middle\">" << escaped(xTitle)
-    << "</text>\n<text transform=\"translate(20 " << num(kTop + ph / 2) << ") rotate(-90)\" text-anchor=\"middle\">"
-    << escaped(yTitle) << "</text>\n";
+  s << "<text x=\"" << num(kLeft + pw / 2) << "\" y=\"" << num(kHeight - 16) << "\" text-anchor=\"middle\">"
+    << escaped(xTitle) << "</text>\n<text transform=\"translate(20 " << num(kTop + ph / 2)
+    << ") rotate(-90)\" text-anchor=\"middle\">" << escaped(yTitle) << "</text>\n";
   for (std::size_t i = 0; i < series.size(); ++i) {
     const PlotSeries& ser = series[i];
     s << "<polyline fill=\"none\" stroke=\"" << ser.colour << "\" stroke-width=\"2\""
@@ -68,14 +68,17 @@ std::string logLogPlotSvg(const std::string& title, const std::string& xTitle, c
       if (plotted(x, y)) s << num(px(x)) << "," << num(py(y)) << " ";
     s << "\"/>\n";
     for (const auto& [x, y] : ser.points)
-      if (plotted(x, y)) s << "<circle cx=\"" << num(px(x)) << "\" cy=\"" << num(py(y)) << "\" r=\"3\" fill=\"" << ser.colour << "\"/>\n";
+      if (plotted(x, y))
+        s << "<circle cx=\"" << num(px(x)) << "\" cy=\"" << num(py(y)) << "\" r=\"3\" fill=\"" << ser.colour
+          << "\"/>\n";
     const double ly = kTop + 14 + 20.0 * static_cast<double>(i);
-    s << "<line x1=\"" << num(kLeft + pw + 14) << "\" y1=\"" << num(ly - 4) << "\" x2=\"" << num(kLeft + pw + 40) << "\" y2=\""
-      << num(ly - 4) << "\" stroke=\"" << ser.colour << "\" stroke-width=\"2\"" << (ser.dashed ? " stroke-dasharray=\"6 4\"" : "")
-      << "/>\n<text x=\"" << num(kLeft + pw + 46) << "\" y=\"" << num(ly) << "\">" << escaped(ser.label) << "</text>\n";
+    s << "<line x1=\"" << num(kLeft + pw + 14) << "\" y1=\"" << num(ly - 4) << "\" x2=\"" << num(kLeft + pw + 40)
+      << "\" y2=\"" << num(ly - 4) << "\" stroke=\"" << ser.colour << "\" stroke-width=\"2\""
+      << (ser.dashed ? " stroke-dasharray=\"6 4\"" : "") << "/>\n<text x=\"" << num(kLeft + pw + 46) << "\" y=\""
+      << num(ly) << "\">" << escaped(ser.label) << "</text>\n";
   }
   s << "</svg>\n";
   return s.str();
 }
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

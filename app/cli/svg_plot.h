@@ -18,4 +18,4 @@ struct PlotSeries {
 std::string logLogPlotSvg(const std::string& title, const std::string& xTitle, const std::string& yTitle,
                           const std::vector<PlotSeries>& series);
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

@@ -26,34 +26,37 @@ std::optional<Error> checkOptions(const Invocation& inv) {
   if (inv.rpm && !(std::isfinite(*inv.rpm) && std::abs(rpmToRadPerSec(*inv.rpm)) <= kMaxOmega))
     return badValue("--rpm", "must be finite and within ±" + formatShort(kMaxOmega * 60.0 / (2.0 * kPi), 3) +
                                  " rev/min, 1e6 rad/s (got " + formatNumber(*inv.rpm) + ")");
-  for (const auto& [value, option, max, unit] :
-       {std::tuple{inv.omega, "--omega", kMaxOmega, "rad/s"}, {inv.alpha, "--alpha", kMaxAlpha, "rad/s²"},
-        {inv.fromDeg, "--from", kMaxAngleDeg, "degrees"}, {inv.toDeg, "--to", kMaxAngleDeg, "degrees"},
-        {inv.stepDeg, "--step", 2.0 * kMaxAngleDeg, "degrees"}})
+  for (const auto& [value, option, max, unit] : {std::tuple{inv.omega, "--omega", kMaxOmega, "rad/s"},
+                                                 {inv.alpha, "--alpha", kMaxAlpha, "rad/s²"},
+                                                 {inv.fromDeg, "--from", kMaxAngleDeg, "degrees"},
+                                                 {inv.toDeg, "--to", kMaxAngleDeg, "degrees"},
+                                                 {inv.stepDeg, "--step", 2.0 * kMaxAngleDeg, "degrees"}})
     if (value)
       if (auto e = checkMagnitude(*value, option, max, unit)) return e;
   return std::nullopt;
 }
 
-} // namespace
+}  // namespace
 
 kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Invocation& inv, const GridDefaults& d) {
   if (auto e = checkOptions(inv)) return *e;
   kinematics::SweepSpec spec;
-  spec.omega = inv.rpm ? kinematics::rpmToRadPerSec(*inv.rpm)
-                       : inv.omega.value_or(d.omega);
+  spec.omega = inv.rpm ? kinematics::rpmToRadPerSec(*inv.rpm) : inv.omega.value_or(d.omega);
   spec.alpha = inv.alpha.value_or(d.alpha);
   const double from = inv.fromDeg.value_or(d.fromDeg);
   const double to = inv.toDeg.value_or(d.toDeg);
   if (to < from)
-    return badValue("--to", "must not be less than --from (got --from " + formatShort(from) + ", --to " + formatShort(to) + ")");
+    return badValue(
+        "--to", "must not be less than --from (got --from " + formatShort(from) + ", --to " + formatShort(to) + ")");
   double last = to;
   long long samples = 0;
   if (inv.samples) {
     samples = *inv.samples;
     if (samples < 1 || samples > kMaxSamples)
-      return badValue("--samples", "must be between 1 and " + std::to_string(kMaxSamples) + " (got " + std::to_string(samples) + ")");
-    if (samples > 1 && to == from) return badValue("--samples", "needs --to greater than --from for more than one sample");
+      return badValue("--samples", "must be between 1 and " + std::to_string(kMaxSamples) + " (got " +
+                                       std::to_string(samples) + ")");
+    if (samples > 1 && to == from)
+      return badValue("--samples", "needs --to greater than --from for more than one sample");
   } else {
     const double step = inv.stepDeg.value_or(d.stepDeg);
     if (!(step > 0.0)) return badValue("--step", "must be positive (got " + formatShort(step) + ")");
@@ -81,4 +84,4 @@ kinematics::Result<SweptMechanism> sweepInvocation(const Invocation& inv) {
   return SweptMechanism{std::move(*resolved), *spec, std::move(*result)};
 }
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

@@ -48,4 +48,4 @@ void writeSweepTable(std::ostream& out, const kinematics::Mechanism& m, const ki
   }
 }
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

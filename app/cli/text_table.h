@@ -17,4 +17,4 @@ namespace linkwright::cli {
 void writeSweepTable(std::ostream& out, const kinematics::Mechanism& mechanism, const kinematics::SweepResult& result,
                      const kinematics::ForceSweep* forces = nullptr, int decimals = 4);
 
-} // namespace linkwright::cli
+}  // namespace linkwright::cli

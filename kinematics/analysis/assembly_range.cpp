@@ -41,14 +41,14 @@ InputRange fourBarInputRange(const FourBarLengths& l) {
   const double highCos = (base - (l.coupler - l.rocker) * (l.coupler - l.rocker)) / twoAD;
   InputRange out;
   if (lowCos > 1.0 || highCos < -1.0 || lowCos > highCos) return out;  // never assembles
-  const bool lowFree = lowCos <= -1.0;   // cos θ ≥ lowCos holds for every θ
-  const bool highFree = highCos >= 1.0;  // cos θ ≤ highCos holds for every θ
+  const bool lowFree = lowCos <= -1.0;                                 // cos θ ≥ lowCos holds for every θ
+  const bool highFree = highCos >= 1.0;                                // cos θ ≤ highCos holds for every θ
   if (lowFree && highFree) {
     out.fullRotation = true;
     out.ranges.push_back({0.0, 2.0 * kPi});
     return out;
   }
-  const double farEdge = lowFree ? kPi : std::acos(lowCos);   // largest |θ| allowed
+  const double farEdge = lowFree ? kPi : std::acos(lowCos);     // largest |θ| allowed
   const double nearEdge = highFree ? 0.0 : std::acos(highCos);  // smallest |θ| allowed
   if (highFree) {
     out.ranges.push_back({-farEdge, farEdge});
@@ -61,4 +61,4 @@ InputRange fourBarInputRange(const FourBarLengths& l) {
   return out;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

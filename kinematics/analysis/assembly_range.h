@@ -14,8 +14,8 @@
 namespace linkwright::kinematics {
 
 struct InputRange {
-  bool fullRotation = false;        ///< the crank can turn through 360°
-  std::vector<AngleRange> ranges;   ///< rad, from ≤ to; empty and !fullRotation: never assembles
+  bool fullRotation = false;       ///< the crank can turn through 360°
+  std::vector<AngleRange> ranges;  ///< rad, from ≤ to; empty and !fullRotation: never assembles
   bool operator==(const InputRange&) const = default;
 
   /// True if `angle` (rad, any turn) lies in the range, within `tolerance` rad.
@@ -29,4 +29,4 @@ struct InputRange {
 /// around θ = 180° as [φ, 360° − φ]; with two ranges the one in [0, 180°] comes first.
 InputRange fourBarInputRange(const FourBarLengths& lengths);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -51,10 +51,11 @@ struct Search {
   }
 };
 
-} // namespace
+}  // namespace
 
-std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec& spec, const std::vector<double>& values,
-                                     const std::vector<bool>& valid, const PoseQuantity& quantity, double angleTolerance) {
+std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec& spec,
+                                     const std::vector<double>& values, const std::vector<bool>& valid,
+                                     const PoseQuantity& quantity, double angleTolerance) {
   std::optional<std::size_t> lowest, highest;
   for (std::size_t j = 0; j < values.size(); ++j) {
     if (!valid[j]) continue;
@@ -81,9 +82,11 @@ std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec
   };
   Extrema out;
   const auto [minLo, minHi] = bracket(*lowest);
-  out.minimum = search.maximize(minLo, minHi, -1.0, {values[*lowest], sweepAngle(spec, *lowest), false}, angleTolerance);
+  out.minimum =
+      search.maximize(minLo, minHi, -1.0, {values[*lowest], sweepAngle(spec, *lowest), false}, angleTolerance);
   const auto [maxLo, maxHi] = bracket(*highest);
-  out.maximum = search.maximize(maxLo, maxHi, 1.0, {values[*highest], sweepAngle(spec, *highest), false}, angleTolerance);
+  out.maximum =
+      search.maximize(maxLo, maxHi, 1.0, {values[*highest], sweepAngle(spec, *highest), false}, angleTolerance);
   // Report angles inside the requested range (a full-turn bracket may step just outside it).
   for (Extremum* e : {&out.minimum, &out.maximum}) {
     const double lowEnd = std::min(spec.fromAngle, spec.toAngle);
@@ -94,4 +97,4 @@ std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec
   return out;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

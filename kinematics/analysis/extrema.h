@@ -36,8 +36,8 @@ using PoseQuantity = std::function<double(const Pose& pose, double inputAngle)>;
 /// `values[j]` is the quantity at sample j and `valid[j]` says whether it exists there (rates
 /// do not at a toggle). Nullopt if no sample is valid. The search stays between the valid
 /// neighbours of the best sample, to `angleTolerance` rad.
-std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec& spec, const std::vector<double>& values,
-                                     const std::vector<bool>& valid, const PoseQuantity& quantity,
-                                     double angleTolerance = 1e-10);
+std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec& spec,
+                                     const std::vector<double>& values, const std::vector<bool>& valid,
+                                     const PoseQuantity& quantity, double angleTolerance = 1e-10);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

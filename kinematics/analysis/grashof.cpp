@@ -61,4 +61,4 @@ std::string_view toString(LinkRole role) {
   return "unknown";
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -26,8 +26,8 @@ struct GrashofReport {
   GrashofClass category = GrashofClass::TripleRocker;
   LinkRole shortest = LinkRole::Frame;  ///< first of equal shortest links in frame, crank, coupler, rocker order
   LinkRole longest = LinkRole::Frame;
-  double sPlusL = 0.0;  ///< S + L, length unit
-  double pPlusQ = 0.0;  ///< P + Q, length unit
+  double sPlusL = 0.0;              ///< S + L, length unit
+  double pPlusQ = 0.0;              ///< P + Q, length unit
   bool inputFullyRotates = false;   ///< the crank can turn 360° relative to the frame
   bool outputFullyRotates = false;  ///< the rocker can turn 360° relative to the frame
   bool operator==(const GrashofReport&) const = default;
@@ -41,4 +41,4 @@ std::string_view toString(GrashofClass category);
 /// "frame", "crank", "coupler", "rocker".
 std::string_view toString(LinkRole role);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

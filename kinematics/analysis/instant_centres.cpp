@@ -82,16 +82,17 @@ Ratio inverse(const Ratio& r) {
   return r;
 }
 
-} // namespace
+}  // namespace
 
-Result<InstantCentres> fourBarInstantCentres(const Eigen::Vector2d& o2, const Eigen::Vector2d& o4, const Eigen::Vector2d& b,
-                                             const Eigen::Vector2d& c) {
+Result<InstantCentres> fourBarInstantCentres(const Eigen::Vector2d& o2, const Eigen::Vector2d& o4,
+                                             const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
   for (const auto& [p, name] : {std::pair{&o2, "O2"}, {&o4, "O4"}, {&b, "B"}, {&c, "C"}})
     if (auto e = checkPoint(*p, name)) return *e;
   InstantCentres out;
   out.linkage = CentreLinkage::FourBar;
   out.scale = std::max({(b - o2).norm(), (c - b).norm(), (c - o4).norm(), (o4 - o2).norm()});
-  for (const auto& [p, q, what] : {std::tuple{&o2, &o4, "frame"}, {&o2, &b, "crank"}, {&b, &c, "coupler"}, {&o4, &c, "rocker"}})
+  for (const auto& [p, q, what] :
+       {std::tuple{&o2, &o4, "frame"}, {&o2, &b, "crank"}, {&b, &c, "coupler"}, {&o4, &c, "rocker"}})
     if (auto e = checkDistinct(*p, *q, what, out.scale)) return *e;
   out.i12 = finite(o2);
   out.i14 = finite(o4);
@@ -101,8 +102,8 @@ Result<InstantCentres> fourBarInstantCentres(const Eigen::Vector2d& o2, const Ei
   return out;
 }
 
-Result<InstantCentres> sliderCrankInstantCentres(const Eigen::Vector2d& o2, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
-                                                 const Eigen::Vector2d& guideDirection) {
+Result<InstantCentres> sliderCrankInstantCentres(const Eigen::Vector2d& o2, const Eigen::Vector2d& b,
+                                                 const Eigen::Vector2d& c, const Eigen::Vector2d& guideDirection) {
   for (const auto& [p, name] : {std::pair{&o2, "O2"}, {&b, "B"}, {&c, "C"}, {&guideDirection, "guide direction"}})
     if (auto e = checkPoint(*p, name)) return *e;
   if (!(guideDirection.norm() > 0.0))
@@ -154,12 +155,15 @@ Result<InstantCentres> instantCentres(const Mechanism& m, const Pose& pose) {
     const PointId other = firstIsTip ? rrr->second : rrr->first;
     if ((firstIsTip || rrr->second.index == *tip) && isGround(other) && other != pivot && isGround(pivot))
       return fourBarInstantCentres(o2, pose.position[other.index], b, c);
-    return unsupported("has an RRR dyad at " + m.points[*dyad].name + " that does not join the crank tip to a ground pivot");
+    return unsupported("has an RRR dyad at " + m.points[*dyad].name +
+                       " that does not join the crank tip to a ground pivot");
   }
   if (const auto* rrp = std::get_if<RrpPoint>(&d)) {
     if (rrp->first.index == *tip && !rrp->guide.link && isGround(pivot))
-      return sliderCrankInstantCentres(o2, b, c, Eigen::Vector2d(std::cos(rrp->guide.angle), std::sin(rrp->guide.angle)));
-    return unsupported("has a slider at " + m.points[*dyad].name + " that is not on a ground guide driven from the crank tip");
+      return sliderCrankInstantCentres(o2, b, c,
+                                       Eigen::Vector2d(std::cos(rrp->guide.angle), std::sin(rrp->guide.angle)));
+    return unsupported("has a slider at " + m.points[*dyad].name +
+                       " that is not on a ground guide driven from the crank tip");
   }
   return unsupported("has a slotted link or a double slider at " + m.points[*dyad].name);
 }
@@ -176,7 +180,8 @@ MechanicalAdvantage mechanicalAdvantage(const InstantCentres& c) {
       return out;
     }
     const Eigen::Vector2d e = (c.i14.position - c.i12.position).normalized();
-    out.velocityRatio = ratioOf((c.i24.position - c.i12.position).dot(e), (c.i24.position - c.i14.position).dot(e), c.scale);
+    out.velocityRatio =
+        ratioOf((c.i24.position - c.i12.position).dot(e), (c.i24.position - c.i14.position).dot(e), c.scale);
   } else if (c.i24.kind == CentreKind::AtInfinity) {
     out.velocityRatio = {RatioKind::Infinite, 0.0};  // rod normal to the guide
   } else {
@@ -188,4 +193,4 @@ MechanicalAdvantage mechanicalAdvantage(const InstantCentres& c) {
   return out;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -52,7 +52,7 @@ enum class CentreKind {
 /// Where an instant centre lies. Never NaN: unused members are zero.
 struct InstantCentre {
   CentreKind kind = CentreKind::Finite;
-  Eigen::Vector2d position = Eigen::Vector2d::Zero();   ///< Finite: length unit, frame of the mechanism
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();  ///< Finite: length unit, frame of the mechanism
   /// AtInfinity: unit vector. ±d name the same point; we give the one at an angle in
   /// (−90°, 90°] from +x.
   Eigen::Vector2d direction = Eigen::Vector2d::Zero();
@@ -116,4 +116,4 @@ Result<InstantCentres> instantCentres(const Mechanism& mechanism, const Pose& po
 /// Velocity ratio and ideal mechanical advantage from the centres.
 MechanicalAdvantage mechanicalAdvantage(const InstantCentres& centres);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

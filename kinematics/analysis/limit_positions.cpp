@@ -36,7 +36,7 @@ void addIfReached(const Mechanism& m, const FourBarLengths& l, const Eigen::Vect
   out.push_back({extended, wrapPositive(crank), pose->linkAngle[fourbar::kRocker.index]});
 }
 
-} // namespace
+}  // namespace
 
 LimitReport fourBarLimitPositions(const FourBarLengths& l, Branch branch) {
   LimitReport report;
@@ -62,4 +62,4 @@ LimitReport fourBarLimitPositions(const FourBarLengths& l, Branch branch) {
   return report;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

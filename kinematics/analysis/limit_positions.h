@@ -24,8 +24,8 @@ struct LimitPosition {
 struct LimitReport {
   std::vector<LimitPosition> positions;  ///< ordered by crank angle
   /// Only for a fully rotating crank with exactly two limits:
-  std::optional<double> rockerSwing;     ///< rad, angle between the two rocker limits
-  std::optional<double> timeRatio;       ///< slower stroke / quicker stroke, ≥ 1
+  std::optional<double> rockerSwing;          ///< rad, angle between the two rocker limits
+  std::optional<double> timeRatio;            ///< slower stroke / quicker stroke, ≥ 1
   std::optional<double> slowStrokeCrankArc;   ///< rad
   std::optional<double> quickStrokeCrankArc;  ///< rad
   bool operator==(const LimitReport&) const = default;
@@ -34,4 +34,4 @@ struct LimitReport {
 /// Limit positions for valid lengths on the given branch.
 LimitReport fourBarLimitPositions(const FourBarLengths& lengths, Branch branch);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

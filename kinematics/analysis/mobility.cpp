@@ -64,7 +64,7 @@ void countFreeBodies(const Mechanism& m, MobilityReport& r) {
   }
 }
 
-} // namespace
+}  // namespace
 
 int grueblerMobility(int links, int fullJoints, int halfJoints) {
   return 3 * (links - 1) - 2 * fullJoints - halfJoints;
@@ -90,4 +90,4 @@ MobilityReport mobility(const Mechanism& m) {
   return r;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

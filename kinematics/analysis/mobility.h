@@ -23,4 +23,4 @@ int grueblerMobility(int links, int fullJoints, int halfJoints);
 /// neither. Assumes checkMechanism passed.
 MobilityReport mobility(const Mechanism& mechanism);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -26,8 +26,10 @@ std::optional<QuickReturnReport> fromLimits(const Mechanism& m, double first, do
   const auto a = solvePose(m, {r.firstLimitCrankAngle, 0.0, 0.0}, {false, false});
   const auto b = solvePose(m, {r.secondLimitCrankAngle, 0.0, 0.0}, {false, false});
   if (!a || !b) return std::nullopt;
-  r.rockerSwing = whitworth ? 2.0 * kPi
-                            : std::abs(std::remainder(a->linkAngle[shaper::kRocker.index] - b->linkAngle[shaper::kRocker.index], 2.0 * kPi));
+  r.rockerSwing = whitworth
+                      ? 2.0 * kPi
+                      : std::abs(std::remainder(
+                            a->linkAngle[shaper::kRocker.index] - b->linkAngle[shaper::kRocker.index], 2.0 * kPi));
   r.stroke = std::abs(a->position[shaper::kRam.index].x() - b->position[shaper::kRam.index].x());
   return r;
 }
@@ -61,7 +63,7 @@ std::optional<QuickReturnReport> whitworthQuickReturn(const ShaperGeometry& g, B
   return fromLimits(m, limits[0], limits[1], true);
 }
 
-} // namespace
+}  // namespace
 
 std::optional<QuickReturnReport> shaperQuickReturn(const ShaperGeometry& g, Branch branch) {
   const auto m = makeShaper(g, branch);
@@ -73,4 +75,4 @@ std::optional<QuickReturnReport> shaperQuickReturn(const ShaperGeometry& g, Bran
   return fromLimits(*m, psi - half, psi + half, false);
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -34,4 +34,4 @@ struct QuickReturnReport {
 /// the geometry is invalid, the ram has no two limits, or it cannot be assembled at one.
 std::optional<QuickReturnReport> shaperQuickReturn(const ShaperGeometry& geometry, Branch branch = Branch::Open);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

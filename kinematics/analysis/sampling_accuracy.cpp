@@ -47,21 +47,25 @@ bool rocks(const std::vector<double>& angle, double lastStep) {
 
 double maxAbs(const Extrema& e) { return std::max(std::abs(e.minimum.value), std::abs(e.maximum.value)); }
 
-} // namespace
+}  // namespace
 
 double PeakError::worstRate() const { return std::max({omega, alpha, speed, acceleration}); }
 
 Result<PeakSet> exactPeaks(const Mechanism& m, double omega, std::size_t n) {
   if (auto e = checkMechanism(m)) return *e;
-  if (!(omega > 0.0)) return Error{ErrorCode::InvalidValue, "omega", "omega must be positive (got " + formatNumber(omega) + ")"};
+  if (!(omega > 0.0))
+    return Error{ErrorCode::InvalidValue, "omega", "omega must be positive (got " + formatNumber(omega) + ")"};
   if (auto e = checkMagnitude(omega, "omega", kMaxOmega, "rad/s")) return *e;
-  if (n < 3) return Error{ErrorCode::InvalidValue, "samples", "samples per revolution must be at least 3 (got " + std::to_string(n) + ")"};
+  if (n < 3)
+    return Error{ErrorCode::InvalidValue, "samples",
+                 "samples per revolution must be at least 3 (got " + std::to_string(n) + ")"};
   const SweepSpec spec{0.0, kTurn, n + 1, omega, 0.0};
   const auto full = sweep(m, spec);
   if (!full) return full.error();
   if (!full->notAssembled.empty())
-    return Error{ErrorCode::NotAssemblable, "crank",
-                 "the crank must turn fully to measure peaks over a cycle: " + full->firstFailure.value_or("it does not")};
+    return Error{
+        ErrorCode::NotAssemblable, "crank",
+        "the crank must turn fully to measure peaks over a cycle: " + full->firstFailure.value_or("it does not")};
   PeakSet p;
   const std::size_t links = allocate(m, p);
   std::vector<bool> valid(full->size());
@@ -71,13 +75,16 @@ Result<PeakSet> exactPeaks(const Mechanism& m, double omega, std::size_t n) {
   };
   for (std::size_t k = 0; k < links; ++k) {
     if (io::isDrivenCrankLink(m, LinkId{k})) continue;
-    if (const auto w = refine(full->linkOmega[k], [k](const Pose& x, double) { return x.linkOmega[k]; })) p.linkOmega[k] = maxAbs(*w);
-    if (const auto a = refine(full->linkAlpha[k], [k](const Pose& x, double) { return x.linkAlpha[k]; })) p.linkAlpha[k] = maxAbs(*a);
+    if (const auto w = refine(full->linkOmega[k], [k](const Pose& x, double) { return x.linkOmega[k]; }))
+      p.linkOmega[k] = maxAbs(*w);
+    if (const auto a = refine(full->linkAlpha[k], [k](const Pose& x, double) { return x.linkAlpha[k]; }))
+      p.linkAlpha[k] = maxAbs(*a);
     p.linkRocks[k] = rocks(full->linkAngle[k], 0.0);  // the sweep ends where it began, at 2π
     if (!p.linkRocks[k]) continue;
     // Unwrapped angles near the sweep's start: refine the raw (wrapped) angle about that branch.
     const double base = full->linkAngle[k].front();
-    const auto angle = refine(full->linkAngle[k], [k, base](const Pose& x, double) { return base + wrap(x.linkAngle[k] - base); });
+    const auto angle =
+        refine(full->linkAngle[k], [k, base](const Pose& x, double) { return base + wrap(x.linkAngle[k] - base); });
     if (angle) {
       p.linkMinAngle[k] = angle->minimum.value;
       p.linkMaxAngle[k] = angle->maximum.value;
@@ -90,8 +97,10 @@ Result<PeakSet> exactPeaks(const Mechanism& m, double omega, std::size_t n) {
       speed[j] = full->velocity[i][j].norm();
       accel[j] = full->acceleration[i][j].norm();
     }
-    if (const auto v = refine(speed, [i](const Pose& x, double) { return x.velocity[i].norm(); })) p.pointSpeed[i] = v->maximum.value;
-    if (const auto a = refine(accel, [i](const Pose& x, double) { return x.acceleration[i].norm(); })) p.pointAcceleration[i] = a->maximum.value;
+    if (const auto v = refine(speed, [i](const Pose& x, double) { return x.velocity[i].norm(); }))
+      p.pointSpeed[i] = v->maximum.value;
+    if (const auto a = refine(accel, [i](const Pose& x, double) { return x.acceleration[i].norm(); }))
+      p.pointAcceleration[i] = a->maximum.value;
   }
   return p;
 }
@@ -99,9 +108,12 @@ Result<PeakSet> exactPeaks(const Mechanism& m, double omega, std::size_t n) {
 Result<PeakSet> sampledPeaks(const Mechanism& m, double omega, std::size_t n, DerivativeMethod method,
                              const NewtonSettings& newton) {
   if (auto e = checkMechanism(m)) return *e;
-  if (!(omega > 0.0)) return Error{ErrorCode::InvalidValue, "omega", "omega must be positive (got " + formatNumber(omega) + ")"};
+  if (!(omega > 0.0))
+    return Error{ErrorCode::InvalidValue, "omega", "omega must be positive (got " + formatNumber(omega) + ")"};
   if (auto e = checkMagnitude(omega, "omega", kMaxOmega, "rad/s")) return *e;
-  if (n < 3) return Error{ErrorCode::InvalidValue, "samples", "samples per revolution must be at least 3 (got " + std::to_string(n) + ")"};
+  if (n < 3)
+    return Error{ErrorCode::InvalidValue, "samples",
+                 "samples per revolution must be at least 3 (got " + std::to_string(n) + ")"};
   const bool exact = method == DerivativeMethod::Exact;
   const auto s = oneTurn(m, omega, n, SolveRequest{exact, exact, newton});
   if (!s) return s.error();
@@ -157,4 +169,4 @@ PeakError peakError(const PeakSet& read, const PeakSet& exact) {
   return e;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -28,7 +28,7 @@ struct PeakSet {
   std::vector<double> linkAlpha;
   std::vector<double> linkMinAngle;  ///< empty entry (NaN-free): see linkRocks
   std::vector<double> linkMaxAngle;
-  std::vector<bool> linkRocks;       ///< false for a link that turns fully (no extreme angles)
+  std::vector<bool> linkRocks;  ///< false for a link that turns fully (no extreme angles)
   std::vector<double> pointSpeed;
   std::vector<double> pointAcceleration;
   bool operator==(const PeakSet&) const = default;
@@ -61,4 +61,4 @@ Result<PeakSet> sampledPeaks(const Mechanism& mechanism, double omega, std::size
 /// The worst error of `read` against `exact` (same linkage).
 PeakError peakError(const PeakSet& read, const PeakSet& exact);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -9,8 +9,8 @@ namespace linkwright::kinematics {
 namespace {
 
 double diagonal(const FourBarLengths& l, double crankAngle) {
-  return std::sqrt(std::max(0.0, l.crank * l.crank + l.frame * l.frame -
-                                     2.0 * l.crank * l.frame * std::cos(crankAngle)));
+  return std::sqrt(
+      std::max(0.0, l.crank * l.crank + l.frame * l.frame - 2.0 * l.crank * l.frame * std::cos(crankAngle)));
 }
 
 double angleForDiagonal(const FourBarLengths& l, double bd) {
@@ -23,7 +23,7 @@ double crankForDiagonal(const FourBarLengths& l, double bd) {
   return std::acos(std::clamp(c, -1.0, 1.0));
 }
 
-} // namespace
+}  // namespace
 
 std::optional<double> fourBarTransmissionAngle(const FourBarLengths& l, double crankAngle) {
   const double bd = diagonal(l, crankAngle);
@@ -46,4 +46,4 @@ std::optional<TransmissionRange> fourBarTransmissionRange(const FourBarLengths& 
   return r;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -12,11 +12,11 @@
 namespace linkwright::kinematics {
 
 struct TransmissionRange {
-  double minimum = 0.0;            ///< rad
-  double minimumAtCrank = 0.0;     ///< crank angle (rad, in [0, π]) where μ is smallest
-  double maximum = 0.0;            ///< rad
-  double maximumAtCrank = 0.0;     ///< crank angle (rad, in [0, π]) where μ is largest
-  double worstDeviation = 0.0;     ///< max |μ − 90°| over the cycle, rad
+  double minimum = 0.0;         ///< rad
+  double minimumAtCrank = 0.0;  ///< crank angle (rad, in [0, π]) where μ is smallest
+  double maximum = 0.0;         ///< rad
+  double maximumAtCrank = 0.0;  ///< crank angle (rad, in [0, π]) where μ is largest
+  double worstDeviation = 0.0;  ///< max |μ − 90°| over the cycle, rad
   bool operator==(const TransmissionRange&) const = default;
 };
 
@@ -26,4 +26,4 @@ std::optional<double> fourBarTransmissionAngle(const FourBarLengths& lengths, do
 /// Extremes over all assemblable crank angles, or nullopt if the linkage never assembles.
 std::optional<TransmissionRange> fourBarTransmissionRange(const FourBarLengths& lengths);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

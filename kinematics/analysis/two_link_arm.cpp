@@ -40,18 +40,19 @@ std::vector<double> circleCrossings(const LinePath& path, double duration, doubl
   return out;
 }
 
-} // namespace
+}  // namespace
 
-Result<ArmState> solveTwoLinkArm(const TwoLinkArm& arm, Branch elbow, const Eigen::Vector2d& p, const Eigen::Vector2d& v,
-                                 const Eigen::Vector2d& a) {
+Result<ArmState> solveTwoLinkArm(const TwoLinkArm& arm, Branch elbow, const Eigen::Vector2d& p,
+                                 const Eigen::Vector2d& v, const Eigen::Vector2d& a) {
   if (auto e = checkLength(arm.upper, "upper")) return *e;
   if (auto e = checkLength(arm.forearm, "forearm")) return *e;
   const RrrCandidates c = rrrCandidates(Eigen::Vector2d::Zero(), arm.upper, p, arm.forearm);
   if (c.failure != AssemblyFailure::None)
     return Error{ErrorCode::NotAssemblable, "tip",
-                 "the tip at (" + io::formatShort(p.x()) + ", " + io::formatShort(p.y()) + ") is " + io::formatShort(p.norm()) +
-                     " from the shoulder, outside the workspace " + io::formatShort(std::abs(arm.upper - arm.forearm)) +
-                     " to " + io::formatShort(arm.upper + arm.forearm)};
+                 "the tip at (" + io::formatShort(p.x()) + ", " + io::formatShort(p.y()) + ") is " +
+                     io::formatShort(p.norm()) + " from the shoulder, outside the workspace " +
+                     io::formatShort(std::abs(arm.upper - arm.forearm)) + " to " +
+                     io::formatShort(arm.upper + arm.forearm)};
   ArmState s;
   s.elbow = elbow == Branch::Open ? c.open : c.crossed;
   const Eigen::Vector2d e1 = s.elbow / arm.upper;
@@ -73,13 +74,15 @@ std::optional<Error> checkArmPath(const TwoLinkArm& arm, const LinePath& path) {
   if (auto e = checkLength(arm.upper, "upper")) return e;
   if (auto e = checkLength(arm.forearm, "forearm")) return e;
   if (!(std::isfinite(path.speed) && path.speed > 0.0))
-    return Error{ErrorCode::InvalidValue, "speed", "speed must be positive and finite (got " + formatNumber(path.speed) + ")"};
+    return Error{ErrorCode::InvalidValue, "speed",
+                 "speed must be positive and finite (got " + formatNumber(path.speed) + ")"};
   if (auto e = checkMagnitude(path.speed, "speed", kMaxLength, "length units/s")) return e;
   for (const auto& [point, name] : {std::pair{path.from, "from"}, {path.to, "to"}}) {
     if (auto e = checkCoordinate(point.x(), std::string(name) + ".x")) return e;
     if (auto e = checkCoordinate(point.y(), std::string(name) + ".y")) return e;
   }
-  const double reach = std::max({arm.upper, arm.forearm, path.from.cwiseAbs().maxCoeff(), path.to.cwiseAbs().maxCoeff()});
+  const double reach =
+      std::max({arm.upper, arm.forearm, path.from.cwiseAbs().maxCoeff(), path.to.cwiseAbs().maxCoeff()});
   return checkScale(std::min(arm.upper, arm.forearm), "the shorter arm link", reach, "the arm's largest dimension",
                     "length units");
 }
@@ -88,7 +91,9 @@ Result<ArmPathResult> followLine(const TwoLinkArm& arm, Branch elbow, const Line
   if (auto e = checkArmPath(arm, path)) return *e;
   const double length = (path.to - path.from).norm();
   if (!(length > 0.0)) return Error{ErrorCode::InvalidValue, "path", "path must have distinct end points"};
-  if (samples < 2) return Error{ErrorCode::InvalidValue, "samples", "samples must be at least 2 (got " + std::to_string(samples) + ")"};
+  if (samples < 2)
+    return Error{ErrorCode::InvalidValue, "samples",
+                 "samples must be at least 2 (got " + std::to_string(samples) + ")"};
   const double duration = length / path.speed;
   const Eigen::Vector2d velocity = (path.to - path.from) / duration;
   ArmPathResult out;
@@ -113,10 +118,11 @@ Result<ArmPathResult> followLine(const TwoLinkArm& arm, Branch elbow, const Line
   for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
     const double mid = (path.from + velocity * 0.5 * (cuts[k] + cuts[k + 1])).norm();
     if (mid >= inner && mid <= outer) continue;
-    if (!out.unreachable.empty() && out.unreachable.back().second == cuts[k]) out.unreachable.back().second = cuts[k + 1];
+    if (!out.unreachable.empty() && out.unreachable.back().second == cuts[k])
+      out.unreachable.back().second = cuts[k + 1];
     else out.unreachable.emplace_back(cuts[k], cuts[k + 1]);
   }
   return out;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -75,4 +75,4 @@ Result<ArmPathResult> followLine(const TwoLinkArm& arm, Branch elbow, const Line
 /// dimension at most kMaxLengthRatio times the shorter link.
 std::optional<Error> checkArmPath(const TwoLinkArm& arm, const LinePath& path);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

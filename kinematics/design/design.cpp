@@ -38,11 +38,13 @@ std::optional<Error> checkDriveAndGrid(double omega, double alpha, double fromDe
   if (auto e = checkMagnitude(fromDeg, "fromDeg", kMaxAngleDeg, "degrees")) return e;
   if (auto e = checkMagnitude(toDeg, "toDeg", kMaxAngleDeg, "degrees")) return e;
   if (toDeg <= fromDeg)
-    return Error{ErrorCode::InvalidValue, "toDeg",
-                 "toDeg must be greater than fromDeg (got " + formatNumber(fromDeg) + " to " + formatNumber(toDeg) + ")"};
+    return Error{
+        ErrorCode::InvalidValue, "toDeg",
+        "toDeg must be greater than fromDeg (got " + formatNumber(fromDeg) + " to " + formatNumber(toDeg) + ")"};
   if (samples < 2 || samples > static_cast<std::size_t>(kMaxSamples))
-    return Error{ErrorCode::InvalidValue, "samples",
-                 "samples must be between 2 and " + std::to_string(kMaxSamples) + " (got " + std::to_string(samples) + ")"};
+    return Error{
+        ErrorCode::InvalidValue, "samples",
+        "samples must be between 2 and " + std::to_string(kMaxSamples) + " (got " + std::to_string(samples) + ")"};
   return std::nullopt;
 }
 
@@ -74,4 +76,4 @@ FourBarDesign designFromExample(const FourBarExample& e) {
   return d;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -20,10 +20,10 @@ struct FourBarDesign {
   std::string lengthUnit = "mm";
   Branch branch = Branch::Open;
   std::optional<CouplerPointSpec> couplerPoint;
-  double omega = 1.0;       ///< crank, rad/s (CCW positive)
-  double alpha = 0.0;       ///< crank, rad/s²
-  double fromDeg = 0.0;     ///< analysis grid start, degrees
-  double toDeg = 360.0;     ///< analysis grid end, degrees
+  double omega = 1.0;         ///< crank, rad/s (CCW positive)
+  double alpha = 0.0;         ///< crank, rad/s²
+  double fromDeg = 0.0;       ///< analysis grid start, degrees
+  double toDeg = 360.0;       ///< analysis grid end, degrees
   std::size_t samples = 721;  ///< grid points from fromDeg to toDeg inclusive (≥ 2)
   LinkageDynamics dynamics;   ///< masses and loads for forces (links "crank", "coupler", "rocker"); empty: none
   bool operator==(const FourBarDesign&) const = default;
@@ -52,4 +52,4 @@ SweepSpec designSweepSpec(const FourBarDesign& design);
 /// A built-in example as a design, sampled every 0.5° over its range.
 FourBarDesign designFromExample(const FourBarExample& example);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -31,7 +31,7 @@ void toInputAngles(const FourBarStructure& s, DesignAnalysis& a) {
             [](const LimitPosition& x, const LimitPosition& y) { return x.crankAngle < y.crankAngle; });
 }
 
-} // namespace
+}  // namespace
 
 InputRange assembledRange(const SweepResult& sweep) {
   InputRange range;
@@ -70,4 +70,4 @@ DesignAnalysis analyseDesign(const Mechanism& mechanism, const SweepResult& grid
   return a;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

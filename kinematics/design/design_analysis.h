@@ -42,4 +42,4 @@ DesignAnalysis analyseDesign(const Mechanism& mechanism, const SweepResult& grid
 /// sample of a grid spanning 360° or more assembled.
 InputRange assembledRange(const SweepResult& sweep);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

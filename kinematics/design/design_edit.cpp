@@ -48,4 +48,4 @@ Result<DragOutcome> dragFourBar(const FourBarDesign& design, double crankAngle, 
   return out;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

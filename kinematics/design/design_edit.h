@@ -34,4 +34,4 @@ struct DragOutcome {
 Result<DragOutcome> dragFourBar(const FourBarDesign& design, double crankAngle, FourBarHandle handle,
                                 const Eigen::Vector2d& target);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -23,7 +23,8 @@ Result<PointId> resolveParent(Mechanism& m, const ParentChoice& parent) {
   }
   const bool ground = parent.source == Source::NewGround;
   const std::string name = freshPointName(m, ground);
-  auto grown = ground ? addGroundPivot(m, name, parent.position) : addPointOnLink(m, name, parent.link, parent.along, parent.across);
+  auto grown = ground ? addGroundPivot(m, name, parent.position)
+                      : addPointOnLink(m, name, parent.link, parent.along, parent.across);
   if (!grown) return grown.error();
   m = std::move(*grown);
   return PointId{m.points.size() - 1};
@@ -76,7 +77,7 @@ std::optional<PointId> firstGround(const Mechanism& m) {
   return std::nullopt;
 }
 
-} // namespace
+}  // namespace
 
 std::string freshPointName(const Mechanism& m, bool groundPivot) {
   if (groundPivot) {
@@ -181,7 +182,7 @@ DyadRequest suggestDyad(const Mechanism& m, double crankAngle, DyadKind kind) {
   case DyadKind::Prp:
     // A block sliding on the last link, pinned to a block in a vertical ground slot.
     r.guide = Guide{m.links.empty() ? std::nullopt : std::optional<LinkId>(LinkId{m.links.size() - 1}),
-                       Eigen::Vector2d::Zero(), 0.0};
+                    Eigen::Vector2d::Zero(), 0.0};
     r.secondGuide = Guide{std::nullopt, at, kPi / 2.0};
     break;
   }
@@ -189,4 +190,4 @@ DyadRequest suggestDyad(const Mechanism& m, double crankAngle, DyadKind kind) {
   return r;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

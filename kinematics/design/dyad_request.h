@@ -22,22 +22,22 @@ enum class DyadKind { Rrr, Rrp, Rpr, Prp };
 struct ParentChoice {
   enum class Source { Existing, OnLink, NewGround };
   Source source = Source::Existing;
-  PointId point;                              ///< Existing
-  LinkId link;                                ///< OnLink
-  double along = 0.0;                                     ///< OnLink, length unit
-  double across = 0.0;                                    ///< OnLink, length unit
-  Eigen::Vector2d position = Eigen::Vector2d::Zero();     ///< NewGround, length unit
+  PointId point;                                       ///< Existing
+  LinkId link;                                         ///< OnLink
+  double along = 0.0;                                  ///< OnLink, length unit
+  double across = 0.0;                                 ///< OnLink, length unit
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();  ///< NewGround, length unit
 };
 
 struct DyadRequest {
   DyadKind kind = DyadKind::Rrr;
-  std::string joint;        ///< the new joint's name
-  ParentChoice first;       ///< RRR: first parent; RRP: the rod's other end; RPR: the pivot
-  ParentChoice second;      ///< RRR: second parent; RPR: the point the slot passes through
+  std::string joint;          ///< the new joint's name
+  ParentChoice first;         ///< RRR: first parent; RRP: the rod's other end; RPR: the pivot
+  ParentChoice second;        ///< RRR: second parent; RPR: the point the slot passes through
   double firstLength = 1.0;   ///< RRR: to first; RRP: the rod; RPR: the slotted link
   double secondLength = 1.0;  ///< RRR: to second
-  Guide guide;        ///< RRP: the slider's guide; PRP: the first guide
-  Guide secondGuide;  ///< PRP: the second guide
+  Guide guide;                ///< RRP: the slider's guide; PRP: the first guide
+  Guide secondGuide;          ///< PRP: the second guide
   Branch branch = Branch::Open;
 };
 
@@ -63,4 +63,4 @@ void fillLengths(const Mechanism& mechanism, double crankAngle, DyadRequest& req
 /// for a ground pivot.
 std::string freshPointName(const Mechanism& mechanism, bool groundPivot = false);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -9,19 +9,54 @@ std::vector<FourBarExample> fourBarExamples() {
   return {
       {"thesis-crank-rocker",
        "crank-rocker 60/25/70/45 mm at 10 rpm (Sharifgalieva thesis, Excel and SolidWorks tables every 30°)",
-       {60.0, 25.0, 70.0, 45.0}, "mm", Branch::Open, rpmToRadPerSec(10.0), 0.0, 0.0, 360.0, 30.0, std::nullopt, {}},
+       {60.0, 25.0, 70.0, 45.0},
+       "mm",
+       Branch::Open,
+       rpmToRadPerSec(10.0),
+       0.0,
+       0.0,
+       360.0,
+       30.0,
+       std::nullopt,
+       {}},
       {"alvi-fourbar",
        "four-bar AD 80, AB 20, BC 66, CD 56 mm at 10.5 rad/s (Alvi et al., both branches every 40°)",
-       {80.0, 20.0, 66.0, 56.0}, "mm", Branch::Open, 10.5, 0.0, 0.0, 360.0, 40.0, std::nullopt, {}},
+       {80.0, 20.0, 66.0, 56.0},
+       "mm",
+       Branch::Open,
+       10.5,
+       0.0,
+       0.0,
+       360.0,
+       40.0,
+       std::nullopt,
+       {}},
       {"miranda-fourbar",
        "four-bar frame 250, crank 100, coupler 225, rocker 150 mm at 11 Hz, P at the coupler's middle "
        "(Miranda et al., SolidWorks coupler extremes at 11 and 15 Hz)",
-       {250.0, 100.0, 225.0, 150.0}, "mm", Branch::Open, 2.0 * kPi * 11.0, 0.0, 0.0, 360.0, 1.0,
-       CouplerPointSpec{112.5, 0.0}, {}},
+       {250.0, 100.0, 225.0, 150.0},
+       "mm",
+       Branch::Open,
+       2.0 * kPi * 11.0,
+       0.0,
+       0.0,
+       360.0,
+       1.0,
+       CouplerPointSpec{112.5, 0.0},
+       {}},
       {"funsho-fourbar",
        "four-bar AB 10, BC 35, CD 20, AD 30 mm, crank at 100 rad/s, with masses and inertias: joint forces and "
        "motor torque (Funsho, seed 004's MATLAB inverse dynamics)",
-       {30.0, 10.0, 35.0, 20.0}, "mm", Branch::Open, 100.0, 0.0, 0.0, 360.0, 5.0, std::nullopt, funshoFourBarDynamics()},
+       {30.0, 10.0, 35.0, 20.0},
+       "mm",
+       Branch::Open,
+       100.0,
+       0.0,
+       0.0,
+       360.0,
+       5.0,
+       std::nullopt,
+       funshoFourBarDynamics()},
   };
 }
 
@@ -38,40 +73,78 @@ namespace {
 // The six-bars are the thesis crank-rocker (60/25/70/45 mm) grown by one dyad, at 60 rpm;
 // their dimensions keep every transmission angle above 20° over the whole turn.
 MechanismExample sixBarExample(const SixBarGeometry& g, const std::string& description) {
-  return {sixBarKindName(g.kind), description, sixBarKindName(g.kind), makeSixBar(g).value(), 2.0 * kPi,
-          0.0, 360.0, 1.0, std::nullopt, {}};
+  return {
+      sixBarKindName(g.kind), description, sixBarKindName(g.kind), makeSixBar(g).value(), 2.0 * kPi, 0.0, 360.0, 1.0,
+      std::nullopt,           {}};
 }
 
-} // namespace
+}  // namespace
 
 std::vector<MechanismExample> mechanismExamples() {
   return {
       {"ls3-engine",
        "Chevrolet LS3 piston: stroke 92 mm (crank 46 mm), connecting rod 6.098 in, crank at 110 Hz = 6600 rpm "
        "(Miranda et al., SolidWorks piston extremes)",
-       "slider-crank", makeSliderCrank(kLs3Engine).value(), 2.0 * kPi * 110.0, 0.0, 360.0, 1.0, std::nullopt, {}},
+       "slider-crank",
+       makeSliderCrank(kLs3Engine).value(),
+       2.0 * kPi * 110.0,
+       0.0,
+       360.0,
+       1.0,
+       std::nullopt,
+       {}},
       {"shaper",
        "crank-shaper quick return: crank 100, slotted rocker 400, link 150 mm, rocker pivot 200 mm below and 40 mm "
        "beside the crank, ram guide 220 mm above it, crank at 3 Hz (Miranda et al.)",
-       "shaper", makeShaper(kSeedShaper).value(), 2.0 * kPi * 3.0, 0.0, 360.0, 1.0, kSeedShaper, {}},
+       "shaper",
+       makeShaper(kSeedShaper).value(),
+       2.0 * kPi * 3.0,
+       0.0,
+       360.0,
+       1.0,
+       kSeedShaper,
+       {}},
       {"whitworth",
        "Whitworth quick return: the seed shaper's crank (100 mm) with the slotted link's pivot 40 mm below the crank "
        "centre, inside the crank circle, so it turns fully; slotted link 120, link 150 mm, ram guide through the pivot",
-       "whitworth", makeShaper(kWhitworth).value(), 2.0 * kPi * 3.0, 0.0, 360.0, 1.0, kWhitworth, {}},
-      sixBarExample(kWattISixBar, "Watt I six-bar: the thesis crank-rocker with links 5 and 6 from its coupler to its rocker"),
-      sixBarExample(kWattIISixBar, "Watt II six-bar: two four-bars in series, the thesis crank-rocker driving a second rocker about O6"),
+       "whitworth",
+       makeShaper(kWhitworth).value(),
+       2.0 * kPi * 3.0,
+       0.0,
+       360.0,
+       1.0,
+       kWhitworth,
+       {}},
+      sixBarExample(kWattISixBar,
+                    "Watt I six-bar: the thesis crank-rocker with links 5 and 6 from its coupler to its rocker"),
+      sixBarExample(
+          kWattIISixBar,
+          "Watt II six-bar: two four-bars in series, the thesis crank-rocker driving a second rocker about O6"),
       sixBarExample(kStephensonISixBar, "Stephenson I six-bar: links 5 and 6 from a point on the crank to the rocker"),
-      sixBarExample(kStephensonIIISixBar, "Stephenson III six-bar: links 5 and 6 from the coupler to a third ground pivot O6"),
+      sixBarExample(kStephensonIIISixBar,
+                    "Stephenson III six-bar: links 5 and 6 from the coupler to a third ground pivot O6"),
       {"stephenson-ii",
        "Stephenson II six-bar (ground binary): its two ternary links close one loop with links 5 and 6, a triad no "
        "dyad order solves, so C..E are found by Newton-Raphson",
-       "stephenson-ii", makeStephensonIINewton(kStephensonIINewton).value(), 2.0 * kPi, 0.0, 360.0, 1.0, std::nullopt,
+       "stephenson-ii",
+       makeStephensonIINewton(kStephensonIINewton).value(),
+       2.0 * kPi,
+       0.0,
+       360.0,
+       1.0,
+       std::nullopt,
        {}},
       {"stephenson-iii-triad",
        "Stephenson III six-bar driven from the link that is not in a four-bar loop: the floating ternary C, D, E "
        "needs all three at once, so Newton-Raphson solves it",
-       "stephenson-iii-triad", makeStephensonIIINewton(kStephensonIIINewton).value(), 2.0 * kPi, 0.0, 360.0, 1.0,
-       std::nullopt, {}},
+       "stephenson-iii-triad",
+       makeStephensonIIINewton(kStephensonIIINewton).value(),
+       2.0 * kPi,
+       0.0,
+       360.0,
+       1.0,
+       std::nullopt,
+       {}},
   };
 }
 
@@ -87,4 +160,4 @@ std::optional<FourBarExample> findFourBarExample(const std::string& name) {
   return std::nullopt;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

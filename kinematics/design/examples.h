@@ -21,13 +21,13 @@ struct FourBarExample {
   FourBarLengths lengths;
   std::string lengthUnit;
   Branch branch = Branch::Open;
-  double omega = 0.0;     ///< crank, rad/s
-  double alpha = 0.0;     ///< crank, rad/s²
-  double fromDeg = 0.0;   ///< default table start, degrees
-  double toDeg = 360.0;   ///< default table end, degrees
-  double stepDeg = 30.0;  ///< default table step, degrees
+  double omega = 0.0;                            ///< crank, rad/s
+  double alpha = 0.0;                            ///< crank, rad/s²
+  double fromDeg = 0.0;                          ///< default table start, degrees
+  double toDeg = 360.0;                          ///< default table end, degrees
+  double stepDeg = 30.0;                         ///< default table step, degrees
   std::optional<CouplerPointSpec> couplerPoint;  ///< a point the seed follows on the coupler
-  LinkageDynamics dynamics;  ///< masses and loads, if the seed gives them (else empty)
+  LinkageDynamics dynamics;                      ///< masses and loads, if the seed gives them (else empty)
   bool operator==(const FourBarExample&) const = default;
 };
 
@@ -35,14 +35,14 @@ struct FourBarExample {
 struct MechanismExample {
   std::string name;
   std::string description;
-  std::string kind;       ///< "slider-crank", "shaper", "whitworth", "watt-i", "watt-ii", "stephenson-i", "stephenson-iii"
+  std::string kind;  ///< "slider-crank", "shaper", "whitworth", "watt-i", "watt-ii", "stephenson-i", "stephenson-iii"
   Mechanism mechanism;
-  double omega = 0.0;     ///< crank, rad/s
+  double omega = 0.0;  ///< crank, rad/s
   double fromDeg = 0.0;
   double toDeg = 360.0;
   double stepDeg = 1.0;
   std::optional<ShaperGeometry> shaper;  ///< for a shaper: its dimensions (time ratio, stroke)
-  LinkageDynamics dynamics;  ///< masses and loads, if the example has them (else empty)
+  LinkageDynamics dynamics;              ///< masses and loads, if the example has them (else empty)
   bool operator==(const MechanismExample&) const = default;
 };
 
@@ -63,14 +63,16 @@ inline const ShaperGeometry kWhitworth{100.0, 120.0, 150.0, Eigen::Vector2d(0.0,
 
 /// The six-bar examples: the thesis crank-rocker (60/25/70/45 mm) with one more dyad.
 inline const FourBarLengths kSixBarBase{60.0, 25.0, 70.0, 45.0};
-inline const SixBarGeometry kWattISixBar{SixBarKind::WattI, kSixBarBase, Branch::Open, {35.0, 25.0}, {60.0, 0.0},
-                                         Eigen::Vector2d::Zero(), 70.0, 55.0, Branch::Open};
-inline const SixBarGeometry kWattIISixBar{SixBarKind::WattII, kSixBarBase, Branch::Open, {60.0, 0.0}, {},
-                                          Eigen::Vector2d(110.0, 20.0), 60.0, 45.0, Branch::Open};
-inline const SixBarGeometry kStephensonISixBar{SixBarKind::StephensonI, kSixBarBase, Branch::Open, {-20.0, 0.0},
-                                               {30.0, -15.0}, Eigen::Vector2d::Zero(), 100.0, 75.0, Branch::Open};
-inline const SixBarGeometry kStephensonIIISixBar{SixBarKind::StephensonIII, kSixBarBase, Branch::Open, {35.0, 30.0}, {},
-                                                 Eigen::Vector2d(100.0, 60.0), 75.0, 55.0, Branch::Open};
+inline const SixBarGeometry kWattISixBar{SixBarKind::WattI,       kSixBarBase, Branch::Open, {35.0, 25.0}, {60.0, 0.0},
+                                         Eigen::Vector2d::Zero(), 70.0,        55.0,         Branch::Open};
+inline const SixBarGeometry kWattIISixBar{SixBarKind::WattII,           kSixBarBase, Branch::Open, {60.0, 0.0}, {},
+                                          Eigen::Vector2d(110.0, 20.0), 60.0,        45.0,         Branch::Open};
+inline const SixBarGeometry kStephensonISixBar{
+    SixBarKind::StephensonI, kSixBarBase, Branch::Open, {-20.0, 0.0}, {30.0, -15.0},
+    Eigen::Vector2d::Zero(), 100.0,       75.0,         Branch::Open};
+inline const SixBarGeometry kStephensonIIISixBar{
+    SixBarKind::StephensonIII,    kSixBarBase, Branch::Open, {35.0, 30.0}, {},
+    Eigen::Vector2d(100.0, 60.0), 75.0,        55.0,         Branch::Open};
 
 /// Seed 004's (Funsho) masses and inertias, as its MATLAB code has them (the code produced
 /// its published figures; its Table 1 differs: coupler 0.4 kg and 0.004 kg·m², rocker centre
@@ -84,4 +86,4 @@ std::vector<FourBarExample> fourBarExamples();
 /// The example named `name`, if there is one.
 std::optional<FourBarExample> findFourBarExample(const std::string& name);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -56,4 +56,4 @@ std::optional<Design> designForExample(const std::string& name) {
   return std::nullopt;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

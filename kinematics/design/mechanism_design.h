@@ -20,12 +20,12 @@ namespace linkwright::kinematics {
 struct MechanismDesign {
   std::string kind = "linkage";  ///< what it is, shown to the user: "slider-crank", "watt-ii", …
   Mechanism mechanism;
-  double omega = 1.0;          ///< crank, rad/s (CCW positive)
-  double alpha = 0.0;          ///< crank, rad/s²
-  double fromDeg = 0.0;        ///< analysis grid start, degrees
-  double toDeg = 360.0;        ///< analysis grid end, degrees
-  std::size_t samples = 721;   ///< grid points from fromDeg to toDeg inclusive (≥ 2)
-  LinkageDynamics dynamics;    ///< masses and loads for forces, by link and point name; empty: none
+  double omega = 1.0;         ///< crank, rad/s (CCW positive)
+  double alpha = 0.0;         ///< crank, rad/s²
+  double fromDeg = 0.0;       ///< analysis grid start, degrees
+  double toDeg = 360.0;       ///< analysis grid end, degrees
+  std::size_t samples = 721;  ///< grid points from fromDeg to toDeg inclusive (≥ 2)
+  LinkageDynamics dynamics;   ///< masses and loads for forces, by link and point name; empty: none
   bool operator==(const MechanismDesign&) const = default;
 };
 
@@ -54,4 +54,4 @@ MechanismDesign designFromExample(const MechanismExample& example);
 /// The built-in example named `name` (four-bar or not) as a design, if there is one.
 std::optional<Design> designForExample(const std::string& name);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

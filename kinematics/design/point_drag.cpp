@@ -21,7 +21,8 @@ struct Dragger {
     length = (target - pose.position[parent.index]).norm();
     if (length > 1e-9 * (1.0 + pose.position[parent.index].norm())) return std::nullopt;
     return Error{ErrorCode::InvalidValue, m.points[index].name,
-                 m.points[index].name + " cannot be dropped onto " + m.points[parent.index].name + ": the link between them would have no length"};
+                 m.points[index].name + " cannot be dropped onto " + m.points[parent.index].name +
+                     ": the link between them would have no length"};
   }
 
   std::optional<Error> operator()(GroundPoint& g) const {
@@ -48,7 +49,8 @@ struct Dragger {
     const Eigen::Vector2d onGuide = line.point + s * line.direction;
     p.length = (onGuide - pose.position[p.first.index]).norm();
     if (!(p.length > 0.0))
-      return Error{ErrorCode::InvalidValue, m.points[index].name, m.points[index].name + " cannot sit right under its rod's pin"};
+      return Error{ErrorCode::InvalidValue, m.points[index].name,
+                   m.points[index].name + " cannot sit right under its rod's pin"};
     p.branch = s >= foot ? Branch::Open : Branch::Crossed;
     return std::nullopt;
   }
@@ -83,18 +85,18 @@ struct Dragger {
   }
 };
 
-} // namespace
+}  // namespace
 
 Result<Mechanism> dragPoint(const Mechanism& mechanism, const Pose& pose, double inputAngle, PointId point,
                             const Eigen::Vector2d& target) {
   if (point.index >= mechanism.points.size() || pose.position.size() != mechanism.points.size())
     return Error{ErrorCode::InvalidStructure, "point", "the dragged point does not belong to this linkage"};
-  if (!target.allFinite())
-    return Error{ErrorCode::InvalidValue, "target", "the drag target must be a finite position"};
+  if (!target.allFinite()) return Error{ErrorCode::InvalidValue, "target", "the drag target must be a finite position"};
   Mechanism m = mechanism;
-  if (auto e = std::visit(Dragger{m, pose, inputAngle, point.index, target}, m.points[point.index].definition)) return *e;
+  if (auto e = std::visit(Dragger{m, pose, inputAngle, point.index, target}, m.points[point.index].definition))
+    return *e;
   if (auto e = checkMechanism(m)) return *e;
   return m;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -27,4 +27,4 @@ namespace linkwright::kinematics {
 Result<Mechanism> dragPoint(const Mechanism& mechanism, const Pose& pose, double inputAngle, PointId point,
                             const Eigen::Vector2d& target);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -39,7 +39,7 @@ void store(const PoseForces& f, std::size_t j, ForceSweep& out) {
   out.shakingMoment[j] = f.shakingMoment;
 }
 
-} // namespace
+}  // namespace
 
 PoseForces ForceSweep::at(std::size_t j) const {
   PoseForces f;
@@ -82,4 +82,4 @@ Result<ForceSweep> sweepForces(const Mechanism& mechanism, const LinkageDynamics
   return out;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

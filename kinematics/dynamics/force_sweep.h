@@ -22,8 +22,8 @@ namespace linkwright::kinematics {
 /// singular keeps the sweep's status, and a sample where the forces are not determined is
 /// Singular.
 struct ForceSweep {
-  BodyModel bodies;                  ///< names the joints the columns belong to
-  std::vector<PoseStatus> status;    ///< per sample
+  BodyModel bodies;                                    ///< names the joints the columns belong to
+  std::vector<PoseStatus> status;                      ///< per sample
   std::vector<std::vector<Eigen::Vector2d>> revolute;  ///< N, force on joint.body from joint.hub
   std::vector<std::vector<double>> normal;             ///< N, per prismatic joint (PoseForces::normal)
   std::vector<std::vector<double>> moment;             ///< N·m, per prismatic joint
@@ -42,4 +42,4 @@ struct ForceSweep {
 /// or length unit: see InverseDynamics::create).
 Result<ForceSweep> sweepForces(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepResult& sweep);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -12,7 +12,7 @@ namespace {
 // First row of a moving body's three equations (the ground has none).
 Eigen::Index rowOf(BodyId body) { return static_cast<Eigen::Index>(3 * (body.index - 1)); }
 
-} // namespace
+}  // namespace
 
 Result<InverseDynamics> InverseDynamics::create(const Mechanism& mechanism, const LinkageDynamics& dynamics) {
   if (auto e = checkMechanism(mechanism)) return *e;
@@ -254,4 +254,4 @@ Result<PoseForces> forcesAtPose(const Mechanism& mechanism, const LinkageDynamic
   return forces;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

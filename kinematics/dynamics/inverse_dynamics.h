@@ -57,10 +57,10 @@ inline constexpr double kForceRankThreshold = 1e-10;
 
 /// Forces at one pose, world frame. Indices follow the BodyModel's joint lists.
 struct PoseForces {
-  std::vector<Eigen::Vector2d> revolute;  ///< N: force on joint.body from joint.hub
-  std::vector<double> normal;             ///< N: on the block from the guide body, along n = u⊥
-  std::vector<double> moment;             ///< N·m: couple on the block from the guide body, CCW +
-  double driveTorque = 0.0;               ///< N·m: on the driven body from the ground, CCW +
+  std::vector<Eigen::Vector2d> revolute;                   ///< N: force on joint.body from joint.hub
+  std::vector<double> normal;                              ///< N: on the block from the guide body, along n = u⊥
+  std::vector<double> moment;                              ///< N·m: couple on the block from the guide body, CCW +
+  double driveTorque = 0.0;                                ///< N·m: on the driven body from the ground, CCW +
   Eigen::Vector2d shakingForce = Eigen::Vector2d::Zero();  ///< N: Σ forces the moving bodies exert on the ground
   double shakingMoment = 0.0;  ///< N·m: their moment about the crank pivot, with the motor's reaction −T
   bool operator==(const PoseForces&) const = default;
@@ -138,4 +138,4 @@ private:
 /// ErrorCode::Singular when the forces are not determined at this pose.
 Result<PoseForces> forcesAtPose(const Mechanism& mechanism, const LinkageDynamics& dynamics, const Pose& pose);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

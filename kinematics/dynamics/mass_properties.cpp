@@ -21,7 +21,8 @@ std::optional<Error> checkInertia(double value, const std::string& field) {
   return checkNonNegative(value, field, kMaxInertia, "kg·m²");
 }
 
-std::optional<Error> checkVector(const Eigen::Vector2d& v, const std::string& field, double max, const std::string& unit) {
+std::optional<Error> checkVector(const Eigen::Vector2d& v, const std::string& field, double max,
+                                 const std::string& unit) {
   if (auto e = checkMagnitude(v.x(), field + ".x", max, unit)) return e;
   return checkMagnitude(v.y(), field + ".y", max, unit);
 }
@@ -74,7 +75,8 @@ std::optional<Error> checkSliderMasses(const Mechanism& m, const std::vector<Sli
     const SliderMass& s = sliders[k];
     const std::string field = "sliders[" + std::to_string(k) + "]";
     if (auto e = checkSliderKey(m, s.point, s.guide, field)) return e;
-    if (!seen.insert({s.point, s.guide}).second) return valueError(field + ".point", "repeats the slider \"" + s.point + "\"");
+    if (!seen.insert({s.point, s.guide}).second)
+      return valueError(field + ".point", "repeats the slider \"" + s.point + "\"");
     if (auto e = checkMass(s.mass, field + ".mass")) return e;
     if (auto e = checkInertia(s.inertia, field + ".inertia")) return e;
   }
@@ -94,7 +96,7 @@ std::optional<Error> checkForce(const Mechanism& m, const PointForce& f, const s
   return std::nullopt;
 }
 
-} // namespace
+}  // namespace
 
 bool LinkageDynamics::empty() const {
   return links.empty() && sliders.empty() && !loads.gravity && loads.torques.empty() && loads.forces.empty();
@@ -115,4 +117,4 @@ std::optional<Error> checkDynamics(const Mechanism& m, const LinkageDynamics& d)
   return std::nullopt;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

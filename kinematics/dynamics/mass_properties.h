@@ -32,19 +32,20 @@ struct LinkFramePoint {
 
 /// Mass properties of one link (the body the link lies on carries them).
 struct LinkMass {
-  std::string link;                    ///< the link's name
-  double mass = 0.0;                   ///< kg, finite, ≥ 0
+  std::string link;                      ///< the link's name
+  double mass = 0.0;                     ///< kg, finite, ≥ 0
   std::optional<LinkFramePoint> centre;  ///< centre of mass; default the link's midpoint
-  std::optional<double> inertia;       ///< kg·m² about the centre of mass, ≥ 0; default m·L²/12 (uniform slender bar, L in m)
+  std::optional<double>
+      inertia;  ///< kg·m² about the centre of mass, ≥ 0; default m·L²/12 (uniform slender bar, L in m)
   bool operator==(const LinkMass&) const = default;
 };
 
 /// Mass of one slider block, whose centre of mass is its pin.
 struct SliderMass {
-  std::string point;    ///< the slider's defining point (an rrp, rpr or prp point), by name
-  int guide = 0;        ///< for a prp point: 0 the block on the first guide, 1 on the second
-  double mass = 0.0;    ///< kg, finite, ≥ 0
-  double inertia = 0.0; ///< kg·m² about the pin, finite, ≥ 0 (it turns with its guide)
+  std::string point;     ///< the slider's defining point (an rrp, rpr or prp point), by name
+  int guide = 0;         ///< for a prp point: 0 the block on the first guide, 1 on the second
+  double mass = 0.0;     ///< kg, finite, ≥ 0
+  double inertia = 0.0;  ///< kg·m² about the pin, finite, ≥ 0 (it turns with its guide)
   bool operator==(const SliderMass&) const = default;
 };
 
@@ -59,9 +60,9 @@ struct LinkTorque {
 /// On a link: at the named point, which must lie on that link's body. On a slider: `link` is
 /// empty and `point` names the slider's defining point (as SliderMass); it acts at the pin.
 struct PointForce {
-  std::string link;     ///< the link it acts on, or empty for a slider block
-  std::string point;    ///< the point of application (a link), or the slider's defining point
-  int guide = 0;        ///< for a prp slider: which block (0, 1)
+  std::string link;   ///< the link it acts on, or empty for a slider block
+  std::string point;  ///< the point of application (a link), or the slider's defining point
+  int guide = 0;      ///< for a prp slider: which block (0, 1)
   Eigen::Vector2d force = Eigen::Vector2d::Zero();  ///< N, world frame
   bool operator==(const PointForce&) const = default;
 };
@@ -95,4 +96,4 @@ inline Eigen::Vector2d standardGravity() { return {0.0, -kStandardGravity}; }
 /// forces are solved (inverse_dynamics.h), not here.
 std::optional<Error> checkDynamics(const Mechanism& mechanism, const LinkageDynamics& dynamics);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -98,7 +98,8 @@ BodyId guideBody(const BodyModel& model, const Guide& guide) {
   return guide.link ? model.linkBody[guide.link->index] : kGroundBody;
 }
 
-void addBlock(BodyModel& model, const Mechanism& m, SliderKey key, PointId pin, BodyId guide, const std::string& suffix) {
+void addBlock(BodyModel& model, const Mechanism& m, SliderKey key, PointId pin, BodyId guide,
+              const std::string& suffix) {
   const BodyId block{model.bodies.size()};
   const std::string name = m.points[pin.index].name + suffix;
   Body body{BodyKind::Slider, "slider_" + name, {pin}, {}, pin, pin, key, guide};
@@ -138,7 +139,8 @@ void nameBodies(BodyModel& model, const Mechanism& m) {
   for (std::size_t k = 0; k < model.bodies.size(); ++k) {
     Body& b = model.bodies[k];
     if (b.kind == BodyKind::Ground) b.name = "ground";
-    else if (b.kind == BodyKind::Rigid) b.name = b.links.empty() ? "body" + std::to_string(k) : m.links[b.links[0].index].name;
+    else if (b.kind == BodyKind::Rigid)
+      b.name = b.links.empty() ? "body" + std::to_string(k) : m.links[b.links[0].index].name;
   }
 }
 
@@ -146,13 +148,14 @@ std::string countText(const BodyModel& model) {
   const std::size_t joints = model.revolutes.size() + model.prismatics.size();
   std::string bodies;
   for (std::size_t k = 1; k < model.bodies.size(); ++k) bodies += (k == 1 ? "" : ", ") + model.bodies[k].name;
-  return "Gruebler's count 3(n − 1) − 2j = 3·" + std::to_string(model.movingBodies()) + " − 2·" + std::to_string(joints) +
-         " = " + std::to_string(model.mobility()) + " with " + std::to_string(model.movingBodies()) + " moving bodies (" +
-         bodies + "), " + std::to_string(model.revolutes.size()) + " revolute and " +
-         std::to_string(model.prismatics.size()) + " prismatic joints";
+  return "Gruebler's count 3(n − 1) − 2j = 3·" + std::to_string(model.movingBodies()) + " − 2·" +
+         std::to_string(joints) + " = " + std::to_string(model.mobility()) + " with " +
+         std::to_string(model.movingBodies()) + " moving bodies (" + bodies + "), " +
+         std::to_string(model.revolutes.size()) + " revolute and " + std::to_string(model.prismatics.size()) +
+         " prismatic joints";
 }
 
-} // namespace
+}  // namespace
 
 int BodyModel::mobility() const {
   return 3 * static_cast<int>(movingBodies()) - 2 * static_cast<int>(revolutes.size() + prismatics.size());
@@ -197,8 +200,9 @@ Result<BodyModel> bodiesOf(const Mechanism& m) {
     }
   const auto driven = bodyHolding(model, model.crankPivot, model.crankTip);
   if (!driven || *driven == kGroundBody)
-    return Error{ErrorCode::InvalidStructure, "points", "the crank " + m.points[model.crankTip.index].name +
-                                                            " is fixed to the ground by the rest of the linkage: nothing can move"};
+    return Error{ErrorCode::InvalidStructure, "points",
+                 "the crank " + m.points[model.crankTip.index].name +
+                     " is fixed to the ground by the rest of the linkage: nothing can move"};
   model.driven = *driven;
   nameBodies(model, m);
   addBlocks(model, m);
@@ -237,4 +241,4 @@ Eigen::Vector2d prismaticDirection(const Mechanism& m, const PrismaticJoint& joi
   return (pose.position[joint.slider.point.index] - pose.position[s.pivot.index]).normalized();
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

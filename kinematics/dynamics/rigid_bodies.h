@@ -68,8 +68,8 @@ struct Body {
   /// which its angular velocity and acceleration follow. Blocks: both are the pin.
   PointId reference;
   PointId second;
-  SliderKey slider;             ///< blocks only
-  BodyId turnsWith;             ///< blocks: the body it slides on (it has the same ω, α)
+  SliderKey slider;  ///< blocks only
+  BodyId turnsWith;  ///< blocks: the body it slides on (it has the same ω, α)
   bool operator==(const Body&) const = default;
 };
 
@@ -88,9 +88,9 @@ struct RevoluteJoint {
 struct PrismaticJoint {
   std::string name;  ///< the pin's name, then _<RPR point> for a slotted link, _1/_2 for PRP guides
   SliderKey slider;
-  PointId pin;       ///< where the block is pinned (C, or an RPR's `through`)
+  PointId pin;  ///< where the block is pinned (C, or an RPR's `through`)
   BodyId block;
-  BodyId guide;      ///< the body the block slides on (ground, a link's body, the slotted link)
+  BodyId guide;  ///< the body the block slides on (ground, a link's body, the slotted link)
   bool operator==(const PrismaticJoint&) const = default;
 };
 
@@ -130,4 +130,4 @@ double linkLength(const Mechanism& mechanism, LinkId link);
 /// Unit direction (world frame) along which the block of `joint` slides, at `pose`.
 Eigen::Vector2d prismaticDirection(const Mechanism& mechanism, const PrismaticJoint& joint, const Pose& pose);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -16,7 +16,7 @@ std::string cellText(const SweepColumn& column, const SweepResult& r, std::size_
   return column.quantity == ColumnQuantity::InputAngle ? formatShort(value, 12) : formatDouble(value);
 }
 
-} // namespace
+}  // namespace
 
 std::string csvField(const std::string& text) {
   if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
@@ -59,7 +59,7 @@ void writeCsv(std::ostream& out, const Mechanism& m, const SweepResult& r, const
   }
 }
 
-} // namespace
+}  // namespace
 
 void writeSweepCsv(std::ostream& out, const Mechanism& m, const SweepResult& r) { writeCsv(out, m, r, nullptr); }
 
@@ -67,4 +67,4 @@ void writeSweepCsv(std::ostream& out, const Mechanism& m, const SweepResult& r, 
   writeCsv(out, m, r, &forces);
 }
 
-} // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics::io

@@ -27,4 +27,4 @@ void writeSweepCsv(std::ostream& out, const Mechanism& mechanism, const SweepRes
 /// Quotes a field per RFC 4180 if it contains a comma, quote, CR or LF.
 std::string csvField(const std::string& text);
 
-} // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics::io

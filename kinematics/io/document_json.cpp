@@ -4,15 +4,14 @@
 #include "kinematics/io/json.h"
 #include "kinematics/io/json_reader.h"
 #include "kinematics/io/mechanism_json.h"
-#include "kinematics/model/mechanism_check.h"
 #include "kinematics/io/number_format.h"
+#include "kinematics/model/mechanism_check.h"
 
 #include <cmath>
 #include <sstream>
 
 namespace linkwright::kinematics::io {
 namespace {
-
 
 Error documentError(const std::string& path, const std::string& why) {
   return Error{ErrorCode::InvalidValue, path, path + " " + why};
@@ -22,14 +21,16 @@ Error documentError(const std::string& path, const std::string& why) {
 Result<int> checkHeader(const JsonValue& root, JsonReader& r) {
   const auto format = r.string(root, "format", "format");
   if (r.error) return *r.error;
-  if (*format != "linkwright") return documentError("format", "must be \"linkwright\" (got \"" + *format + "\"): not a Linkwright document");
+  if (*format != "linkwright")
+    return documentError("format", "must be \"linkwright\" (got \"" + *format + "\"): not a Linkwright document");
   const auto version = r.number(root, "version", "version");
   if (r.error) return *r.error;
   if (*version != std::floor(*version) || *version < 1)
     return documentError("version", "must be a whole number from 1 (got " + formatShort(*version) + ")");
   if (*version > kDocumentVersion)
     return Error{ErrorCode::InvalidValue, "version",
-                 "this file is document version " + formatShort(*version) + ", written by a newer Linkwright; this one reads up to version " +
+                 "this file is document version " + formatShort(*version) +
+                     ", written by a newer Linkwright; this one reads up to version " +
                      std::to_string(kDocumentVersion)};
   return static_cast<int>(*version);
 }
@@ -70,9 +71,10 @@ std::string documentPath(const std::string& field) {
 // The driver and analysis members, shared by both kinds of design.
 template <typename D>
 void writeMotion(std::ostream& s, const D& d) {
-  s << "\n  },\n  \"driver\": {\"omega_rad_s\": " << formatJsonNumber(d.omega) << ", \"alpha_rad_s2\": " << formatJsonNumber(d.alpha)
-    << "},\n  \"analysis\": {\"from_deg\": " << formatJsonNumber(d.fromDeg) << ", \"to_deg\": " << formatJsonNumber(d.toDeg)
-    << ", \"samples\": " << d.samples << "}";
+  s << "\n  },\n  \"driver\": {\"omega_rad_s\": " << formatJsonNumber(d.omega)
+    << ", \"alpha_rad_s2\": " << formatJsonNumber(d.alpha)
+    << "},\n  \"analysis\": {\"from_deg\": " << formatJsonNumber(d.fromDeg)
+    << ", \"to_deg\": " << formatJsonNumber(d.toDeg) << ", \"samples\": " << d.samples << "}";
   writeDynamicsMember(s, d.dynamics);
   s << "\n}\n";
 }
@@ -95,8 +97,8 @@ void readMotion(const JsonValue& root, JsonReader& r, D& d) {
 
 void writeFourBar(std::ostream& s, const FourBarDesign& d) {
   const auto& l = d.lengths;
-  s << "    \"type\": \"four-bar\",\n    \"length_unit\": " << jsonQuote(d.lengthUnit)
-    << ",\n    \"branch\": \"" << (d.branch == Branch::Open ? "open" : "crossed") << "\",\n";
+  s << "    \"type\": \"four-bar\",\n    \"length_unit\": " << jsonQuote(d.lengthUnit) << ",\n    \"branch\": \""
+    << (d.branch == Branch::Open ? "open" : "crossed") << "\",\n";
   s << "    \"lengths\": {\"frame\": " << formatJsonNumber(l.frame) << ", \"crank\": " << formatJsonNumber(l.crank)
     << ", \"coupler\": " << formatJsonNumber(l.coupler) << ", \"rocker\": " << formatJsonNumber(l.rocker) << "}";
   if (d.couplerPoint)
@@ -106,8 +108,8 @@ void writeFourBar(std::ostream& s, const FourBarDesign& d) {
 }
 
 void writeLinkage(std::ostream& s, const MechanismDesign& d) {
-  s << "    \"type\": \"linkage\",\n    \"kind\": " << jsonQuote(d.kind) << ",\n    \"length_unit\": "
-    << jsonQuote(d.mechanism.lengthUnit) << ",\n";
+  s << "    \"type\": \"linkage\",\n    \"kind\": " << jsonQuote(d.kind)
+    << ",\n    \"length_unit\": " << jsonQuote(d.mechanism.lengthUnit) << ",\n";
   writeMechanismMembers(s, d.mechanism);
   writeMotion(s, d);
 }
@@ -140,7 +142,7 @@ int versionFor(const Design& design) {
   return std::visit([](const auto& d) { return d.dynamics.empty() ? 2 : kDocumentVersion; }, design);
 }
 
-} // namespace
+}  // namespace
 
 std::string writeDocument(const Design& design) {
   std::ostringstream s;
@@ -172,8 +174,9 @@ Result<Design> readDocument(std::string_view text) {
     return Design{d};
   }
   if (type != "linkage" || *version < 2)
-    return documentError("mechanism.type", std::string("must be \"four-bar\"") + (*version < 2 ? "" : " or \"linkage\"") +
-                                               " in a version " + std::to_string(*version) + " document (got \"" + type + "\")");
+    return documentError("mechanism.type", std::string("must be \"four-bar\"") +
+                                               (*version < 2 ? "" : " or \"linkage\"") + " in a version " +
+                                               std::to_string(*version) + " document (got \"" + type + "\")");
   MechanismDesign d;
   d.kind = r.string(*mech, "kind", "mechanism.kind").value_or("");
   const std::string unit = r.string(*mech, "length_unit", "mechanism.length_unit").value_or("");
@@ -186,4 +189,4 @@ Result<Design> readDocument(std::string_view text) {
   return Design{d};
 }
 
-} // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics::io

@@ -38,4 +38,4 @@ std::string writeDocument(const Design& design);
 /// document version 4, written by a newer Linkwright; this one reads up to version 3".
 Result<Design> readDocument(std::string_view text);
 
-} // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics::io

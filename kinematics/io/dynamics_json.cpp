@@ -8,7 +8,6 @@
 namespace linkwright::kinematics::io {
 namespace {
 
-
 std::string xy(const Eigen::Vector2d& v, const char* x, const char* y) {
   return "\"" + std::string(x) + "\": " + formatJsonNumber(v.x()) + ", \"" + y + "\": " + formatJsonNumber(v.y());
 }
@@ -16,7 +15,8 @@ std::string xy(const Eigen::Vector2d& v, const char* x, const char* y) {
 std::string linkMember(const LinkMass& l) {
   std::string s = jsonQuote(l.link) + ": {\"mass_kg\": " + formatJsonNumber(l.mass);
   if (l.centre)
-    s += ", \"centre\": {\"along\": " + formatJsonNumber(l.centre->along) + ", \"across\": " + formatJsonNumber(l.centre->across) + "}";
+    s += ", \"centre\": {\"along\": " + formatJsonNumber(l.centre->along) +
+         ", \"across\": " + formatJsonNumber(l.centre->across) + "}";
   if (l.inertia) s += ", \"inertia_kg_m2\": " + formatJsonNumber(*l.inertia);
   return s + "}";
 }
@@ -31,7 +31,8 @@ std::string forceMember(const PointForce& f) {
 
 // Writes `"name": [` items `]` (or `{` `}`), one item a line.
 template <typename T, typename F>
-void writeList(std::ostream& out, bool& first, const char* name, const std::vector<T>& items, F item, bool object = false) {
+void writeList(std::ostream& out, bool& first, const char* name, const std::vector<T>& items, F item,
+               bool object = false) {
   if (items.empty()) return;
   out << (first ? "\n" : ",\n") << "    \"" << name << "\": " << (object ? "{" : "[");
   first = false;
@@ -115,7 +116,8 @@ std::string documentPath(const std::string& field, const LinkageDynamics& d) {
     const auto [k, member] = indexed(field, 5);
     return "dynamics.links." + d.links[k].link + (member == "link" ? "" : "." + renamed(member));
   }
-  if (field.rfind("sliders[", 0) == 0) return "dynamics." + field.substr(0, field.find(']') + 2) + renamed(indexed(field, 7).second);
+  if (field.rfind("sliders[", 0) == 0)
+    return "dynamics." + field.substr(0, field.find(']') + 2) + renamed(indexed(field, 7).second);
   if (field.rfind("loads.gravity", 0) == 0) return "dynamics.gravity_m_s2" + field.substr(13);
   if (field.rfind("loads.torques[", 0) == 0) {
     const auto [k, member] = indexed(field, 13);
@@ -129,7 +131,7 @@ std::string documentPath(const std::string& field, const LinkageDynamics& d) {
   return "dynamics." + field;
 }
 
-} // namespace
+}  // namespace
 
 void writeDynamicsMember(std::ostream& out, const LinkageDynamics& d) {
   if (d.empty()) return;
@@ -159,7 +161,8 @@ LinkageDynamics readDynamicsMember(const JsonValue& root, JsonReader& r) {
   readArray(*d, "sliders", r, [&](const JsonValue& v, const std::string& path) {
     SliderMass s{r.string(v, "point", path + ".point").value_or(""), readGuide(v, path, r),
                  r.number(v, "mass_kg", path + ".mass_kg").value_or(0.0), 0.0};
-    if (JsonReader::has(v, "inertia_kg_m2")) s.inertia = r.number(v, "inertia_kg_m2", path + ".inertia_kg_m2").value_or(0.0);
+    if (JsonReader::has(v, "inertia_kg_m2"))
+      s.inertia = r.number(v, "inertia_kg_m2", path + ".inertia_kg_m2").value_or(0.0);
     out.sliders.push_back(s);
   });
   if (const JsonValue* g = r.object(*d, "gravity_m_s2", "dynamics.gravity_m_s2", false))
@@ -169,7 +172,8 @@ LinkageDynamics readDynamicsMember(const JsonValue& root, JsonReader& r) {
     out.loads.torques.push_back({r.string(v, "link", path + ".link").value_or(""),
                                  r.number(v, "torque_N_m", path + ".torque_N_m").value_or(0.0)});
   });
-  readArray(*d, "forces", r, [&](const JsonValue& v, const std::string& path) { out.loads.forces.push_back(readForce(v, path, r)); });
+  readArray(*d, "forces", r,
+            [&](const JsonValue& v, const std::string& path) { out.loads.forces.push_back(readForce(v, path, r)); });
   return out;
 }
 
@@ -181,4 +185,4 @@ std::optional<Error> checkDocumentDynamics(const Mechanism& mechanism, const Lin
   return Error{e->code, path, path + reason};
 }
 
-} // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics::io

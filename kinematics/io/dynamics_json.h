@@ -36,4 +36,4 @@ LinkageDynamics readDynamicsMember(const JsonValue& root, JsonReader& reader);
 /// ("dynamics.links.coupler.mass_kg must be finite and ≥ 0 (got -1)").
 std::optional<Error> checkDocumentDynamics(const Mechanism& mechanism, const LinkageDynamics& dynamics);
 
-} // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics::io

@@ -45,4 +45,4 @@ std::vector<ForceColumn> forceColumns(const BodyModel& bodies) {
   return columns;
 }
 
-} // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics::io

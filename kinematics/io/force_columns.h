@@ -22,7 +22,16 @@
 namespace linkwright::kinematics::io {
 
 enum class ForceQuantity {
-  JointX, JointY, JointMagnitude, Normal, Moment, DriveTorque, ShakingX, ShakingY, ShakingMagnitude, ShakingMoment,
+  JointX,
+  JointY,
+  JointMagnitude,
+  Normal,
+  Moment,
+  DriveTorque,
+  ShakingX,
+  ShakingY,
+  ShakingMagnitude,
+  ShakingMoment,
 };
 
 /// One force column: what it holds and of which joint (`index` into the model's revolutes or
@@ -42,4 +51,4 @@ struct ForceColumn {
 /// All force columns of a model, in CSV order.
 std::vector<ForceColumn> forceColumns(const BodyModel& bodies);
 
-} // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics::io

@@ -16,7 +16,7 @@ std::string withoutPrefix(const nlohmann::json::exception& e) {
   return std::regex_replace(e.what(), prefix, "");
 }
 
-} // namespace
+}  // namespace
 
 Result<JsonValue> parseJson(std::string_view text) {
   const auto limitDepth = [](int depth, JsonValue::parse_event_t, JsonValue&) {
@@ -31,7 +31,8 @@ Result<JsonValue> parseJson(std::string_view text) {
     // A number beyond the double range: "number overflow parsing '1e999'" (no position).
     return Error{ErrorCode::InvalidValue, "json", withoutPrefix(e) + ": beyond the range of a double (±1.8e308)"};
   } catch (const TooDeep&) {
-    return Error{ErrorCode::InvalidValue, "json", "nesting deeper than " + std::to_string(kMaxJsonDepth) + " arrays and objects"};
+    return Error{ErrorCode::InvalidValue, "json",
+                 "nesting deeper than " + std::to_string(kMaxJsonDepth) + " arrays and objects"};
   }
 }
 
@@ -45,4 +46,4 @@ std::string jsonQuote(std::string_view text) {
   return JsonValue(std::string(text)).dump(-1, ' ', false, JsonValue::error_handler_t::replace);
 }
 
-} // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics::io

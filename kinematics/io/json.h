@@ -29,4 +29,4 @@ const JsonValue* findMember(const JsonValue& value, std::string_view key);
 /// Escapes and quotes `text` as a JSON string (invalid UTF-8 becomes U+FFFD).
 std::string jsonQuote(std::string_view text);
 
-} // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics::io

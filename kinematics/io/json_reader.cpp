@@ -6,13 +6,15 @@
 
 namespace linkwright::kinematics::io {
 
-const JsonValue* JsonReader::object(const JsonValue& parent, const std::string& key, const std::string& path, bool required) {
+const JsonValue* JsonReader::object(const JsonValue& parent, const std::string& key, const std::string& path,
+                                    bool required) {
   const JsonValue* v = member(parent, key, path, required);
   if (v != nullptr && !v->is_object()) return fail(path, "must be an object");
   return v;
 }
 
-const JsonValue* JsonReader::array(const JsonValue& parent, const std::string& key, const std::string& path, bool required) {
+const JsonValue* JsonReader::array(const JsonValue& parent, const std::string& key, const std::string& path,
+                                   bool required) {
   const JsonValue* v = member(parent, key, path, required);
   if (v != nullptr && !v->is_array()) return fail(path, "must be an array");
   return v;
@@ -37,7 +39,8 @@ std::optional<double> JsonReader::positive(const JsonValue& parent, const std::s
   return v;
 }
 
-std::optional<std::string> JsonReader::string(const JsonValue& parent, const std::string& key, const std::string& path) {
+std::optional<std::string> JsonReader::string(const JsonValue& parent, const std::string& key,
+                                              const std::string& path) {
   const JsonValue* v = member(parent, key, path, true);
   if (v == nullptr) return std::nullopt;
   if (!v->is_string()) {
@@ -52,11 +55,12 @@ std::nullptr_t JsonReader::fail(const std::string& path, const std::string& why)
   return nullptr;
 }
 
-const JsonValue* JsonReader::member(const JsonValue& parent, const std::string& key, const std::string& path, bool required) {
+const JsonValue* JsonReader::member(const JsonValue& parent, const std::string& key, const std::string& path,
+                                    bool required) {
   if (error) return nullptr;
   const JsonValue* v = findMember(parent, key);
   if (v == nullptr && required) return fail(path, "is missing");
   return v;
 }
 
-} // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics::io

@@ -16,9 +16,11 @@ public:
   std::optional<Error> error;
 
   /// The object member `key` of `parent`; nullptr if missing (an error if `required`).
-  const JsonValue* object(const JsonValue& parent, const std::string& key, const std::string& path, bool required = true);
+  const JsonValue* object(const JsonValue& parent, const std::string& key, const std::string& path,
+                          bool required = true);
   /// The array member `key` of `parent`; nullptr if missing (an error if `required`).
-  const JsonValue* array(const JsonValue& parent, const std::string& key, const std::string& path, bool required = true);
+  const JsonValue* array(const JsonValue& parent, const std::string& key, const std::string& path,
+                         bool required = true);
   std::optional<double> number(const JsonValue& parent, const std::string& key, const std::string& path);
   /// A number that must be positive and finite.
   std::optional<double> positive(const JsonValue& parent, const std::string& key, const std::string& path);
@@ -33,4 +35,4 @@ private:
   const JsonValue* member(const JsonValue& parent, const std::string& key, const std::string& path, bool required);
 };
 
-} // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics::io

@@ -8,7 +8,6 @@
 namespace linkwright::kinematics::io {
 namespace {
 
-
 const char* branchName(Branch b) { return b == Branch::Open ? "open" : "crossed"; }
 
 // Writes one point's members after its name; names of points and links come from `m`.
@@ -22,9 +21,10 @@ public:
           << ", \"phase_rad\": " << formatJsonNumber(c.phase);
   }
   void operator()(const RrrPoint& r) {
-    m_out << "\"type\": \"rrr\", \"first\": " << point(r.first) << ", \"first_length\": " << formatJsonNumber(r.firstLength)
-          << ", \"second\": " << point(r.second) << ", \"second_length\": " << formatJsonNumber(r.secondLength)
-          << ", \"branch\": \"" << branchName(r.branch) << "\"";
+    m_out << "\"type\": \"rrr\", \"first\": " << point(r.first)
+          << ", \"first_length\": " << formatJsonNumber(r.firstLength) << ", \"second\": " << point(r.second)
+          << ", \"second_length\": " << formatJsonNumber(r.secondLength) << ", \"branch\": \"" << branchName(r.branch)
+          << "\"";
   }
   void operator()(const RrpPoint& p) {
     m_out << "\"type\": \"rrp\", \"first\": " << point(p.first) << ", \"length\": " << formatJsonNumber(p.length)
@@ -110,10 +110,13 @@ private:
   double number(const JsonValue& v, const std::string& key, const std::string& path) {
     return m_r.number(v, key, path + "." + key).value_or(0.0);
   }
-  Eigen::Vector2d xy(const JsonValue& v, const std::string& path) { return {number(v, "x", path), number(v, "y", path)}; }
+  Eigen::Vector2d xy(const JsonValue& v, const std::string& path) {
+    return {number(v, "x", path), number(v, "y", path)};
+  }
   Branch branch(const JsonValue& v, const std::string& path) {
     const std::string b = m_r.string(v, "branch", path + ".branch").value_or("open");
-    if (b != "open" && b != "crossed") m_r.fail(path + ".branch", "must be \"open\" or \"crossed\" (got \"" + b + "\")");
+    if (b != "open" && b != "crossed")
+      m_r.fail(path + ".branch", "must be \"open\" or \"crossed\" (got \"" + b + "\")");
     return b == "crossed" ? Branch::Crossed : Branch::Open;
   }
   LinkId link(const JsonValue& v, const std::string& key, const std::string& path) {
@@ -151,7 +154,7 @@ std::map<std::string, std::size_t> names(const JsonValue& list, const std::strin
   return out;
 }
 
-} // namespace
+}  // namespace
 
 void writeMechanismMembers(std::ostream& out, const Mechanism& m) {
   out << "    \"points\": [";
@@ -162,9 +165,9 @@ void writeMechanismMembers(std::ostream& out, const Mechanism& m) {
   }
   out << "\n    ],\n    \"links\": [";
   for (std::size_t k = 0; k < m.links.size(); ++k)
-    out << (k == 0 ? "\n" : ",\n") << "      {\"name\": " << jsonQuote(m.links[k].name) << ", \"first\": "
-        << jsonQuote(m.points[m.links[k].first.index].name) << ", \"second\": "
-        << jsonQuote(m.points[m.links[k].second.index].name) << "}";
+    out << (k == 0 ? "\n" : ",\n") << "      {\"name\": " << jsonQuote(m.links[k].name)
+        << ", \"first\": " << jsonQuote(m.points[m.links[k].first.index].name)
+        << ", \"second\": " << jsonQuote(m.points[m.links[k].second.index].name) << "}";
   out << "\n    ]";
   if (m.constraints.empty()) return;
   out << ",\n    \"constraints\": [";
@@ -201,9 +204,10 @@ Mechanism readMechanismMembers(const JsonValue& mech, const std::string& path, J
       r.fail(at, "must be an object");
       break;
     }
-    m.constraints.push_back({reader.point(v, "first", at), reader.point(v, "second", at), reader.positive(v, "length", at)});
+    m.constraints.push_back(
+        {reader.point(v, "first", at), reader.point(v, "second", at), reader.positive(v, "length", at)});
   }
   return m;
 }
 
-} // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics::io

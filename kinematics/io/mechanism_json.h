@@ -34,4 +34,4 @@ void writeMechanismMembers(std::ostream& out, const Mechanism& mechanism);
 /// references, one crank) is checked by the caller with checkMechanism.
 Mechanism readMechanismMembers(const JsonValue& mech, const std::string& path, JsonReader& reader);
 
-} // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics::io

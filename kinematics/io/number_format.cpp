@@ -25,8 +25,8 @@ std::string formatShort(double value, int significant) {
   if (!std::isfinite(value)) return kUndefined;
   if (value == 0.0) return "0";
   std::array<char, 64> buffer{};
-  const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
-                                       std::chars_format::general, significant);
+  const auto [end, ec] =
+      std::to_chars(buffer.data(), buffer.data() + buffer.size(), value, std::chars_format::general, significant);
   if (ec != std::errc{}) return kUndefined;
   return std::string(buffer.data(), end);
 }
@@ -35,8 +35,8 @@ std::string formatFixed(double value, int decimals) {
   if (!std::isfinite(value)) return kUndefined;
   // Room for every double in fixed notation: 309 integer digits, a sign, a point, decimals.
   std::array<char, 400> buffer{};
-  const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
-                                       std::chars_format::fixed, decimals);
+  const auto [end, ec] =
+      std::to_chars(buffer.data(), buffer.data() + buffer.size(), value, std::chars_format::fixed, decimals);
   if (ec != std::errc{}) return kUndefined;  // more than 89 decimals
   std::string text(buffer.data(), end);
   // "-0.00" reads as a sign that is not there: print it as "0.00".
@@ -44,4 +44,4 @@ std::string formatFixed(double value, int decimals) {
   return text;
 }
 
-} // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics::io

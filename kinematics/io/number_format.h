@@ -24,4 +24,4 @@ std::string formatShort(double value, int significant = 6);
 /// "undefined" for NaN and infinities.
 std::string formatFixed(double value, int decimals);
 
-} // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics::io

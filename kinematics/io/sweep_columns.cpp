@@ -11,7 +11,7 @@ bool isDyad(const Point& p) {
   return std::holds_alternative<RrrPoint>(p.definition) || std::holds_alternative<RrpPoint>(p.definition);
 }
 
-} // namespace
+}  // namespace
 
 bool isDrivenCrankLink(const Mechanism& m, LinkId id) {
   const Link& link = m.links[id.index];
@@ -101,4 +101,4 @@ std::vector<SweepColumn> sweepColumns(const Mechanism& m, const SolveRequest& re
   return columns;
 }
 
-} // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics::io

@@ -17,8 +17,17 @@
 namespace linkwright::kinematics::io {
 
 enum class ColumnQuantity {
-  InputAngle, LinkAngle, LinkOmega, LinkAlpha, TransmissionAngle,
-  PointX, PointY, PointVx, PointVy, PointAx, PointAy,
+  InputAngle,
+  LinkAngle,
+  LinkOmega,
+  LinkAlpha,
+  TransmissionAngle,
+  PointX,
+  PointY,
+  PointVx,
+  PointVy,
+  PointAx,
+  PointAy,
 };
 
 /// One column: what it holds and of which link or point (`index`).
@@ -44,4 +53,4 @@ bool isDrivenCrankLink(const Mechanism& mechanism, LinkId link);
 /// All columns available for this mechanism and request, in CSV order.
 std::vector<SweepColumn> sweepColumns(const Mechanism& mechanism, const SolveRequest& request);
 
-} // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics::io

@@ -39,7 +39,7 @@ struct Attacher {
   void operator()(const PrpDyadSpec& d) const { m.points.push_back({d.joint, PrpPoint{d.first, d.second}}); }
 };
 
-} // namespace
+}  // namespace
 
 Result<Mechanism> addPointOnLink(const Mechanism& mechanism, const std::string& name, LinkId link, double along,
                                  double across) {
@@ -60,4 +60,4 @@ Result<Mechanism> attachDyad(const Mechanism& mechanism, const DyadSpec& dyad) {
   return checked(std::move(m));
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

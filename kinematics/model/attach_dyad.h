@@ -14,12 +14,11 @@
 namespace linkwright::kinematics {
 
 /// Adds a point fixed on `link` (along its direction, across it 90° CCW, from its first point).
-Result<Mechanism> addPointOnLink(const Mechanism& mechanism, const std::string& name, LinkId link,
-                                 double along, double across);
+Result<Mechanism> addPointOnLink(const Mechanism& mechanism, const std::string& name, LinkId link, double along,
+                                 double across);
 
 /// Adds a ground pivot at `position` (length unit).
-Result<Mechanism> addGroundPivot(const Mechanism& mechanism, const std::string& name,
-                                 const Eigen::Vector2d& position);
+Result<Mechanism> addGroundPivot(const Mechanism& mechanism, const std::string& name, const Eigen::Vector2d& position);
 
 /// RRR: joint `joint` at `firstLength` from `first` and `secondLength` from `second`; adds the
 /// links first→joint and second→joint.
@@ -63,4 +62,4 @@ using DyadSpec = std::variant<RrrDyadSpec, RrpDyadSpec, RprDyadSpec, PrpDyadSpec
 /// being link 1) and checks the result. Assembly is not checked here: solve a pose for that.
 Result<Mechanism> attachDyad(const Mechanism& mechanism, const DyadSpec& dyad);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

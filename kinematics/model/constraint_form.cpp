@@ -28,4 +28,4 @@ Mechanism withNewtonPoints(const Mechanism& mechanism, std::span<const Eigen::Ve
   return out;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

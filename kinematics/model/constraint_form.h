@@ -42,4 +42,4 @@ inline PointId constraintLaterPoint(const DistanceConstraint& c) {
 /// positions.size() == mechanism.points.size().
 Mechanism withNewtonPoints(const Mechanism& mechanism, std::span<const Eigen::Vector2d> positions);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

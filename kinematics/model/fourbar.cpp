@@ -38,4 +38,4 @@ Result<Mechanism> makeFourBar(const FourBarLengths& l, Branch branch, const std:
   return m;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

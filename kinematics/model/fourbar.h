@@ -37,15 +37,14 @@ inline constexpr PointId kCouplerPoint{4};  ///< present only when a coupler poi
 inline constexpr LinkId kCrank{0};
 inline constexpr LinkId kCoupler{1};
 inline constexpr LinkId kRocker{2};
-} // namespace fourbar
+}  // namespace fourbar
 
 /// Error naming the first non-positive, NaN or infinite length ("frame", "crank", ...).
 std::optional<Error> checkFourBarLengths(const FourBarLengths& lengths);
 
 /// Builds the four-bar; points O2, O4, B, C (and P for the coupler point), links crank,
 /// coupler, rocker. Fails with the field named if a length is invalid.
-Result<Mechanism> makeFourBar(const FourBarLengths& lengths, Branch branch,
-                              const std::string& lengthUnit = "mm",
+Result<Mechanism> makeFourBar(const FourBarLengths& lengths, Branch branch, const std::string& lengthUnit = "mm",
                               std::optional<CouplerPointSpec> couplerPoint = std::nullopt);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -20,4 +20,4 @@ struct LinkId {
   bool operator==(const LinkId&) const = default;
 };
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -14,4 +14,4 @@ std::optional<LinkId> Mechanism::findLink(const std::string& name) const {
   return std::nullopt;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -159,4 +159,4 @@ struct Mechanism {
   std::optional<LinkId> findLink(const std::string& name) const;
 };
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -23,16 +23,14 @@ std::string pointField(std::size_t index, const char* member) {
 std::optional<Error> checkEarlier(PointId ref, std::size_t index, const char* member) {
   if (ref.index < index) return std::nullopt;
   return structureError(pointField(index, member),
-                        "must refer to a point defined before it (got point " +
-                            std::to_string(ref.index) + ")");
+                        "must refer to a point defined before it (got point " + std::to_string(ref.index) + ")");
 }
 
 // A guide on a link needs the link's ends solved first; its numbers must be finite.
 std::optional<Error> checkGuide(const Mechanism& m, const Guide& g, std::size_t i, const std::string& member) {
   const std::string field = pointField(i, member.c_str());
   if (g.link) {
-    if (g.link->index >= m.links.size())
-      return structureError(field + ".link", "refers to a link that does not exist");
+    if (g.link->index >= m.links.size()) return structureError(field + ".link", "refers to a link that does not exist");
     const Link& link = m.links[g.link->index];
     if (link.first.index >= i || link.second.index >= i)
       return structureError(field + ".link", "must be a link between points defined before it");
@@ -59,8 +57,7 @@ std::optional<Error> checkPoint(const Mechanism& m, std::size_t i, int& cranks) 
   if (const auto* r = std::get_if<RrrPoint>(&def)) {
     if (auto e = checkEarlier(r->first, i, "first")) return e;
     if (auto e = checkEarlier(r->second, i, "second")) return e;
-    if (r->first == r->second)
-      return structureError(pointField(i, "second"), "must differ from its first point");
+    if (r->first == r->second) return structureError(pointField(i, "second"), "must differ from its first point");
     if (auto e = checkLength(r->firstLength, pointField(i, "firstLength"))) return e;
     return checkLength(r->secondLength, pointField(i, "secondLength"));
   }
@@ -132,8 +129,8 @@ std::optional<Error> checkConstraint(const Mechanism& m, std::size_t k) {
 std::optional<Error> checkFreeGroup(const Mechanism& m, std::size_t first, std::size_t last) {
   std::string names;
   for (std::size_t i = first; i < last; ++i) names += (i == first ? "" : ", ") + m.points[i].name;
-  const std::string which = "free points " + names + " (points[" + std::to_string(first) + ".." +
-                            std::to_string(last - 1) + "])";
+  const std::string which =
+      "free points " + names + " (points[" + std::to_string(first) + ".." + std::to_string(last - 1) + "])";
   const std::size_t points = last - first;
   if (points > kMaxFreeGroupPoints)
     return structureError("points[" + std::to_string(first) + "]",
@@ -150,7 +147,8 @@ std::optional<Error> checkFreeGroup(const Mechanism& m, std::size_t first, std::
   }
   if (count != 2 * points)
     return structureError("constraints", "must hold " + which + " with exactly " + std::to_string(2 * points) +
-                                             " distance constraints, two per point (got " + std::to_string(count) + ")");
+                                             " distance constraints, two per point (got " + std::to_string(count) +
+                                             ")");
   for (std::size_t i = 0; i < points; ++i)
     if (holds[i] < 2)
       return structureError("points[" + std::to_string(first + i) + "]",
@@ -210,7 +208,7 @@ void dimensionsOf(const Mechanism& m, std::vector<Dimension>& lengths, std::vect
   for (const DistanceConstraint& c : m.constraints) lengths.push_back({c.length, lengthName(m, c.first, c.second)});
 }
 
-} // namespace
+}  // namespace
 
 std::optional<Error> checkLinkageScale(const Mechanism& m) {
   std::vector<Dimension> lengths, coordinates;
@@ -237,8 +235,7 @@ std::optional<Error> checkMechanism(const Mechanism& m) {
   for (std::size_t i = 0; i < m.points.size(); ++i)
     if (auto e = checkPoint(m, i, cranks)) return e;
   if (cranks != 1)
-    return structureError("points", "must contain exactly one crank (got " +
-                                        std::to_string(cranks) + ")");
+    return structureError("points", "must contain exactly one crank (got " + std::to_string(cranks) + ")");
   for (std::size_t k = 0; k < m.constraints.size(); ++k)
     if (auto e = checkConstraint(m, k)) return e;
   for (std::size_t i = 0; i < m.points.size(); ++i) {
@@ -260,4 +257,4 @@ std::optional<Error> checkMechanism(const Mechanism& m) {
   return checkLinkageScale(m);
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

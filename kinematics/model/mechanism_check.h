@@ -20,4 +20,4 @@ std::optional<Error> checkMechanism(const Mechanism& mechanism);
 /// passed its own check. The builders run it on what they build.
 std::optional<Error> checkLinkageScale(const Mechanism& mechanism);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -23,7 +23,7 @@ bool joins(const Link& link, PointId a, PointId b) {
   return (link.first == a && link.second == b) || (link.first == b && link.second == a);
 }
 
-} // namespace
+}  // namespace
 
 std::optional<FourBarStructure> asFourBar(const Mechanism& m) {
   if (!m.constraints.empty()) return std::nullopt;
@@ -45,8 +45,8 @@ std::optional<FourBarStructure> asFourBar(const Mechanism& m) {
         s.o4 = other;
         s.b = *b;
         s.c = id;
-        const Eigen::Vector2d frame = definitionOf<GroundPoint>(m, other)->position -
-                                      definitionOf<GroundPoint>(m, crank.pivot)->position;
+        const Eigen::Vector2d frame =
+            definitionOf<GroundPoint>(m, other)->position - definitionOf<GroundPoint>(m, crank.pivot)->position;
         s.lengths = {frame.norm(), crank.length, bFirst ? rrr->firstLength : rrr->secondLength,
                      bFirst ? rrr->secondLength : rrr->firstLength};
         // The dyad's open side is left of first→second; the four-bar's is left of B→O4.
@@ -86,4 +86,4 @@ std::optional<QuickReturnStructure> asQuickReturn(const Mechanism& m) {
   return std::nullopt;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

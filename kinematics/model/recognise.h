@@ -17,8 +17,8 @@ struct FourBarStructure {
   FourBarLengths lengths;
   Branch branch = Branch::Open;  ///< in the four-bar's convention: open has C left of B→O4
   PointId o2, o4, b, c;
-  double frameAngle = 0.0;       ///< direction O2→O4 (rad, CCW from +x)
-  double crankPhase = 0.0;       ///< the crank's angle is the input angle plus this (rad)
+  double frameAngle = 0.0;  ///< direction O2→O4 (rad, CCW from +x)
+  double crankPhase = 0.0;  ///< the crank's angle is the input angle plus this (rad)
 
   /// The input angle at which the crank makes `frameCrankAngle` with the frame line O2→O4.
   double inputAngle(double frameCrankAngle) const { return frameCrankAngle + frameAngle - crankPhase; }
@@ -37,4 +37,4 @@ struct QuickReturnStructure {
 /// The mechanism's quick return, if it is one (crank phase 0, as shaperQuickReturn assumes).
 std::optional<QuickReturnStructure> asQuickReturn(const Mechanism& mechanism);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

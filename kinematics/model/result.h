@@ -27,8 +27,8 @@ struct Error {
 template <typename T>
 class [[nodiscard]] Result {
 public:
-  Result(T value) : m_state(std::move(value)) {}          // NOLINT(google-explicit-constructor)
-  Result(Error error) : m_state(std::move(error)) {}      // NOLINT(google-explicit-constructor)
+  Result(T value) : m_state(std::move(value)) {}      // NOLINT(google-explicit-constructor)
+  Result(Error error) : m_state(std::move(error)) {}  // NOLINT(google-explicit-constructor)
 
   bool ok() const { return std::holds_alternative<T>(m_state); }
   explicit operator bool() const { return ok(); }
@@ -45,4 +45,4 @@ private:
   std::variant<T, Error> m_state;
 };
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

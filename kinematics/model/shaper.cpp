@@ -43,4 +43,4 @@ Result<Mechanism> makeShaper(const ShaperGeometry& g, Branch branch, const std::
   return m;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -18,11 +18,11 @@ namespace linkwright::kinematics {
 
 /// Shaper dimensions, in one length unit.
 struct ShaperGeometry {
-  double crank = 0.0;                                   ///< O2 to B
-  double rocker = 0.0;                                  ///< O4 to D, the slotted link
-  double link = 0.0;                                    ///< D to the ram R
+  double crank = 0.0;                                     ///< O2 to B
+  double rocker = 0.0;                                    ///< O4 to D, the slotted link
+  double link = 0.0;                                      ///< D to the ram R
   Eigen::Vector2d rockerPivot = Eigen::Vector2d::Zero();  ///< O4, relative to O2
-  double guideHeight = 0.0;                             ///< y of the ram's horizontal guide
+  double guideHeight = 0.0;                               ///< y of the ram's horizontal guide
   bool operator==(const ShaperGeometry&) const = default;
 };
 
@@ -35,7 +35,7 @@ inline constexpr PointId kRam{4};
 inline constexpr LinkId kCrank{0};
 inline constexpr LinkId kRocker{1};
 inline constexpr LinkId kLink{2};
-} // namespace shaper
+}  // namespace shaper
 
 /// Error naming the field if a length is not positive and finite or a position not finite,
 /// or if the rocker pivot lies on the crank circle (the pin would pass through it). A pivot
@@ -46,4 +46,4 @@ std::optional<Error> checkShaper(const ShaperGeometry& geometry);
 Result<Mechanism> makeShaper(const ShaperGeometry& geometry, Branch branch = Branch::Open,
                              const std::string& lengthUnit = "mm");
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

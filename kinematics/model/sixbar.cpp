@@ -34,7 +34,7 @@ std::optional<Error> checkGeometry(const SixBarGeometry& g) {
   return checkLength(g.link6, "link6");
 }
 
-} // namespace
+}  // namespace
 
 std::string sixBarKindName(SixBarKind kind) {
   switch (kind) {
@@ -59,4 +59,4 @@ Result<Mechanism> makeSixBar(const SixBarGeometry& g, const std::string& lengthU
   return attachDyad(*m, RrrDyadSpec{"E", p, g.link5, d, g.link6, g.dyadBranch});
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

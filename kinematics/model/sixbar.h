@@ -26,14 +26,14 @@ enum class SixBarKind { WattI, WattII, StephensonI, StephensonIII };
 /// Dimensions of a dyad six-bar, one length unit.
 struct SixBarGeometry {
   SixBarKind kind = SixBarKind::WattI;
-  FourBarLengths fourBar;                ///< the driving four-bar, frame along +x from O2
+  FourBarLengths fourBar;  ///< the driving four-bar, frame along +x from O2
   Branch fourBarBranch = Branch::Open;
-  CouplerPointSpec first;                ///< P, where link 5 starts, on its link's frame (fourbar.h)
-  CouplerPointSpec second;               ///< D on the rocker (Watt I, Stephenson I); else unused
+  CouplerPointSpec first;                                 ///< P, where link 5 starts, on its link's frame (fourbar.h)
+  CouplerPointSpec second;                                ///< D on the rocker (Watt I, Stephenson I); else unused
   Eigen::Vector2d groundPivot = Eigen::Vector2d::Zero();  ///< O6 (Watt II, Stephenson III); else unused
-  double link5 = 0.0;                    ///< P to E
-  double link6 = 0.0;                    ///< D (or O6) to E
-  Branch dyadBranch = Branch::Open;      ///< E's branch, with P as the dyad's first point
+  double link5 = 0.0;                                     ///< P to E
+  double link6 = 0.0;                                     ///< D (or O6) to E
+  Branch dyadBranch = Branch::Open;                       ///< E's branch, with P as the dyad's first point
   bool operator==(const SixBarGeometry&) const = default;
 };
 
@@ -44,4 +44,4 @@ std::string sixBarKindName(SixBarKind kind);
 /// (P→E), link6 (D→E or O6→E). Errors name the field ("link5", "first.along", …).
 Result<Mechanism> makeSixBar(const SixBarGeometry& geometry, const std::string& lengthUnit = "mm");
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

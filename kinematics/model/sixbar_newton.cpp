@@ -23,8 +23,13 @@ std::optional<Error> checkLengths(std::initializer_list<std::pair<double, const 
 std::optional<Error> checkGeometry(const StephensonIIIGeometry& g) {
   if (auto e = checkPoint(g.o4, "o4")) return e;
   if (auto e = checkPoint(g.o6, "o6")) return e;
-  if (auto e = checkLengths({{g.crank, "crank"}, {g.coupler, "coupler"}, {g.cd, "cd"}, {g.ce, "ce"},
-                             {g.de, "de"}, {g.rocker4, "rocker4"}, {g.rocker6, "rocker6"}}))
+  if (auto e = checkLengths({{g.crank, "crank"},
+                             {g.coupler, "coupler"},
+                             {g.cd, "cd"},
+                             {g.ce, "ce"},
+                             {g.de, "de"},
+                             {g.rocker4, "rocker4"},
+                             {g.rocker6, "rocker6"}}))
     return e;
   if (auto e = checkPoint(g.guessC, "guessC")) return e;
   if (auto e = checkPoint(g.guessD, "guessD")) return e;
@@ -33,8 +38,14 @@ std::optional<Error> checkGeometry(const StephensonIIIGeometry& g) {
 
 std::optional<Error> checkGeometry(const StephensonIIGeometry& g) {
   if (auto e = checkPoint(g.j5, "j5")) return e;
-  if (auto e = checkLengths({{g.crank, "crank"}, {g.j1j2, "j1j2"}, {g.j1j3, "j1j3"}, {g.j2j3, "j2j3"},
-                             {g.j5j4, "j5j4"}, {g.j5j6, "j5j6"}, {g.j4j6, "j4j6"}, {g.link5, "link5"},
+  if (auto e = checkLengths({{g.crank, "crank"},
+                             {g.j1j2, "j1j2"},
+                             {g.j1j3, "j1j3"},
+                             {g.j2j3, "j2j3"},
+                             {g.j5j4, "j5j4"},
+                             {g.j5j6, "j5j6"},
+                             {g.j4j6, "j4j6"},
+                             {g.link5, "link5"},
                              {g.link6, "link6"}}))
     return e;
   if (auto e = checkPoint(g.guessJ2, "guessJ2")) return e;
@@ -43,7 +54,7 @@ std::optional<Error> checkGeometry(const StephensonIIGeometry& g) {
   return checkPoint(g.guessJ6, "guessJ6");
 }
 
-} // namespace
+}  // namespace
 
 Result<Mechanism> makeStephensonIIINewton(const StephensonIIIGeometry& g, const std::string& lengthUnit) {
   if (auto e = checkGeometry(g)) return *e;
@@ -87,11 +98,11 @@ Result<Mechanism> makeStephensonIINewton(const StephensonIIGeometry& g, const st
       {"crank", kJ0, kJ1}, {"coupler", kJ1, kJ2}, {"rocker", kJ5, kJ4}, {"link5", kJ3, kJ4}, {"link6", kJ2, kJ6},
   };
   m.constraints = {
-      {kJ1, kJ2, g.j1j2}, {kJ1, kJ3, g.j1j3}, {kJ2, kJ3, g.j2j3}, {kJ5, kJ4, g.j5j4},
+      {kJ1, kJ2, g.j1j2}, {kJ1, kJ3, g.j1j3}, {kJ2, kJ3, g.j2j3},  {kJ5, kJ4, g.j5j4},
       {kJ5, kJ6, g.j5j6}, {kJ4, kJ6, g.j4j6}, {kJ3, kJ4, g.link5}, {kJ2, kJ6, g.link6},
   };
   if (auto e = checkLinkageScale(m)) return *e;
   return m;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -1,7 +1,7 @@
 #include "kinematics/model/slider_crank.h"
 
-#include "kinematics/model/units.h"
 #include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 
 namespace linkwright::kinematics {
@@ -19,7 +19,8 @@ Result<Mechanism> makeSliderCrank(const SliderCrankGeometry& g, Branch branch, c
   m.points = {
       {"O2", GroundPoint{Eigen::Vector2d(0.0, 0.0)}},
       {"B", CrankPoint{slidercrank::kO2, g.crank, 0.0}},
-      {"C", RrpPoint{slidercrank::kB, g.rod, Guide{std::nullopt, Eigen::Vector2d(0.0, g.offset), g.reversed ? kPi : 0.0}, branch}},
+      {"C", RrpPoint{slidercrank::kB, g.rod,
+                     Guide{std::nullopt, Eigen::Vector2d(0.0, g.offset), g.reversed ? kPi : 0.0}, branch}},
   };
   m.links = {
       {"crank", slidercrank::kO2, slidercrank::kB},
@@ -29,4 +30,4 @@ Result<Mechanism> makeSliderCrank(const SliderCrankGeometry& g, Branch branch, c
   return m;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -29,7 +29,7 @@ inline constexpr PointId kB{1};
 inline constexpr PointId kC{2};
 inline constexpr LinkId kCrank{0};
 inline constexpr LinkId kRod{1};
-} // namespace slidercrank
+}  // namespace slidercrank
 
 /// Error naming "crank", "rod" or "offset" if a value is invalid.
 std::optional<Error> checkSliderCrank(const SliderCrankGeometry& geometry);
@@ -39,4 +39,4 @@ std::optional<Error> checkSliderCrank(const SliderCrankGeometry& geometry);
 Result<Mechanism> makeSliderCrank(const SliderCrankGeometry& geometry, Branch branch = Branch::Open,
                                   const std::string& lengthUnit = "mm");
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

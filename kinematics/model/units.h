@@ -41,4 +41,4 @@ inline std::optional<double> metresPerLengthUnit(const std::string& unit) {
   return std::nullopt;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -18,7 +18,7 @@ Error valueError(const std::string& field, const std::string& message) {
   return Error{ErrorCode::InvalidValue, field, message};
 }
 
-} // namespace
+}  // namespace
 
 std::string formatNumber(double value) {
   // The value the user gave, as they gave it: a message may quote "nan" or "inf" back.
@@ -30,7 +30,8 @@ std::string formatNumber(double value) {
 std::optional<Error> checkCoordinate(double value, const std::string& field) {
   if (!std::isfinite(value)) return valueError(field, field + " must be finite (got " + formatNumber(value) + ")");
   if (std::abs(value) > kMaxLength)
-    return valueError(field, field + " must be within ±" + boundText(kMaxLength) + " (got " + formatNumber(value) + ")");
+    return valueError(field,
+                      field + " must be within ±" + boundText(kMaxLength) + " (got " + formatNumber(value) + ")");
   return std::nullopt;
 }
 
@@ -51,17 +52,18 @@ std::optional<Error> checkMagnitude(double value, const std::string& field, doub
 
 std::optional<Error> checkNonNegative(double value, const std::string& field, double max, const std::string& unit) {
   if (std::isfinite(value) && value >= 0.0 && value <= max) return std::nullopt;
-  return valueError(field, field + " must be between 0 and " + boundText(max) + " " + unit + " (got " +
-                               formatNumber(value) + ")");
+  return valueError(
+      field, field + " must be between 0 and " + boundText(max) + " " + unit + " (got " + formatNumber(value) + ")");
 }
 
 std::optional<Error> checkScale(double shortest, const std::string& shortestName, double largest,
                                 const std::string& largestName, const std::string& unit) {
   if (largest <= kMaxLengthRatio * shortest) return std::nullopt;
-  return valueError("lengths", "lengths span too wide a range: " + shortestName + " is " + formatNumber(shortest) + " " +
-                                   unit + " but " + largestName + " is " + formatNumber(largest) + " " + unit + ", " +
-                                   io::formatShort(largest / shortest, 3) + " times as much; a linkage's largest " +
-                                   "dimension may be at most " + boundText(kMaxLengthRatio) + " times its shortest link");
+  return valueError("lengths", "lengths span too wide a range: " + shortestName + " is " + formatNumber(shortest) +
+                                   " " + unit + " but " + largestName + " is " + formatNumber(largest) + " " + unit +
+                                   ", " + io::formatShort(largest / shortest, 3) +
+                                   " times as much; a linkage's largest " + "dimension may be at most " +
+                                   boundText(kMaxLengthRatio) + " times its shortest link");
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

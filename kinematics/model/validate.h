@@ -31,18 +31,18 @@
 
 namespace linkwright::kinematics {
 
-inline constexpr double kMinLength = 1e-6;        ///< shortest length, the linkage's unit
-inline constexpr double kMaxLength = 1e9;         ///< longest length and largest |coordinate|
-inline constexpr double kMaxLengthRatio = 1e6;    ///< largest dimension over the shortest link
-inline constexpr double kMaxOmega = 1e6;          ///< |ω|, rad/s
-inline constexpr double kMaxAlpha = 1e12;         ///< |α|, rad/s²
-inline constexpr double kMaxAngleDeg = 1e6;       ///< |sweep angle|, degrees
+inline constexpr double kMinLength = 1e-6;      ///< shortest length, the linkage's unit
+inline constexpr double kMaxLength = 1e9;       ///< longest length and largest |coordinate|
+inline constexpr double kMaxLengthRatio = 1e6;  ///< largest dimension over the shortest link
+inline constexpr double kMaxOmega = 1e6;        ///< |ω|, rad/s
+inline constexpr double kMaxAlpha = 1e12;       ///< |α|, rad/s²
+inline constexpr double kMaxAngleDeg = 1e6;     ///< |sweep angle|, degrees
 inline constexpr long long kMaxSamples = 10'000'000;
-inline constexpr double kMaxMass = 1e9;           ///< kg
-inline constexpr double kMaxInertia = 1e27;       ///< kg·m²
-inline constexpr double kMaxForce = 1e24;         ///< N
-inline constexpr double kMaxTorque = 1e33;        ///< N·m
-inline constexpr double kMaxGravity = 1e6;        ///< m/s²
+inline constexpr double kMaxMass = 1e9;      ///< kg
+inline constexpr double kMaxInertia = 1e27;  ///< kg·m²
+inline constexpr double kMaxForce = 1e24;    ///< N
+inline constexpr double kMaxTorque = 1e33;   ///< N·m
+inline constexpr double kMaxGravity = 1e6;   ///< m/s²
 
 /// Formats a value the user gave, for messages quoting it, with round-trip precision ("70",
 /// "-0.5", and "nan" or "inf" as typed).
@@ -68,4 +68,4 @@ std::optional<Error> checkNonNegative(double value, const std::string& field, do
 std::optional<Error> checkScale(double shortest, const std::string& shortestName, double largest,
                                 const std::string& largestName, const std::string& unit);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

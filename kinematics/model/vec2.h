@@ -11,4 +11,4 @@ inline double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return
 /// v turned 90° counter-clockwise: ω × r for a rotation about z is ω·perp(r).
 inline Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

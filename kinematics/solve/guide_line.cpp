@@ -36,4 +36,4 @@ double guideAccelerationRhs(const Mechanism& m, const Guide& guide, const GuideL
   return guideNormal(line).dot(aP) + 2.0 * w * line.direction.dot(vc - vP);
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

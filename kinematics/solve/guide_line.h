@@ -19,8 +19,8 @@ namespace linkwright::kinematics {
 
 /// A guide's line at a pose, in the mechanism's length unit.
 struct GuideLine {
-  Eigen::Vector2d point = Eigen::Vector2d::Zero();      ///< G, on the line
-  Eigen::Vector2d direction = Eigen::Vector2d::UnitX(); ///< u, unit
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();       ///< G, on the line
+  Eigen::Vector2d direction = Eigen::Vector2d::UnitX();  ///< u, unit
 };
 
 /// The guide's line given the positions in `pose` (its link's ends must be solved).
@@ -28,14 +28,14 @@ GuideLine guideLineAt(const Mechanism& mechanism, const Guide& guide, const Pose
 
 /// The right-hand side b of n·vC = b for a point C at `c` on the guide (link rates must be in
 /// `pose` for a guide on a link).
-double guideVelocityRhs(const Mechanism& mechanism, const Guide& guide, const GuideLine& line,
-                        const Pose& pose, const Eigen::Vector2d& c);
+double guideVelocityRhs(const Mechanism& mechanism, const Guide& guide, const GuideLine& line, const Pose& pose,
+                        const Eigen::Vector2d& c);
 
 /// The right-hand side of n·aC = b for C at `c` moving with velocity `vc`.
-double guideAccelerationRhs(const Mechanism& mechanism, const Guide& guide, const GuideLine& line,
-                            const Pose& pose, const Eigen::Vector2d& c, const Eigen::Vector2d& vc);
+double guideAccelerationRhs(const Mechanism& mechanism, const Guide& guide, const GuideLine& line, const Pose& pose,
+                            const Eigen::Vector2d& c, const Eigen::Vector2d& vc);
 
 /// The normal n = u⊥ of a line.
 inline Eigen::Vector2d guideNormal(const GuideLine& line) { return {-line.direction.y(), line.direction.x()}; }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -122,7 +122,7 @@ bool newtonStep(const Group& g, const Eigen::PartialPivLU<Matrix>& lu, double si
   return false;
 }
 
-} // namespace
+}  // namespace
 
 NewtonOutcome solveFreeGroup(const Mechanism& m, std::size_t first, std::size_t last, const NewtonSettings& settings,
                              bool velocities, bool accelerations, Pose& pose) {
@@ -180,4 +180,4 @@ std::optional<Error> checkNewtonSettings(const NewtonSettings& s) {
   return std::nullopt;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -69,8 +69,7 @@ struct NewtonOutcome {
 /// NoConvergence the positions hold Newton's last iterate. Never allocates or throws;
 /// assumes checkMechanism passed.
 NewtonOutcome solveFreeGroup(const Mechanism& mechanism, std::size_t first, std::size_t last,
-                             const NewtonSettings& settings, bool velocities, bool accelerations,
-                             Pose& pose);
+                             const NewtonSettings& settings, bool velocities, bool accelerations, Pose& pose);
 
 /// |pa − pb| − L at the pose's positions (length unit): how far a constraint is from closing.
 double constraintMisfit(const DistanceConstraint& constraint, const Pose& pose);
@@ -79,4 +78,4 @@ double constraintMisfit(const DistanceConstraint& constraint, const Pose& pose);
 /// and 1 ≤ maxIterations ≤ 1000.
 std::optional<Error> checkNewtonSettings(const NewtonSettings& settings);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -100,4 +100,4 @@ struct Pose {
   bool operator==(const Pose&) const = default;
 };
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

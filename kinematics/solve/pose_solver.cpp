@@ -107,7 +107,8 @@ struct Solver {
 
   // +1 for the open candidate, −1 for the crossed one: the predicted position decides if
   // given, else the tracked sign, else the mechanism's branch.
-  signed char chooseSign(std::size_t i, Branch branch, const Eigen::Vector2d& open, const Eigen::Vector2d& crossed) const {
+  signed char chooseSign(std::size_t i, Branch branch, const Eigen::Vector2d& open,
+                         const Eigen::Vector2d& crossed) const {
     if (!guide.predicted.empty()) {
       const Eigen::Vector2d& target = guide.predicted[i];
       return (open - target).squaredNorm() <= (crossed - target).squaredNorm() ? 1 : -1;
@@ -123,7 +124,8 @@ struct Solver {
     std::array<RrrCandidates, kMaxBlock> cand;
     for (std::size_t b = 0; b < live; ++b) {
       const Pose& pose = *lanes[b].pose;
-      cand[b] = rrrCandidates(pose.position[r.first.index], r.firstLength, pose.position[r.second.index], r.secondLength);
+      cand[b] =
+          rrrCandidates(pose.position[r.first.index], r.firstLength, pose.position[r.second.index], r.secondLength);
       if (cand[b].failure != AssemblyFailure::None) {
         lanes[b].report = {PoseStatus::NotAssemblable, PointId{i}, cand[b].failure};
         live = b;
@@ -244,7 +246,8 @@ struct Solver {
     const Eigen::Vector2d n1 = guideNormal(l1);
     const Eigen::Vector2d n2 = guideNormal(l2);
     Eigen::Vector2d v;
-    if (!rrrSolveRates(n1, n2, {guideVelocityRhs(m, p.first, l1, pose, c), guideVelocityRhs(m, p.second, l2, pose, c)}, v)) {
+    if (!rrrSolveRates(n1, n2, {guideVelocityRhs(m, p.first, l1, pose, c), guideVelocityRhs(m, p.second, l2, pose, c)},
+                       v)) {
       markSingular(lane, i);
       return true;
     }
@@ -328,8 +331,7 @@ struct Solver {
     const double w = pose.linkOmega[k];
     if (wantVelocity) pose.velocity[i] = pose.velocity[l.first.index] + w * perp(offset);
     if (wantAcceleration)
-      pose.acceleration[i] =
-          pose.acceleration[l.first.index] + pose.linkAlpha[k] * perp(offset) - w * w * offset;
+      pose.acceleration[i] = pose.acceleration[l.first.index] + pose.linkAlpha[k] * perp(offset) - w * w * offset;
   }
 
   // Point i, defined by `def`, in one lane (a free point: its whole group). False if it cannot
@@ -439,7 +441,7 @@ std::string describeFreeGroup(const Mechanism& m, const PoseReport& report, cons
          " iterations" + where + "); the linkage probably cannot close here";
 }
 
-} // namespace
+}  // namespace
 
 void preparePose(const Mechanism& m, Pose& pose) {
   const std::size_t n = m.points.size();
@@ -465,10 +467,10 @@ Solver solverFor(const Mechanism& m, const SolveRequest& request, const BranchGu
   return Solver{m, request.velocities || acc, acc, request.transmissionAngles, request.newton, guide, lanes};
 }
 
-} // namespace
+}  // namespace
 
-PoseReport solvePoseInto(const Mechanism& m, const DriverState& driver, const SolveRequest& request,
-                         Pose& pose, const BranchGuide& guide, const SolveScope* scope) {
+PoseReport solvePoseInto(const Mechanism& m, const DriverState& driver, const SolveRequest& request, Pose& pose,
+                         const BranchGuide& guide, const SolveScope* scope) {
   Lane lane{&driver, &pose};
   solverFor(m, request, guide, {&lane, 1}).run(scope);
   return lane.report;
@@ -495,13 +497,11 @@ Result<Pose> solvePose(const Mechanism& m, const DriverState& driver, const Solv
   preparePose(m, pose);
   const PoseReport report = solvePoseInto(m, driver, request, pose);
   if (report.status == PoseStatus::Ok) return pose;
-  const ErrorCode code =
-      report.status == PoseStatus::Singular ? ErrorCode::Singular : ErrorCode::NotAssemblable;
+  const ErrorCode code = report.status == PoseStatus::Singular ? ErrorCode::Singular : ErrorCode::NotAssemblable;
   return Error{code, m.points[report.culprit.index].name, describeFailure(m, report, pose, driver.angle)};
 }
 
-std::string describeFailure(const Mechanism& m, const PoseReport& report, const Pose& pose,
-                            double inputAngle) {
+std::string describeFailure(const Mechanism& m, const PoseReport& report, const Pose& pose, double inputAngle) {
   const std::size_t i = report.culprit.index;
   const std::string& name = m.points[i].name;
   const std::string at = " at crank angle " + io::formatShort(radToDeg(inputAngle)) + "°";
@@ -511,7 +511,8 @@ std::string describeFailure(const Mechanism& m, const PoseReport& report, const 
     const std::string rod = lengthName(m, report.culprit, p->first, "rod");
     const std::string& n1 = m.points[p->first.index].name;
     if (report.status == PoseStatus::Singular)
-      return name + " is at a toggle position" + at + ": the " + rod + " is at right angles to the guide, so velocity and acceleration are undefined there";
+      return name + " is at a toggle position" + at + ": the " + rod +
+             " is at right angles to the guide, so velocity and acceleration are undefined there";
     const GuideLine line = guideLineAt(m, p->guide, pose);
     const double distance = std::abs(cross(line.direction, line.point - pose.position[p->first.index]));
     return name + " cannot be assembled" + at + ": " + n1 + " is " + io::formatShort(distance) + " " + m.lengthUnit +
@@ -520,7 +521,8 @@ std::string describeFailure(const Mechanism& m, const PoseReport& report, const 
   if (std::holds_alternative<PrpPoint>(m.points[i].definition) && report.status != PoseStatus::Ok)
     return name + (report.status == PoseStatus::Singular ? " is at a toggle position" : " cannot be assembled") + at +
            ": its two guides are parallel, so the sliders' pin is undetermined";
-  if (const auto* s = std::get_if<RprPoint>(&m.points[i].definition); s != nullptr && report.status == PoseStatus::NotAssemblable)
+  if (const auto* s = std::get_if<RprPoint>(&m.points[i].definition);
+      s != nullptr && report.status == PoseStatus::NotAssemblable)
     return name + " cannot be placed" + at + ": " + m.points[s->through.index].name + " lies on the pivot " +
            m.points[s->pivot.index].name + ", so the slot's direction is undetermined";
   const auto* r = std::get_if<RrrPoint>(&m.points[i].definition);
@@ -536,19 +538,17 @@ std::string describeFailure(const Mechanism& m, const PoseReport& report, const 
   const std::string gap = n1 + " and " + n2 + " are " + io::formatShort(apart) + " " + m.lengthUnit + " apart, ";
   switch (report.failure) {
   case AssemblyFailure::TooFar:
-    return name + " cannot be assembled" + at + ": " + gap + "more than " + len1 + " + " + len2 +
-           " = " + io::formatShort(r->firstLength + r->secondLength) + " " + m.lengthUnit;
+    return name + " cannot be assembled" + at + ": " + gap + "more than " + len1 + " + " + len2 + " = " +
+           io::formatShort(r->firstLength + r->secondLength) + " " + m.lengthUnit;
   case AssemblyFailure::TooClose:
     return name + " cannot be assembled" + at + ": " + gap + "less than |" + len1 + " − " + len2 +
            "| = " + io::formatShort(std::abs(r->firstLength - r->secondLength)) + " " + m.lengthUnit;
   case AssemblyFailure::Coincident:
   case AssemblyFailure::Parallel:
   case AssemblyFailure::NoConvergence:
-  case AssemblyFailure::None:
-    break;
+  case AssemblyFailure::None: break;
   }
-  return name + " cannot be assembled" + at + ": " + n1 + " and " + n2 + " coincide, so " + name +
-         " is undetermined";
+  return name + " cannot be assembled" + at + ": " + n1 + " and " + n2 + " coincide, so " + name + " is undetermined";
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -31,9 +31,8 @@ void preparePose(const Mechanism& mechanism, Pose& pose);
 /// With a `scope` (built from request.only by scopeOf), only the points and links in it are
 /// solved (the ground pivots are where preparePose put them); entries outside it keep whatever
 /// they held. Without one, everything is solved.
-PoseReport solvePoseInto(const Mechanism& mechanism, const DriverState& driver,
-                         const SolveRequest& request, Pose& pose, const BranchGuide& guide = {},
-                         const SolveScope* scope = nullptr);
+PoseReport solvePoseInto(const Mechanism& mechanism, const DriverState& driver, const SolveRequest& request, Pose& pose,
+                         const BranchGuide& guide = {}, const SolveScope* scope = nullptr);
 
 /// The most poses solveBlockInto solves at once.
 inline constexpr std::size_t kMaxBlock = 8;
@@ -53,12 +52,10 @@ std::size_t solveBlockInto(const Mechanism& mechanism, std::span<const DriverSta
 
 /// Convenience: validates, solves with the mechanism's branches, and turns a failure into an
 /// Error whose message names the point, the input angle and the reason.
-Result<Pose> solvePose(const Mechanism& mechanism, const DriverState& driver,
-                       const SolveRequest& request = {});
+Result<Pose> solvePose(const Mechanism& mechanism, const DriverState& driver, const SolveRequest& request = {});
 
 /// A sentence explaining a failed report, e.g. "C cannot be assembled at crank angle 200°:
 /// B and O4 are 125 mm apart, more than coupler + rocker = 115 mm".
-std::string describeFailure(const Mechanism& mechanism, const PoseReport& report,
-                            const Pose& pose, double inputAngle);
+std::string describeFailure(const Mechanism& mechanism, const PoseReport& report, const Pose& pose, double inputAngle);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

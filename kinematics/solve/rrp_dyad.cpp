@@ -31,4 +31,4 @@ bool rrpSolveRate(const Eigen::Vector2d& r, const Eigen::Vector2d& guideDirectio
   return true;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -23,9 +23,9 @@ namespace linkwright::kinematics {
 /// Both candidate positions of C along the guide, or why there are none.
 struct RrpCandidates {
   AssemblyFailure failure = AssemblyFailure::None;
-  double open = 0.0;     ///< s for Branch::Open (+√), along u from Q
-  double crossed = 0.0;  ///< s for Branch::Crossed (−√)
-  double reachGap = 0.0; ///< l − distance(P1, guide): ≥ 0 when it assembles; 0 at the toggle
+  double open = 0.0;      ///< s for Branch::Open (+√), along u from Q
+  double crossed = 0.0;   ///< s for Branch::Crossed (−√)
+  double reachGap = 0.0;  ///< l − distance(P1, guide): ≥ 0 when it assembles; 0 at the toggle
 };
 
 /// Solves for s. `guideDirection` must be a unit vector; `length` positive.
@@ -36,4 +36,4 @@ RrpCandidates rrpCandidates(const Eigen::Vector2d& p1, double length, const Eige
 /// at the toggle, |r·u| ≤ kSingularSine·|r|, leaving `rate` untouched.
 bool rrpSolveRate(const Eigen::Vector2d& r, const Eigen::Vector2d& guideDirection, double rhs, double& rate);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

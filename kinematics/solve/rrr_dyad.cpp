@@ -21,4 +21,4 @@ bool rrrSolveRates(const Eigen::Vector2d& r1, const Eigen::Vector2d& r2, const E
   return true;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -27,10 +27,10 @@ namespace linkwright::kinematics {
 /// Why a dyad cannot be assembled.
 enum class AssemblyFailure {
   None,
-  TooFar,      ///< |P1P2| > l1 + l2: the two links cannot reach each other
-  TooClose,    ///< |P1P2| < |l1 − l2|: one circle lies inside the other
-  Coincident,  ///< P1 and P2 coincide: C is undetermined
-  Parallel,    ///< two guides are parallel: their sliders' pin is undetermined
+  TooFar,         ///< |P1P2| > l1 + l2: the two links cannot reach each other
+  TooClose,       ///< |P1P2| < |l1 − l2|: one circle lies inside the other
+  Coincident,     ///< P1 and P2 coincide: C is undetermined
+  Parallel,       ///< two guides are parallel: their sliders' pin is undetermined
   NoConvergence,  ///< Newton did not close a group of free points (newton_group.h)
 };
 
@@ -48,8 +48,8 @@ struct RrrCandidates {
   AssemblyFailure failure = AssemblyFailure::None;
   Eigen::Vector2d open = Eigen::Vector2d::Zero();     ///< s = +1
   Eigen::Vector2d crossed = Eigen::Vector2d::Zero();  ///< s = −1
-  double halfSeparation = 0.0;  ///< h: half the distance between the two candidates
-  double distance = 0.0;        ///< L = |P2 − P1|
+  double halfSeparation = 0.0;                        ///< h: half the distance between the two candidates
+  double distance = 0.0;                              ///< L = |P2 − P1|
 };
 
 /// Solves the dyad's position for both branches. Lengths positive, points finite.
@@ -64,7 +64,7 @@ inline RrrCandidates rrrCandidates(const Eigen::Vector2d& p1, double l1, const E
     return out;
   }
   // Heron's factors: each is a distance to one assembly limit, computed without cancellation.
-  double reach = l1 + l2 - L;        // ≥ 0 unless too far
+  double reach = l1 + l2 - L;            // ≥ 0 unless too far
   double inner = L - std::abs(l1 - l2);  // ≥ 0 unless too close
   if (reach < -slack) {
     out.failure = AssemblyFailure::TooFar;
@@ -120,4 +120,4 @@ inline Eigen::Vector2d rrrSolve(const Eigen::Vector2d& r1, const Eigen::Vector2d
           (r1.x() * rhs.y() - rhs.x() * r2.x()) * inverseDeterminant};
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -23,7 +23,7 @@ void copyColumn(T* column, std::size_t j, std::span<const Pose> poses, std::vect
   for (std::size_t b = 0; b < poses.size(); ++b) column[j + b] = (poses[b].*field)[i];
 }
 
-} // namespace
+}  // namespace
 
 SampleWriter::SampleWriter(const Mechanism& m, SweepResult& out) {
   for (std::size_t i = 0; i < out.position.size(); ++i) {
@@ -98,4 +98,4 @@ void clearRates(Pose& pose) {
   std::fill(pose.linkAlpha.begin(), pose.linkAlpha.end(), 0.0);
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -66,4 +66,4 @@ private:
 /// Zeroes every velocity and acceleration of `pose`: a singular pose's rate columns read 0.
 void clearRates(Pose& pose);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -68,7 +68,7 @@ private:
   SolveScope& m_scope;
 };
 
-} // namespace
+}  // namespace
 
 std::optional<Error> checkSelection(const Mechanism& m, const Selection& selection) {
   if (selection.points)
@@ -110,4 +110,4 @@ SolveScope scopeOf(const Mechanism& m, const Selection& selection) {
   return s;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -35,7 +35,7 @@ struct SolveScope {
   /// The points solved, in order; a free group by its first point. Not the ground pivots:
   /// preparePose places them, and they never move.
   std::vector<PointId> pointSteps;
-  std::vector<LinkStep> linkSteps;         ///< the links solved, in order
+  std::vector<LinkStep> linkSteps;  ///< the links solved, in order
 };
 
 /// The crank phase of link k if it is the driven crank (see LinkStep), else nullopt. Inline:
@@ -55,4 +55,4 @@ std::optional<Error> checkSelection(const Mechanism& mechanism, const Selection&
 /// The scope of a valid selection on a valid mechanism (checkMechanism, checkSelection).
 SolveScope scopeOf(const Mechanism& mechanism, const Selection& selection);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -88,8 +88,8 @@ class Tracker {
 public:
   Tracker(const Mechanism& m, const SweepSpec& spec, const SolveRequest& request, const SolveScope& scope,
           SweepResult& out)
-      : m_mech(m), m_spec(spec), m_request(request), m_scope(scope), m_out(out), m_writer(m, out), m_dyads(dyadsIn(m, scope)),
-        m_scratch(kMaxRefineDepth + 1) {
+      : m_mech(m), m_spec(spec), m_request(request), m_scope(scope), m_out(out), m_writer(m, out),
+        m_dyads(dyadsIn(m, scope)), m_scratch(kMaxRefineDepth + 1) {
     for (Pose& p : m_poses) preparePose(m, p);
     m_predicted.assign(m.points.size(), Eigen::Vector2d::Zero());
     m_hasFreePoints = std::any_of(m.points.begin(), m.points.end(),
@@ -141,8 +141,8 @@ private:
     std::array<PoseReport, kMaxBlock>& reports = m_blockReports;
     for (std::size_t b = 0; b < count; ++b) drivers[b] = driver(angleAt(j + b));
     const BranchGuide keep{m_last->branchSign, {}};
-    const std::size_t solved = solveBlockInto(m_mech, {drivers.data(), count}, m_request,
-                                              {m_blockPoses.data(), count}, keep, m_scope, {reports.data(), count});
+    const std::size_t solved = solveBlockInto(m_mech, {drivers.data(), count}, m_request, {m_blockPoses.data(), count},
+                                              keep, m_scope, {reports.data(), count});
     std::size_t kept = 0;
     for (; kept < solved; ++kept) {
       const double angle = drivers[kept].angle;
@@ -213,8 +213,8 @@ private:
 
   // Positions at angle b continuing from pose `a` at angle aAngle; halves the step while a
   // branch switch cannot be ruled out. `before` (may be null) is the path before `a`.
-  bool refine(int depth, double aAngle, const Pose& a, double beforeAngle,
-              const Eigen::Vector2d* before, double b, Pose& out) {
+  bool refine(int depth, double aAngle, const Pose& a, double beforeAngle, const Eigen::Vector2d* before, double b,
+              Pose& out) {
     // Free points warm-start from the pose this step continues, not from stale scratch.
     out.position = a.position;
     out.assembled = true;
@@ -323,7 +323,7 @@ void summarize(const Mechanism& m, const SweepSpec& spec, SweepResult& out) {
   }
 }
 
-} // namespace
+}  // namespace
 
 bool SweepResult::lockedAfter(std::size_t sample) const {
   return sample + 1 < size() && std::any_of(lockedBetween.begin(), lockedBetween.end(), [&](const AngleRange& step) {
@@ -337,8 +337,9 @@ std::optional<Error> checkSweepSpec(const SweepSpec& spec) {
   if (auto e = checkMagnitude(spec.omega, "omega", kMaxOmega, "rad/s")) return e;
   if (auto e = checkMagnitude(spec.alpha, "alpha", kMaxAlpha, "rad/s²")) return e;
   if (spec.samples == 0 || spec.samples > static_cast<std::size_t>(kMaxSamples))
-    return Error{ErrorCode::InvalidValue, "samples",
-                 "samples must be between 1 and " + std::to_string(kMaxSamples) + " (got " + std::to_string(spec.samples) + ")"};
+    return Error{
+        ErrorCode::InvalidValue, "samples",
+        "samples must be between 1 and " + std::to_string(kMaxSamples) + " (got " + std::to_string(spec.samples) + ")"};
   return std::nullopt;
 }
 
@@ -382,4 +383,4 @@ Result<SweepResult> sweep(const Mechanism& mechanism, const SweepSpec& spec, con
   return out;
 }
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -52,17 +52,17 @@ struct AngleRange {
 /// columns are valid wherever assembled().
 struct SweepResult {
   SolveRequest request;
-  std::vector<double> inputAngle;       ///< rad
-  std::vector<PoseReport> report;       ///< per sample: Ok, Singular or NotAssemblable
+  std::vector<double> inputAngle;  ///< rad
+  std::vector<PoseReport> report;  ///< per sample: Ok, Singular or NotAssemblable
   std::vector<std::vector<Eigen::Vector2d>> position;
   std::vector<std::vector<Eigen::Vector2d>> velocity;
   std::vector<std::vector<Eigen::Vector2d>> acceleration;
-  std::vector<std::vector<double>> linkAngle;  ///< rad, unwrapped over the sweep
-  std::vector<std::vector<double>> linkOmega;  ///< rad/s
-  std::vector<std::vector<double>> linkAlpha;  ///< rad/s²
+  std::vector<std::vector<double>> linkAngle;          ///< rad, unwrapped over the sweep
+  std::vector<std::vector<double>> linkOmega;          ///< rad/s
+  std::vector<std::vector<double>> linkAlpha;          ///< rad/s²
   std::vector<std::vector<double>> transmissionAngle;  ///< rad, for RRR points; others empty
-  std::vector<AngleRange> notAssembled;  ///< runs of consecutive samples that failed
-  std::vector<double> singularAngles;    ///< samples where rates are undefined (toggle)
+  std::vector<AngleRange> notAssembled;                ///< runs of consecutive samples that failed
+  std::vector<double> singularAngles;                  ///< samples where rates are undefined (toggle)
   /// Steps from one assembled sample to the next that the linkage cannot make: somewhere
   /// between them a dyad passes its assembly limit, so the crank cannot turn through (a lock
   /// too short to hold a sample). The later sample is assembled afresh on the mechanism's own
@@ -72,9 +72,7 @@ struct SweepResult {
 
   std::size_t size() const { return inputAngle.size(); }
   bool ok(std::size_t sample) const { return report[sample].status == PoseStatus::Ok; }
-  bool assembled(std::size_t sample) const {
-    return report[sample].status != PoseStatus::NotAssemblable;
-  }
+  bool assembled(std::size_t sample) const { return report[sample].status != PoseStatus::NotAssemblable; }
   /// True if the linkage locks between `sample` and the next (lockedBetween holds that step).
   bool lockedAfter(std::size_t sample) const;
 };
@@ -92,8 +90,7 @@ void copySampleToPose(const SweepResult& sweep, std::size_t sample, Pose& pose);
 
 /// Runs the sweep. Fails only for an invalid mechanism, spec or selection; samples that cannot
 /// be assembled are reported in the result (report, notAssembled, firstFailure).
-Result<SweepResult> sweep(const Mechanism& mechanism, const SweepSpec& spec,
-                          const SolveRequest& request = {});
+Result<SweepResult> sweep(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request = {});
 
 /// The same sweep written into `out`, reusing its columns' storage: repeated sweeps of one
 /// size (a drag, an animation, a benchmark) allocate nothing per call beyond the solver's
@@ -101,4 +98,4 @@ Result<SweepResult> sweep(const Mechanism& mechanism, const SweepSpec& spec,
 std::optional<Error> sweepInto(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request,
                                SweepResult& out);
 
-} // namespace linkwright::kinematics
+}  // namespace linkwright::kinematics

@@ -32,7 +32,7 @@ double percentile(std::vector<double> values, double p) {
   return values[index];
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
@@ -55,9 +55,11 @@ int main(int argc, char** argv) {
     doc->reset(*example);
     QApplication::processEvents();
   }
-  const std::size_t dragged = doc->fourBar() ? linkwright::kinematics::fourbar::kC.index : doc->mechanism().points.size() - 1;
-  std::printf("%s, dragging %s: %zu samples; plots and canvas redrawn after every move\n", argc > 2 ? argv[2] : "thesis four-bar",
-              doc->mechanism().points[dragged].name.c_str(), linkwright::kinematics::designSweepSpec(doc->design()).samples);
+  const std::size_t dragged =
+      doc->fourBar() ? linkwright::kinematics::fourbar::kC.index : doc->mechanism().points.size() - 1;
+  std::printf("%s, dragging %s: %zu samples; plots and canvas redrawn after every move\n",
+              argc > 2 ? argv[2] : "thesis four-bar", doc->mechanism().points[dragged].name.c_str(),
+              linkwright::kinematics::designSweepSpec(doc->design()).samples);
 
   const QPointF start = canvas->mapFromScene(linkwright::ui::toQt(doc->pose().position[dragged]));
   const long sweepsBefore = doc->sweepsRun();

@@ -9,8 +9,8 @@
 // Allocations are counted by replacing the global operator new: each benchmark reports
 // `allocs_per_sample` and `allocs_per_call` over its timed loop.
 
-#include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/design/examples.h"
+#include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/model/constraint_form.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/mechanism.h"
@@ -57,7 +57,7 @@ void* countedAlignedAllocation(std::size_t size, std::align_val_t alignment) {
   if (void* p = std::aligned_alloc(align, rounded == 0 ? align : rounded)) return p;
   throw std::bad_alloc();
 }
-} // namespace
+}  // namespace
 
 void* operator new(std::size_t size) { return countedAllocation(size); }
 void* operator new[](std::size_t size) { return countedAllocation(size); }
@@ -108,10 +108,10 @@ private:
 // --- The linkages ------------------------------------------------------------------------
 
 struct Subject {
-  std::string name;      // "FourBar", "SliderCrank", "Shaper"
-  Mechanism plain;       // as built
-  Mechanism withPath;    // plus one point fixed on the coupler (or rod, or link)
-  double omega = 0.0;    // rad/s, the example's crank speed
+  std::string name;    // "FourBar", "SliderCrank", "Shaper"
+  Mechanism plain;     // as built
+  Mechanism withPath;  // plus one point fixed on the coupler (or rod, or link)
+  double omega = 0.0;  // rad/s, the example's crank speed
 };
 
 const FourBarExample& thesis() {
@@ -403,12 +403,15 @@ void registerAll() {
   // its cost against its tolerance at 3600 samples.
   const Mechanism closed = makeFourBar(thesis().lengths, thesis().branch).value();
   const Mechanism newton = withNewtonPoints(closed, solvePose(closed, {0.0, 1.0, 0.0}).value().position);
-  auto* full = benchmark::RegisterBenchmark("FourBar/NewtonFull", sweepBenchmark, newton, thesis().omega, SolveRequest{});
+  auto* full =
+      benchmark::RegisterBenchmark("FourBar/NewtonFull", sweepBenchmark, newton, thesis().omega, SolveRequest{});
   for (const std::int64_t n : kSizes) full->Arg(n);
   full->Unit(benchmark::kNanosecond);
   for (const double tolerance : {1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14}) {
-    const std::string name = "FourBar/NewtonTolerance/" + std::to_string(static_cast<int>(std::lround(-std::log10(tolerance))));
-    benchmark::RegisterBenchmark(name.c_str(), sweepBenchmark, newton, thesis().omega, SolveRequest{true, true, {tolerance, 50}})
+    const std::string name =
+        "FourBar/NewtonTolerance/" + std::to_string(static_cast<int>(std::lround(-std::log10(tolerance))));
+    benchmark::RegisterBenchmark(name.c_str(), sweepBenchmark, newton, thesis().omega,
+                                 SolveRequest{true, true, {tolerance, 50}})
         ->Arg(3600)
         ->Unit(benchmark::kNanosecond);
   }
@@ -426,7 +429,7 @@ void registerAll() {
       ->Unit(benchmark::kNanosecond);
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   if (!handWrittenMatchesCore()) return 1;

@@ -20,7 +20,7 @@ int run(const std::vector<std::string>& args, std::string& out, std::string& err
   return r.code;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("accuracy tabulates the trade for one example and draws it", "[cli][accuracy]") {
   const std::string svg = (std::filesystem::temp_directory_path() / "linkwright_accuracy_test.svg").string();
@@ -29,8 +29,9 @@ TEST_CASE("accuracy tabulates the trade for one example and draws it", "[cli][ac
   std::istringstream lines(out);
   std::string line;
   std::getline(lines, line);
-  CHECK(line == "example,method,samples_per_rev,time_us,omega_rel_error,alpha_rel_error,speed_rel_error,"
-                "acceleration_rel_error,angle_error_deg,reference\r");
+  CHECK(line ==
+        "example,method,samples_per_rev,time_us,omega_rel_error,alpha_rel_error,speed_rel_error,"
+        "acceleration_rel_error,angle_error_deg,reference\r");
   int rows = 0, refined = 0;
   while (std::getline(lines, line)) {
     ++rows;
@@ -63,7 +64,8 @@ TEST_CASE("accuracy names what it cannot measure", "[cli][accuracy][errors]") {
 TEST_CASE("the SVG plot leaves out points that are not positive and finite", "[cli][accuracy][errors]") {
   // The last guard of accuracy --svg: an infinite error would otherwise become no coordinate.
   const double inf = std::numeric_limits<double>::infinity();
-  const std::string svg = linkwright::cli::logLogPlotSvg("t", "x", "y",
+  const std::string svg = linkwright::cli::logLogPlotSvg(
+      "t", "x", "y",
       {{"s", "#000", false, {{10.0, 1e-3}, {100.0, inf}, {inf, 1e-4}, {1000.0, std::nan("")}, {1e4, 1e-6}}}});
   CHECK(svg.find("undefined") == std::string::npos);
   CHECK(svg.find("inf") == std::string::npos);

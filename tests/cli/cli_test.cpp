@@ -67,7 +67,7 @@ Table parseCsv(const std::string& text) {
   return t;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("help and version succeed and document the exit codes", "[cli]") {
   const Run help = run({"--help"});
@@ -91,7 +91,8 @@ TEST_CASE("bad usage exits 2 with a message naming the option and the reason", "
       {Args{"--frobnicate"}, "unknown option '--frobnicate'"},
       {Args{"analyze", "--example", "thesis-crank-rocker", "--speed", "3"}, "unknown option '--speed' for 'analyze'"},
       {Args{"classify", "--example", "thesis-crank-rocker", "--rpm", "3"}, "unknown option '--rpm' for 'classify'"},
-      {Args{"analyze", "--example", "thesis-crank-rocker", "stray"}, "--example cannot be used with a document (stray)"},
+      {Args{"analyze", "--example", "thesis-crank-rocker", "stray"},
+       "--example cannot be used with a document (stray)"},
       {Args{"analyze", "--example"}, "--example needs a value"},
       {Args{"analyze", "--example", "nope"}, "no example named 'nope'"},
       {Args{"analyze"}, "needs FILE.json, --fourbar FRAME,CRANK,COUPLER,ROCKER or --example NAME"},
@@ -102,20 +103,27 @@ TEST_CASE("bad usage exits 2 with a message naming the option and the reason", "
       {Args{"analyze", "--fourbar", "60,25,nan,45"}, "--fourbar: coupler length must be positive and finite (got nan)"},
       {Args{"analyze", "--fourbar", "60,25,70,inf"}, "--fourbar: rocker length must be positive and finite (got inf)"},
       {Args{"analyze", "--fourbar", "60,25,70,45", "--rpm", "fast"}, "--rpm: 'fast' is not a number"},
-      {Args{"analyze", "--fourbar", "60,25,70,45", "--rpm", "nan"}, "--rpm must be finite and within ±9.55e+06 rev/min, 1e6 rad/s (got nan)"},
-      {Args{"analyze", "--fourbar", "60,25,70,45", "--omega", "inf"}, "--omega must be finite and within ±1e6 rad/s (got inf)"},
-      {Args{"analyze", "--fourbar", "60,25,70,45", "--alpha", "-inf"}, "--alpha must be finite and within ±1e12 rad/s² (got -inf)"},
-      {Args{"analyze", "--fourbar", "60,25,70,45", "--rpm", "1", "--omega", "1"}, "--rpm and --omega cannot be used together"},
+      {Args{"analyze", "--fourbar", "60,25,70,45", "--rpm", "nan"},
+       "--rpm must be finite and within ±9.55e+06 rev/min, 1e6 rad/s (got nan)"},
+      {Args{"analyze", "--fourbar", "60,25,70,45", "--omega", "inf"},
+       "--omega must be finite and within ±1e6 rad/s (got inf)"},
+      {Args{"analyze", "--fourbar", "60,25,70,45", "--alpha", "-inf"},
+       "--alpha must be finite and within ±1e12 rad/s² (got -inf)"},
+      {Args{"analyze", "--fourbar", "60,25,70,45", "--rpm", "1", "--omega", "1"},
+       "--rpm and --omega cannot be used together"},
       {Args{"analyze", "--fourbar", "60,25,70,45", "--step", "0"}, "--step must be positive (got 0)"},
       {Args{"analyze", "--fourbar", "60,25,70,45", "--step", "-5"}, "--step must be positive (got -5)"},
       {Args{"analyze", "--fourbar", "60,25,70,45", "--step", "1e-9"}, "--step is too small"},
-      {Args{"analyze", "--fourbar", "60,25,70,45", "--step", "1", "--samples", "5"}, "--step and --samples cannot be used together"},
+      {Args{"analyze", "--fourbar", "60,25,70,45", "--step", "1", "--samples", "5"},
+       "--step and --samples cannot be used together"},
       {Args{"analyze", "--fourbar", "60,25,70,45", "--samples", "0"}, "--samples must be between 1 and"},
       {Args{"analyze", "--fourbar", "60,25,70,45", "--samples", "2.5"}, "--samples: '2.5' is not a whole number"},
       {Args{"analyze", "--fourbar", "60,25,70,45", "--from", "90", "--to", "10"}, "--to must not be less than --from"},
-      {Args{"analyze", "--fourbar", "60,25,70,45", "--branch", "up"}, "--branch must be 'open' or 'crossed' (got 'up')"},
+      {Args{"analyze", "--fourbar", "60,25,70,45", "--branch", "up"},
+       "--branch must be 'open' or 'crossed' (got 'up')"},
       {Args{"analyze", "--fourbar", "60,25,70,45", "--coupler-point", "1"}, "--coupler-point expects U,V"},
-      {Args{"analyze", "--fourbar", "60,25,70,45", "--coupler-point", "1,nan"}, "coupler point across must be finite (got nan)"},
+      {Args{"analyze", "--fourbar", "60,25,70,45", "--coupler-point", "1,nan"},
+       "coupler point across must be finite (got nan)"},
       {Args{"analyze", "--fourbar", "60,25,70,45", "--rpm", "1", "--rpm", "2"}, "--rpm is given more than once"},
       {Args{"analyze", "--fourbar", "60,25,70,45", "--unit", "m/s"}, "--unit must be a unit name made of letters"},
       {Args{"classify", "--example", "thesis-crank-rocker", "--json=yes"}, "--json takes no value"},
@@ -147,7 +155,8 @@ TEST_CASE("analyze writes the thesis table: every row equals the core's solution
     const double crankDeg = t.value(row, "crank_angle_deg");
     CAPTURE(crankDeg);
     CHECK(crankDeg == 30.0 * static_cast<double>(row));
-    const auto pose = kinematics::solvePose(*mechanism, {kinematics::degToRad(crankDeg), kinematics::rpmToRadPerSec(10), 0});
+    const auto pose =
+        kinematics::solvePose(*mechanism, {kinematics::degToRad(crankDeg), kinematics::rpmToRadPerSec(10), 0});
     REQUIRE(pose.ok());
     using kinematics::fourbar::kCoupler;
     using kinematics::fourbar::kRocker;
@@ -168,7 +177,8 @@ TEST_CASE("analyze writes the thesis table: every row equals the core's solution
 TEST_CASE("analyze reproduces the Alvi rows on both branches", "[cli][published]") {
   // Alvi et al. at 40°: open (second printed row) 103.82°, 38.99°; crossed −126.30°, −61.47°.
   const Run open = run({"analyze", "--example", "alvi-fourbar", "--from", "40", "--to", "40"});
-  const Run crossed = run({"analyze", "--example", "alvi-fourbar", "--from", "40", "--to", "40", "--branch", "crossed"});
+  const Run crossed =
+      run({"analyze", "--example", "alvi-fourbar", "--from", "40", "--to", "40", "--branch", "crossed"});
   REQUIRE(open.code == 0);
   REQUIRE(crossed.code == 0);
   const Table o = parseCsv(open.out);
@@ -262,7 +272,8 @@ TEST_CASE("analyze -o to a full disk keeps the previous file and says why", "[cl
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("values outside the input domain exit 2 naming the option, the value and the range", "[cli][errors][domain]") {
+TEST_CASE("values outside the input domain exit 2 naming the option, the value and the range",
+          "[cli][errors][domain]") {
   // The issue's reports: each printed nan or inf, or ran for 20 s, before the domain.
   auto [args, message] = GENERATE(table<std::vector<std::string>, std::string>({
       {{"analyze", "--fourbar", "60,25,70,45", "--omega", "1e160", "--step", "90"},
@@ -271,8 +282,10 @@ TEST_CASE("values outside the input domain exit 2 naming the option, the value a
       {{"extremes", "--fourbar", "60,25,70,45", "--rpm", "1e200"},
        "--rpm must be finite and within ±9.55e+06 rev/min, 1e6 rad/s (got 1e+200)"},
       {{"analyze", "--fourbar", "1e9,1e-6,1e9,1e9"}, "lengths span too wide a range: link crank is 1e-06 mm but"},
-      {{"analyze", "--fourbar", "60,25,70,45", "--alpha", "2e12"}, "--alpha must be finite and within ±1e12 rad/s² (got 2e+12)"},
-      {{"analyze", "--fourbar", "60,25,70,45", "--from", "-2e6"}, "--from must be finite and within ±1e6 degrees (got -2e+06)"},
+      {{"analyze", "--fourbar", "60,25,70,45", "--alpha", "2e12"},
+       "--alpha must be finite and within ±1e12 rad/s² (got 2e+12)"},
+      {{"analyze", "--fourbar", "60,25,70,45", "--from", "-2e6"},
+       "--from must be finite and within ±1e6 degrees (got -2e+06)"},
       {{"arm", "--arm", "0.3,0.2", "--from-point", "0.3,0", "--to-point", "0.7,0", "--speed", "1e10"},
        "--speed: speed must be finite and within ±1e9 length units/s (got 1e+10)"},
   }));
@@ -337,7 +350,8 @@ TEST_CASE("slider-crank examples analyze and classify", "[cli]") {
   // The rod's transmission angle is worst (72.72° = acos(r/L)) with the crank at 90°.
   const Run classify = run({"classify", "--example", "ls3-engine"});
   CHECK(classify.code == 0);
-  CHECK_THAT(classify.out, Catch::Contains("transmission at C    min 72.72° at crank 90.00°, max 90.00° at crank 0.00°"));
+  CHECK_THAT(classify.out,
+             Catch::Contains("transmission at C    min 72.72° at crank 90.00°, max 90.00° at crank 0.00°"));
   const Run point = run({"analyze", "--example", "ls3-engine", "--coupler-point", "1,2"});
   CHECK(point.code == 2);
   CHECK_THAT(point.err, Catch::Contains("--coupler-point applies to four-bars"));
@@ -381,8 +395,10 @@ TEST_CASE("arm follows seed 004's line: every row equals the core's solution", "
     CHECK(t.value(row, "tip_x_m") == s.tip.x());
     CHECK(t.value(row, "tip_y_m") == s.tip.y());
     // Angles are unwrapped along the path: equal to the core's up to whole turns.
-    for (const auto& [name, angle] : {std::pair{"upper_angle_deg", s.state.upperAngle}, {"forearm_angle_deg", s.state.forearmAngle}})
-      CHECK(std::remainder(kinematics::degToRad(t.value(row, name)) - angle, 2 * kinematics::kPi) == Approx(0).margin(1e-12));
+    for (const auto& [name, angle] :
+         {std::pair{"upper_angle_deg", s.state.upperAngle}, {"forearm_angle_deg", s.state.forearmAngle}})
+      CHECK(std::remainder(kinematics::degToRad(t.value(row, name)) - angle, 2 * kinematics::kPi) ==
+            Approx(0).margin(1e-12));
     CHECK(t.value(row, "upper_omega_rad_s") == s.state.upperOmega);
     CHECK(t.value(row, "forearm_omega_rad_s") == s.state.forearmOmega);
     CHECK(t.value(row, "upper_alpha_rad_s2") == s.state.upperAlpha);
@@ -422,7 +438,8 @@ TEST_CASE("arm gives both elbow solutions: up is the core's open branch, mirrore
 
 TEST_CASE("arm reports where the path leaves the workspace, exactly, and exits 3", "[cli][arm][errors]") {
   // Out along +x at 2 m/s from 0.3 m: beyond r1 + r2 = 0.5 m from t = 0.1 s to the end, 0.2 s.
-  const Run r = run({"arm", "--arm", "0.3,0.2", "--from-point", "0.3,0", "--to-point", "0.7,0", "--speed", "2", "--samples", "9"});
+  const Run r = run(
+      {"arm", "--arm", "0.3,0.2", "--from-point", "0.3,0", "--to-point", "0.7,0", "--speed", "2", "--samples", "9"});
   CHECK(r.code == 3);
   CHECK_THAT(r.err, Catch::Contains("4 of 9 samples cannot be reached"));
   CHECK_THAT(r.err, Catch::Contains("unreachable for t = 0.1 s to 0.2 s (exact): tip from (0.5, 0) m to (0.7, 0) m"));
@@ -438,9 +455,11 @@ TEST_CASE("arm reports where the path leaves the workspace, exactly, and exits 3
     CHECK(t.rows[row][t.column("forearm_alpha_rad_s2")].empty() == (row >= 4));  // stretched at t = 0.1 s
   }
   // Through the hole |p| < r1 − r2 = 0.1 m at 1 m/s: from t = 0.3 ∓ √(0.1² − 0.05²) s.
-  const Run hole = run({"arm", "--arm", "0.3,0.2", "--from-point", "-0.3,0.05", "--to-point", "0.3,0.05", "--speed", "1"});
+  const Run hole =
+      run({"arm", "--arm", "0.3,0.2", "--from-point", "-0.3,0.05", "--to-point", "0.3,0.05", "--speed", "1"});
   CHECK(hole.code == 3);
-  CHECK_THAT(hole.err, Catch::Contains("unreachable for t = 0.213397 s to 0.386603 s (exact): tip from (-0.0866025, 0.05) m"));
+  CHECK_THAT(hole.err,
+             Catch::Contains("unreachable for t = 0.213397 s to 0.386603 s (exact): tip from (-0.0866025, 0.05) m"));
   const Run table = run({"arm", "--arm", "0.3,0.2", "--from-point", "0.3,0", "--to-point", "0.7,0", "--speed", "2",
                          "--samples", "9", "--format", "table"});
   CHECK(table.code == 3);
@@ -450,7 +469,8 @@ TEST_CASE("arm reports where the path leaves the workspace, exactly, and exits 3
 
 TEST_CASE("arm leaves the rates empty where the arm is folded or stretched out", "[cli][arm]") {
   // Arm 3, 2 along +x from |p| = 1 (folded) to |p| = 5 (stretched), one sample per second.
-  const Run r = run({"arm", "--arm", "3,2", "--from-point", "1,0", "--to-point", "5,0", "--speed", "1", "--samples", "5", "--unit", "mm"});
+  const Run r = run({"arm", "--arm", "3,2", "--from-point", "1,0", "--to-point", "5,0", "--speed", "1", "--samples",
+                     "5", "--unit", "mm"});
   REQUIRE(r.code == 0);
   CHECK_THAT(r.err, Catch::Contains("the arm is folded at t = 0 s, tip (1, 0) mm"));
   CHECK_THAT(r.err, Catch::Contains("the arm is stretched out at t = 4 s, tip (5, 0) mm"));
@@ -494,21 +514,26 @@ TEST_CASE("arm and centres: bad options exit 2 naming the option", "[cli][arm][c
       {Args{"arm", "--example", "seed-arm", "--speed", "nan"}, "--speed must be positive and finite (got nan)"},
       {Args{"arm", "--example", "seed-arm", "--speed", "-2"}, "--speed must be positive and finite (got -2)"},
       {Args{"arm", "--example", "seed-arm", "--from-point", "1,inf"}, "--from-point: y must be finite (got inf)"},
-      {Args{"arm", "--example", "seed-arm", "--to-point", "0.3,0"}, "--to-point must differ from --from-point (both are (0.3, 0))"},
+      {Args{"arm", "--example", "seed-arm", "--to-point", "0.3,0"},
+       "--to-point must differ from --from-point (both are (0.3, 0))"},
       {Args{"arm", "--example", "seed-arm", "--frobnicate", "1"}, "unknown option '--frobnicate' for 'arm'"},
       {Args{"arm", "--example", "seed-arm", "--branch", "open"}, "unknown option '--branch' for 'arm'"},
       {Args{"arm", "--example", "seed-arm", "--elbow", "left"}, "--elbow must be 'up' or 'down' (got 'left')"},
       {Args{"arm", "--example", "seed-arm", "--samples", "1"}, "--samples must be at least 2 for arm (got 1)"},
       {Args{"arm", "--example", "seed-arm", "--step-time", "0"}, "--step-time must be positive and finite (got 0)"},
-      {Args{"arm", "--example", "seed-arm", "--step-time", "0.1", "--samples", "3"}, "--step-time and --samples cannot be used together"},
+      {Args{"arm", "--example", "seed-arm", "--step-time", "0.1", "--samples", "3"},
+       "--step-time and --samples cannot be used together"},
       {Args{"arm", "--example", "robot"}, "--example: no arm example named 'robot' (arm has one: seed-arm)"},
       {Args{"arm", "--example", "seed-arm", "--unit", "mm"}, "--unit: the seed-arm example is in metres"},
       {Args{"centres", "--example", "thesis-crank-rocker"}, "centres needs --at DEG"},
-      {Args{"centres", "--at", "10"}, "centres needs FILE.json, --fourbar FRAME,CRANK,COUPLER,ROCKER or --example NAME"},
+      {Args{"centres", "--at", "10"},
+       "centres needs FILE.json, --fourbar FRAME,CRANK,COUPLER,ROCKER or --example NAME"},
       {Args{"centres", "--example", "thesis-crank-rocker", "--at", "nan"}, "--at must be finite (got nan)"},
       {Args{"centres", "--example", "thesis-crank-rocker", "--at", "10,x"}, "--at: 'x' is not a number"},
-      {Args{"centres", "--fourbar", "60,25,-70,45", "--at", "10"}, "--fourbar: coupler length must be positive and finite (got -70)"},
-      {Args{"centres", "--example", "shaper", "--at", "10"}, "instant centres are computed for four-bars and slider-cranks only"},
+      {Args{"centres", "--fourbar", "60,25,-70,45", "--at", "10"},
+       "--fourbar: coupler length must be positive and finite (got -70)"},
+      {Args{"centres", "--example", "shaper", "--at", "10"},
+       "instant centres are computed for four-bars and slider-cranks only"},
   }));
   CAPTURE(args);
   const Run r = run(args);
@@ -526,7 +551,7 @@ double numberAfter(const std::string& text, const std::string& label) {
   REQUIRE(at != std::string::npos);
   return std::stod(text.substr(at + label.size()));
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("centres prints the six centres and a velocity ratio equal to the solver's", "[cli][centres]") {
   const Run r = run({"centres", "--example", "thesis-crank-rocker", "--at", "90"});

@@ -38,11 +38,12 @@ private:
   std::string m_path;
 };
 
-} // namespace
+}  // namespace
 
 TEST_CASE("a saved example analyses exactly as the example", "[cli][document]") {
-  for (const std::string name : {"thesis-crank-rocker", "miranda-fourbar", "ls3-engine", "shaper", "whitworth", "watt-i",
-                                 "watt-ii", "stephenson-i", "stephenson-iii", "stephenson-ii", "stephenson-iii-triad"}) {
+  for (const std::string name :
+       {"thesis-crank-rocker", "miranda-fourbar", "ls3-engine", "shaper", "whitworth", "watt-i", "watt-ii",
+        "stephenson-i", "stephenson-iii", "stephenson-ii", "stephenson-iii-triad"}) {
     CAPTURE(name);
     const auto design = kinematics::designForExample(name);
     REQUIRE(design.has_value());
@@ -71,7 +72,7 @@ TEST_CASE("a document's speed and grid are the defaults", "[cli][document]") {
   std::string header, first;
   std::getline(lines, header);
   std::getline(lines, first);
-  CHECK_THAT(first, Catch::StartsWith("10,3,0,"));  // crank angle, ω, α
+  CHECK_THAT(first, Catch::StartsWith("10,3,0,"));           // crank angle, ω, α
   CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 5);  // header + 4 rows
 }
 
@@ -86,9 +87,10 @@ TEST_CASE("analyze notes a lock between two samples", "[cli][document]") {
   CHECK(r.code == 0);  // every row is there
   CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 74);
   // (Its four-bar is also at a change point: a toggle note for 180° comes first.)
-  CHECK_THAT(r.err, Catch::EndsWith("\nlinkwright-cli: note: the linkage locks between crank angles 290° and 295° (a dyad "
-                                    "passes its assembly limit between these samples); from 295° on it is assembled "
-                                    "afresh on the chosen branches, so points jump there\n"));
+  CHECK_THAT(r.err,
+             Catch::EndsWith("\nlinkwright-cli: note: the linkage locks between crank angles 290° and 295° (a dyad "
+                             "passes its assembly limit between these samples); from 295° on it is assembled "
+                             "afresh on the chosen branches, so points jump there\n"));
 }
 
 TEST_CASE("classify --json escapes the document's own names", "[cli][document][json]") {
@@ -113,8 +115,9 @@ TEST_CASE("a version 1 document analyses as its four-bar", "[cli][document][migr
   const Run r = run({"analyze", v1, "--step", "30", "--from", "0", "--to", "60"});
   INFO(r.err);
   REQUIRE(r.code == 0);
-  const Run same = run({"analyze", "--fourbar", "60,25,70,45", "--branch", "crossed", "--coupler-point", "35,-20.25",
-                        "--omega", "1.0471975511965976", "--alpha", "0.1", "--step", "30", "--from", "0", "--to", "60"});
+  const Run same =
+      run({"analyze", "--fourbar", "60,25,70,45", "--branch", "crossed", "--coupler-point", "35,-20.25", "--omega",
+           "1.0471975511965976", "--alpha", "0.1", "--step", "30", "--from", "0", "--to", "60"});
   CHECK(r.out == same.out);
 }
 

@@ -47,7 +47,7 @@ std::size_t columnOf(const std::vector<std::string>& header, const std::string& 
   return static_cast<std::size_t>(it - header.begin());
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("analyze --forces appends the force columns with their units", "[cli][forces]") {
   const Run r = run({"analyze", "--example", "funsho-fourbar", "--forces", "--step", "30"});
@@ -56,11 +56,13 @@ TEST_CASE("analyze --forces appends the force columns with their units", "[cli][
   const auto rows = lines(r.out);
   REQUIRE(rows.size() == 14);  // header and 0°, 30°, …, 360°
   const auto header = split(rows[0], ',');
-  const std::vector<std::string> forceNames{"F_O2_x_N", "F_O2_y_N", "F_O2_N", "F_O4_x_N", "F_O4_y_N", "F_O4_N",
-                                            "F_B_x_N", "F_B_y_N", "F_B_N", "F_C_x_N", "F_C_y_N", "F_C_N",
-                                            "T_drive_Nm", "shaking_x_N", "shaking_y_N", "shaking_N", "shaking_moment_Nm"};
+  const std::vector<std::string> forceNames{
+      "F_O2_x_N",   "F_O2_y_N",    "F_O2_N",      "F_O4_x_N",  "F_O4_y_N",         "F_O4_N",
+      "F_B_x_N",    "F_B_y_N",     "F_B_N",       "F_C_x_N",   "F_C_y_N",          "F_C_N",
+      "T_drive_Nm", "shaking_x_N", "shaking_y_N", "shaking_N", "shaking_moment_Nm"};
   REQUIRE(header.size() > forceNames.size());
-  CHECK(std::vector<std::string>(header.end() - static_cast<std::ptrdiff_t>(forceNames.size()), header.end()) == forceNames);
+  CHECK(std::vector<std::string>(header.end() - static_cast<std::ptrdiff_t>(forceNames.size()), header.end()) ==
+        forceNames);
   CHECK(header[0] == "crank_angle_deg");
 
   // The torque column is the core's, to the last digit (the CSV is round-trip precise).
@@ -89,7 +91,8 @@ TEST_CASE("analyze --forces without masses is refused with exit code 2", "[cli][
   const Run example = run({"analyze", "--example", "thesis-crank-rocker", "--forces"});
   CHECK(example.code == 2);
   CHECK(example.out.empty());
-  CHECK_THAT(example.err, Catch::Contains("--forces needs masses and loads, and the example thesis-crank-rocker has none"));
+  CHECK_THAT(example.err,
+             Catch::Contains("--forces needs masses and loads, and the example thesis-crank-rocker has none"));
   const Run fourBar = run({"analyze", "--fourbar", "60,25,70,45", "--forces"});
   CHECK(fourBar.code == 2);
   CHECK_THAT(fourBar.err, Catch::Contains("--fourbar has none"));

@@ -24,4 +24,4 @@ inline CliRun runCliCommand(const std::vector<std::string>& args) {
   return r;
 }
 
-} // namespace linkwright::test
+}  // namespace linkwright::test

@@ -2,11 +2,11 @@
 // (fuzz_checks.h says what is checked). Run with tests/fuzz/run-fuzzers.sh.
 #include "tests/fuzz/fuzz_checks.h"
 
+#include <unistd.h>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
-#include <unistd.h>
 
 namespace {
 
@@ -16,7 +16,7 @@ struct ScratchFile {
   ~ScratchFile() { std::remove(path.c_str()); }
 };
 
-} // namespace
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const ScratchFile scratchFile;

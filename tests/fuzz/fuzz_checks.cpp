@@ -36,11 +36,12 @@ std::optional<std::string> checkRun(const std::vector<std::string>& args, std::s
 }
 
 std::string lowerCase(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return text;
 }
 
-} // namespace
+}  // namespace
 
 std::optional<std::string> nonFiniteToken(std::string_view text, std::string_view typed) {
   std::optional<std::string> typedLower;  // made only when a nan or inf turns up
@@ -109,11 +110,10 @@ std::optional<std::string> checkArguments(std::string_view bytes) {
   // A sweep is run only on a grid of at most a few thousand angles, so no input makes an
   // iteration slow (the default grid of --fourbar is 1°, of an example its own few hundred).
   const bool smallGrid = inv.samples ? *inv.samples <= 4000 : (!inv.stepDeg || *inv.stepDeg >= 0.1);
-  const bool cheap = c == Command::Classify || c == Command::Centres || c == Command::Examples ||
-                     c == Command::Help || c == Command::Version ||
-                     ((c == Command::Analyze || c == Command::Extremes) && smallGrid);
+  const bool cheap = c == Command::Classify || c == Command::Centres || c == Command::Examples || c == Command::Help ||
+                     c == Command::Version || ((c == Command::Analyze || c == Command::Extremes) && smallGrid);
   if (!cheap || inv.outputFile || inv.svgFile || inv.documentPath) return std::nullopt;
   return checkRun(args);
 }
 
-} // namespace linkwright::fuzz
+}  // namespace linkwright::fuzz

@@ -33,4 +33,4 @@ std::vector<std::string> splitArguments(std::string_view bytes);
 /// quote), or nothing. Words such as "infinite" or "at infinity" are not numbers and pass.
 std::optional<std::string> nonFiniteToken(std::string_view text, std::string_view typed = {});
 
-} // namespace linkwright::fuzz
+}  // namespace linkwright::fuzz

@@ -33,7 +33,7 @@ std::vector<fs::path> storedInputs(const std::string& kind) {
   return files;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("nonFiniteToken finds nan and inf written as numbers, and only those", "[fuzz]") {
   CHECK(fuzz::nonFiniteToken("crank_angle_deg,x\n0,-nan\n") == "-nan");
@@ -50,8 +50,8 @@ TEST_CASE("nonFiniteToken finds nan and inf written as numbers, and only those",
 
 TEST_CASE("splitArguments cuts at NUL and bounds what an input can ask for", "[fuzz]") {
   using namespace std::string_literals;
-  CHECK(fuzz::splitArguments("classify\0--fourbar\0"s "60,25,70,45"s) ==
-        std::vector<std::string>{"classify", "--fourbar", "60,25,70,45"});
+  CHECK(fuzz::splitArguments("classify\0--fourbar\0"s
+                             "60,25,70,45"s) == std::vector<std::string>{"classify", "--fourbar", "60,25,70,45"});
   CHECK(fuzz::splitArguments("") == std::vector<std::string>{""});
   CHECK(fuzz::splitArguments(std::string(100, '\0')).size() == 32);
   CHECK(fuzz::splitArguments(std::string(1000, 'x')).front().size() == 256);

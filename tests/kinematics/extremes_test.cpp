@@ -53,7 +53,7 @@ void checkSingularAtHalfTurns(const SweepResult& s) {
   }
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("A parallelogram stays a parallelogram through its change points", "[extremes]") {
   const FourBarLengths l{60.0, 25.0, 60.0, 25.0};
@@ -259,7 +259,8 @@ TEST_CASE("A crank at 1e4 rad/s: ω scales linearly, α quadratically", "[extrem
     }
     std::string why;
     CHECK(near(steady->velocity[kC][j], fast * slow->velocity[kC][j], 1e-12 * fast * 100.0, &why));
-    CHECK(near(steady->acceleration[kC][j], fast * fast * slow->acceleration[kC][j], 1e-12 * fast * fast * 300.0, &why));
+    CHECK(
+        near(steady->acceleration[kC][j], fast * fast * slow->acceleration[kC][j], 1e-12 * fast * fast * 300.0, &why));
     INFO(why);
   }
 }

@@ -15,8 +15,8 @@
 // on the coupler from the crank = −(XB, YB); F_C = on the rocker from the coupler = −(XC, YC);
 // F_O4 = on the rocker from the ground = (XD, YD); T_drive = TM.
 
-#include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/design/examples.h"
+#include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/sweep.h"
@@ -54,29 +54,33 @@ SeedForces seedMethod(double th1) {
   const double w3 = w1 * (r1 * std::sin(th1 - th2)) / (r3 * std::sin(th2 - th3));
   const double w2 = w1 * (r1 * std::sin(th3 - th1)) / (r2 * std::sin(th2 - th3));
   const double s23 = std::sin(th2 - th3);
-  const double a3 = (w1 * w1 * r1 / r3) *
-                    ((1 - w2 / w1) * std::cos(th1 - th2) * s23 - (w2 / w1 - w3 / w1) * std::cos(th2 - th3) * std::sin(th1 - th2)) /
-                    (s23 * s23);
-  const double a2 = -(w1 * w1 * r1 / r2) *
-                    ((1 - w3 / w1) * std::cos(th1 - th3) * s23 - (w2 / w1 - w3 / w1) * std::cos(th2 - th3) * std::sin(th1 - th3)) /
-                    (s23 * s23);
+  const double a3 =
+      (w1 * w1 * r1 / r3) *
+      ((1 - w2 / w1) * std::cos(th1 - th2) * s23 - (w2 / w1 - w3 / w1) * std::cos(th2 - th3) * std::sin(th1 - th2)) /
+      (s23 * s23);
+  const double a2 =
+      -(w1 * w1 * r1 / r2) *
+      ((1 - w3 / w1) * std::cos(th1 - th3) * s23 - (w2 / w1 - w3 / w1) * std::cos(th2 - th3) * std::sin(th1 - th3)) /
+      (s23 * s23);
   const double xg1 = -rg1 * (a1 * std::sin(th1) + w1 * w1 * std::cos(th1));
   const double yg1 = rg1 * (a1 * std::cos(th1) - w1 * w1 * std::sin(th1));
-  const double xg2 = -r1 * (a1 * std::sin(th1) + w1 * w1 * std::cos(th1)) - rg2 * (a2 * std::sin(th2) + w2 * w2 * std::cos(th2));
-  const double yg2 = r1 * (a1 * std::cos(th1) - w1 * w1 * std::sin(th1)) + rg2 * (a2 * std::cos(th2) - w2 * w2 * std::sin(th2));
+  const double xg2 =
+      -r1 * (a1 * std::sin(th1) + w1 * w1 * std::cos(th1)) - rg2 * (a2 * std::sin(th2) + w2 * w2 * std::cos(th2));
+  const double yg2 =
+      r1 * (a1 * std::cos(th1) - w1 * w1 * std::sin(th1)) + rg2 * (a2 * std::cos(th2) - w2 * w2 * std::sin(th2));
   const double xg3 = (r3 - rg3) * (a3 * std::sin(th3) + w3 * w3 * std::cos(th3));
   const double yg3 = -(r3 - rg3) * (a3 * std::cos(th3) - w3 * w3 * std::sin(th3));
   Eigen::Matrix<double, 9, 9> M;
   const double s1 = std::sin(th1), c1 = std::cos(th1), s2 = std::sin(th2), c2 = std::cos(th2);
   const double s3 = std::sin(th3), c3 = std::cos(th3);
-  M << 1, 0, 1, 0, 0, 0, 0, 0, 0,  //
-      0, 1, 0, 1, 0, 0, 0, 0, 0,   //
+  M << 1, 0, 1, 0, 0, 0, 0, 0, 0,                                             //
+      0, 1, 0, 1, 0, 0, 0, 0, 0,                                              //
       rg1 * s1, -rg1 * c1, -(r1 - rg1) * s1, (r1 - rg1) * c1, 0, 0, 0, 0, 1,  //
-      0, 0, -1, 0, 1, 0, 0, 0, 0,  //
-      0, 0, 0, -1, 0, 1, 0, 0, 0,  //
+      0, 0, -1, 0, 1, 0, 0, 0, 0,                                             //
+      0, 0, 0, -1, 0, 1, 0, 0, 0,                                             //
       0, 0, -rg2 * s2, rg2 * c2, -(r2 - rg2) * s2, (r2 - rg2) * c2, 0, 0, 0,  //
-      0, 0, 0, 0, -1, 0, 1, 0, 0,  //
-      0, 0, 0, 0, 0, -1, 0, 1, 0,  //
+      0, 0, 0, 0, -1, 0, 1, 0, 0,                                             //
+      0, 0, 0, 0, 0, -1, 0, 1, 0,                                             //
       0, 0, 0, 0, -rg3 * s3, rg3 * c3, -(r3 - rg3) * s3, (r3 - rg3) * c3, 0;
   Eigen::Matrix<double, 9, 1> rhs;
   rhs << m1 * xg1, m1 * yg1, ig1 * a1, m2 * xg2, m2 * yg2, ig2 * a2, m3 * xg3, m3 * yg3, ig3 * a3;
@@ -84,9 +88,10 @@ SeedForces seedMethod(double th1) {
   return {{x(0), x(1)}, {x(2), x(3)}, {x(4), x(5)}, {x(6), x(7)}, x(8)};
 }
 
-} // namespace
+}  // namespace
 
-TEST_CASE("funsho-fourbar: joint forces and motor torque match the seed's 9×9 method", "[dynamics][published][funsho]") {
+TEST_CASE("funsho-fourbar: joint forces and motor torque match the seed's 9×9 method",
+          "[dynamics][published][funsho]") {
   const auto example = findFourBarExample("funsho-fourbar");
   REQUIRE(example.has_value());
   CHECK(example->lengths == FourBarLengths{30.0, 10.0, 35.0, 20.0});
@@ -115,14 +120,15 @@ TEST_CASE("funsho-fourbar: joint forces and motor torque match the seed's 9×9 m
   }
 }
 
-TEST_CASE("funsho-fourbar: the example carries the code's masses, midpoint centres and no gravity", "[dynamics][funsho]") {
+TEST_CASE("funsho-fourbar: the example carries the code's masses, midpoint centres and no gravity",
+          "[dynamics][funsho]") {
   const auto example = findFourBarExample("funsho-fourbar");
   REQUIRE(example.has_value());
   const LinkageDynamics& d = example->dynamics;
   REQUIRE(d.links.size() == 3);
   CHECK(d.links[1].link == "coupler");
-  CHECK(d.links[1].mass == 0.6);        // the code's m2 (the table says 0.4)
-  CHECK(d.links[1].inertia == 4e-4);    // the code's ig2 (the table says 0.004)
+  CHECK(d.links[1].mass == 0.6);            // the code's m2 (the table says 0.4)
+  CHECK(d.links[1].inertia == 4e-4);        // the code's ig2 (the table says 0.004)
   CHECK(d.links[2].centre->along == 10.0);  // rg3 = r3/2 (the table says 15 mm)
   CHECK_FALSE(d.loads.gravity.has_value());
   CHECK_FALSE(checkDynamics(makeFourBar(example->lengths, example->branch).value(), d).has_value());

@@ -84,7 +84,7 @@ double insideAngle(std::mt19937& rng, const InputRange& range) {
 
 double total(const FourBarLengths& l) { return l.frame + l.crank + l.coupler + l.rocker; }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("The random linkages cover every Grashof class and ratios up to 1e4", "[properties]") {
   const std::vector<Linkage> linkages = randomLinkages();
@@ -124,9 +124,12 @@ TEST_CASE("Loop closure and analytic rates against time differences of positions
         // Loop closure: each length to 1e-10 of the linkage's size (ε·size is 2e-16).
         const double size = total(l.lengths);
         const auto& x = p.position;
-        CHECK((x[fourbar::kB.index] - x[fourbar::kO2.index]).norm() == linkwright::test::within(l.lengths.crank, 1e-10 * size));
-        CHECK((x[fourbar::kC.index] - x[fourbar::kB.index]).norm() == linkwright::test::within(l.lengths.coupler, 1e-10 * size));
-        CHECK((x[fourbar::kC.index] - x[fourbar::kO4.index]).norm() == linkwright::test::within(l.lengths.rocker, 1e-10 * size));
+        CHECK((x[fourbar::kB.index] - x[fourbar::kO2.index]).norm() ==
+              linkwright::test::within(l.lengths.crank, 1e-10 * size));
+        CHECK((x[fourbar::kC.index] - x[fourbar::kB.index]).norm() ==
+              linkwright::test::within(l.lengths.coupler, 1e-10 * size));
+        CHECK((x[fourbar::kC.index] - x[fourbar::kO4.index]).norm() ==
+              linkwright::test::within(l.lengths.rocker, 1e-10 * size));
         const double side = std::sin(p.linkAngle[fourbar::kRocker.index] - p.linkAngle[fourbar::kCoupler.index]);
         CHECK((side > 0.0) == (branch == Branch::Open));
 
@@ -140,7 +143,8 @@ TEST_CASE("Loop closure and analytic rates against time differences of positions
         // ends' round-off over its length.
         const double sine = std::max(std::sin(p.transmissionAngle[fourbar::kC.index]), 1e-3);
         const double noiseB = 8.0 * kEpsilon * l.lengths.crank;
-        const double noise = 64.0 * kEpsilon * (size + std::abs(l.couplerPoint.along) + std::abs(l.couplerPoint.across)) / sine;
+        const double noise =
+            64.0 * kEpsilon * (size + std::abs(l.couplerPoint.along) + std::abs(l.couplerPoint.across)) / sine;
         const double angleNoise[] = {noiseB / l.lengths.crank, (noiseB + noise) / l.lengths.coupler,
                                      noise / l.lengths.rocker};
         for (const LinkId link : {fourbar::kCrank, fourbar::kCoupler, fourbar::kRocker}) {
@@ -167,7 +171,8 @@ TEST_CASE("A full sweep keeps its branch and moves continuously", "[properties]"
   std::vector<FourBarLengths> cases{linkwright::test::kThesis, {25.0, 60.0, 45.0, 70.0}};
   int crankRockers = 0, doubleCranks = 0;
   for (const Linkage& l : randomLinkages()) {
-    if (l.category == GrashofClass::CrankRocker && l.range.fullRotation && crankRockers++ < 10) cases.push_back(l.lengths);
+    if (l.category == GrashofClass::CrankRocker && l.range.fullRotation && crankRockers++ < 10)
+      cases.push_back(l.lengths);
     if (l.category == GrashofClass::DoubleCrank && doubleCranks++ < 10) cases.push_back(l.lengths);
   }
   REQUIRE(cases.size() == 22);
@@ -199,7 +204,8 @@ TEST_CASE("A full sweep keeps its branch and moves continuously", "[properties]"
       // The Pose-level branch stays the one chosen: sign of sin(θ4 − θ3) at every sample.
       const double sign = branch == Branch::Open ? 1.0 : -1.0;
       for (std::size_t j = 0; j < samples; ++j) {
-        const double side = std::sin(s->linkAngle[fourbar::kRocker.index][j] - s->linkAngle[fourbar::kCoupler.index][j]);
+        const double side =
+            std::sin(s->linkAngle[fourbar::kRocker.index][j] - s->linkAngle[fourbar::kCoupler.index][j]);
         if (side * sign <= 0.0) FAIL_CHECK("branch changed at sample " << j);
       }
       // Unwrapped over one turn: the crank gains 2π. In a crank-rocker the coupler and rocker

@@ -23,7 +23,7 @@ namespace {
 constexpr auto kCoupler = fourbar::kCoupler.index;
 constexpr auto kRocker = fourbar::kRocker.index;
 constexpr double kTwoDecimals = 0.005 + 1e-9;  // both seeds print two decimals
-} // namespace
+}  // namespace
 
 TEST_CASE("Thesis Table 7 (Excel): angles, ω and α3 to the printed two decimals", "[published][thesis]") {
   // θ2 | θ3, θ4 (deg) | ω3, ω4 (rad/s) | α3, α4 (rad/s²) | α4 printed right? | SolidWorks |α4| (deg/s²)
@@ -106,7 +106,7 @@ TEST_CASE("Alvi et al.: both branches every 40°", "[published][alvi]") {
           {120, Branch::Crossed, -145.28, -48.22, -0.77, 3.26, 26.64, 4.54, 3.1952, 4.54},  // misprint
           {120, Branch::Open, 123.49, 26.44, 3.77, -0.20, -0.66, 21.44, -0.20, 21.44},
           {160, Branch::Crossed, -144.69, -36.44, 1.12, 2.75, 29.94, -16.40, 2.75, -16.40},
-          {160, Branch::Open, 136.77, 28.52, 2.96, 1.32, -22.41, 23.99, 1.32, 23.9325},  // misprint
+          {160, Branch::Open, 136.77, 28.52, 2.96, 1.32, -22.41, 23.99, 1.32, 23.9325},        // misprint
           {200, Branch::Crossed, -136.77, -28.52, 2.96, 1.32, 22.41, -23.99, 1.32, -23.9325},  // misprint
           {200, Branch::Open, 144.69, 36.44, 1.12, 2.75, -29.94, 16.40, 2.75, 16.40},
           {240, Branch::Crossed, -123.49, -26.44, 3.77, -0.20, 0.66, -21.44, -0.20, -21.44},

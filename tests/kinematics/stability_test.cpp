@@ -67,7 +67,7 @@ FourBarReference fourBar(const FourBarLengths& l, double theta2, double omega2, 
   const Real area4 = std::sqrt(std::max(b + c - len, Real(0)) * (b + c + len) * std::max(len - diff, Real(0)) *
                                (len + diff));  // 4 × the triangle's area
   FourBarReference r;
-  r.theta3 = beta + s * std::atan2(area4, b * b + len * len - c * c);  // angle at B
+  r.theta3 = beta + s * std::atan2(area4, b * b + len * len - c * c);         // angle at B
   r.theta4 = beta + kPiL - s * std::atan2(area4, c * c + len * len - b * b);  // angle at O4
   r.cx = bx + b * std::cos(r.theta3);
   r.cy = by + b * std::sin(r.theta3);
@@ -216,7 +216,7 @@ Solved solveAt(const Mechanism& m, const DriverState& state) {
 
 Real relative(double value, Real reference) { return std::abs(value - reference) / std::abs(reference); }
 
-} // namespace
+}  // namespace
 
 // --- Change points ----------------------------------------------------------------------------
 
@@ -233,11 +233,12 @@ int kiteSign(const FourBarLengths&, double theta) { return theta >= 0.0 ? -1 : 1
 // ±0.2 rad about the change point θ = 0 in steps of 1e-4 rad; sample 2000 is exactly 0.
 constexpr SweepSpec kThroughZero{-0.2, 0.2, 4001, 1.0, 0.5};
 
-} // namespace
+}  // namespace
 
-TEST_CASE("Change points: parallelogram, antiparallelogram and kite keep their mode through θ = 0 — "
-          "flagged only where sin μ < 1e-4 — 3e-4 rad away C to 5e-13, θ to 1e-12, ω to 5e-9, α to 2e-5",
-          "[stability]") {
+TEST_CASE(
+    "Change points: parallelogram, antiparallelogram and kite keep their mode through θ = 0 — "
+    "flagged only where sin μ < 1e-4 — 3e-4 rad away C to 5e-13, θ to 1e-12, ω to 5e-9, α to 2e-5",
+    "[stability]") {
   struct Case {
     const char* name;
     FourBarLengths lengths;
@@ -286,9 +287,10 @@ TEST_CASE("Change points: parallelogram, antiparallelogram and kite keep their m
   }
 }
 
-TEST_CASE("A deltoid's coincident point B ≡ O4 is a one-sample gap — the sweep restarts on the "
-          "mechanism's branch (a jump) — 3e-4 rad away C to 5e-13, ω to 2e-9, α to 1e-5",
-          "[stability]") {
+TEST_CASE(
+    "A deltoid's coincident point B ≡ O4 is a one-sample gap — the sweep restarts on the "
+    "mechanism's branch (a jump) — 3e-4 rad away C to 5e-13, ω to 2e-9, α to 1e-5",
+    "[stability]") {
   // Frame = crank = 25, coupler = rocker = 60: at θ = 0 the crank tip lies on O4 and C is
   // undetermined (any point of the circle of radius 60 about O4). The geometric continuation
   // through θ = 0 keeps C on the bisector ray at angle θ/2, which for B→O4 turning over means
@@ -319,9 +321,10 @@ TEST_CASE("A deltoid's coincident point B ≡ O4 is a one-sample gap — the swe
 
 // --- Non-Grashof toggles ----------------------------------------------------------------------
 
-TEST_CASE("A triple-rocker's toggle approached to δ = 1e-9 rad: θ3, θ4 within ε/√δ (7e-14 at 1e-9) — "
-          "ω within 2ε/δ and α within 5ε/δ relative while Ok (δ ≥ 1e-8, sin μ ≥ 2e-4) — flagged at 1e-9",
-          "[stability]") {
+TEST_CASE(
+    "A triple-rocker's toggle approached to δ = 1e-9 rad: θ3, θ4 within ε/√δ (7e-14 at 1e-9) — "
+    "ω within 2ε/δ and α within 5ε/δ relative while Ok (δ ≥ 1e-8, sin μ ≥ 2e-4) — flagged at 1e-9",
+    "[stability]") {
   const FourBarLengths l{40.0, 30.0, 20.0, 25.0};
   REQUIRE(classifyGrashof(l).category == GrashofClass::TripleRocker);
   const InputRange range = fourBarInputRange(l);
@@ -374,9 +377,10 @@ TEST_CASE("A triple-rocker's toggle approached to δ = 1e-9 rad: θ3, θ4 within
 
 // --- Transmission angle near 0° and 180° -------------------------------------------------------
 
-TEST_CASE("Crank-rockers whose transmission angle comes within m = 1e-2, 1e-3, 1e-5 of 0° or 180°: "
-          "ω to 2e-12, 2e-10, 5e-11 and α to 5e-12, 5e-10, 5e-8 of the peak — sin μ < 1e-4 flagged",
-          "[stability]") {
+TEST_CASE(
+    "Crank-rockers whose transmission angle comes within m = 1e-2, 1e-3, 1e-5 of 0° or 180°: "
+    "ω to 2e-12, 2e-10, 5e-11 and α to 5e-12, 5e-10, 5e-8 of the peak — sin μ < 1e-4 flagged",
+    "[stability]") {
   struct Case {
     double margin;      // rad: the extreme transmission angle is m (at θ = 0) or π − m (at θ = π)
     bool nearStraight;  // true: π − m; false: m
@@ -416,9 +420,10 @@ TEST_CASE("Crank-rockers whose transmission angle comes within m = 1e-2, 1e-3, 1
 
 // --- Length ratios and absolute scales ---------------------------------------------------------
 
-TEST_CASE("Length ratios 1e-6 to 1e6: positions to 1e-15 of the longest link — the angle and rates of "
-          "a link ℓ long at D from the origin to about ε·D/ℓ (2e-10 at D/ℓ = 1e6)",
-          "[stability]") {
+TEST_CASE(
+    "Length ratios 1e-6 to 1e6: positions to 1e-15 of the longest link — the angle and rates of "
+    "a link ℓ long at D from the origin to about ε·D/ℓ (2e-10 at D/ℓ = 1e6)",
+    "[stability]") {
   // Rates over each link's own peak: the rocker of the first case moves a millionth as fast
   // as the crank, and its ω is checked to its own digits. With the frame 1e6 long, the short
   // coupler (or rocker) sits 1e6 from the origin, where coordinates are spaced ε·1e6 ≈ 1e-10
@@ -456,9 +461,10 @@ TEST_CASE("Length ratios 1e-6 to 1e6: positions to 1e-15 of the longest link —
   checkBound(e.alpha, c.alphaBound, "α3, α4");
 }
 
-TEST_CASE("Coupler and rocker 1e6 × crank and frame: sin μ ≤ 1e-6 everywhere, so every sample is "
-          "flagged — positions still to 5e-14 of the longest link",
-          "[stability]") {
+TEST_CASE(
+    "Coupler and rocker 1e6 × crank and frame: sin μ ≤ 1e-6 everywhere, so every sample is "
+    "flagged — positions still to 5e-14 of the longest link",
+    "[stability]") {
   // C lies a million lengths away and the coupler and rocker are nearly parallel: the rates
   // exist but are never reported (a limit, docs/accuracy.md).
   // Coupler 1e6 and rocker 1e6 − 0.5 (not 1e6 + 0.5 and 1e6): the same half-unit difference, within
@@ -474,9 +480,10 @@ TEST_CASE("Coupler and rocker 1e6 × crank and frame: sin μ ≤ 1e-6 everywhere
   checkBound(e.angle, 5e-14, "θ3, θ4");
 }
 
-TEST_CASE("Absolute scales 1e-6 to 1e6: the thesis four-bar and the LS3 slider-crank to the same "
-          "relative accuracy at every scale (positions to 1e-15, angles, ω and α to 5e-15 of scale)",
-          "[stability]") {
+TEST_CASE(
+    "Absolute scales 1e-6 to 1e6: the thesis four-bar and the LS3 slider-crank to the same "
+    "relative accuracy at every scale (positions to 1e-15, angles, ω and α to 5e-15 of scale)",
+    "[stability]") {
   const double scale = GENERATE(1e-6, 1e-3, 1.0, 1e3, 1e6);
   CAPTURE(scale);
   const FourBarLengths l{kThesis.frame * scale, kThesis.crank * scale, kThesis.coupler * scale, kThesis.rocker * scale};
@@ -515,9 +522,10 @@ TEST_CASE("Absolute scales 1e-6 to 1e6: the thesis four-bar and the LS3 slider-c
 
 // --- High speed --------------------------------------------------------------------------------
 
-TEST_CASE("ω2 = 1e5 rad/s with α2 ≠ 0: ω to 1e-15 of ω2, α to 2e-15 of ω2² + |α2| (the piston's ẍ "
-          "to 1e-15), linear in α2 and quadratic in ω2 to round-off",
-          "[stability]") {
+TEST_CASE(
+    "ω2 = 1e5 rad/s with α2 ≠ 0: ω to 1e-15 of ω2, α to 2e-15 of ω2² + |α2| (the piston's ẍ "
+    "to 1e-15), linear in α2 and quadratic in ω2 to round-off",
+    "[stability]") {
   struct Case {
     double omega, alpha;
   };
@@ -552,9 +560,10 @@ TEST_CASE("ω2 = 1e5 rad/s with α2 ≠ 0: ω to 1e-15 of ω2, α to 2e-15 of ω
 
 // --- Slivers -----------------------------------------------------------------------------------
 
-TEST_CASE("Linkages assemblable on ~1e-3 rad of input: the sweep's gaps match the exact range "
-          "to one step (plus 3e-7 rad of assembly tolerance) — angles to 2e-12 inside, √(ε·L/ℓ) on a toggle",
-          "[stability]") {
+TEST_CASE(
+    "Linkages assemblable on ~1e-3 rad of input: the sweep's gaps match the exact range "
+    "to one step (plus 3e-7 rad of assembly tolerance) — angles to 2e-12 inside, √(ε·L/ℓ) on a toggle",
+    "[stability]") {
   // Errors reached, rounded up past 2×. Over the whole turn the samples fall at most a step
   // (3e-5 rad) inside an edge; a sweep of exactly one sliver has its first and last samples on
   // the toggles, where a rounding of the diagonal L by ε·L moves the short link ℓ by √(ε·L·ℓ),
@@ -564,21 +573,27 @@ TEST_CASE("Linkages assemblable on ~1e-3 rad of input: the sweep's gaps match th
     const char* name;
     FourBarLengths lengths;
     double positionBound;
-    double angleBound, omegaBound, alphaBound;     // whole turn
-    double edgeAngle, edgeOmega, edgeAlpha;        // one sliver, ends on the toggles
+    double angleBound, omegaBound, alphaBound;  // whole turn
+    double edgeAngle, edgeOmega, edgeAlpha;     // one sliver, ends on the toggles
   };
   const Case c = GENERATE(values<Case>({
       // Tiny rocker: |BO4| must stay within b ± c, two slivers about ±90°; inside them the
       // rocker turns a full circle (ω4 ≈ 6000·ω2). Reached: C 4.2e-16; θ 1.7e-12 (the rocker
       // is 4000 times shorter than its distance from the origin), ω 3.3e-12, α 1.1e-11; one
       // sliver: θ 9.6e-7, ω 1.3e-10, α 4.0e-10.
-      {"tiny rocker, slivers at ±90°", {1.0, 1.0, std::sqrt(2.0), 3.5355339059327378e-4}, 1e-15, 5e-12, 1e-11,
-       5e-11, 2e-6, 5e-10, 1e-9},
+      {"tiny rocker, slivers at ±90°",
+       {1.0, 1.0, std::sqrt(2.0), 3.5355339059327378e-4},
+       1e-15,
+       5e-12,
+       1e-11,
+       5e-11,
+       2e-6,
+       5e-10,
+       1e-9},
       // Triple-rocker at its extended toggle: one sliver |θ| ≤ 5e-4 rad, sin μ ≤ 9e-4 inside.
       // Reached: C 1.7e-13, θ 5.1e-13, ω 2.2e-9, α 7.3e-9; one sliver: θ 2.9e-12, ω 2.6e-8,
       // α 5.6e-8 (next to the flagged ends).
-      {"triple-rocker, sliver about 0", {3.0, 1.0, 1.0, 1.0 + 1.875e-7}, 5e-13, 2e-12, 5e-9, 2e-8, 1e-11, 1e-7,
-       2e-7},
+      {"triple-rocker, sliver about 0", {3.0, 1.0, 1.0, 1.0 + 1.875e-7}, 5e-13, 2e-12, 5e-9, 2e-8, 1e-11, 1e-7, 2e-7},
   }));
   CAPTURE(c.name);
   const InputRange range = fourBarInputRange(c.lengths);
@@ -635,23 +650,24 @@ TEST_CASE("Linkages assemblable on ~1e-3 rad of input: the sweep's gaps match th
 
 // --- Slider-crank ------------------------------------------------------------------------------
 
-TEST_CASE("Slider-crank with rod/crank from 1 + 1e-9 to 1e6: piston x to 2e-14 of the crank (5e-10 "
-          "at 1e6), ẋ to 5e-12, ẍ to 2e-12 — flagged only at 1 + 1e-9",
-          "[stability]") {
+TEST_CASE(
+    "Slider-crank with rod/crank from 1 + 1e-9 to 1e6: piston x to 2e-14 of the crank (5e-10 "
+    "at 1e6), ẋ to 5e-12, ẍ to 2e-12 — flagged only at 1 + 1e-9",
+    "[stability]") {
   // Near rod = crank the rod stands almost across the guide at θ = 90°: r·u/|r| = √(2η) for
   // rod = crank·(1 + η), under kSingularSine only for η < 5e-9. At rod = 1e6·crank the piston
   // sits 1e6 from the origin, where x is spaced 1.2e-10 apart.
   struct Case {
-    double ratio;  // rod / crank
+    double ratio;                   // rod / crank
     double xBound, vBound, aBound;  // x over the crank, ẋ over a·ω2, ẍ over the peak |ẍ|
   };
   const Case c = GENERATE(values<Case>({
-      {1e6, 5e-10, 1e-15, 1e-15},             // reached 1.4e-10, 2.1e-16, 3.2e-16
-      {4.0, 2e-15, 1e-15, 1e-15},             // 9.8e-16, 2.1e-16, 3.5e-16
-      {1.0 + 1e-2, 1e-15, 5e-15, 1e-14},      // 3.7e-16, 1.3e-15, 2.7e-15
-      {1.0 + 1e-4, 1e-14, 2e-13, 5e-13},      // 3.2e-15, 9.0e-14, 1.3e-13
-      {1.0 + 1e-6, 2e-14, 5e-12, 2e-12},      // 8.9e-15, 1.6e-12, 7.7e-13
-      {1.0 + 1e-8, 2e-14, 5e-12, 1e-12},      // 9.2e-15, 2.2e-12, 3.5e-13
+      {1e6, 5e-10, 1e-15, 1e-15},         // reached 1.4e-10, 2.1e-16, 3.2e-16
+      {4.0, 2e-15, 1e-15, 1e-15},         // 9.8e-16, 2.1e-16, 3.5e-16
+      {1.0 + 1e-2, 1e-15, 5e-15, 1e-14},  // 3.7e-16, 1.3e-15, 2.7e-15
+      {1.0 + 1e-4, 1e-14, 2e-13, 5e-13},  // 3.2e-15, 9.0e-14, 1.3e-13
+      {1.0 + 1e-6, 2e-14, 5e-12, 2e-12},  // 8.9e-15, 1.6e-12, 7.7e-13
+      {1.0 + 1e-8, 2e-14, 5e-12, 1e-12},  // 9.2e-15, 2.2e-12, 3.5e-13
       {1.0 + 1e-9, 2e-14, 5e-12, 1e-12},
   }));
   CAPTURE(c.ratio);
@@ -682,9 +698,10 @@ TEST_CASE("Slider-crank with rod/crank from 1 + 1e-9 to 1e6: piston x to 2e-14 o
   CHECK(s.singularAngles.size() == (c.ratio - 1.0 < 5e-9 ? 2u : 0u));  // θ = 90° and 270°
 }
 
-TEST_CASE("Slider-crank with rod = crank: the piston keeps x = 2a·cos θ through the toggle at 90°, "
-          "flagged there — x to 2e-14, ẋ to 5e-12 of a·ω2 elsewhere",
-          "[stability]") {
+TEST_CASE(
+    "Slider-crank with rod = crank: the piston keeps x = 2a·cos θ through the toggle at 90°, "
+    "flagged there — x to 2e-14, ẋ to 5e-12 of a·ω2 elsewhere",
+    "[stability]") {
   // With rod = crank and no offset the two branches cross at θ = 90° (x = 2a·cos θ and x = 0):
   // a change point of the slider-crank. Starting on Open (x = 2a·cos θ for cos θ > 0), the
   // tracker keeps that mode: x stays 2a·cos θ past 90°, i.e. it switches to Crossed there.

@@ -65,18 +65,17 @@ inline std::string firstNonFinite(const kinematics::SweepResult& r) {
         bool finite = true;
         if constexpr (std::is_same_v<std::decay_t<decltype(columns[i][j])>, double>)
           finite = std::isfinite(columns[i][j]);
-        else
-          finite = columns[i][j].allFinite();
+        else finite = columns[i][j].allFinite();
         if (!finite) return std::string(name) + "[" + std::to_string(i) + "][" + std::to_string(j) + "]";
       }
     return {};
   };
   for (std::size_t j = 0; j < r.inputAngle.size(); ++j)
     if (!std::isfinite(r.inputAngle[j])) return "inputAngle[" + std::to_string(j) + "]";
-  for (std::string s : {scan(r.position, "position"), scan(r.velocity, "velocity"),
-                        scan(r.acceleration, "acceleration"), scan(r.linkAngle, "linkAngle"),
-                        scan(r.linkOmega, "linkOmega"), scan(r.linkAlpha, "linkAlpha"),
-                        scan(r.transmissionAngle, "transmissionAngle")})
+  for (std::string s :
+       {scan(r.position, "position"), scan(r.velocity, "velocity"), scan(r.acceleration, "acceleration"),
+        scan(r.linkAngle, "linkAngle"), scan(r.linkOmega, "linkOmega"), scan(r.linkAlpha, "linkAlpha"),
+        scan(r.transmissionAngle, "transmissionAngle")})
     if (!s.empty()) return s;
   return {};
 }
@@ -109,8 +108,7 @@ inline std::array<Estimate, 2> differentiate(const std::array<double, 5>& q, dou
 /// for positions only on the mechanism's own branch.
 class TimeStencil {
 public:
-  TimeStencil(const kinematics::Mechanism& mechanism, const kinematics::DriverState& state, double h)
-      : m_h(h) {
+  TimeStencil(const kinematics::Mechanism& mechanism, const kinematics::DriverState& state, double h) : m_h(h) {
     for (int k = -2; k <= 2; ++k) {
       const double t = k * h;
       const double angle = state.angle + state.omega * t + 0.5 * state.alpha * t * t;
@@ -143,7 +141,8 @@ private:
 
 /// CHECKs that `exact` lies within an estimate's tolerance, printing both on failure.
 inline void checkRate(double exact, const Estimate& estimate, const std::string& what) {
-  INFO(std::setprecision(17) << what << ": exact " << exact << ", difference estimate " << estimate.value << " ± " << estimate.tolerance);
+  INFO(std::setprecision(17) << what << ": exact " << exact << ", difference estimate " << estimate.value << " ± "
+                             << estimate.tolerance);
   CHECK(std::abs(exact - estimate.value) <= estimate.tolerance);
 }
 
@@ -151,8 +150,8 @@ inline void checkRate(double exact, const Estimate& estimate, const std::string&
 /// `mechanism` at `state` against central time differences of its positions. `size` is the
 /// linkage's extent: position round-off is taken as 64ε·size/`sine` (sine: the worst
 /// transmission sine, which amplifies it), a link angle's as that over the link's length.
-inline void checkAllRatesAgainstDifferences(const kinematics::Mechanism& mechanism, const kinematics::DriverState& state,
-                                            double size, double sine = 0.2) {
+inline void checkAllRatesAgainstDifferences(const kinematics::Mechanism& mechanism,
+                                            const kinematics::DriverState& state, double size, double sine = 0.2) {
   const auto pose = kinematics::solvePose(mechanism, state);
   INFO((pose.ok() ? std::string() : pose.error().message));
   REQUIRE(pose.ok());
@@ -177,4 +176,4 @@ inline void checkAllRatesAgainstDifferences(const kinematics::Mechanism& mechani
   }
 }
 
-} // namespace linkwright::test
+}  // namespace linkwright::test

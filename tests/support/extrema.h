@@ -31,4 +31,4 @@ inline kinematics::Extrema extremaOf(const kinematics::Mechanism& m, const kinem
   return *e;
 }
 
-} // namespace linkwright::test
+}  // namespace linkwright::test

@@ -6,8 +6,8 @@
 
 #include <catch2/catch.hpp>
 
-#include <csignal>
 #include <sys/resource.h>
+#include <csignal>
 
 namespace linkwright::test {
 
@@ -32,4 +32,4 @@ private:
   void (*m_handler)(int) = nullptr;
 };
 
-} // namespace linkwright::test
+}  // namespace linkwright::test

@@ -20,4 +20,4 @@ inline kinematics::SixBarGeometry lockingSixBar() {
   return g;
 }
 
-} // namespace linkwright::test
+}  // namespace linkwright::test

@@ -31,7 +31,7 @@ void writeText(const QString& path, const QByteArray& text) {
   f.write(text);
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("an edit changes the design, the analysis and the sweep; undo restores them exactly", "[ui][document]") {
   MechanismDocument doc;
@@ -121,7 +121,8 @@ TEST_CASE("consecutive edits with one merge key are one undo step", "[ui][docume
   for (double crank = 24.0; crank > 20.0; crank -= 0.5) {
     kinematics::FourBarDesign d = *doc.fourBar();
     d.lengths.crank = crank;
-    REQUIRE_FALSE(doc.edit(d, "drag", ui::MergeKey{ui::ContinuousEdit::DragPoint, kinematics::fourbar::kB.index}).has_value());
+    REQUIRE_FALSE(
+        doc.edit(d, "drag", ui::MergeKey{ui::ContinuousEdit::DragPoint, kinematics::fourbar::kB.index}).has_value());
   }
   CHECK(doc.undoStack()->count() == 1);
   doc.undoStack()->undo();
@@ -217,7 +218,8 @@ TEST_CASE("an edit that moves the crank restores the crank angle on undo", "[ui]
   doc.setCrankAngle(0.5);
   kinematics::FourBarDesign d = *doc.fourBar();
   d.lengths.crank = 22.0;
-  REQUIRE_FALSE(doc.edit(d, "move B", ui::MergeKey{ui::ContinuousEdit::DragPoint, kinematics::fourbar::kB.index}, 1.25).has_value());
+  REQUIRE_FALSE(doc.edit(d, "move B", ui::MergeKey{ui::ContinuousEdit::DragPoint, kinematics::fourbar::kB.index}, 1.25)
+                    .has_value());
   CHECK(doc.crankAngle() == 1.25);
   doc.undoStack()->undo();
   CHECK(doc.crankAngle() == 0.5);

@@ -23,10 +23,11 @@ Parsed parse(const std::vector<std::string>& args) {
   return p;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("the designer's options are read in both value forms", "[ui][options]") {
-  const auto p = parse({"--example=shaper", "--screenshot", "shot.png", "--crank-angle", "-30.5", "--presentation", "--forces"});
+  const auto p =
+      parse({"--example=shaper", "--screenshot", "shot.png", "--crank-angle", "-30.5", "--presentation", "--forces"});
   REQUIRE(p.options);
   CHECK(p.options->example == "shaper");
   CHECK(p.options->screenshot == "shot.png");

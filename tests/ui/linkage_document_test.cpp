@@ -38,7 +38,7 @@ std::size_t assembledSamples(const k::SweepResult& s) {
   return n;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("every example and every New template opens, solves and assembles", "[ui][linkage]") {
   std::vector<std::pair<std::string, k::Design>> designs;
@@ -120,7 +120,8 @@ TEST_CASE("a shaper shows its quick return; a Whitworth too", "[ui][linkage][ana
   CHECK(panel.timeRatioText().isEmpty());
 }
 
-TEST_CASE("a four-bar stored as a general linkage still shows its Grashof class and limits", "[ui][linkage][analysis]") {
+TEST_CASE("a four-bar stored as a general linkage still shows its Grashof class and limits",
+          "[ui][linkage][analysis]") {
   // What the panel shows depends on what the linkage is, not on how the design was stored.
   k::MechanismDesign d;
   d.mechanism = *k::makeFourBar({20.0, 25.0, 70.0, 45.0}, k::Branch::Open);  // 20 + 70 > 25 + 45
@@ -147,7 +148,8 @@ TEST_CASE("a drag of any point goes through dragPoint, is one undo step, and und
     for (const double dy : {1.0, 2.0, 3.0}) {
       const auto dragged = ui::dragDesign(doc, last, at + Eigen::Vector2d(2.0, dy));
       REQUIRE(dragged);
-      REQUIRE_FALSE(doc.edit(dragged->design, "drag", ui::MergeKey{ui::ContinuousEdit::DragPoint, last.index}).has_value());
+      REQUIRE_FALSE(
+          doc.edit(dragged->design, "drag", ui::MergeKey{ui::ContinuousEdit::DragPoint, last.index}).has_value());
     }
     CHECK(doc.design() != before);
     CHECK(doc.undoStack()->count() == 1);

@@ -37,7 +37,7 @@ QMenu* topMenu(ui::MainWindow& window, const QString& title) {
   return nullptr;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("Export ▸ CSV of any example equals linkwright-cli analyze --example", "[ui][window][csv][linkage]") {
   ui::MainWindow window;
@@ -129,7 +129,8 @@ TEST_CASE("a corrupt or newer file leaves an open linkage as it was", "[ui][wind
 TEST_CASE("attaching a dyad in the window swaps the lengths panel for the dimensions panel", "[ui][window][attach]") {
   ui::MainWindow window;
   REQUIRE(window.document()->fourBar() != nullptr);
-  const auto request = k::suggestDyad(window.document()->mechanism(), window.document()->crankAngle(), k::DyadKind::Rrr);
+  const auto request =
+      k::suggestDyad(window.document()->mechanism(), window.document()->crankAngle(), k::DyadKind::Rrr);
   REQUIRE_FALSE(window.attachDyad(request).has_value());
   CHECK(window.document()->fourBar() == nullptr);
   CHECK(window.document()->mechanism().links.size() == 5);

@@ -2,15 +2,15 @@
 // reproduces the document, a corrupt file shows an error and changes nothing, examples load,
 // presentation mode scales up, and images export.
 
+#include "ui/main_window.h"
 #include "ui/canvas/coupler_path_item.h"
 #include "ui/canvas/linkage_scene.h"
 #include "ui/canvas/linkage_view.h"
 #include "ui/document/mechanism_document.h"
-#include "ui/main_window.h"
 #include "ui/message_banner.h"
+#include "ui/panels/analysis_panel.h"
 #include "ui/panels/length_editor.h"
 #include "ui/panels/lengths_panel.h"
-#include "ui/panels/analysis_panel.h"
 #include "ui/plots/plot_panel.h"
 #include "ui/plots/quality_bar.h"
 #include "ui/plots/quantity_chart_view.h"
@@ -32,10 +32,10 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFile>
-#include <QLineSeries>
-#include <QTest>
 #include <QImage>
+#include <QLineSeries>
 #include <QTemporaryDir>
+#include <QTest>
 
 #include <sstream>
 
@@ -50,15 +50,22 @@ std::vector<std::string> cliArguments(const kinematics::FourBarDesign& d) {
   const auto& l = d.lengths;
   std::vector<std::string> args{"analyze",
                                 "--fourbar",
-                                formatDouble(l.frame) + "," + formatDouble(l.crank) + "," + formatDouble(l.coupler) + "," +
-                                    formatDouble(l.rocker),
-                                "--unit", d.lengthUnit,
-                                "--branch", d.branch == kinematics::Branch::Open ? "open" : "crossed",
-                                "--omega", formatDouble(d.omega),
-                                "--alpha", formatDouble(d.alpha),
-                                "--from", formatDouble(d.fromDeg),
-                                "--to", formatDouble(d.toDeg),
-                                "--samples", std::to_string(d.samples)};
+                                formatDouble(l.frame) + "," + formatDouble(l.crank) + "," + formatDouble(l.coupler) +
+                                    "," + formatDouble(l.rocker),
+                                "--unit",
+                                d.lengthUnit,
+                                "--branch",
+                                d.branch == kinematics::Branch::Open ? "open" : "crossed",
+                                "--omega",
+                                formatDouble(d.omega),
+                                "--alpha",
+                                formatDouble(d.alpha),
+                                "--from",
+                                formatDouble(d.fromDeg),
+                                "--to",
+                                formatDouble(d.toDeg),
+                                "--samples",
+                                std::to_string(d.samples)};
   if (d.couplerPoint) {
     args.push_back("--coupler-point");
     args.push_back(formatDouble(d.couplerPoint->along) + "," + formatDouble(d.couplerPoint->across));
@@ -66,7 +73,7 @@ std::vector<std::string> cliArguments(const kinematics::FourBarDesign& d) {
   return args;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("Export ▸ CSV is byte-identical to linkwright-cli analyze", "[ui][window][csv]") {
   ui::MainWindow window;
@@ -180,10 +187,12 @@ TEST_CASE("typing a length in the panel updates the badge and the plotted series
   std::size_t first = 0;
   while (!sweep.ok(first)) ++first;
   CHECK(plotted.front().x() == Approx(kinematics::radToDeg(sweep.inputAngle[first])));
-  CHECK(plotted.front().y() == Approx(kinematics::radToDeg(sweep.linkOmega[kinematics::fourbar::kRocker.index][first])));
+  CHECK(plotted.front().y() ==
+        Approx(kinematics::radToDeg(sweep.linkOmega[kinematics::fourbar::kRocker.index][first])));
 }
 
-TEST_CASE("the quality box sets the plots' sampling, states its cost and error, and is remembered", "[ui][window][quality]") {
+TEST_CASE("the quality box sets the plots' sampling, states its cost and error, and is remembered",
+          "[ui][window][quality]") {
   // Whatever happens here, later windows start on Normal again.
   struct Restore {
     ~Restore() { ui::Settings().setSamplingQuality(ui::SamplingQuality::Normal); }
@@ -204,7 +213,8 @@ TEST_CASE("the quality box sets the plots' sampling, states its cost and error, 
     CHECK(doc.request().newton.tolerance == 1e-6);
     CHECK(bar->costText().contains(QStringLiteral("samples/rev · sweep")));
     REQUIRE(doc.qualityEstimate().error.has_value());
-    CHECK(bar->errorText() == QStringLiteral("worst peak error ") + ui::QualityBar::formatRelative(doc.qualityEstimate().error->worstRate()));
+    CHECK(bar->errorText() == QStringLiteral("worst peak error ") +
+                                  ui::QualityBar::formatRelative(doc.qualityEstimate().error->worstRate()));
   }
   CHECK(ui::Settings().samplingQuality() == ui::SamplingQuality::Draft);
   ui::MainWindow again;
@@ -212,14 +222,16 @@ TEST_CASE("the quality box sets the plots' sampling, states its cost and error, 
   CHECK(again.plots()->qualityBar()->qualityBox()->currentIndex() == static_cast<int>(ui::SamplingQuality::Draft));
 }
 
-TEST_CASE("with every plot unticked the sweep has positions only and the canvas still draws the coupler path", "[ui][window][quality]") {
+TEST_CASE("with every plot unticked the sweep has positions only and the canvas still draws the coupler path",
+          "[ui][window][quality]") {
   ui::MainWindow window;
   window.resize(1400, 880);
   window.show();
   REQUIRE(QTest::qWaitForWindowExposed(&window));
   window.newDocument(*kinematics::designForExample("miranda-fourbar"));
   window.settle();
-  for (const ui::PlotCurve& c : window.plots()->curves()) window.plots()->selector()->checkBox(c.quantity)->setChecked(false);
+  for (const ui::PlotCurve& c : window.plots()->curves())
+    window.plots()->selector()->checkBox(c.quantity)->setChecked(false);
   const ui::MechanismDocument& doc = *window.document();
   CHECK_FALSE(doc.request().velocities);
   CHECK_FALSE(doc.request().accelerations);

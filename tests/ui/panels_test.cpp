@@ -30,7 +30,7 @@ void typeInto(QDoubleSpinBox* spin, double value) {
   QTest::keyClick(spin, Qt::Key_Return);
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("typing a length changes the design and the Grashof badge as the core says", "[ui][panels]") {
   ui::MechanismDocument doc;

@@ -3,8 +3,8 @@
 // displayed N, motion never re-measures, a width that keeps the count keeps the sweep, and a
 // rocking crank says why there is no figure.
 
-#include "ui/document/mechanism_document.h"
 #include "ui/document/quality_estimate.h"
+#include "ui/document/mechanism_document.h"
 #include "ui/plots/quality_bar.h"
 
 #include "kinematics/analysis/sampling_accuracy.h"
@@ -42,7 +42,7 @@ k::PeakError coreError(const MechanismDocument& doc) {
   return k::peakError(*read, *exact);
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("the stated error is peakError(sampledPeaks(N), exactPeaks) at the displayed N", "[ui][quality]") {
   const std::string example = GENERATE(std::string("thesis-crank-rocker"), std::string("watt-ii"));

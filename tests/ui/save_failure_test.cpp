@@ -36,7 +36,7 @@ void saveThenEdit(ui::MainWindow& window, const QString& path) {
   REQUIRE(window.document()->isModified());
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("a save to a full disk keeps the previous file and says why", "[ui][window][file][errors]") {
   QTemporaryDir dir;

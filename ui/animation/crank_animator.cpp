@@ -66,4 +66,4 @@ void CrankAnimator::moveBy(double delta) {
   m_direction = -m_direction;
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -50,4 +50,4 @@ private:
   int m_direction = 1;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -64,4 +64,4 @@ void ArrowItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidge
   painter->restore();
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

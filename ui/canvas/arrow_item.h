@@ -33,4 +33,4 @@ private:
   LabelItem* m_label;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

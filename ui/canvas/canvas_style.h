@@ -34,6 +34,6 @@ inline constexpr double kPins = 6;
 inline constexpr double kArrows = 7;
 inline constexpr double kLabels = 8;
 inline constexpr double kMessage = 9;
-} // namespace z
+}  // namespace z
 
-} // namespace linkwright::ui::canvas
+}  // namespace linkwright::ui::canvas

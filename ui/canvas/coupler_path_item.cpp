@@ -40,4 +40,4 @@ void CouplerPathItem::setPresentationScale(double factor) {
   setPen(p);
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

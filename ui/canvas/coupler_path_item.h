@@ -18,4 +18,4 @@ public:
   void setPresentationScale(double factor);
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

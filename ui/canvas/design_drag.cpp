@@ -30,4 +30,4 @@ k::Result<DesignDrag> dragDesign(const MechanismDocument& document, k::PointId p
   return DesignDrag{std::move(design), angle, 0.0};
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -25,4 +25,4 @@ struct DesignDrag {
 kinematics::Result<DesignDrag> dragDesign(const MechanismDocument& document, kinematics::PointId point,
                                           const Eigen::Vector2d& target);
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -20,16 +20,22 @@ QString tr(const char* text) { return QCoreApplication::translate("LinkageView",
 struct HintOf {
   QString name;
   QString operator()(const k::GroundPoint&) const { return tr("Drag %1 to move this ground pivot").arg(name); }
-  QString operator()(const k::CrankPoint&) const { return tr("Drag %1 to change the crank length and phase").arg(name); }
-  QString operator()(const k::RrrPoint&) const { return tr("Drag %1 to change the lengths of the two links it joins").arg(name); }
-  QString operator()(const k::RrpPoint&) const { return tr("Drag %1 along its guide to change the rod length").arg(name); }
+  QString operator()(const k::CrankPoint&) const {
+    return tr("Drag %1 to change the crank length and phase").arg(name);
+  }
+  QString operator()(const k::RrrPoint&) const {
+    return tr("Drag %1 to change the lengths of the two links it joins").arg(name);
+  }
+  QString operator()(const k::RrpPoint&) const {
+    return tr("Drag %1 along its guide to change the rod length").arg(name);
+  }
   QString operator()(const k::RprPoint&) const { return tr("Drag %1 to change the slotted link's length").arg(name); }
   QString operator()(const k::PrpPoint&) const { return {}; }
   QString operator()(const k::AttachedPoint&) const { return tr("Drag %1 to move it on its link").arg(name); }
   QString operator()(const k::FreePoint&) const { return tr("Drag %1 to change the lengths that hold it").arg(name); }
 };
 
-} // namespace
+}  // namespace
 
 k::PointId handlePoint(FourBarHandle handle) {
   switch (handle) {
@@ -43,7 +49,8 @@ k::PointId handlePoint(FourBarHandle handle) {
 }
 
 std::optional<FourBarHandle> fourBarHandleOn(k::PointId point) {
-  for (const FourBarHandle h : {FourBarHandle::O2, FourBarHandle::O4, FourBarHandle::B, FourBarHandle::C, FourBarHandle::CouplerPoint})
+  for (const FourBarHandle h :
+       {FourBarHandle::O2, FourBarHandle::O4, FourBarHandle::B, FourBarHandle::C, FourBarHandle::CouplerPoint})
     if (handlePoint(h) == point) return h;
   return std::nullopt;
 }
@@ -83,4 +90,4 @@ QString dragHint(const k::Design& design, const k::Mechanism& mechanism, k::Poin
   return std::visit(HintOf{dragPointName(mechanism, point)}, mechanism.points[point.index].definition);
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

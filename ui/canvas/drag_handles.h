@@ -31,4 +31,4 @@ QString dragPointName(const kinematics::Mechanism& mechanism, kinematics::PointI
 /// What dragging `point` does, for the status bar.
 QString dragHint(const kinematics::Design& design, const kinematics::Mechanism& mechanism, kinematics::PointId point);
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

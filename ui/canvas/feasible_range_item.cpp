@@ -61,7 +61,7 @@ std::vector<Arc> complementOf(const std::vector<k::AngleRange>& ranges) {
 
 QString degrees(double angle) { return numberText(k::radToDeg(angle), 'f', 1) + QChar(0x00B0); }
 
-} // namespace
+}  // namespace
 
 FeasibleRangeItem::FeasibleRangeItem(QGraphicsItem* parent) : QGraphicsItem(parent), m_label(new LabelItem(this)) {
   setZValue(canvas::z::kRange);
@@ -148,4 +148,4 @@ void FeasibleRangeItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*
   painter->drawPath(m_feasibleArcs);
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

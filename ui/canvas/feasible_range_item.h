@@ -41,4 +41,4 @@ private:
   LabelItem* m_label;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

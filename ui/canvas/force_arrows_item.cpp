@@ -20,7 +20,7 @@ namespace k = kinematics;
 
 namespace {
 constexpr double kLabelGapPx = 4.0;
-} // namespace
+}  // namespace
 
 ForceArrowItem::ForceArrowItem(QGraphicsItem* parent) : QGraphicsItem(parent), m_label(new LabelItem(this)) {
   setFlag(ItemIgnoresTransformations);
@@ -28,7 +28,8 @@ ForceArrowItem::ForceArrowItem(QGraphicsItem* parent) : QGraphicsItem(parent), m
   m_label->setColor(kForceArrowColor.darker(120));
 }
 
-void ForceArrowItem::setArrow(const QPointF& scenePoint, const QPointF& direction, double lengthPx, const QString& label) {
+void ForceArrowItem::setArrow(const QPointF& scenePoint, const QPointF& direction, double lengthPx,
+                              const QString& label) {
   prepareGeometryChange();
   setPos(scenePoint);
   const double norm = std::hypot(direction.x(), direction.y());
@@ -115,4 +116,4 @@ void ForceArrowsItem::setPresentationScale(double factor) {
   for (ForceArrowItem* arrow : m_arrows) arrow->setPresentationScale(factor);
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

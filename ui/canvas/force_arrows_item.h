@@ -74,4 +74,4 @@ private:
   double m_scale = 1.0;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -72,20 +72,22 @@ void drawLabels(QPainter* painter, const QRectF& visible, double spacing, const 
     painter->drawText(QPointF(device.left() + margin, y - margin), text);
     column = std::max(column, metrics.horizontalAdvance(text));
   }
-  const QString caption = QCoreApplication::translate("LinkageView", "grid %1 %2").arg(formatGridValue(spacing, spacing), unit);
+  const QString caption =
+      QCoreApplication::translate("LinkageView", "grid %1 %2").arg(formatGridValue(spacing, spacing), unit);
   const double captionLeft = device.right() - margin - metrics.horizontalAdvance(caption);
   painter->drawText(QPointF(captionLeft, baseline), caption);
   for (double i = std::ceil(visible.left() / spacing); i * spacing <= visible.right(); i += 1.0) {
     const double x = toDevice.map(QPointF(i * spacing, 0.0)).x();
     const QString text = formatGridValue(i * spacing, spacing);
-    if (x < device.left() + column + 3.0 * margin || x + margin + metrics.horizontalAdvance(text) > captionLeft - 2.0 * margin)
+    if (x < device.left() + column + 3.0 * margin ||
+        x + margin + metrics.horizontalAdvance(text) > captionLeft - 2.0 * margin)
       continue;
     painter->drawText(QPointF(x + margin, baseline), text);
   }
   painter->restore();
 }
 
-} // namespace
+}  // namespace
 
 void paintGrid(QPainter* painter, const QRectF& exposed, const QRectF& visible, const QString& unit, double textScale) {
   const double pixelsPerUnit = std::abs(painter->worldTransform().m11());
@@ -97,4 +99,4 @@ void paintGrid(QPainter* painter, const QRectF& exposed, const QRectF& visible, 
   drawLabels(painter, visible, spacing, unit, textScale);
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -26,4 +26,4 @@ QString formatGridValue(double value, double spacing);
 /// unit; `textScale` enlarges the numbers in presentation mode.
 void paintGrid(QPainter* painter, const QRectF& exposed, const QRectF& visible, const QString& unit, double textScale);
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -14,7 +14,7 @@ constexpr double kHalfBase = 11.0;
 constexpr double kHeight = 16.0;
 constexpr double kHatchDepth = 6.0;
 constexpr double kHatchStep = 5.0;
-} // namespace
+}  // namespace
 
 GroundPivotItem::GroundPivotItem(QGraphicsItem* parent) : QGraphicsItem(parent) {
   setFlag(ItemIgnoresTransformations);
@@ -56,4 +56,4 @@ void GroundPivotItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, 
   painter->drawEllipse(QPointF(0, 0), canvas::kPinRadiusPx, canvas::kPinRadiusPx);
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

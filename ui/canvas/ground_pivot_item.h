@@ -21,4 +21,4 @@ private:
   bool m_hot = false;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

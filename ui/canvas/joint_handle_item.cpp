@@ -41,4 +41,4 @@ void JointHandleItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, 
   }
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

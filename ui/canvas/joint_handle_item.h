@@ -25,4 +25,4 @@ private:
   bool m_hot = false;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

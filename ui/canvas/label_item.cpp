@@ -57,8 +57,8 @@ void LabelItem::placeToward(const QPointF& direction, double distancePx) {
 QRectF LabelItem::textRect() const {
   const QFontMetricsF metrics(m_font);
   const QSizeF size = m_maximumWidth > 0.0
-                         ? metrics.boundingRect(QRectF(0.0, 0.0, m_maximumWidth, 1e6), Qt::TextWordWrap, m_text).size()
-                         : QSizeF(metrics.horizontalAdvance(m_text), metrics.height());
+                          ? metrics.boundingRect(QRectF(0.0, 0.0, m_maximumWidth, 1e6), Qt::TextWordWrap, m_text).size()
+                          : QSizeF(metrics.horizontalAdvance(m_text), metrics.height());
   QPointF topLeft = m_offset;
   if (m_alignment & Qt::AlignRight) topLeft.rx() -= size.width();
   else if (m_alignment & Qt::AlignHCenter) topLeft.rx() -= size.width() / 2.0;
@@ -90,4 +90,4 @@ void LabelItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidge
   painter->drawText(rect, Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, m_text);
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

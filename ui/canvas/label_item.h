@@ -42,4 +42,4 @@ private:
   Qt::Alignment m_alignment = Qt::AlignLeft | Qt::AlignBottom;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

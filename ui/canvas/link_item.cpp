@@ -19,4 +19,4 @@ void LinkItem::setPresentationScale(double factor) {
   setPen(p);
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

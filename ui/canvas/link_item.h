@@ -16,4 +16,4 @@ public:
   void setPresentationScale(double factor);
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

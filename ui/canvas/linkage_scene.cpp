@@ -34,7 +34,7 @@ QString formatMagnitude(double value) {
   return numberText(value, 'f', std::clamp(2 - digits, 0, 6));
 }
 
-} // namespace
+}  // namespace
 
 LinkageScene::LinkageScene(QObject* parent)
     : QGraphicsScene(parent), m_range(new FeasibleRangeItem), m_message(new LabelItem) {
@@ -141,7 +141,9 @@ void LinkageScene::computeArrowScales(const MechanismDocument& document) {
     return most;
   };
   const double size = linkageSize();
-  const auto scaleFor = [&](double most) { return most > 0.0 && std::isfinite(most) ? kLongestArrowFraction * size / most : 0.0; };
+  const auto scaleFor = [&](double most) {
+    return most > 0.0 && std::isfinite(most) ? kLongestArrowFraction * size / most : 0.0;
+  };
   m_velocityScale = scaleFor(longest(sweep.velocity, document.pose().velocity));
   m_accelerationScale = scaleFor(longest(sweep.acceleration, document.pose().acceleration));
 }
@@ -155,13 +157,14 @@ void LinkageScene::updateArrows(const MechanismDocument& document) {
   const k::Pose& pose = document.pose();
   const bool rates = document.poseStatus() == k::PoseStatus::Ok;
   const QString unit = QString::fromStdString(document.lengthUnit());
-  const auto place = [&](ArrowItem* arrow, std::size_t p, bool show, double scale, const std::vector<Eigen::Vector2d>& column,
-                         const QString& perTime) {
+  const auto place = [&](ArrowItem* arrow, std::size_t p, bool show, double scale,
+                         const std::vector<Eigen::Vector2d>& column, const QString& perTime) {
     const bool visible = show && rates && scale > 0.0 && p < column.size() && p < pose.position.size();
     arrow->setVisible(visible);
     if (!visible) return;
     const Eigen::Vector2d& value = column[p];
-    arrow->setArrow(toQt(pose.position[p]), scale * toQt(value), tr("%1 %2%3").arg(formatMagnitude(value.norm()), unit, perTime));
+    arrow->setArrow(toQt(pose.position[p]), scale * toQt(value),
+                    tr("%1 %2%3").arg(formatMagnitude(value.norm()), unit, perTime));
   };
   for (std::size_t p = 0; p < m_velocityArrows.size(); ++p) {
     if (m_velocityArrows[p] == nullptr) continue;
@@ -198,7 +201,9 @@ std::optional<QPointF> LinkageScene::handlePosition(k::PointId point) const {
   return item->pos();
 }
 
-std::optional<QPointF> LinkageScene::handlePosition(k::FourBarHandle handle) const { return handlePosition(handlePoint(handle)); }
+std::optional<QPointF> LinkageScene::handlePosition(k::FourBarHandle handle) const {
+  return handlePosition(handlePoint(handle));
+}
 
 void LinkageScene::setHotHandle(std::optional<k::PointId> point) { m_items->setHot(point); }
 
@@ -245,4 +250,4 @@ void LinkageScene::showMessage(const QPointF& scenePos, const QString& text) {
 
 void LinkageScene::hideMessage() { m_message->setVisible(false); }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -98,7 +98,7 @@ private:
   std::unique_ptr<MechanismItems> m_items;
   std::vector<kinematics::PointId> m_handlePoints;
   FeasibleRangeItem* m_range;
-  std::vector<ArrowItem*> m_velocityArrows;      // per point; null for ground pivots
+  std::vector<ArrowItem*> m_velocityArrows;  // per point; null for ground pivots
   std::vector<ArrowItem*> m_accelerationArrows;
   LabelItem* m_message;
 
@@ -110,4 +110,4 @@ private:
   double m_presentationScale = 1.0;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -27,10 +27,10 @@ constexpr double kMinLinkagePixels = 20.0;
 constexpr double kMaxLinkagePixels = 2.0e5;
 constexpr double kSceneRectSizes = 1000.0;
 constexpr double kMaxSceneRectPixels = 1.0e9;
-constexpr double kFitMarginPx = 40.0;      // room for pins, ground supports and labels
-constexpr double kWheelStep = 1.2;         // zoom per wheel notch
+constexpr double kFitMarginPx = 40.0;  // room for pins, ground supports and labels
+constexpr double kWheelStep = 1.2;     // zoom per wheel notch
 
-} // namespace
+}  // namespace
 
 LinkageView::LinkageView(MechanismDocument* document, QWidget* parent)
     : QGraphicsView(parent), m_document(document), m_scene(new LinkageScene(this)) {
@@ -106,9 +106,7 @@ void LinkageView::fitToView() {
   m_autoFit = true;
 }
 
-void LinkageView::zoomBy(double factor) {
-  zoomAbout(QRectF(viewport()->rect()).center(), factor);
-}
+void LinkageView::zoomBy(double factor) { zoomAbout(QRectF(viewport()->rect()).center(), factor); }
 
 void LinkageView::onDocumentChanged(Changes what) {
   if (what & (Changes(Change::Design) | Change::Request)) {
@@ -138,7 +136,9 @@ void LinkageView::ensureSceneRect(bool force) {
   if (!force) centerOn(centre);
 }
 
-QPointF LinkageView::sceneAt(const QPointF& viewportPos) const { return viewportTransform().inverted().map(viewportPos); }
+QPointF LinkageView::sceneAt(const QPointF& viewportPos) const {
+  return viewportTransform().inverted().map(viewportPos);
+}
 
 std::optional<k::PointId> LinkageView::handleAt(const QPointF& viewportPos) const {
   std::optional<k::PointId> best;
@@ -326,4 +326,4 @@ void LinkageView::refuse(const QString& reason, const QPointF& viewportPos) {
   emit editRefused(reason);
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

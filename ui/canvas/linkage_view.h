@@ -87,12 +87,12 @@ private:
   Gesture m_gesture = Gesture::None;
   Qt::MouseButton m_gestureButton = Qt::NoButton;
   kinematics::PointId m_dragPoint;
-  QPointF m_grabOffset;      // handle minus pointer (scene units), fixed for one drag
-  QPointF m_lastPointer;     // viewport pixels, last pan or drag position
-  QPointF m_scrollResidue;   // sub-pixel remainder of programmatic scrolling
-  int m_dragCount = 0;       // makes each drag its own undo step
+  QPointF m_grabOffset;     // handle minus pointer (scene units), fixed for one drag
+  QPointF m_lastPointer;    // viewport pixels, last pan or drag position
+  QPointF m_scrollResidue;  // sub-pixel remainder of programmatic scrolling
+  int m_dragCount = 0;      // makes each drag its own undo step
   QString m_lastRefusal;
   std::optional<kinematics::PointId> m_hover;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

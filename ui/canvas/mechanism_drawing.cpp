@@ -22,7 +22,7 @@ bool linkJoins(const k::Mechanism& m, k::PointId a, k::PointId b) {
   });
 }
 
-} // namespace
+}  // namespace
 
 DrawingPlan planDrawing(const k::Mechanism& m) {
   DrawingPlan plan;
@@ -73,7 +73,8 @@ DrawingPlan planDrawing(const k::Mechanism& m) {
     }
     plan.bodies.push_back(std::move(body));
   }
-  for (std::size_t g = 1; g < groundPoints.size(); ++g) plan.frameLines.push_back({groundPoints[g - 1], groundPoints[g]});
+  for (std::size_t g = 1; g < groundPoints.size(); ++g)
+    plan.frameLines.push_back({groundPoints[g - 1], groundPoints[g]});
   for (const k::DistanceConstraint& c : m.constraints) {
     join(plan, c.first, c.second);
     if (!linkJoins(m, c.first, c.second)) plan.constraintBars.push_back({c.first, c.second});
@@ -104,4 +105,4 @@ QString pointDisplayName(const std::string& name) {
   return out;
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -26,9 +26,9 @@ struct BodyShape {
 /// a PRP pin (guide 0 and guide 1).
 struct SliderShape {
   kinematics::PointId joint;
-  int guide = 0;             ///< which guide of the joint's definition
-  std::size_t ordinal = 0;   ///< the slider's number, for its colour
-  bool onGround = true;      ///< a ground guide is drawn as a hatched slideway
+  int guide = 0;            ///< which guide of the joint's definition
+  std::size_t ordinal = 0;  ///< the slider's number, for its colour
+  bool onGround = true;     ///< a ground guide is drawn as a hatched slideway
   bool operator==(const SliderShape&) const = default;
 };
 
@@ -51,16 +51,16 @@ struct PointPair {
 };
 
 struct DrawingPlan {
-  std::vector<bool> barLinks;           ///< per link: drawn as a plain bar (not slotted)
+  std::vector<bool> barLinks;  ///< per link: drawn as a plain bar (not slotted)
   std::vector<BodyShape> bodies;
   std::vector<SliderShape> sliders;
   std::vector<SlotShape> slottedLinks;
   std::vector<PointPair> frameLines;
   std::vector<PointPair> constraintBars;
-  std::vector<bool> ground;             ///< per point: a ground pivot
-  std::vector<bool> draggable;          ///< per point: has a drag handle (all but PRP pins)
-  std::vector<bool> traced;             ///< per point: its path over the cycle is drawn
-  std::vector<bool> attached;           ///< per point: fixed on a link (drawn as a dot)
+  std::vector<bool> ground;                                  ///< per point: a ground pivot
+  std::vector<bool> draggable;                               ///< per point: has a drag handle (all but PRP pins)
+  std::vector<bool> traced;                                  ///< per point: its path over the cycle is drawn
+  std::vector<bool> attached;                                ///< per point: fixed on a link (drawn as a dot)
   std::vector<std::vector<kinematics::PointId>> neighbours;  ///< per point: what it is joined to
   bool operator==(const DrawingPlan&) const = default;
 };
@@ -78,4 +78,4 @@ const kinematics::CrankPoint* crankOf(const kinematics::Mechanism& mechanism);
 /// ("O2" → "O₂", "J5" → "J₅"); other names unchanged.
 QString pointDisplayName(const std::string& name);
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -9,8 +9,8 @@
 #include "ui/canvas/slider_block_item.h"
 #include "ui/canvas/slideway_item.h"
 #include "ui/canvas/slotted_link_item.h"
-#include "ui/geometry.h"
 #include "ui/colors.h"
+#include "ui/geometry.h"
 
 #include "kinematics/solve/guide_line.h"
 
@@ -54,7 +54,7 @@ double along(const k::GuideLine& line, const Eigen::Vector2d& p) { return line.d
 
 QPointF onLine(const k::GuideLine& line, double t) { return toQt(line.point + t * line.direction); }
 
-} // namespace
+}  // namespace
 
 template <typename Item>
 Item* MechanismItems::add(Item* item) {
@@ -97,14 +97,16 @@ MechanismItems::MechanismItems(QGraphicsScene* scene, const k::Mechanism& m, Dra
     line->setZValue(canvas::z::kFrame);
     m_frameLines.push_back(line);
   }
-  for (std::size_t i = 0; i < m_plan.constraintBars.size(); ++i) m_constraintBars.push_back(add(new LinkItem(kFrameColor)));
+  for (std::size_t i = 0; i < m_plan.constraintBars.size(); ++i)
+    m_constraintBars.push_back(add(new LinkItem(kFrameColor)));
   m_grounds.assign(points, nullptr);
   m_joints.assign(points, nullptr);
   m_labels.assign(points, nullptr);
   m_paths.assign(points, nullptr);
   for (std::size_t i = 0; i < points; ++i) {
     if (m_plan.ground[i]) m_grounds[i] = add(new GroundPivotItem);
-    else if (m_plan.attached[i]) m_joints[i] = add(new JointHandleItem(JointHandleItem::Style::Dot, kCouplerPointColor));
+    else if (m_plan.attached[i])
+      m_joints[i] = add(new JointHandleItem(JointHandleItem::Style::Dot, kCouplerPointColor));
     else m_joints[i] = add(new JointHandleItem(JointHandleItem::Style::Pin));
     m_labels[i] = add(new LabelItem);
     m_labels[i]->setText(pointDisplayName(m.points[i].name));
@@ -139,11 +141,14 @@ QGraphicsPolygonItem* MechanismItems::body(k::LinkId l) const {
   return nullptr;
 }
 
-CouplerPathItem* MechanismItems::path(k::PointId p) const { return p.index < m_paths.size() ? m_paths[p.index] : nullptr; }
+CouplerPathItem* MechanismItems::path(k::PointId p) const {
+  return p.index < m_paths.size() ? m_paths[p.index] : nullptr;
+}
 
 LabelItem* MechanismItems::label(k::PointId p) const { return p.index < m_labels.size() ? m_labels[p.index] : nullptr; }
 
-void MechanismItems::setDesign(const k::Mechanism& m, const k::SweepResult& sweep, const k::Pose& pose, double linkageSize) {
+void MechanismItems::setDesign(const k::Mechanism& m, const k::SweepResult& sweep, const k::Pose& pose,
+                               double linkageSize) {
   m_margin = 0.06 * linkageSize;
   for (std::size_t i = 0; i < m_paths.size(); ++i)
     if (m_paths[i] != nullptr) m_paths[i]->setFromSweep(sweep, k::PointId{i});
@@ -166,16 +171,20 @@ void MechanismItems::setDesign(const k::Mechanism& m, const k::SweepResult& swee
     const k::GuideLine line = k::guideLineAt(m, sliderGuide(m, slider), pose);
     double low = along(line, pose.position[slider.joint.index]);
     double high = low;
-    overCycle(slider.joint, [&](std::size_t j) { return along(line, sweep.position[slider.joint.index][j]); }, low, high);
+    overCycle(
+        slider.joint, [&](std::size_t j) { return along(line, sweep.position[slider.joint.index][j]); }, low, high);
     m_groundSlideways[s] = QLineF(onLine(line, low - m_margin), onLine(line, high + m_margin));
   }
   for (std::size_t s = 0; s < m_plan.slottedLinks.size(); ++s) {
     const SlotShape& slot = m_plan.slottedLinks[s];
     double low = (pose.position[slot.through.index] - pose.position[slot.pivot.index]).norm();
     double high = low;
-    overCycle(slot.through, [&](std::size_t j) {
-      return (sweep.position[slot.through.index][j] - sweep.position[slot.pivot.index][j]).norm();
-    }, low, high);
+    overCycle(
+        slot.through,
+        [&](std::size_t j) {
+          return (sweep.position[slot.through.index][j] - sweep.position[slot.pivot.index][j]).norm();
+        },
+        low, high);
     m_slotReach[s] = high;
   }
   // Corner points, not QRectF::united: a rect of zero size is null and would be skipped.
@@ -305,9 +314,11 @@ void MechanismItems::setPresentationScale(double factor) {
   for (SlidewayItem* s : m_slideways) s->setPresentationScale(factor);
   for (CouplerPathItem* p : m_paths)
     if (p != nullptr) p->setPresentationScale(factor);
-  for (QGraphicsLineItem* line : m_frameLines) line->setPen(cosmeticPen(kFrameColor, canvas::kFrameWidthPx * factor, Qt::DashLine));
+  for (QGraphicsLineItem* line : m_frameLines)
+    line->setPen(cosmeticPen(kFrameColor, canvas::kFrameWidthPx * factor, Qt::DashLine));
   for (std::size_t b = 0; b < m_bodies.size(); ++b)
-    m_bodies[b]->setPen(cosmeticPen(linkColor(m_plan.bodies[b].link.index), kPlateSideFraction * canvas::kLinkWidthPx * factor));
+    m_bodies[b]->setPen(
+        cosmeticPen(linkColor(m_plan.bodies[b].link.index), kPlateSideFraction * canvas::kLinkWidthPx * factor));
   const auto scaleAll = [factor](const auto& items) {
     for (QGraphicsItem* item : items)
       if (item != nullptr) item->setScale(factor);
@@ -327,4 +338,4 @@ void MechanismItems::setHot(std::optional<k::PointId> point) {
   }
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

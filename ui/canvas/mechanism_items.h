@@ -13,8 +13,8 @@
 #include "kinematics/solve/sweep.h"
 
 #include <QLineF>
-#include <QRectF>
 #include <QPointF>
+#include <QRectF>
 
 #include <optional>
 #include <vector>
@@ -83,22 +83,22 @@ private:
   QGraphicsScene* m_scene;
   DrawingPlan m_plan;
   std::vector<QGraphicsItem*> m_owned;
-  std::vector<LinkItem*> m_links;                 // per link; null for slotted links
-  std::vector<QGraphicsPolygonItem*> m_bodies;    // per plan body
-  std::vector<SlottedLinkItem*> m_slots;          // per plan slot
-  std::vector<SliderBlockItem*> m_slotBlocks;     // per plan slot
-  std::vector<SlidewayItem*> m_slideways;         // per plan slider
-  std::vector<SliderBlockItem*> m_blocks;         // per plan slider
-  std::vector<QGraphicsLineItem*> m_frameLines;   // per plan frame line
-  std::vector<LinkItem*> m_constraintBars;        // per plan constraint bar
-  std::vector<GroundPivotItem*> m_grounds;        // per point; null unless ground
-  std::vector<JointHandleItem*> m_joints;         // per point; null for ground
-  std::vector<LabelItem*> m_labels;               // per point
-  std::vector<CouplerPathItem*> m_paths;          // per point; null unless traced
-  std::vector<QLineF> m_groundSlideways;          // per slider: the fixed ends of a ground guide
-  std::vector<double> m_slotReach;                // per slot: nearest, farthest distance of the block from the pivot
-  double m_margin = 1.0;                          // model units around travels
-  QRectF m_extraExtent;                           // see extraExtent()
+  std::vector<LinkItem*> m_links;                // per link; null for slotted links
+  std::vector<QGraphicsPolygonItem*> m_bodies;   // per plan body
+  std::vector<SlottedLinkItem*> m_slots;         // per plan slot
+  std::vector<SliderBlockItem*> m_slotBlocks;    // per plan slot
+  std::vector<SlidewayItem*> m_slideways;        // per plan slider
+  std::vector<SliderBlockItem*> m_blocks;        // per plan slider
+  std::vector<QGraphicsLineItem*> m_frameLines;  // per plan frame line
+  std::vector<LinkItem*> m_constraintBars;       // per plan constraint bar
+  std::vector<GroundPivotItem*> m_grounds;       // per point; null unless ground
+  std::vector<JointHandleItem*> m_joints;        // per point; null for ground
+  std::vector<LabelItem*> m_labels;              // per point
+  std::vector<CouplerPathItem*> m_paths;         // per point; null unless traced
+  std::vector<QLineF> m_groundSlideways;         // per slider: the fixed ends of a ground guide
+  std::vector<double> m_slotReach;               // per slot: nearest, farthest distance of the block from the pivot
+  double m_margin = 1.0;                         // model units around travels
+  QRectF m_extraExtent;                          // see extraExtent()
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -33,7 +33,8 @@ QRectF SliderBlockItem::boundingRect() const {
 void SliderBlockItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) {
   painter->setRenderHint(QPainter::Antialiasing);
   // A rotation built from the unit direction itself: x along the guide, y across it.
-  painter->setTransform(QTransform(m_direction.x(), m_direction.y(), -m_direction.y(), m_direction.x(), 0.0, 0.0), true);
+  painter->setTransform(QTransform(m_direction.x(), m_direction.y(), -m_direction.y(), m_direction.x(), 0.0, 0.0),
+                        true);
   const QRectF body(-m_length / 2.0, -m_height / 2.0, m_length, m_height);
   QColor fill = m_color.lighter(165);
   fill.setAlpha(235);
@@ -46,4 +47,4 @@ void SliderBlockItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, 
     painter->drawLine(QPointF(x, -m_height / 2.0 + 2.0), QPointF(x, m_height / 2.0 - 2.0));
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -27,4 +27,4 @@ private:
   QPointF m_direction{1.0, 0.0};  // unit, item pixels (y down)
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -16,7 +16,7 @@ QPen cosmetic(const QBrush& brush, double width, Qt::PenStyle style = Qt::SolidL
   pen.setCosmetic(true);
   return pen;
 }
-} // namespace
+}  // namespace
 
 SlidewayItem::SlidewayItem(bool onGround, double clearancePx, const QColor& color, QGraphicsItem* parent)
     : QGraphicsItem(parent), m_onGround(onGround), m_clearance(clearancePx), m_color(color),
@@ -52,4 +52,4 @@ void SlidewayItem::applyPens() {
   else m_axis->setPen(cosmetic(m_color, 2.0 * m_scale, Qt::DashLine));
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -39,4 +39,4 @@ private:
   QGraphicsLineItem* m_axis;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

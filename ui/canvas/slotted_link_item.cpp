@@ -16,11 +16,11 @@ QPen cosmetic(const QColor& color, double width) {
   pen.setCosmetic(true);
   return pen;
 }
-} // namespace
+}  // namespace
 
 SlottedLinkItem::SlottedLinkItem(const QColor& color, QGraphicsItem* parent)
-    : QGraphicsItem(parent), m_color(color), m_bar(new QGraphicsLineItem(this)), m_slotEdge(new QGraphicsLineItem(this)),
-      m_slot(new QGraphicsLineItem(this)) {
+    : QGraphicsItem(parent), m_color(color), m_bar(new QGraphicsLineItem(this)),
+      m_slotEdge(new QGraphicsLineItem(this)), m_slot(new QGraphicsLineItem(this)) {
   setFlag(ItemHasNoContents);
   setZValue(canvas::z::kLinks);
   applyPens();
@@ -47,4 +47,4 @@ void SlottedLinkItem::applyPens() {
   m_slot->setPen(cosmetic(Qt::white, kSlotPx * m_scale));
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -34,4 +34,4 @@ private:
   QGraphicsLineItem* m_slot;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

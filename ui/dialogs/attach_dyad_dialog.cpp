@@ -25,13 +25,14 @@ QGroupBox* boxAround(QWidget* content, QWidget* parent) {
   return box;
 }
 
-} // namespace
+}  // namespace
 
 AttachDyadDialog::AttachDyadDialog(const k::Mechanism& mechanism, double crankAngle, Apply apply, QWidget* parent)
-    : QDialog(parent), m_mechanism(mechanism), m_crankAngle(crankAngle), m_apply(std::move(apply)), m_kind(new QComboBox(this)),
-      m_joint(new QLineEdit(this)), m_first(new ParentEditor(this)), m_second(new ParentEditor(this)),
-      m_firstLength(new QDoubleSpinBox(this)), m_secondLength(new QDoubleSpinBox(this)), m_guide(new GuideEditor(this)),
-      m_secondGuide(new GuideEditor(this)), m_branch(new QComboBox(this)), m_error(new QLabel(this)) {
+    : QDialog(parent), m_mechanism(mechanism), m_crankAngle(crankAngle), m_apply(std::move(apply)),
+      m_kind(new QComboBox(this)), m_joint(new QLineEdit(this)), m_first(new ParentEditor(this)),
+      m_second(new ParentEditor(this)), m_firstLength(new QDoubleSpinBox(this)),
+      m_secondLength(new QDoubleSpinBox(this)), m_guide(new GuideEditor(this)), m_secondGuide(new GuideEditor(this)),
+      m_branch(new QComboBox(this)), m_error(new QLabel(this)) {
   setWindowTitle(tr("Attach dyad"));
   auto* layout = new QVBoxLayout(this);
   auto* top = new QFormLayout;
@@ -69,7 +70,8 @@ AttachDyadDialog::AttachDyadDialog(const k::Mechanism& mechanism, double crankAn
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
   connect(m_kind, &QComboBox::currentIndexChanged, this, &AttachDyadDialog::kindChanged);
   // New parents or a new guide: lengths that assemble at the current pose again.
-  for (ParentEditor* e : {m_first, m_second}) connect(e, &ParentEditor::changed, this, &AttachDyadDialog::parentsChanged);
+  for (ParentEditor* e : {m_first, m_second})
+    connect(e, &ParentEditor::changed, this, &AttachDyadDialog::parentsChanged);
   connect(m_guide, &GuideEditor::changed, this, &AttachDyadDialog::parentsChanged);
   setRequest(kinematics::suggestDyad(m_mechanism, m_crankAngle, kinematics::DyadKind::Rrr));
 }
@@ -116,7 +118,8 @@ void AttachDyadDialog::accept() {
 }
 
 void AttachDyadDialog::kindChanged() {
-  setRequest(kinematics::suggestDyad(m_mechanism, m_crankAngle, static_cast<kinematics::DyadKind>(m_kind->currentIndex())));
+  setRequest(
+      kinematics::suggestDyad(m_mechanism, m_crankAngle, static_cast<kinematics::DyadKind>(m_kind->currentIndex())));
   m_error->hide();
 }
 
@@ -130,7 +133,8 @@ void AttachDyadDialog::parentsChanged() {
 
 void AttachDyadDialog::showKindFields() {
   const auto kind = static_cast<kinematics::DyadKind>(m_kind->currentIndex());
-  const bool rrr = kind == kinematics::DyadKind::Rrr, rrp = kind == kinematics::DyadKind::Rrp, rpr = kind == kinematics::DyadKind::Rpr, prp = kind == kinematics::DyadKind::Prp;
+  const bool rrr = kind == kinematics::DyadKind::Rrr, rrp = kind == kinematics::DyadKind::Rrp,
+             rpr = kind == kinematics::DyadKind::Rpr, prp = kind == kinematics::DyadKind::Prp;
   m_firstBox->setVisible(!prp);
   m_firstBox->setTitle(rpr ? tr("Pivot of the slotted link") : rrp ? tr("The rod's other end") : tr("First parent"));
   m_secondBox->setVisible(rrr || rpr);
@@ -148,4 +152,4 @@ void AttachDyadDialog::showKindFields() {
   adjustSize();
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

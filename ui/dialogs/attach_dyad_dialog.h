@@ -66,4 +66,4 @@ private:
   QLabel* m_error;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

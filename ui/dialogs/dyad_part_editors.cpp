@@ -24,11 +24,12 @@ QDoubleSpinBox* numberBox(QWidget* parent, double low = -1e9, double high = 1e9)
   return box;
 }
 
-} // namespace
+}  // namespace
 
 ParentEditor::ParentEditor(QWidget* parent)
-    : QWidget(parent), m_source(new QComboBox(this)), m_link(new QComboBox(this)), m_a(numberBox(this)), m_b(numberBox(this)),
-      m_aLabel(new QLabel(this)), m_bLabel(new QLabel(this)), m_linkLabel(new QLabel(tr("on link"), this)) {
+    : QWidget(parent), m_source(new QComboBox(this)), m_link(new QComboBox(this)), m_a(numberBox(this)),
+      m_b(numberBox(this)), m_aLabel(new QLabel(this)), m_bLabel(new QLabel(this)),
+      m_linkLabel(new QLabel(tr("on link"), this)) {
   auto* grid = new QGridLayout(this);
   grid->setContentsMargins(0, 0, 0, 0);
   grid->addWidget(m_source, 0, 0, 1, 2);
@@ -105,8 +106,8 @@ void ParentEditor::showFields() {
 }
 
 GuideEditor::GuideEditor(QWidget* parent)
-    : QWidget(parent), m_body(new QComboBox(this)), m_a(numberBox(this)), m_b(numberBox(this)), m_angle(numberBox(this, -360.0, 360.0)),
-      m_aLabel(new QLabel(this)), m_bLabel(new QLabel(this)) {
+    : QWidget(parent), m_body(new QComboBox(this)), m_a(numberBox(this)), m_b(numberBox(this)),
+      m_angle(numberBox(this, -360.0, 360.0)), m_aLabel(new QLabel(this)), m_bLabel(new QLabel(this)) {
   auto* grid = new QGridLayout(this);
   grid->setContentsMargins(0, 0, 0, 0);
   grid->addWidget(new QLabel(tr("fixed to"), this), 0, 0);
@@ -122,7 +123,8 @@ GuideEditor::GuideEditor(QWidget* parent)
     showLabels();
     emit changed();
   });
-  for (QDoubleSpinBox* box : {m_a, m_b, m_angle}) connect(box, &QDoubleSpinBox::valueChanged, this, &GuideEditor::changed);
+  for (QDoubleSpinBox* box : {m_a, m_b, m_angle})
+    connect(box, &QDoubleSpinBox::valueChanged, this, &GuideEditor::changed);
 }
 
 void GuideEditor::setGuide(const k::Mechanism& m, const k::Guide& guide) {
@@ -154,4 +156,4 @@ void GuideEditor::showLabels() {
   m_bLabel->setText(onLink ? tr("through, across") : tr("through y"));
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

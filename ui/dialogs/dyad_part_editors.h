@@ -60,4 +60,4 @@ private:
   QLabel* m_bLabel;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -17,10 +17,18 @@ kinematics::Design withShared(kinematics::Design design, Change&& change) {
 }
 
 /// Crank speed (rad/s) and acceleration (rad/s²) of any design.
-inline double designOmega(const kinematics::Design& d) { return std::visit([](const auto& x) { return x.omega; }, d); }
-inline double designAlpha(const kinematics::Design& d) { return std::visit([](const auto& x) { return x.alpha; }, d); }
+inline double designOmega(const kinematics::Design& d) {
+  return std::visit([](const auto& x) { return x.omega; }, d);
+}
+inline double designAlpha(const kinematics::Design& d) {
+  return std::visit([](const auto& x) { return x.alpha; }, d);
+}
 /// The analysis grid's ends, degrees.
-inline double designFromDeg(const kinematics::Design& d) { return std::visit([](const auto& x) { return x.fromDeg; }, d); }
-inline double designToDeg(const kinematics::Design& d) { return std::visit([](const auto& x) { return x.toDeg; }, d); }
+inline double designFromDeg(const kinematics::Design& d) {
+  return std::visit([](const auto& x) { return x.fromDeg; }, d);
+}
+inline double designToDeg(const kinematics::Design& d) {
+  return std::visit([](const auto& x) { return x.toDeg; }, d);
+}
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

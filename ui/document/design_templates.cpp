@@ -8,7 +8,7 @@ namespace k = kinematics;
 
 namespace {
 QString tr(const char* text) { return QCoreApplication::translate("DesignTemplates", text); }
-} // namespace
+}  // namespace
 
 std::vector<DesignTemplate> designTemplates() {
   return {
@@ -48,4 +48,4 @@ QString exampleMenuText(const std::string& description, int maxChars) {
   return text + QStringLiteral("…");
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

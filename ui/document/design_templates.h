@@ -30,4 +30,4 @@ QString kindDisplayName(const kinematics::Design& design);
 /// shortened at a comma to about `maxChars` characters.
 QString exampleMenuText(const std::string& description, int maxChars = 64);
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -15,15 +15,11 @@ QString tr(const char* text) { return QCoreApplication::translate("DocumentFile"
 // Documents are a few hundred bytes; anything this large is not one of ours.
 constexpr qint64 kMaxDocumentBytes = 16 * 1024 * 1024;
 
-} // namespace
+}  // namespace
 
-QString openDocumentFilter() {
-  return tr("Linkwright documents (*.linkwright *.json);;All files (*)");
-}
+QString openDocumentFilter() { return tr("Linkwright documents (*.linkwright *.json);;All files (*)"); }
 
-QString saveDocumentFilter() {
-  return tr("Linkwright documents (*.linkwright);;JSON documents (*.json)");
-}
+QString saveDocumentFilter() { return tr("Linkwright documents (*.linkwright);;JSON documents (*.json)"); }
 
 QString withDocumentSuffix(const QString& path) {
   return QFileInfo(path).suffix().isEmpty() ? path + ".linkwright" : path;
@@ -34,9 +30,11 @@ std::optional<QString> loadDesignFile(const QString& path, kinematics::Design& d
   QFile file(path);
   if (!file.exists()) return tr("Cannot open %1: the file does not exist.").arg(name);
   if (!file.open(QIODevice::ReadOnly)) return tr("Cannot open %1: %2.").arg(name, file.errorString());
-  if (file.size() > kMaxDocumentBytes) return tr("Cannot open %1: it is too large to be a Linkwright document.").arg(name);
+  if (file.size() > kMaxDocumentBytes)
+    return tr("Cannot open %1: it is too large to be a Linkwright document.").arg(name);
   const QByteArray bytes = file.readAll();
-  const auto parsed = kinematics::io::readDocument(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+  const auto parsed =
+      kinematics::io::readDocument(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
   if (!parsed) return tr("Cannot open %1: %2.").arg(name, QString::fromStdString(parsed.error().message));
   design = *parsed;
   return std::nullopt;
@@ -44,12 +42,14 @@ std::optional<QString> loadDesignFile(const QString& path, kinematics::Design& d
 
 std::optional<QString> saveFileAtomically(const QString& path, const QByteArray& bytes) {
   QSaveFile file(path);
-  if (!file.open(QIODevice::WriteOnly)) return tr("Cannot write %1: %2.").arg(QFileInfo(path).fileName(), file.errorString());
+  if (!file.open(QIODevice::WriteOnly))
+    return tr("Cannot write %1: %2.").arg(QFileInfo(path).fileName(), file.errorString());
   // flush() before commit(): Qt 6.4's commit() does not see a failed flush of QFileDevice's
   // write buffer, and would rename a truncated file over the previous one (seen with a
   // file-size limit standing in for a full disk).
   if (file.write(bytes) != bytes.size() || !file.flush() || !file.commit())
-    return tr("Cannot write %1: %2. The previous file, if any, is unchanged.").arg(QFileInfo(path).fileName(), file.errorString());
+    return tr("Cannot write %1: %2. The previous file, if any, is unchanged.")
+        .arg(QFileInfo(path).fileName(), file.errorString());
   return std::nullopt;
 }
 
@@ -57,4 +57,4 @@ std::optional<QString> saveDesignFile(const QString& path, const kinematics::Des
   return saveFileAtomically(path, QByteArray::fromStdString(kinematics::io::writeDocument(design)));
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -29,4 +29,4 @@ std::optional<QString> saveDesignFile(const QString& path, const kinematics::Des
 /// Writes `bytes` to `path` atomically (CSV and SVG exports use it too).
 std::optional<QString> saveFileAtomically(const QString& path, const QByteArray& bytes);
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

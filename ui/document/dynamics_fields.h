@@ -22,4 +22,4 @@ kinematics::Design withDynamics(kinematics::Design design, Change&& change) {
   return design;
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -20,4 +20,4 @@ bool EditDesignCommand::mergeWith(const QUndoCommand* other) {
   return true;
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

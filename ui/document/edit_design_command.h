@@ -53,5 +53,4 @@ private:
   std::optional<MergeKey> m_mergeKey;
 };
 
-
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -30,7 +30,7 @@ double peakOf(const k::ForceSweep& f) {
   return peak;
 }
 
-} // namespace
+}  // namespace
 
 ForceResults::ForceResults(MechanismDocument* document, QObject* parent) : QObject(parent), m_document(document) {
   connect(document, &MechanismDocument::changed, this, &ForceResults::onDocumentChanged);
@@ -41,10 +41,8 @@ ForceResults::~ForceResults() = default;
 void ForceResults::setEnabled(bool enabled) {
   if (enabled == m_enabled) return;
   m_enabled = enabled;
-  if (enabled)
-    solveCycle();
-  else
-    clear(State::Disabled, {});
+  if (enabled) solveCycle();
+  else clear(State::Disabled, {});
   emit changed(true);
 }
 
@@ -117,9 +115,10 @@ void ForceResults::solveCycle() {
     if (kinematic.ok(j) && !m_cycle->ok(j)) ++m_singularSamples;
   m_peakJoint = peakOf(*m_cycle);
   if (m_singularSamples > 0)
-    m_message = tr("Forces are not determined at %n sample(s) of the cycle (a toggle position or a redundant "
-                   "structure); the curves break there.",
-                   nullptr, static_cast<int>(m_singularSamples));
+    m_message =
+        tr("Forces are not determined at %n sample(s) of the cycle (a toggle position or a redundant "
+           "structure); the curves break there.",
+           nullptr, static_cast<int>(m_singularSamples));
   solvePose();
 }
 
@@ -137,4 +136,4 @@ QString formatForce(double value) {
   return numberText(value, 'f', std::clamp(2 - digits, 0, 6));
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -95,4 +95,4 @@ private:
 /// A force (N) or torque (N·m) with three significant digits, for labels: "0.512", "12.3", "1530".
 QString formatForce(double value);
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

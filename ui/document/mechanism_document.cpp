@@ -27,8 +27,9 @@ std::optional<QString> MechanismDocument::validate(const k::Design& design) cons
   if (const auto* fourBar = std::get_if<k::FourBarDesign>(&design)) {
     const k::InputRange range = k::fourBarInputRange(fourBar->lengths);
     if (range.ranges.empty() && !range.fullRotation)
-      return tr("These lengths cannot be assembled at any crank angle: the coupler and rocker cannot "
-                "reach between the crank tip and the rocker pivot.");
+      return tr(
+          "These lengths cannot be assembled at any crank angle: the coupler and rocker cannot "
+          "reach between the crank tip and the rocker pivot.");
     return std::nullopt;
   }
   // Any linkage other than a four-bar has no closed-form range: it must assemble at one sample
@@ -116,9 +117,9 @@ void MechanismDocument::measureQualityNow() {
 
 void MechanismDocument::measureQuality() {
   m_estimateTimer.stop();
-  m_estimate = estimatePeakError(m_mechanism, m_displaySpec.omega,
-                                 samplesPerRevolution(m_displaySpec.samples, designToDeg(m_design) - designFromDeg(m_design)),
-                                 m_request.newton);
+  m_estimate = estimatePeakError(
+      m_mechanism, m_displaySpec.omega,
+      samplesPerRevolution(m_displaySpec.samples, designToDeg(m_design) - designFromDeg(m_design)), m_request.newton);
   emit changed(Change::Estimate);
 }
 
@@ -193,8 +194,9 @@ void MechanismDocument::resweep() {
 
 void MechanismDocument::solvePoseNow() {
   const k::SweepSpec spec = k::designSweepSpec(m_design);
-  const k::PoseReport report = k::solvePoseInto(m_mechanism, {m_crankAngle, spec.omega, spec.alpha}, {true, true}, m_pose);
+  const k::PoseReport report =
+      k::solvePoseInto(m_mechanism, {m_crankAngle, spec.omega, spec.alpha}, {true, true}, m_pose);
   m_poseStatus = report.status;
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

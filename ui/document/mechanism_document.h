@@ -28,11 +28,11 @@ namespace linkwright::ui {
 
 /// What a changed() signal is about; views skip work that does not concern them.
 enum class Change {
-  Design = 0x1,      ///< the design and everything solved from it (sweep, analysis, pose)
-  Motion = 0x2,      ///< only the crank angle and the pose at it
-  Request = 0x4,     ///< which quantities or how many samples are computed (the sweep was redone)
-  File = 0x8,        ///< file name or modified flag
-  Estimate = 0x10,   ///< the quality estimate was measured anew (qualityEstimate())
+  Design = 0x1,     ///< the design and everything solved from it (sweep, analysis, pose)
+  Motion = 0x2,     ///< only the crank angle and the pose at it
+  Request = 0x4,    ///< which quantities or how many samples are computed (the sweep was redone)
+  File = 0x8,       ///< file name or modified flag
+  Estimate = 0x10,  ///< the quality estimate was measured anew (qualityEstimate())
 };
 Q_DECLARE_FLAGS(Changes, Change)
 Q_DECLARE_OPERATORS_FOR_FLAGS(Changes)
@@ -169,4 +169,4 @@ private:
   QString m_filePath;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

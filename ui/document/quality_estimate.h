@@ -30,10 +30,10 @@ struct QualityEstimate {
 /// Measures peakError(sampledPeaks(N, exact rates, `newton`), exactPeaks) for `mechanism` with
 /// its crank at |`omega`| rad/s (1 rad/s if zero: relative peak errors do not depend on it) and
 /// α = 0. N = `samplesPerRevolution` (≥ 3).
-QualityEstimate estimatePeakError(const kinematics::Mechanism& mechanism, double omega, std::size_t samplesPerRevolution,
-                                  const kinematics::NewtonSettings& newton);
+QualityEstimate estimatePeakError(const kinematics::Mechanism& mechanism, double omega,
+                                  std::size_t samplesPerRevolution, const kinematics::NewtonSettings& newton);
 
 /// The crank speed the estimate uses for a design turning at `omega` rad/s.
 double estimateOmega(double omega);
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -44,4 +44,4 @@ SamplingQuality qualityFromKey(const QString& key) {
   return SamplingQuality::Normal;
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -15,9 +15,9 @@ enum class SamplingQuality { Draft, Normal, Precise };
 
 /// What one quality means.
 struct QualityPreset {
-  double samplesPerPixel = 1.0;       ///< samples per pixel of plot-area width
-  std::size_t minPerRevolution = 0;   ///< floor, samples per 360° of crank angle
-  double newtonTolerance = 1e-12;     ///< kinematics::NewtonSettings::tolerance (relative misfit)
+  double samplesPerPixel = 1.0;      ///< samples per pixel of plot-area width
+  std::size_t minPerRevolution = 0;  ///< floor, samples per 360° of crank angle
+  double newtonTolerance = 1e-12;    ///< kinematics::NewtonSettings::tolerance (relative misfit)
   bool operator==(const QualityPreset&) const = default;
 };
 
@@ -42,4 +42,4 @@ std::size_t samplesPerRevolution(std::size_t samples, double spanDeg);
 QString qualityKey(SamplingQuality quality);
 SamplingQuality qualityFromKey(const QString& key);
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

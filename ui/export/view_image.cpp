@@ -44,4 +44,4 @@ std::optional<QString> saveViewImage(QGraphicsView* view, const QString& path, c
   return saveFileAtomically(path, bytes);
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -13,4 +13,4 @@ namespace linkwright::ui {
 /// Writes `view`'s visible contents to `path` (.png or .svg). Returns the message on failure.
 std::optional<QString> saveViewImage(QGraphicsView* view, const QString& path, const QString& title);
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -33,8 +33,9 @@ QString className(k::GrashofClass c) {
 }
 
 QString badge(const QColor& colour, const QString& text, const QString& note) {
-  return QString("<span style='background:%1; color:white; padding:3px; font-weight:bold'>&nbsp;%2&nbsp;</span>"
-                 " &nbsp;%3")
+  return QString(
+             "<span style='background:%1; color:white; padding:3px; font-weight:bold'>&nbsp;%2&nbsp;</span>"
+             " &nbsp;%3")
       .arg(colour.name(), text.toHtmlEscaped(), note.toHtmlEscaped());
 }
 
@@ -45,7 +46,7 @@ QString rangesText(const std::vector<k::AngleRange>& ranges) {
   return parts.join(", ");
 }
 
-} // namespace
+}  // namespace
 
 AnalysisPanel::AnalysisPanel(MechanismDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document), m_badge(new QLabel(this)), m_sums(new QLabel(this)),
@@ -66,7 +67,8 @@ AnalysisPanel::AnalysisPanel(MechanismDocument* document, QWidget* parent)
   m_form->addRow(tr("Time ratio"), m_timeRatio);
   m_form->addRow(tr("Ram stroke"), m_stroke);
   m_form->addRow(tr("Not assembled"), m_notAssembled);
-  for (QLabel* l : {m_sums, m_range, m_transmissionNow, m_transmissionRange, m_limits, m_timeRatio, m_stroke, m_notAssembled})
+  for (QLabel* l :
+       {m_sums, m_range, m_transmissionNow, m_transmissionRange, m_limits, m_timeRatio, m_stroke, m_notAssembled})
     l->setWordWrap(true);
   m_warning->setWordWrap(true);
   m_warning->setStyleSheet("color: #a15c00;");
@@ -82,7 +84,9 @@ AnalysisPanel::AnalysisPanel(MechanismDocument* document, QWidget* parent)
 
 QString AnalysisPanel::grashofText() const { return m_badge->text(); }
 QString AnalysisPanel::transmissionNowText() const { return m_transmissionNow->text(); }
-QString AnalysisPanel::timeRatioText() const { return m_form->isRowVisible(m_timeRatio) ? m_timeRatio->text() : QString(); }
+QString AnalysisPanel::timeRatioText() const {
+  return m_form->isRowVisible(m_timeRatio) ? m_timeRatio->text() : QString();
+}
 QString AnalysisPanel::strokeText() const { return m_form->isRowVisible(m_stroke) ? m_stroke->text() : QString(); }
 QString AnalysisPanel::notAssembledText() const {
   return m_form->isRowVisible(m_notAssembled) ? m_notAssembled->text() : QString();
@@ -92,7 +96,8 @@ QString AnalysisPanel::mobilityText() const { return m_mobility->text(); }
 void AnalysisPanel::refreshDesign() {
   const k::DesignAnalysis& a = m_document->analysis();
   const k::MobilityReport& m = a.mobility;
-  m_mobility->setText(tr("M = 3(%1 − 1) − 2·%2 − %3 = %4").arg(m.links).arg(m.fullJoints).arg(m.halfJoints).arg(m.mobility));
+  m_mobility->setText(
+      tr("M = 3(%1 − 1) − 2·%2 − %3 = %4").arg(m.links).arg(m.fullJoints).arg(m.halfJoints).arg(m.mobility));
   if (a.inputRange.fullRotation) m_range->setText(tr("full turn"));
   else m_range->setText(rangesText(a.inputRange.ranges) + tr(" (rocks between the ends)"));
   // A four-bar's rows for any linkage that is one, however it was built or stored.
@@ -107,7 +112,8 @@ void AnalysisPanel::refreshFourBar() {
   const QString unit = QString::fromStdString(m_document->lengthUnit());
   const k::GrashofReport& g = *a.grashof;
   // Green for a Grashof linkage whose crank turns, amber for the rest.
-  m_badge->setText(badge(g.inputFullyRotates ? kGrashofCrankBadgeColor : kGrashofRockerBadgeColor, className(g.category),
+  m_badge->setText(badge(g.inputFullyRotates ? kGrashofCrankBadgeColor : kGrashofRockerBadgeColor,
+                         className(g.category),
                          tr("shortest: %1").arg(QString::fromUtf8(k::toString(g.shortest).data()))));
   const QString relation = g.category == k::GrashofClass::ChangePoint ? "=" : (g.sPlusL < g.pPlusQ ? "<" : ">");
   m_sums->setText(QString("%1 %2 %3 %4").arg(numberText(g.sPlusL), relation, numberText(g.pPlusQ), unit));
@@ -119,10 +125,11 @@ void AnalysisPanel::refreshFourBar() {
   for (const k::LimitPosition& p : a.limits.positions)
     limits << tr("θ₂ %1 → θ₄ %2").arg(degrees(p.crankAngle, 1), degrees(p.rockerAngle, 1));
   m_limits->setText(limits.isEmpty() ? tr("none") : limits.join("\n"));
-  m_timeRatio->setText(a.limits.timeRatio ? tr("%1 (strokes %2 / %3)")
-                                                .arg(numberText(*a.limits.timeRatio, 'f', 4))
-                                                .arg(degrees(*a.limits.slowStrokeCrankArc, 1), degrees(*a.limits.quickStrokeCrankArc, 1))
-                                          : tr("—"));
+  m_timeRatio->setText(
+      a.limits.timeRatio ? tr("%1 (strokes %2 / %3)")
+                               .arg(numberText(*a.limits.timeRatio, 'f', 4))
+                               .arg(degrees(*a.limits.slowStrokeCrankArc, 1), degrees(*a.limits.quickStrokeCrankArc, 1))
+                         : tr("—"));
   m_form->setRowVisible(m_timeRatio, true);
   m_form->setRowVisible(m_stroke, false);
   m_form->setRowVisible(m_notAssembled, false);
@@ -132,7 +139,9 @@ void AnalysisPanel::refreshLinkage() {
   const k::DesignAnalysis& a = m_document->analysis();
   const QString unit = QString::fromStdString(m_document->lengthUnit());
   m_badge->setText(badge(kLinkageBadgeColor, kindDisplayName(m_document->design()),
-                         tr("%1 points, %2 moving links").arg(m_document->mechanism().points.size()).arg(m_document->mechanism().links.size())));
+                         tr("%1 points, %2 moving links")
+                             .arg(m_document->mechanism().points.size())
+                             .arg(m_document->mechanism().links.size())));
   const auto& q = a.quickReturn;
   m_form->setRowVisible(m_timeRatio, q.has_value());
   m_form->setRowVisible(m_stroke, q.has_value());
@@ -168,4 +177,4 @@ void AnalysisPanel::refreshMotion() {
                          : tr("Toggle position: a dyad is stretched straight or folded; ω and α are undefined here."));
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -48,4 +48,4 @@ private:
   QLabel* m_warning;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -57,9 +57,11 @@ NumberPtr<M> slotOf(M& m, const DimensionField& f) {
   if (auto* g = std::get_if<k::GroundPoint>(&definition)) return f.slot == 0 ? &g->position.x() : &g->position.y();
   if (auto* c = std::get_if<k::CrankPoint>(&definition)) return f.slot == 0 ? &c->length : &c->phase;
   if (auto* r = std::get_if<k::RrrPoint>(&definition)) return f.slot == 0 ? &r->firstLength : &r->secondLength;
-  if (auto* s = std::get_if<k::RrpPoint>(&definition)) return f.slot == 0 ? &s->length : guideSlot(s->guide, f.slot - 1);
+  if (auto* s = std::get_if<k::RrpPoint>(&definition))
+    return f.slot == 0 ? &s->length : guideSlot(s->guide, f.slot - 1);
   if (auto* s = std::get_if<k::RprPoint>(&definition)) return &s->length;
-  if (auto* p = std::get_if<k::PrpPoint>(&definition)) return f.slot < 3 ? guideSlot(p->first, f.slot) : guideSlot(p->second, f.slot - 3);
+  if (auto* p = std::get_if<k::PrpPoint>(&definition))
+    return f.slot < 3 ? guideSlot(p->first, f.slot) : guideSlot(p->second, f.slot - 3);
   if (auto* a = std::get_if<k::AttachedPoint>(&definition)) return f.slot == 0 ? &a->along : &a->across;
   if (auto* free = std::get_if<k::FreePoint>(&definition)) {
     if (f.slot < 2) return f.slot == 0 ? &free->guess.x() : &free->guess.y();
@@ -69,7 +71,7 @@ NumberPtr<M> slotOf(M& m, const DimensionField& f) {
   return nullptr;
 }
 
-} // namespace
+}  // namespace
 
 std::vector<DimensionField> dimensionFields(const k::Mechanism& m) {
   std::vector<DimensionField> out;
@@ -146,4 +148,4 @@ QString pointRole(const k::Mechanism& m, k::PointId p) {
   return tr("free point");
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -14,16 +14,16 @@
 namespace linkwright::ui {
 
 enum class FieldKind {
-  Length,      ///< positive, length unit
-  Offset,      ///< any sign, length unit (offsets, coordinates)
-  AngleDeg,    ///< degrees in the editor, radians in the model
+  Length,    ///< positive, length unit
+  Offset,    ///< any sign, length unit (offsets, coordinates)
+  AngleDeg,  ///< degrees in the editor, radians in the model
 };
 
 struct DimensionField {
   kinematics::PointId point;
-  int slot = 0;       ///< which number of the point's definition (see dimension_fields.cpp)
+  int slot = 0;  ///< which number of the point's definition (see dimension_fields.cpp)
   FieldKind kind = FieldKind::Length;
-  QString label;      ///< "to O₂", "x", "phase", "guide angle"
+  QString label;  ///< "to O₂", "x", "phase", "guide angle"
   bool operator==(const DimensionField&) const = default;
 };
 
@@ -43,4 +43,4 @@ const kinematics::Branch* branchOf(const kinematics::Point& point);
 /// What a point is, for the panel's heading: "crank tip", "RRR joint", "slider", ...
 QString pointRole(const kinematics::Mechanism& mechanism, kinematics::PointId point);
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -17,8 +17,8 @@ namespace linkwright::ui {
 namespace k = kinematics;
 
 DimensionsPanel::DimensionsPanel(MechanismDocument* document, QWidget* parent)
-    : QWidget(parent), m_document(document), m_box(new QGroupBox(tr("Dimensions"), this)), m_grid(new QGridLayout(m_box)),
-      m_message(new QLabel(this)) {
+    : QWidget(parent), m_document(document), m_box(new QGroupBox(tr("Dimensions"), this)),
+      m_grid(new QGridLayout(m_box)), m_message(new QLabel(this)) {
   auto* layout = new QVBoxLayout(this);
   m_grid->setColumnStretch(1, 1);
   m_grid->setVerticalSpacing(3);
@@ -53,9 +53,10 @@ void DimensionsPanel::rebuild() {
   std::size_t next = 0;
   for (std::size_t i = 0; i < m.points.size(); ++i) {
     const k::PointId p{i};
-    auto* heading = new QLabel(QStringLiteral("<b>%1</b> &nbsp;<span style='color:#666'>%2</span>")
-                                   .arg(pointDisplayName(m.points[i].name).toHtmlEscaped(), pointRole(m, p).toHtmlEscaped()),
-                               m_box);
+    auto* heading =
+        new QLabel(QStringLiteral("<b>%1</b> &nbsp;<span style='color:#666'>%2</span>")
+                       .arg(pointDisplayName(m.points[i].name).toHtmlEscaped(), pointRole(m, p).toHtmlEscaped()),
+                   m_box);
     m_rows.push_back(heading);
     m_grid->addWidget(heading, row++, 0, 1, 2);
     for (; next < m_fields.size() && m_fields[next].point == p; ++next) {
@@ -87,8 +88,9 @@ void DimensionsPanel::rebuild() {
       auto* label = new QLabel(tr("branch"), m_box);
       auto* box = new QComboBox(m_box);
       box->addItems({tr("Open"), tr("Crossed")});
-      box->setToolTip(tr("Which of the two assemblies: open puts the joint left of the line from its first to its "
-                         "second parent (a slider: further along its guide)"));
+      box->setToolTip(
+          tr("Which of the two assemblies: open puts the joint left of the line from its first to its "
+             "second parent (a slider: further along its guide)"));
       label->setIndent(10);
       m_grid->addWidget(label, row, 0);
       m_grid->addWidget(box, row++, 1);
@@ -128,7 +130,8 @@ void DimensionsPanel::editBranch(k::PointId point, int index) {
   if (current == nullptr) return;
   k::MechanismDesign d = *current;
   *branchOf(d.mechanism.points[point.index]) = index == 0 ? k::Branch::Open : k::Branch::Crossed;
-  showOutcome(m_document->edit(d, tr("Switch branch of %1").arg(pointDisplayName(d.mechanism.points[point.index].name))));
+  showOutcome(
+      m_document->edit(d, tr("Switch branch of %1").arg(pointDisplayName(d.mechanism.points[point.index].name))));
 }
 
 void DimensionsPanel::showOutcome(const std::optional<QString>& refusal) {
@@ -141,4 +144,4 @@ void DimensionsPanel::showOutcome(const std::optional<QString>& refusal) {
   refresh();  // a refused value snaps back to the document's
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

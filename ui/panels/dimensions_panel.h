@@ -52,4 +52,4 @@ private:
   bool m_refreshing = false;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -47,15 +47,17 @@ QDoubleSpinBox* numberSpin(const QString& suffix, double lo, double hi, QWidget*
   return spin;
 }
 
-} // namespace
+}  // namespace
 
 DynamicsPanel::DynamicsPanel(MechanismDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document), m_refusal(new QLabel(this)),
-      m_links(new MassTable({tr("Link"), tr("Mass\n[kg]"), tr("Centre along"), tr("Centre across"), tr("Inertia\n[kg·m²]")})),
+      m_links(new MassTable(
+          {tr("Link"), tr("Mass\n[kg]"), tr("Centre along"), tr("Centre across"), tr("Inertia\n[kg·m²]")})),
       m_sliderGroup(new QGroupBox(tr("Slider blocks"), this)),
-      m_sliders(new MassTable({tr("Slider"), tr("Mass\n[kg]"), tr("Inertia\n[kg·m²]")})), m_gravity(new QCheckBox(tr("Gravity, g ="))),
-      m_g(numberSpin(tr(" m/s²"), 0.0, 1e4, this)), m_torqueLink(new QComboBox), m_torque(numberSpin(tr(" N·m"), -1e9, 1e9, this)),
-      m_forceTarget(new QComboBox), m_forceX(numberSpin(tr(" N"), -1e9, 1e9, this)), m_forceY(numberSpin(tr(" N"), -1e9, 1e9, this)),
+      m_sliders(new MassTable({tr("Slider"), tr("Mass\n[kg]"), tr("Inertia\n[kg·m²]")})),
+      m_gravity(new QCheckBox(tr("Gravity, g ="))), m_g(numberSpin(tr(" m/s²"), 0.0, 1e4, this)),
+      m_torqueLink(new QComboBox), m_torque(numberSpin(tr(" N·m"), -1e9, 1e9, this)), m_forceTarget(new QComboBox),
+      m_forceX(numberSpin(tr(" N"), -1e9, 1e9, this)), m_forceY(numberSpin(tr(" N"), -1e9, 1e9, this)),
       m_extraLoads(new QLabel) {
   auto* layout = new QVBoxLayout(this);
   m_refusal->setWordWrap(true);
@@ -66,8 +68,9 @@ DynamicsPanel::DynamicsPanel(MechanismDocument* document, QWidget* parent)
   auto* linkGroup = new QGroupBox(tr("Links"), this);
   auto* linkLayout = new QVBoxLayout(linkGroup);
   linkLayout->addWidget(m_links);
-  auto* hint = new QLabel(tr("Empty cells use the core's defaults: centre at the midpoint, inertia of a uniform "
-                             "bar m·L²/12. Clear a cell to return to its default."));
+  auto* hint =
+      new QLabel(tr("Empty cells use the core's defaults: centre at the midpoint, inertia of a uniform "
+                    "bar m·L²/12. Clear a cell to return to its default."));
   hint->setWordWrap(true);
   hint->setEnabled(false);
   linkLayout->addWidget(hint);
@@ -103,7 +106,8 @@ DynamicsPanel::DynamicsPanel(MechanismDocument* document, QWidget* parent)
   layout->addStretch(1);
 
   m_torque->setToolTip(tr("Counter-clockwise positive, the same at every crank angle"));
-  m_forceTarget->setToolTip(tr("A point of a link, or a slider block (the force acts at its pin); fixed in the world frame"));
+  m_forceTarget->setToolTip(
+      tr("A point of a link, or a slider block (the force acts at its pin); fixed in the world frame"));
 
   connect(m_links, &MassTable::cellEdited, this, &DynamicsPanel::editLink);
   connect(m_sliders, &MassTable::cellEdited, this, &DynamicsPanel::editSlider);
@@ -139,7 +143,8 @@ void DynamicsPanel::refreshTables() {
   const QString midpointTip = tr("Not set: the core puts the centre of mass at the link's midpoint");
   for (const k::Link& link : m.links) {
     names << QString::fromStdString(link.name);
-    const auto found = std::find_if(d.links.begin(), d.links.end(), [&](const k::LinkMass& l) { return l.link == link.name; });
+    const auto found =
+        std::find_if(d.links.begin(), d.links.end(), [&](const k::LinkMass& l) { return l.link == link.name; });
     const k::LinkMass* l = found != d.links.end() ? &*found : nullptr;
     const k::LinkFramePoint* centre = l != nullptr && l->centre ? &*l->centre : nullptr;
     cells.push_back({
@@ -159,11 +164,13 @@ void DynamicsPanel::refreshTables() {
                                                     [&](const k::SliderMass& s) { return s.point == key.point; }) > 1;
     names << (prp ? tr("%1 (guide %2)").arg(QString::fromStdString(key.point)).arg(key.guide + 1)
                   : QString::fromStdString(key.point));
-    const auto found = std::find_if(d.sliders.begin(), d.sliders.end(),
-                                    [&](const k::SliderMass& s) { return s.point == key.point && s.guide == key.guide; });
+    const auto found = std::find_if(d.sliders.begin(), d.sliders.end(), [&](const k::SliderMass& s) {
+      return s.point == key.point && s.guide == key.guide;
+    });
     const bool set = found != d.sliders.end();
-    cells.push_back({{set ? std::optional<double>(found->mass) : std::nullopt, QStringLiteral("0"), tr("Not set: massless")},
-                     {set ? std::optional<double>(found->inertia) : std::nullopt, QStringLiteral("0"), tr("Not set: 0")}});
+    cells.push_back(
+        {{set ? std::optional<double>(found->mass) : std::nullopt, QStringLiteral("0"), tr("Not set: massless")},
+         {set ? std::optional<double>(found->inertia) : std::nullopt, QStringLiteral("0"), tr("Not set: 0")}});
   }
   m_sliders->setRows(names, cells);
   m_sliderGroup->setVisible(!m_sliderKeys.empty());
@@ -202,7 +209,8 @@ void DynamicsPanel::refreshLoads() {
         on.push_back(k::PointId{p});
     for (const k::PointId p : on) {
       m_targets.push_back({link.name, m.points[p.index].name, 0});
-      m_forceTarget->addItem(tr("%1 on %2").arg(QString::fromStdString(m.points[p.index].name), QString::fromStdString(link.name)));
+      m_forceTarget->addItem(
+          tr("%1 on %2").arg(QString::fromStdString(m.points[p.index].name), QString::fromStdString(link.name)));
     }
   }
   const k::PointForce* force = loads.forces.empty() ? nullptr : &loads.forces.front();
@@ -218,8 +226,9 @@ void DynamicsPanel::refreshLoads() {
 
   const std::size_t extra = (loads.torques.size() > 1 ? loads.torques.size() - 1 : 0) +
                             (loads.forces.size() > 1 ? loads.forces.size() - 1 : 0);
-  m_extraLoads->setText(extra > 0 ? tr("%n more load(s) from the file are kept but not shown here.", nullptr, static_cast<int>(extra))
-                                  : QString());
+  m_extraLoads->setText(
+      extra > 0 ? tr("%n more load(s) from the file are kept but not shown here.", nullptr, static_cast<int>(extra))
+                : QString());
   m_extraLoads->setVisible(extra > 0);
 }
 
@@ -266,8 +275,13 @@ void DynamicsPanel::editLink(int row, int column, std::optional<double> value, b
     if (it == d.links.end()) it = d.links.insert(d.links.end(), k::LinkMass{name, 0.0, std::nullopt, std::nullopt});
     switch (column) {
     case 1: it->mass = value.value_or(0.0); break;
-    case 2: it->centre = value ? std::optional<k::LinkFramePoint>({*value, it->centre ? it->centre->across : 0.0}) : std::nullopt; break;
-    case 3: if (it->centre) it->centre->across = value.value_or(0.0); break;
+    case 2:
+      it->centre =
+          value ? std::optional<k::LinkFramePoint>({*value, it->centre ? it->centre->across : 0.0}) : std::nullopt;
+      break;
+    case 3:
+      if (it->centre) it->centre->across = value.value_or(0.0);
+      break;
     case 4: it->inertia = value; break;
     default: break;
     }
@@ -318,9 +332,9 @@ void DynamicsPanel::editTorque() {
 
 void DynamicsPanel::editForce() {
   const int index = m_forceTarget->currentIndex();
-  const std::optional<ForceTarget> target =
-      index > 0 && static_cast<std::size_t>(index) <= m_targets.size() ? std::optional(m_targets[static_cast<std::size_t>(index) - 1])
-                                                                       : std::nullopt;
+  const std::optional<ForceTarget> target = index > 0 && static_cast<std::size_t>(index) <= m_targets.size()
+                                                ? std::optional(m_targets[static_cast<std::size_t>(index) - 1])
+                                                : std::nullopt;
   const Eigen::Vector2d force(m_forceX->value(), m_forceY->value());
   submit(tr("Change point force"), [&](k::LinkageDynamics& d) {
     auto& forces = d.loads.forces;
@@ -333,4 +347,4 @@ void DynamicsPanel::editForce() {
   });
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

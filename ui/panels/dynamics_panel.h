@@ -83,4 +83,4 @@ private:
   std::vector<ForceTarget> m_targets;                // per force-target item after "none"
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -71,4 +71,4 @@ void LengthEditor::syncSlider() {
   m_slider->setValue(static_cast<int>(std::lround(std::clamp(t, 0.0, 1.0) * kSliderSteps)));
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -37,4 +37,4 @@ private:
   bool m_updating = false;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -17,8 +17,8 @@ namespace k = kinematics;
 
 LengthsPanel::LengthsPanel(MechanismDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document), m_hasCouplerPoint(new QCheckBox(tr("Coupler point P"), this)),
-      m_along(new LengthEditor(tr("along B→C"), true, this)), m_across(new LengthEditor(tr("across (left of B→C)"), true, this)),
-      m_message(new QLabel(this)) {
+      m_along(new LengthEditor(tr("along B→C"), true, this)),
+      m_across(new LengthEditor(tr("across (left of B→C)"), true, this)), m_message(new QLabel(this)) {
   auto* layout = new QVBoxLayout(this);
   auto* box = new QGroupBox(tr("Link lengths"), this);
   auto* boxLayout = new QVBoxLayout(box);
@@ -118,7 +118,8 @@ void LengthsPanel::editCouplerPoint() {
   } else {
     d.couplerPoint.reset();
   }
-  if (auto why = m_document->edit(d, tr("Change coupler point"), MergeKey{ContinuousEdit::CouplerPoint, 0, m_dragSerial}))
+  if (auto why =
+          m_document->edit(d, tr("Change coupler point"), MergeKey{ContinuousEdit::CouplerPoint, 0, m_dragSerial}))
     showRefusal(*why);
   else m_message->hide();
   ++m_dragSerial;
@@ -130,4 +131,4 @@ void LengthsPanel::showRefusal(const QString& reason) {
   m_message->show();
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -43,4 +43,4 @@ private:
   bool m_hadFourBar = true;  // separates consecutive slider drags into their own undo steps
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

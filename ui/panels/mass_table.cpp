@@ -38,7 +38,7 @@ std::optional<double> parseNumber(const QString& text, bool& parsed) {
   return ok ? std::optional<double>(value) : std::nullopt;
 }
 
-} // namespace
+}  // namespace
 
 MassTable::MassTable(const QStringList& headers, QWidget* parent) : QTableWidget(parent) {
   setColumnCount(static_cast<int>(headers.size()));
@@ -104,4 +104,4 @@ void MassTable::onItemChanged(QTableWidgetItem* item) {
   emit cellEdited(item->row(), item->column(), value, parsed);
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

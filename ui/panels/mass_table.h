@@ -41,4 +41,4 @@ private:
   bool m_filling = false;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

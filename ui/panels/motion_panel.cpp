@@ -3,8 +3,8 @@
 #include "ui/number_text.h"
 
 #include "ui/animation/crank_animator.h"
-#include "ui/document/edit_design_command.h"
 #include "ui/document/design_fields.h"
+#include "ui/document/edit_design_command.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/settings.h"
 
@@ -30,11 +30,11 @@ namespace linkwright::ui {
 namespace k = kinematics;
 
 MotionPanel::MotionPanel(MechanismDocument* document, CrankAnimator* animator, Settings* settings, QWidget* parent)
-    : QWidget(parent), m_document(document), m_animator(animator), m_settings(settings), m_speed(new QDoubleSpinBox(this)),
-      m_speedUnit(new QComboBox(this)), m_alpha(new QDoubleSpinBox(this)), m_branch(new QComboBox(this)),
-      m_play(new QPushButton(this)), m_back(new QPushButton(this)), m_forward(new QPushButton(this)),
-      m_step(new QDoubleSpinBox(this)), m_loop(new QCheckBox(tr("Loop"), this)), m_angle(new QSlider(Qt::Horizontal, this)),
-      m_angleText(new QLabel(this)) {
+    : QWidget(parent), m_document(document), m_animator(animator), m_settings(settings),
+      m_speed(new QDoubleSpinBox(this)), m_speedUnit(new QComboBox(this)), m_alpha(new QDoubleSpinBox(this)),
+      m_branch(new QComboBox(this)), m_play(new QPushButton(this)), m_back(new QPushButton(this)),
+      m_forward(new QPushButton(this)), m_step(new QDoubleSpinBox(this)), m_loop(new QCheckBox(tr("Loop"), this)),
+      m_angle(new QSlider(Qt::Horizontal, this)), m_angleText(new QLabel(this)) {
   auto* layout = new QVBoxLayout(this);
   auto* drive = new QGroupBox(tr("Drive"), this);
   auto* form = new QFormLayout(drive);
@@ -94,9 +94,11 @@ MotionPanel::MotionPanel(MechanismDocument* document, CrankAnimator* animator, S
   connect(m_play, &QPushButton::clicked, animator, &CrankAnimator::togglePlay);
   connect(m_back, &QPushButton::clicked, animator, &CrankAnimator::stepBackward);
   connect(m_forward, &QPushButton::clicked, animator, &CrankAnimator::stepForward);
-  connect(m_step, &QDoubleSpinBox::valueChanged, this, [this](double deg) { m_animator->setStepAngle(k::degToRad(deg)); });
+  connect(m_step, &QDoubleSpinBox::valueChanged, this,
+          [this](double deg) { m_animator->setStepAngle(k::degToRad(deg)); });
   connect(m_loop, &QCheckBox::toggled, animator, &CrankAnimator::setLooping);
-  connect(m_angle, &QSlider::valueChanged, this, [this](int tenths) { m_document->setCrankAngle(k::degToRad(tenths / 10.0)); });
+  connect(m_angle, &QSlider::valueChanged, this,
+          [this](int tenths) { m_document->setCrankAngle(k::degToRad(tenths / 10.0)); });
   connect(animator, &CrankAnimator::playingChanged, this, [this](bool playing) {
     m_play->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
   });
@@ -141,13 +143,15 @@ void MotionPanel::editSpeed() {
   const bool rpm = m_speedUnit->currentIndex() == 0;
   const double omega = rpm ? k::rpmToRadPerSec(m_speed->value()) : m_speed->value();
   const k::Design d = withShared(m_document->design(), [omega](auto& x) { x.omega = omega; });
-  if (m_document->edit(d, tr("Change crank speed"), MergeKey{ContinuousEdit::Speed, 0, m_editSerial++})) refreshDesign();
+  if (m_document->edit(d, tr("Change crank speed"), MergeKey{ContinuousEdit::Speed, 0, m_editSerial++}))
+    refreshDesign();
 }
 
 void MotionPanel::editAlpha() {
   const double alpha = m_alpha->value();
   const k::Design d = withShared(m_document->design(), [alpha](auto& x) { x.alpha = alpha; });
-  if (m_document->edit(d, tr("Change crank acceleration"), MergeKey{ContinuousEdit::Acceleration, 0, m_editSerial++})) refreshDesign();
+  if (m_document->edit(d, tr("Change crank acceleration"), MergeKey{ContinuousEdit::Acceleration, 0, m_editSerial++}))
+    refreshDesign();
 }
 
 void MotionPanel::editBranch() {
@@ -157,4 +161,4 @@ void MotionPanel::editBranch() {
   if (m_document->edit(d, tr("Switch assembly branch"))) refreshDesign();
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -52,4 +52,4 @@ private:
   int m_editSerial = 0;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -28,4 +28,4 @@ inline QString angleUnitSymbol(AngleUnit unit) {
                                     : QCoreApplication::translate("AngleUnit", "rad");
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

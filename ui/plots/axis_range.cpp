@@ -12,7 +12,7 @@ constexpr double kDegreeSteps[] = {1.0, 2.0, 5.0, 10.0, 15.0, 30.0, 45.0, 90.0, 
 // legend, and wider labels would be elided ("1…") at the plot widths the window gives.
 constexpr int kCrankIntervals = 4;
 
-} // namespace
+}  // namespace
 
 double niceStep(double raw) {
   const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
@@ -67,10 +67,8 @@ AxisRange crankAxisRange(double fromDeg, double toDeg, AngleUnit unit) {
   AxisRange r;
   r.min = toAngleUnit(kinematics::degToRad(std::min(fromDeg, toDeg)), unit);
   r.max = toAngleUnit(kinematics::degToRad(std::max(fromDeg, toDeg)), unit);
-  if (unit == AngleUnit::Degrees && stepDeg > 0.0)
-    r.step = stepDeg;
-  else
-    r.step = niceStep((r.max - r.min) / kCrankIntervals);
+  if (unit == AngleUnit::Degrees && stepDeg > 0.0) r.step = stepDeg;
+  else r.step = niceStep((r.max - r.min) / kCrankIntervals);
   r.tickCount = static_cast<int>(std::floor((r.max - r.min) / r.step + 1e-9)) + 1;
   r.decimals = decimalsFor(r.step);
   return r;
@@ -90,11 +88,13 @@ std::optional<double> wrapIntoRange(double angleDeg, double fromDeg, double toDe
 std::pair<double, double> robustSpan(std::vector<double>& values) {
   if (values.empty()) return {0.0, 0.0};
   std::sort(values.begin(), values.end());
-  const auto at = [&](double q) { return values[static_cast<std::size_t>(q * static_cast<double>(values.size() - 1))]; };
+  const auto at = [&](double q) {
+    return values[static_cast<std::size_t>(q * static_cast<double>(values.size() - 1))];
+  };
   const double lo = at(0.05);
   const double hi = at(0.95);
   const double margin = 0.5 * (hi - lo);
   return {std::max(values.front(), lo - margin), std::min(values.back(), hi + margin)};
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -45,4 +45,4 @@ AxisRange crankAxisRange(double fromDeg, double toDeg, AngleUnit unit);
 /// if no turn of it lies there (a grid shorter than a turn that misses this angle).
 std::optional<double> wrapIntoRange(double angleDeg, double fromDeg, double toDeg);
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -26,8 +26,7 @@ QChart* makeCrankAngleChart(const QString& title, QValueAxis* xAxis, QValueAxis*
 }
 
 std::unique_ptr<VerticalMarker> makeCrankCursor(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis) {
-  return std::make_unique<VerticalMarker>(chart, xAxis, yAxis, QPen(kCrankCursorColor, 1.5),
-                                          QStringLiteral("cursor"));
+  return std::make_unique<VerticalMarker>(chart, xAxis, yAxis, QPen(kCrankCursorColor, 1.5), QStringLiteral("cursor"));
 }
 
 void applyAxisRange(QValueAxis* axis, const AxisRange& range) {
@@ -36,4 +35,4 @@ void applyAxisRange(QValueAxis* axis, const AxisRange& range) {
   axis->setLabelFormat(QStringLiteral("%.%1f").arg(range.decimals));
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

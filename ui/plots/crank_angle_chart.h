@@ -25,4 +25,4 @@ std::unique_ptr<VerticalMarker> makeCrankCursor(QChart* chart, QValueAxis* xAxis
 /// Applies a rounded range to a value axis (bounds, ticks, label format).
 void applyAxisRange(QValueAxis* axis, const AxisRange& range);
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

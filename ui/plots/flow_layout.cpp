@@ -69,4 +69,4 @@ int FlowLayout::arrange(const QRect& rect, bool apply) const {
   return y + lineHeight - rect.y() + contentsMargins().bottom();
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

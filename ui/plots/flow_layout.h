@@ -36,4 +36,4 @@ private:
   int m_verticalSpacing;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -78,4 +78,4 @@ QList<QLineSeries*> ForceChartView::segments(std::size_t index) const {
   return index < m_lines.size() ? m_lines[index].segments() : QList<QLineSeries*>{};
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

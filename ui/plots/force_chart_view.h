@@ -65,5 +65,4 @@ private:
   std::vector<double> m_values;  // y values of one update, reused
 };
 
-
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -12,9 +12,9 @@
 #include <QChart>
 #include <QComboBox>
 #include <QHBoxLayout>
-#include <QTabWidget>
 #include <QLabel>
 #include <QSignalBlocker>
+#include <QTabWidget>
 #include <QVBoxLayout>
 
 namespace linkwright::ui {
@@ -24,7 +24,7 @@ namespace k = kinematics;
 namespace {
 constexpr int kChartMinimumHeight = 200;
 constexpr int kPolarMinimumWidth = 260;
-} // namespace
+}  // namespace
 
 ForcePlotPanel::ForcePlotPanel(MechanismDocument* document, ForceResults* forces, QWidget* parent)
     : QWidget(parent), m_document(document), m_forces(forces), m_status(new QLabel(this)),
@@ -68,13 +68,12 @@ ForcePlotPanel::ForcePlotPanel(MechanismDocument* document, ForceResults* forces
 
   m_torque->setCurves({{QStringLiteral("torque"), tr("T₂"), kCrankColor}});
   // The two charts share the crank axis: same plot-area edges, so the cursors line up.
-  for (ForceChartView* chart : {m_torque, m_joints}) connect(chart, &ForceChartView::resized, this, &ForcePlotPanel::alignCharts);
+  for (ForceChartView* chart : {m_torque, m_joints})
+    connect(chart, &ForceChartView::resized, this, &ForcePlotPanel::alignCharts);
   connect(m_selector, &QComboBox::currentIndexChanged, this, [this] { refreshPolar(); });
   connect(forces, &ForceResults::changed, this, [this](bool cycle) {
-    if (cycle)
-      refreshAll();
-    else
-      refreshCursor();
+    if (cycle) refreshAll();
+    else refreshCursor();
   });
   refreshAll();
 }
@@ -161,12 +160,14 @@ void ForcePlotPanel::refreshPolar() {
   const auto index = static_cast<std::size_t>(joint);
   SeriesRuns locus;
   buildPolarRuns(*cycle, index, locus);
-  m_polar->setLocus(locus, tr("Joint %1: force on %2 from %3")
-                               .arg(m_selector->currentText(),
-                                    QString::fromStdString(cycle->bodies.bodies[cycle->bodies.revolutes[index].body.index].name),
-                                    QString::fromStdString(cycle->bodies.bodies[cycle->bodies.revolutes[index].hub.index].name)),
-                    m_jointList.empty() ? QColor(Qt::black) : m_jointList[index].color);
+  m_polar->setLocus(
+      locus,
+      tr("Joint %1: force on %2 from %3")
+          .arg(m_selector->currentText(),
+               QString::fromStdString(cycle->bodies.bodies[cycle->bodies.revolutes[index].body.index].name),
+               QString::fromStdString(cycle->bodies.bodies[cycle->bodies.revolutes[index].hub.index].name)),
+      m_jointList.empty() ? QColor(Qt::black) : m_jointList[index].color);
   refreshCursor();
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -61,4 +61,4 @@ private:
   std::vector<SeriesRuns> m_runs;  // reused between updates
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

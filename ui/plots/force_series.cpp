@@ -49,7 +49,7 @@ std::size_t samplesOf(const k::SweepResult& sweep, const k::ForceSweep& forces) 
   return sweep.size() == forces.size() ? forces.size() : 0;
 }
 
-} // namespace
+}  // namespace
 
 std::vector<ForceJoint> forceJoints(const k::BodyModel& bodies) {
   std::vector<ForceJoint> joints;
@@ -75,9 +75,11 @@ void buildJointForceRuns(const k::SweepResult& sweep, const k::ForceSweep& force
   const bool present = joint.prismatic ? joint.index < forces.normal.size() : joint.index < forces.revolute.size();
   const std::size_t samples = present ? samplesOf(sweep, forces) : 0;
   if (joint.prismatic)
-    buildRuns(samples, ok, x, [&](std::size_t j) { return std::abs(forces.normal[joint.index][j]); }, out);
+    buildRuns(
+        samples, ok, x, [&](std::size_t j) { return std::abs(forces.normal[joint.index][j]); }, out);
   else
-    buildRuns(samples, ok, x, [&](std::size_t j) { return forces.revolute[joint.index][j].norm(); }, out);
+    buildRuns(
+        samples, ok, x, [&](std::size_t j) { return forces.revolute[joint.index][j].norm(); }, out);
 }
 
 void buildPolarRuns(const k::ForceSweep& forces, std::size_t revolute, SeriesRuns& out) {
@@ -88,4 +90,4 @@ void buildPolarRuns(const k::ForceSweep& forces, std::size_t revolute, SeriesRun
       [&](std::size_t j) { return forces.revolute[revolute][j].y(); }, out);
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -21,9 +21,9 @@ namespace linkwright::ui {
 
 /// One joint as the force plots name and colour it.
 struct ForceJoint {
-  QString name;           ///< the core's joint name: "A", "B", "C_coupler", …
-  bool prismatic = false; ///< a slider's guide (its reaction is the normal force N)
-  std::size_t index = 0;  ///< into ForceSweep::revolute, or ::normal when prismatic
+  QString name;            ///< the core's joint name: "A", "B", "C_coupler", …
+  bool prismatic = false;  ///< a slider's guide (its reaction is the normal force N)
+  std::size_t index = 0;   ///< into ForceSweep::revolute, or ::normal when prismatic
   QColor color;
   bool operator==(const ForceJoint&) const = default;
 };
@@ -44,4 +44,4 @@ void buildJointForceRuns(const kinematics::SweepResult& sweep, const kinematics:
 /// force on the joint's body from its hub), one point per Ok sample, in sweep order.
 void buildPolarRuns(const kinematics::ForceSweep& forces, std::size_t revolute, SeriesRuns& out);
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

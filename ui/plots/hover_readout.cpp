@@ -35,7 +35,8 @@ HoverReadout::HoverReadout(QWidget* parent) : QLabel(parent) {
   clearPoint();
 }
 
-void HoverReadout::showPoint(const PlotCurve& curve, QPointF point, AngleUnit unit, const QString& lengthUnit, bool inside) {
+void HoverReadout::showPoint(const PlotCurve& curve, QPointF point, AngleUnit unit, const QString& lengthUnit,
+                             bool inside) {
   if (!inside) {
     clearPoint();
     QToolTip::hideText();
@@ -48,4 +49,4 @@ void HoverReadout::showPoint(const PlotCurve& curve, QPointF point, AngleUnit un
 
 void HoverReadout::clearPoint() { setText(tr("Point at a curve to read its value.")); }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

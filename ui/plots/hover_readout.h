@@ -13,7 +13,8 @@ namespace linkwright::ui {
 /// `value` with about three significant digits (at least one decimal, at most six).
 QString formatReadoutNumber(double value);
 /// The read-out sentence for `point` (x = crank angle, y = value, in plot units) on `curve`.
-QString readoutText(const PlotCurve& curve, QPointF point, AngleUnit unit, const QString& lengthUnit = QStringLiteral("mm"));
+QString readoutText(const PlotCurve& curve, QPointF point, AngleUnit unit,
+                    const QString& lengthUnit = QStringLiteral("mm"));
 
 class HoverReadout : public QLabel {
   Q_OBJECT
@@ -26,4 +27,4 @@ public:
   void clearPoint();
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

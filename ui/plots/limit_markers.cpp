@@ -19,8 +19,7 @@ namespace k = kinematics;
 
 // The core reports the rocker angle in (−π, π]; the sweep's is unwrapped and may be whole
 // turns away. Pick the turn nearest the sweep's value at the grid sample nearest `xDeg`.
-double rockerAngleOnCurve(double rockerAngle, const k::SweepResult& sweep, double xDeg, double fromDeg,
-                          double toDeg) {
+double rockerAngleOnCurve(double rockerAngle, const k::SweepResult& sweep, double xDeg, double fromDeg, double toDeg) {
   const std::size_t n = sweep.size();
   const std::size_t link = k::fourbar::kRocker.index;
   if (n < 2 || link >= sweep.linkAngle.size() || toDeg == fromDeg) return rockerAngle;
@@ -31,7 +30,7 @@ double rockerAngleOnCurve(double rockerAngle, const k::SweepResult& sweep, doubl
   return rockerAngle + turn * std::round((sweep.linkAngle[link][j] - rockerAngle) / turn);
 }
 
-} // namespace
+}  // namespace
 
 QList<QPointF> limitMarkerPoints(const k::LimitReport& limits, const k::SweepResult& sweep, double fromDeg,
                                  double toDeg, AngleUnit unit) {
@@ -102,4 +101,4 @@ QList<double> LimitMarkers::lineXs() const {
   return xs;
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -60,4 +60,4 @@ private:
   double m_hi = 1.0;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -42,4 +42,4 @@ void alignPlotAreas(const QList<QChart*>& charts) {
   }
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -17,4 +17,4 @@ inline const QMargins kBaseChartMargins(2, 2, 2, 2);
 /// Aligns the plot areas of `charts` (equal widths, one above the other) horizontally.
 void alignPlotAreas(const QList<QChart*>& charts);
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -35,7 +35,7 @@ QString titleOf(QuantityKind kind) {
   return {};
 }
 
-} // namespace
+}  // namespace
 
 PlotPanel::PlotPanel(MechanismDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document), m_quality(new QualityBar(document, this)),
@@ -54,7 +54,8 @@ PlotPanel::PlotPanel(MechanismDocument* document, QWidget* parent)
     // Small enough that six charts (a slider-crank) fit the window's height.
     view->setMinimumHeight(110);
     connect(view, &QuantityChartView::curveHovered, this, [this](PlotQuantity q, QPointF p, bool inside) {
-      if (const PlotCurve* c = curve(q)) m_readout->showPoint(*c, p, m_unit, QString::fromStdString(m_document->lengthUnit()), inside);
+      if (const PlotCurve* c = curve(q))
+        m_readout->showPoint(*c, p, m_unit, QString::fromStdString(m_document->lengthUnit()), inside);
     });
     connect(view, &QuantityChartView::resized, this, &PlotPanel::alignCharts);
     m_views[static_cast<std::size_t>(kind)] = view;
@@ -116,10 +117,8 @@ void PlotPanel::onDocumentChanged(Changes what) {
       return;
     }
   }
-  if (what & (Changes(Change::Design) | Change::Request))
-    refreshData();
-  else if (what & Change::Motion)
-    refreshCursor();
+  if (what & (Changes(Change::Design) | Change::Request)) refreshData();
+  else if (what & Change::Motion) refreshCursor();
 }
 
 void PlotPanel::onSelectionChanged() {
@@ -135,7 +134,8 @@ void PlotPanel::refreshCurves() {
                       [](const PlotCurve& x, const PlotCurve& y) { return x.quantity == y.quantity; });
   };
   // Another kind of linkage starts from its own defaults; renamed links keep the user's ticks.
-  const QuantitySelection selection = sameQuantities(curves, m_curves) ? m_selector->selection() : defaultSelection(curves);
+  const QuantitySelection selection =
+      sameQuantities(curves, m_curves) ? m_selector->selection() : defaultSelection(curves);
   m_curves = std::move(curves);
   m_selector->setCurves(m_curves, selection);
   for (QuantityChartView* view : m_views) view->setCurves(m_curves);
@@ -164,10 +164,8 @@ void PlotPanel::applySelection() {
   wanted.newton = m_document->request().newton;  // the quality's, not the selection's
   // A new request re-sweeps and comes back as Change::Request, which re-plots; otherwise
   // only the visibility changed and the current sweep serves.
-  if (wanted != m_document->request())
-    m_document->setRequest(wanted);
-  else
-    refreshData();
+  if (wanted != m_document->request()) m_document->setRequest(wanted);
+  else refreshData();
 }
 
 void PlotPanel::refreshData() {
@@ -208,4 +206,4 @@ void PlotPanel::refreshCursor() {
   for (QuantityChartView* view : m_views) view->setCursorX(x);
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

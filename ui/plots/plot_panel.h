@@ -99,4 +99,4 @@ private:
   HoverReadout* m_readout;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -47,11 +47,12 @@ void addLinkCurves(std::vector<PlotCurve>& out, const k::Mechanism& m, ColumnQua
   for (std::size_t l = 0; l < m.links.size(); ++l) {
     if (k::io::isDrivenCrankLink(m, k::LinkId{l})) continue;  // the driver's own, constant or the input
     const QString name = QString::fromStdString(m.links[l].name);
-    out.push_back({{column, l}, name + suffix, QStringLiteral("%1 %2%3").arg(name, symbol).arg(linkNumber(l)), linkColor(l)});
+    out.push_back(
+        {{column, l}, name + suffix, QStringLiteral("%1 %2%3").arg(name, symbol).arg(linkNumber(l)), linkColor(l)});
   }
 }
 
-} // namespace
+}  // namespace
 
 const PlotQuantity PlotQuantity::CouplerAngle{ColumnQuantity::LinkAngle, k::fourbar::kCoupler.index};
 const PlotQuantity PlotQuantity::RockerAngle{ColumnQuantity::LinkAngle, k::fourbar::kRocker.index};
@@ -68,14 +69,16 @@ std::vector<PlotCurve> plotCurves(const k::Mechanism& m, const k::Pose& pose) {
   addLinkCurves(out, m, ColumnQuantity::LinkAngle, QStringLiteral("θ"), QStringLiteral("_angle"));
   std::vector<std::size_t> dyads;  // the joints with a transmission angle
   for (std::size_t i = 0; i < m.points.size(); ++i)
-    if (std::holds_alternative<k::RrrPoint>(m.points[i].definition) || std::holds_alternative<k::RrpPoint>(m.points[i].definition))
+    if (std::holds_alternative<k::RrrPoint>(m.points[i].definition) ||
+        std::holds_alternative<k::RrpPoint>(m.points[i].definition))
       dyads.push_back(i);
   for (std::size_t d = 0; d < dyads.size(); ++d) {
     const QString point = QString::fromStdString(m.points[dyads[d]].name);
     const bool one = dyads.size() == 1;
     out.push_back({{ColumnQuantity::TransmissionAngle, dyads[d]},
                    one ? QStringLiteral("transmission_angle") : QStringLiteral("transmission_angle_") + point,
-                   one ? Text::tr("transmission μ") : Text::tr("μ at %1").arg(point), transmissionColor(d)});
+                   one ? Text::tr("transmission μ") : Text::tr("μ at %1").arg(point),
+                   transmissionColor(d)});
   }
   addLinkCurves(out, m, ColumnQuantity::LinkOmega, QStringLiteral("ω"), QStringLiteral("_omega"));
   addLinkCurves(out, m, ColumnQuantity::LinkAlpha, QStringLiteral("α"), QStringLiteral("_alpha"));
@@ -91,9 +94,16 @@ std::vector<PlotCurve> plotCurves(const k::Mechanism& m, const k::Pose& pose) {
     const QString point = QString::fromStdString(m.points[i].name);
     const QString axis = alongX ? QStringLiteral("x") : QStringLiteral("y");
     const QColor color = sliderColor(ordinal);
-    out.push_back({{alongX ? ColumnQuantity::PointX : ColumnQuantity::PointY, i}, point + "_" + axis, point + " " + axis, color});
-    out.push_back({{alongX ? ColumnQuantity::PointVx : ColumnQuantity::PointVy, i}, point + "_v" + axis, point + " v" + axis, color});
-    out.push_back({{alongX ? ColumnQuantity::PointAx : ColumnQuantity::PointAy, i}, point + "_a" + axis, point + " a" + axis, color});
+    out.push_back(
+        {{alongX ? ColumnQuantity::PointX : ColumnQuantity::PointY, i}, point + "_" + axis, point + " " + axis, color});
+    out.push_back({{alongX ? ColumnQuantity::PointVx : ColumnQuantity::PointVy, i},
+                   point + "_v" + axis,
+                   point + " v" + axis,
+                   color});
+    out.push_back({{alongX ? ColumnQuantity::PointAx : ColumnQuantity::PointAy, i},
+                   point + "_a" + axis,
+                   point + " a" + axis,
+                   color});
   }
   // Checkbox and legend order: by chart.
   std::stable_sort(out.begin(), out.end(), [](const PlotCurve& a, const PlotCurve& b) {
@@ -158,8 +168,9 @@ bool QuantitySelection::any(QuantityKind kind, const std::vector<PlotCurve>& cur
 
 QuantitySelection defaultSelection(const std::vector<PlotCurve>& curves) {
   QuantitySelection s;
-  const bool sliders = std::any_of(curves.begin(), curves.end(),
-                                   [](const PlotCurve& c) { return quantityKind(c.quantity) == QuantityKind::Position; });
+  const bool sliders = std::any_of(curves.begin(), curves.end(), [](const PlotCurve& c) {
+    return quantityKind(c.quantity) == QuantityKind::Position;
+  });
   if (!sliders) return s;
   for (const PlotCurve& c : curves) {
     const QuantityKind kind = quantityKind(c.quantity);
@@ -174,4 +185,4 @@ k::SolveRequest requestFor(const QuantitySelection& s, const std::vector<PlotCur
   return {velocities || accelerations, accelerations};
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -49,9 +49,9 @@ struct PlotQuantity {
 /// A quantity as the plots show it for one mechanism.
 struct PlotCurve {
   PlotQuantity quantity;
-  QString key;    ///< stable, untranslated, after the CSV column names: "rocker_omega", "C_x"
-  QString name;   ///< legend and checkbox: "rocker ω4", "transmission μ", "C x"
-  QColor color;   ///< the link's colour on the canvas, for every chart it appears on
+  QString key;   ///< stable, untranslated, after the CSV column names: "rocker_omega", "C_x"
+  QString name;  ///< legend and checkbox: "rocker ω4", "transmission μ", "C x"
+  QColor color;  ///< the link's colour on the canvas, for every chart it appears on
   bool operator==(const PlotCurve&) const = default;
 };
 
@@ -96,4 +96,4 @@ QuantitySelection defaultSelection(const std::vector<PlotCurve>& curves);
 /// velocity is shown; accelerations (which imply velocities) only if an α or an acceleration is.
 kinematics::SolveRequest requestFor(const QuantitySelection& selection, const std::vector<PlotCurve>& curves);
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

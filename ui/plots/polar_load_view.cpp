@@ -20,7 +20,7 @@ constexpr qreal kCurveWidth = 2.0;
 constexpr qreal kDotSizePx = 9.0;
 const QColor kOriginColor(150, 150, 150);
 const QColor kDotColor(0xc0, 0x20, 0x20);  // the crank cursor's colour on the other charts
-} // namespace
+}  // namespace
 
 PolarLoadView::PolarLoadView(QWidget* parent)
     : QChartView(parent), m_xAxis(new QValueAxis), m_yAxis(new QValueAxis), m_originX(new QLineSeries),
@@ -101,10 +101,8 @@ void PolarLoadView::setLocus(const SeriesRuns& locus, const QString& title, cons
 }
 
 void PolarLoadView::setCurrent(std::optional<QPointF> force) {
-  if (force)
-    m_dot->replace(QList<QPointF>{*force});
-  else if (m_dot->count() > 0)
-    m_dot->replace(QList<QPointF>{});
+  if (force) m_dot->replace(QList<QPointF>{*force});
+  else if (m_dot->count() > 0) m_dot->replace(QList<QPointF>{});
   setSeriesShown(chart(), m_dot, force.has_value(), false);
   if (!force) return;
   const bool outside = force->x() < m_xLo || force->x() > m_xHi || force->y() < m_yLo || force->y() > m_yHi;
@@ -155,4 +153,4 @@ void PolarLoadView::equalizeScales() {
 double PolarLoadView::xScale() const { return (m_xAxis->max() - m_xAxis->min()) / chart()->plotArea().width(); }
 double PolarLoadView::yScale() const { return (m_yAxis->max() - m_yAxis->min()) / chart()->plotArea().height(); }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -59,4 +59,4 @@ private:
   bool m_equalizing = false;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -36,7 +36,7 @@ QString boxToolTip() {
       "on this setting.</p>");
 }
 
-} // namespace
+}  // namespace
 
 QualityBar::QualityBar(MechanismDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document), m_box(new QComboBox(this)), m_cost(new QLabel(this)),
@@ -113,7 +113,8 @@ void QualityBar::refreshError() {
   // Until the estimate settles (a drag, a resize), the last figure stays, greyed.
   m_error->setEnabled(!m_document->qualityEstimatePending());
   if (!e.error) {
-    m_error->setText(e.samplesPerRevolution == 0 ? tr("peak error: measuring…") : tr("peak error %1").arg(e.unavailable));
+    m_error->setText(e.samplesPerRevolution == 0 ? tr("peak error: measuring…")
+                                                 : tr("peak error %1").arg(e.unavailable));
     m_error->setToolTip(e.detail.isEmpty() ? QString()
                                            : tr("<p>The error is measured against the exact peaks over one full cycle "
                                                 "of the crank. The core says: %1</p>")
@@ -122,17 +123,18 @@ void QualityBar::refreshError() {
   }
   const kinematics::PeakError& p = *e.error;
   m_error->setText(tr("worst peak error %1").arg(formatRelative(p.worstRate())));
-  m_error->setToolTip(tr("<p>Worst relative error of the peaks read off %1 samples per revolution against the exact "
-                         "peaks (refined between samples), measured on this design in %2 ms:</p>"
-                         "<table><tr><td>|ω| of links</td><td>%3</td></tr><tr><td>|α| of links</td><td>%4</td></tr>"
-                         "<tr><td>speed of points</td><td>%5</td></tr><tr><td>acceleration of points</td><td>%6</td></tr>"
-                         "<tr><td>extreme angles</td><td>%7°</td></tr></table>"
-                         "<p>Crank at constant speed (α₂ = 0).</p>")
-                          .arg(e.samplesPerRevolution)
-                          .arg(numberText(e.measureMilliseconds, 'f', 1))
-                          .arg(formatRelative(p.omega), formatRelative(p.alpha), formatRelative(p.speed),
-                               formatRelative(p.acceleration))
-                          .arg(kinematics::radToDeg(p.angle), 0, 'g', 2));
+  m_error->setToolTip(
+      tr("<p>Worst relative error of the peaks read off %1 samples per revolution against the exact "
+         "peaks (refined between samples), measured on this design in %2 ms:</p>"
+         "<table><tr><td>|ω| of links</td><td>%3</td></tr><tr><td>|α| of links</td><td>%4</td></tr>"
+         "<tr><td>speed of points</td><td>%5</td></tr><tr><td>acceleration of points</td><td>%6</td></tr>"
+         "<tr><td>extreme angles</td><td>%7°</td></tr></table>"
+         "<p>Crank at constant speed (α₂ = 0).</p>")
+          .arg(e.samplesPerRevolution)
+          .arg(numberText(e.measureMilliseconds, 'f', 1))
+          .arg(formatRelative(p.omega), formatRelative(p.alpha), formatRelative(p.speed),
+               formatRelative(p.acceleration))
+          .arg(kinematics::radToDeg(p.angle), 0, 'g', 2));
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

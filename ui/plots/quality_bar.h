@@ -41,4 +41,4 @@ private:
   QLabel* m_error;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

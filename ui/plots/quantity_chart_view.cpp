@@ -26,7 +26,7 @@ QPointF nearestByX(const QList<QPointF>& points, qreal x) {
   return best;
 }
 
-} // namespace
+}  // namespace
 
 QuantityChartView::QuantityChartView(QuantityKind kind, const QString& title, QWidget* parent)
     : QChartView(parent), m_kind(kind), m_xAxis(new QValueAxis), m_yAxis(new QValueAxis) {
@@ -44,8 +44,9 @@ void QuantityChartView::setCurves(const std::vector<PlotCurve>& curves) {
   std::vector<PlotCurve> mine;
   for (const PlotCurve& c : curves)
     if (quantityKind(c.quantity) == m_kind) mine.push_back(c);
-  const bool same = mine.size() == m_curves.size() &&
-                    std::equal(mine.begin(), mine.end(), m_curves.begin(), [](const PlotCurve& a, const Curve& b) { return a == b.curve; });
+  const bool same =
+      mine.size() == m_curves.size() && std::equal(mine.begin(), mine.end(), m_curves.begin(),
+                                                   [](const PlotCurve& a, const Curve& b) { return a == b.curve; });
   if (same) return;
   for (Curve& curve : m_curves) curve.line.removeFromChart();
   m_curves.clear();
@@ -66,10 +67,8 @@ void QuantityChartView::setData(const kinematics::SweepResult& sweep, const Quan
   m_values.clear();
   for (Curve& curve : m_curves) {
     const bool shown = selection.contains(curve.curve.quantity);
-    if (shown)
-      buildSeriesRuns(sweep, curve.curve.quantity, unit, m_runs);
-    else
-      m_runs.runs.clear();
+    if (shown) buildSeriesRuns(sweep, curve.curve.quantity, unit, m_runs);
+    else m_runs.runs.clear();
     for (const QList<QPointF>& run : m_runs.runs)
       for (const QPointF& p : run) m_values.push_back(p.y());
     curve.line.setRuns(m_runs, shown);
@@ -106,4 +105,4 @@ void QuantityChartView::onSegmentHovered(PlotQuantity quantity, const QLineSerie
   emit curveHovered(quantity, nearestByX(segment->points(), point.x()), inside);
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

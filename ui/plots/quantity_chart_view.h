@@ -40,8 +40,8 @@ public:
 
   /// Replaces the curves with the sweep's values of the selected quantities (the others are
   /// emptied and hidden) and resets both axes: x over the grid [fromDeg, toDeg].
-  void setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection, AngleUnit unit,
-               double fromDeg, double toDeg, const QString& lengthUnit = QStringLiteral("mm"));
+  void setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection, AngleUnit unit, double fromDeg,
+               double toDeg, const QString& lengthUnit = QStringLiteral("mm"));
   /// Moves the cursor to `x` (plot units), or hides it. Touches no data series.
   void setCursorX(std::optional<double> x);
   std::optional<double> cursorX() const { return m_cursor->x(); }
@@ -77,4 +77,4 @@ private:
   std::vector<double> m_values;  // y values of one update, reused
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

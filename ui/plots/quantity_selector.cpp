@@ -24,7 +24,7 @@ QString groupLabel(QuantityKind kind) {
   return {};
 }
 
-} // namespace
+}  // namespace
 
 QuantitySelector::QuantitySelector(QWidget* parent) : QWidget(parent), m_flow(new FlowLayout(this, 10, 0)) {
   // One group per chart (a label and its boxes); groups wrap as wholes when the panel is narrow.
@@ -86,4 +86,4 @@ QCheckBox* QuantitySelector::checkBox(PlotQuantity quantity) const {
   return nullptr;
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -37,10 +37,10 @@ signals:
 private:
   FlowLayout* m_flow;
   std::vector<PlotCurve> m_curves;
-  std::vector<QCheckBox*> m_boxes;   // per curve
-  std::vector<QWidget*> m_groups;    // one per box (the first of a chart with its label)
+  std::vector<QCheckBox*> m_boxes;  // per curve
+  std::vector<QWidget*> m_groups;   // one per box (the first of a chart with its label)
   QuantitySelection m_selection;
   bool m_applying = false;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

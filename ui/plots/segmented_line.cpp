@@ -12,7 +12,7 @@
 namespace linkwright::ui {
 namespace {
 constexpr double kCurveWidth = 2.0;
-} // namespace
+}  // namespace
 
 SegmentedLine::SegmentedLine(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis, Style style,
                              std::function<void(QLineSeries*)> onNewSegment)
@@ -39,10 +39,8 @@ void SegmentedLine::setRuns(const SeriesRuns& runs, bool shown) {
   while (m_segments.size() < runs.runs.size()) addSegment();
   for (qsizetype i = 0; i < m_segments.size(); ++i) {
     QLineSeries* segment = m_segments[i];
-    if (i < runs.runs.size())
-      segment->replace(runs.runs[i]);
-    else if (segment->count() > 0)
-      segment->replace(QList<QPointF>{});
+    if (i < runs.runs.size()) segment->replace(runs.runs[i]);
+    else if (segment->count() > 0) segment->replace(QList<QPointF>{});
     setSeriesShown(m_chart, segment, shown && (i == 0 || i < runs.runs.size()), i == 0);
   }
 }
@@ -55,4 +53,4 @@ void SegmentedLine::removeFromChart() {
   m_segments.clear();
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -52,4 +52,4 @@ private:
   QList<QLineSeries*> m_segments;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -55,7 +55,7 @@ bool sampleCarries(const k::SweepResult& s, PlotQuantity q, std::size_t j) {
   return kind == QuantityKind::Angle || kind == QuantityKind::Position ? s.assembled(j) : s.ok(j);
 }
 
-} // namespace
+}  // namespace
 
 qsizetype SeriesRuns::pointCount() const {
   qsizetype n = 0;
@@ -98,4 +98,4 @@ void buildSeriesRuns(const k::SweepResult& s, PlotQuantity q, AngleUnit unit, Se
   out.runs.resize(runCount);
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

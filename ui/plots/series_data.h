@@ -31,7 +31,6 @@ bool hasValue(const kinematics::SweepResult& sweep, PlotQuantity quantity, std::
 
 /// Fills `out` with the plottable samples of `quantity`. Reuses `out`'s lists: one allocation
 /// per run, none per point. No runs if the sweep did not compute the column.
-void buildSeriesRuns(const kinematics::SweepResult& sweep, PlotQuantity quantity, AngleUnit unit,
-                     SeriesRuns& out);
+void buildSeriesRuns(const kinematics::SweepResult& sweep, PlotQuantity quantity, AngleUnit unit, SeriesRuns& out);
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -16,8 +16,7 @@ namespace linkwright::ui {
 inline void setSeriesShown(QChart* chart, QAbstractSeries* series, bool shown, bool inLegend) {
   if (series->isVisible() != shown) series->setVisible(shown);
   const bool markerShown = shown && inLegend;
-  for (QLegendMarker* marker : chart->legend()->markers(series))
-    marker->setVisible(markerShown);
+  for (QLegendMarker* marker : chart->legend()->markers(series)) marker->setVisible(markerShown);
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

@@ -44,4 +44,4 @@ void VerticalMarker::update() {
   setSeriesShown(m_chart, m_series, m_x.has_value(), false);
 }
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

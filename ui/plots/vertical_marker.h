@@ -39,4 +39,4 @@ private:
   double m_hi = 1.0;
 };
 
-} // namespace linkwright::ui
+}  // namespace linkwright::ui

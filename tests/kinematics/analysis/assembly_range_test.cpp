@@ -58,7 +58,7 @@ void checkEdges(const FourBarLengths& l, const InputRange& range) {
   }
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("fourBarInputRange: the thesis crank turns fully", "[assembly_range]") {
   const InputRange r = fourBarInputRange(linkwright::test::kThesis);
@@ -131,9 +131,13 @@ TEST_CASE("fourBarInputRange: a linkage that never closes", "[assembly_range]") 
 }
 
 TEST_CASE("fourBarInputRange agrees with a fine sweep at every sample", "[assembly_range]") {
-  const auto [frame, crank, coupler, rocker] = GENERATE(table<double, double, double, double>({
-      {60.0, 25.0, 70.0, 45.0}, {60.0, 50.0, 35.0, 40.0}, {50.0, 40.0, 80.0, 20.0},
-      {60.0, 40.0, 20.0, 50.0}, {60.0, 45.0, 70.0, 25.0}, {100.0, 1.0, 1.0, 1.0}}));
+  const auto [frame, crank, coupler, rocker] =
+      GENERATE(table<double, double, double, double>({{60.0, 25.0, 70.0, 45.0},
+                                                      {60.0, 50.0, 35.0, 40.0},
+                                                      {50.0, 40.0, 80.0, 20.0},
+                                                      {60.0, 40.0, 20.0, 50.0},
+                                                      {60.0, 45.0, 70.0, 25.0},
+                                                      {100.0, 1.0, 1.0, 1.0}}));
   const FourBarLengths l{frame, crank, coupler, rocker};
   CAPTURE(frame, crank, coupler, rocker);
   const auto m = makeFourBar(l, Branch::Open);
@@ -147,8 +151,8 @@ TEST_CASE("fourBarInputRange agrees with a fine sweep at every sample", "[assemb
     // Skip samples within 1e-9 rad of an edge, where the 1e-10 assembly slack decides.
     bool nearEdge = false;
     for (const AngleRange& e : r.ranges)
-      nearEdge = nearEdge || std::abs(angleDifference(angle, e.from)) < 1e-9 ||
-                 std::abs(angleDifference(angle, e.to)) < 1e-9;
+      nearEdge =
+          nearEdge || std::abs(angleDifference(angle, e.from)) < 1e-9 || std::abs(angleDifference(angle, e.to)) < 1e-9;
     if (nearEdge) continue;
     CAPTURE(radToDeg(angle));
     CHECK(s->assembled(j) == r.contains(angle));

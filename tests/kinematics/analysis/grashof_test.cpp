@@ -29,7 +29,7 @@ TEST_CASE("classifyGrashof: each class, by where the shortest link is", "[grasho
   const auto [frame, crank, coupler, rocker, category, shortest, longest, sPlusL, pPlusQ, inputTurns, outputTurns] =
       GENERATE(table<double, double, double, double, C, R, R, double, double, bool, bool>({
           {60, 25, 70, 45, C::CrankRocker, R::Crank, R::Coupler, 95, 105, true, false},
-          {80, 20, 66, 56, C::CrankRocker, R::Crank, R::Frame, 100, 122, true, false},  // Alvi
+          {80, 20, 66, 56, C::CrankRocker, R::Crank, R::Frame, 100, 122, true, false},    // Alvi
           {60, 45, 70, 25, C::CrankRocker, R::Rocker, R::Coupler, 95, 105, false, true},  // rocker-crank
           {25, 60, 45, 70, C::DoubleCrank, R::Frame, R::Rocker, 95, 105, true, true},
           {60, 45, 25, 70, C::DoubleRocker, R::Coupler, R::Rocker, 95, 105, false, false},

@@ -53,7 +53,7 @@ struct FourBarCase {
   const char* grashof;
 };
 
-} // namespace
+}  // namespace
 
 TEST_CASE("four-bar centres reproduce the solver's velocities over the cycle", "[analysis][centres]") {
   // One linkage per Grashof class, on both branches; angles the linkage cannot reach are skipped.
@@ -132,8 +132,10 @@ TEST_CASE("slider-crank centres reproduce the solver's velocities, with offsets 
     const auto& vel = pose->velocity;
     const double w3 = pose->linkOmega[slidercrank::kRod.index];
     const double scale = std::abs(omega2) * c->scale;
-    for (const PointId p : {slidercrank::kB, slidercrank::kC}) checkLinkMoves(w3, c->i13, pos[p.index], vel[p.index], scale);
-    checkLinkMoves(0.0, c->i14, pos[slidercrank::kC.index], vel[slidercrank::kC.index], scale);  // the slider translates
+    for (const PointId p : {slidercrank::kB, slidercrank::kC})
+      checkLinkMoves(w3, c->i13, pos[p.index], vel[p.index], scale);
+    checkLinkMoves(0.0, c->i14, pos[slidercrank::kC.index], vel[slidercrank::kC.index],
+                   scale);  // the slider translates
     checkVelocity(spin(omega2, c->i12, c->i23.position), vel[slidercrank::kB.index], scale);
     // I24 on the crank moves with the slider, whose every point moves as C does.
     REQUIRE(c->i24.kind == CentreKind::Finite);
@@ -182,7 +184,8 @@ TEST_CASE("at the rocker's limit positions the mechanical advantage is infinite"
   }
 }
 
-TEST_CASE("where the crank cannot drive, the velocity ratio is infinite and the advantage zero", "[analysis][centres]") {
+TEST_CASE("where the crank cannot drive, the velocity ratio is infinite and the advantage zero",
+          "[analysis][centres]") {
   // Triple-rocker 40/30/20/25 at the end of its crank range: B, C, O4 in line, |BO4| = 45,
   // so cos θ = (30² + 40² − 45²) / (2·30·40). Positions only: the rates do not exist there.
   const auto m = makeFourBar({40, 30, 20, 25}, Branch::Open);

@@ -55,7 +55,7 @@ void checkIsLimit(const FourBarLengths& l, Branch branch, const LimitPosition& p
   CHECK(p.crankAngle < 2.0 * kPi);
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("fourBarLimitPositions: crank-rockers match the classic construction", "[limit_positions]") {
   const auto [frame, crank, coupler, rocker] =
@@ -132,10 +132,9 @@ TEST_CASE("The rocker swing equals the range of a fine sweep's rocker angle", "[
   }
 }
 
-TEST_CASE("fourBarLimitPositions: linkages whose input does not turn fully have no time ratio",
-          "[limit_positions]") {
+TEST_CASE("fourBarLimitPositions: linkages whose input does not turn fully have no time ratio", "[limit_positions]") {
   const auto [frame, crank, coupler, rocker, expectedCount] = GENERATE(table<double, double, double, double, int>({
-      {25, 60, 45, 70, 0},  // double-crank: crank and coupler never line up
+      {25, 60, 45, 70, 0},   // double-crank: crank and coupler never line up
       {60, 50, 35, 40, -1},  // triple-rocker
       {50, 40, 80, 20, -1},  // triple-rocker about 180°
       {60, 45, 70, 25, -1},  // rocker-crank

@@ -12,14 +12,14 @@ using namespace linkwright::kinematics;
 
 TEST_CASE("grueblerMobility: M = 3(N − 1) − 2jp − jh", "[mobility]") {
   const auto [links, full, half, expected] = GENERATE(table<int, int, int, int>({
-      {4, 4, 0, 1},   // four-bar
-      {5, 5, 0, 2},   // five-bar
-      {3, 3, 0, 0},   // triangle: a structure
-      {5, 6, 0, 0},   // five-bar with a diagonal: statically determinate truss
-      {6, 7, 0, 1},   // Watt or Stephenson six-bar
-      {3, 2, 1, 1},   // cam and follower: two pins and a cam contact
-      {2, 1, 0, 1},   // a lone crank
-      {1, 0, 0, 0},   // the ground alone
+      {4, 4, 0, 1},  // four-bar
+      {5, 5, 0, 2},  // five-bar
+      {3, 3, 0, 0},  // triangle: a structure
+      {5, 6, 0, 0},  // five-bar with a diagonal: statically determinate truss
+      {6, 7, 0, 1},  // Watt or Stephenson six-bar
+      {3, 2, 1, 1},  // cam and follower: two pins and a cam contact
+      {2, 1, 0, 1},  // a lone crank
+      {1, 0, 0, 0},  // the ground alone
   }));
   CAPTURE(links, full, half);
   CHECK(grueblerMobility(links, full, half) == expected);

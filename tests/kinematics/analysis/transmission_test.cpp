@@ -2,8 +2,8 @@
 // where they occur, agreement with the pose solver, and that the exact extremes bound every
 // sampled transmission angle of a fine sweep.
 
-#include "kinematics/analysis/assembly_range.h"
 #include "kinematics/analysis/transmission.h"
+#include "kinematics/analysis/assembly_range.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
 #include "kinematics/solve/sweep.h"
@@ -22,9 +22,19 @@ using linkwright::test::within;
 
 TEST_CASE("fourBarTransmissionAngle reproduces the thesis γ column", "[transmission]") {
   // Thesis Table 5, γ in degrees, printed to two decimals.
-  const auto [crankDeg, gammaDeg] = GENERATE(table<double, double>({
-      {0, 25.21}, {30, 32.76}, {60, 48.19}, {90, 64.62}, {120, 79.02}, {150, 89.07}, {180, 92.73},
-      {210, 89.07}, {240, 79.02}, {270, 64.62}, {300, 48.19}, {330, 32.76}, {360, 25.21}}));
+  const auto [crankDeg, gammaDeg] = GENERATE(table<double, double>({{0, 25.21},
+                                                                    {30, 32.76},
+                                                                    {60, 48.19},
+                                                                    {90, 64.62},
+                                                                    {120, 79.02},
+                                                                    {150, 89.07},
+                                                                    {180, 92.73},
+                                                                    {210, 89.07},
+                                                                    {240, 79.02},
+                                                                    {270, 64.62},
+                                                                    {300, 48.19},
+                                                                    {330, 32.76},
+                                                                    {360, 25.21}}));
   CAPTURE(crankDeg);
   const auto mu = fourBarTransmissionAngle(kThesis, degToRad(crankDeg));
   REQUIRE(mu.has_value());
@@ -79,9 +89,12 @@ TEST_CASE("fourBarTransmissionRange: toggles at the edges of a limited range", "
 }
 
 TEST_CASE("The exact extremes bound a fine sweep's transmission angles", "[transmission]") {
-  const auto [frame, crank, coupler, rocker] = GENERATE(table<double, double, double, double>({
-      {60.0, 25.0, 70.0, 45.0}, {80.0, 20.0, 66.0, 56.0}, {25.0, 60.0, 45.0, 70.0},
-      {60.0, 50.0, 35.0, 40.0}, {60.0, 45.0, 70.0, 25.0}}));
+  const auto [frame, crank, coupler, rocker] =
+      GENERATE(table<double, double, double, double>({{60.0, 25.0, 70.0, 45.0},
+                                                      {80.0, 20.0, 66.0, 56.0},
+                                                      {25.0, 60.0, 45.0, 70.0},
+                                                      {60.0, 50.0, 35.0, 40.0},
+                                                      {60.0, 45.0, 70.0, 25.0}}));
   const FourBarLengths l{frame, crank, coupler, rocker};
   CAPTURE(frame, crank, coupler, rocker);
   const auto m = makeFourBar(l, Branch::Open);
@@ -113,8 +126,8 @@ TEST_CASE("The exact extremes bound a fine sweep's transmission angles", "[trans
   }
   // The extremes are attained where the analysis says. At a toggle μ comes from h ≈ √(round-off)
   // there, so it is 0 or π only to about √ε·(a few): 1e-7.
-  for (const auto& [angle, value] : {std::pair{exact->minimumAtCrank, exact->minimum},
-                                     std::pair{exact->maximumAtCrank, exact->maximum}}) {
+  for (const auto& [angle, value] :
+       {std::pair{exact->minimumAtCrank, exact->minimum}, std::pair{exact->maximumAtCrank, exact->maximum}}) {
     const auto pose = solvePose(*m, {angle, 0.0, 0.0}, {false, false});
     REQUIRE(pose.ok());
     CHECK(pose->transmissionAngle[fourbar::kC.index] == within(value, 1e-7));

@@ -15,10 +15,11 @@ using namespace linkwright::kinematics;
 namespace {
 constexpr TwoLinkArm kSeedArm{0.3, 0.2};  // seed 004: r1 = OA = 0.3 m, r2 = AB = 0.2 m
 const LinePath kSeedPath{{0.3, 0.0}, {0.0, 0.3}, 2.0};
-} // namespace
+}  // namespace
 
 TEST_CASE("both elbow solutions put the links at their lengths and the tip on target", "[analysis][arm]") {
-  for (const Eigen::Vector2d& tip : {Eigen::Vector2d(0.3, 0.1), Eigen::Vector2d(-0.2, 0.25), Eigen::Vector2d(0.05, -0.4)}) {
+  for (const Eigen::Vector2d& tip :
+       {Eigen::Vector2d(0.3, 0.1), Eigen::Vector2d(-0.2, 0.25), Eigen::Vector2d(0.05, -0.4)}) {
     CAPTURE(tip.x(), tip.y());
     const auto open = solveTwoLinkArm(kSeedArm, Branch::Open, tip);
     const auto crossed = solveTwoLinkArm(kSeedArm, Branch::Crossed, tip);
@@ -48,8 +49,10 @@ TEST_CASE("joint rates along the seed's line equal the seed's own velocity formu
     CAPTURE(s.time);
     REQUIRE(s.reachable);
     const double t1 = s.state.upperAngle, t2 = s.state.forearmAngle;
-    CHECK(s.state.upperOmega == Approx((xb * std::cos(t2) + yb * std::sin(t2)) / (0.3 * std::sin(t2 - t1))).epsilon(1e-12));
-    CHECK(s.state.forearmOmega == Approx((xb * std::cos(t1) + yb * std::sin(t1)) / (0.2 * std::sin(t1 - t2))).epsilon(1e-12));
+    CHECK(s.state.upperOmega ==
+          Approx((xb * std::cos(t2) + yb * std::sin(t2)) / (0.3 * std::sin(t2 - t1))).epsilon(1e-12));
+    CHECK(s.state.forearmOmega ==
+          Approx((xb * std::cos(t1) + yb * std::sin(t1)) / (0.2 * std::sin(t1 - t2))).epsilon(1e-12));
   }
 }
 
@@ -67,7 +70,8 @@ TEST_CASE("joint accelerations agree with finite differences of the rates along 
     REQUIRE((now.ok() && before.ok() && after.ok()));
     CHECK(now->upperAlpha == Approx((after->upperOmega - before->upperOmega) / (2 * h)).epsilon(1e-6));
     CHECK(now->forearmAlpha == Approx((after->forearmOmega - before->forearmOmega) / (2 * h)).epsilon(1e-6));
-    CHECK(now->upperOmega == Approx(std::remainder(after->upperAngle - before->upperAngle, 2 * kPi) / (2 * h)).epsilon(1e-6));
+    CHECK(now->upperOmega ==
+          Approx(std::remainder(after->upperAngle - before->upperAngle, 2 * kPi) / (2 * h)).epsilon(1e-6));
   }
 }
 

@@ -4,8 +4,8 @@
 // it does; at each limit the crank and coupler are in line); a quick return is recognised
 // without its kind; a lock between samples ends an assembled range.
 
-#include "kinematics/analysis/assembly_range.h"
 #include "kinematics/design/design_analysis.h"
+#include "kinematics/analysis/assembly_range.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/shaper.h"
@@ -36,11 +36,12 @@ Mechanism tripleRocker(double frameDeg, double phaseDeg) {
               {"O4", GroundPoint{o2 + l.frame * Eigen::Vector2d(std::cos(f), std::sin(f))}},
               {"B", CrankPoint{PointId{0}, l.crank, degToRad(phaseDeg)}},
               {"C", RrrPoint{PointId{1}, l.rocker, PointId{2}, l.coupler, Branch::Crossed}}};
-  m.links = {{"crank", PointId{0}, PointId{2}}, {"rocker", PointId{1}, PointId{3}}, {"coupler", PointId{2}, PointId{3}}};
+  m.links = {
+      {"crank", PointId{0}, PointId{2}}, {"rocker", PointId{1}, PointId{3}}, {"coupler", PointId{2}, PointId{3}}};
   return m;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("a four-bar analyses the same whether built as one or not", "[design][analysis]") {
   const Mechanism m = *makeFourBar(linkwright::test::kThesis, Branch::Crossed);

@@ -26,7 +26,7 @@ FourBarDesign thesis() {
   return d;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("dragging C sets coupler and rocker and lands C on the target", "[model][drag]") {
   const Eigen::Vector2d target(80, 45);

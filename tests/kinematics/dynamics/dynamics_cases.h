@@ -35,7 +35,8 @@ inline kinematics::Mechanism prpYoke() {
   Mechanism m;
   m.points = {{"O2", GroundPoint{Eigen::Vector2d::Zero()}},
               {"B", CrankPoint{PointId{0}, 20.0, 0.0}},
-              {"C", PrpPoint{Guide{LinkId{0}, Eigen::Vector2d::Zero(), 0.0}, Guide{std::nullopt, Eigen::Vector2d(50.0, 0.0), kPi / 2}}}};
+              {"C", PrpPoint{Guide{LinkId{0}, Eigen::Vector2d::Zero(), 0.0},
+                             Guide{std::nullopt, Eigen::Vector2d(50.0, 0.0), kPi / 2}}}};
   m.links = {{"crank", PointId{0}, PointId{1}}};
   return m;
 }
@@ -53,19 +54,22 @@ inline std::vector<DynamicsCase> dynamicsCases() {
                     {},
                     {g, {{"rocker", -2.0}}, {{"coupler", "P", 0, Eigen::Vector2d(5.0, -12.0)}}}},
                    {0.0, turn, 361, 10.0, 40.0}});
-  cases.push_back({"slider-crank", makeSliderCrank(kLs3Engine).value(),
+  cases.push_back({"slider-crank",
+                   makeSliderCrank(kLs3Engine).value(),
                    {{{"crank", 1.2, LinkFramePoint{10.0, 0.0}, 1e-3}, {"rod", 0.6, std::nullopt, std::nullopt}},
                     {{"C", 0, 0.5, 0.0}},
                     {g, {}, {{"", "C", 0, Eigen::Vector2d(-3000.0, 0.0)}}}},
                    {0.0, turn, 361, turn * 50.0, 0.0}});
-  cases.push_back({"shaper", makeShaper(kSeedShaper).value(),
+  cases.push_back({"shaper",
+                   makeShaper(kSeedShaper).value(),
                    {{{"crank", 2.0, std::nullopt, std::nullopt},
                      {"rocker", 6.0, LinkFramePoint{200.0, 10.0}, std::nullopt},
                      {"link", 1.5, std::nullopt, 4e-3}},
                     {{"R", 0, 20.0, 0.0}, {"D", 0, 0.4, 1e-4}},
                     {g, {}, {{"", "R", 0, Eigen::Vector2d(-500.0, 0.0)}}}},
                    {0.0, turn, 361, turn * 3.0, 5.0}});
-  cases.push_back({"watt-ii", makeSixBar(kWattIISixBar).value(),
+  cases.push_back({"watt-ii",
+                   makeSixBar(kWattIISixBar).value(),
                    {{{"crank", 0.2, std::nullopt, std::nullopt},
                      {"coupler", 0.5, std::nullopt, std::nullopt},
                      {"rocker", 0.4, LinkFramePoint{30.0, 5.0}, std::nullopt},
@@ -74,7 +78,8 @@ inline std::vector<DynamicsCase> dynamicsCases() {
                     {},
                     {g, {{"link6", 1.5}}, {}}},
                    {0.0, turn, 361, turn, -3.0}});
-  cases.push_back({"stephenson-ii", makeStephensonIINewton().value(),
+  cases.push_back({"stephenson-ii",
+                   makeStephensonIINewton().value(),
                    {{{"crank", 0.2, std::nullopt, std::nullopt},
                      {"coupler", 0.9, LinkFramePoint{60.0, -15.0}, 3e-3},
                      {"rocker", 0.7, LinkFramePoint{50.0, 20.0}, 2e-3},
@@ -83,7 +88,8 @@ inline std::vector<DynamicsCase> dynamicsCases() {
                     {},
                     {g, {{"rocker", 0.8}}, {{"coupler", "J3", 0, Eigen::Vector2d(0.0, -20.0)}}}},
                    {0.0, turn, 361, turn, 2.0}});
-  cases.push_back({"prp-yoke", prpYoke(),
+  cases.push_back({"prp-yoke",
+                   prpYoke(),
                    {{{"crank", 0.2, std::nullopt, std::nullopt}},
                     {{"C", 0, 0.1, 1e-5}, {"C", 1, 0.3, 0.0}},
                     {g, {}, {{"", "C", 1, Eigen::Vector2d(0.0, -40.0)}}}},
@@ -99,4 +105,4 @@ inline kinematics::Pose poseAt(const kinematics::Mechanism& m, const kinematics:
   return p;
 }
 
-} // namespace linkwright::test
+}  // namespace linkwright::test

@@ -97,7 +97,8 @@ TEST_CASE("inverse dynamics: the frame reactions are minus the rate of change of
 
 TEST_CASE("inverse dynamics: the same linkage in metres and in millimetres gives the same forces", "[dynamics]") {
   LinkageDynamics d;
-  d.links = {{"crank", 0.2, std::nullopt, std::nullopt}, {"coupler", 0.6, LinkFramePoint{17.5, 2.0}, 4e-4},
+  d.links = {{"crank", 0.2, std::nullopt, std::nullopt},
+             {"coupler", 0.6, LinkFramePoint{17.5, 2.0}, 4e-4},
              {"rocker", 0.4, std::nullopt, 8e-5}};
   d.loads.gravity = standardGravity();
   const Mechanism mm = makeFourBar({30.0, 10.0, 35.0, 20.0}, Branch::Open, "mm").value();
@@ -109,7 +110,8 @@ TEST_CASE("inverse dynamics: the same linkage in metres and in millimetres gives
   REQUIRE(a.ok());
   REQUIRE(b.ok());
   CHECK(a->driveTorque == Approx(b->driveTorque).epsilon(1e-12));
-  for (std::size_t j = 0; j < a->revolute.size(); ++j) CHECK((a->revolute[j] - b->revolute[j]).norm() <= 1e-12 * a->revolute[j].norm());
+  for (std::size_t j = 0; j < a->revolute.size(); ++j)
+    CHECK((a->revolute[j] - b->revolute[j]).norm() <= 1e-12 * a->revolute[j].norm());
 }
 
 TEST_CASE("inverse dynamics: a four-bar at a toggle position is Singular, not numbers", "[dynamics]") {

@@ -19,7 +19,7 @@ namespace {
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 const double kInf = std::numeric_limits<double>::infinity();
 
-} // namespace
+}  // namespace
 
 TEST_CASE("metresPerLengthUnit knows m, cm, mm, in and ft", "[dynamics]") {
   CHECK(metresPerLengthUnit("m") == 1.0);
@@ -42,7 +42,8 @@ TEST_CASE("checkDynamics accepts every test case and an empty description", "[dy
 }
 
 TEST_CASE("checkDynamics names the bad field and value", "[dynamics]") {
-  const Mechanism fourBar = makeFourBar({30.0, 10.0, 35.0, 20.0}, Branch::Open, "mm", CouplerPointSpec{10.0, 5.0}).value();
+  const Mechanism fourBar =
+      makeFourBar({30.0, 10.0, 35.0, 20.0}, Branch::Open, "mm", CouplerPointSpec{10.0, 5.0}).value();
   const Mechanism slider = makeSliderCrank(kLs3Engine).value();
   const Mechanism yoke = linkwright::test::prpYoke();
   auto withLink = [](LinkMass l) {
@@ -78,9 +79,12 @@ TEST_CASE("checkDynamics names the bad field and value", "[dynamics]") {
        "links[1].link repeats the link \"crank\""},
       {&slider, LinkageDynamics{{}, {{"B", 0, 1.0, 0.0}}, {}}, "sliders[0].point",
        "sliders[0].point must name a slider's point (an rrp, rpr or prp point; got \"B\")"},
-      {&slider, LinkageDynamics{{}, {{"C", 1, 1.0, 0.0}}, {}}, "sliders[0].guide", "sliders[0].guide must be 0 for C (got 1)"},
-      {&yoke, LinkageDynamics{{}, {{"C", 2, 1.0, 0.0}}, {}}, "sliders[0].guide", "sliders[0].guide must be 0 or 1 for C (got 2)"},
-      {&slider, LinkageDynamics{{}, {{"C", 0, -2.0, 0.0}}, {}}, "sliders[0].mass", "sliders[0].mass must be between 0 and 1e9 kg (got -2)"},
+      {&slider, LinkageDynamics{{}, {{"C", 1, 1.0, 0.0}}, {}}, "sliders[0].guide",
+       "sliders[0].guide must be 0 for C (got 1)"},
+      {&yoke, LinkageDynamics{{}, {{"C", 2, 1.0, 0.0}}, {}}, "sliders[0].guide",
+       "sliders[0].guide must be 0 or 1 for C (got 2)"},
+      {&slider, LinkageDynamics{{}, {{"C", 0, -2.0, 0.0}}, {}}, "sliders[0].mass",
+       "sliders[0].mass must be between 0 and 1e9 kg (got -2)"},
       {&fourBar, LinkageDynamics{{}, {}, {Eigen::Vector2d(0.0, kNaN), {}, {}}}, "loads.gravity.y",
        "loads.gravity.y must be finite and within ±1e6 m/s² (got nan)"},
       {&fourBar, LinkageDynamics{{}, {}, {std::nullopt, {{"rocker", kNaN}}, {}}}, "loads.torques[0].torque",

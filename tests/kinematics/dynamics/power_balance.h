@@ -57,7 +57,7 @@ inline kinematics::PointId blockPin(const kinematics::Mechanism& m, kinematics::
   return point;
 }
 
-} // namespace detail
+}  // namespace detail
 
 /// The balance at `pose` for the driving torque `torque` (N·m) and crank speed `omega2`.
 inline PowerBalance powerBalance(const kinematics::Mechanism& m, const kinematics::LinkageDynamics& d,
@@ -68,7 +68,8 @@ inline PowerBalance powerBalance(const kinematics::Mechanism& m, const kinematic
   PowerBalance b;
   b.drive = torque * omega2;
   b.scale = std::abs(b.drive);
-  auto addMass = [&](double mass, double inertia, double w, double alpha, const Eigen::Vector2d& v, const Eigen::Vector2d& a) {
+  auto addMass = [&](double mass, double inertia, double w, double alpha, const Eigen::Vector2d& v,
+                     const Eigen::Vector2d& a) {
     const double kinetic = mass * v.dot(a) + inertia * w * alpha;
     b.kinetic += kinetic;
     b.gravity += mass * g.dot(v);
@@ -109,4 +110,4 @@ inline PowerBalance powerBalance(const kinematics::Mechanism& m, const kinematic
   return b;
 }
 
-} // namespace linkwright::test
+}  // namespace linkwright::test

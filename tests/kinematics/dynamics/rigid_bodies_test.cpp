@@ -35,7 +35,7 @@ std::vector<std::string> jointNames(const BodyModel& model) {
 
 using Names = std::vector<std::string>;
 
-} // namespace
+}  // namespace
 
 TEST_CASE("bodiesOf: a four-bar has ground, crank, coupler, rocker and four pins", "[dynamics]") {
   const Mechanism m = makeFourBar({60.0, 25.0, 70.0, 45.0}, Branch::Open, "mm", CouplerPointSpec{35.0, 20.0}).value();
@@ -118,8 +118,9 @@ TEST_CASE("bodiesOf: a ternary plate made of constraints alone, with no link on 
   const auto model = bodiesOf(m);
   REQUIRE(model.ok());
   REQUIRE(model->bodies.size() == 6);
-  const auto plate = std::find_if(model->bodies.begin(), model->bodies.end(),
-                                  [&](const Body& b) { return pointNames(m, b) == Names{"J1", "J2", "J3"}; });
+  const auto plate = std::find_if(model->bodies.begin(), model->bodies.end(), [&](const Body& b) {
+    return pointNames(m, b) == Names{"J1", "J2", "J3"};
+  });
   REQUIRE(plate != model->bodies.end());
   CHECK(plate->links.empty());
   CHECK(plate->name.rfind("body", 0) == 0);

@@ -25,13 +25,28 @@ using linkwright::test::kThesis;
 
 namespace {
 
-const std::vector<std::string> kThesisHeader{
-    "crank_angle_deg",    "crank_omega_rad_s",   "crank_alpha_rad_s2",   "coupler_angle_deg",
-    "coupler_omega_rad_s", "coupler_alpha_rad_s2", "rocker_angle_deg",     "rocker_omega_rad_s",
-    "rocker_alpha_rad_s2", "transmission_angle_deg", "B_x_mm",             "B_y_mm",
-    "B_vx_mm_s",          "B_vy_mm_s",           "B_ax_mm_s2",           "B_ay_mm_s2",
-    "C_x_mm",             "C_y_mm",              "C_vx_mm_s",            "C_vy_mm_s",
-    "C_ax_mm_s2",         "C_ay_mm_s2"};
+const std::vector<std::string> kThesisHeader{"crank_angle_deg",
+                                             "crank_omega_rad_s",
+                                             "crank_alpha_rad_s2",
+                                             "coupler_angle_deg",
+                                             "coupler_omega_rad_s",
+                                             "coupler_alpha_rad_s2",
+                                             "rocker_angle_deg",
+                                             "rocker_omega_rad_s",
+                                             "rocker_alpha_rad_s2",
+                                             "transmission_angle_deg",
+                                             "B_x_mm",
+                                             "B_y_mm",
+                                             "B_vx_mm_s",
+                                             "B_vy_mm_s",
+                                             "B_ax_mm_s2",
+                                             "B_ay_mm_s2",
+                                             "C_x_mm",
+                                             "C_y_mm",
+                                             "C_vx_mm_s",
+                                             "C_vy_mm_s",
+                                             "C_ax_mm_s2",
+                                             "C_ay_mm_s2"};
 
 Mechanism fourBar(const FourBarLengths& lengths) {
   const auto m = makeFourBar(lengths, Branch::Open);
@@ -91,18 +106,18 @@ struct CommaDecimal : std::numpunct<char> {
   char do_decimal_point() const override { return ','; }
 };
 
-} // namespace
+}  // namespace
 
 TEST_CASE("sweepCsvHeader names every column with its unit", "[csv_writer]") {
   const Mechanism m = fourBar(kThesis);
   CHECK(io::sweepCsvHeader(m, {}) == kThesisHeader);
-  CHECK(io::sweepCsvHeader(m, {false, false}) ==
-        std::vector<std::string>{"crank_angle_deg", "coupler_angle_deg", "rocker_angle_deg", "transmission_angle_deg",
-                                 "B_x_mm", "B_y_mm", "C_x_mm", "C_y_mm"});
+  CHECK(io::sweepCsvHeader(m, {false, false}) == std::vector<std::string>{"crank_angle_deg", "coupler_angle_deg",
+                                                                          "rocker_angle_deg", "transmission_angle_deg",
+                                                                          "B_x_mm", "B_y_mm", "C_x_mm", "C_y_mm"});
   CHECK(io::sweepCsvHeader(m, {true, false}) ==
         std::vector<std::string>{"crank_angle_deg", "crank_omega_rad_s", "coupler_angle_deg", "coupler_omega_rad_s",
-                                 "rocker_angle_deg", "rocker_omega_rad_s", "transmission_angle_deg", "B_x_mm",
-                                 "B_y_mm", "B_vx_mm_s", "B_vy_mm_s", "C_x_mm", "C_y_mm", "C_vx_mm_s", "C_vy_mm_s"});
+                                 "rocker_angle_deg", "rocker_omega_rad_s", "transmission_angle_deg", "B_x_mm", "B_y_mm",
+                                 "B_vx_mm_s", "B_vy_mm_s", "C_x_mm", "C_y_mm", "C_vx_mm_s", "C_vy_mm_s"});
   const auto withPoint = makeFourBar(kThesis, Branch::Open, "in", CouplerPointSpec{10.0, 5.0});
   REQUIRE(withPoint.ok());
   const std::vector<std::string> header = io::sweepCsvHeader(*withPoint, {});
@@ -119,10 +134,11 @@ TEST_CASE("writeSweepCsv: CRLF rows whose cells read back to the sweep's doubles
   const std::string text = csv(m, r);
   const std::vector<std::string> rows = lines(text);
   REQUIRE(rows.size() == 14);
-  CHECK(rows[0] == "crank_angle_deg,crank_omega_rad_s,crank_alpha_rad_s2,coupler_angle_deg,coupler_omega_rad_s,"
-                   "coupler_alpha_rad_s2,rocker_angle_deg,rocker_omega_rad_s,rocker_alpha_rad_s2,"
-                   "transmission_angle_deg,B_x_mm,B_y_mm,B_vx_mm_s,B_vy_mm_s,B_ax_mm_s2,B_ay_mm_s2,C_x_mm,C_y_mm,"
-                   "C_vx_mm_s,C_vy_mm_s,C_ax_mm_s2,C_ay_mm_s2");
+  CHECK(rows[0] ==
+        "crank_angle_deg,crank_omega_rad_s,crank_alpha_rad_s2,coupler_angle_deg,coupler_omega_rad_s,"
+        "coupler_alpha_rad_s2,rocker_angle_deg,rocker_omega_rad_s,rocker_alpha_rad_s2,"
+        "transmission_angle_deg,B_x_mm,B_y_mm,B_vx_mm_s,B_vy_mm_s,B_ax_mm_s2,B_ay_mm_s2,C_x_mm,C_y_mm,"
+        "C_vx_mm_s,C_vy_mm_s,C_ax_mm_s2,C_ay_mm_s2");
   const std::size_t crank = fourbar::kCrank.index, coupler = fourbar::kCoupler.index, rocker = fourbar::kRocker.index;
   for (std::size_t j = 0; j < r.size(); ++j) {
     CAPTURE(j, rows[j + 1]);
@@ -134,8 +150,7 @@ TEST_CASE("writeSweepCsv: CRLF rows whose cells read back to the sweep's doubles
         r.linkOmega[crank][j],   r.linkAlpha[crank][j],   radToDeg(r.linkAngle[coupler][j]),
         r.linkOmega[coupler][j], r.linkAlpha[coupler][j], radToDeg(r.linkAngle[rocker][j]),
         r.linkOmega[rocker][j],  r.linkAlpha[rocker][j],  radToDeg(r.transmissionAngle[fourbar::kC.index][j])};
-    for (std::size_t k = 0; k < expected.size(); ++k)
-      CHECK(readsBackAs(c[k + 1], expected[k]));
+    for (std::size_t k = 0; k < expected.size(); ++k) CHECK(readsBackAs(c[k + 1], expected[k]));
     for (const std::size_t point : {fourbar::kB.index, fourbar::kC.index}) {
       const std::size_t first = point == fourbar::kB.index ? 10 : 16;
       const Eigen::Vector2d values[] = {r.position[point][j], r.velocity[point][j], r.acceleration[point][j]};
@@ -151,8 +166,9 @@ TEST_CASE("writeSweepCsv: a positions-only sweep has no rate columns", "[csv_wri
   const SweepResult r = run(m, {0.0, kPi, 7, 1.0, 0.0}, {false, false});
   const std::vector<std::string> rows = lines(csv(m, r));
   REQUIRE(rows.size() == 8);
-  CHECK(rows[0] == "crank_angle_deg,coupler_angle_deg,rocker_angle_deg,transmission_angle_deg,B_x_mm,B_y_mm,"
-                   "C_x_mm,C_y_mm");
+  CHECK(rows[0] ==
+        "crank_angle_deg,coupler_angle_deg,rocker_angle_deg,transmission_angle_deg,B_x_mm,B_y_mm,"
+        "C_x_mm,C_y_mm");
   for (std::size_t j = 1; j < rows.size(); ++j) CHECK(cells(rows[j]).size() == 8);
 }
 
@@ -219,8 +235,9 @@ TEST_CASE("csvField quotes per RFC 4180 only where needed", "[csv_writer]") {
   Mechanism m = fourBar(kThesis);
   m.links[fourbar::kRocker.index].name = "out,put";
   const SweepResult r = run(m, {0.0, 1.0, 2, 1.0, 0.0}, {false, false});
-  CHECK(lines(csv(m, r))[0] == "crank_angle_deg,coupler_angle_deg,\"out,put_angle_deg\",transmission_angle_deg,"
-                               "B_x_mm,B_y_mm,C_x_mm,C_y_mm");
+  CHECK(lines(csv(m, r))[0] ==
+        "crank_angle_deg,coupler_angle_deg,\"out,put_angle_deg\",transmission_angle_deg,"
+        "B_x_mm,B_y_mm,C_x_mm,C_y_mm");
 }
 
 TEST_CASE("writeSweepCsv output does not depend on the locale", "[csv_writer]") {

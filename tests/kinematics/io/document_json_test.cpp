@@ -47,7 +47,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return text.replace(at, from.size(), to);
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("a document round-trips every field exactly", "[io][document]") {
   const FourBarDesign d = sampleDesign();
@@ -86,8 +86,11 @@ TEST_CASE("a linkage with moving guides, two-slider pins and free points round-t
   // Every point type and both kinds of guide, so the format note is exercised in full.
   Mechanism m = makeFourBar({60.0, 25.0, 70.0, 45.0}, Branch::Open).value();
   m = addPointOnLink(m, "P", fourbar::kCoupler, 35.0, 20.0).value();
-  m = attachDyad(m, RrpDyadSpec{"S", PointId{4}, 60.0, Guide{fourbar::kRocker, {1.5, -2.0}, 0.25}, Branch::Crossed}).value();
-  m = attachDyad(m, PrpDyadSpec{"Q", Guide{std::nullopt, {30.0, 0.0}, 1.5707963267948966}, Guide{fourbar::kCoupler, {0.0, 10.0}, 0.0}}).value();
+  m = attachDyad(m, RrpDyadSpec{"S", PointId{4}, 60.0, Guide{fourbar::kRocker, {1.5, -2.0}, 0.25}, Branch::Crossed})
+          .value();
+  m = attachDyad(m, PrpDyadSpec{"Q", Guide{std::nullopt, {30.0, 0.0}, 1.5707963267948966},
+                                Guide{fourbar::kCoupler, {0.0, 10.0}, 0.0}})
+          .value();
   m = attachDyad(m, RprDyadSpec{"T", fourbar::kO4, fourbar::kB, 80.0}).value();
   m.points.push_back({"F", FreePoint{Eigen::Vector2d(10.0, 90.0)}});
   m.constraints.push_back({fourbar::kB, PointId{m.points.size() - 1}, 75.0});
@@ -101,8 +104,10 @@ TEST_CASE("a linkage with moving guides, two-slider pins and free points round-t
   INFO((back.ok() ? std::string() : back.error().message));
   REQUIRE(back.ok());
   CHECK(std::get<MechanismDesign>(*back) == d);
-  CHECK_THAT(text, Catch::Contains("{\"name\": \"S\", \"type\": \"rrp\", \"first\": \"P\", \"length\": 60, \"branch\": \"crossed\", "
-                                   "\"guide\": {\"link\": \"rocker\", \"x\": 1.5, \"y\": -2, \"angle_rad\": 0.25}}"));
+  CHECK_THAT(
+      text,
+      Catch::Contains("{\"name\": \"S\", \"type\": \"rrp\", \"first\": \"P\", \"length\": 60, \"branch\": \"crossed\", "
+                      "\"guide\": {\"link\": \"rocker\", \"x\": 1.5, \"y\": -2, \"angle_rad\": 0.25}}"));
   CHECK_THAT(text, Catch::Contains("\"constraints\": [\n      {\"first\": \"B\", \"second\": \"F\", \"length\": 75}"));
 }
 
@@ -146,7 +151,8 @@ TEST_CASE("bad documents are refused with the member named", "[io][document][err
        "this file is document version 7, written by a newer Linkwright; this one reads up to version 3"},
       {replaced(good, "\"version\": 2", "\"version\": 1.5"), "version must be a whole number"},
       {replaced(good, "\"version\": 2", "\"version\": \"1\""), "version must be a number"},
-      {replaced(good, "\"four-bar\"", "\"six-bar\""), "mechanism.type must be \"four-bar\" or \"linkage\" in a version 2 document (got \"six-bar\")"},
+      {replaced(good, "\"four-bar\"", "\"six-bar\""),
+       "mechanism.type must be \"four-bar\" or \"linkage\" in a version 2 document (got \"six-bar\")"},
       {replaced(good, "\"coupler\": 70", "\"coupler\": -70"),
        "mechanism.lengths.coupler length must be positive and finite (got -70)"},
       {replaced(good, "\"coupler\": 70", "\"coupler\": 0"), "mechanism.lengths.coupler length must be positive"},
@@ -166,18 +172,22 @@ TEST_CASE("bad documents are refused with the member named", "[io][document][err
 }
 
 TEST_CASE("unknown members are ignored, so minor additions stay readable", "[io][document]") {
-  const std::string text = replaced(writeDocument(sampleDesign()), "\"version\": 2,", "\"version\": 2,\n  \"comment\": {\"x\": [1]},");
+  const std::string text =
+      replaced(writeDocument(sampleDesign()), "\"version\": 2,", "\"version\": 2,\n  \"comment\": {\"x\": [1]},");
   CHECK(fourBar(readDocument(text)) == sampleDesign());
 }
 
 TEST_CASE("bad linkage documents are refused with the member named", "[io][document][errors]") {
   const std::string good = writeDocument(designFromExample(*findMechanismExample("watt-ii")));
   auto [text, expected] = GENERATE_COPY(table<std::string, std::string>({
-      {replaced(good, "\"version\": 2", "\"version\": 1"), "must be \"four-bar\" in a version 1 document (got \"linkage\")"},
-      {replaced(good, "\"type\": \"rrr\"", "\"type\": \"rrrr\""), "mechanism.points[3].type must be one of ground, crank"},
+      {replaced(good, "\"version\": 2", "\"version\": 1"),
+       "must be \"four-bar\" in a version 1 document (got \"linkage\")"},
+      {replaced(good, "\"type\": \"rrr\"", "\"type\": \"rrrr\""),
+       "mechanism.points[3].type must be one of ground, crank"},
       {replaced(good, "\"first\": \"B\", \"first_length\"", "\"first\": \"Z\", \"first_length\""),
        "mechanism.points[3].first names no point of this mechanism (got \"Z\")"},
-      {replaced(good, "\"first_length\": 70", "\"first_length\": -70"), "mechanism.points[3].first_length must be positive and finite (got -70)"},
+      {replaced(good, "\"first_length\": 70", "\"first_length\": -70"),
+       "mechanism.points[3].first_length must be positive and finite (got -70)"},
       {replaced(good, "\"link\": \"rocker\"", "\"link\": \"arm\""), "names no link of this mechanism (got \"arm\")"},
       {replaced(good, "{\"name\": \"O4\"", "{\"name\": \"O2\""), "mechanism.points[1].name repeats the name 'O2'"},
       {replaced(good, "\"links\": [", "\"links\": 3, \"x\": ["), "mechanism.links must be an array"},

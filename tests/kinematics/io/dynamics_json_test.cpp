@@ -2,10 +2,10 @@
 // a design with them is written as version 3 and one without as version 2, version 2 files
 // still open, and bad values are refused naming the document member.
 
-#include "kinematics/io/document_json.h"
+#include "kinematics/io/dynamics_json.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/design/mechanism_design.h"
-#include "kinematics/io/dynamics_json.h"
+#include "kinematics/io/document_json.h"
 
 #include "tests/kinematics/dynamics/dynamics_cases.h"
 
@@ -25,7 +25,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return text.replace(at, from.size(), to);
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("dynamics round-trip exactly in a document, for every kind of linkage", "[io][document][dynamics]") {
   for (const auto& c : linkwright::test::dynamicsCases()) {
@@ -51,21 +51,26 @@ TEST_CASE("funsho-fourbar's document holds its masses in the documented form", "
   REQUIRE(design.has_value());
   const std::string text = writeDocument(*design);
   CHECK_THAT(text, Catch::StartsWith("{\n  \"format\": \"linkwright\",\n  \"version\": 3,"));
-  CHECK_THAT(text, Catch::EndsWith("  \"analysis\": {\"from_deg\": 0, \"to_deg\": 360, \"samples\": 721},\n"
-                                   "  \"dynamics\": {\n"
-                                   "    \"links\": {\n"
-                                   "      \"crank\": {\"mass_kg\": 0.2, \"centre\": {\"along\": 5, \"across\": 0}, \"inertia_kg_m2\": 1e-05},\n"
-                                   "      \"coupler\": {\"mass_kg\": 0.6, \"centre\": {\"along\": 17.5, \"across\": 0}, \"inertia_kg_m2\": 4e-04},\n"
-                                   "      \"rocker\": {\"mass_kg\": 0.4, \"centre\": {\"along\": 10, \"across\": 0}, \"inertia_kg_m2\": 8e-05}\n"
-                                   "    }\n"
-                                   "  }\n"
-                                   "}\n"));
+  CHECK_THAT(
+      text,
+      Catch::EndsWith(
+          "  \"analysis\": {\"from_deg\": 0, \"to_deg\": 360, \"samples\": 721},\n"
+          "  \"dynamics\": {\n"
+          "    \"links\": {\n"
+          "      \"crank\": {\"mass_kg\": 0.2, \"centre\": {\"along\": 5, \"across\": 0}, \"inertia_kg_m2\": 1e-05},\n"
+          "      \"coupler\": {\"mass_kg\": 0.6, \"centre\": {\"along\": 17.5, \"across\": 0}, \"inertia_kg_m2\": "
+          "4e-04},\n"
+          "      \"rocker\": {\"mass_kg\": 0.4, \"centre\": {\"along\": 10, \"across\": 0}, \"inertia_kg_m2\": 8e-05}\n"
+          "    }\n"
+          "  }\n"
+          "}\n"));
   const auto back = readDocument(text);
   REQUIRE(back.ok());
   CHECK(*back == *design);
 }
 
-TEST_CASE("a design without dynamics is still a version 2 document, and version 2 reads", "[io][document][dynamics][migration]") {
+TEST_CASE("a design without dynamics is still a version 2 document, and version 2 reads",
+          "[io][document][dynamics][migration]") {
   const auto design = designForExample("thesis-crank-rocker");
   REQUIRE(design.has_value());
   const std::string text = writeDocument(*design);
@@ -94,20 +99,25 @@ TEST_CASE("defaults are left out and read back as defaults", "[io][document][dyn
 TEST_CASE("bad dynamics are refused naming the document member", "[io][document][dynamics][errors]") {
   const std::string good = writeDocument(*designForExample("funsho-fourbar"));
   auto [text, expected] = GENERATE_COPY(table<std::string, std::string>({
-      {replaced(good, "\"mass_kg\": 0.6", "\"mass_kg\": -0.6"), "dynamics.links.coupler.mass_kg must be between 0 and 1e9 kg (got -0.6)"},
+      {replaced(good, "\"mass_kg\": 0.6", "\"mass_kg\": -0.6"),
+       "dynamics.links.coupler.mass_kg must be between 0 and 1e9 kg (got -0.6)"},
       {replaced(good, "\"mass_kg\": 0.6", "\"mass_kg\": \"heavy\""), "dynamics.links.coupler.mass_kg must be a number"},
       {replaced(good, "\"mass_kg\": 0.6, ", ""), "dynamics.links.coupler.mass_kg is missing"},
       {replaced(good, "\"inertia_kg_m2\": 8e-05", "\"inertia_kg_m2\": -8e-05"),
        "dynamics.links.rocker.inertia_kg_m2 must be between 0 and 1e27 kg·m² (got -8e-05)"},
-      {replaced(good, "\"coupler\": {", "\"bar\": {"), "dynamics.links.bar names no link of this mechanism (got \"bar\")"},
+      {replaced(good, "\"coupler\": {", "\"bar\": {"),
+       "dynamics.links.bar names no link of this mechanism (got \"bar\")"},
       {replaced(good, "\"links\": {", "\"links\": ["), "not valid JSON"},
       {replaced(good, "\"links\": {\n", "\"sliders\": [{\"point\": \"C\", \"mass_kg\": 1}],\n    \"links\": {\n"),
        "dynamics.sliders[0].point must name a slider's point (an rrp, rpr or prp point; got \"C\")"},
       {replaced(good, "\"links\": {\n", "\"torques\": [{\"link\": \"rocker\"}],\n    \"links\": {\n"),
        "dynamics.torques[0].torque_N_m is missing"},
-      {replaced(good, "\"links\": {\n", "\"forces\": [{\"link\": \"coupler\", \"point\": \"O4\", \"x_N\": 1, \"y_N\": 0}],\n    \"links\": {\n"),
+      {replaced(
+           good, "\"links\": {\n",
+           "\"forces\": [{\"link\": \"coupler\", \"point\": \"O4\", \"x_N\": 1, \"y_N\": 0}],\n    \"links\": {\n"),
        "dynamics.forces[0].point must lie on the body of link coupler (got \"O4\")"},
-      {replaced(good, "\"links\": {\n", "\"gravity_m_s2\": {\"x\": 0},\n    \"links\": {\n"), "dynamics.gravity_m_s2.y is missing"},
+      {replaced(good, "\"links\": {\n", "\"gravity_m_s2\": {\"x\": 0},\n    \"links\": {\n"),
+       "dynamics.gravity_m_s2.y is missing"},
   }));
   const auto read = readDocument(text);
   REQUIRE_FALSE(read.ok());

@@ -1,9 +1,9 @@
 // Force columns (force_columns.h) and the CSV they make: names with units for pins, slider
 // blocks and the frame, values from the force sweep, empty cells where forces are undefined.
 
-#include "kinematics/io/csv_writer.h"
-#include "kinematics/design/examples.h"
 #include "kinematics/io/force_columns.h"
+#include "kinematics/design/examples.h"
+#include "kinematics/io/csv_writer.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/shaper.h"
@@ -24,15 +24,16 @@ std::vector<std::string> names(const std::vector<ForceColumn>& columns) {
   return out;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("force columns of a shaper: pins, the slotted link's block, the ram and the frame", "[io][dynamics]") {
   const auto model = bodiesOf(makeShaper(kSeedShaper).value()).value();
   CHECK(names(forceColumns(model)) ==
-        std::vector<std::string>{"F_O2_x_N", "F_O2_y_N", "F_O2_N", "F_O4_x_N", "F_O4_y_N", "F_O4_N", "F_B_x_N", "F_B_y_N",
-                                 "F_B_N", "F_D_x_N", "F_D_y_N", "F_D_N", "F_R_x_N", "F_R_y_N", "F_R_N", "N_B_D_N",
-                                 "M_B_D_Nm", "N_R_N", "M_R_Nm", "T_drive_Nm", "shaking_x_N", "shaking_y_N", "shaking_N",
-                                 "shaking_moment_Nm"});
+        std::vector<std::string>{
+            "F_O2_x_N", "F_O2_y_N",   "F_O2_N",      "F_O4_x_N",    "F_O4_y_N",  "F_O4_N",
+            "F_B_x_N",  "F_B_y_N",    "F_B_N",       "F_D_x_N",     "F_D_y_N",   "F_D_N",
+            "F_R_x_N",  "F_R_y_N",    "F_R_N",       "N_B_D_N",     "M_B_D_Nm",  "N_R_N",
+            "M_R_Nm",   "T_drive_Nm", "shaking_x_N", "shaking_y_N", "shaking_N", "shaking_moment_Nm"});
 }
 
 TEST_CASE("the CSV with forces leaves force cells empty where they are undefined", "[io][dynamics]") {

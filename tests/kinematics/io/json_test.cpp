@@ -24,7 +24,8 @@ TEST_CASE("parses every JSON value kind and keeps member order", "[io][json]") {
   CHECK((*b)[3].is_boolean());
   CHECK_FALSE((*b)[3].get<bool>());
   CHECK((*b)[4].is_null());
-  CHECK(findMember(*findMember(*v, "a"), "s")->get<std::string>() == "x\"\\/\n\xc3\xa9\xf0\x9f\x98\x80");  // é and 😀 in UTF-8
+  CHECK(findMember(*findMember(*v, "a"), "s")->get<std::string>() ==
+        "x\"\\/\n\xc3\xa9\xf0\x9f\x98\x80");  // é and 😀 in UTF-8
   CHECK(findMember(*v, "missing") == nullptr);
   CHECK(findMember(*b, "b") == nullptr);  // an array has no members
 }
@@ -41,7 +42,8 @@ TEST_CASE("numbers read back bit for bit", "[io][json]") {
 TEST_CASE("malformed JSON is refused with line, column and what was expected", "[io][json][errors]") {
   auto [text, expected] = GENERATE(table<std::string, std::string>({
       {"", "line 1, column 1: syntax error while parsing value - unexpected end of input"},
-      {"{\"a\" 1}", "line 1, column 6: syntax error while parsing object separator - unexpected number literal; expected ':'"},
+      {"{\"a\" 1}",
+       "line 1, column 6: syntax error while parsing object separator - unexpected number literal; expected ':'"},
       {"{\"a\": 1,\n \"b\": }", "line 2, column 7: syntax error while parsing value - unexpected '}'"},
       {"[1, 2", "line 1, column 6: syntax error while parsing array - unexpected end of input; expected ']'"},
       {"[01]", "line 1, column 3: syntax error while parsing array - unexpected number literal"},

@@ -36,14 +36,29 @@ struct CommaDecimal : std::numpunct<char> {
   std::string do_grouping() const override { return "\3"; }
 };
 
-} // namespace
+}  // namespace
 
 TEST_CASE("formatDouble reads back to the same bits", "[number_format]") {
-  const double values[] = {1.0, -1.0, 0.1, 1.0 / 3.0, 2.0 / 3.0, 3.141592653589793, 70.0, -0.5, 1e-300, 1e300,
+  const double values[] = {1.0,
+                           -1.0,
+                           0.1,
+                           1.0 / 3.0,
+                           2.0 / 3.0,
+                           3.141592653589793,
+                           70.0,
+                           -0.5,
+                           1e-300,
+                           1e300,
                            5e-324,  // smallest subnormal
-                           2.2250738585072014e-308, std::numeric_limits<double>::max(),
-                           std::numeric_limits<double>::epsilon(), 123456789012345678.0, 1e21, 1e22,
-                           29.999999999999996, 0.30000000000000004, -1.2345678901234567e-7};
+                           2.2250738585072014e-308,
+                           std::numeric_limits<double>::max(),
+                           std::numeric_limits<double>::epsilon(),
+                           123456789012345678.0,
+                           1e21,
+                           1e22,
+                           29.999999999999996,
+                           0.30000000000000004,
+                           -1.2345678901234567e-7};
   for (const double v : values) {
     const std::string text = formatDouble(v);
     CAPTURE(text);

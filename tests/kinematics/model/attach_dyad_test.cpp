@@ -1,8 +1,8 @@
 // Attaching dyads (attach_dyad.h), including sliders on moving guides (RRP) and two sliders
 // pinned together (PRP): loops close, rates agree with finite differences, errors are named.
 
-#include "kinematics/analysis/mobility.h"
 #include "kinematics/model/attach_dyad.h"
+#include "kinematics/analysis/mobility.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/vec2.h"
@@ -24,7 +24,8 @@ Mechanism thesisFourBar() { return makeFourBar(linkwright::test::kThesis, Branch
 // the coupler: an RRP dyad whose guide turns with the rocker.
 Mechanism sliderOnRocker() {
   Mechanism m = addPointOnLink(thesisFourBar(), "P", fourbar::kCoupler, 35.0, 20.0).value();
-  return attachDyad(m, RrpDyadSpec{"S", PointId{4}, 60.0, Guide{fourbar::kRocker, {0.0, 0.0}, 0.0}, Branch::Open}).value();
+  return attachDyad(m, RrpDyadSpec{"S", PointId{4}, 60.0, Guide{fourbar::kRocker, {0.0, 0.0}, 0.0}, Branch::Open})
+      .value();
 }
 
 // A pin Q in a vertical ground slot x = 30 and in a slot along the coupler, 10 mm off it: PRP.
@@ -34,7 +35,7 @@ Mechanism pinInTwoSlots() {
       .value();
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("a slider on a moving guide stays on the guide at its rod's length", "[model][attach][rrp]") {
   const Mechanism m = sliderOnRocker();
@@ -78,7 +79,7 @@ TEST_CASE("a pin in two slots is where the slots cross, and moves exactly", "[mo
 
 TEST_CASE("parallel guides cannot be assembled, and say so", "[model][attach][prp]") {
   const Mechanism m = attachDyad(thesisFourBar(), PrpDyadSpec{"Q", Guide{std::nullopt, {0.0, 0.0}, 0.0},
-                                                             Guide{std::nullopt, {0.0, 5.0}, kPi}})
+                                                              Guide{std::nullopt, {0.0, 5.0}, kPi}})
                           .value();
   const auto pose = solvePose(m, {0.3, 1.0, 0.0});
   REQUIRE_FALSE(pose.ok());
@@ -100,7 +101,8 @@ TEST_CASE("attaching a dyad checks what it is given", "[model][attach]") {
     CHECK_THAT(m.error().message, Catch::Contains("repeats the name 'C'"));
   }
   SECTION("a guide on a link that does not exist") {
-    const auto m = attachDyad(base, RrpDyadSpec{"S", fourbar::kC, 5.0, Guide{LinkId{7}, {0.0, 0.0}, 0.0}, Branch::Open});
+    const auto m =
+        attachDyad(base, RrpDyadSpec{"S", fourbar::kC, 5.0, Guide{LinkId{7}, {0.0, 0.0}, 0.0}, Branch::Open});
     REQUIRE_FALSE(m.ok());
     CHECK(m.error().field == "points[4].guide.link");
   }

@@ -1,8 +1,8 @@
 // Tests kinematics/model/fourbar.h (and the seed examples of design/examples.h): the built
 // mechanism's layout, ids and lengths, and the length checks with their messages.
 
-#include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/units.h"
 
@@ -73,13 +73,11 @@ TEST_CASE("makeFourBar names the invalid length and its value", "[fourbar][error
   const double inf = std::numeric_limits<double>::infinity();
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const auto [field, value, shown] = GENERATE_COPY(table<std::string, double, std::string>({
-      {"frame", 0.0, "0"},       {"frame", -60.0, "-60"},    {"frame", nan, "nan"},
-      {"frame", inf, "inf"},     {"frame", -inf, "-inf"},    {"crank", 0.0, "0"},
-      {"crank", -25.0, "-25"},   {"crank", nan, "nan"},      {"crank", inf, "inf"},
-      {"crank", -inf, "-inf"},   {"coupler", 0.0, "0"},      {"coupler", -70.0, "-70"},
-      {"coupler", nan, "nan"},   {"coupler", inf, "inf"},    {"coupler", -inf, "-inf"},
-      {"rocker", 0.0, "0"},      {"rocker", -0.5, "-0.5"},   {"rocker", nan, "nan"},
-      {"rocker", inf, "inf"},    {"rocker", -inf, "-inf"},
+      {"frame", 0.0, "0"},      {"frame", -60.0, "-60"}, {"frame", nan, "nan"},     {"frame", inf, "inf"},
+      {"frame", -inf, "-inf"},  {"crank", 0.0, "0"},     {"crank", -25.0, "-25"},   {"crank", nan, "nan"},
+      {"crank", inf, "inf"},    {"crank", -inf, "-inf"}, {"coupler", 0.0, "0"},     {"coupler", -70.0, "-70"},
+      {"coupler", nan, "nan"},  {"coupler", inf, "inf"}, {"coupler", -inf, "-inf"}, {"rocker", 0.0, "0"},
+      {"rocker", -0.5, "-0.5"}, {"rocker", nan, "nan"},  {"rocker", inf, "inf"},    {"rocker", -inf, "-inf"},
   }));
   CAPTURE(field, shown);
   FourBarLengths lengths = kThesis;
@@ -98,8 +96,7 @@ TEST_CASE("makeFourBar names the invalid length and its value", "[fourbar][error
   CHECK(*same == m.error());
 }
 
-TEST_CASE("makeFourBar reports the first invalid length in frame, crank, coupler, rocker order",
-          "[fourbar][errors]") {
+TEST_CASE("makeFourBar reports the first invalid length in frame, crank, coupler, rocker order", "[fourbar][errors]") {
   const auto m = makeFourBar({60.0, 25.0, -70.0, 0.0}, Branch::Open);
   REQUIRE_FALSE(m.ok());
   CHECK(m.error().field == "coupler");

@@ -33,14 +33,16 @@ bool allFinite(const SweepResult& s) {
   return true;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("each bound accepts its value and refuses the next double with the field, value and range",
           "[domain][errors]") {
   CHECK_FALSE(checkLength(kMinLength, "crank"));
   CHECK_FALSE(checkLength(kMaxLength, "crank"));
-  CHECK(checkLength(below(kMinLength), "crank")->message == "crank length must be between 1e-6 and 1e9 (got 9.999999999999997e-07)");
-  CHECK(checkLength(above(kMaxLength), "crank")->message == "crank length must be between 1e-6 and 1e9 (got 1000000000.0000001)");
+  CHECK(checkLength(below(kMinLength), "crank")->message ==
+        "crank length must be between 1e-6 and 1e9 (got 9.999999999999997e-07)");
+  CHECK(checkLength(above(kMaxLength), "crank")->message ==
+        "crank length must be between 1e-6 and 1e9 (got 1000000000.0000001)");
   CHECK(checkLength(-70.0, "coupler")->message == "coupler length must be positive and finite (got -70)");
   CHECK_FALSE(checkCoordinate(-kMaxLength, "O4.x"));
   CHECK(checkCoordinate(above(kMaxLength), "O4.x")->message == "O4.x must be within ±1e9 (got 1000000000.0000001)");
@@ -48,7 +50,8 @@ TEST_CASE("each bound accepts its value and refuses the next double with the fie
   CHECK_FALSE(checkMagnitude(-kMaxOmega, "omega", kMaxOmega, "rad/s"));
   CHECK(checkMagnitude(above(kMaxOmega), "omega", kMaxOmega, "rad/s")->field == "omega");
   CHECK_FALSE(checkNonNegative(kMaxMass, "mass", kMaxMass, "kg"));
-  CHECK(checkNonNegative(-0.0 - 1e-300, "mass", kMaxMass, "kg")->message == "mass must be between 0 and 1e9 kg (got -1e-300)");
+  CHECK(checkNonNegative(-0.0 - 1e-300, "mass", kMaxMass, "kg")->message ==
+        "mass must be between 0 and 1e9 kg (got -1e-300)");
 }
 
 TEST_CASE("a linkage may span at most 1e6 times its shortest link", "[domain][errors]") {
@@ -56,8 +59,9 @@ TEST_CASE("a linkage may span at most 1e6 times its shortest link", "[domain][er
   const auto wide = makeFourBar({above(1e6), 1.0, 2.0, 1e6}, Branch::Open);
   REQUIRE_FALSE(wide.ok());
   CHECK(wide.error().field == "lengths");
-  CHECK(wide.error().message == "lengths span too wide a range: link crank is 1 mm but O4.x is 1000000.0000000001 mm, "
-                                "1e+06 times as much; a linkage's largest dimension may be at most 1e6 times its shortest link");
+  CHECK(wide.error().message ==
+        "lengths span too wide a range: link crank is 1 mm but O4.x is 1000000.0000000001 mm, "
+        "1e+06 times as much; a linkage's largest dimension may be at most 1e6 times its shortest link");
   // Coordinates count too: a slider's guide far from a short crank.
   const auto far = makeSliderCrank({1e-3, 2e-3, 2e3, false});
   REQUIRE_FALSE(far.ok());
@@ -88,7 +92,8 @@ TEST_CASE("at the domain's corners every kinematic and force output is finite", 
     CHECK(allFinite(*s));
     // Heaviest links with the largest loads.
     LinkageDynamics d;
-    for (const char* link : {"crank", "coupler", "rocker"}) d.links.push_back({link, kMaxMass, std::nullopt, kMaxInertia});
+    for (const char* link : {"crank", "coupler", "rocker"})
+      d.links.push_back({link, kMaxMass, std::nullopt, kMaxInertia});
     d.loads.gravity = Eigen::Vector2d(kMaxGravity, -kMaxGravity);
     d.loads.torques.push_back({"rocker", kMaxTorque});
     d.loads.forces.push_back({"coupler", "C", 0, Eigen::Vector2d(kMaxForce, -kMaxForce)});

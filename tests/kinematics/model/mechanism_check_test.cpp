@@ -2,8 +2,8 @@
 // before the solvers may assume it, each broken on an otherwise valid four-bar, with the
 // field and the message that name the culprit.
 
-#include "kinematics/model/fourbar.h"
 #include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/fourbar.h"
 
 #include "tests/support/approx.h"
 
@@ -40,7 +40,7 @@ struct BrokenCase {
   std::string message;
 };
 
-} // namespace
+}  // namespace
 
 TEST_CASE("checkMechanism accepts the four-bar and a six-bar built on it", "[mechanism_check]") {
   Mechanism m = fourBarWithPoint();
@@ -77,16 +77,24 @@ TEST_CASE("checkMechanism names the first structural or numeric problem", "[mech
        },
        ErrorCode::InvalidStructure, "points", "points must contain exactly one crank (got 0)"},
       {"two cranks",
-       [](Mechanism& m) { m.points.push_back({"B2", CrankPoint{fourbar::kO4, 10.0, 0.0}}); },
+       [](Mechanism& m) {
+         m.points.push_back({"B2", CrankPoint{fourbar::kO4, 10.0, 0.0}});
+       },
        ErrorCode::InvalidStructure, "points", "points must contain exactly one crank (got 2)"},
       {"a crank pivot that is not on the ground",
-       [](Mechanism& m) { m.points.push_back({"B2", CrankPoint{fourbar::kB, 10.0, 0.0}}); },
+       [](Mechanism& m) {
+         m.points.push_back({"B2", CrankPoint{fourbar::kB, 10.0, 0.0}});
+       },
        ErrorCode::InvalidStructure, "points[5].pivot", "points[5].pivot must be a ground point"},
       {"a link between points not held at a fixed distance",
-       [](Mechanism& m) { m.links.push_back({"strut", fourbar::kO2, fourbar::kC}); },
+       [](Mechanism& m) {
+         m.links.push_back({"strut", fourbar::kO2, fourbar::kC});
+       },
        ErrorCode::InvalidStructure, "links[3]", "links[3] joins points that are not held at a fixed distance"},
       {"a link to a point that does not exist",
-       [](Mechanism& m) { m.links.push_back({"ghost", fourbar::kB, PointId{9}}); },
+       [](Mechanism& m) {
+         m.links.push_back({"ghost", fourbar::kB, PointId{9}});
+       },
        ErrorCode::InvalidStructure, "links[3]", "links[3] refers to a point that does not exist"},
       {"duplicate point names", [](Mechanism& m) { m.points[3].name = m.points[2].name; }, ErrorCode::InvalidStructure,
        "points[3].name", "points[3].name repeats the name 'B'"},
@@ -110,8 +118,7 @@ TEST_CASE("checkMechanism names the first structural or numeric problem", "[mech
          m.links.push_back({"extra", fourbar::kO2, PointId{6}});
        },
        ErrorCode::InvalidStructure, "points[5].link", "points[5].link must be a link between points defined before it"},
-      {"a negative dyad length",
-       [](Mechanism& m) { std::get<RrrPoint>(m.points[3].definition).firstLength = -70.0; },
+      {"a negative dyad length", [](Mechanism& m) { std::get<RrrPoint>(m.points[3].definition).firstLength = -70.0; },
        ErrorCode::InvalidValue, "points[3].firstLength",
        "points[3].firstLength length must be positive and finite (got -70)"},
       {"a zero crank length", [](Mechanism& m) { std::get<CrankPoint>(m.points[2].definition).length = 0.0; },
@@ -125,8 +132,8 @@ TEST_CASE("checkMechanism names the first structural or numeric problem", "[mech
        },
        ErrorCode::InvalidValue, "points[2].phase", "points[2].phase must be finite (got inf)"},
       {"a NaN offset on the coupler",
-       [nan](Mechanism& m) { std::get<AttachedPoint>(m.points[4].definition).across = nan; },
-       ErrorCode::InvalidValue, "points[4].across", "points[4].across must be finite (got nan)"},
+       [nan](Mechanism& m) { std::get<AttachedPoint>(m.points[4].definition).across = nan; }, ErrorCode::InvalidValue,
+       "points[4].across", "points[4].across must be finite (got nan)"},
   };
   for (const BrokenCase& c : cases) {
     DYNAMIC_SECTION(c.what) {

@@ -2,12 +2,12 @@
 // structure whichever way it was built (parents in either order, frame in any direction,
 // crank with a phase, coupler points), and nothing else is taken for one.
 
+#include "kinematics/model/recognise.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
-#include "kinematics/model/recognise.h"
 #include "kinematics/model/shaper.h"
-#include "kinematics/model/slider_crank.h"
 #include "kinematics/model/sixbar.h"
+#include "kinematics/model/slider_crank.h"
 #include "kinematics/model/units.h"
 
 #include "tests/support/approx.h"
@@ -25,16 +25,18 @@ namespace {
 Mechanism drawnFourBar(Branch dyadBranch) {
   const double frameAngle = degToRad(30.0);
   Mechanism m;
-  m.points = {{"O4", GroundPoint{Eigen::Vector2d(100.0, 50.0) + kThesis.frame * Eigen::Vector2d(std::cos(frameAngle), std::sin(frameAngle))}},
+  m.points = {{"O4", GroundPoint{Eigen::Vector2d(100.0, 50.0) +
+                                 kThesis.frame * Eigen::Vector2d(std::cos(frameAngle), std::sin(frameAngle))}},
               {"O2", GroundPoint{Eigen::Vector2d(100.0, 50.0)}},
               {"B", CrankPoint{PointId{1}, kThesis.crank, degToRad(10.0)}},
               {"C", RrrPoint{PointId{0}, kThesis.rocker, PointId{2}, kThesis.coupler, dyadBranch}}};
-  m.links = {{"crank", PointId{1}, PointId{2}}, {"rocker", PointId{0}, PointId{3}}, {"coupler", PointId{2}, PointId{3}}};
+  m.links = {
+      {"crank", PointId{1}, PointId{2}}, {"rocker", PointId{0}, PointId{3}}, {"coupler", PointId{2}, PointId{3}}};
   m.points.push_back({"P", AttachedPoint{LinkId{2}, 20.0, 10.0}});
   return m;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("asFourBar reads makeFourBar's four-bars back exactly", "[recognise]") {
   for (const Branch branch : {Branch::Open, Branch::Crossed}) {

@@ -79,10 +79,12 @@ TEST_CASE("shaper extremes match the SolidWorks table of seed 003", "[model][sha
   const SweepSpec spec{0.0, 2.0 * kPi, 73, 2.0 * kPi * hz, 0.0};
   const auto ram = shaper::kRam.index;
   const auto rocker = shaper::kRocker.index;
-  CHECK(extremaOf(*m, spec, [&](const Pose& p, double) { return std::abs(p.velocity[ram].x()) / 1000.0; }).maximum.value ==
-        Approx(ramV).margin(0.01));
-  CHECK(extremaOf(*m, spec, [&](const Pose& p, double) { return std::abs(p.acceleration[ram].x()) / 1000.0; }).maximum.value ==
-        Approx(ramA).epsilon(2e-4));
+  CHECK(extremaOf(*m, spec, [&](const Pose& p, double) {
+          return std::abs(p.velocity[ram].x()) / 1000.0;
+        }).maximum.value == Approx(ramV).margin(0.01));
+  CHECK(extremaOf(*m, spec, [&](const Pose& p, double) {
+          return std::abs(p.acceleration[ram].x()) / 1000.0;
+        }).maximum.value == Approx(ramA).epsilon(2e-4));
   CHECK(extremaOf(*m, spec, [&](const Pose& p, double) { return std::abs(p.linkOmega[rocker]); }).maximum.value ==
         Approx(rockerW).margin(0.01));
   CHECK(extremaOf(*m, spec, [&](const Pose& p, double) { return std::abs(p.linkAlpha[rocker]); }).maximum.value ==
@@ -111,11 +113,12 @@ TEST_CASE("the shaper's time ratio and stroke come out exactly", "[analysis][qui
   CHECK(q->stroke == Approx(x.maximum.value - x.minimum.value).epsilon(1e-9));
 }
 
-TEST_CASE("a Whitworth shaper turns its slotted link fully; a pivot on the crank circle is refused", "[model][shaper][errors]") {
+TEST_CASE("a Whitworth shaper turns its slotted link fully; a pivot on the crank circle is refused",
+          "[model][shaper][errors]") {
   ShaperGeometry whitworth = kSeedShaper;
   whitworth.rockerPivot = {0.0, -40.0};  // inside the crank circle
-  whitworth.rocker = 75.0;                // short enough that the ram on a guide through O4
-  whitworth.guideHeight = -40.0;          // stays within the link's reach all the way round
+  whitworth.rocker = 75.0;               // short enough that the ram on a guide through O4
+  whitworth.guideHeight = -40.0;         // stays within the link's reach all the way round
   CHECK(whitworth.link == 150.0);
   const auto m = makeShaper(whitworth);
   REQUIRE(m.ok());
@@ -136,7 +139,8 @@ TEST_CASE("a Whitworth shaper turns its slotted link fully; a pivot on the crank
   CHECK(q->slowStrokeCrankArc == Approx(kPi + 2.0 * pinAngle).epsilon(1e-12));
   CHECK(q->timeRatio == Approx((kPi + 2.0 * pinAngle) / (kPi - 2.0 * pinAngle)).epsilon(1e-12));
   // Independently: the ram's refined extremes over a sweep sit at those crank angles.
-  const auto x = extremaOf(*m, {0.0, 2.0 * kPi, 37, 1.0, 0.0}, [](const Pose& p, double) { return p.position[shaper::kRam.index].x(); });
+  const auto x = extremaOf(*m, {0.0, 2.0 * kPi, 37, 1.0, 0.0},
+                           [](const Pose& p, double) { return p.position[shaper::kRam.index].x(); });
   CHECK(x.maximum.value - x.minimum.value == Approx(q->stroke).epsilon(1e-9));
   CHECK(std::remainder(x.maximum.inputAngle - q->firstLimitCrankAngle, 2.0 * kPi) == Approx(0.0).margin(1e-6));
   CHECK(std::remainder(x.minimum.inputAngle - q->secondLimitCrankAngle, 2.0 * kPi) == Approx(0.0).margin(1e-6));

@@ -4,9 +4,9 @@
 // that match central differences of their positions, count as six-bars with M = 1, and name
 // the field of a bad dimension.
 
+#include "kinematics/model/sixbar_newton.h"
 #include "kinematics/analysis/mobility.h"
 #include "kinematics/model/mechanism_check.h"
-#include "kinematics/model/sixbar_newton.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/newton_group.h"
 #include "kinematics/solve/pose_solver.h"
@@ -60,7 +60,7 @@ void followTo(const Mechanism& m, double angleDeg, const SolveRequest& request, 
     REQUIRE(solvePoseInto(m, {degToRad(a), 0.0, 0.0}, request, pose).status == PoseStatus::Ok);
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("The Newton six-bars are valid six-bars with one degree of freedom", "[sixbar_newton]") {
   const auto three = makeStephensonIIINewton();
@@ -176,8 +176,8 @@ TEST_CASE("A Newton six-bar that cannot close says so, naming its free points", 
   CHECK(pose.error().code == ErrorCode::NotAssemblable);
   CHECK(pose.error().field == "C");
   CAPTURE(pose.error().message);
-  CHECK(pose.error().message.find("C, D, E cannot be assembled at crank angle 0°: Newton did not converge (residual ") ==
-        0);
+  CHECK(pose.error().message.find(
+            "C, D, E cannot be assembled at crank angle 0°: Newton did not converge (residual ") == 0);
   CHECK(pose.error().message.find("); the linkage probably cannot close here") != std::string::npos);
   const auto r = sweep(*m, {0.0, 2.0 * kPi, 37, 1.0, 0.0});
   REQUIRE(r.ok());

@@ -1,9 +1,9 @@
 // Dyad six-bars (sixbar.h): each example closes every loop over a full turn, has mobility 1,
 // the Watt/Stephenson topology it claims, and exact rates that agree with finite differences.
 
+#include "kinematics/model/sixbar.h"
 #include "kinematics/analysis/mobility.h"
 #include "kinematics/design/examples.h"
-#include "kinematics/model/sixbar.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/sweep.h"
 
@@ -29,13 +29,14 @@ std::map<std::string, int> jointsPerBody(const Mechanism& m) {
     if (std::holds_alternative<GroundPoint>(m.points[i].definition)) joints["ground"].insert(i);
   for (const Link& l : m.links) joints[l.name].insert({l.first.index, l.second.index});
   for (std::size_t i = 0; i < m.points.size(); ++i)
-    if (const auto* a = std::get_if<AttachedPoint>(&m.points[i].definition)) joints[m.links[a->link.index].name].insert(i);
+    if (const auto* a = std::get_if<AttachedPoint>(&m.points[i].definition))
+      joints[m.links[a->link.index].name].insert(i);
   std::map<std::string, int> count;
   for (const auto& [body, set] : joints) count[body] = static_cast<int>(set.size());
   return count;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("six-bar examples assemble over the whole turn and close their loops", "[model][sixbar]") {
   for (const SixBarGeometry& g : kAll) {

@@ -2,8 +2,8 @@
 // the closed-form piston law, the LS3 engine's piston extremes against the SolidWorks figures of
 // seed 003, and its errors.
 
-#include "kinematics/analysis/mobility.h"
 #include "kinematics/model/slider_crank.h"
+#include "kinematics/analysis/mobility.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
 #include "kinematics/solve/sweep.h"
@@ -21,9 +21,11 @@ namespace {
 constexpr SliderCrankGeometry kLs3{46.0, 6.098 * 25.4, 0.0, false};
 
 // Piston position along the guide for an in-line slider-crank, x = r cos θ + √(L² − r² sin² θ).
-double pistonX(double r, double l, double theta) { return r * std::cos(theta) + std::sqrt(l * l - r * r * std::sin(theta) * std::sin(theta)); }
+double pistonX(double r, double l, double theta) {
+  return r * std::cos(theta) + std::sqrt(l * l - r * r * std::sin(theta) * std::sin(theta));
+}
 
-} // namespace
+}  // namespace
 
 TEST_CASE("a slider-crank closes its loop and has mobility 1", "[model][slider-crank]") {
   const auto m = makeSliderCrank({30.0, 100.0, 12.0, false});

@@ -18,15 +18,17 @@ namespace k = kinematics;
 namespace {
 
 double uniform(std::mt19937& rng, double low, double high) { return low + (high - low) * unit(rng); }
-double logUniform(std::mt19937& rng, double low, double high) { return std::exp(uniform(rng, std::log(low), std::log(high))); }
+double logUniform(std::mt19937& rng, double low, double high) {
+  return std::exp(uniform(rng, std::log(low), std::log(high)));
+}
 bool chance(std::mt19937& rng, double p) { return unit(rng) < p; }
 k::Branch branch(std::mt19937& rng) { return chance(rng, 0.5) ? k::Branch::Open : k::Branch::Crossed; }
 
 // A linkage's scale: mostly ordinary, sometimes at either end of the input domain.
 double scale(std::mt19937& rng, double spread) {
   const double r = unit(rng);
-  if (r < 0.05) return k::kMinLength * 1.0000001;                 // shortest links at the lower end
-  if (r < 0.10) return k::kMaxLength / spread / 1.0000001;        // longest at the upper end
+  if (r < 0.05) return k::kMinLength * 1.0000001;           // shortest links at the lower end
+  if (r < 0.10) return k::kMaxLength / spread / 1.0000001;  // longest at the upper end
   return logUniform(rng, 1e-3, 1e3);
 }
 
@@ -44,7 +46,9 @@ k::FourBarLengths fourBarLengths(std::mt19937& rng, double spread) {
   return {l[0], l[1], l[2], l[3]};
 }
 
-k::FourBarLengths scaled(const k::FourBarLengths& l, double f) { return {l.frame * f, l.crank * f, l.coupler * f, l.rocker * f}; }
+k::FourBarLengths scaled(const k::FourBarLengths& l, double f) {
+  return {l.frame * f, l.crank * f, l.coupler * f, l.rocker * f};
+}
 
 template <typename T>
 DrawnLinkage fromResult(k::Result<k::Mechanism> m, const T& describe) {
@@ -66,7 +70,8 @@ DrawnLinkage fourBar(std::mt19937& rng) {
   std::optional<k::CouplerPointSpec> p;
   if (chance(rng, 0.5)) p = k::CouplerPointSpec{uniform(rng, -1, 1) * l.coupler, uniform(rng, -1, 1) * l.coupler};
   return fromResult(k::makeFourBar(l, b, "mm", p), [&](std::ostream& s) {
-    s << "four-bar " << l.frame << "," << l.crank << "," << l.coupler << "," << l.rocker << (b == k::Branch::Open ? " open" : " crossed");
+    s << "four-bar " << l.frame << "," << l.crank << "," << l.coupler << "," << l.rocker
+      << (b == k::Branch::Open ? " open" : " crossed");
     if (p) s << " coupler point " << p->along << "," << p->across;
   });
 }
@@ -79,7 +84,8 @@ DrawnLinkage sliderCrank(std::mt19937& rng) {
   const k::SliderCrankGeometry g{crank, rod, offset, chance(rng, 0.3)};
   const k::Branch b = branch(rng);
   return fromResult(k::makeSliderCrank(g, b), [&](std::ostream& s) {
-    s << "slider-crank crank " << g.crank << " rod " << g.rod << " offset " << g.offset << (g.reversed ? " reversed" : "");
+    s << "slider-crank crank " << g.crank << " rod " << g.rod << " offset " << g.offset
+      << (g.reversed ? " reversed" : "");
   });
 }
 
@@ -95,8 +101,8 @@ DrawnLinkage shaper(std::mt19937& rng) {
   const double guide = uniform(rng, 0.0, 1.2) * rocker + pivot.y();
   const k::ShaperGeometry g{crank, rocker, link, pivot, guide};
   return fromResult(k::makeShaper(g, branch(rng)), [&](std::ostream& s) {
-    s << "shaper crank " << crank << " rocker " << rocker << " link " << link << " pivot " << pivot.x() << "," << pivot.y()
-      << " guide " << guide;
+    s << "shaper crank " << crank << " rocker " << rocker << " link " << link << " pivot " << pivot.x() << ","
+      << pivot.y() << " guide " << guide;
   });
 }
 
@@ -114,9 +120,10 @@ DrawnLinkage sixBar(std::mt19937& rng) {
   g.link6 = logUniform(rng, 0.3, 2.0) * size;
   g.dyadBranch = branch(rng);
   return fromResult(k::makeSixBar(g), [&](std::ostream& s) {
-    s << k::sixBarKindName(g.kind) << " four-bar " << g.fourBar.frame << "," << g.fourBar.crank << "," << g.fourBar.coupler
-      << "," << g.fourBar.rocker << " P " << g.first.along << "," << g.first.across << " D " << g.second.along << ","
-      << g.second.across << " O6 " << g.groundPivot.x() << "," << g.groundPivot.y() << " links " << g.link5 << "," << g.link6;
+    s << k::sixBarKindName(g.kind) << " four-bar " << g.fourBar.frame << "," << g.fourBar.crank << ","
+      << g.fourBar.coupler << "," << g.fourBar.rocker << " P " << g.first.along << "," << g.first.across << " D "
+      << g.second.along << "," << g.second.across << " O6 " << g.groundPivot.x() << "," << g.groundPivot.y()
+      << " links " << g.link5 << "," << g.link6;
   });
 }
 
@@ -128,19 +135,19 @@ DrawnLinkage newton(std::mt19937& rng) {
     k::StephensonIIIGeometry g = k::kStephensonIIINewton;
     for (double* x : {&g.crank, &g.coupler, &g.cd, &g.ce, &g.de, &g.rocker4, &g.rocker6}) jitter(*x);
     return fromResult(k::makeStephensonIIINewton(g), [&](std::ostream& s) {
-      s << "stephenson-iii newton crank " << g.crank << " coupler " << g.coupler << " cd " << g.cd << " ce " << g.ce << " de "
-        << g.de << " rocker4 " << g.rocker4 << " rocker6 " << g.rocker6;
+      s << "stephenson-iii newton crank " << g.crank << " coupler " << g.coupler << " cd " << g.cd << " ce " << g.ce
+        << " de " << g.de << " rocker4 " << g.rocker4 << " rocker6 " << g.rocker6;
     });
   }
   k::StephensonIIGeometry g = k::kStephensonIINewton;
   for (double* x : {&g.crank, &g.j1j2, &g.j1j3, &g.j2j3, &g.j5j4, &g.j5j6, &g.j4j6, &g.link5, &g.link6}) jitter(*x);
   return fromResult(k::makeStephensonIINewton(g), [&](std::ostream& s) {
-    s << "stephenson-ii newton crank " << g.crank << " j1j2 " << g.j1j2 << " j1j3 " << g.j1j3 << " j2j3 " << g.j2j3 << " j5j4 "
-      << g.j5j4 << " j5j6 " << g.j5j6 << " j4j6 " << g.j4j6 << " links " << g.link5 << "," << g.link6;
+    s << "stephenson-ii newton crank " << g.crank << " j1j2 " << g.j1j2 << " j1j3 " << g.j1j3 << " j2j3 " << g.j2j3
+      << " j5j4 " << g.j5j4 << " j5j6 " << g.j5j6 << " j4j6 " << g.j4j6 << " links " << g.link5 << "," << g.link6;
   });
 }
 
-} // namespace
+}  // namespace
 
 double unit(std::mt19937& rng) { return (static_cast<double>(rng()) + 0.5) / 4294967296.0; }
 
@@ -166,4 +173,4 @@ DrawnLinkage drawLinkage(LinkageKind kind, std::mt19937& rng) {
   return {};
 }
 
-} // namespace linkwright::test
+}  // namespace linkwright::test

@@ -16,7 +16,7 @@ namespace linkwright::test {
 
 enum class LinkageKind { FourBar, SliderCrank, Shaper, SixBar, Newton };
 inline constexpr LinkageKind kAllKinds[] = {LinkageKind::FourBar, LinkageKind::SliderCrank, LinkageKind::Shaper,
-                                           LinkageKind::SixBar, LinkageKind::Newton};
+                                            LinkageKind::SixBar, LinkageKind::Newton};
 
 std::string kindName(LinkageKind kind);
 
@@ -24,7 +24,7 @@ std::string kindName(LinkageKind kind);
 struct DrawnLinkage {
   std::string description;  ///< the dimensions, to reproduce a finding
   std::optional<kinematics::Mechanism> mechanism;
-  std::string refusal;      ///< the builder's message when it refused
+  std::string refusal;  ///< the builder's message when it refused
 };
 
 DrawnLinkage drawLinkage(LinkageKind kind, std::mt19937& rng);
@@ -32,4 +32,4 @@ DrawnLinkage drawLinkage(LinkageKind kind, std::mt19937& rng);
 /// Uniform in (0, 1) from one raw mt19937 output.
 double unit(std::mt19937& rng);
 
-} // namespace linkwright::test
+}  // namespace linkwright::test

@@ -33,12 +33,14 @@ double sizeOf(const k::SweepResult& s) {
 
 void checkFinite(const k::Mechanism& m, const k::SweepResult& s, std::size_t j, SweepCheck& c) {
   for (std::size_t i = 0; i < m.points.size(); ++i) {
-    if (!s.position[i][j].allFinite()) c.findings.push_back("position of " + m.points[i].name + " not finite at " + at(s, j));
+    if (!s.position[i][j].allFinite())
+      c.findings.push_back("position of " + m.points[i].name + " not finite at " + at(s, j));
     if (s.ok(j) && !(s.velocity[i][j].allFinite() && s.acceleration[i][j].allFinite()))
       c.findings.push_back("velocity or acceleration of " + m.points[i].name + " not finite at " + at(s, j));
   }
   for (std::size_t l = 0; l < m.links.size(); ++l) {
-    if (!std::isfinite(s.linkAngle[l][j])) c.findings.push_back("angle of " + m.links[l].name + " not finite at " + at(s, j));
+    if (!std::isfinite(s.linkAngle[l][j]))
+      c.findings.push_back("angle of " + m.links[l].name + " not finite at " + at(s, j));
     if (s.ok(j) && !(std::isfinite(s.linkOmega[l][j]) && std::isfinite(s.linkAlpha[l][j])))
       c.findings.push_back("ω or α of " + m.links[l].name + " not finite at " + at(s, j));
   }
@@ -58,10 +60,11 @@ void checkClosure(const k::Mechanism& m, const k::SweepResult& s, double size, s
       c.findings.push_back(what + " misfit " + std::to_string(relative) + " of the size at " + at(s, j));
   };
   for (const k::Link& link : m.links)
-    misfit(std::abs(distance(link.first, link.second, j) - distance(link.first, link.second, first)), "link " + link.name);
+    misfit(std::abs(distance(link.first, link.second, j) - distance(link.first, link.second, first)),
+           "link " + link.name);
   for (const k::DistanceConstraint& dc : m.constraints)
-    misfit(std::abs(distance(dc.first, dc.second, j) - dc.length), "constraint " + m.points[dc.first.index].name + "–" +
-                                                                        m.points[dc.second.index].name);
+    misfit(std::abs(distance(dc.first, dc.second, j) - dc.length),
+           "constraint " + m.points[dc.first.index].name + "–" + m.points[dc.second.index].name);
 }
 
 // Between consecutive samples where the rates exist, each point moves about as far as its
@@ -83,8 +86,8 @@ void checkContinuity(const k::Mechanism& m, const k::SweepSpec& spec, const k::S
     const double moved = (s.position[i][j + 1] - s.position[i][j]).norm();
     const double bound = 3.0 * (slope * step + 0.5 * curvature * step * step) + kClosureTolerance * size;
     if (!(moved <= bound))
-      c.findings.push_back(m.points[i].name + " jumps " + std::to_string(moved) + " (rates allow " + std::to_string(bound) +
-                           ") between " + at(s, j) + " and the next: a branch switch");
+      c.findings.push_back(m.points[i].name + " jumps " + std::to_string(moved) + " (rates allow " +
+                           std::to_string(bound) + ") between " + at(s, j) + " and the next: a branch switch");
   }
 }
 
@@ -97,7 +100,8 @@ std::optional<std::array<k::Pose, 5>> stencil(const k::Mechanism& m, const k::Sw
   std::array<k::Pose, 5> poses;
   for (int n = -2; n <= 2; ++n) {
     const double t = n * h;
-    const auto pose = k::solvePose(m, {s.inputAngle[j] + spec.omega * t + 0.5 * spec.alpha * t * t, 0.0, 0.0}, {false, false});
+    const auto pose =
+        k::solvePose(m, {s.inputAngle[j] + spec.omega * t + 0.5 * spec.alpha * t * t, 0.0, 0.0}, {false, false});
     if (!pose) return std::nullopt;
     poses[static_cast<std::size_t>(n + 2)] = *pose;
   }
@@ -106,7 +110,8 @@ std::optional<std::array<k::Pose, 5>> stencil(const k::Mechanism& m, const k::Sw
   return poses;
 }
 
-void compare(double exact, const Estimate& e, const std::string& what, const k::SweepResult& s, std::size_t j, SweepCheck& c) {
+void compare(double exact, const Estimate& e, const std::string& what, const k::SweepResult& s, std::size_t j,
+             SweepCheck& c) {
   const double error = std::abs(exact - e.value);
   c.worstRateRatio = std::max(c.worstRateRatio, e.tolerance > 0.0 ? error / e.tolerance : (error > 0.0 ? 1e300 : 0.0));
   if (!(error <= e.tolerance)) {
@@ -161,9 +166,10 @@ void checkRates(const k::Mechanism& m, const k::SweepSpec& spec, const k::SweepR
   }
 }
 
-} // namespace
+}  // namespace
 
-SweepCheck checkSweep(const k::Mechanism& m, const k::SweepSpec& spec, const k::SweepResult& s, std::size_t rateSamples) {
+SweepCheck checkSweep(const k::Mechanism& m, const k::SweepSpec& spec, const k::SweepResult& s,
+                      std::size_t rateSamples) {
   SweepCheck c;
   const double size = std::max(sizeOf(s), std::numeric_limits<double>::min());
   std::optional<std::size_t> first;
@@ -183,8 +189,9 @@ SweepCheck checkSweep(const k::Mechanism& m, const k::SweepSpec& spec, const k::
   for (std::size_t j = 0; j < s.size(); ++j)
     if (s.ok(j)) ok.push_back(j);
   const std::size_t count = std::min(rateSamples, ok.size());
-  for (std::size_t n = 0; n < count && c.findings.empty(); ++n) checkRates(m, spec, s, size, ok[n * ok.size() / count], c);
+  for (std::size_t n = 0; n < count && c.findings.empty(); ++n)
+    checkRates(m, spec, s, size, ok[n * ok.size() / count], c);
   return c;
 }
 
-} // namespace linkwright::test
+}  // namespace linkwright::test

@@ -31,4 +31,4 @@ SweepCheck checkSweep(const kinematics::Mechanism& mechanism, const kinematics::
 /// shortest link) and above Newton's default tolerance.
 inline constexpr double kClosureTolerance = 1e-9;
 
-} // namespace linkwright::test
+}  // namespace linkwright::test

@@ -22,7 +22,7 @@ bool mentions(const test::SweepCheck& c, const std::string& text) {
   return false;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("the soak's checks pass a good sweep and report each corruption", "[soak]") {
   const k::Mechanism m = k::makeFourBar(test::kThesis, k::Branch::Open).value();

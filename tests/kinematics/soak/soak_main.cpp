@@ -60,7 +60,7 @@ bool parse(int argc, char** argv, Options& o) {
   return o.count > 0 && o.samples >= 3 && o.from >= 0 && o.from < o.count;
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   Options o;
@@ -77,7 +77,8 @@ int main(int argc, char** argv) {
     const test::LinkageKind kind = o.kinds[static_cast<std::size_t>(n) % o.kinds.size()];
     const test::DrawnLinkage d = test::drawLinkage(kind, rng);
     // A crank speed between 0.1 and 1000 rad/s either way, α up to ±ω².
-    const double omega = (test::unit(rng) < 0.5 ? -1.0 : 1.0) * std::exp(std::log(0.1) + std::log(1e4) * test::unit(rng));
+    const double omega =
+        (test::unit(rng) < 0.5 ? -1.0 : 1.0) * std::exp(std::log(0.1) + std::log(1e4) * test::unit(rng));
     const double alpha = (2.0 * test::unit(rng) - 1.0) * omega * omega;
     if (n < o.from) continue;
     Tally& t = tallies[test::kindName(kind)];
@@ -107,18 +108,20 @@ int main(int argc, char** argv) {
     if (printed++ < 20) {
       std::cout << "FINDING: seed " << o.seed << ", linkage " << n << ": " << d.description << ", omega " << omega
                 << " rad/s, alpha " << alpha << " rad/s2\n";
-      for (std::size_t f = 0; f < std::min<std::size_t>(findings.size(), 5); ++f) std::cout << "  " << findings[f] << "\n";
+      for (std::size_t f = 0; f < std::min<std::size_t>(findings.size(), 5); ++f)
+        std::cout << "  " << findings[f] << "\n";
     }
   }
   long long findings = 0;
-  std::cout << "kind          drawn  refused  assembled  samples  rates compared/skipped  worst closure  worst rate/tol  findings\n";
+  std::cout << "kind          drawn  refused  assembled  samples  rates compared/skipped  worst closure  worst "
+               "rate/tol  findings\n";
   for (const auto& [name, t] : tallies) {
     std::printf("%-12s %6lld %8lld %10lld %8zu %12zu/%-9zu %14.2e %15.3f %9lld\n", name.c_str(), t.drawn, t.refused,
                 t.assembled, t.samples, t.ratesCompared, t.ratesSkipped, t.worstClosure, t.worstRateRatio, t.findings);
     findings += t.findings;
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::cout << o.count - o.from << " linkages, seed " << o.seed << ", " << o.samples << " samples each, " << seconds << " s: "
-            << (findings == 0 ? "no finding" : std::to_string(findings) + " with findings") << "\n";
+  std::cout << o.count - o.from << " linkages, seed " << o.seed << ", " << o.samples << " samples each, " << seconds
+            << " s: " << (findings == 0 ? "no finding" : std::to_string(findings) + " with findings") << "\n";
   return findings == 0 ? 0 : 1;
 }

@@ -4,12 +4,12 @@
 // a pose cannot close or is singular, the settings check, and the structure errors
 // checkMechanism gives for free points and distance constraints.
 
-#include "kinematics/model/constraint_form.h"
+#include "kinematics/solve/newton_group.h"
 #include "kinematics/design/examples.h"
+#include "kinematics/model/constraint_form.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/units.h"
-#include "kinematics/solve/newton_group.h"
 #include "kinematics/solve/pose_solver.h"
 #include "kinematics/solve/sweep.h"
 
@@ -21,8 +21,8 @@
 #include <cmath>
 #include <functional>
 #include <iomanip>
-#include <sstream>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -93,9 +93,8 @@ int mostIterations(const SweepResult& r) {
 }
 
 std::size_t rrrCount(const Mechanism& m) {
-  return static_cast<std::size_t>(std::count_if(m.points.begin(), m.points.end(), [](const Point& p) {
-    return std::holds_alternative<RrrPoint>(p.definition);
-  }));
+  return static_cast<std::size_t>(std::count_if(
+      m.points.begin(), m.points.end(), [](const Point& p) { return std::holds_alternative<RrrPoint>(p.definition); }));
 }
 
 // The mechanism with its RRR points made free, guessed where the closed form puts them at `angle`.
@@ -151,7 +150,7 @@ Mechanism fourBar(const FourBarLengths& lengths, Branch branch = Branch::Open) {
   return *m;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("Newton agrees with the closed-form dyads on the four-bar examples every 1°", "[newton]") {
   for (const FourBarExample& e : fourBarExamples())
@@ -352,14 +351,18 @@ TEST_CASE("checkMechanism names what is wrong with free points and distance cons
         "constraints[1].length must be positive and finite (got -70)");
   check([&](Mechanism& m) { m.constraints[1].length = nan; }, ErrorCode::InvalidValue, "constraints[1].length",
         "constraints[1].length must be positive and finite (got nan)");
-  check([](Mechanism& m) { m.constraints.push_back({PointId{0}, PointId{2}, 25.0}); }, ErrorCode::InvalidStructure,
-        "constraints[2]",
-        "constraints[2] joins O2 and B, but the later of them, B, is not a free point: a distance constraint must "
-        "close on a free point");
+  check(
+      [](Mechanism& m) {
+        m.constraints.push_back({PointId{0}, PointId{2}, 25.0});
+      },
+      ErrorCode::InvalidStructure, "constraints[2]",
+      "constraints[2] joins O2 and B, but the later of them, B, is not a free point: a distance constraint must "
+      "close on a free point");
   check([&](Mechanism& m) { std::get<FreePoint>(m.points[3].definition).guess.y() = nan; }, ErrorCode::InvalidValue,
         "points[3].guess.y", "points[3].guess.y must be finite (got nan)");
-  check([](Mechanism& m) { m.constraints.pop_back(); }, ErrorCode::InvalidStructure, "constraints",
-        "constraints must hold free points C (points[3..3]) with exactly 2 distance constraints, two per point (got 1)");
+  check(
+      [](Mechanism& m) { m.constraints.pop_back(); }, ErrorCode::InvalidStructure, "constraints",
+      "constraints must hold free points C (points[3..3]) with exactly 2 distance constraints, two per point (got 1)");
   // A free point D right after C joins C's group: 4 unknowns need 4 constraints, and D two of them.
   check(
       [](Mechanism& m) {
@@ -367,7 +370,8 @@ TEST_CASE("checkMechanism names what is wrong with free points and distance cons
         m.constraints.push_back({PointId{3}, PointId{4}, 30.0});
       },
       ErrorCode::InvalidStructure, "constraints",
-      "constraints must hold free points C, D (points[3..4]) with exactly 4 distance constraints, two per point (got 3)");
+      "constraints must hold free points C, D (points[3..4]) with exactly 4 distance constraints, two per point (got "
+      "3)");
   check(
       [](Mechanism& m) {
         m.points.push_back({"D", FreePoint{Eigen::Vector2d(90.0, 40.0)}});

@@ -2,12 +2,12 @@
 // the thesis's closed-form loop equations (with the α4 typo fixed), the request flags, the
 // branch convention and guide, points on the coupler, and the failure reports.
 
+#include "kinematics/solve/pose_solver.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/shaper.h"
 #include "kinematics/model/sixbar.h"
 #include "kinematics/model/units.h"
-#include "kinematics/solve/pose_solver.h"
 #include "kinematics/solve/solve_scope.h"
 
 #include "tests/support/approx.h"
@@ -30,7 +30,7 @@ constexpr auto kCoupler = fourbar::kCoupler.index;
 constexpr auto kRocker = fourbar::kRocker.index;
 constexpr auto kB = fourbar::kB.index;
 constexpr auto kC = fourbar::kC.index;
-} // namespace
+}  // namespace
 
 TEST_CASE("solvePose places the thesis four-bar at 90° by the law of cosines", "[pose_solver]") {
   const Pose pose = solveFourBar(kThesis, Branch::Open, degToRad(90.0), 1.0);
@@ -54,8 +54,8 @@ TEST_CASE("solvePose places the thesis four-bar at 90° by the law of cosines", 
 
 TEST_CASE("solvePose rates match the closed-form loop equations", "[pose_solver]") {
   const double a = kThesis.crank, b = kThesis.coupler, c = kThesis.rocker;
-  const auto [angleDeg, omega2, alpha2] = GENERATE(table<double, double, double>({
-      {0.0, 1.0, 0.0}, {45.0, -2.5, 3.0}, {135.0, 10.0, -40.0}, {250.0, 0.3, 0.7}, {330.0, -1.0, -1.0}}));
+  const auto [angleDeg, omega2, alpha2] = GENERATE(table<double, double, double>(
+      {{0.0, 1.0, 0.0}, {45.0, -2.5, 3.0}, {135.0, 10.0, -40.0}, {250.0, 0.3, 0.7}, {330.0, -1.0, -1.0}}));
   CAPTURE(angleDeg, omega2, alpha2);
   for (const Branch branch : {Branch::Open, Branch::Crossed}) {
     const Pose p = solveFourBar(kThesis, branch, degToRad(angleDeg), omega2, alpha2);
@@ -65,10 +65,12 @@ TEST_CASE("solvePose rates match the closed-form loop equations", "[pose_solver]
     // Thesis eqs. (14) and (25), the α4 term as it should read: ω4²·L4·cos(θ4 − θ3).
     const double w3Formula = -omega2 * a * std::sin(t4 - t2) / (b * s);
     const double w4Formula = -omega2 * a * std::sin(t3 - t2) / (c * s);
-    const double a3Formula = (alpha2 * a * std::sin(t2 - t4) + omega2 * omega2 * a * std::cos(t2 - t4) -
-                              w4 * w4 * c + w3 * w3 * b * std::cos(t4 - t3)) / (b * s);
-    const double a4Formula = (alpha2 * a * std::sin(t2 - t3) + omega2 * omega2 * a * std::cos(t2 - t3) +
-                              w3 * w3 * b - w4 * w4 * c * std::cos(t4 - t3)) / (c * s);
+    const double a3Formula = (alpha2 * a * std::sin(t2 - t4) + omega2 * omega2 * a * std::cos(t2 - t4) - w4 * w4 * c +
+                              w3 * w3 * b * std::cos(t4 - t3)) /
+                             (b * s);
+    const double a4Formula = (alpha2 * a * std::sin(t2 - t3) + omega2 * omega2 * a * std::cos(t2 - t3) + w3 * w3 * b -
+                              w4 * w4 * c * std::cos(t4 - t3)) /
+                             (c * s);
     // Both sides are a few roundings of O(1)–O(100) terms over sin γ ≥ 0.4: 1e-12 relative to
     // the largest term's scale ω2²·a/(c·sin γ).
     const double scale = (std::abs(omega2) + omega2 * omega2 + std::abs(alpha2)) * a / (std::min(b, c) * std::abs(s));
@@ -137,8 +139,8 @@ TEST_CASE("solvePose moves a coupler point rigidly with the coupler", "[pose_sol
   const auto p = solvePose(*m, {degToRad(75.0), 3.0, -2.0});
   REQUIRE(p.ok());
   const double t3 = p->linkAngle[kCoupler], w3 = p->linkOmega[kCoupler], a3 = p->linkAlpha[kCoupler];
-  const Eigen::Vector2d r = along * Eigen::Vector2d(std::cos(t3), std::sin(t3)) +
-                            across * Eigen::Vector2d(-std::sin(t3), std::cos(t3));
+  const Eigen::Vector2d r =
+      along * Eigen::Vector2d(std::cos(t3), std::sin(t3)) + across * Eigen::Vector2d(-std::sin(t3), std::cos(t3));
   const Eigen::Vector2d perp(-r.y(), r.x());
   const std::size_t iP = fourbar::kCouplerPoint.index;
   std::string why;
@@ -147,8 +149,7 @@ TEST_CASE("solvePose moves a coupler point rigidly with the coupler", "[pose_sol
   CHECK(near(p->velocity[iP], p->velocity[kB] + w3 * perp, 1e-11, &why));
   CHECK(near(p->acceleration[iP], p->acceleration[kB] + a3 * perp - w3 * w3 * r, 1e-11, &why));
   INFO(why);
-  CHECK((p->position[iP] - p->position[kC]).norm() ==
-        within(std::hypot(along - kThesis.coupler, across), 1e-12));
+  CHECK((p->position[iP] - p->position[kC]).norm() == within(std::hypot(along - kThesis.coupler, across), 1e-12));
 }
 
 TEST_CASE("solvePoseInto follows a branch guide", "[pose_solver]") {
@@ -182,8 +183,9 @@ TEST_CASE("solvePose explains a pose that cannot be assembled", "[pose_solver][e
     REQUIRE_FALSE(p.ok());
     CHECK(p.error().code == ErrorCode::NotAssemblable);
     CHECK(p.error().field == "C");
-    CHECK(p.error().message == "C cannot be assembled at crank angle 180°: B and O4 are 110 mm apart, "
-                               "more than coupler + rocker = 75 mm");
+    CHECK(p.error().message ==
+          "C cannot be assembled at crank angle 180°: B and O4 are 110 mm apart, "
+          "more than coupler + rocker = 75 mm");
   }
   SECTION("too close: a triple-rocker at 0°") {
     const auto m = makeFourBar({50.0, 40.0, 80.0, 20.0}, Branch::Crossed, "in");
@@ -192,8 +194,9 @@ TEST_CASE("solvePose explains a pose that cannot be assembled", "[pose_solver][e
     REQUIRE_FALSE(p.ok());
     CHECK(p.error().code == ErrorCode::NotAssemblable);
     CHECK(p.error().field == "C");
-    CHECK(p.error().message == "C cannot be assembled at crank angle 0°: B and O4 are 10 in apart, "
-                               "less than |coupler − rocker| = 60 in");
+    CHECK(p.error().message ==
+          "C cannot be assembled at crank angle 0°: B and O4 are 10 in apart, "
+          "less than |coupler − rocker| = 60 in");
   }
   SECTION("the report names the culprit and the reason") {
     const auto m = makeFourBar({60.0, 50.0, 35.0, 40.0}, Branch::Open);
@@ -215,8 +218,9 @@ TEST_CASE("solvePose flags a toggle position as singular", "[pose_solver][errors
   REQUIRE_FALSE(p.ok());
   CHECK(p.error().code == ErrorCode::Singular);
   CHECK(p.error().field == "C");
-  CHECK(p.error().message == "C is at a toggle position at crank angle 0°: coupler and rocker are collinear, "
-                             "so angular velocity and acceleration are undefined there");
+  CHECK(p.error().message ==
+        "C is at a toggle position at crank angle 0°: coupler and rocker are collinear, "
+        "so angular velocity and acceleration are undefined there");
   // The position exists: a positions-only request succeeds there.
   const auto positions = solvePose(*m, {0.0, 1.0, 0.0}, {false, false});
   REQUIRE(positions.ok());
@@ -236,7 +240,8 @@ TEST_CASE("solvePose rejects a non-finite driver state or an invalid mechanism",
   const double inf = std::numeric_limits<double>::infinity();
   const auto angle = solvePose(*m, {nan, 1.0, 0.0});
   REQUIRE_FALSE(angle.ok());
-  CHECK(angle.error() == Error{ErrorCode::InvalidValue, "input angle", "input angle must be finite and within ±17453.3 rad (1e6 degrees) (got nan)"});
+  CHECK(angle.error() == Error{ErrorCode::InvalidValue, "input angle",
+                               "input angle must be finite and within ±17453.3 rad (1e6 degrees) (got nan)"});
   const auto omega = solvePose(*m, {0.0, inf, 0.0});
   REQUIRE_FALSE(omega.ok());
   CHECK(omega.error().field == "input omega");

@@ -2,8 +2,8 @@
 // the assembly limits with their relative tolerance, Heron's accuracy near a toggle, and the
 // 2×2 rate system with its singularity test.
 
-#include "kinematics/model/vec2.h"
 #include "kinematics/solve/rrr_dyad.h"
+#include "kinematics/model/vec2.h"
 
 #include "tests/support/approx.h"
 
@@ -16,8 +16,7 @@ using namespace linkwright::kinematics;
 using linkwright::test::near;
 using linkwright::test::within;
 
-namespace {
-} // namespace
+namespace {}  // namespace
 
 TEST_CASE("rrrCandidates solves a 3-4-5 triangle on both branches", "[rrr_dyad]") {
   const RrrCandidates c = rrrCandidates({0.0, 0.0}, 3.0, {5.0, 0.0}, 4.0);
@@ -45,7 +44,8 @@ TEST_CASE("rrrCandidates keeps both lengths for arbitrary placements", "[rrr_dya
     const double distance = (p2 - p1).norm();
     // l1 anywhere in (0, 2L), l2 inside the assemblable interval [|l1−L|, l1+L].
     const double l1 = (0.01 + 1.98 * fraction(rng)) * distance;
-    const double l2 = std::abs(l1 - distance) + (0.01 + 0.98 * fraction(rng)) * (l1 + distance - std::abs(l1 - distance));
+    const double l2 =
+        std::abs(l1 - distance) + (0.01 + 0.98 * fraction(rng)) * (l1 + distance - std::abs(l1 - distance));
     CAPTURE(i, l1, l2, distance);
     const RrrCandidates c = rrrCandidates(p1, l1, p2, l2);
     REQUIRE(c.failure == AssemblyFailure::None);

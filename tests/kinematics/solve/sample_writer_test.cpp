@@ -3,10 +3,10 @@
 // would one by one, rates are 0 at a singular sample, a failed sample is 0 everywhere, and the
 // ground pivots' columns are filled by finish().
 
+#include "kinematics/solve/sample_writer.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
-#include "kinematics/solve/sample_writer.h"
 #include "kinematics/solve/sweep.h"
 
 #include "tests/support/approx.h"
@@ -39,7 +39,7 @@ Pose solved(const Mechanism& m, double angleDeg) {
   REQUIRE(p.ok());
   return *p;
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("SampleWriter copies a pose into every selected column", "[sweep]") {
   const Mechanism m = makeFourBar(kThesis, Branch::Open).value();

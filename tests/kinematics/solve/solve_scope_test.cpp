@@ -3,13 +3,13 @@
 // rest is neither computed nor stored, and that sweeping again into one result leaves nothing
 // of the previous sweep behind.
 
+#include "kinematics/solve/solve_scope.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/sixbar.h"
 #include "kinematics/model/sixbar_newton.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
-#include "kinematics/solve/solve_scope.h"
 #include "kinematics/solve/sweep.h"
 
 #include <catch2/catch.hpp>
@@ -25,7 +25,7 @@ Mechanism wattII() { return makeSixBar(kWattIISixBar).value(); }
 
 Selection links(std::vector<LinkId> ids) { return Selection{std::vector<PointId>{}, std::move(ids)}; }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("no selection solves and reports everything", "[sweep][scope]") {
   const Mechanism m = wattII();
@@ -44,7 +44,8 @@ TEST_CASE("the solver's steps leave out the ground pivots, which a prepared pose
   CHECK(steps == std::vector<std::size_t>{2, 3, 4, 6});
   Pose pose;
   preparePose(m, pose);
-  for (const std::size_t i : {0, 1, 5}) CHECK(pose.position[i] == std::get<GroundPoint>(m.points[i].definition).position);
+  for (const std::size_t i : {0, 1, 5})
+    CHECK(pose.position[i] == std::get<GroundPoint>(m.points[i].definition).position);
   // So a scoped solve of a prepared pose places them all the same.
   REQUIRE(solvePoseInto(m, {0.3, 1.0, 0.0}, {}, pose, {}, &s).status == PoseStatus::Ok);
   const Pose whole = solvePose(m, {0.3, 1.0, 0.0}).value();

@@ -2,10 +2,10 @@
 // each request, agreement with single poses, angle unwrapping, and the report of samples
 // that could not be assembled, locked between two samples, or were singular.
 
+#include "kinematics/solve/sweep.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
-#include "kinematics/solve/sweep.h"
 
 #include "tests/support/approx.h"
 #include "tests/support/locking_six_bar.h"
@@ -29,7 +29,7 @@ Mechanism fourBar(const FourBarLengths& lengths, Branch branch = Branch::Open) {
   REQUIRE(m.ok());
   return *m;
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("sweepAngle spaces samples evenly and hits both ends exactly", "[sweep]") {
   const SweepSpec spec{degToRad(10.0), degToRad(370.0), 13, 1.0, 0.0};
@@ -52,8 +52,10 @@ TEST_CASE("checkSweepSpec names the bad field", "[sweep][errors]") {
     CHECK(e->field == field);
     CHECK(e->message == message);
   };
-  check({nan, 1.0, 10, 1.0, 0.0}, "from angle", "from angle must be finite and within ±17453.3 rad (1e6 degrees) (got nan)");
-  check({0.0, inf, 10, 1.0, 0.0}, "to angle", "to angle must be finite and within ±17453.3 rad (1e6 degrees) (got inf)");
+  check({nan, 1.0, 10, 1.0, 0.0}, "from angle",
+        "from angle must be finite and within ±17453.3 rad (1e6 degrees) (got nan)");
+  check({0.0, inf, 10, 1.0, 0.0}, "to angle",
+        "to angle must be finite and within ±17453.3 rad (1e6 degrees) (got inf)");
   check({0.0, 1.0, 10, -inf, 0.0}, "omega", "omega must be finite and within ±1e6 rad/s (got -inf)");
   check({0.0, 1.0, 10, 1.0, nan}, "alpha", "alpha must be finite and within ±1e12 rad/s² (got nan)");
   check({0.0, 1.0, 0, 1.0, 0.0}, "samples", "samples must be between 1 and 10000000 (got 0)");
@@ -137,8 +139,9 @@ TEST_CASE("sweep reports the samples it could not assemble", "[sweep][errors]") 
   CHECK(radToDeg(r->notAssembled[0].to) == within(274.0, 1e-9));
   REQUIRE(r->firstFailure.has_value());
   // BD = √(50² + 60² − 2·50·60·cos 86°) = 75.3755 mm.
-  CHECK(*r->firstFailure == "C cannot be assembled at crank angle 86°: B and O4 are 75.3755 mm apart, "
-                            "more than coupler + rocker = 75 mm");
+  CHECK(*r->firstFailure ==
+        "C cannot be assembled at crank angle 86°: B and O4 are 75.3755 mm apart, "
+        "more than coupler + rocker = 75 mm");
   for (std::size_t j = 0; j < r->size(); ++j) {
     CAPTURE(j);
     const bool inside = j <= 85 || j >= 275;

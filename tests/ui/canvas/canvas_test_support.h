@@ -50,10 +50,10 @@ struct ShownView {
 
   /// Turns the wheel by `notches` (positive: zoom in) with the pointer at `at`.
   void wheel(const QPoint& at, int notches) {
-    QWheelEvent event(QPointF(at), QPointF(viewport()->mapToGlobal(at)), QPoint(), QPoint(0, 120 * notches), Qt::NoButton,
-                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QWheelEvent event(QPointF(at), QPointF(viewport()->mapToGlobal(at)), QPoint(), QPoint(0, 120 * notches),
+                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
     QApplication::sendEvent(viewport(), &event);
   }
 };
 
-} // namespace linkwright::ui::test
+}  // namespace linkwright::ui::test

@@ -29,7 +29,7 @@ void requireGridRule(double spacing, double pixelsPerUnit) {
   CHECK(spacing * pixelsPerUnit <= 100.0);
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("grid spacing from the 1-2-5 sequence", "[canvas][grid]") {
   double pixelsPerUnit = 0.0, expected = 0.0;

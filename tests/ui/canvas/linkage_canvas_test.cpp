@@ -37,10 +37,11 @@ double offLine(const QPointF& p, const QLineF& line) {
   return std::abs(d.x() * (p.y() - line.p1().y()) - d.y() * (p.x() - line.p1().x())) / std::hypot(d.x(), d.y());
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("every point of a linkage but a PRP pin has a handle, at its solved position", "[canvas][linkage]") {
-  for (const std::string name : {"ls3-engine", "shaper", "whitworth", "watt-i", "watt-ii", "stephenson-i", "stephenson-iii"}) {
+  for (const std::string name :
+       {"ls3-engine", "shaper", "whitworth", "watt-i", "watt-ii", "stephenson-i", "stephenson-iii"}) {
     CAPTURE(name);
     ShownView v(example(name));
     const std::size_t points = v.document.mechanism().points.size();
@@ -50,8 +51,7 @@ TEST_CASE("every point of a linkage but a PRP pin has a handle, at its solved po
       const QGraphicsItem* handle = v.scene().handleItem(k::PointId{i});
       REQUIRE(handle != nullptr);
       CHECK(handle->pos() == v.point(k::PointId{i}));
-      CHECK(v.scene().pointLabel(k::PointId{i})->text() ==
-            ui::pointDisplayName(v.document.mechanism().points[i].name));
+      CHECK(v.scene().pointLabel(k::PointId{i})->text() == ui::pointDisplayName(v.document.mechanism().points[i].name));
     }
   }
 }
@@ -114,7 +114,8 @@ TEST_CASE("a link that carries points is a plate over its corners", "[canvas][li
   CHECK(v.scene().bodyItem(k::LinkId{0}) == nullptr);  // the crank carries nothing here
 }
 
-TEST_CASE("dragging a linkage's joint with the mouse goes through dragPoint and undoes exactly", "[canvas][linkage][drag]") {
+TEST_CASE("dragging a linkage's joint with the mouse goes through dragPoint and undoes exactly",
+          "[canvas][linkage][drag]") {
   ShownView v(example("watt-ii"));
   const k::Design before = v.document.design();
   const k::PointId e{6};
@@ -128,7 +129,8 @@ TEST_CASE("dragging a linkage's joint with the mouse goes through dragPoint and 
   v.drag(press, drop, 6);
   const QPointF target = v.view.mapToScene(drop) - v.view.mapToScene(press) + grabbed;
   const k::Mechanism& original = std::get<k::MechanismDesign>(before).mechanism;
-  const auto expected = k::dragPoint(original, k::solvePose(original, {0.0, 0.0, 0.0}).value(), 0.0, e, toEigen(target));
+  const auto expected =
+      k::dragPoint(original, k::solvePose(original, {0.0, 0.0, 0.0}).value(), 0.0, e, toEigen(target));
   REQUIRE(expected);
   const auto& got = std::get<k::RrrPoint>(v.document.mechanism().points[e.index].definition);
   const auto& want = std::get<k::RrrPoint>(expected->points[e.index].definition);

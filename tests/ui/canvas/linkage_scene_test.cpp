@@ -42,7 +42,7 @@ int countMoveTos(const QPainterPath& path) {
   return moves;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("items move to the new pose after a design change and after motion", "[canvas][scene]") {
   ShownView v;

@@ -30,7 +30,7 @@ QPointF dropTarget(const ShownView& v, const QPointF& grabbed, const QPoint& pre
   return v.view.mapToScene(drop) - v.view.mapToScene(press) + grabbed;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("dragging C sets coupler and rocker to reach the drop point and lands C there", "[canvas][drag]") {
   ShownView v;
@@ -111,11 +111,14 @@ TEST_CASE("dragging P moves the coupler point on the coupler", "[canvas][drag]")
   const QPoint drop = press + QPoint(15, -10);
   v.drag(press, drop);
 
-  const auto expected = k::dragFourBar(design, angle, k::FourBarHandle::CouplerPoint, toEigen(dropTarget(v, p, press, drop)));
+  const auto expected =
+      k::dragFourBar(design, angle, k::FourBarHandle::CouplerPoint, toEigen(dropTarget(v, p, press, drop)));
   REQUIRE(expected);
   REQUIRE(v.document.fourBar()->couplerPoint);
-  CHECK(v.document.fourBar()->couplerPoint->along == Approx(expected->design.couplerPoint->along).margin(kSceneTolerance));
-  CHECK(v.document.fourBar()->couplerPoint->across == Approx(expected->design.couplerPoint->across).margin(kSceneTolerance));
+  CHECK(v.document.fourBar()->couplerPoint->along ==
+        Approx(expected->design.couplerPoint->along).margin(kSceneTolerance));
+  CHECK(v.document.fourBar()->couplerPoint->across ==
+        Approx(expected->design.couplerPoint->across).margin(kSceneTolerance));
   CHECK(v.document.fourBar()->lengths == design.lengths);
   CHECK(v.document.undoStack()->undoText() == "Move P");
 }

@@ -16,7 +16,7 @@ bool insideViewport(const ShownView& v, const QPointF& scenePoint) {
   return v.view.viewport()->rect().contains(v.view.mapFromScene(scenePoint));
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("the first show fits the whole cycle into the view", "[canvas][navigation]") {
   ShownView v;

@@ -30,7 +30,8 @@ int countNear(const QImage& image, const QColor& colour) {
   for (int y = 0; y < image.height(); ++y)
     for (int x = 0; x < image.width(); ++x) {
       const QColor c = image.pixelColor(x, y);
-      if (std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green()) + std::abs(c.blue() - colour.blue()) < 24)
+      if (std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green()) + std::abs(c.blue() - colour.blue()) <
+          24)
         ++count;
     }
   return count;
@@ -38,7 +39,9 @@ int countNear(const QImage& image, const QColor& colour) {
 
 // What a translucent colour looks like painted over white.
 QColor overWhite(const QColor& colour) {
-  const auto blend = [&](int channel) { return static_cast<int>(std::lround(255.0 - (255.0 - channel) * colour.alphaF())); };
+  const auto blend = [&](int channel) {
+    return static_cast<int>(std::lround(255.0 - (255.0 - channel) * colour.alphaF()));
+  };
   return QColor(blend(colour.red()), blend(colour.green()), blend(colour.blue()));
 }
 
@@ -46,7 +49,9 @@ QColor overWhite(const QColor& colour) {
 int longestLine(const QImage& image, const QColor& colour) {
   const auto near = [&](int x, int y) {
     const QColor c = image.pixelColor(x, y);
-    return std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green()) + std::abs(c.blue() - colour.blue()) < 8;
+    return std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green()) +
+               std::abs(c.blue() - colour.blue()) <
+           8;
   };
   int most = 0;
   for (int y = 0; y < image.height(); ++y) {
@@ -66,7 +71,7 @@ int longestLine(const QImage& image, const QColor& colour) {
 // which skips labels offset from their anchor when zoomed far in).
 QImage grabView(ShownView& v) { return v.view.grab().toImage().convertToFormat(QImage::Format_ARGB32); }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("the view renders the linkage with its grid", "[canvas][render]") {
   ShownView v;
@@ -176,5 +181,6 @@ TEST_CASE("QGraphicsView::render, as the image export uses it, draws the labels 
   const int labelsShown = countNear(shown, ui::kLabelColor);
   REQUIRE(labelsShown > 20);
   CHECK(countNear(rendered, ui::kLabelColor) >= labelsShown * 9 / 10);
-  CHECK(countNear(rendered, ui::kVelocityColor.darker(120)) >= countNear(shown, ui::kVelocityColor.darker(120)) * 9 / 10);
+  CHECK(countNear(rendered, ui::kVelocityColor.darker(120)) >=
+        countNear(shown, ui::kVelocityColor.darker(120)) * 9 / 10);
 }

@@ -20,7 +20,7 @@ namespace {
 k::Design funsho() { return *k::designForExample("funsho-fourbar"); }
 double couplerMass(const MechanismDocument& doc) { return doc.fourBar()->dynamics.links[1].mass; }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("the panel lists each link's mass, centre and inertia from the design", "[forces][panel]") {
   MechanismDocument doc;

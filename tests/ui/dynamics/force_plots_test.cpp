@@ -35,7 +35,7 @@ QList<QPointF> plotted(const QList<QLineSeries*>& segments) {
   return points;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("the force plots show the core's torque, joint magnitudes and polar loci", "[forces][plots]") {
   MechanismDocument doc;
@@ -63,7 +63,8 @@ TEST_CASE("the force plots show the core's torque, joint magnitudes and polar lo
       panel.jointSelector()->setCurrentIndex(joint);
       CHECK(static_cast<std::size_t>(panel.polarView()->pointCount()) == okSamples(f));
       const QList<QPointF> locus = plotted(panel.polarView()->segments());
-      CHECK(locus.front() == QPointF(f.revolute[static_cast<std::size_t>(joint)][0].x(), f.revolute[static_cast<std::size_t>(joint)][0].y()));
+      CHECK(locus.front() == QPointF(f.revolute[static_cast<std::size_t>(joint)][0].x(),
+                                     f.revolute[static_cast<std::size_t>(joint)][0].y()));
     }
     CHECK(panel.polarView()->xScale() == Approx(panel.polarView()->yScale()).epsilon(1e-6));
   }
@@ -72,7 +73,8 @@ TEST_CASE("the force plots show the core's torque, joint magnitudes and polar lo
     REQUIRE(panel.torqueChart()->cursorX().has_value());
     CHECK(*panel.torqueChart()->cursorX() == Approx(90.0));
     CHECK(*panel.jointChart()->cursorX() == Approx(90.0));
-    const Eigen::Vector2d at = forces.poseForces()->revolute[static_cast<std::size_t>(panel.jointSelector()->currentIndex())];
+    const Eigen::Vector2d at =
+        forces.poseForces()->revolute[static_cast<std::size_t>(panel.jointSelector()->currentIndex())];
     REQUIRE(panel.polarView()->currentDot()->count() == 1);
     CHECK(panel.polarView()->currentDot()->at(0) == QPointF(at.x(), at.y()));
   }

@@ -21,7 +21,7 @@ namespace {
 k::Design funsho() { return *k::designForExample("funsho-fourbar"); }
 const k::LinkageDynamics& dynamicsOf(const MechanismDocument& doc) { return doc.fourBar()->dynamics; }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("ForceResults computes nothing while disabled", "[forces][results]") {
   MechanismDocument doc;
@@ -87,7 +87,8 @@ TEST_CASE("a crank move re-solves the pose forces only, as forcesAtPose gives th
   CHECK(forces.poseForces()->revolute.size() == expected.revolute.size());
 }
 
-TEST_CASE("a design without masses or loads, or with an unknown unit, has no forces and says why", "[forces][results]") {
+TEST_CASE("a design without masses or loads, or with an unknown unit, has no forces and says why",
+          "[forces][results]") {
   MechanismDocument doc;  // the thesis crank-rocker: no dynamics
   ForceResults forces(&doc);
   forces.setEnabled(true);

@@ -37,7 +37,8 @@ void save(QWidget& w, const QString& dir, const QString& name, QSize size) {
 void addMasses(k::Design& design) {
   auto* linkage = std::get_if<k::MechanismDesign>(&design);
   if (linkage == nullptr || !linkage->dynamics.empty()) return;
-  for (const k::Link& link : linkage->mechanism.links) linkage->dynamics.links.push_back({link.name, 0.5, std::nullopt, std::nullopt});
+  for (const k::Link& link : linkage->mechanism.links)
+    linkage->dynamics.links.push_back({link.name, 0.5, std::nullopt, std::nullopt});
   for (const k::Point& p : linkage->mechanism.points)
     if (std::holds_alternative<k::RrpPoint>(p.definition)) linkage->dynamics.sliders.push_back({p.name, 0, 0.4, 0.0});
 }
@@ -45,10 +46,8 @@ void addMasses(k::Design& design) {
 void shoot(const std::string& example, double crankDeg, const QString& dir, bool masses) {
   MechanismDocument doc;
   k::Design design = *k::designForExample(example);
-  if (masses)
-    addMasses(design);
-  else
-    std::visit([](auto& d) { d.dynamics = {}; }, design);
+  if (masses) addMasses(design);
+  else std::visit([](auto& d) { d.dynamics = {}; }, design);
   doc.reset(design);
   doc.setRequest(ForceResults::forcesRequest(doc.request()));
   doc.setCrankAngle(k::degToRad(crankDeg));
@@ -69,7 +68,7 @@ void shoot(const std::string& example, double crankDeg, const QString& dir, bool
   save(view, dir, tag + "_canvas.png", {700, 480});
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");

@@ -14,7 +14,7 @@ bool isMultipleOf(double value, double step) {
   return std::abs(q - std::round(q)) < 1e-9;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("niceStep rounds up to 1, 2, 2.5 or 5 times a power of ten", "[axis_range]") {
   CHECK(niceStep(0.7) == Approx(1.0));
@@ -70,12 +70,12 @@ TEST_CASE("robustSpan keeps a smooth curve whole and lets toggle spikes run off"
   CHECK(lo == Approx(-1.0));
   CHECK(hi == Approx(1.0));
 
-  std::vector<double> spiky = {0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0,
+  std::vector<double> spiky = {0.0,  1.0,  2.0,  3.0,  4.0,  5.0,  6.0,  7.0,  8.0,  9.0,  10.0,
                                11.0, 12.0, 13.0, 14.0, 15.0, 16.0, 17.0, 18.0, 19.0, 20.0, 5000.0};
   const auto [slo, shi] = robustSpan(spiky);
   CHECK(slo == 0.0);
-  CHECK(shi < 50.0);    // the spike runs off the chart
-  CHECK(shi >= 20.0);   // the bulk stays on it
+  CHECK(shi < 50.0);   // the spike runs off the chart
+  CHECK(shi >= 20.0);  // the bulk stays on it
 }
 
 TEST_CASE("The crank axis covers the grid exactly with readable ticks", "[axis_range]") {

@@ -28,4 +28,4 @@ inline std::vector<PlotQuantity> fourBarQuantities() {
   return out;
 }
 
-} // namespace linkwright::ui::test
+}  // namespace linkwright::ui::test

@@ -31,8 +31,10 @@ TEST_CASE("The read-out names the curve, the value with its unit and the crank a
 TEST_CASE("The read-out label shows a point and goes back to its hint", "[hover_readout]") {
   HoverReadout readout;
   const QString hint = readout.text();
-  readout.showPoint(fourBarCurve(PlotQuantity::CouplerAngle), {10.0, 20.0}, AngleUnit::Degrees, QStringLiteral("mm"), true);
+  readout.showPoint(fourBarCurve(PlotQuantity::CouplerAngle), {10.0, 20.0}, AngleUnit::Degrees, QStringLiteral("mm"),
+                    true);
   CHECK(readout.text() == QStringLiteral("coupler θ3 = 20.0° at crank 10.0°"));
-  readout.showPoint(fourBarCurve(PlotQuantity::CouplerAngle), {10.0, 20.0}, AngleUnit::Degrees, QStringLiteral("mm"), false);
+  readout.showPoint(fourBarCurve(PlotQuantity::CouplerAngle), {10.0, 20.0}, AngleUnit::Degrees, QStringLiteral("mm"),
+                    false);
   CHECK(readout.text() == hint);
 }

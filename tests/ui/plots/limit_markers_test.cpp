@@ -24,7 +24,7 @@ Solved solve(const k::FourBarDesign& design) {
           k::fourBarLimitPositions(design.lengths, design.branch)};
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("Limit markers of the thesis crank-rocker sit at 21.59° and 228.19°", "[limit_markers]") {
   const Solved s = solve(k::FourBarDesign{});  // 60, 25, 70, 45 mm, open

@@ -34,7 +34,7 @@ QStringList keys(const std::vector<PlotCurve>& curves) {
   return out;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("a slider-crank plots its rod and its piston's stroke, velocity and acceleration", "[plot_panel][linkage]") {
   MechanismDocument doc;
@@ -43,7 +43,8 @@ TEST_CASE("a slider-crank plots its rod and its piston's stroke, velocity and ac
   CHECK(keys(panel.curves()) ==
         QStringList{"rod_angle", "transmission_angle", "rod_omega", "rod_alpha", "C_x", "C_vx", "C_ax"});
   // With a slider, its three charts and the angles show first; the rod's ω and α are a tick away.
-  for (const auto kind : {QuantityKind::Angle, QuantityKind::Position, QuantityKind::Velocity, QuantityKind::Acceleration})
+  for (const auto kind :
+       {QuantityKind::Angle, QuantityKind::Position, QuantityKind::Velocity, QuantityKind::Acceleration})
     CHECK_FALSE(panel.chartView(kind)->isHidden());
   CHECK(panel.chartView(QuantityKind::Omega)->isHidden());
   CHECK(panel.chartView(QuantityKind::Alpha)->isHidden());

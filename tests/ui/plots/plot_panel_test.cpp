@@ -64,7 +64,7 @@ k::FourBarDesign nonGrashof() {
 constexpr std::size_t kCoupler = k::fourbar::kCoupler.index;
 constexpr std::size_t kRocker = k::fourbar::kRocker.index;
 
-} // namespace
+}  // namespace
 
 TEST_CASE("After construction the series hold the document's sweep", "[plot_panel]") {
   MechanismDocument doc;
@@ -117,7 +117,8 @@ TEST_CASE("Editing a length re-plots what the core now says", "[plot_panel]") {
   const QList<QPointF> after = plotted(panel, PlotQuantity::RockerAngle);
   CHECK(after != before);
   CHECK(after == expectedDegrees(doc.sweep(), doc.sweep().linkAngle[kRocker], false));
-  CHECK(plotted(panel, PlotQuantity::CouplerOmega) == expectedDegrees(doc.sweep(), doc.sweep().linkOmega[kCoupler], true));
+  CHECK(plotted(panel, PlotQuantity::CouplerOmega) ==
+        expectedDegrees(doc.sweep(), doc.sweep().linkOmega[kCoupler], true));
   doc.undoStack()->undo();
   CHECK(plotted(panel, PlotQuantity::RockerAngle) == before);
 }
@@ -128,8 +129,8 @@ TEST_CASE("The checkboxes request only what is shown and hide empty charts", "[p
   QSignalSpy selectionSpy(&panel, &PlotPanel::selectionChanged);
   CHECK((doc.request().velocities && doc.request().accelerations));
 
-  for (const PlotQuantity q : {PlotQuantity::CouplerOmega, PlotQuantity::RockerOmega, PlotQuantity::CouplerAlpha,
-                               PlotQuantity::RockerAlpha})
+  for (const PlotQuantity q :
+       {PlotQuantity::CouplerOmega, PlotQuantity::RockerOmega, PlotQuantity::CouplerAlpha, PlotQuantity::RockerAlpha})
     tick(panel, q, false);
   CHECK(selectionSpy.count() == 4);
   CHECK(doc.request().velocities == false);
@@ -144,7 +145,8 @@ TEST_CASE("The checkboxes request only what is shown and hide empty charts", "[p
   CHECK(doc.request().velocities == true);  // α needs ω
   CHECK_FALSE(panel.chartView(QuantityKind::Alpha)->isHidden());
   CHECK(panel.chartView(QuantityKind::Omega)->isHidden());
-  CHECK(plotted(panel, PlotQuantity::RockerAlpha) == expectedDegrees(doc.sweep(), doc.sweep().linkAlpha[kRocker], true));
+  CHECK(plotted(panel, PlotQuantity::RockerAlpha) ==
+        expectedDegrees(doc.sweep(), doc.sweep().linkAlpha[kRocker], true));
   CHECK(plotted(panel, PlotQuantity::CouplerAlpha).isEmpty());
 
   tick(panel, PlotQuantity::RockerAlpha, false);
@@ -199,16 +201,15 @@ TEST_CASE("A non-Grashof linkage plots nothing outside its assemblable range", "
     CAPTURE(fourBarCurve(q).key);
     const QList<QLineSeries*> segments = panel.chartView(quantityKind(q))->segments(q);
     CHECK(segments.size() >= 2);  // the gap splits the line
-    for (const QPointF& p : plotted(panel, q))
-      CHECK(doc.analysis().inputRange.contains(k::degToRad(p.x()), 1e-9));
+    for (const QPointF& p : plotted(panel, q)) CHECK(doc.analysis().inputRange.contains(k::degToRad(p.x()), 1e-9));
   }
   CHECK(plotted(panel, PlotQuantity::RockerAngle).size() == assembled);
   CHECK(plotted(panel, PlotQuantity::RockerAngle) == expectedDegrees(s, s.linkAngle[kRocker], false));
   // Rates only where ok: none of the sweep's placeholder zeros.
   CHECK(plotted(panel, PlotQuantity::CouplerOmega) == expectedDegrees(s, s.linkOmega[kCoupler], true));
   CHECK(plotted(panel, PlotQuantity::RockerAlpha) == expectedDegrees(s, s.linkAlpha[kRocker], true));
-  for (const PlotQuantity q : {PlotQuantity::CouplerOmega, PlotQuantity::RockerOmega, PlotQuantity::CouplerAlpha,
-                               PlotQuantity::RockerAlpha})
+  for (const PlotQuantity q :
+       {PlotQuantity::CouplerOmega, PlotQuantity::RockerOmega, PlotQuantity::CouplerAlpha, PlotQuantity::RockerAlpha})
     for (const QPointF& p : plotted(panel, q)) CHECK(p.y() != 0.0);
 }
 
@@ -232,12 +233,11 @@ TEST_CASE("Moving the crank moves the cursor and leaves the data alone", "[plot_
     REQUIRE(chart->cursorX().has_value());
     CHECK(*chart->cursorX() == Approx(90.0));
   }
-  const auto* cursor = qobject_cast<QLineSeries*>(
-      [&] {
-        for (QAbstractSeries* s : panel.chartViews()[0]->chart()->series())
-          if (s->objectName() == QStringLiteral("cursor")) return s;
-        return static_cast<QAbstractSeries*>(nullptr);
-      }());
+  const auto* cursor = qobject_cast<QLineSeries*>([&] {
+    for (QAbstractSeries* s : panel.chartViews()[0]->chart()->series())
+      if (s->objectName() == QStringLiteral("cursor")) return s;
+    return static_cast<QAbstractSeries*>(nullptr);
+  }());
   REQUIRE(cursor != nullptr);
   CHECK(cursor->isVisible());
   REQUIRE(cursor->count() == 2);
@@ -292,7 +292,8 @@ TEST_CASE("Hovering a curve reads out the nearest sample with its unit", "[plot_
   // The mouse is near the line, not on a sample: the read-out snaps to the sample at 90°.
   emit omega->hovered(QPointF(90.2, 0.0), true);
   const double value = k::radToDeg(doc.sweep().linkOmega[kRocker][180]);
-  CHECK(panel.hoverReadout()->text() == readoutText(fourBarCurve(PlotQuantity::RockerOmega), {90.0, value}, AngleUnit::Degrees));
+  CHECK(panel.hoverReadout()->text() ==
+        readoutText(fourBarCurve(PlotQuantity::RockerOmega), {90.0, value}, AngleUnit::Degrees));
   CHECK(panel.hoverReadout()->text().endsWith(QStringLiteral("deg/s at crank 90.0°")));
   emit omega->hovered(QPointF(90.2, 0.0), false);
   CHECK_FALSE(panel.hoverReadout()->text().contains(QStringLiteral("=")));
@@ -386,7 +387,8 @@ TEST_CASE("The panel renders offscreen with curves in their colours", "[plot_pan
       for (int x = 0; x < image.width(); x += 1) {
         const QColor c = image.pixelColor(x, y);
         n += std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green()) +
-                         std::abs(c.blue() - colour.blue()) < 30
+                         std::abs(c.blue() - colour.blue()) <
+                     30
                  ? 1
                  : 0;
       }

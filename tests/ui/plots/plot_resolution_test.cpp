@@ -47,7 +47,7 @@ struct ShownPanel {
   }
 };
 
-} // namespace
+}  // namespace
 
 TEST_CASE("the displayed samples follow the plot area's width times the quality", "[plot_panel][resolution]") {
   ShownPanel v;

@@ -49,7 +49,7 @@ QList<qsizetype> runLengths(const SeriesRuns& runs) {
   return lengths;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("Angles are plotted wherever assembled, rates only where ok", "[series_data]") {
   const k::SweepResult sweep = handMadeSweep();

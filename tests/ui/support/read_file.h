@@ -15,4 +15,4 @@ inline QByteArray readAll(const QString& path) {
   return f.readAll();
 }
 
-} // namespace linkwright::test
+}  // namespace linkwright::test
