@@ -1,15 +1,12 @@
 #include "app/cli/classify_linkage.h"
 #include "app/cli/commands.h"
 
-#include "kinematics/analysis/assembly_range.h"
-#include "kinematics/analysis/grashof.h"
-#include "kinematics/analysis/limit_positions.h"
-#include "kinematics/analysis/mobility.h"
-#include "kinematics/analysis/quick_return.h"
-#include "kinematics/analysis/transmission.h"
+#include "kinematics/design/design_analysis.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/io/json.h"
 #include "kinematics/io/number_format.h"
+#include "kinematics/model/fourbar.h"
+#include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 
 #include <ostream>
@@ -21,7 +18,8 @@ namespace k = kinematics;
 using k::io::formatFixed;
 using k::io::formatJsonNumber;
 
-// Everything classify reports, computed once and printed as text or JSON.
+// Everything classify reports on a four-bar, computed once (the core's analyseDesign, as the
+// designer shows it) and printed as text or JSON.
 struct Classification {
   ResolvedFourBar fourBar;
   k::GrashofReport grashof;
@@ -29,6 +27,10 @@ struct Classification {
   k::InputRange range;
   std::optional<k::TransmissionRange> transmission;
   k::LimitReport limits;
+
+  Classification(ResolvedFourBar f, const k::DesignAnalysis& a)
+      : fourBar(std::move(f)), grashof(*a.grashof), mobility(a.mobility), range(a.inputRange),
+        transmission(a.transmission), limits(a.limits) {}
 };
 
 std::string deg(double radians) { return formatFixed(k::radToDeg(radians), 2) + "°"; }
@@ -120,12 +122,15 @@ void printJson(const Classification& c, std::ostream& out) {
 
 namespace {
 
-// A shaper's quick-return figures: limits, time ratio, stroke, mobility.
-ExitCode classifyShaper(const k::MechanismExample& e, bool json, std::ostream& out) {
-  const auto q = k::shaperQuickReturn(*e.shaper);
-  const k::MobilityReport m = k::mobility(e.mechanism);
+// A quick return's figures: limits, time ratio, stroke, mobility. `kind` and `description`
+// head the text.
+ExitCode classifyQuickReturn(const std::string& kind, const std::string& description, const k::Mechanism& mechanism,
+                             bool json, std::ostream& out) {
+  const k::DesignAnalysis a = k::analyseDesign(mechanism, k::SweepResult{});
+  const auto& q = a.quickReturn;
+  const k::MobilityReport& m = a.mobility;
   if (json) {
-    out << "{\n  \"mechanism\": " << k::io::jsonQuote(e.kind) << ",\n  \"mobility\": " << m.mobility;
+    out << "{\n  \"mechanism\": " << k::io::jsonQuote(kind) << ",\n  \"mobility\": " << m.mobility;
     if (q)
       out << ",\n  \"limit_crank_angles_deg\": [" << jsonDeg(q->firstLimitCrankAngle) << ", "
           << jsonDeg(q->secondLimitCrankAngle) << "],\n  \"time_ratio\": " << formatJsonNumber(q->timeRatio)
@@ -134,10 +139,10 @@ ExitCode classifyShaper(const k::MechanismExample& e, bool json, std::ostream& o
           << ",\n  \"rocker_swing_deg\": " << jsonDeg(q->rockerSwing)
           << ",\n  \"whitworth\": " << (q->whitworth ? "true" : "false")
           << ",\n  \"stroke\": " << formatJsonNumber(q->stroke);
-    out << ",\n  \"length_unit\": " << k::io::jsonQuote(e.mechanism.lengthUnit) << "\n}\n";
+    out << ",\n  \"length_unit\": " << k::io::jsonQuote(mechanism.lengthUnit) << "\n}\n";
     return ExitCode::Success;
   }
-  out << e.kind << std::string(e.kind.size() < 21 ? 21 - e.kind.size() : 1, ' ') << e.description << "\n";
+  out << kind << std::string(kind.size() < 21 ? 21 - kind.size() : 1, ' ') << description << "\n";
   out << "mobility (Gruebler)  M = 3(" << m.links << " - 1) - 2*" << m.fullJoints << " - " << m.halfJoints << " = "
       << m.mobility << "\n";
   if (!q) {
@@ -154,7 +159,7 @@ ExitCode classifyShaper(const k::MechanismExample& e, bool json, std::ostream& o
   }
   out << "time ratio           " << formatFixed(q->timeRatio, 4) << " (slow stroke " << deg(q->slowStrokeCrankArc)
       << ", quick stroke " << deg(q->quickStrokeCrankArc) << " of crank rotation)\n";
-  out << "ram stroke           " << k::io::formatShort(q->stroke, 8) << " " << e.mechanism.lengthUnit << "\n";
+  out << "ram stroke           " << k::io::formatShort(q->stroke, 8) << " " << mechanism.lengthUnit << "\n";
   return ExitCode::Success;
 }
 
@@ -163,35 +168,41 @@ ExitCode classifyShaper(const k::MechanismExample& e, bool json, std::ostream& o
 ExitCode runClassify(const Invocation& inv, std::ostream& out, std::ostream& err) {
   if (inv.example)
     if (const auto e = k::findMechanismExample(*inv.example)) {
-      if (e->shaper) return classifyShaper(*e, inv.json, out);
+      if (e->shaper) return classifyQuickReturn(e->kind, e->description, e->mechanism, inv.json, out);
       return classifyLinkage(e->kind, e->mechanism, inv.json, out, err);
     }
-  std::optional<ResolvedFourBar> fromDocument;
+  // A document's linkage is classified by what it is, not by how the document stored it: a
+  // four-bar saved as a general linkage is still a four-bar, a quick return still one.
+  std::optional<ResolvedFourBar> fourBar;
+  std::optional<k::Mechanism> mechanism;
   if (inv.documentPath) {
     const auto resolved = resolveMechanism(inv);
     if (!resolved) {
       err << "linkwright-cli: " << resolved.error().message << "\n";
       return ExitCode::BadInput;
     }
-    if (!resolved->fourBar) return classifyLinkage("linkage", resolved->mechanism, inv.json, out, err);
-    fromDocument = resolved->fourBar;
+    mechanism = resolved->mechanism;
+    fourBar = resolved->fourBar;
+    if (const auto s = k::asFourBar(*mechanism); s && !fourBar)
+      fourBar = ResolvedFourBar{s->lengths, mechanism->lengthUnit, s->branch, std::nullopt};
+    if (!fourBar && k::asQuickReturn(*mechanism))
+      return classifyQuickReturn("quick return", "from " + *inv.documentPath, *mechanism, inv.json, out);
+    if (!fourBar) return classifyLinkage("linkage", *mechanism, inv.json, out, err);
+  } else {
+    const auto fb = resolveFourBar(inv);
+    if (!fb) {
+      err << "linkwright-cli: " << fb.error().message << "\n";
+      return ExitCode::BadInput;
+    }
+    const auto built = k::makeFourBar(fb->lengths, fb->branch, fb->lengthUnit);
+    if (!built) {
+      err << "linkwright-cli: " << built.error().message << "\n";
+      return ExitCode::BadInput;
+    }
+    fourBar = *fb;
+    mechanism = *built;
   }
-  const auto fb = fromDocument ? k::Result<ResolvedFourBar>(*fromDocument) : resolveFourBar(inv);
-  if (!fb) {
-    err << "linkwright-cli: " << fb.error().message << "\n";
-    return ExitCode::BadInput;
-  }
-  const auto mechanism = k::makeFourBar(fb->lengths, fb->branch, fb->lengthUnit);
-  if (!mechanism) {
-    err << "linkwright-cli: " << mechanism.error().message << "\n";
-    return ExitCode::BadInput;
-  }
-  const Classification c{*fb,
-                         k::classifyGrashof(fb->lengths),
-                         k::mobility(*mechanism),
-                         k::fourBarInputRange(fb->lengths),
-                         k::fourBarTransmissionRange(fb->lengths),
-                         k::fourBarLimitPositions(fb->lengths, fb->branch)};
+  const Classification c{*fourBar, k::analyseDesign(*mechanism, k::SweepResult{})};
   if (inv.json) printJson(c, out);
   else printText(c, out);
   if (c.range.ranges.empty()) {

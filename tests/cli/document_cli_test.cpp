@@ -8,6 +8,7 @@
 #include "kinematics/design/mechanism_design.h"
 #include "kinematics/io/document_json.h"
 #include "kinematics/io/json.h"
+#include "kinematics/model/fourbar.h"
 
 #include <catch2/catch.hpp>
 
@@ -108,6 +109,34 @@ TEST_CASE("classify --json escapes the document's own names", "[cli][document][j
   REQUIRE(json.ok());
   CHECK((*json)["transmission_angles_deg"][0]["point"] == name);
   CHECK(r.out.find('\t') == std::string::npos);
+}
+
+TEST_CASE("classify reads what a document's linkage is, not how it was stored", "[cli][document]") {
+  // A four-bar saved as a general linkage classifies exactly as the four-bar.
+  kinematics::MechanismDesign fourBar;
+  fourBar.mechanism = *kinematics::makeFourBar({60.0, 25.0, 70.0, 45.0}, kinematics::Branch::Crossed);
+  const TempDocument fourBarFile("recognised_fourbar", kinematics::io::writeDocument(fourBar));
+  for (const bool json : {false, true}) {
+    std::vector<std::string> fromFile{"classify", fourBarFile.path()};
+    std::vector<std::string> fromOptions{"classify", "--fourbar", "60,25,70,45", "--branch", "crossed"};
+    if (json) fromFile.push_back("--json"), fromOptions.push_back("--json");
+    const Run a = run(fromFile);
+    const Run b = run(fromOptions);
+    INFO(a.err);
+    REQUIRE(a.code == 0);
+    CHECK(a.out == b.out);
+  }
+  // A shaper whose kind says only "linkage" still gets its quick-return figures.
+  kinematics::MechanismDesign shaper = kinematics::designFromExample(*kinematics::findMechanismExample("shaper"));
+  shaper.kind = "linkage";
+  const TempDocument shaperFile("recognised_shaper", kinematics::io::writeDocument(shaper));
+  const Run a = run({"classify", shaperFile.path()});
+  const Run b = run({"classify", "--example", "shaper"});
+  REQUIRE(a.code == 0);
+  REQUIRE(b.code == 0);
+  // The same figures after the heading line.
+  CHECK(a.out.substr(a.out.find('\n')) == b.out.substr(b.out.find('\n')));
+  CHECK_THAT(a.out, Catch::Contains("time ratio"));
 }
 
 TEST_CASE("a version 1 document analyses as its four-bar", "[cli][document][migration]") {
