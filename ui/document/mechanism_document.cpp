@@ -91,6 +91,11 @@ void MechanismDocument::setRequest(const k::SolveRequest& request) {
   emit changed(Change::Request);
 }
 
+void MechanismDocument::setRequestSource(QObject* owner, RequestSource source) {
+  m_requestOwner = owner;
+  m_requestSource = std::move(source);
+}
+
 void MechanismDocument::setQuality(SamplingQuality quality) {
   if (quality == m_quality) return;
   m_quality = quality;
@@ -147,6 +152,11 @@ void MechanismDocument::rebuild() {
   m_mechanism = k::buildMechanism(m_design).value();
   // Sized once per design: free points then start each solve from the last pose shown.
   k::preparePose(m_mechanism, m_pose);
+  if (m_requestOwner && m_requestSource) {
+    k::SolveRequest wanted = m_requestSource(m_mechanism, m_pose);
+    wanted.newton = m_request.newton;
+    m_request = wanted;
+  }
   resweep();
   // The crank range and gaps the panel states are the design's grid's, as in the CSV export,
   // whatever the plots' resolution; positions alone decide them. A four-bar whose crank turns

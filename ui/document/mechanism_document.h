@@ -18,10 +18,12 @@
 #include "kinematics/solve/sweep.h"
 
 #include <QObject>
+#include <QPointer>
 #include <QString>
 #include <QTimer>
 #include <QUndoStack>
 
+#include <functional>
 #include <optional>
 
 namespace linkwright::ui {
@@ -93,6 +95,12 @@ public:
   /// settings follow quality(); setRequest ignores the ones it is given.
   kinematics::SolveRequest request() const { return m_request; }
   void setRequest(const kinematics::SolveRequest& request);
+  /// What the plots will ask for once they see a new mechanism (its curves and the selection
+  /// they will have), so that a design change sweeps once, for that, instead of sweeping for
+  /// the old request and again when the plots ask. Called by rebuild() with the new
+  /// mechanism and its prepared (not yet solved) pose; ignored once `owner` is destroyed.
+  using RequestSource = std::function<kinematics::SolveRequest(const kinematics::Mechanism&, const kinematics::Pose&)>;
+  void setRequestSource(QObject* owner, RequestSource source);
 
   /// Samples per pixel and Newton tolerance of the displayed sweep (Normal by default).
   SamplingQuality quality() const { return m_quality; }
@@ -156,6 +164,8 @@ private:
   double m_sweepMs = 0.0;
   mutable long m_sweepsRun = 0;
   mutable std::optional<ValidatedGrid> m_validatedGrid;
+  QPointer<QObject> m_requestOwner;
+  RequestSource m_requestSource;
   SamplingQuality m_quality = SamplingQuality::Normal;
   double m_displayWidth = kDefaultDisplayWidth;
   QualityEstimate m_estimate;

@@ -67,6 +67,11 @@ PlotPanel::PlotPanel(MechanismDocument* document, QWidget* parent)
 
   connect(m_selector, &QuantitySelector::selectionChanged, this, &PlotPanel::onSelectionChanged);
   connect(m_document, &MechanismDocument::changed, this, &PlotPanel::onDocumentChanged);
+  // A new mechanism is swept once, for what these plots will show of it.
+  m_document->setRequestSource(this, [this](const kinematics::Mechanism& m, const kinematics::Pose& pose) {
+    const std::vector<PlotCurve> curves = plotCurves(m, pose);
+    return requestFor(selectionAfter(m_curves, selection(), curves), curves);
+  });
   refreshCurves();
   // Ask for exactly what the default selection shows, and plot it.
   applySelection();
@@ -106,17 +111,9 @@ void PlotPanel::setSelection(const QuantitySelection& selection) { m_selector->s
 QuantityChartView* PlotPanel::chartView(QuantityKind kind) const { return m_views[static_cast<std::size_t>(kind)]; }
 
 void PlotPanel::onDocumentChanged(Changes what) {
-  if (what & Change::Design) {
-    // A new structure has new quantities; the request may need to change with them.
-    const std::vector<PlotCurve> before = m_curves;
-    refreshCurves();
-    kinematics::SolveRequest wanted = requestFor(selection(), m_curves);
-    wanted.newton = m_document->request().newton;
-    if (m_curves != before && wanted != m_document->request()) {
-      applySelection();
-      return;
-    }
-  }
+  // A new structure has new quantities; the document has already swept for what they need
+  // (setRequestSource), so the plots only follow.
+  if (what & Change::Design) refreshCurves();
   if (what & (Changes(Change::Design) | Change::Request)) refreshData();
   else if (what & Change::Motion) refreshCursor();
 }
@@ -129,13 +126,8 @@ void PlotPanel::onSelectionChanged() {
 void PlotPanel::refreshCurves() {
   std::vector<PlotCurve> curves = plotCurves(m_document->mechanism(), m_document->pose());
   if (curves == m_curves && !m_curves.empty()) return;
-  const auto sameQuantities = [](const std::vector<PlotCurve>& a, const std::vector<PlotCurve>& b) {
-    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
-                      [](const PlotCurve& x, const PlotCurve& y) { return x.quantity == y.quantity; });
-  };
   // Another kind of linkage starts from its own defaults; renamed links keep the user's ticks.
-  const QuantitySelection selection =
-      sameQuantities(curves, m_curves) ? m_selector->selection() : defaultSelection(curves);
+  const QuantitySelection selection = selectionAfter(m_curves, m_selector->selection(), curves);
   m_curves = std::move(curves);
   m_selector->setCurves(m_curves, selection);
   for (QuantityChartView* view : m_views) view->setCurves(m_curves);

@@ -179,6 +179,14 @@ QuantitySelection defaultSelection(const std::vector<PlotCurve>& curves) {
   return s;
 }
 
+QuantitySelection selectionAfter(const std::vector<PlotCurve>& before, const QuantitySelection& current,
+                                 const std::vector<PlotCurve>& after) {
+  const bool sameQuantities =
+      std::equal(before.begin(), before.end(), after.begin(), after.end(),
+                 [](const PlotCurve& x, const PlotCurve& y) { return x.quantity == y.quantity; });
+  return sameQuantities ? current : defaultSelection(after);
+}
+
 k::SolveRequest requestFor(const QuantitySelection& s, const std::vector<PlotCurve>& curves) {
   const bool accelerations = s.any(QuantityKind::Alpha, curves) || s.any(QuantityKind::Acceleration, curves);
   const bool velocities = s.any(QuantityKind::Omega, curves) || s.any(QuantityKind::Velocity, curves);

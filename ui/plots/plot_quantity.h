@@ -92,6 +92,11 @@ private:
 /// start unticked, so the slider's three charts and the angles fit the window.
 QuantitySelection defaultSelection(const std::vector<PlotCurve>& curves);
 
+/// The selection once the curves change from `before` to `after`: the user's ticks while the
+/// quantities stay the same (renamed links keep them), else the new mechanism's defaults.
+QuantitySelection selectionAfter(const std::vector<PlotCurve>& before, const QuantitySelection& current,
+                                 const std::vector<PlotCurve>& after);
+
 /// What the sweep must compute for `selection` of `curves`: velocities only if an ω or a
 /// velocity is shown; accelerations (which imply velocities) only if an α or an acceleration is.
 kinematics::SolveRequest requestFor(const QuantitySelection& selection, const std::vector<PlotCurve>& curves);

@@ -9,6 +9,7 @@
 #include "ui/plots/quantity_chart_view.h"
 #include "ui/plots/quantity_selector.h"
 
+#include "kinematics/design/dyad_request.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
 
@@ -158,6 +159,26 @@ TEST_CASE("The checkboxes request only what is shown and hide empty charts", "[p
   const QLineSeries* couplerLine = panel.chartView(QuantityKind::Angle)->segments(PlotQuantity::CouplerAngle)[0];
   CHECK_FALSE(couplerLine->isVisible());
   CHECK(couplerLine->count() == 0);
+}
+
+TEST_CASE("A new mechanism is swept once, for what the plots will show of it", "[plot_panel]") {
+  MechanismDocument doc;
+  PlotPanel panel(&doc);
+  for (const PlotQuantity q : {PlotQuantity::CouplerAlpha, PlotQuantity::RockerAlpha}) tick(panel, q, false);
+  REQUIRE_FALSE(doc.request().accelerations);
+  // Attaching a dyad brings new links, so the plots start from their defaults, α ticked: the
+  // edit sweeps the display once for that (and the new linkage's grid once), never again
+  // from the plots' own change handler.
+  const auto attached =
+      k::attachToDesign(doc.design(), k::suggestDyad(doc.mechanism(), doc.crankAngle(), k::DyadKind::Rrr));
+  REQUIRE(attached.ok());
+  const long before = doc.sweepsRun();
+  REQUIRE_FALSE(doc.edit(*attached, "attach").has_value());
+  CHECK(doc.sweepsRun() - before == 2);
+  CHECK(doc.request().accelerations);
+  CHECK_FALSE(panel.chartView(QuantityKind::Alpha)->isHidden());
+  CHECK(plotted(panel, PlotQuantity::RockerAlpha) ==
+        expectedDegrees(doc.sweep(), doc.sweep().linkAlpha[kRocker], true));
 }
 
 TEST_CASE("Radians convert angles, ω and α and the x axis", "[plot_panel]") {
