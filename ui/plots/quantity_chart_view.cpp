@@ -3,12 +3,14 @@
 #include "ui/plots/crank_angle_chart.h"
 
 #include <QChart>
+#include <QFontMetricsF>
 #include <QLineSeries>
 #include <QValueAxis>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 namespace linkwright::ui {
 namespace {
@@ -36,6 +38,11 @@ QuantityChartView::QuantityChartView(QuantityKind kind, const QString& title, QW
   // OpenGL stays off (the default): a few 721-point lines draw well under a frame in
   // software, and the OpenGL path cannot be exported as SVG.
   m_cursor = makeCrankCursor(chart, m_xAxis, m_yAxis);
+  // A shorter plot labels fewer ticks; the data stay as they are. (A new range changes the
+  // labels' width, not the plot's height, so this settles at once.)
+  connect(chart, &QChart::plotAreaChanged, this, [this] {
+    if (tickBudget() != m_tickBudget) applyValueRange();
+  });
 }
 
 QuantityChartView::~QuantityChartView() = default;
@@ -76,14 +83,29 @@ void QuantityChartView::setData(const kinematics::SweepResult& sweep, const Quan
   // Spikes next to a toggle would squash every other value flat: they run off the chart
   // instead, and the hover read-out still gives their value.
   constexpr double kNone = std::numeric_limits<double>::infinity();
-  const auto [lo, hi] = m_values.empty() ? std::pair<double, double>{kNone, -kNone} : robustSpan(m_values);
-  m_valueRange = niceValueRange(lo, hi);
-  applyAxisRange(m_yAxis, m_valueRange);
+  std::tie(m_lo, m_hi) = m_values.empty() ? std::pair<double, double>{kNone, -kNone} : robustSpan(m_values);
+  applyValueRange();
   m_yAxis->setTitleText(valueAxisTitle(m_kind, unit, lengthUnit));
   const AxisRange x = crankAxisRange(fromDeg, toDeg, unit);
   applyAxisRange(m_xAxis, x);
   m_xAxis->setTickInterval(x.step);
   m_xAxis->setTitleText(crankAxisTitle(unit));
+}
+
+int QuantityChartView::tickBudget() const {
+  // Qt Charts elides every label of an axis whose labels overlap ("…"): a label needs about
+  // one and a half lines of the plot's height. Before the first layout, the default.
+  constexpr int kMostTicks = 6;
+  const double height = chart()->plotArea().height();
+  if (height <= 0.0) return kMostTicks;
+  const double spacing = 1.5 * QFontMetricsF(m_yAxis->labelsFont()).height();
+  return std::clamp(static_cast<int>(height / spacing), 2, kMostTicks);
+}
+
+void QuantityChartView::applyValueRange() {
+  m_tickBudget = tickBudget();
+  m_valueRange = niceValueRange(m_lo, m_hi, m_tickBudget);
+  applyAxisRange(m_yAxis, m_valueRange);
   m_cursor->setYSpan(m_valueRange.min, m_valueRange.max);
 }
 

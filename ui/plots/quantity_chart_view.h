@@ -66,6 +66,9 @@ private:
   };
 
   void onSegmentHovered(PlotQuantity quantity, const QLineSeries* segment, QPointF point, bool inside);
+  // The value axis over the data's span, with no more ticks than the plot's height can label.
+  void applyValueRange();
+  int tickBudget() const;
 
   QuantityKind m_kind;
   QValueAxis* m_xAxis;
@@ -73,6 +76,8 @@ private:
   std::vector<Curve> m_curves;
   std::unique_ptr<VerticalMarker> m_cursor;
   AxisRange m_valueRange;
+  double m_lo = 0.0, m_hi = 0.0;  // the data's span that m_valueRange covers
+  int m_tickBudget = 0;           // the budget m_valueRange was made with
   SeriesRuns m_runs;
   std::vector<double> m_values;  // y values of one update, reused
 };

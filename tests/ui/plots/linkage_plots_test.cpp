@@ -11,6 +11,9 @@
 #include "kinematics/model/units.h"
 
 #include <QCheckBox>
+#include <QCoreApplication>
+#include <QFontMetricsF>
+#include <QGraphicsLayout>
 #include <QLineSeries>
 #include <QValueAxis>
 
@@ -91,4 +94,27 @@ TEST_CASE("a six-bar plots links 3 to 6 and both transmission angles; back to a 
   CHECK(keys(panel.curves()).size() == 7);
   CHECK(panel.limitMarkers()->lineXs().size() == 2);
   CHECK_FALSE(panel.chartView(QuantityKind::Alpha)->isHidden());
+}
+
+TEST_CASE("a short chart labels fewer ticks, so that no label is elided", "[plot_panel][linkage]") {
+  // Qt Charts elides every label of a value axis whose labels would overlap: the shaper's four
+  // charts in an 880 px window left its slider charts with "…" for every value.
+  MechanismDocument doc;
+  doc.reset(*k::designForExample("shaper"));
+  PlotPanel panel(&doc);
+  panel.show();
+  QuantityChartView* view = panel.chartView(QuantityKind::Position);
+  for (const int height : {700, 2400}) {
+    CAPTURE(height);
+    panel.resize(500, height);
+    QCoreApplication::processEvents();
+    view->chart()->layout()->activate();
+    const double area = view->chart()->plotArea().height();
+    const double label = QFontMetricsF(view->yAxis()->labelsFont()).height();
+    const int ticks = view->yAxis()->tickCount();
+    INFO("plot area " << area << " px, label " << label << " px");
+    REQUIRE(ticks >= 2);
+    CHECK(area / (ticks - 1) >= label);     // room between ticks for each label
+    if (height == 2400) CHECK(ticks >= 5);  // a tall chart keeps a fine scale
+  }
 }
