@@ -182,7 +182,7 @@ TEST_CASE("the dimensions panel edits any linkage through the document", "[ui][l
   // The rod: C's length to B.
   std::size_t rod = fields.size();
   for (std::size_t i = 0; i < fields.size(); ++i)
-    if (fields[i].point == k::PointId{2} && fields[i].slot == 0) rod = i;
+    if (fields[i].parameter == k::Parameter{k::PointId{2}, k::ParameterSlot::Length}) rod = i;
   REQUIRE(rod < fields.size());
   CHECK(panel.editor(rod)->value() == Approx(6.098 * 25.4));
   panel.editor(rod)->setValue(160.0);
@@ -194,7 +194,7 @@ TEST_CASE("the dimensions panel edits any linkage through the document", "[ui][l
   // editor snaps back.
   std::size_t guideY = fields.size();
   for (std::size_t i = 0; i < fields.size(); ++i)
-    if (fields[i].point == k::PointId{2} && fields[i].slot == 2) guideY = i;
+    if (fields[i].parameter == k::Parameter{k::PointId{2}, k::ParameterSlot::GuideY}) guideY = i;
   REQUIRE(guideY < fields.size());
   panel.editor(guideY)->setValue(500.0);
   CHECK(panel.refusalMessage().contains("cannot be assembled at any crank angle"));

@@ -6,7 +6,6 @@
 
 #include <QCoreApplication>
 
-#include <type_traits>
 #include <variant>
 
 namespace linkwright::ui {
@@ -21,106 +20,74 @@ QString nameOf(const k::Mechanism& m, k::PointId p) {
   return p.index < m.points.size() ? pointDisplayName(m.points[p.index].name) : QString();
 }
 
-// The address of a number, const or not as the mechanism it lies in.
-template <typename Owner>
-using NumberPtr = std::conditional_t<std::is_const_v<Owner>, const double*, double*>;
-
-// Slots of a guide: 0 point x / along, 1 point y / across, 2 angle.
-template <typename G>
-NumberPtr<G> guideSlot(G& g, int slot) {
-  switch (slot) {
-  case 0: return &g.point.x();
-  case 1: return &g.point.y();
-  default: return &g.angle;
-  }
-}
-
-void addGuideFields(std::vector<DimensionField>& out, const k::Mechanism& m, k::PointId p, const k::Guide& g, int base,
-                    const QString& prefix) {
+// The editor's label of a guide's number: through a point on a ground guide, or along and
+// across a moving link for a guide fixed to it.
+QString guideLabel(const k::Mechanism& m, const k::Guide& g, int which, const QString& prefix) {
   if (g.link) {
     const QString link = QString::fromStdString(m.links[g.link->index].name);
-    out.push_back({p, base, FieldKind::Offset, tr("%1 along %2").arg(prefix, link)});
-    out.push_back({p, base + 1, FieldKind::Offset, tr("%1 across %2").arg(prefix, link)});
-    out.push_back({p, base + 2, FieldKind::AngleDeg, tr("%1 angle to %2").arg(prefix, link)});
-  } else {
-    out.push_back({p, base, FieldKind::Offset, tr("%1 through x").arg(prefix)});
-    out.push_back({p, base + 1, FieldKind::Offset, tr("%1 through y").arg(prefix)});
-    out.push_back({p, base + 2, FieldKind::AngleDeg, tr("%1 angle").arg(prefix)});
+    if (which == 0) return tr("%1 along %2").arg(prefix, link);
+    if (which == 1) return tr("%1 across %2").arg(prefix, link);
+    return tr("%1 angle to %2").arg(prefix, link);
   }
+  if (which == 0) return tr("%1 through x").arg(prefix);
+  if (which == 1) return tr("%1 through y").arg(prefix);
+  return tr("%1 angle").arg(prefix);
 }
 
-// The number behind (point, slot): one table for reading and writing.
-template <typename M>
-NumberPtr<M> slotOf(M& m, const DimensionField& f) {
-  if (f.point.index >= m.points.size()) return nullptr;
-  auto& definition = m.points[f.point.index].definition;
-  if (auto* g = std::get_if<k::GroundPoint>(&definition)) return f.slot == 0 ? &g->position.x() : &g->position.y();
-  if (auto* c = std::get_if<k::CrankPoint>(&definition)) return f.slot == 0 ? &c->length : &c->phase;
-  if (auto* r = std::get_if<k::RrrPoint>(&definition)) return f.slot == 0 ? &r->firstLength : &r->secondLength;
-  if (auto* s = std::get_if<k::RrpPoint>(&definition))
-    return f.slot == 0 ? &s->length : guideSlot(s->guide, f.slot - 1);
-  if (auto* s = std::get_if<k::RprPoint>(&definition)) return &s->length;
-  if (auto* p = std::get_if<k::PrpPoint>(&definition))
-    return f.slot < 3 ? guideSlot(p->first, f.slot) : guideSlot(p->second, f.slot - 3);
-  if (auto* a = std::get_if<k::AttachedPoint>(&definition)) return f.slot == 0 ? &a->along : &a->across;
-  if (auto* free = std::get_if<k::FreePoint>(&definition)) {
-    if (f.slot < 2) return f.slot == 0 ? &free->guess.x() : &free->guess.y();
-    const std::size_t c = static_cast<std::size_t>(f.slot - 2);
-    return c < m.constraints.size() ? &m.constraints[c].length : nullptr;
+QString labelOf(const k::Mechanism& m, const k::Parameter& p) {
+  using S = k::ParameterSlot;
+  const auto& d = m.points[p.point.index].definition;
+  const auto to = [&](k::PointId other) { return tr("to %1").arg(nameOf(m, other)); };
+  const bool free = std::holds_alternative<k::FreePoint>(d);
+  switch (p.slot) {
+  case S::X: return free ? tr("guess x") : tr("x");
+  case S::Y: return free ? tr("guess y") : tr("y");
+  case S::Phase: return tr("phase");
+  case S::Along: return tr("along");
+  case S::Across: return tr("across");
+  case S::Length:
+    if (const auto* c = std::get_if<k::CrankPoint>(&d)) return to(c->pivot);
+    if (const auto* r = std::get_if<k::RrrPoint>(&d)) return to(r->first);
+    if (const auto* s = std::get_if<k::RrpPoint>(&d)) return to(s->first);
+    if (const auto* s = std::get_if<k::RprPoint>(&d)) return to(s->pivot);
+    return {};
+  case S::SecondLength: return to(std::get<k::RrrPoint>(d).second);
+  case S::GuideX:
+  case S::GuideY:
+  case S::GuideAngle: {
+    const int which = p.slot == S::GuideX ? 0 : p.slot == S::GuideY ? 1 : 2;
+    if (const auto* s = std::get_if<k::RrpPoint>(&d)) return guideLabel(m, s->guide, which, tr("guide"));
+    return guideLabel(m, std::get<k::PrpPoint>(d).first, which, tr("guide 1"));
   }
-  return nullptr;
+  case S::SecondGuideX:
+  case S::SecondGuideY:
+  case S::SecondGuideAngle: {
+    const int which = p.slot == S::SecondGuideX ? 0 : p.slot == S::SecondGuideY ? 1 : 2;
+    return guideLabel(m, std::get<k::PrpPoint>(d).second, which, tr("guide 2"));
+  }
+  case S::ConstraintLength: {
+    const k::DistanceConstraint& dc = m.constraints[p.constraint];
+    return to(dc.first == p.point ? dc.second : dc.first);
+  }
+  }
+  return {};
 }
 
 }  // namespace
 
 std::vector<DimensionField> dimensionFields(const k::Mechanism& m) {
   std::vector<DimensionField> out;
-  for (std::size_t i = 0; i < m.points.size(); ++i) {
-    const k::PointId p{i};
-    const auto& definition = m.points[i].definition;
-    const auto to = [&](k::PointId other) { return tr("to %1").arg(nameOf(m, other)); };
-    if (std::holds_alternative<k::GroundPoint>(definition)) {
-      out.push_back({p, 0, FieldKind::Offset, tr("x")});
-      out.push_back({p, 1, FieldKind::Offset, tr("y")});
-    } else if (const auto* c = std::get_if<k::CrankPoint>(&definition)) {
-      out.push_back({p, 0, FieldKind::Length, to(c->pivot)});
-      out.push_back({p, 1, FieldKind::AngleDeg, tr("phase")});
-    } else if (const auto* r = std::get_if<k::RrrPoint>(&definition)) {
-      out.push_back({p, 0, FieldKind::Length, to(r->first)});
-      out.push_back({p, 1, FieldKind::Length, to(r->second)});
-    } else if (const auto* s = std::get_if<k::RrpPoint>(&definition)) {
-      out.push_back({p, 0, FieldKind::Length, to(s->first)});
-      addGuideFields(out, m, p, s->guide, 1, tr("guide"));
-    } else if (const auto* slot = std::get_if<k::RprPoint>(&definition)) {
-      out.push_back({p, 0, FieldKind::Length, to(slot->pivot)});
-    } else if (const auto* pin = std::get_if<k::PrpPoint>(&definition)) {
-      addGuideFields(out, m, p, pin->first, 0, tr("guide 1"));
-      addGuideFields(out, m, p, pin->second, 3, tr("guide 2"));
-    } else if (std::holds_alternative<k::AttachedPoint>(definition)) {
-      out.push_back({p, 0, FieldKind::Offset, tr("along")});
-      out.push_back({p, 1, FieldKind::Offset, tr("across")});
-    } else if (std::holds_alternative<k::FreePoint>(definition)) {
-      out.push_back({p, 0, FieldKind::Offset, tr("guess x")});
-      out.push_back({p, 1, FieldKind::Offset, tr("guess y")});
-      // Each constraint is listed once, under the later of its two points.
-      for (std::size_t ci = 0; ci < m.constraints.size(); ++ci) {
-        const k::DistanceConstraint& dc = m.constraints[ci];
-        if (std::max(dc.first.index, dc.second.index) != i) continue;
-        out.push_back({p, static_cast<int>(2 + ci), FieldKind::Length, to(dc.first.index == i ? dc.second : dc.first)});
-      }
-    }
-  }
+  for (const k::Parameter& p : k::parametersOf(m)) out.push_back({p, labelOf(m, p)});
   return out;
 }
 
 double fieldValue(const k::Mechanism& mechanism, const DimensionField& field) {
-  const double* value = slotOf(mechanism, field);
-  if (value == nullptr) return 0.0;
-  return field.kind == FieldKind::AngleDeg ? k::radToDeg(*value) : *value;
+  const double value = k::parameterValue(mechanism, field.parameter).value_or(0.0);
+  return field.unit() == k::ParameterUnit::Angle ? k::radToDeg(value) : value;
 }
 
 void setFieldValue(k::Mechanism& mechanism, const DimensionField& field, double value) {
-  if (double* slot = slotOf(mechanism, field)) *slot = field.kind == FieldKind::AngleDeg ? k::degToRad(value) : value;
+  k::setParameter(mechanism, field.parameter, field.unit() == k::ParameterUnit::Angle ? k::degToRad(value) : value);
 }
 
 k::Branch* branchOf(k::Point& point) {

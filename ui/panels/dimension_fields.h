@@ -1,10 +1,9 @@
 #pragma once
-// The numbers that define each point of a linkage, as editable fields: a ground pivot's x and
-// y, a crank's length and phase, an RRR joint's two lengths, a slider's rod length and its
-// guide, a slotted link's length, a point's offsets on its link, a free point's guess and the
-// constraint lengths that reach it. The dimensions panel shows one editor per field; reading
-// and writing go through here, so the panel never touches a point definition itself.
+// The dimensions panel's fields: the core's parameters of each point
+// (kinematics/design/parameters.h) with their labels, and their values as the editors show
+// them (degrees for angles). The panel never touches a point definition itself.
 
+#include "kinematics/design/parameters.h"
 #include "kinematics/model/mechanism.h"
 
 #include <QString>
@@ -13,18 +12,15 @@
 
 namespace linkwright::ui {
 
-enum class FieldKind {
-  Length,    ///< positive, length unit
-  Offset,    ///< any sign, length unit (offsets, coordinates)
-  AngleDeg,  ///< degrees in the editor, radians in the model
-};
-
+/// One editor of the dimensions panel: a core parameter (kinematics/design/parameters.h)
+/// and its label.
 struct DimensionField {
-  kinematics::PointId point;
-  int slot = 0;  ///< which number of the point's definition (see dimension_fields.cpp)
-  FieldKind kind = FieldKind::Length;
+  kinematics::Parameter parameter;
   QString label;  ///< "to O₂", "x", "phase", "guide angle"
   bool operator==(const DimensionField&) const = default;
+
+  kinematics::PointId point() const { return parameter.point; }
+  kinematics::ParameterUnit unit() const { return kinematics::parameterUnit(parameter.slot); }
 };
 
 /// Every editable number of `mechanism`, point by point.

@@ -59,18 +59,18 @@ void DimensionsPanel::rebuild() {
                    m_box);
     m_rows.push_back(heading);
     m_grid->addWidget(heading, row++, 0, 1, 2);
-    for (; next < m_fields.size() && m_fields[next].point == p; ++next) {
+    for (; next < m_fields.size() && m_fields[next].point() == p; ++next) {
       const DimensionField& f = m_fields[next];
       auto* label = new QLabel(f.label, m_box);
       auto* spin = new QDoubleSpinBox(m_box);
       spin->setDecimals(4);
       spin->setKeyboardTracking(false);  // typed numbers apply on Enter or focus out
       spin->setAccelerated(true);
-      if (f.kind == FieldKind::AngleDeg) {
+      if (f.unit() == k::ParameterUnit::Angle) {
         spin->setRange(-360.0, 360.0);
         spin->setSuffix(QStringLiteral("°"));
       } else {
-        spin->setRange(f.kind == FieldKind::Length ? 1e-6 : -1e9, 1e9);
+        spin->setRange(f.unit() == k::ParameterUnit::Length ? 1e-6 : -1e9, 1e9);
         spin->setSuffix(unit);
       }
       label->setBuddy(spin);
@@ -121,7 +121,7 @@ void DimensionsPanel::editField(std::size_t index, double value) {
   k::MechanismDesign d = *current;
   setFieldValue(d.mechanism, m_fields[index], value);
   const DimensionField& f = m_fields[index];
-  const QString what = tr("Change %1: %2").arg(pointDisplayName(d.mechanism.points[f.point.index].name), f.label);
+  const QString what = tr("Change %1: %2").arg(pointDisplayName(d.mechanism.points[f.point().index].name), f.label);
   showOutcome(m_document->edit(d, what));
 }
 

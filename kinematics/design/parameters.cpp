@@ -1,0 +1,121 @@
+#include "kinematics/design/parameters.h"
+
+#include <algorithm>
+#include <type_traits>
+#include <variant>
+
+namespace linkwright::kinematics {
+namespace {
+
+// The address of a number, const or not as the mechanism it lies in.
+template <typename Owner>
+using NumberPtr = std::conditional_t<std::is_const_v<Owner>, const double*, double*>;
+
+template <typename G>
+NumberPtr<G> guideNumber(G& g, int which) {  // 0 x / along, 1 y / across, 2 angle
+  return which == 0 ? &g.point.x() : which == 1 ? &g.point.y() : &g.angle;
+}
+
+int guideIndex(ParameterSlot s) {
+  switch (s) {
+  case ParameterSlot::GuideX:
+  case ParameterSlot::SecondGuideX: return 0;
+  case ParameterSlot::GuideY:
+  case ParameterSlot::SecondGuideY: return 1;
+  default: return 2;
+  }
+}
+
+bool firstGuide(ParameterSlot s) {
+  return s == ParameterSlot::GuideX || s == ParameterSlot::GuideY || s == ParameterSlot::GuideAngle;
+}
+bool secondGuide(ParameterSlot s) {
+  return s == ParameterSlot::SecondGuideX || s == ParameterSlot::SecondGuideY || s == ParameterSlot::SecondGuideAngle;
+}
+
+// The number behind a parameter: one table for reading and writing.
+template <typename M>
+NumberPtr<M> numberOf(M& m, const Parameter& p) {
+  using S = ParameterSlot;
+  if (p.point.index >= m.points.size()) return nullptr;
+  auto& d = m.points[p.point.index].definition;
+  if (auto* g = std::get_if<GroundPoint>(&d))
+    return p.slot == S::X ? &g->position.x() : p.slot == S::Y ? &g->position.y() : nullptr;
+  if (auto* c = std::get_if<CrankPoint>(&d))
+    return p.slot == S::Length ? &c->length : p.slot == S::Phase ? &c->phase : nullptr;
+  if (auto* r = std::get_if<RrrPoint>(&d))
+    return p.slot == S::Length ? &r->firstLength : p.slot == S::SecondLength ? &r->secondLength : nullptr;
+  if (auto* s = std::get_if<RrpPoint>(&d))
+    return p.slot == S::Length ? &s->length : firstGuide(p.slot) ? guideNumber(s->guide, guideIndex(p.slot)) : nullptr;
+  if (auto* s = std::get_if<RprPoint>(&d)) return p.slot == S::Length ? &s->length : nullptr;
+  if (auto* pin = std::get_if<PrpPoint>(&d)) {
+    if (firstGuide(p.slot)) return guideNumber(pin->first, guideIndex(p.slot));
+    if (secondGuide(p.slot)) return guideNumber(pin->second, guideIndex(p.slot));
+    return nullptr;
+  }
+  if (auto* a = std::get_if<AttachedPoint>(&d))
+    return p.slot == S::Along ? &a->along : p.slot == S::Across ? &a->across : nullptr;
+  if (auto* f = std::get_if<FreePoint>(&d)) {
+    if (p.slot == S::X) return &f->guess.x();
+    if (p.slot == S::Y) return &f->guess.y();
+    if (p.slot == S::ConstraintLength && p.constraint < m.constraints.size())
+      return &m.constraints[p.constraint].length;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+std::vector<Parameter> parametersOf(const Mechanism& m) {
+  using S = ParameterSlot;
+  std::vector<Parameter> out;
+  for (std::size_t i = 0; i < m.points.size(); ++i) {
+    const PointId p{i};
+    const auto add = [&](std::initializer_list<S> slots) {
+      for (const S s : slots) out.push_back({p, s});
+    };
+    const auto& d = m.points[i].definition;
+    if (std::holds_alternative<GroundPoint>(d)) add({S::X, S::Y});
+    else if (std::holds_alternative<CrankPoint>(d)) add({S::Length, S::Phase});
+    else if (std::holds_alternative<RrrPoint>(d)) add({S::Length, S::SecondLength});
+    else if (std::holds_alternative<RrpPoint>(d)) add({S::Length, S::GuideX, S::GuideY, S::GuideAngle});
+    else if (std::holds_alternative<RprPoint>(d)) add({S::Length});
+    else if (std::holds_alternative<PrpPoint>(d))
+      add({S::GuideX, S::GuideY, S::GuideAngle, S::SecondGuideX, S::SecondGuideY, S::SecondGuideAngle});
+    else if (std::holds_alternative<AttachedPoint>(d)) add({S::Along, S::Across});
+    else if (std::holds_alternative<FreePoint>(d)) {
+      add({S::X, S::Y});
+      // Each constraint is listed once, under the later of its two points.
+      for (std::size_t c = 0; c < m.constraints.size(); ++c)
+        if (std::max(m.constraints[c].first.index, m.constraints[c].second.index) == i)
+          out.push_back({p, S::ConstraintLength, c});
+    }
+  }
+  return out;
+}
+
+ParameterUnit parameterUnit(ParameterSlot slot) {
+  switch (slot) {
+  case ParameterSlot::Length:
+  case ParameterSlot::SecondLength:
+  case ParameterSlot::ConstraintLength: return ParameterUnit::Length;
+  case ParameterSlot::Phase:
+  case ParameterSlot::GuideAngle:
+  case ParameterSlot::SecondGuideAngle: return ParameterUnit::Angle;
+  default: return ParameterUnit::Offset;
+  }
+}
+
+std::optional<double> parameterValue(const Mechanism& mechanism, const Parameter& parameter) {
+  if (const double* number = numberOf(mechanism, parameter)) return *number;
+  return std::nullopt;
+}
+
+bool setParameter(Mechanism& mechanism, const Parameter& parameter, double value) {
+  double* number = numberOf(mechanism, parameter);
+  if (number == nullptr) return false;
+  *number = value;
+  return true;
+}
+
+}  // namespace linkwright::kinematics

@@ -1,0 +1,58 @@
+#pragma once
+// The numbers that define each point of a linkage, as typed parameters: a ground pivot's x
+// and y, a crank's length and phase, an RRR joint's two lengths, a slider's rod length and
+// its guide, a slotted link's length, a point's offsets on its link, a free point's guess and
+// the constraint lengths that reach it. Editors list them, read them and set them through
+// here, so no editor touches a point definition itself.
+
+#include "kinematics/model/mechanism.h"
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace linkwright::kinematics {
+
+/// Which number of a point's definition.
+enum class ParameterSlot {
+  X,                 ///< a ground pivot's x, a free point's guessed x
+  Y,                 ///< a ground pivot's y, a free point's guessed y
+  Length,            ///< a crank's, a slider's rod's or a slotted link's length; an RRR's first length
+  SecondLength,      ///< an RRR's second length
+  Phase,             ///< a crank's phase (rad)
+  Along,             ///< a point fixed on a link: along it
+  Across,            ///< a point fixed on a link: across it
+  GuideX,            ///< a slider's guide (a PRP's first): a point on it, x (along its link when on one)
+  GuideY,            ///< … y (across its link when on one)
+  GuideAngle,        ///< … its angle (rad; from its link's direction when on one)
+  SecondGuideX,      ///< a PRP's second guide, as GuideX
+  SecondGuideY,      ///< … as GuideY
+  SecondGuideAngle,  ///< … as GuideAngle
+  ConstraintLength,  ///< the length of Mechanism::constraints[constraint], listed under its later point
+};
+
+/// What a parameter's value is: a length (positive), an offset or coordinate (any sign), or
+/// an angle (rad).
+enum class ParameterUnit { Length, Offset, Angle };
+
+struct Parameter {
+  PointId point;
+  ParameterSlot slot = ParameterSlot::X;
+  std::size_t constraint = 0;  ///< ConstraintLength only
+  bool operator==(const Parameter&) const = default;
+};
+
+/// Every parameter of `mechanism`, point by point, in the order an editor shows them.
+std::vector<Parameter> parametersOf(const Mechanism& mechanism);
+
+/// The kind of value `parameter` holds.
+ParameterUnit parameterUnit(ParameterSlot slot);
+
+/// The parameter's value (rad for angles), or nothing if `mechanism` has no such parameter.
+std::optional<double> parameterValue(const Mechanism& mechanism, const Parameter& parameter);
+
+/// Sets the parameter; false (and nothing changed) if `mechanism` has no such parameter.
+/// Checking the new value is the design's job (checkDesign).
+bool setParameter(Mechanism& mechanism, const Parameter& parameter, double value);
+
+}  // namespace linkwright::kinematics
