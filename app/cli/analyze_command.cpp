@@ -69,6 +69,13 @@ void reportUndeterminedForces(const kinematics::SweepResult& result, const kinem
 
 }  // namespace
 
+void noteLocks(const kinematics::SweepResult& sweep, std::ostream& err) {
+  for (const kinematics::AngleRange& step : sweep.lockedBetween)
+    err << "linkwright-cli: note: the linkage locks between crank angles " << degreesText(step.from) << " and "
+        << degreesText(step.to) << " (a dyad passes its assembly limit between these samples); from "
+        << degreesText(step.to) << " on it is assembled afresh on the chosen branches, so points jump there\n";
+}
+
 ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err) {
   const auto fail = [&](const Error& e) {
     err << "linkwright-cli: " << e.message << "\n";
@@ -97,10 +104,7 @@ ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err)
   for (const double angle : result->singularAngles)
     err << "linkwright-cli: note: toggle position at crank angle " << degreesText(angle)
         << ": coupler and rocker are collinear, ω and α are undefined (cells left empty)\n";
-  for (const kinematics::AngleRange& step : result->lockedBetween)
-    err << "linkwright-cli: note: the linkage locks between crank angles " << degreesText(step.from) << " and "
-        << degreesText(step.to) << " (a dyad passes its assembly limit between these samples); from "
-        << degreesText(step.to) << " on it is assembled afresh on the chosen branches, so points jump there\n";
+  noteLocks(*result, err);
   if (forceSweep) reportUndeterminedForces(*result, *forceSweep, err);
   if (!result->notAssembled.empty()) {
     reportUnassembled(*result, swept->resolved, err);

@@ -63,4 +63,8 @@ struct SweptMechanism {
 };
 kinematics::Result<SweptMechanism> sweepInvocation(const Invocation& invocation);
 
+/// One note on `err` per lock between two samples of `sweep` (SweepResult::lockedBetween):
+/// the linkage cannot turn through, and points jump where it is assembled afresh.
+void noteLocks(const kinematics::SweepResult& sweep, std::ostream& err);
+
 }  // namespace linkwright::cli

@@ -77,7 +77,7 @@ TEST_CASE("a document's speed and grid are the defaults", "[cli][document]") {
   CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 5);  // header + 4 rows
 }
 
-TEST_CASE("analyze notes a lock between two samples", "[cli][document]") {
+TEST_CASE("analyze and extremes note a lock between two samples", "[cli][document]") {
   // Its dyad E locks near 291.65°, between two 5° samples.
   kinematics::MechanismDesign d;
   d.kind = "stephenson-iii";
@@ -92,6 +92,10 @@ TEST_CASE("analyze notes a lock between two samples", "[cli][document]") {
              Catch::EndsWith("\nlinkwright-cli: note: the linkage locks between crank angles 290° and 295° (a dyad "
                              "passes its assembly limit between these samples); from 295° on it is assembled "
                              "afresh on the chosen branches, so points jump there\n"));
+  // extremes says so too: its figures stop at the lock.
+  const Run e = run({"extremes", file.path()});
+  CHECK(e.code == 0);
+  CHECK_THAT(e.err, Catch::Contains("locks between crank angles 290° and 295°"));
 }
 
 TEST_CASE("classify --json escapes the document's own names", "[cli][document][json]") {
