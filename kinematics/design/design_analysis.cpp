@@ -8,6 +8,12 @@
 namespace linkwright::kinematics {
 namespace {
 
+// An angle brought into [0, 2π), as the four-bar analyses give crank angles.
+double oneTurn(double angle) {
+  const double a = wrapAngle(angle);
+  return a < 0.0 ? a + 2.0 * kPi : a;
+}
+
 // The four-bar analyses measure the crank from the frame line; the mechanism's input angle
 // differs by the frame's direction and the crank's phase (zero for makeFourBar's four-bars,
 // which are then left bit for bit as the closed forms give them).
@@ -19,12 +25,11 @@ void toInputAngles(const FourBarStructure& s, DesignAnalysis& a) {
     r.to += shift;
   }
   if (a.transmission) {
-    a.transmission->minimumAtCrank += shift;
-    a.transmission->maximumAtCrank += shift;
+    a.transmission->minimumAtCrank = oneTurn(a.transmission->minimumAtCrank + shift);
+    a.transmission->maximumAtCrank = oneTurn(a.transmission->maximumAtCrank + shift);
   }
   for (LimitPosition& p : a.limits.positions) {
-    p.crankAngle = wrapAngle(p.crankAngle + shift);
-    if (p.crankAngle < 0.0) p.crankAngle += 2.0 * kPi;
+    p.crankAngle = oneTurn(p.crankAngle + shift);
     p.rockerAngle = wrapAngle(p.rockerAngle + s.frameAngle);
   }
   std::sort(a.limits.positions.begin(), a.limits.positions.end(),

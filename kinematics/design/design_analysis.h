@@ -28,8 +28,8 @@ struct DesignAnalysis {
   /// Runs of the design's grid at which the linkage cannot be assembled (rad), as exported.
   std::vector<AngleRange> notAssembled;
   std::optional<GrashofReport> grashof;           ///< four-bars only
-  std::optional<TransmissionRange> transmission;  ///< four-bars only; crank angles are input angles
-  LimitReport limits;                             ///< four-bars only (else empty); input angles
+  std::optional<TransmissionRange> transmission;  ///< four-bars only; crank angles are input angles in [0, 2π)
+  LimitReport limits;                             ///< four-bars only (else empty); input angles in [0, 2π)
   std::optional<QuickReturnReport> quickReturn;   ///< shapers and Whitworths
 };
 

@@ -70,6 +70,16 @@ TEST_CASE("a four-bar in any position gets its exact range and limits in input a
         CHECK(solvePose(m, {edge + inward * 1e-6, 0.0, 0.0}).ok());
         CHECK_FALSE(solvePose(m, {edge - inward * 1e-6, 0.0, 0.0}).ok());
       }
+      // The transmission extremes at their input angles, in [0, 2π) like the limits.
+      REQUIRE(a.transmission.has_value());
+      for (const auto& [angle, mu] : {std::pair{a.transmission->minimumAtCrank, a.transmission->minimum},
+                                      std::pair{a.transmission->maximumAtCrank, a.transmission->maximum}}) {
+        CHECK(angle >= 0.0);
+        CHECK(angle < 2.0 * kPi);
+        const auto pose = solvePose(m, {angle, 0.0, 0.0}, {false, false});  // a toggle has no rates
+        REQUIRE(pose.ok());
+        CHECK(pose->transmissionAngle[3] == within(mu, 1e-6));  // √-steep next to a toggle
+      }
       // At each limit position the coupler is in line with the crank, the rocker at the angle given.
       REQUIRE_FALSE(a.limits.positions.empty());
       for (const LimitPosition& p : a.limits.positions) {
