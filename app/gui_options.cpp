@@ -1,6 +1,6 @@
 #include "app/gui_options.h"
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 
 #include <QCommandLineParser>
 #include <QStringList>
@@ -12,8 +12,7 @@ namespace linkwright::app {
 
 std::string guiUsage() {
   std::string names;
-  for (const auto& e : kinematics::fourBarExamples()) names += "\n                      " + e.name;
-  for (const auto& e : kinematics::mechanismExamples()) names += "\n                      " + e.name;
+  for (const auto& e : kinematics::examples()) names += "\n                      " + e.name;
   return "Usage: linkwright [FILE] [OPTIONS]\n\n"
          "Linkwright: design and analyse planar linkages (four-bars, slider-cranks, quick\n"
          "returns, six-bars). Opens FILE, a Linkwright document of any kind (.linkwright, or\n"

@@ -6,7 +6,7 @@
 #include "ui/main_window.h"
 #include "ui/message_banner.h"
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 #include "kinematics/model/units.h"
 
 #include <QApplication>

@@ -13,7 +13,6 @@
 #include "ui/panels/analysis_panel.h"
 #include "ui/panels/dimensions_panel.h"
 #include "ui/panels/dynamics_panel.h"
-#include "ui/panels/lengths_panel.h"
 #include "ui/panels/motion_panel.h"
 #include "ui/plots/force_plot_panel.h"
 #include "ui/plots/plot_panel.h"
@@ -23,6 +22,7 @@
 #include "kinematics/design/dyad_request.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/io/csv_writer.h"
+#include "kinematics/model/recognise.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -52,7 +52,7 @@ MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), m_settings(std::make_unique<Settings>()), m_document(new MechanismDocument(this)),
       m_animator(new CrankAnimator(m_document, this)), m_banner(new MessageBanner(this)),
       m_canvas(new LinkageView(m_document, this)), m_plots(new PlotPanel(m_document, this)),
-      m_lengths(new LengthsPanel(m_document, this)), m_dimensions(new DimensionsPanel(m_document, this)),
+      m_dimensions(new DimensionsPanel(m_document, this)),
       m_motion(new MotionPanel(m_document, m_animator, m_settings.get(), this)),
       m_analysis(new AnalysisPanel(m_document, this)), m_forces(new ForceResults(m_document, this)),
       m_dynamicsPanel(new DynamicsPanel(m_document, this)),
@@ -62,7 +62,6 @@ MainWindow::MainWindow(QWidget* parent)
   auto* side = new QWidget(this);
   auto* sideLayout = new QVBoxLayout(side);
   sideLayout->setContentsMargins(0, 0, 0, 0);
-  sideLayout->addWidget(m_lengths);
   sideLayout->addWidget(m_dimensions);
   sideLayout->addWidget(m_motion);
   sideLayout->addWidget(m_analysis);
@@ -108,12 +107,11 @@ MainWindow::MainWindow(QWidget* parent)
           [this](const QString& text) { statusBar()->showMessage(text, 3000); });
   connect(m_document, &MechanismDocument::changed, this, [this](Changes what) {
     if (what & (Change::File | Change::Design)) refreshTitle();
-    if (what & Change::Design) showPanelsFor();
   });
   resize(1400, 880);
   restoreGeometry(m_settings->windowGeometry());
   restoreState(m_settings->windowState());
-  newDocument(k::designFromExample(*k::findFourBarExample("thesis-crank-rocker")));
+  newDocument(*k::designForExample("thesis-crank-rocker"));
 }
 
 // Kinematics plots and the forces view (masses and loads, torque and joint-force plots, polar
@@ -147,14 +145,6 @@ void MainWindow::showForcesTab() { m_tabs->setCurrentIndex(1); }
 void MainWindow::showForces() {
   showForcesTab();
   m_forceArrowsAction->setChecked(true);
-}
-
-void MainWindow::showPanelsFor() {
-  // A four-bar keeps its lengths panel (Grashof-aware sliders); any other linkage lists its
-  // points' dimensions instead.
-  const bool fourBar = m_document->fourBar() != nullptr;
-  m_lengths->setVisible(fourBar);
-  m_dimensions->setVisible(!fourBar);
 }
 
 MainWindow::~MainWindow() = default;
@@ -248,10 +238,13 @@ void MainWindow::buildExamplesMenu(QMenu* menu) {
     action->setToolTip(QString::fromStdString(name + ": " + description));
     action->setStatusTip(QString::fromStdString(description));
   };
+  const std::vector<k::Example> examples = k::examples();
   menu->addSection(tr("Four-bars"));
-  for (const k::FourBarExample& e : k::fourBarExamples()) addExample(e.name, e.description);
+  for (const k::Example& e : examples)
+    if (k::asFourBar(e.mechanism)) addExample(e.name, e.description);
   menu->addSection(tr("Slider-cranks, quick returns and six-bars"));
-  for (const k::MechanismExample& e : k::mechanismExamples()) addExample(e.name, e.description);
+  for (const k::Example& e : examples)
+    if (!k::asFourBar(e.mechanism)) addExample(e.name, e.description);
 }
 
 std::optional<QString> MainWindow::attachDyad(const kinematics::DyadRequest& request) {

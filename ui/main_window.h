@@ -5,7 +5,7 @@
 // the document; it computes nothing itself. Each file and export action has a dialog-free
 // twin (openFile, saveTo, exportCsv, ...) that the menus call and the tests use.
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 
 #include <QMainWindow>
 
@@ -29,7 +29,6 @@ class DynamicsPanel;
 class ForceArrowsItem;
 class ForcePlotPanel;
 class ForceResults;
-class LengthsPanel;
 class LinkageView;
 class MechanismDocument;
 class MessageBanner;
@@ -46,7 +45,6 @@ public:
   MechanismDocument* document() const { return m_document; }
   LinkageView* canvas() const { return m_canvas; }
   PlotPanel* plots() const { return m_plots; }
-  LengthsPanel* lengthsPanel() const { return m_lengths; }
   DimensionsPanel* dimensionsPanel() const { return m_dimensions; }
   MotionPanel* motionPanel() const { return m_motion; }
   AnalysisPanel* analysisPanel() const { return m_analysis; }
@@ -85,7 +83,6 @@ private:
   void buildNewMenu(QMenu* menu);
   void buildExamplesMenu(QMenu* menu);
   void openAttachDyadDialog();
-  void showPanelsFor();
   QWidget* buildAnalysisTabs();
   void updateForcesNeeded();
   void showForcesTab();
@@ -105,7 +102,6 @@ private:
   MessageBanner* m_banner;
   LinkageView* m_canvas;
   PlotPanel* m_plots;
-  LengthsPanel* m_lengths;
   DimensionsPanel* m_dimensions;
   MotionPanel* m_motion;
   AnalysisPanel* m_analysis;

@@ -37,12 +37,7 @@ struct Subject {
 };
 
 k::Result<Subject> subject(const std::string& name) {
-  if (const auto f = k::findFourBarExample(name)) {
-    auto m = k::makeFourBar(f->lengths, f->branch, f->lengthUnit, f->couplerPoint);
-    if (!m) return m.error();
-    return Subject{name, *m, f->omega};
-  }
-  if (const auto e = k::findMechanismExample(name)) return Subject{name, e->mechanism, e->omega};
+  if (const auto e = k::findExample(name)) return Subject{name, e->mechanism, e->omega};
   return k::Error{k::ErrorCode::InvalidValue, "--example",
                   "--example: no example named '" + name + "' (see linkwright-cli examples)"};
 }

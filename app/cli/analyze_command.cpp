@@ -2,10 +2,11 @@
 #include "app/cli/commands.h"
 #include "app/cli/text_table.h"
 
-#include "kinematics/analysis/assembly_range.h"
+#include "kinematics/design/design_analysis.h"
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/number_format.h"
+#include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 
@@ -37,8 +38,8 @@ void reportUnassembled(const kinematics::SweepResult& result, const ResolvedMech
   err << "linkwright-cli: the linkage cannot be assembled at " << failed << " of " << result.size()
       << " requested crank angles (" << rangesText(result.notAssembled) << "); those rows are left out.\n";
   if (result.firstFailure) err << "  " << *result.firstFailure << ".\n";
-  if (!resolved.fourBar) return;
-  const kinematics::InputRange range = kinematics::fourBarInputRange(resolved.fourBar->lengths);
+  if (!kinematics::asFourBar(resolved.mechanism)) return;
+  const kinematics::InputRange range = kinematics::analyseDesign(resolved.mechanism, {}).inputRange;
   if (range.ranges.empty()) err << "  It cannot be assembled at any crank angle.\n";
   else err << "  It can be assembled for crank angles " << rangesText(range.ranges) << " (exact).\n";
 }

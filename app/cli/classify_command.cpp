@@ -21,15 +21,16 @@ using k::io::formatJsonNumber;
 // Everything classify reports on a four-bar, computed once (the core's analyseDesign, as the
 // designer shows it) and printed as text or JSON.
 struct Classification {
-  ResolvedFourBar fourBar;
+  k::FourBarStructure fourBar;
+  std::string lengthUnit;
   k::GrashofReport grashof;
   k::MobilityReport mobility;
   k::InputRange range;
   std::optional<k::TransmissionRange> transmission;
   k::LimitReport limits;
 
-  Classification(ResolvedFourBar f, const k::DesignAnalysis& a)
-      : fourBar(std::move(f)), grashof(*a.grashof), mobility(a.mobility), range(a.inputRange),
+  Classification(const k::FourBarStructure& f, std::string unit, const k::DesignAnalysis& a)
+      : fourBar(f), lengthUnit(std::move(unit)), grashof(*a.grashof), mobility(a.mobility), range(a.inputRange),
         transmission(a.transmission), limits(a.limits) {}
 };
 
@@ -44,7 +45,7 @@ std::string jsonOptional(const std::optional<T>& value, std::string (*format)(do
 
 void printText(const Classification& c, std::ostream& out) {
   const auto& l = c.fourBar.lengths;
-  const std::string& u = c.fourBar.lengthUnit;
+  const std::string& u = c.lengthUnit;
   const auto len = [&](double v) { return k::io::formatShort(v) + " " + u; };
   out << "four-bar             frame " << len(l.frame) << ", crank " << len(l.crank) << ", coupler " << len(l.coupler)
       << ", rocker " << len(l.rocker) << ", branch " << branchName(c.fourBar.branch) << "\n";
@@ -84,7 +85,7 @@ void printJson(const Classification& c, std::ostream& out) {
   const auto& g = c.grashof;
   out << "{\n  \"lengths\": {\"frame\": " << formatJsonNumber(l.frame) << ", \"crank\": " << formatJsonNumber(l.crank)
       << ", \"coupler\": " << formatJsonNumber(l.coupler) << ", \"rocker\": " << formatJsonNumber(l.rocker)
-      << "},\n  \"length_unit\": " << k::io::jsonQuote(c.fourBar.lengthUnit) << ",\n  \"branch\": \""
+      << "},\n  \"length_unit\": " << k::io::jsonQuote(c.lengthUnit) << ",\n  \"branch\": \""
       << branchName(c.fourBar.branch) << "\",\n";
   out << "  \"grashof\": {\"class\": \"" << k::toString(g.category) << "\", \"shortest\": \"" << k::toString(g.shortest)
       << "\", \"longest\": \"" << k::toString(g.longest) << "\", \"s_plus_l\": " << formatJsonNumber(g.sPlusL)
@@ -165,47 +166,28 @@ ExitCode classifyQuickReturn(const std::string& kind, const std::string& descrip
 
 }  // namespace
 
+// What a linkage is decides what classify reports, not how it was given: a four-bar saved as a
+// general linkage is still a four-bar, a quick return still one.
 ExitCode runClassify(const Invocation& inv, std::ostream& out, std::ostream& err) {
-  if (inv.example)
-    if (const auto e = k::findMechanismExample(*inv.example)) {
-      if (e->shaper) return classifyQuickReturn(e->kind, e->description, e->mechanism, inv.json, out);
-      return classifyLinkage(e->kind, e->mechanism, inv.json, out, err);
-    }
-  // A document's linkage is classified by what it is, not by how the document stored it: a
-  // four-bar saved as a general linkage is still a four-bar, a quick return still one.
-  std::optional<ResolvedFourBar> fourBar;
-  std::optional<k::Mechanism> mechanism;
-  if (inv.documentPath) {
-    const auto resolved = resolveMechanism(inv);
-    if (!resolved) {
-      err << "linkwright-cli: " << resolved.error().message << "\n";
-      return ExitCode::BadInput;
-    }
-    mechanism = resolved->mechanism;
-    fourBar = resolved->fourBar;
-    if (const auto s = k::asFourBar(*mechanism); s && !fourBar)
-      fourBar = ResolvedFourBar{s->lengths, mechanism->lengthUnit, s->branch, std::nullopt};
-    if (!fourBar && k::asQuickReturn(*mechanism))
-      return classifyQuickReturn("quick return", "from " + *inv.documentPath, *mechanism, inv.json, out);
-    if (!fourBar) return classifyLinkage("linkage", *mechanism, inv.json, out, err);
-  } else {
-    const auto fb = resolveFourBar(inv);
-    if (!fb) {
-      err << "linkwright-cli: " << fb.error().message << "\n";
-      return ExitCode::BadInput;
-    }
-    const auto built = k::makeFourBar(fb->lengths, fb->branch, fb->lengthUnit);
-    if (!built) {
-      err << "linkwright-cli: " << built.error().message << "\n";
-      return ExitCode::BadInput;
-    }
-    fourBar = *fb;
-    mechanism = *built;
+  const auto resolved = resolveMechanism(inv);
+  if (!resolved) {
+    err << "linkwright-cli: " << resolved.error().message << "\n";
+    return ExitCode::BadInput;
   }
-  const Classification c{*fourBar, k::analyseDesign(*mechanism, k::SweepResult{})};
+  const k::Mechanism& m = resolved->mechanism;
+  const auto fourBar = k::asFourBar(m);
+  if (!fourBar) {
+    // An example is named by its kind and description; a document by what it is and its file.
+    const bool example = !inv.documentPath;
+    if (k::asQuickReturn(m))
+      return classifyQuickReturn(example ? resolved->kind : "quick return",
+                                 example ? resolved->description : "from " + *inv.documentPath, m, inv.json, out);
+    return classifyLinkage(example ? resolved->kind : "linkage", m, inv.json, out, err);
+  }
+  const Classification c{*fourBar, m.lengthUnit, k::analyseDesign(m, k::SweepResult{})};
   if (inv.json) printJson(c, out);
   else printText(c, out);
-  if (c.range.ranges.empty()) {
+  if (c.range.ranges.empty() && !c.range.fullRotation) {
     err << "linkwright-cli: this linkage cannot be assembled at any crank angle\n";
     return ExitCode::NotAssemblable;
   }

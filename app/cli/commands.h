@@ -23,16 +23,6 @@ ExitCode runArm(const Invocation& invocation, std::ostream& out, std::ostream& e
 ExitCode runCentres(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runAccuracy(const Invocation& invocation, std::ostream& out, std::ostream& err);
 
-/// The four-bar an invocation describes: its --fourbar lengths or --example, with --unit,
-/// --branch and --coupler-point applied.
-struct ResolvedFourBar {
-  kinematics::FourBarLengths lengths;
-  std::string lengthUnit;
-  kinematics::Branch branch = kinematics::Branch::Open;
-  std::optional<kinematics::FourBarExample> example;
-};
-kinematics::Result<ResolvedFourBar> resolveFourBar(const Invocation& invocation);
-
 /// What an example brings besides the linkage: crank speed and the angle grid.
 struct GridDefaults {
   double omega = 1.0;  ///< rad/s
@@ -42,13 +32,16 @@ struct GridDefaults {
   double stepDeg = 1.0;
 };
 
-/// Any linkage an invocation describes (a four-bar, or a slider-crank example), built.
+/// The linkage an invocation describes (--fourbar lengths, an --example or a document),
+/// built, with --branch and --coupler-point applied where it is a four-bar. What it is (a
+/// four-bar with exact ranges, a quick return) is read from its structure (asFourBar, …).
 struct ResolvedMechanism {
   kinematics::Mechanism mechanism;
-  std::optional<ResolvedFourBar> fourBar;  ///< set for four-bars: their exact ranges apply
   GridDefaults defaults;
   kinematics::LinkageDynamics dynamics;  ///< the document's or example's masses and loads (may be empty)
   std::string source;                    ///< "the example NAME", "FILE", "--fourbar": for messages
+  std::string kind;                      ///< the example's or document's label ("slider-crank"); "" for --fourbar
+  std::string description;               ///< the example's description; "" otherwise
 };
 kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& invocation);
 

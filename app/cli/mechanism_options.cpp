@@ -1,6 +1,10 @@
 #include "app/cli/commands.h"
 
+#include "kinematics/design/design.h"
+#include "kinematics/design/fourbar_dimensions.h"
 #include "kinematics/io/document_json.h"
+#include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/validate.h"
 
 #include <fstream>
 #include <sstream>
@@ -13,12 +17,7 @@ namespace {
 
 // A design's grid as defaults: its samples become the step that reproduces them.
 GridDefaults gridOf(const k::Design& d) {
-  return std::visit(
-      [](const auto& x) {
-        return GridDefaults{x.omega, x.alpha, x.fromDeg, x.toDeg,
-                            (x.toDeg - x.fromDeg) / static_cast<double>(x.samples - 1)};
-      },
-      d);
+  return {d.omega, d.alpha, d.fromDeg, d.toDeg, (d.toDeg - d.fromDeg) / static_cast<double>(d.samples - 1)};
 }
 
 // The document named on the command line; errors name the file.
@@ -32,85 +31,65 @@ k::Result<k::Design> readDocumentFile(const std::string& path) {
   return design;
 }
 
-}  // namespace
-
-kinematics::Result<ResolvedFourBar> resolveFourBar(const Invocation& inv) {
-  ResolvedFourBar r;
-  if (inv.example) {
-    r.example = k::findFourBarExample(*inv.example);
-    if (!r.example) {
-      if (const auto other = k::findMechanismExample(*inv.example))
-        return k::Error{k::ErrorCode::InvalidValue, "--example",
-                        "--example: '" + *inv.example + "' is not a four-bar but a " + other->kind +
-                            "; classify works on four-bars and shapers (try analyze or extremes)"};
-      std::string names;
-      for (const auto& e : k::fourBarExamples()) names += (names.empty() ? "" : ", ") + e.name;
-      for (const auto& e : k::mechanismExamples()) names += ", " + e.name;
-      return k::Error{k::ErrorCode::InvalidValue, "--example",
-                      "--example: no example named '" + *inv.example + "' (available: " + names + ")"};
-    }
-    r.lengths = r.example->lengths;
-    r.lengthUnit = r.example->lengthUnit;
-    r.branch = r.example->branch;
-  } else {
-    r.lengths = *inv.fourBar;
-    r.lengthUnit = inv.lengthUnit;
+k::Result<ResolvedMechanism> resolveExample(const std::string& name) {
+  auto e = k::findExample(name);
+  if (!e) {
+    std::string names;
+    for (const k::Example& x : k::examples()) names += (names.empty() ? "" : ", ") + x.name;
+    return k::Error{k::ErrorCode::InvalidValue, "--example",
+                    "--example: no example named '" + name + "' (available: " + names + ")"};
   }
-  if (inv.branch) r.branch = *inv.branch;
-  return r;
+  return ResolvedMechanism{std::move(e->mechanism),
+                           {e->omega, e->alpha, e->fromDeg, e->toDeg, e->stepDeg},
+                           std::move(e->dynamics),
+                           "the example " + e->name,
+                           e->kind,
+                           e->description};
 }
 
-kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& inv) {
-  ResolvedMechanism r;
+k::Result<ResolvedMechanism> resolveSource(const Invocation& inv) {
   if (inv.documentPath) {
-    const auto design = readDocumentFile(*inv.documentPath);
+    auto design = readDocumentFile(*inv.documentPath);
     if (!design) return design.error();
-    r.defaults = gridOf(*design);
-    r.source = *inv.documentPath;
-    r.dynamics = std::visit([](const auto& d) { return d.dynamics; }, *design);
-    if (const auto* f = std::get_if<k::FourBarDesign>(&*design)) {
-      r.fourBar = ResolvedFourBar{f->lengths, f->lengthUnit, inv.branch.value_or(f->branch), std::nullopt};
-      const auto couplerPoint = inv.couplerPoint ? inv.couplerPoint : f->couplerPoint;
-      auto m = k::makeFourBar(f->lengths, r.fourBar->branch, f->lengthUnit, couplerPoint);
-      if (!m) return m.error();
-      r.mechanism = std::move(*m);
-      return r;
-    }
-    if (inv.couplerPoint || inv.branch)
-      return k::Error{k::ErrorCode::InvalidValue, inv.couplerPoint ? "--coupler-point" : "--branch",
-                      std::string(inv.couplerPoint ? "--coupler-point" : "--branch") +
-                          " applies to four-bars, not to this " + std::get<k::MechanismDesign>(*design).kind};
-    r.mechanism = std::get<k::MechanismDesign>(*design).mechanism;
-    return r;
+    return ResolvedMechanism{std::move(design->mechanism),
+                             gridOf(*design),
+                             std::move(design->dynamics),
+                             *inv.documentPath,
+                             design->kind,
+                             ""};
   }
-  if (inv.example) {
-    if (auto other = k::findMechanismExample(*inv.example)) {
-      if (inv.couplerPoint)
-        return k::Error{k::ErrorCode::InvalidValue, "--coupler-point",
-                        "--coupler-point applies to four-bars, not to " + other->name};
-      if (inv.branch)
-        return k::Error{k::ErrorCode::InvalidValue, "--branch", "--branch applies to four-bars, not to " + other->name};
-      r.mechanism = std::move(other->mechanism);
-      r.defaults = {other->omega, 0.0, other->fromDeg, other->toDeg, other->stepDeg};
-      r.dynamics = std::move(other->dynamics);
-      r.source = "the example " + other->name;
-      return r;
-    }
-  }
-  auto fb = resolveFourBar(inv);
-  if (!fb) return fb.error();
-  const auto couplerPoint =
-      inv.couplerPoint ? inv.couplerPoint : (fb->example ? fb->example->couplerPoint : std::nullopt);
-  auto m = k::makeFourBar(fb->lengths, fb->branch, fb->lengthUnit, couplerPoint);
+  if (inv.example) return resolveExample(*inv.example);
+  auto m = k::makeFourBar(*inv.fourBar, k::Branch::Open, inv.lengthUnit);
   if (!m) return m.error();
-  r.mechanism = std::move(*m);
-  r.source = "--fourbar";
-  if (const auto& e = fb->example) {
-    r.defaults = {e->omega, e->alpha, e->fromDeg, e->toDeg, e->stepDeg};
-    r.dynamics = e->dynamics;
-    r.source = "the example " + e->name;
+  return ResolvedMechanism{std::move(*m), {}, {}, "--fourbar", "", ""};
+}
+
+// --branch and --coupler-point name a four-bar's branch and its point P.
+std::optional<k::Error> applyFourBarOptions(const Invocation& inv, ResolvedMechanism& r) {
+  if (!inv.branch && !inv.couplerPoint) return std::nullopt;
+  const auto fourBar = k::asFourBar(r.mechanism);
+  if (!fourBar) {
+    const std::string option = inv.couplerPoint ? "--coupler-point" : "--branch";
+    const std::string what = inv.documentPath ? "this " + r.kind : r.source.substr(r.source.rfind(' ') + 1);
+    return k::Error{k::ErrorCode::InvalidValue, option, option + " applies to four-bars, not to " + what};
   }
-  r.fourBar = std::move(*fb);
+  if (inv.branch) r.mechanism = k::withFourBarBranch(r.mechanism, *fourBar, *inv.branch);
+  if (inv.couplerPoint) {
+    if (auto e = k::checkCoordinate(inv.couplerPoint->along, "coupler point along")) return e;
+    if (auto e = k::checkCoordinate(inv.couplerPoint->across, "coupler point across")) return e;
+    auto m = k::withCouplerPoint(r.mechanism, *fourBar, *inv.couplerPoint);
+    if (!m) return m.error();
+    r.mechanism = std::move(*m);
+  }
+  return k::checkMechanism(r.mechanism);  // P counts in the linkage's spread of sizes
+}
+
+}  // namespace
+
+kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& inv) {
+  auto r = resolveSource(inv);
+  if (!r) return r.error();
+  if (auto e = applyFourBarOptions(inv, r.value())) return *e;
   return r;
 }
 

@@ -1,5 +1,7 @@
 #include "kinematics/design/design.h"
 
+#include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 
@@ -7,21 +9,16 @@
 
 namespace linkwright::kinematics {
 
-std::optional<Error> checkDesign(const FourBarDesign& d) {
-  if (auto e = checkFourBarLengths(d.lengths)) {
-    e->field = "lengths." + e->field;
-    return e;
-  }
-  if (d.couplerPoint) {
-    if (auto e = checkCoordinate(d.couplerPoint->along, "couplerPoint.along")) return e;
-    if (auto e = checkCoordinate(d.couplerPoint->across, "couplerPoint.across")) return e;
-  }
-  // The lengths' spread (checkLinkageScale) is checked where the linkage is built.
-  const auto mechanism = makeFourBar(d.lengths, d.branch, d.lengthUnit, d.couplerPoint);
-  if (!mechanism) return mechanism.error();
+std::optional<Error> checkDesign(const Design& d) {
+  // A four-bar's lengths are named as its editors and the CLI name them ("lengths.coupler").
+  if (const auto fourBar = asFourBar(d.mechanism))
+    if (auto e = checkFourBarLengths(fourBar->lengths)) {
+      e->field = "lengths." + e->field;
+      return e;
+    }
+  if (auto e = checkMechanism(d.mechanism)) return e;
   if (auto e = checkDriveAndGrid(d.omega, d.alpha, d.fromDeg, d.toDeg, d.samples)) return e;
-  if (d.dynamics.empty()) return std::nullopt;
-  return checkDesignDynamics(*mechanism, d.dynamics);
+  return checkDesignDynamics(d.mechanism, d.dynamics);
 }
 
 std::optional<Error> checkDesignDynamics(const Mechanism& mechanism, const LinkageDynamics& dynamics) {
@@ -52,28 +49,36 @@ std::size_t samplesEveryHalfDegree(double fromDeg, double toDeg) {
   return static_cast<std::size_t>(std::lround((toDeg - fromDeg) / 0.5)) + 1;
 }
 
-Result<Mechanism> buildMechanism(const FourBarDesign& d) {
-  if (auto e = checkDesign(d)) return *e;
-  return makeFourBar(d.lengths, d.branch, d.lengthUnit, d.couplerPoint);
-}
-
-SweepSpec designSweepSpec(const FourBarDesign& d) {
+SweepSpec designSweepSpec(const Design& d) {
   return {degToRad(d.fromDeg), degToRad(d.toDeg), d.samples, d.omega, d.alpha};
 }
 
-FourBarDesign designFromExample(const FourBarExample& e) {
-  FourBarDesign d;
-  d.lengths = e.lengths;
-  d.lengthUnit = e.lengthUnit;
-  d.branch = e.branch;
+Result<Design> fourBarDesign(const FourBarLengths& lengths, Branch branch, const std::string& lengthUnit,
+                             std::optional<CouplerPointSpec> couplerPoint) {
+  auto mechanism = makeFourBar(lengths, branch, lengthUnit, couplerPoint);
+  if (!mechanism) return mechanism.error();
+  Design d;
+  d.kind = "four-bar";
+  d.mechanism = std::move(*mechanism);
+  return d;
+}
+
+Design designFromExample(const Example& e) {
+  Design d;
+  d.kind = e.kind;
+  d.mechanism = e.mechanism;
   d.omega = e.omega;
   d.alpha = e.alpha;
-  d.couplerPoint = e.couplerPoint;
   d.dynamics = e.dynamics;
   d.fromDeg = e.fromDeg;
   d.toDeg = e.toDeg;
   d.samples = samplesEveryHalfDegree(e.fromDeg, e.toDeg);
   return d;
+}
+
+std::optional<Design> designForExample(const std::string& name) {
+  if (const auto e = findExample(name)) return designFromExample(*e);
+  return std::nullopt;
 }
 
 }  // namespace linkwright::kinematics

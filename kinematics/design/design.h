@@ -1,12 +1,14 @@
 #pragma once
-// What a user designs and saves: a four-bar (lengths, unit, branch, optional coupler point),
-// how it is driven and the angle grid it is analysed on. The GUI edits one of these, the
-// document file stores one, and buildMechanism / designSweepSpec turn it into solver input,
-// so the GUI, the CLI and the files all mean the same linkage.
+// What a user designs and saves: a linkage (any Mechanism: a four-bar, a slider-crank, a
+// shaper, a six-bar, anything built from dyads or free points), how its crank is driven and
+// the angle grid it is analysed on, and its masses and loads. The GUI edits one of these, the
+// document file stores one and the CLI resolves its options to one, so all three mean the same
+// linkage. What a design *is* (a four-bar with a Grashof class, a quick return) is read from
+// its mechanism's structure (model/recognise.h), never from how it was built or stored.
 
 #include "kinematics/design/examples.h"
 #include "kinematics/dynamics/mass_properties.h"
-#include "kinematics/model/fourbar.h"
+#include "kinematics/model/mechanism.h"
 #include "kinematics/model/result.h"
 #include "kinematics/solve/sweep.h"
 
@@ -15,23 +17,23 @@
 
 namespace linkwright::kinematics {
 
-struct FourBarDesign {
-  FourBarLengths lengths{60.0, 25.0, 70.0, 45.0};
-  std::string lengthUnit = "mm";
-  Branch branch = Branch::Open;
-  std::optional<CouplerPointSpec> couplerPoint;
+struct Design {
+  std::string kind = "linkage";  ///< a label shown to the user: "four-bar", "slider-crank", "watt-ii", …
+  Mechanism mechanism;
   double omega = 1.0;         ///< crank, rad/s (CCW positive)
   double alpha = 0.0;         ///< crank, rad/s²
   double fromDeg = 0.0;       ///< analysis grid start, degrees
   double toDeg = 360.0;       ///< analysis grid end, degrees
   std::size_t samples = 721;  ///< grid points from fromDeg to toDeg inclusive (≥ 2)
-  LinkageDynamics dynamics;   ///< masses and loads for forces (links "crank", "coupler", "rocker"); empty: none
-  bool operator==(const FourBarDesign&) const = default;
+  LinkageDynamics dynamics;   ///< masses and loads for forces, by link and point name; empty: none
+  bool operator==(const Design&) const = default;
 };
 
-/// Error naming the first invalid field ("lengths.coupler", "omega", "samples",
-/// "dynamics.links[0].mass", ...).
-std::optional<Error> checkDesign(const FourBarDesign& design);
+/// Error naming the first invalid field: a four-bar's lengths ("lengths.coupler"), the
+/// mechanism's ("points[3].firstLength"), the
+/// driver's and grid's ("omega", "alpha", "fromDeg", "toDeg", "samples") or the dynamics'
+/// ("dynamics.links[0].mass").
+std::optional<Error> checkDesign(const Design& design);
 
 /// The driver and grid rules every design shares: finite ω, α and angles, toDeg > fromDeg,
 /// 2 ≤ samples ≤ 10 000 000. Fields "omega", "alpha", "fromDeg", "toDeg", "samples".
@@ -43,13 +45,19 @@ std::optional<Error> checkDesignDynamics(const Mechanism& mechanism, const Linka
 /// Grid points every 0.5° from fromDeg to toDeg inclusive: how examples become designs.
 std::size_t samplesEveryHalfDegree(double fromDeg, double toDeg);
 
-/// The solver's mechanism for a valid design.
-Result<Mechanism> buildMechanism(const FourBarDesign& design);
-
 /// The design's analysis grid at its crank speed.
-SweepSpec designSweepSpec(const FourBarDesign& design);
+SweepSpec designSweepSpec(const Design& design);
+
+/// A four-bar design (makeFourBar's points O2, O4, B, C and P, links crank, coupler,
+/// rocker) at ω = 1 rad/s over a full turn every 0.5°. Fails, naming the field, as makeFourBar.
+Result<Design> fourBarDesign(const FourBarLengths& lengths, Branch branch = Branch::Open,
+                             const std::string& lengthUnit = "mm",
+                             std::optional<CouplerPointSpec> couplerPoint = std::nullopt);
 
 /// A built-in example as a design, sampled every 0.5° over its range.
-FourBarDesign designFromExample(const FourBarExample& example);
+Design designFromExample(const Example& example);
+
+/// The built-in example named `name` as a design, if there is one.
+std::optional<Design> designForExample(const std::string& name);
 
 }  // namespace linkwright::kinematics

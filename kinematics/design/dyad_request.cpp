@@ -99,19 +99,12 @@ Result<Mechanism> applyDyadRequest(const Mechanism& mechanism, const DyadRequest
   return attachDyad(prepared->mechanism, specOf(r, *prepared));
 }
 
-Result<MechanismDesign> attachToDesign(const Design& design, const DyadRequest& r) {
-  MechanismDesign out;
-  if (const auto* f = std::get_if<FourBarDesign>(&design)) {
-    const auto built = buildMechanism(design);
-    if (!built) return built.error();
-    // The four-bar's links keep their names, so its masses and loads carry over.
-    out = {"linkage", *built, f->omega, f->alpha, f->fromDeg, f->toDeg, f->samples, f->dynamics};
-  } else {
-    out = std::get<MechanismDesign>(design);
-    out.kind = "linkage";
-  }
-  auto grown = applyDyadRequest(out.mechanism, r);
+Result<Design> attachToDesign(const Design& design, const DyadRequest& r) {
+  auto grown = applyDyadRequest(design.mechanism, r);
   if (!grown) return grown.error();
+  // The links keep their names, so the masses and loads carry over.
+  Design out = design;
+  out.kind = "linkage";
   out.mechanism = std::move(*grown);
   return out;
 }

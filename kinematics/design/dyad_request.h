@@ -5,7 +5,7 @@
 // Suggestions pre-fill a request from the current pose so that it assembles there: the
 // parents' positions come from the core's pose solver, the lengths from their distances.
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 #include "kinematics/model/attach_dyad.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/model/result.h"
@@ -45,9 +45,9 @@ struct DyadRequest {
 /// mechanism is never changed.
 Result<Mechanism> applyDyadRequest(const Mechanism& mechanism, const DyadRequest& request);
 
-/// `design` with the dyad attached: a four-bar becomes a general linkage first; the kind
-/// becomes "linkage", since it is no longer the textbook mechanism it was.
-Result<MechanismDesign> attachToDesign(const Design& design, const DyadRequest& request);
+/// `design` with the dyad attached; its kind becomes "linkage", since it is no longer the
+/// textbook mechanism it was.
+Result<Design> attachToDesign(const Design& design, const DyadRequest& request);
 
 /// A request of `kind` for `mechanism` at `crankAngle` (rad): parents picked from its last
 /// points, a fresh joint name, lengths from fillLengths.

@@ -1,64 +1,9 @@
 #include "kinematics/design/examples.h"
-#include "kinematics/model/sixbar_newton.h"
 
+#include "kinematics/model/sixbar_newton.h"
 #include "kinematics/model/units.h"
 
 namespace linkwright::kinematics {
-
-std::vector<FourBarExample> fourBarExamples() {
-  return {
-      {"thesis-crank-rocker",
-       "crank-rocker 60/25/70/45 mm at 10 rpm (Sharifgalieva thesis, Excel and SolidWorks tables every 30°)",
-       {60.0, 25.0, 70.0, 45.0},
-       "mm",
-       Branch::Open,
-       rpmToRadPerSec(10.0),
-       0.0,
-       0.0,
-       360.0,
-       30.0,
-       std::nullopt,
-       {}},
-      {"alvi-fourbar",
-       "four-bar AD 80, AB 20, BC 66, CD 56 mm at 10.5 rad/s (Alvi et al., both branches every 40°)",
-       {80.0, 20.0, 66.0, 56.0},
-       "mm",
-       Branch::Open,
-       10.5,
-       0.0,
-       0.0,
-       360.0,
-       40.0,
-       std::nullopt,
-       {}},
-      {"miranda-fourbar",
-       "four-bar frame 250, crank 100, coupler 225, rocker 150 mm at 11 Hz, P at the coupler's middle "
-       "(Miranda et al., SolidWorks coupler extremes at 11 and 15 Hz)",
-       {250.0, 100.0, 225.0, 150.0},
-       "mm",
-       Branch::Open,
-       2.0 * kPi * 11.0,
-       0.0,
-       0.0,
-       360.0,
-       1.0,
-       CouplerPointSpec{112.5, 0.0},
-       {}},
-      {"funsho-fourbar",
-       "four-bar AB 10, BC 35, CD 20, AD 30 mm, crank at 100 rad/s, with masses and inertias: joint forces and "
-       "motor torque (Funsho, seed 004's MATLAB inverse dynamics)",
-       {30.0, 10.0, 35.0, 20.0},
-       "mm",
-       Branch::Open,
-       100.0,
-       0.0,
-       0.0,
-       360.0,
-       5.0,
-       std::nullopt,
-       funshoFourBarDynamics()},
-  };
-}
 
 LinkageDynamics funshoFourBarDynamics() {
   LinkageDynamics d;
@@ -70,51 +15,67 @@ LinkageDynamics funshoFourBarDynamics() {
 
 namespace {
 
+// A seed's four-bar, in millimetres on its open branch, over a full turn.
+Example fourBarExample(std::string name, std::string description, const FourBarLengths& lengths, double omega,
+                       double stepDeg, std::optional<CouplerPointSpec> couplerPoint = std::nullopt,
+                       LinkageDynamics dynamics = {}) {
+  return {std::move(name),
+          std::move(description),
+          "four-bar",
+          makeFourBar(lengths, Branch::Open, "mm", couplerPoint).value(),
+          omega,
+          0.0,
+          0.0,
+          360.0,
+          stepDeg,
+          std::move(dynamics)};
+}
+
+// Any other linkage over a full turn every degree.
+Example linkageExample(std::string name, std::string description, std::string kind, Mechanism mechanism, double omega) {
+  return {
+      std::move(name), std::move(description), std::move(kind), std::move(mechanism), omega, 0.0, 0.0, 360.0, 1.0, {}};
+}
+
 // The six-bars are the thesis crank-rocker (60/25/70/45 mm) grown by one dyad, at 60 rpm;
 // their dimensions keep every transmission angle above 20° over the whole turn.
-MechanismExample sixBarExample(const SixBarGeometry& g, const std::string& description) {
-  return {
-      sixBarKindName(g.kind), description, sixBarKindName(g.kind), makeSixBar(g).value(), 2.0 * kPi, 0.0, 360.0, 1.0,
-      std::nullopt,           {}};
+Example sixBarExample(const SixBarGeometry& g, std::string description) {
+  return linkageExample(sixBarKindName(g.kind), std::move(description), sixBarKindName(g.kind), makeSixBar(g).value(),
+                        2.0 * kPi);
 }
 
 }  // namespace
 
-std::vector<MechanismExample> mechanismExamples() {
+std::vector<Example> examples() {
   return {
-      {"ls3-engine",
-       "Chevrolet LS3 piston: stroke 92 mm (crank 46 mm), connecting rod 6.098 in, crank at 110 Hz = 6600 rpm "
-       "(Miranda et al., SolidWorks piston extremes)",
-       "slider-crank",
-       makeSliderCrank(kLs3Engine).value(),
-       2.0 * kPi * 110.0,
-       0.0,
-       360.0,
-       1.0,
-       std::nullopt,
-       {}},
-      {"shaper",
-       "crank-shaper quick return: crank 100, slotted rocker 400, link 150 mm, rocker pivot 200 mm below and 40 mm "
-       "beside the crank, ram guide 220 mm above it, crank at 3 Hz (Miranda et al.)",
-       "shaper",
-       makeShaper(kSeedShaper).value(),
-       2.0 * kPi * 3.0,
-       0.0,
-       360.0,
-       1.0,
-       kSeedShaper,
-       {}},
-      {"whitworth",
-       "Whitworth quick return: the seed shaper's crank (100 mm) with the slotted link's pivot 40 mm below the crank "
-       "centre, inside the crank circle, so it turns fully; slotted link 120, link 150 mm, ram guide through the pivot",
-       "whitworth",
-       makeShaper(kWhitworth).value(),
-       2.0 * kPi * 3.0,
-       0.0,
-       360.0,
-       1.0,
-       kWhitworth,
-       {}},
+      fourBarExample(
+          "thesis-crank-rocker",
+          "crank-rocker 60/25/70/45 mm at 10 rpm (Sharifgalieva thesis, Excel and SolidWorks tables every 30°)",
+          kThesisCrankRocker, rpmToRadPerSec(10.0), 30.0),
+      fourBarExample("alvi-fourbar",
+                     "four-bar AD 80, AB 20, BC 66, CD 56 mm at 10.5 rad/s (Alvi et al., both branches every 40°)",
+                     {80.0, 20.0, 66.0, 56.0}, 10.5, 40.0),
+      fourBarExample("miranda-fourbar",
+                     "four-bar frame 250, crank 100, coupler 225, rocker 150 mm at 11 Hz, P at the coupler's middle "
+                     "(Miranda et al., SolidWorks coupler extremes at 11 and 15 Hz)",
+                     {250.0, 100.0, 225.0, 150.0}, 2.0 * kPi * 11.0, 1.0, CouplerPointSpec{112.5, 0.0}),
+      fourBarExample("funsho-fourbar",
+                     "four-bar AB 10, BC 35, CD 20, AD 30 mm, crank at 100 rad/s, with masses and inertias: joint "
+                     "forces and motor torque (Funsho, seed 004's MATLAB inverse dynamics)",
+                     {30.0, 10.0, 35.0, 20.0}, 100.0, 5.0, std::nullopt, funshoFourBarDynamics()),
+      linkageExample("ls3-engine",
+                     "Chevrolet LS3 piston: stroke 92 mm (crank 46 mm), connecting rod 6.098 in, crank at 110 Hz = "
+                     "6600 rpm (Miranda et al., SolidWorks piston extremes)",
+                     "slider-crank", makeSliderCrank(kLs3Engine).value(), 2.0 * kPi * 110.0),
+      linkageExample("shaper",
+                     "crank-shaper quick return: crank 100, slotted rocker 400, link 150 mm, rocker pivot 200 mm below "
+                     "and 40 mm beside the crank, ram guide 220 mm above it, crank at 3 Hz (Miranda et al.)",
+                     "shaper", makeShaper(kSeedShaper).value(), 2.0 * kPi * 3.0),
+      linkageExample("whitworth",
+                     "Whitworth quick return: the seed shaper's crank (100 mm) with the slotted link's pivot 40 mm "
+                     "below the crank centre, inside the crank circle, so it turns fully; slotted link 120, link 150 "
+                     "mm, ram guide through the pivot",
+                     "whitworth", makeShaper(kWhitworth).value(), 2.0 * kPi * 3.0),
       sixBarExample(kWattISixBar,
                     "Watt I six-bar: the thesis crank-rocker with links 5 and 6 from its coupler to its rocker"),
       sixBarExample(
@@ -123,39 +84,19 @@ std::vector<MechanismExample> mechanismExamples() {
       sixBarExample(kStephensonISixBar, "Stephenson I six-bar: links 5 and 6 from a point on the crank to the rocker"),
       sixBarExample(kStephensonIIISixBar,
                     "Stephenson III six-bar: links 5 and 6 from the coupler to a third ground pivot O6"),
-      {"stephenson-ii",
-       "Stephenson II six-bar (ground binary): its two ternary links close one loop with links 5 and 6, a triad no "
-       "dyad order solves, so C..E are found by Newton-Raphson",
-       "stephenson-ii",
-       makeStephensonIINewton(kStephensonIINewton).value(),
-       2.0 * kPi,
-       0.0,
-       360.0,
-       1.0,
-       std::nullopt,
-       {}},
-      {"stephenson-iii-triad",
-       "Stephenson III six-bar driven from the link that is not in a four-bar loop: the floating ternary C, D, E "
-       "needs all three at once, so Newton-Raphson solves it",
-       "stephenson-iii-triad",
-       makeStephensonIIINewton(kStephensonIIINewton).value(),
-       2.0 * kPi,
-       0.0,
-       360.0,
-       1.0,
-       std::nullopt,
-       {}},
+      linkageExample("stephenson-ii",
+                     "Stephenson II six-bar (ground binary): its two ternary links close one loop with links 5 and 6, "
+                     "a triad no dyad order solves, so C..E are found by Newton-Raphson",
+                     "stephenson-ii", makeStephensonIINewton(kStephensonIINewton).value(), 2.0 * kPi),
+      linkageExample("stephenson-iii-triad",
+                     "Stephenson III six-bar driven from the link that is not in a four-bar loop: the floating "
+                     "ternary C, D, E needs all three at once, so Newton-Raphson solves it",
+                     "stephenson-iii-triad", makeStephensonIIINewton(kStephensonIIINewton).value(), 2.0 * kPi),
   };
 }
 
-std::optional<MechanismExample> findMechanismExample(const std::string& name) {
-  for (MechanismExample& e : mechanismExamples())
-    if (e.name == name) return std::move(e);
-  return std::nullopt;
-}
-
-std::optional<FourBarExample> findFourBarExample(const std::string& name) {
-  for (FourBarExample& e : fourBarExamples())
+std::optional<Example> findExample(const std::string& name) {
+  for (Example& e : examples())
     if (e.name == name) return std::move(e);
   return std::nullopt;
 }

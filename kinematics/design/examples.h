@@ -1,6 +1,7 @@
 #pragma once
-// Built-in examples taken from the seed documents, shared by the CLI and (later) the GUI.
-// An example may carry its links' masses and loads (seed 004's four-bar does) for forces.
+// Built-in examples taken from the seed documents, shared by the CLI and the GUI: each a built
+// mechanism with its speed and grid. An example may carry its links' masses and loads (seed
+// 004's four-bar does) for forces.
 
 #include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/model/fourbar.h"
@@ -14,43 +15,28 @@
 
 namespace linkwright::kinematics {
 
-/// A four-bar from a seed, with the speed and the angle grid its published table uses.
-struct FourBarExample {
+/// A linkage from a seed or a textbook, with the speed and the angle grid its published table
+/// uses.
+struct Example {
   std::string name;         ///< CLI name, e.g. "thesis-crank-rocker"
   std::string description;  ///< one line: what it is and where it comes from
-  FourBarLengths lengths;
-  std::string lengthUnit;
-  Branch branch = Branch::Open;
-  double omega = 0.0;                            ///< crank, rad/s
-  double alpha = 0.0;                            ///< crank, rad/s²
-  double fromDeg = 0.0;                          ///< default table start, degrees
-  double toDeg = 360.0;                          ///< default table end, degrees
-  double stepDeg = 30.0;                         ///< default table step, degrees
-  std::optional<CouplerPointSpec> couplerPoint;  ///< a point the seed follows on the coupler
-  LinkageDynamics dynamics;                      ///< masses and loads, if the seed gives them (else empty)
-  bool operator==(const FourBarExample&) const = default;
-};
-
-/// Any other linkage (slider-crank, shaper, six-bars), built, with its speed and grid.
-struct MechanismExample {
-  std::string name;
-  std::string description;
-  std::string kind;  ///< "slider-crank", "shaper", "whitworth", "watt-i", "watt-ii", "stephenson-i", "stephenson-iii"
+  std::string kind;  ///< "four-bar", "slider-crank", "shaper", "whitworth", "watt-i", …: a label, as Design::kind
   Mechanism mechanism;
-  double omega = 0.0;  ///< crank, rad/s
-  double fromDeg = 0.0;
-  double toDeg = 360.0;
-  double stepDeg = 1.0;
-  std::optional<ShaperGeometry> shaper;  ///< for a shaper: its dimensions (time ratio, stroke)
-  LinkageDynamics dynamics;              ///< masses and loads, if the example has them (else empty)
-  bool operator==(const MechanismExample&) const = default;
+  double omega = 0.0;        ///< crank, rad/s
+  double alpha = 0.0;        ///< crank, rad/s²
+  double fromDeg = 0.0;      ///< default table start, degrees
+  double toDeg = 360.0;      ///< default table end, degrees
+  double stepDeg = 1.0;      ///< default table step, degrees
+  LinkageDynamics dynamics;  ///< masses and loads, if the source gives them (else empty)
+  bool operator==(const Example&) const = default;
 };
 
-/// The built-in examples that are not four-bars.
-std::vector<MechanismExample> mechanismExamples();
+/// Every built-in example, in display order: the seeds' four-bars first, then the
+/// slider-crank, the quick returns and the six-bars.
+std::vector<Example> examples();
 
-/// The non-four-bar example named `name`, if there is one.
-std::optional<MechanismExample> findMechanismExample(const std::string& name);
+/// The example named `name`, if there is one.
+std::optional<Example> findExample(const std::string& name);
 
 /// LS3 engine (seed 003): stroke 92 mm, connecting rod 6.098 in.
 inline const SliderCrankGeometry kLs3Engine{46.0, 6.098 * 25.4, 0.0, false};
@@ -61,8 +47,11 @@ inline const ShaperGeometry kSeedShaper{100.0, 400.0, 150.0, Eigen::Vector2d(40.
 /// crank circle at (0, −40) mm, slotted link 120, link 150 mm, ram guide through the pivot.
 inline const ShaperGeometry kWhitworth{100.0, 120.0, 150.0, Eigen::Vector2d(0.0, -40.0), -40.0};
 
-/// The six-bar examples: the thesis crank-rocker (60/25/70/45 mm) with one more dyad.
-inline const FourBarLengths kSixBarBase{60.0, 25.0, 70.0, 45.0};
+/// The thesis crank-rocker (seed 000): frame 60, crank 25, coupler 70, rocker 45 mm.
+inline const FourBarLengths kThesisCrankRocker{60.0, 25.0, 70.0, 45.0};
+
+/// The six-bar examples: the thesis crank-rocker with one more dyad.
+inline const FourBarLengths kSixBarBase = kThesisCrankRocker;
 inline const SixBarGeometry kWattISixBar{SixBarKind::WattI,       kSixBarBase, Branch::Open, {35.0, 25.0}, {60.0, 0.0},
                                          Eigen::Vector2d::Zero(), 70.0,        55.0,         Branch::Open};
 inline const SixBarGeometry kWattIISixBar{SixBarKind::WattII,           kSixBarBase, Branch::Open, {60.0, 0.0}, {},
@@ -79,11 +68,5 @@ inline const SixBarGeometry kStephensonIIISixBar{
 /// 15 mm from C): crank 0.2 kg, 1e-5 kg·m²; coupler 0.6 kg, 4e-4 kg·m²; rocker 0.4 kg,
 /// 8e-5 kg·m²; every centre of mass at its link's midpoint. No gravity, no load.
 LinkageDynamics funshoFourBarDynamics();
-
-/// All built-in four-bar examples, in display order.
-std::vector<FourBarExample> fourBarExamples();
-
-/// The example named `name`, if there is one.
-std::optional<FourBarExample> findFourBarExample(const std::string& name);
 
 }  // namespace linkwright::kinematics

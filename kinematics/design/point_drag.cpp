@@ -1,6 +1,7 @@
 #include "kinematics/design/point_drag.h"
 
 #include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/recognise.h"
 #include "kinematics/model/vec2.h"
 #include "kinematics/solve/guide_line.h"
 
@@ -85,18 +86,50 @@ struct Dragger {
   }
 };
 
+// The frame-line rule for a four-bar's pivots O2, O4 and its crank tip B.
+std::optional<Error> dragOnFrameLine(const FourBarStructure& s, Mechanism& m, const Pose& pose, double& inputAngle,
+                                     PointId point, const Eigen::Vector2d& target) {
+  const Eigen::Vector2d o2 = pose.position[s.o2.index];
+  const Eigen::Vector2d o4 = pose.position[s.o4.index];
+  const Eigen::Vector2d along(std::cos(s.frameAngle), std::sin(s.frameAngle));
+  const auto& name = [&m](PointId p) -> const std::string& { return m.points[p.index].name; };
+  if (point == s.o2 || point == s.o4) {
+    const Eigen::Vector2d onLine = o2 + along.dot(target - o2) * along;
+    const double frame = point == s.o2 ? along.dot(o4 - onLine) : along.dot(onLine - o2);
+    if (!(frame > 1e-9 * (1.0 + o2.norm() + o4.norm())))
+      return Error{ErrorCode::InvalidValue, name(point),
+                   name(point) + " cannot pass " + name(point == s.o2 ? s.o4 : s.o2) +
+                       " on the frame line: the frame would have no length"};
+    std::get<GroundPoint>(m.points[point.index].definition).position = onLine;
+    return std::nullopt;
+  }
+  auto& crank = std::get<CrankPoint>(m.points[point.index].definition);
+  const Eigen::Vector2d r = target - o2;
+  if (!(r.norm() > 1e-9 * (1.0 + o2.norm())))
+    return Error{
+        ErrorCode::InvalidValue, name(point),
+        name(point) + " cannot be dropped onto " + name(s.o2) + ": the link between them would have no length"};
+  crank.length = r.norm();
+  inputAngle = std::atan2(r.y(), r.x()) - crank.phase;
+  return std::nullopt;
+}
+
 }  // namespace
 
-Result<Mechanism> dragPoint(const Mechanism& mechanism, const Pose& pose, double inputAngle, PointId point,
-                            const Eigen::Vector2d& target) {
+Result<PointDrag> dragPoint(const Mechanism& mechanism, const Pose& pose, double inputAngle, PointId point,
+                            const Eigen::Vector2d& target, DragRule rule) {
   if (point.index >= mechanism.points.size() || pose.position.size() != mechanism.points.size())
     return Error{ErrorCode::InvalidStructure, "point", "the dragged point does not belong to this linkage"};
   if (!target.allFinite()) return Error{ErrorCode::InvalidValue, "target", "the drag target must be a finite position"};
-  Mechanism m = mechanism;
-  if (auto e = std::visit(Dragger{m, pose, inputAngle, point.index, target}, m.points[point.index].definition))
+  PointDrag out{mechanism, inputAngle};
+  Mechanism& m = out.mechanism;
+  const auto fourBar = rule == DragRule::FrameLine ? asFourBar(mechanism) : std::nullopt;
+  const bool framed = fourBar && (point == fourBar->o2 || point == fourBar->o4 || point == fourBar->b);
+  if (auto e = framed ? dragOnFrameLine(*fourBar, m, pose, out.inputAngle, point, target)
+                      : std::visit(Dragger{m, pose, inputAngle, point.index, target}, m.points[point.index].definition))
     return *e;
   if (auto e = checkMechanism(m)) return *e;
-  return m;
+  return out;
 }
 
 }  // namespace linkwright::kinematics

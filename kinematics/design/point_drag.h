@@ -1,7 +1,6 @@
 #pragma once
-// Editing any linkage by dragging one of its points (the general counterpart of
-// design_edit.h's four-bar drags): the dragged point lands on the target by changing only the
-// numbers that define it, and the points defined from it follow.
+// Editing any linkage by dragging one of its points: the dragged point lands on the target by
+// changing only the numbers that define it, and the points defined from it follow.
 //
 //   ground pivot      its position
 //   crank tip         crank length, and the phase so the tip sits on the target now
@@ -11,6 +10,10 @@
 //   PRP pin           cannot be dragged: the guides fix it
 //   attached point    its along/across offsets on the link
 //   free point        its guess, and the length of every constraint that reaches it
+//
+// Under DragRule::FrameLine a recognised four-bar keeps the frame its analyses are measured
+// from: O2 and O4 slide along the frame line (a pivot may not pass the other), and dragging
+// the crank tip B sets the crank length and turns the input, leaving the crank's phase.
 
 #include "kinematics/model/mechanism.h"
 #include "kinematics/model/result.h"
@@ -20,11 +23,25 @@
 
 namespace linkwright::kinematics {
 
+/// How a drag treats the frame of a four-bar.
+enum class DragRule {
+  Free,       ///< every point goes where it is dragged
+  FrameLine,  ///< a recognised four-bar keeps its frame line (see above); others drag freely
+};
+
+/// A mechanism after a drag, and the input angle (rad) to show it at.
+struct PointDrag {
+  Mechanism mechanism;
+  double inputAngle = 0.0;
+  bool operator==(const PointDrag&) const = default;
+};
+
 /// Moves `point` of `mechanism` (solved as `pose` at input angle `inputAngle`, rad) to
-/// `target` (length unit). Returns the edited mechanism, structurally checked; an Error names
-/// the reason if a length would vanish or the point cannot be dragged. Assembly at other input
-/// angles is not checked here: solve or sweep the result for that.
-Result<Mechanism> dragPoint(const Mechanism& mechanism, const Pose& pose, double inputAngle, PointId point,
-                            const Eigen::Vector2d& target);
+/// `target` (length unit). Returns the edited mechanism, structurally checked, and the input
+/// angle (unchanged but for the crank tip under FrameLine); an Error names the reason if a
+/// length would vanish or the point cannot be dragged. Assembly at other input angles is not
+/// checked here: solve or sweep the result for that.
+Result<PointDrag> dragPoint(const Mechanism& mechanism, const Pose& pose, double inputAngle, PointId point,
+                            const Eigen::Vector2d& target, DragRule rule = DragRule::Free);
 
 }  // namespace linkwright::kinematics

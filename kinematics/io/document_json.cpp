@@ -6,6 +6,7 @@
 #include "kinematics/io/mechanism_json.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/validate.h"
 
 #include <cmath>
 #include <sstream>
@@ -35,25 +36,35 @@ Result<int> checkHeader(const JsonValue& root, JsonReader& r) {
   return static_cast<int>(*version);
 }
 
-void readFourBar(const JsonValue& mech, JsonReader& r, FourBarDesign& d) {
-  if (const auto unit = r.string(mech, "length_unit", "mechanism.length_unit")) d.lengthUnit = *unit;
+// A version 1 or 2 four-bar, by its lengths: read into the mechanism makeFourBar builds.
+struct FourBarMembers {
+  FourBarLengths lengths;
+  std::string lengthUnit = "mm";
+  Branch branch = Branch::Open;
+  std::optional<CouplerPointSpec> couplerPoint;
+};
+
+FourBarMembers readFourBar(const JsonValue& mech, JsonReader& r) {
+  FourBarMembers f;
+  if (const auto unit = r.string(mech, "length_unit", "mechanism.length_unit")) f.lengthUnit = *unit;
   if (const auto branch = r.string(mech, "branch", "mechanism.branch")) {
-    if (*branch == "open") d.branch = Branch::Open;
-    else if (*branch == "crossed") d.branch = Branch::Crossed;
+    if (*branch == "open") f.branch = Branch::Open;
+    else if (*branch == "crossed") f.branch = Branch::Crossed;
     else r.fail("mechanism.branch", "must be \"open\" or \"crossed\" (got \"" + *branch + "\")");
   }
   if (const JsonValue* l = r.object(mech, "lengths", "mechanism.lengths")) {
-    d.lengths.frame = r.number(*l, "frame", "mechanism.lengths.frame").value_or(0.0);
-    d.lengths.crank = r.number(*l, "crank", "mechanism.lengths.crank").value_or(0.0);
-    d.lengths.coupler = r.number(*l, "coupler", "mechanism.lengths.coupler").value_or(0.0);
-    d.lengths.rocker = r.number(*l, "rocker", "mechanism.lengths.rocker").value_or(0.0);
+    f.lengths.frame = r.number(*l, "frame", "mechanism.lengths.frame").value_or(0.0);
+    f.lengths.crank = r.number(*l, "crank", "mechanism.lengths.crank").value_or(0.0);
+    f.lengths.coupler = r.number(*l, "coupler", "mechanism.lengths.coupler").value_or(0.0);
+    f.lengths.rocker = r.number(*l, "rocker", "mechanism.lengths.rocker").value_or(0.0);
   }
   if (const JsonValue* p = r.object(mech, "coupler_point", "mechanism.coupler_point", false)) {
     CouplerPointSpec spec;
     spec.along = r.number(*p, "along", "mechanism.coupler_point.along").value_or(0.0);
     spec.across = r.number(*p, "across", "mechanism.coupler_point.across").value_or(0.0);
-    d.couplerPoint = spec;
+    f.couplerPoint = spec;
   }
+  return f;
 }
 
 // Maps checkDesign's field names onto document paths, so the message names what is in the file.
@@ -68,9 +79,8 @@ std::string documentPath(const std::string& field) {
   return "analysis." + field;
 }
 
-// The driver and analysis members, shared by both kinds of design.
-template <typename D>
-void writeMotion(std::ostream& s, const D& d) {
+// The driver, analysis and dynamics members.
+void writeMotion(std::ostream& s, const Design& d) {
   s << "\n  },\n  \"driver\": {\"omega_rad_s\": " << formatJsonNumber(d.omega)
     << ", \"alpha_rad_s2\": " << formatJsonNumber(d.alpha)
     << "},\n  \"analysis\": {\"from_deg\": " << formatJsonNumber(d.fromDeg)
@@ -79,8 +89,7 @@ void writeMotion(std::ostream& s, const D& d) {
   s << "\n}\n";
 }
 
-template <typename D>
-void readMotion(const JsonValue& root, JsonReader& r, D& d) {
+void readMotion(const JsonValue& root, JsonReader& r, Design& d) {
   if (const JsonValue* drv = r.object(root, "driver", "driver")) {
     d.omega = r.number(*drv, "omega_rad_s", "driver.omega_rad_s").value_or(0.0);
     d.alpha = r.number(*drv, "alpha_rad_s2", "driver.alpha_rad_s2").value_or(0.0);
@@ -95,19 +104,7 @@ void readMotion(const JsonValue& root, JsonReader& r, D& d) {
   }
 }
 
-void writeFourBar(std::ostream& s, const FourBarDesign& d) {
-  const auto& l = d.lengths;
-  s << "    \"type\": \"four-bar\",\n    \"length_unit\": " << jsonQuote(d.lengthUnit) << ",\n    \"branch\": \""
-    << (d.branch == Branch::Open ? "open" : "crossed") << "\",\n";
-  s << "    \"lengths\": {\"frame\": " << formatJsonNumber(l.frame) << ", \"crank\": " << formatJsonNumber(l.crank)
-    << ", \"coupler\": " << formatJsonNumber(l.coupler) << ", \"rocker\": " << formatJsonNumber(l.rocker) << "}";
-  if (d.couplerPoint)
-    s << ",\n    \"coupler_point\": {\"along\": " << formatJsonNumber(d.couplerPoint->along)
-      << ", \"across\": " << formatJsonNumber(d.couplerPoint->across) << "}";
-  writeMotion(s, d);
-}
-
-void writeLinkage(std::ostream& s, const MechanismDesign& d) {
+void writeLinkage(std::ostream& s, const Design& d) {
   s << "    \"type\": \"linkage\",\n    \"kind\": " << jsonQuote(d.kind)
     << ",\n    \"length_unit\": " << jsonQuote(d.mechanism.lengthUnit) << ",\n";
   writeMechanismMembers(s, d.mechanism);
@@ -123,14 +120,21 @@ std::optional<Error> inDocument(std::optional<Error> e) {
   return Error{e->code, path, path + reason};
 }
 
-std::optional<Error> checkRead(const FourBarDesign& d) {
-  FourBarDesign withoutDynamics = d;
-  withoutDynamics.dynamics = {};
-  if (auto e = inDocument(checkDesign(withoutDynamics))) return e;
-  return checkDocumentDynamics(makeFourBar(d.lengths, d.branch, d.lengthUnit, d.couplerPoint).value(), d.dynamics);
+// A four-bar's lengths and coupler point are checked by their document names; the built
+// mechanism (its spread of lengths) as a four-bar.
+Result<Mechanism> buildRead(const FourBarMembers& f) {
+  if (auto e = checkFourBarLengths(f.lengths))
+    return *inDocument(Error{e->code, "lengths." + e->field, "lengths." + e->message});
+  if (f.couplerPoint) {
+    if (auto e = inDocument(checkCoordinate(f.couplerPoint->along, "couplerPoint.along"))) return *e;
+    if (auto e = inDocument(checkCoordinate(f.couplerPoint->across, "couplerPoint.across"))) return *e;
+  }
+  auto m = makeFourBar(f.lengths, f.branch, f.lengthUnit, f.couplerPoint);
+  if (!m) return *inDocument(m.error());
+  return m;
 }
 
-std::optional<Error> checkRead(const MechanismDesign& d) {
+std::optional<Error> checkRead(const Design& d) {
   if (auto e = checkMechanism(d.mechanism)) return Error{e->code, "mechanism." + e->field, "mechanism." + e->message};
   if (auto e = inDocument(checkDriveAndGrid(d.omega, d.alpha, d.fromDeg, d.toDeg, d.samples))) return e;
   return checkDocumentDynamics(d.mechanism, d.dynamics);
@@ -138,17 +142,14 @@ std::optional<Error> checkRead(const MechanismDesign& d) {
 
 // Version 3 added "dynamics": a design without masses or loads is written as version 2, so
 // Linkwright 2 readers still open it; one with them as 3, so they refuse it rather than drop them.
-int versionFor(const Design& design) {
-  return std::visit([](const auto& d) { return d.dynamics.empty() ? 2 : kDocumentVersion; }, design);
-}
+int versionFor(const Design& design) { return design.dynamics.empty() ? 2 : kDocumentVersion; }
 
 }  // namespace
 
 std::string writeDocument(const Design& design) {
   std::ostringstream s;
   s << "{\n  \"format\": \"linkwright\",\n  \"version\": " << versionFor(design) << ",\n  \"mechanism\": {\n";
-  if (const auto* f = std::get_if<FourBarDesign>(&design)) writeFourBar(s, *f);
-  else writeLinkage(s, std::get<MechanismDesign>(design));
+  writeLinkage(s, design);
   return s.str();
 }
 
@@ -164,20 +165,23 @@ Result<Design> readDocument(std::string_view text) {
   const std::string type = mech != nullptr ? r.string(*mech, "type", "mechanism.type").value_or("") : "";
   if (r.error) return *r.error;
   // Version 1 knew four-bars only; version 2 added general linkages. Migration is reading.
+  Design d;
   if (type == "four-bar") {
-    FourBarDesign d;
-    readFourBar(*mech, r, d);
+    const FourBarMembers f = readFourBar(*mech, r);
     readMotion(root, r, d);
     d.dynamics = readDynamicsMember(root, r);
     if (r.error) return *r.error;
+    auto built = buildRead(f);
+    if (!built) return built.error();
+    d.kind = "four-bar";
+    d.mechanism = std::move(*built);
     if (auto e = checkRead(d)) return *e;
-    return Design{d};
+    return d;
   }
   if (type != "linkage" || *version < 2)
     return documentError("mechanism.type", std::string("must be \"four-bar\"") +
                                                (*version < 2 ? "" : " or \"linkage\"") + " in a version " +
                                                std::to_string(*version) + " document (got \"" + type + "\")");
-  MechanismDesign d;
   d.kind = r.string(*mech, "kind", "mechanism.kind").value_or("");
   const std::string unit = r.string(*mech, "length_unit", "mechanism.length_unit").value_or("");
   d.mechanism = readMechanismMembers(*mech, "mechanism", r);
@@ -186,7 +190,7 @@ Result<Design> readDocument(std::string_view text) {
   d.dynamics = readDynamicsMember(root, r);
   if (r.error) return *r.error;
   if (auto e = checkRead(d)) return *e;
-  return Design{d};
+  return d;
 }
 
 }  // namespace linkwright::kinematics::io

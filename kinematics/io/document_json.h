@@ -1,24 +1,27 @@
 #pragma once
-// The Linkwright document: a Design (a parametric four-bar, or any linkage) as JSON, with a
-// format name and a version so that a file from a newer Linkwright is refused with a clear
-// message instead of misread. Version 1 held four-bars only; version 2 adds
-// "type": "linkage" (see mechanism_json.h for its points, links and constraints); version 3
-// adds the optional "dynamics" (masses and loads, dynamics_json.h). Older files read
-// unchanged, and a design without dynamics is still written as version 2.
+// The Linkwright document: a Design as JSON, with a format name and a version so that a file
+// from a newer Linkwright is refused with a clear message instead of misread. Every design is
+// written as "type": "linkage" (its points, links and constraints: mechanism_json.h), version 2,
+// or version 3 when it carries "dynamics" (masses and loads, dynamics_json.h). Version 1 and 2
+// files that hold a four-bar by its lengths ("type": "four-bar") still read, into the mechanism
+// makeFourBar builds, so they analyse as before and re-save in the linkage form.
 //
 //   { "format": "linkwright", "version": 2,
-//     "mechanism": { "type": "four-bar", "length_unit": "mm", "branch": "open",
-//                    "lengths": {"frame": 60, "crank": 25, "coupler": 70, "rocker": 45},
-//                    "coupler_point": {"along": 35, "across": 20} },        (optional)
+//     "mechanism": { "type": "linkage", "kind": "four-bar", "length_unit": "mm",
+//                    "points": [ … ], "links": [ … ], "constraints": [] },
 //     "driver": { "omega_rad_s": 1.0471975511965976, "alpha_rad_s2": 0 },
 //     "analysis": { "from_deg": 0, "to_deg": 360, "samples": 721 },
 //     "dynamics": { "links": {"crank": {"mass_kg": 0.2}}, … } }         (optional, version 3)
+//
+//   the older four-bar form: "mechanism": { "type": "four-bar", "length_unit": "mm",
+//     "branch": "open", "lengths": {"frame": 60, "crank": 25, "coupler": 70, "rocker": 45},
+//     "coupler_point": {"along": 35, "across": 20} }                     (coupler_point optional)
 //
 // Numbers are written in shortest round-trip form, so save → open reproduces the design bit
 // for bit. Unknown members are ignored (a newer minor writer may add some); a missing or
 // mistyped member is an error naming its path ("mechanism.lengths.coupler").
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 #include "kinematics/model/result.h"
 
 #include <string>

@@ -6,9 +6,11 @@
 namespace linkwright::kinematics {
 namespace {
 
+// Null for another kind of point, or for an id past the end (an unchecked mechanism: the
+// recognisers may be asked before checkMechanism).
 template <typename T>
 const T* definitionOf(const Mechanism& m, PointId id) {
-  return std::get_if<T>(&m.points[id.index].definition);
+  return id.index < m.points.size() ? std::get_if<T>(&m.points[id.index].definition) : nullptr;
 }
 
 // The one crank point and its ground pivot.
@@ -59,7 +61,9 @@ std::optional<FourBarStructure> asFourBar(const Mechanism& m) {
     }
     // Anything else must be a point fixed on the coupler B–C.
     const auto* attached = definitionOf<AttachedPoint>(m, id);
-    if (!found || !attached || !joins(m.links[attached->link.index], found->b, found->c)) return std::nullopt;
+    if (!found || !attached || attached->link.index >= m.links.size() ||
+        !joins(m.links[attached->link.index], found->b, found->c))
+      return std::nullopt;
   }
   return found;
 }

@@ -24,7 +24,8 @@ struct FourBarStructure {
   double inputAngle(double frameCrankAngle) const { return frameCrankAngle + frameAngle - crankPhase; }
 };
 
-/// The mechanism's four-bar, if it is one.
+/// The mechanism's four-bar, if it is one. Safe on an unchecked mechanism (its lengths are
+/// then as stored: checkFourBarLengths says whether they are valid).
 std::optional<FourBarStructure> asFourBar(const Mechanism& mechanism);
 
 /// A mechanism that is a quick-return shaper or Whitworth: a crank O2→B, a slotted rocker

@@ -12,7 +12,7 @@
 #include "ui/geometry.h"
 #include "ui/main_window.h"
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 #include "kinematics/model/fourbar.h"
 
 #include <QApplication>
@@ -55,8 +55,7 @@ int main(int argc, char** argv) {
     doc->reset(*example);
     QApplication::processEvents();
   }
-  const std::size_t dragged =
-      doc->fourBar() ? linkwright::kinematics::fourbar::kC.index : doc->mechanism().points.size() - 1;
+  const std::size_t dragged = doc->fourBar() ? doc->fourBar()->c.index : doc->mechanism().points.size() - 1;
   std::printf("%s, dragging %s: %zu samples; plots and canvas redrawn after every move\n",
               argc > 2 ? argv[2] : "thesis four-bar", doc->mechanism().points[dragged].name.c_str(),
               linkwright::kinematics::designSweepSpec(doc->design()).samples);

@@ -14,6 +14,7 @@
 #include "kinematics/model/constraint_form.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/mechanism.h"
+#include "kinematics/model/recognise.h"
 #include "kinematics/model/shaper.h"
 #include "kinematics/model/sixbar.h"
 #include "kinematics/model/sixbar_newton.h"
@@ -114,8 +115,21 @@ struct Subject {
   double omega = 0.0;  // rad/s, the example's crank speed
 };
 
-const FourBarExample& thesis() {
-  static const FourBarExample example = *findFourBarExample("thesis-crank-rocker");
+// A built-in four-bar example by its dimensions and crank speed.
+struct FourBarSubject {
+  FourBarLengths lengths;
+  Branch branch = Branch::Open;
+  double omega = 0.0;  // rad/s
+};
+
+FourBarSubject fourBarExample(const std::string& name) {
+  const Example example = findExample(name).value();
+  const FourBarStructure s = asFourBar(example.mechanism).value();
+  return {s.lengths, s.branch, example.omega};
+}
+
+const FourBarSubject& thesis() {
+  static const FourBarSubject example = fourBarExample("thesis-crank-rocker");
   return example;
 }
 
@@ -128,7 +142,7 @@ Mechanism withPointOn(Mechanism m, LinkId link, double along, double across) {
 }
 
 std::vector<Subject> subjects() {
-  const FourBarExample& t = thesis();
+  const FourBarSubject& t = thesis();
   const Mechanism sliderCrank = makeSliderCrank(kLs3Engine).value();
   const Mechanism shaperMechanism = makeShaper(kSeedShaper).value();
   return {
@@ -219,8 +233,8 @@ void freshSweepBenchmark(benchmark::State& state, const Mechanism& mechanism, do
 // The "+ forces" level: the Full sweep and then inverse dynamics at every sample
 // (force_sweep.h), for seed 004's four-bar with its masses (funsho-fourbar).
 void forcesBenchmark(benchmark::State& state) {
-  const FourBarExample e = findFourBarExample("funsho-fourbar").value();
-  const Mechanism m = makeFourBar(e.lengths, e.branch).value();
+  const Example e = findExample("funsho-fourbar").value();
+  const Mechanism& m = e.mechanism;
   const SweepSpec spec{0.0, 2.0 * kPi, static_cast<std::size_t>(state.range(0)), e.omega, 0.5};
   SweepResult kinematics;
   const Instruments instruments;
@@ -334,7 +348,7 @@ template <bool Everything>
 void handWrittenBenchmark(benchmark::State& state) {
   const auto samples = static_cast<std::size_t>(state.range(0));
   HandWrittenColumns columns(samples, Everything);
-  const FourBarExample& t = thesis();
+  const FourBarSubject& t = thesis();
   const Instruments instruments;
   for (auto _ : state) {
     handWrittenFourBar<Everything>(t.lengths, 0.0, 2.0 * kPi, t.omega, 0.5, columns);
@@ -348,7 +362,7 @@ void handWrittenBenchmark(benchmark::State& state) {
 // The baselines must compute what the core computes, or the comparison means nothing: every
 // column the "everything" loop fills against the core's, relative to the value's size.
 bool handWrittenMatchesCore() {
-  const FourBarExample& t = thesis();
+  const FourBarSubject& t = thesis();
   const std::size_t n = 361;
   HandWrittenColumns hand(n, true);
   handWrittenFourBar<true>(t.lengths, 0.0, 2.0 * kPi, t.omega, 0.5, hand);
@@ -424,7 +438,7 @@ void registerAll() {
   auto* handFull = benchmark::RegisterBenchmark("FourBar/HandWrittenFull", handWrittenBenchmark<true>);
   for (const std::int64_t n : kSizes) handFull->Arg(n);
   handFull->Unit(benchmark::kNanosecond);
-  const FourBarExample& t = thesis();
+  const FourBarSubject& t = thesis();
   benchmark::RegisterBenchmark("FourBar/Pose/Full", poseBenchmark, makeFourBar(t.lengths, t.branch).value(), t.omega)
       ->Unit(benchmark::kNanosecond);
 }

@@ -5,7 +5,7 @@
 #include "tests/cli/run_cli.h"
 #include "tests/support/locking_six_bar.h"
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 #include "kinematics/io/document_json.h"
 #include "kinematics/io/json.h"
 #include "kinematics/model/fourbar.h"
@@ -61,7 +61,7 @@ TEST_CASE("a saved example analyses exactly as the example", "[cli][document]") 
 }
 
 TEST_CASE("a document's speed and grid are the defaults", "[cli][document]") {
-  kinematics::MechanismDesign d = kinematics::designFromExample(*kinematics::findMechanismExample("watt-ii"));
+  kinematics::Design d = kinematics::designFromExample(*kinematics::findExample("watt-ii"));
   d.omega = 3.0;
   d.fromDeg = 10.0;
   d.toDeg = 40.0;
@@ -79,7 +79,7 @@ TEST_CASE("a document's speed and grid are the defaults", "[cli][document]") {
 
 TEST_CASE("analyze and extremes note a lock between two samples", "[cli][document]") {
   // Its dyad E locks near 291.65°, between two 5° samples.
-  kinematics::MechanismDesign d;
+  kinematics::Design d;
   d.kind = "stephenson-iii";
   d.mechanism = *kinematics::makeSixBar(test::lockingSixBar());
   d.samples = 73;
@@ -101,7 +101,7 @@ TEST_CASE("analyze and extremes note a lock between two samples", "[cli][documen
 TEST_CASE("classify --json escapes the document's own names", "[cli][document][json]") {
   // Point names come from the file: quotes, backslashes and control characters in them must
   // still give valid JSON that reads back to the same strings.
-  kinematics::MechanismDesign d = kinematics::designFromExample(*kinematics::findMechanismExample("watt-ii"));
+  kinematics::Design d = kinematics::designFromExample(*kinematics::findExample("watt-ii"));
   const std::string name = "C \"rocker\" \\ end\t1";
   d.mechanism.points[3].name = name;
   const TempDocument file("escape", kinematics::io::writeDocument(d));
@@ -117,7 +117,7 @@ TEST_CASE("classify --json escapes the document's own names", "[cli][document][j
 
 TEST_CASE("classify reads what a document's linkage is, not how it was stored", "[cli][document]") {
   // A four-bar saved as a general linkage classifies exactly as the four-bar.
-  kinematics::MechanismDesign fourBar;
+  kinematics::Design fourBar;  // kind "linkage": nothing says it is a four-bar but its structure
   fourBar.mechanism = *kinematics::makeFourBar({60.0, 25.0, 70.0, 45.0}, kinematics::Branch::Crossed);
   const TempDocument fourBarFile("recognised_fourbar", kinematics::io::writeDocument(fourBar));
   for (const bool json : {false, true}) {
@@ -131,7 +131,7 @@ TEST_CASE("classify reads what a document's linkage is, not how it was stored", 
     CHECK(a.out == b.out);
   }
   // A shaper whose kind says only "linkage" still gets its quick-return figures.
-  kinematics::MechanismDesign shaper = kinematics::designFromExample(*kinematics::findMechanismExample("shaper"));
+  kinematics::Design shaper = kinematics::designFromExample(*kinematics::findExample("shaper"));
   shaper.kind = "linkage";
   const TempDocument shaperFile("recognised_shaper", kinematics::io::writeDocument(shaper));
   const Run a = run({"classify", shaperFile.path()});
@@ -152,6 +152,43 @@ TEST_CASE("a version 1 document analyses as its four-bar", "[cli][document][migr
       run({"analyze", "--fourbar", "60,25,70,45", "--branch", "crossed", "--coupler-point", "35,-20.25", "--omega",
            "1.0471975511965976", "--alpha", "0.1", "--step", "30", "--from", "0", "--to", "60"});
   CHECK(r.out == same.out);
+}
+
+TEST_CASE("a four-bar-form document and its re-saved linkage form give the same output", "[cli][document][migration]") {
+  std::ifstream v1File(LINKWRIGHT_TEST_DOCUMENTS "/fourbar_v1.json");
+  REQUIRE(v1File.good());
+  std::stringstream v1;
+  v1 << v1File.rdbuf();
+  std::string v2 = v1.str();
+  v2.replace(v2.find("\"version\": 1"), 12, "\"version\": 2");
+  for (const auto& [version, text] : {std::pair{1, v1.str()}, std::pair{2, v2}}) {
+    CAPTURE(version);
+    const auto design = kinematics::io::readDocument(text);
+    INFO((design.ok() ? std::string() : design.error().message));
+    REQUIRE(design.ok());
+    const std::string resaved = kinematics::io::writeDocument(*design);
+    REQUIRE_THAT(resaved, Catch::Contains("\"type\": \"linkage\""));
+    const TempDocument oldForm("fourbar_form_v" + std::to_string(version), text);
+    const TempDocument linkageForm("linkage_form_v" + std::to_string(version), resaved);
+    for (const std::vector<std::string>& options : {std::vector<std::string>{"analyze"},
+                                                    {"analyze", "--step", "7.5", "--from", "-30", "--to", "330"},
+                                                    {"analyze", "--format", "table", "--step", "30"},
+                                                    {"extremes"},
+                                                    {"classify"},
+                                                    {"classify", "--json"}}) {
+      std::vector<std::string> a = options, b = options;
+      a.insert(a.begin() + 1, oldForm.path());
+      b.insert(b.begin() + 1, linkageForm.path());
+      CAPTURE(options);
+      const Run fromOld = run(a);
+      const Run fromLinkage = run(b);
+      INFO(fromOld.err);
+      REQUIRE(fromOld.code == 0);
+      REQUIRE(fromLinkage.code == 0);
+      CHECK(fromOld.out == fromLinkage.out);  // byte for byte
+      CHECK(fromOld.err == fromLinkage.err);
+    }
+  }
 }
 
 TEST_CASE("bad documents fail with the file and the member named", "[cli][document][errors]") {

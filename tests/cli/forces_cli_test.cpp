@@ -5,8 +5,8 @@
 #include "app/cli/cli.h"
 #include "tests/cli/run_cli.h"
 
+#include "kinematics/design/design.h"
 #include "kinematics/design/examples.h"
-#include "kinematics/design/mechanism_design.h"
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/document_json.h"
 #include "kinematics/model/units.h"
@@ -67,8 +67,8 @@ TEST_CASE("analyze --forces appends the force columns with their units", "[cli][
 
   // The torque column is the core's, to the last digit (the CSV is round-trip precise).
   using namespace kinematics;
-  const auto example = *findFourBarExample("funsho-fourbar");
-  const Mechanism m = makeFourBar(example.lengths, example.branch, example.lengthUnit).value();
+  const auto example = *findExample("funsho-fourbar");
+  const Mechanism& m = example.mechanism;
   const auto s = sweep(m, {0.0, degToRad(360.0), 13, example.omega, 0.0}).value();
   const auto f = sweepForces(m, example.dynamics, s).value();
   const std::size_t torque = columnOf(header, "T_drive_Nm");
@@ -106,7 +106,7 @@ TEST_CASE("analyze --forces without masses is refused with exit code 2", "[cli][
 
 TEST_CASE("analyze FILE.json --forces uses the document's dynamics and checks its unit", "[cli][forces]") {
   using namespace kinematics;
-  auto design = std::get<FourBarDesign>(*designForExample("funsho-fourbar"));
+  auto design = *designForExample("funsho-fourbar");
   const auto path = (std::filesystem::temp_directory_path() / "linkwright_cli_forces.json").string();
   std::ofstream(path, std::ios::binary) << io::writeDocument(design);
   const Run fromFile = run({"analyze", path, "--forces", "--step", "30"});
@@ -114,7 +114,7 @@ TEST_CASE("analyze FILE.json --forces uses the document's dynamics and checks it
   CHECK(fromFile.code == 0);
   CHECK(fromFile.out == fromExample.out);
 
-  design.lengthUnit = "furlong";
+  design.mechanism.lengthUnit = "furlong";
   std::ofstream(path, std::ios::binary | std::ios::trunc) << io::writeDocument(design);
   const Run badUnit = run({"analyze", path, "--forces"});
   CHECK(badUnit.code == 2);

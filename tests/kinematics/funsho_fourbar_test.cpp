@@ -18,6 +18,7 @@
 #include "kinematics/design/examples.h"
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/model/fourbar.h"
+#include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/sweep.h"
 
@@ -92,11 +93,14 @@ SeedForces seedMethod(double th1) {
 
 TEST_CASE("funsho-fourbar: joint forces and motor torque match the seed's 9×9 method",
           "[dynamics][published][funsho]") {
-  const auto example = findFourBarExample("funsho-fourbar");
+  const auto example = findExample("funsho-fourbar");
   REQUIRE(example.has_value());
-  CHECK(example->lengths == FourBarLengths{30.0, 10.0, 35.0, 20.0});
+  const auto fourBar = asFourBar(example->mechanism);
+  REQUIRE(fourBar.has_value());
+  CHECK(fourBar->lengths == FourBarLengths{30.0, 10.0, 35.0, 20.0});
   CHECK(example->omega == 100.0);
-  const Mechanism m = makeFourBar(example->lengths, example->branch, example->lengthUnit).value();
+  const Mechanism m = makeFourBar(fourBar->lengths, fourBar->branch, example->mechanism.lengthUnit).value();
+  CHECK(m == example->mechanism);
   // Every 5°: the seed steps 0.001 rad; both methods are exact, so any grid tests the same.
   const SweepSpec spec{0.0, 2.0 * kPi, 73, example->omega, example->alpha};
   const auto s = sweep(m, spec);
@@ -122,7 +126,7 @@ TEST_CASE("funsho-fourbar: joint forces and motor torque match the seed's 9×9 m
 
 TEST_CASE("funsho-fourbar: the example carries the code's masses, midpoint centres and no gravity",
           "[dynamics][funsho]") {
-  const auto example = findFourBarExample("funsho-fourbar");
+  const auto example = findExample("funsho-fourbar");
   REQUIRE(example.has_value());
   const LinkageDynamics& d = example->dynamics;
   REQUIRE(d.links.size() == 3);
@@ -131,5 +135,7 @@ TEST_CASE("funsho-fourbar: the example carries the code's masses, midpoint centr
   CHECK(d.links[1].inertia == 4e-4);        // the code's ig2 (the table says 0.004)
   CHECK(d.links[2].centre->along == 10.0);  // rg3 = r3/2 (the table says 15 mm)
   CHECK_FALSE(d.loads.gravity.has_value());
-  CHECK_FALSE(checkDynamics(makeFourBar(example->lengths, example->branch).value(), d).has_value());
+  const auto fourBar = asFourBar(example->mechanism);
+  REQUIRE(fourBar.has_value());
+  CHECK_FALSE(checkDynamics(makeFourBar(fourBar->lengths, fourBar->branch).value(), d).has_value());
 }

@@ -4,6 +4,8 @@
 
 #include "kinematics/analysis/extrema.h"
 #include "kinematics/design/examples.h"
+#include "kinematics/design/fourbar_dimensions.h"
+#include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
 
@@ -25,9 +27,14 @@ TEST_CASE("miranda-fourbar: coupler and midpoint extremes match the SolidWorks t
       {15.0, 63.18, 8924.4, 10.25, 1457.55},
   }));
   CAPTURE(hz);
-  const auto example = findFourBarExample("miranda-fourbar");
+  const auto example = findExample("miranda-fourbar");
   REQUIRE(example.has_value());
-  const auto m = makeFourBar(example->lengths, example->branch, "mm", example->couplerPoint);
+  const auto fourBar = asFourBar(example->mechanism);
+  REQUIRE(fourBar.has_value());
+  const auto couplerPoint = couplerPointOf(example->mechanism, *fourBar);
+  REQUIRE(couplerPoint.has_value());
+  CHECK(couplerPoint->id == fourbar::kCouplerPoint);
+  const auto m = makeFourBar(fourBar->lengths, fourBar->branch, "mm", couplerPoint->spec);
   REQUIRE(m.ok());
   const SweepSpec spec{0.0, 2.0 * kPi, 37, 2.0 * kPi * hz, 0.0};  // every 10°: the refinement does the rest
   const auto coupler = fourbar::kCoupler.index;
@@ -44,9 +51,11 @@ TEST_CASE("miranda-fourbar: coupler and midpoint extremes match the SolidWorks t
 
 TEST_CASE("miranda-fourbar: the coupler swings through 52.78 degrees", "[published][miranda]") {
   // Seed 003: "the max. angular position variation was 52,78°".
-  const auto example = findFourBarExample("miranda-fourbar");
+  const auto example = findExample("miranda-fourbar");
   REQUIRE(example.has_value());
-  const auto m = makeFourBar(example->lengths, example->branch, "mm");
+  const auto fourBar = asFourBar(example->mechanism);
+  REQUIRE(fourBar.has_value());
+  const auto m = makeFourBar(fourBar->lengths, fourBar->branch, "mm");
   REQUIRE(m.ok());
   const Extrema angle = extremaOf(*m, {0.0, 2.0 * kPi, 37, 1.0, 0.0},
                                   [](const Pose& p, double) { return radToDeg(p.linkAngle[fourbar::kCoupler.index]); });

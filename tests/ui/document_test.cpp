@@ -5,8 +5,10 @@
 #include "ui/document/edit_design_command.h"
 #include "ui/document/mechanism_document.h"
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 #include "kinematics/model/units.h"
+
+#include "tests/ui/support/four_bar_design.h"
 
 #include <catch2/catch.hpp>
 
@@ -19,11 +21,7 @@ using ui::MechanismDocument;
 
 namespace {
 
-kinematics::FourBarDesign withCrank(double crank) {
-  kinematics::FourBarDesign d;
-  d.lengths.crank = crank;
-  return d;
-}
+kinematics::Design withCrank(double crank) { return testing::fourBar({60.0, crank, 70.0, 45.0}); }
 
 void writeText(const QString& path, const QByteArray& text) {
   QFile f(path);
@@ -35,21 +33,21 @@ void writeText(const QString& path, const QByteArray& text) {
 
 TEST_CASE("an edit changes the design, the analysis and the sweep; undo restores them exactly", "[ui][document]") {
   MechanismDocument doc;
-  const kinematics::FourBarDesign before = *doc.fourBar();
+  const kinematics::Design before = doc.design();
   QSignalSpy spy(&doc, &MechanismDocument::changed);
-  kinematics::FourBarDesign after = before;
-  after.lengths.frame = 20.0;  // 20 + 70 > 25 + 45: no longer Grashof
+  const kinematics::Design after =
+      testing::withLengths(before, {20.0, 25.0, 70.0, 45.0});  // 20 + 70 > 25 + 45: no longer Grashof
   REQUIRE_FALSE(doc.edit(after, "frame").has_value());
-  CHECK(*doc.fourBar() == after);
+  CHECK(doc.design() == after);
   CHECK(doc.analysis().grashof->category == kinematics::GrashofClass::TripleRocker);
   CHECK_FALSE(doc.analysis().inputRange.fullRotation);
   CHECK(doc.pose().position[kinematics::fourbar::kO4.index].x() == 20.0);
   CHECK(spy.count() >= 1);
   doc.undoStack()->undo();
-  CHECK(*doc.fourBar() == before);
+  CHECK(doc.design() == before);
   CHECK(doc.analysis().grashof->category == kinematics::GrashofClass::CrankRocker);
   doc.undoStack()->redo();
-  CHECK(*doc.fourBar() == after);
+  CHECK(doc.design() == after);
 }
 
 TEST_CASE("an edit sweeps each grid once", "[ui][document]") {
@@ -58,7 +56,7 @@ TEST_CASE("an edit sweeps each grid once", "[ui][document]") {
   // form for both, so only the display is swept.
   MechanismDocument doc;
   doc.reset(*kinematics::designForExample("watt-ii"));
-  auto linkage = std::get<kinematics::MechanismDesign>(doc.design());
+  auto linkage = doc.design();
   std::get<kinematics::RrrPoint>(linkage.mechanism.points.back().definition).firstLength += 1.0;
   long before = doc.sweepsRun();
   REQUIRE_FALSE(doc.edit(linkage, "length").has_value());
@@ -67,7 +65,7 @@ TEST_CASE("an edit sweeps each grid once", "[ui][document]") {
   doc.undoStack()->undo();  // nothing validated it: its grid is swept again, once
   CHECK(doc.sweepsRun() - before == 2);
 
-  doc.reset(kinematics::FourBarDesign{});
+  doc.reset(testing::fourBar());
   before = doc.sweepsRun();
   REQUIRE_FALSE(doc.edit(withCrank(20.0), "crank").has_value());
   CHECK(doc.sweepsRun() - before == 1);
@@ -75,16 +73,15 @@ TEST_CASE("an edit sweeps each grid once", "[ui][document]") {
 
 TEST_CASE("an edit that can never be assembled is refused and changes nothing", "[ui][document][errors]") {
   MechanismDocument doc;
-  const kinematics::FourBarDesign before = *doc.fourBar();
-  kinematics::FourBarDesign bad = before;
-  bad.lengths.frame = 500.0;  // coupler + rocker + crank cannot span it
+  const kinematics::Design before = doc.design();
+  // coupler + rocker + crank cannot span the frame
+  const kinematics::Design bad = testing::withLengths(before, {500.0, 25.0, 70.0, 45.0});
   const auto why = doc.edit(bad, "frame");
   REQUIRE(why.has_value());
   CHECK(why->contains("cannot be assembled at any crank angle"));
-  CHECK(*doc.fourBar() == before);
+  CHECK(doc.design() == before);
   CHECK(doc.undoStack()->count() == 0);
-  kinematics::FourBarDesign negative = before;
-  negative.lengths.coupler = -3.0;
+  const kinematics::Design negative = testing::withLengths(before, {60.0, 25.0, -3.0, 45.0});
   const auto whyNegative = doc.edit(negative, "coupler");
   REQUIRE(whyNegative.has_value());
   CHECK(whyNegative->contains("coupler length must be positive and finite (got -3)"));
@@ -93,46 +90,43 @@ TEST_CASE("an edit that can never be assembled is refused and changes nothing", 
 TEST_CASE("an edit outside the input domain is refused with the field, value and range", "[ui][document][errors]") {
   // The GUI's fields go through the core's checks: the same ranges as documents and the CLI.
   MechanismDocument doc;
-  const kinematics::FourBarDesign before = *doc.fourBar();
-  kinematics::FourBarDesign huge = before;
-  huge.lengths.rocker = 2e9;
+  const kinematics::Design before = doc.design();
+  const kinematics::Design huge = testing::withLengths(before, {60.0, 25.0, 70.0, 2e9});
   const auto whyHuge = doc.edit(huge, "rocker");
   REQUIRE(whyHuge.has_value());
   INFO(whyHuge->toStdString());
   CHECK(whyHuge->contains("rocker length must be between 1e-6 and 1e9 (got 2e+09)"));
-  kinematics::FourBarDesign spread = before;
-  spread.lengths.crank = 1e-5;  // 70 mm coupler: 7e6 times the crank
+  // 70 mm coupler: 7e6 times the crank
+  const kinematics::Design spread = testing::withLengths(before, {60.0, 1e-5, 70.0, 45.0});
   const auto whySpread = doc.edit(spread, "crank");
   REQUIRE(whySpread.has_value());
   CHECK(whySpread->contains("lengths span too wide a range"));
-  kinematics::FourBarDesign fast = before;
+  kinematics::Design fast = before;
   fast.omega = 2e6;
   const auto whyFast = doc.edit(fast, "speed");
   REQUIRE(whyFast.has_value());
   INFO(whyFast->toStdString());
   CHECK(whyFast->contains("omega must be finite and within ±1e6 rad/s (got 2e+06)"));
-  CHECK(*doc.fourBar() == before);
+  CHECK(doc.design() == before);
   CHECK(doc.undoStack()->count() == 0);
 }
 
 TEST_CASE("consecutive edits with one merge key are one undo step", "[ui][document]") {
   MechanismDocument doc;
-  const kinematics::FourBarDesign start = *doc.fourBar();
+  const kinematics::Design start = doc.design();
   for (double crank = 24.0; crank > 20.0; crank -= 0.5) {
-    kinematics::FourBarDesign d = *doc.fourBar();
-    d.lengths.crank = crank;
+    const kinematics::Design d = testing::withLengths(doc.design(), {60.0, crank, 70.0, 45.0});
     REQUIRE_FALSE(
         doc.edit(d, "drag", ui::MergeKey{ui::ContinuousEdit::DragPoint, kinematics::fourbar::kB.index}).has_value());
   }
   CHECK(doc.undoStack()->count() == 1);
   doc.undoStack()->undo();
-  CHECK(*doc.fourBar() == start);
+  CHECK(doc.design() == start);
 }
 
 TEST_CASE("the crank angle is kept inside the assemblable range", "[ui][document]") {
   MechanismDocument doc;
-  kinematics::FourBarDesign d = *doc.fourBar();
-  d.lengths = {40, 30, 20, 25};  // non-Grashof: |θ2| ≤ 78.58°
+  const kinematics::Design d = testing::withLengths(doc.design(), {40, 30, 20, 25});  // non-Grashof: |θ2| ≤ 78.58°
   REQUIRE_FALSE(doc.edit(d, "lengths").has_value());
   doc.setCrankAngle(kinematics::degToRad(120.0));
   CHECK(kinematics::radToDeg(doc.crankAngle()) == Approx(78.5848).margin(1e-3));
@@ -152,13 +146,15 @@ TEST_CASE("the request decides what the sweep computes", "[ui][document]") {
 TEST_CASE("save then open reproduces the document", "[ui][document][file]") {
   QTemporaryDir dir;
   const QString path = dir.filePath("linkage.json");
-  kinematics::FourBarDesign d = withCrank(22.5);
-  d.couplerPoint = kinematics::CouplerPointSpec{30.0, 12.5};
+  kinematics::Design d = testing::fourBar({60.0, 22.5, 70.0, 45.0});
+  d.mechanism = kinematics::withCouplerPoint(d.mechanism, *kinematics::asFourBar(d.mechanism),
+                                             kinematics::CouplerPointSpec{30.0, 12.5})
+                    .value();
   d.omega = 3.3;
   REQUIRE_FALSE(ui::saveDesignFile(path, d).has_value());
   kinematics::Design back;
   REQUIRE_FALSE(ui::loadDesignFile(path, back).has_value());
-  CHECK(back == kinematics::Design{d});
+  CHECK(back == d);
 }
 
 TEST_CASE("documents are saved as .linkwright and opened from .linkwright or .json", "[ui][document][file]") {
@@ -173,7 +169,7 @@ TEST_CASE("documents are saved as .linkwright and opened from .linkwright or .js
   REQUIRE_FALSE(ui::saveDesignFile(path, withCrank(24.0)).has_value());
   kinematics::Design back;
   REQUIRE_FALSE(ui::loadDesignFile(path, back).has_value());
-  CHECK(back == kinematics::Design{withCrank(24.0)});
+  CHECK(back == withCrank(24.0));
 }
 
 TEST_CASE("missing, corrupt and newer files are refused with the reason", "[ui][document][file][errors]") {
@@ -216,8 +212,7 @@ TEST_CASE("a failed save leaves the existing file intact", "[ui][document][file]
 TEST_CASE("an edit that moves the crank restores the crank angle on undo", "[ui][document]") {
   MechanismDocument doc;
   doc.setCrankAngle(0.5);
-  kinematics::FourBarDesign d = *doc.fourBar();
-  d.lengths.crank = 22.0;
+  const kinematics::Design d = testing::withLengths(doc.design(), {60.0, 22.0, 70.0, 45.0});
   REQUIRE_FALSE(doc.edit(d, "move B", ui::MergeKey{ui::ContinuousEdit::DragPoint, kinematics::fourbar::kB.index}, 1.25)
                     .has_value());
   CHECK(doc.crankAngle() == 1.25);

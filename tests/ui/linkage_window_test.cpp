@@ -7,11 +7,11 @@
 #include "ui/main_window.h"
 #include "ui/message_banner.h"
 #include "ui/panels/dimensions_panel.h"
-#include "ui/panels/lengths_panel.h"
+#include "ui/panels/fourbar_lengths_editor.h"
 
 #include "app/cli/cli.h"
+#include "kinematics/design/design.h"
 #include "kinematics/design/dyad_request.h"
-#include "kinematics/design/mechanism_design.h"
 
 #include "tests/ui/support/read_file.h"
 
@@ -19,6 +19,7 @@
 
 #include <QAction>
 #include <QFile>
+#include <QGroupBox>
 #include <QMenu>
 #include <QMenuBar>
 #include <QTemporaryDir>
@@ -48,7 +49,7 @@ TEST_CASE("Export ▸ CSV of any example equals linkwright-cli analyze --example
     const QString path = dir.filePath(QString::fromStdString(name) + ".csv");
     REQUIRE(window.exportCsv(path));
     // The document samples every 0.5° (designFromExample); the CLI is asked for the same grid.
-    const auto& design = std::get<k::MechanismDesign>(window.document()->design());
+    const k::Design& design = window.document()->design();
     std::ostringstream out, err;
     REQUIRE(cli::runCli({"analyze", "--example", name, "--samples", std::to_string(design.samples)}, out, err) == 0);
     CHECK(readAll(path).toStdString() == out.str());
@@ -71,14 +72,14 @@ TEST_CASE("File ▸ New offers each kind of linkage and the Examples menu every 
     a->trigger();
     CHECK(window.document()->undoStack()->count() == 0);
     CHECK(window.document()->poseStatus() != k::PoseStatus::NotAssemblable);
-    CHECK(window.lengthsPanel()->isVisibleTo(&window) == (window.document()->fourBar() != nullptr));
-    CHECK(window.dimensionsPanel()->isVisibleTo(&window) == (window.document()->fourBar() == nullptr));
+    const bool fourBar = window.document()->fourBar().has_value();
+    CHECK(window.dimensionsPanel()->fourBarEditor()->isVisibleTo(&window) == fourBar);
+    CHECK(window.dimensionsPanel()->pointsBox()->isVisibleTo(&window) == !fourBar);
   }
   QMenu* examples = topMenu(window, "Examples");
   REQUIRE(examples != nullptr);
   std::vector<std::string> names;
-  for (const auto& e : k::fourBarExamples()) names.push_back(e.name);
-  for (const auto& e : k::mechanismExamples()) names.push_back(e.name);
+  for (const auto& e : k::examples()) names.push_back(e.name);
   for (const std::string& name : names) {
     CAPTURE(name);
     auto* action = examples->findChild<QAction*>(QString::fromStdString("example_" + name));
@@ -97,7 +98,7 @@ TEST_CASE("a linkage saved in one window opens the same in another", "[ui][windo
   {
     ui::MainWindow window;
     window.newDocument(*k::designForExample("ls3-engine"));
-    k::MechanismDesign d = std::get<k::MechanismDesign>(window.document()->design());
+    k::Design d = window.document()->design();
     std::get<k::RrpPoint>(d.mechanism.points[2].definition).length = 150.0;
     REQUIRE_FALSE(window.document()->edit(d, "rod").has_value());
     REQUIRE(window.saveTo(path));
@@ -106,8 +107,8 @@ TEST_CASE("a linkage saved in one window opens the same in another", "[ui][windo
   ui::MainWindow other;
   REQUIRE(other.openFile(path));
   CHECK(other.document()->design() == saved);
-  CHECK(other.dimensionsPanel()->isVisibleTo(&other));
-  CHECK_FALSE(other.lengthsPanel()->isVisibleTo(&other));
+  CHECK(other.dimensionsPanel()->pointsBox()->isVisibleTo(&other));
+  CHECK_FALSE(other.dimensionsPanel()->fourBarEditor()->isVisibleTo(&other));
 }
 
 TEST_CASE("a corrupt or newer file leaves an open linkage as it was", "[ui][window][file][errors][linkage]") {
@@ -126,24 +127,25 @@ TEST_CASE("a corrupt or newer file leaves an open linkage as it was", "[ui][wind
   CHECK(window.document()->design() == before);
 }
 
-TEST_CASE("attaching a dyad in the window swaps the lengths panel for the dimensions panel", "[ui][window][attach]") {
+TEST_CASE("attaching a dyad in the window swaps the four-bar lengths for the point dimensions",
+          "[ui][window][attach]") {
   ui::MainWindow window;
-  REQUIRE(window.document()->fourBar() != nullptr);
+  REQUIRE(window.document()->fourBar().has_value());
   const auto request =
       k::suggestDyad(window.document()->mechanism(), window.document()->crankAngle(), k::DyadKind::Rrr);
   REQUIRE_FALSE(window.attachDyad(request).has_value());
-  CHECK(window.document()->fourBar() == nullptr);
+  CHECK_FALSE(window.document()->fourBar().has_value());
   CHECK(window.document()->mechanism().links.size() == 5);
-  CHECK(window.dimensionsPanel()->isVisibleTo(&window));
-  CHECK_FALSE(window.lengthsPanel()->isVisibleTo(&window));
+  CHECK(window.dimensionsPanel()->pointsBox()->isVisibleTo(&window));
+  CHECK_FALSE(window.dimensionsPanel()->fourBarEditor()->isVisibleTo(&window));
   window.document()->undoStack()->undo();
-  CHECK(window.document()->fourBar() != nullptr);
-  CHECK(window.lengthsPanel()->isVisibleTo(&window));
+  CHECK(window.document()->fourBar().has_value());
+  CHECK(window.dimensionsPanel()->fourBarEditor()->isVisibleTo(&window));
   // A refusal names the reason and changes nothing.
   k::DyadRequest taken = request;
   taken.joint = "C";
   const auto why = window.attachDyad(taken);
   REQUIRE(why.has_value());
   CHECK(why->contains("already a point named C"));
-  CHECK(window.document()->fourBar() != nullptr);
+  CHECK(window.document()->fourBar().has_value());
 }

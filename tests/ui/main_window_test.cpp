@@ -9,8 +9,8 @@
 #include "ui/document/mechanism_document.h"
 #include "ui/message_banner.h"
 #include "ui/panels/analysis_panel.h"
+#include "ui/panels/dimensions_panel.h"
 #include "ui/panels/length_editor.h"
-#include "ui/panels/lengths_panel.h"
 #include "ui/plots/plot_panel.h"
 #include "ui/plots/quality_bar.h"
 #include "ui/plots/quantity_chart_view.h"
@@ -18,13 +18,15 @@
 #include "ui/settings.h"
 
 #include "app/cli/cli.h"
+#include "kinematics/design/design.h"
 #include "kinematics/design/examples.h"
-#include "kinematics/design/mechanism_design.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
 
 #include "tests/ui/support/read_file.h"
+
+#include "tests/ui/support/four_bar_design.h"
 
 #include <catch2/catch.hpp>
 
@@ -45,17 +47,18 @@ using test::readAll;
 namespace {
 
 // The linkwright-cli command line that describes the same table as the design.
-std::vector<std::string> cliArguments(const kinematics::FourBarDesign& d) {
+std::vector<std::string> cliArguments(const kinematics::Design& d) {
   using kinematics::io::formatDouble;
-  const auto& l = d.lengths;
+  const kinematics::FourBarStructure s = kinematics::asFourBar(d.mechanism).value();
+  const auto& l = s.lengths;
   std::vector<std::string> args{"analyze",
                                 "--fourbar",
                                 formatDouble(l.frame) + "," + formatDouble(l.crank) + "," + formatDouble(l.coupler) +
                                     "," + formatDouble(l.rocker),
                                 "--unit",
-                                d.lengthUnit,
+                                d.mechanism.lengthUnit,
                                 "--branch",
-                                d.branch == kinematics::Branch::Open ? "open" : "crossed",
+                                s.branch == kinematics::Branch::Open ? "open" : "crossed",
                                 "--omega",
                                 formatDouble(d.omega),
                                 "--alpha",
@@ -66,9 +69,9 @@ std::vector<std::string> cliArguments(const kinematics::FourBarDesign& d) {
                                 formatDouble(d.toDeg),
                                 "--samples",
                                 std::to_string(d.samples)};
-  if (d.couplerPoint) {
+  if (const auto p = kinematics::couplerPointOf(d.mechanism, s)) {
     args.push_back("--coupler-point");
-    args.push_back(formatDouble(d.couplerPoint->along) + "," + formatDouble(d.couplerPoint->across));
+    args.push_back(formatDouble(p->spec.along) + "," + formatDouble(p->spec.across));
   }
   return args;
 }
@@ -77,8 +80,10 @@ std::vector<std::string> cliArguments(const kinematics::FourBarDesign& d) {
 
 TEST_CASE("Export ▸ CSV is byte-identical to linkwright-cli analyze", "[ui][window][csv]") {
   ui::MainWindow window;
-  kinematics::FourBarDesign d = *window.document()->fourBar();
-  d.couplerPoint = kinematics::CouplerPointSpec{35.0, 20.0};
+  kinematics::Design d = window.document()->design();
+  d.mechanism =
+      kinematics::withCouplerPoint(d.mechanism, *window.document()->fourBar(), kinematics::CouplerPointSpec{35.0, 20.0})
+          .value();
   d.alpha = 0.25;
   d.samples = 181;
   REQUIRE_FALSE(window.document()->edit(d, "test").has_value());
@@ -93,12 +98,12 @@ TEST_CASE("Export ▸ CSV is byte-identical to linkwright-cli analyze", "[ui][wi
 TEST_CASE("save then open in a new window reproduces the document", "[ui][window][file]") {
   QTemporaryDir dir;
   const QString path = dir.filePath("saved.json");
-  kinematics::FourBarDesign d;
+  kinematics::Design d;
   {
     ui::MainWindow window;
-    d = *window.document()->fourBar();
-    d.lengths.crank = 21.5;
-    d.branch = kinematics::Branch::Crossed;
+    d = testing::withLengths(window.document()->design(), {60.0, 21.5, 70.0, 45.0});
+    d.mechanism =
+        kinematics::withFourBarBranch(d.mechanism, *kinematics::asFourBar(d.mechanism), kinematics::Branch::Crossed);
     REQUIRE_FALSE(window.document()->edit(d, "test").has_value());
     CHECK(window.document()->isModified());
     REQUIRE(window.saveTo(path));
@@ -107,7 +112,7 @@ TEST_CASE("save then open in a new window reproduces the document", "[ui][window
   }
   ui::MainWindow other;
   REQUIRE(other.openFile(path));
-  CHECK(*other.document()->fourBar() == d);
+  CHECK(other.document()->design() == d);
   CHECK(other.document()->filePath().endsWith("saved.json"));
   CHECK(other.document()->undoStack()->count() == 0);
 }
@@ -121,12 +126,11 @@ TEST_CASE("opening a corrupt file shows an error and changes nothing", "[ui][win
     f.write("{ \"format\": \"linkwright\", \"version\": 1, \"mechanism\": { \"type\": ");
   }
   ui::MainWindow window;
-  kinematics::FourBarDesign d = *window.document()->fourBar();
-  d.lengths.rocker = 47.0;
+  const kinematics::Design d = testing::withLengths(window.document()->design(), {60.0, 25.0, 70.0, 47.0});
   REQUIRE_FALSE(window.document()->edit(d, "test").has_value());
   const int undoSteps = window.document()->undoStack()->count();
   CHECK_FALSE(window.openFile(path));
-  CHECK(*window.document()->fourBar() == d);
+  CHECK(window.document()->design() == d);
   CHECK(window.document()->undoStack()->count() == undoSteps);
   CHECK(window.banner()->isVisibleTo(&window));
   CHECK(window.banner()->text().contains("broken.json"));
@@ -136,8 +140,8 @@ TEST_CASE("opening a corrupt file shows an error and changes nothing", "[ui][win
 TEST_CASE("the window starts on the thesis example and offers every example", "[ui][window]") {
   ui::MainWindow window;
   CHECK(window.document()->fourBar()->lengths == kinematics::FourBarLengths{60, 25, 70, 45});
-  CHECK(window.document()->fourBar()->omega == Approx(kinematics::rpmToRadPerSec(10.0)));
-  window.newDocument(kinematics::designFromExample(*kinematics::findFourBarExample("alvi-fourbar")));
+  CHECK(window.document()->design().omega == Approx(kinematics::rpmToRadPerSec(10.0)));
+  window.newDocument(*kinematics::designForExample("alvi-fourbar"));
   CHECK(window.document()->fourBar()->lengths == kinematics::FourBarLengths{80, 20, 66, 56});
   CHECK(window.document()->undoStack()->count() == 0);
 }
@@ -170,7 +174,7 @@ TEST_CASE("presentation mode enlarges the fonts and can be left again", "[ui][wi
 
 TEST_CASE("typing a length in the panel updates the badge and the plotted series as the core says", "[ui][window]") {
   ui::MainWindow window;
-  auto* frame = window.lengthsPanel()->lengthEditor(0)->findChild<QDoubleSpinBox*>();
+  auto* frame = window.dimensionsPanel()->lengthEditor(0)->findChild<QDoubleSpinBox*>();
   REQUIRE(frame != nullptr);
   frame->setFocus();
   frame->selectAll();

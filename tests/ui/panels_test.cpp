@@ -4,12 +4,14 @@
 #include "ui/animation/crank_animator.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/panels/analysis_panel.h"
+#include "ui/panels/dimensions_panel.h"
 #include "ui/panels/length_editor.h"
-#include "ui/panels/lengths_panel.h"
 #include "ui/panels/motion_panel.h"
 #include "ui/settings.h"
 
 #include "kinematics/model/units.h"
+
+#include "tests/ui/support/four_bar_design.h"
 
 #include <catch2/catch.hpp>
 
@@ -34,7 +36,7 @@ void typeInto(QDoubleSpinBox* spin, double value) {
 
 TEST_CASE("typing a length changes the design and the Grashof badge as the core says", "[ui][panels]") {
   ui::MechanismDocument doc;
-  ui::LengthsPanel lengths(&doc);
+  ui::DimensionsPanel lengths(&doc);
   ui::AnalysisPanel analysis(&doc);
   CHECK(analysis.grashofText().contains("Crank-rocker"));
   typeInto(spinOf(lengths.lengthEditor(0)), 20.0);  // 20 + 70 > 25 + 45: non-Grashof
@@ -48,11 +50,11 @@ TEST_CASE("typing a length changes the design and the Grashof badge as the core 
 
 TEST_CASE("a length that cannot be assembled is refused, shown, and the editor snaps back", "[ui][panels][errors]") {
   ui::MechanismDocument doc;
-  ui::LengthsPanel lengths(&doc);
+  ui::DimensionsPanel lengths(&doc);
   lengths.show();
-  const kinematics::FourBarDesign before = *doc.fourBar();
+  const kinematics::Design before = doc.design();
   typeInto(spinOf(lengths.lengthEditor(0)), 900.0);
-  CHECK(*doc.fourBar() == before);
+  CHECK(doc.design() == before);
   CHECK(lengths.refusalMessage().contains("cannot be assembled at any crank angle"));
   CHECK(spinOf(lengths.lengthEditor(0))->value() == 60.0);
 }
@@ -71,8 +73,7 @@ TEST_CASE("the branch box switches the assembly branch, undoably", "[ui][panels]
 
 TEST_CASE("a non-Grashof crank rocks between the ends of its range", "[ui][animation]") {
   ui::MechanismDocument doc;
-  kinematics::FourBarDesign d = *doc.fourBar();
-  d.lengths = {40, 30, 20, 25};  // |θ2| ≤ 78.58°
+  kinematics::Design d = testing::withLengths(doc.design(), {40, 30, 20, 25});  // |θ2| ≤ 78.58°
   d.omega = 1.0;
   REQUIRE_FALSE(doc.edit(d, "lengths").has_value());
   ui::CrankAnimator animator(&doc);

@@ -8,8 +8,10 @@
 #include "ui/plots/quality_bar.h"
 
 #include "kinematics/analysis/sampling_accuracy.h"
+#include "kinematics/design/design.h"
 #include "kinematics/design/examples.h"
-#include "kinematics/design/mechanism_design.h"
+
+#include "tests/ui/support/four_bar_design.h"
 
 #include <catch2/catch.hpp>
 
@@ -24,10 +26,8 @@ namespace k = kinematics;
 
 namespace {
 
-k::FourBarDesign tripleRocker() {
-  k::FourBarDesign d;
-  d.lengths = {40.0, 30.0, 20.0, 25.0};  // non-Grashof: the crank rocks through ±78.6°
-  return d;
+k::Design tripleRocker() {
+  return testing::fourBar({40.0, 30.0, 20.0, 25.0});  // non-Grashof: the crank rocks through ±78.6°
 }
 
 // What the core says the displayed samples buy, computed here independently of the document.
@@ -101,8 +101,7 @@ TEST_CASE("the estimate is measured once changes settle, never for crank motion"
   QSignalSpy spy(&doc, &MechanismDocument::changed);
   doc.setCrankAngle(1.0);
   CHECK_FALSE(doc.qualityEstimatePending());
-  k::FourBarDesign d = *doc.fourBar();
-  d.lengths.coupler = 72.0;
+  const k::Design d = testing::withLengths(doc.design(), {60.0, 25.0, 72.0, 45.0});
   REQUIRE_FALSE(doc.edit(d, "coupler").has_value());
   CHECK(doc.qualityEstimatePending());
   const std::size_t before = doc.qualityEstimate().samplesPerRevolution;

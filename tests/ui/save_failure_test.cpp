@@ -10,10 +10,12 @@
 #include "ui/main_window.h"
 #include "ui/message_banner.h"
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 #include "tests/support/file_size_limit.h"
 
 #include "tests/ui/support/read_file.h"
+
+#include "tests/ui/support/four_bar_design.h"
 
 #include <catch2/catch.hpp>
 
@@ -30,8 +32,7 @@ namespace {
 // A window whose document was saved to `path` and then edited, so a save has work to do.
 void saveThenEdit(ui::MainWindow& window, const QString& path) {
   REQUIRE(window.saveTo(path));
-  auto d = *window.document()->fourBar();
-  d.lengths.crank = 22.0;
+  const auto d = testing::withLengths(window.document()->design(), {60.0, 22.0, 70.0, 45.0});
   REQUIRE_FALSE(window.document()->edit(d, "test").has_value());
   REQUIRE(window.document()->isModified());
 }
@@ -68,8 +69,7 @@ TEST_CASE("a save to a read-only file system is refused with the reason", "[ui][
     return;
   }
   ui::MainWindow window;
-  auto d = *window.document()->fourBar();
-  d.lengths.crank = 23.0;
+  const auto d = testing::withLengths(window.document()->design(), {60.0, 23.0, 70.0, 45.0});
   REQUIRE_FALSE(window.document()->edit(d, "test").has_value());
   CHECK_FALSE(window.saveTo("/proc/linkwright-save-test.linkwright"));
   CHECK_FALSE(QFileInfo::exists("/proc/linkwright-save-test.linkwright"));

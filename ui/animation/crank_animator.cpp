@@ -1,6 +1,5 @@
 #include "ui/animation/crank_animator.h"
 
-#include "ui/document/design_fields.h"
 #include "ui/document/mechanism_document.h"
 
 #include "kinematics/model/units.h"
@@ -43,7 +42,7 @@ void CrankAnimator::stepBackward() { moveBy(-m_stepAngle); }
 
 void CrankAnimator::advance(double dt) {
   // A crank at rest still animates, at 1 rad/s, so "play" always shows the motion.
-  const double omega = designOmega(m_document->design());
+  const double omega = m_document->design().omega;
   const double rate = omega != 0.0 ? omega : 1.0;
   moveBy(m_direction * rate * dt);
   m_travelled += std::abs(rate * dt);

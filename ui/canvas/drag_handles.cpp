@@ -2,15 +2,11 @@
 
 #include "ui/document/edit_design_command.h"
 
-#include "kinematics/model/fourbar.h"
-
 #include <QCoreApplication>
 
 namespace linkwright::ui {
 
 namespace k = kinematics;
-using kinematics::FourBarHandle;
-namespace fourbar = kinematics::fourbar;
 
 namespace {
 
@@ -35,36 +31,16 @@ struct HintOf {
   QString operator()(const k::FreePoint&) const { return tr("Drag %1 to change the lengths that hold it").arg(name); }
 };
 
+// A four-bar's frame-line drags (point_drag.h, DragRule::FrameLine), by the point's role.
+QString fourBarHint(const k::FourBarStructure& s, const k::Mechanism& m, k::PointId point) {
+  const QString name = dragPointName(m, point);
+  if (point == s.o2 || point == s.o4) return tr("Drag %1 along the frame line to change the frame length").arg(name);
+  if (point == s.b) return tr("Drag %1 to change the crank length and angle").arg(name);
+  if (point == s.c) return tr("Drag %1 to change the coupler and rocker lengths").arg(name);
+  return tr("Drag %1 to move the coupler point on the coupler").arg(name);
+}
+
 }  // namespace
-
-k::PointId handlePoint(FourBarHandle handle) {
-  switch (handle) {
-  case FourBarHandle::O2: return fourbar::kO2;
-  case FourBarHandle::O4: return fourbar::kO4;
-  case FourBarHandle::B: return fourbar::kB;
-  case FourBarHandle::C: return fourbar::kC;
-  case FourBarHandle::CouplerPoint: return fourbar::kCouplerPoint;
-  }
-  return fourbar::kO2;
-}
-
-std::optional<FourBarHandle> fourBarHandleOn(k::PointId point) {
-  for (const FourBarHandle h :
-       {FourBarHandle::O2, FourBarHandle::O4, FourBarHandle::B, FourBarHandle::C, FourBarHandle::CouplerPoint})
-    if (handlePoint(h) == point) return h;
-  return std::nullopt;
-}
-
-QString handleHint(FourBarHandle handle) {
-  switch (handle) {
-  case FourBarHandle::O2: return tr("Drag O\u2082 along the frame line to change the frame length");
-  case FourBarHandle::O4: return tr("Drag O\u2084 along the frame line to change the frame length");
-  case FourBarHandle::B: return tr("Drag B to change the crank length and angle");
-  case FourBarHandle::C: return tr("Drag C to change the coupler and rocker lengths");
-  case FourBarHandle::CouplerPoint: return tr("Drag P to move the coupler point on the coupler");
-  }
-  return {};
-}
 
 std::vector<k::PointId> draggablePoints(const DrawingPlan& plan) {
   std::vector<k::PointId> points;
@@ -83,10 +59,9 @@ QString dragPointName(const k::Mechanism& mechanism, k::PointId point) {
   return point.index < mechanism.points.size() ? pointDisplayName(mechanism.points[point.index].name) : QString();
 }
 
-QString dragHint(const k::Design& design, const k::Mechanism& mechanism, k::PointId point) {
-  if (std::holds_alternative<k::FourBarDesign>(design))
-    if (const auto handle = fourBarHandleOn(point)) return handleHint(*handle);
+QString dragHint(const std::optional<k::FourBarStructure>& fourBar, const k::Mechanism& mechanism, k::PointId point) {
   if (point.index >= mechanism.points.size()) return {};
+  if (fourBar) return fourBarHint(*fourBar, mechanism, point);
   return std::visit(HintOf{dragPointName(mechanism, point)}, mechanism.points[point.index].definition);
 }
 

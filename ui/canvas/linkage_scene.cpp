@@ -201,15 +201,10 @@ std::optional<QPointF> LinkageScene::handlePosition(k::PointId point) const {
   return item->pos();
 }
 
-std::optional<QPointF> LinkageScene::handlePosition(k::FourBarHandle handle) const {
-  return handlePosition(handlePoint(handle));
-}
-
 void LinkageScene::setHotHandle(std::optional<k::PointId> point) { m_items->setHot(point); }
 
 const DrawingPlan& LinkageScene::plan() const { return m_items->plan(); }
 const QGraphicsItem* LinkageScene::handleItem(k::PointId point) const { return m_items->handle(point); }
-const QGraphicsItem* LinkageScene::handleItem(k::FourBarHandle handle) const { return handleItem(handlePoint(handle)); }
 const LinkItem* LinkageScene::linkItem(k::LinkId link) const { return m_items->link(link); }
 const SlottedLinkItem* LinkageScene::slottedLinkItem(k::LinkId link) const { return m_items->slottedLink(link); }
 const QGraphicsPolygonItem* LinkageScene::bodyItem(k::LinkId link) const { return m_items->body(link); }

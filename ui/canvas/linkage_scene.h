@@ -9,7 +9,7 @@
 
 #include "ui/canvas/mechanism_drawing.h"
 
-#include "kinematics/design/design_edit.h"
+#include "kinematics/design/point_drag.h"
 #include "kinematics/model/ids.h"
 
 #include <QGraphicsScene>
@@ -58,7 +58,6 @@ public:
   const std::vector<kinematics::PointId>& handlePoints() const { return m_handlePoints; }
   /// Where the handle on `point` is drawn now (scene units); nullopt if it has none.
   std::optional<QPointF> handlePosition(kinematics::PointId point) const;
-  std::optional<QPointF> handlePosition(kinematics::FourBarHandle handle) const;
   /// Highlights one handle (or none).
   void setHotHandle(std::optional<kinematics::PointId> point);
 
@@ -69,7 +68,6 @@ public:
   /// Read access for the view's tests and for export. Null where the item does not exist.
   const DrawingPlan& plan() const;
   const QGraphicsItem* handleItem(kinematics::PointId point) const;
-  const QGraphicsItem* handleItem(kinematics::FourBarHandle handle) const;
   const LinkItem* linkItem(kinematics::LinkId link) const;
   const SlottedLinkItem* slottedLinkItem(kinematics::LinkId link) const;
   const QGraphicsPolygonItem* bodyItem(kinematics::LinkId link) const;

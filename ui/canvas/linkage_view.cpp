@@ -275,7 +275,7 @@ void LinkageView::updateHover(const QPointF& viewportPos) {
   if (handle) viewport()->setCursor(Qt::OpenHandCursor);
   else viewport()->unsetCursor();
   if (handle != m_hover)
-    emit statusMessage(handle ? dragHint(m_document->design(), m_document->mechanism(), *handle) : QString());
+    emit statusMessage(handle ? dragHint(m_document->fourBar(), m_document->mechanism(), *handle) : QString());
   m_hover = handle;
 }
 
@@ -288,7 +288,7 @@ void LinkageView::startDrag(k::PointId point, const QPointF& viewportPos) {
   ++m_dragCount;
   m_scene->setHotHandle(point);
   viewport()->setCursor(Qt::ClosedHandCursor);
-  emit statusMessage(dragHint(m_document->design(), m_document->mechanism(), point));
+  emit statusMessage(dragHint(m_document->fourBar(), m_document->mechanism(), point));
 }
 
 void LinkageView::dragTo(const QPointF& viewportPos) {
@@ -305,8 +305,6 @@ void LinkageView::dragTo(const QPointF& viewportPos) {
     refuse(*why, viewportPos);
     return;
   }
-  // A four-bar's frame was re-anchored at the new O2: scroll so the rest of the drawing stays put.
-  if (outcome->originShift != 0.0) scrollByPixels(QPointF(-outcome->originShift * pixelsPerUnit(), 0.0));
   m_scene->hideMessage();
   m_lastRefusal.clear();
 }

@@ -2,14 +2,13 @@
 // The linkage canvas: a QGraphicsView over a LinkageScene in model units, y up (the view
 // flips y). It draws a scale grid behind the linkage, zooms with the wheel about the cursor,
 // pans by dragging the background (left or middle button), and turns drags of the points
-// into document edits through the core (dragFourBar for a four-bar, dragPoint for any other
-// linkage: design_drag.h), one undo step per drag. An edit the core or the document refuses
+// into document edits through the core (dragPoint, with a four-bar's frame-line rule:
+// design_drag.h), one undo step per drag. An edit the core or the document refuses
 // changes nothing; the reason is shown next to the cursor and emitted as editRefused.
 //
 // Fitting: the view fits the drawing when first shown, on resize until the user zooms or
 // pans, after fitToView(), and after a document reset (File ▸ New / Open / Examples, seen as
-// one Design|File change). Dragging O2 re-anchors the frame at O2; the view scrolls by the
-// core's originShift so that O4 and the rest of the drawing stay where they were on screen.
+// one Design|File change).
 
 #include "kinematics/model/ids.h"
 #include "ui/document/mechanism_document.h"

@@ -1,5 +1,7 @@
 #include "ui/document/design_templates.h"
 
+#include "kinematics/model/recognise.h"
+
 #include <QCoreApplication>
 
 namespace linkwright::ui {
@@ -24,14 +26,15 @@ std::vector<DesignTemplate> designTemplates() {
 }
 
 k::Design templateDesign(const DesignTemplate& kind) {
-  if (kind.example.empty()) return k::FourBarDesign{};
+  if (kind.example.empty()) return k::fourBarDesign(k::kThesisCrankRocker).value();
   // The templates name built-in examples, which always exist.
   return *k::designForExample(kind.example);
 }
 
 QString kindDisplayName(const k::Design& design) {
-  if (std::holds_alternative<k::FourBarDesign>(design)) return tr("Four-bar");
-  const std::string& kind = std::get<k::MechanismDesign>(design).kind;
+  // A four-bar is one however it was stored (a four-bar saved as a general linkage, say).
+  if (k::asFourBar(design.mechanism)) return tr("Four-bar");
+  const std::string& kind = design.kind;
   for (const DesignTemplate& t : designTemplates())
     if (t.kind == kind) return QString(t.label).remove(QLatin1Char('&'));
   if (kind == "linkage" || kind.empty()) return tr("Linkage");

@@ -2,7 +2,7 @@
 // The kinds of linkage File ▸ New offers, each started from a built-in example as its
 // template, and the names the window shows for a design's kind.
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 
 #include <QString>
 
@@ -13,7 +13,7 @@ namespace linkwright::ui {
 
 struct DesignTemplate {
   QString label;        ///< menu text, with its mnemonic: "&Slider-crank"
-  std::string kind;     ///< MechanismDesign::kind, or "four-bar"
+  std::string kind;     ///< the Design::kind it makes
   std::string example;  ///< the built-in example it starts from; empty: the default four-bar
 };
 

@@ -3,7 +3,7 @@
 // the previous file intact; reads refuse missing, unreadable, corrupt and newer files with a
 // message that names the file and the reason.
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 
 #include <QString>
 

@@ -3,7 +3,7 @@
 // with the same merge key (the moves of one drag, the steps of one slider) merge into a
 // single undo step, keeping the first "before" and the last "after".
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 
 #include <QUndoCommand>
 

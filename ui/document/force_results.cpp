@@ -2,8 +2,6 @@
 
 #include "ui/number_text.h"
 
-#include "ui/document/dynamics_fields.h"
-
 #include <algorithm>
 #include <cmath>
 
@@ -88,7 +86,7 @@ void ForceResults::clear(State state, const QString& message) {
 }
 
 void ForceResults::solveCycle() {
-  const k::LinkageDynamics& dynamics = designDynamics(m_document->design());
+  const k::LinkageDynamics& dynamics = m_document->design().dynamics;
   if (dynamics.empty()) {
     clear(State::NoDynamics, tr("This design has no masses or loads: set them in Properties."));
     return;

@@ -1,6 +1,5 @@
 #include "ui/document/mechanism_document.h"
 
-#include "ui/document/design_fields.h"
 #include "ui/document/edit_design_command.h"
 
 #include "kinematics/solve/pose_solver.h"
@@ -13,7 +12,9 @@ namespace linkwright::ui {
 
 namespace k = kinematics;
 
-MechanismDocument::MechanismDocument(QObject* parent) : QObject(parent) {
+// Until a view resets it, the document holds a plain four-bar, the thesis's.
+MechanismDocument::MechanismDocument(QObject* parent)
+    : QObject(parent), m_design(k::fourBarDesign(k::kThesisCrankRocker).value()) {
   m_request.newton.tolerance = qualityPreset(m_quality).newtonTolerance;
   m_estimateTimer.setSingleShot(true);
   m_estimateTimer.setInterval(kEstimateSettleMs);
@@ -24,7 +25,7 @@ MechanismDocument::MechanismDocument(QObject* parent) : QObject(parent) {
 
 std::optional<QString> MechanismDocument::validate(const k::Design& design) const {
   if (auto e = k::checkDesign(design)) return QString::fromStdString(e->message);
-  if (const auto* fourBar = std::get_if<k::FourBarDesign>(&design)) {
+  if (const auto fourBar = k::asFourBar(design.mechanism)) {
     const k::InputRange range = k::fourBarInputRange(fourBar->lengths);
     if (range.ranges.empty() && !range.fullRotation)
       return tr(
@@ -34,8 +35,7 @@ std::optional<QString> MechanismDocument::validate(const k::Design& design) cons
   }
   // Any linkage other than a four-bar has no closed-form range: it must assemble at one sample
   // of its grid at least, and the first failure says why it does not.
-  const auto& linkage = std::get<k::MechanismDesign>(design);
-  k::SweepResult grid = sweepGrid(linkage.mechanism, k::designSweepSpec(linkage));
+  k::SweepResult grid = sweepGrid(design.mechanism, k::designSweepSpec(design));
   const bool assembles = std::any_of(grid.report.begin(), grid.report.end(),
                                      [](const k::PoseReport& r) { return r.status != k::PoseStatus::NotAssemblable; });
   const std::optional<std::string> why = grid.firstFailure;
@@ -122,9 +122,9 @@ void MechanismDocument::measureQualityNow() {
 
 void MechanismDocument::measureQuality() {
   m_estimateTimer.stop();
-  m_estimate = estimatePeakError(
-      m_mechanism, m_displaySpec.omega,
-      samplesPerRevolution(m_displaySpec.samples, designToDeg(m_design) - designFromDeg(m_design)), m_request.newton);
+  m_estimate = estimatePeakError(m_design.mechanism, m_displaySpec.omega,
+                                 samplesPerRevolution(m_displaySpec.samples, m_design.toDeg - m_design.fromDeg),
+                                 m_request.newton);
   emit changed(Change::Estimate);
 }
 
@@ -148,12 +148,12 @@ void MechanismDocument::setFilePath(const QString& path) {
 void MechanismDocument::markSaved() { m_undo.setClean(); }
 
 void MechanismDocument::rebuild() {
-  // Designs reach here validated (edit/validate, or the document reader), so this builds.
-  m_mechanism = k::buildMechanism(m_design).value();
+  // Designs reach here validated (edit/validate, or the document reader): nothing is checked again.
+  m_fourBar = k::asFourBar(m_design.mechanism);
   // Sized once per design: free points then start each solve from the last pose shown.
-  k::preparePose(m_mechanism, m_pose);
+  k::preparePose(m_design.mechanism, m_pose);
   if (m_requestOwner && m_requestSource) {
-    k::SolveRequest wanted = m_requestSource(m_mechanism, m_pose);
+    k::SolveRequest wanted = m_requestSource(m_design.mechanism, m_pose);
     wanted.newton = m_request.newton;
     m_request = wanted;
   }
@@ -163,12 +163,11 @@ void MechanismDocument::rebuild() {
   // fully (closed form) has no gaps, so it skips this sweep; after an edit, the sweep that
   // validated the design a moment ago serves.
   k::SweepResult grid;
-  const k::FourBarDesign* fb = fourBar();
-  if (fb == nullptr || !k::fourBarInputRange(fb->lengths).fullRotation) {
+  if (!m_fourBar || !k::fourBarInputRange(m_fourBar->lengths).fullRotation) {
     if (auto validated = takeValidatedGrid(m_design)) grid = std::move(*validated);
-    else grid = sweepGrid(m_mechanism, k::designSweepSpec(m_design));
+    else grid = sweepGrid(m_design.mechanism, k::designSweepSpec(m_design));
   }
-  m_analysis = k::analyseDesign(m_mechanism, grid);
+  m_analysis = k::analyseDesign(m_design.mechanism, grid);
   m_crankAngle = m_analysis.inputRange.clamp(m_crankAngle);
   solvePoseNow();
   scheduleEstimate();
@@ -176,7 +175,7 @@ void MechanismDocument::rebuild() {
 
 k::SweepSpec MechanismDocument::wantedDisplaySpec() const {
   k::SweepSpec spec = k::designSweepSpec(m_design);
-  spec.samples = displaySampleCount(m_quality, m_displayWidth, designToDeg(m_design) - designFromDeg(m_design));
+  spec.samples = displaySampleCount(m_quality, m_displayWidth, m_design.toDeg - m_design.fromDeg);
   return spec;
 }
 
@@ -198,14 +197,14 @@ void MechanismDocument::resweep() {
   ++m_sweepsRun;
   const auto start = std::chrono::steady_clock::now();
   // Into the same result: a drag re-sweeps on every frame without new allocations.
-  if (auto error = k::sweepInto(m_mechanism, m_displaySpec, request, m_sweep)) m_sweep = k::SweepResult{};
+  if (auto error = k::sweepInto(m_design.mechanism, m_displaySpec, request, m_sweep)) m_sweep = k::SweepResult{};
   m_sweepMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 void MechanismDocument::solvePoseNow() {
   const k::SweepSpec spec = k::designSweepSpec(m_design);
   const k::PoseReport report =
-      k::solvePoseInto(m_mechanism, {m_crankAngle, spec.omega, spec.alpha}, {true, true}, m_pose);
+      k::solvePoseInto(m_design.mechanism, {m_crankAngle, spec.omega, spec.alpha}, {true, true}, m_pose);
   m_poseStatus = report.status;
 }
 

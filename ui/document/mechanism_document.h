@@ -1,6 +1,5 @@
 #pragma once
-// The open document: owns the design (what is saved: a parametric four-bar or any other
-// linkage), the undo stack, the motion state (the crank angle the canvas shows) and the
+// The open document: owns the design (what is saved: any linkage), the undo stack, the motion state (the crank angle the canvas shows) and the
 // solved results the views read. Every view re-reads it when it emits changed(); views never
 // solve anything themselves (STYLE.md, layering rule 2).
 //
@@ -12,8 +11,9 @@
 #include "ui/document/quality_estimate.h"
 #include "ui/document/sampling_quality.h"
 
+#include "kinematics/design/design.h"
 #include "kinematics/design/design_analysis.h"
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/model/recognise.h"
 #include "kinematics/solve/pose.h"
 #include "kinematics/solve/sweep.h"
 
@@ -46,14 +46,12 @@ public:
 
   /// The current design; valid and assemblable somewhere, always.
   const kinematics::Design& design() const { return m_design; }
-  /// The design if it is a parametric four-bar, else null.
-  const kinematics::FourBarDesign* fourBar() const { return std::get_if<kinematics::FourBarDesign>(&m_design); }
-  /// The design if it is any other linkage, else null.
-  const kinematics::MechanismDesign* linkage() const { return std::get_if<kinematics::MechanismDesign>(&m_design); }
+  /// The design's four-bar, if its mechanism is one (read from its structure on each change).
+  const std::optional<kinematics::FourBarStructure>& fourBar() const { return m_fourBar; }
   /// The design's length unit ("mm").
-  const std::string& lengthUnit() const { return kinematics::designLengthUnit(m_design); }
-  /// The solver mechanism built from design().
-  const kinematics::Mechanism& mechanism() const { return m_mechanism; }
+  const std::string& lengthUnit() const { return m_design.mechanism.lengthUnit; }
+  /// The design's mechanism, what the solver solves.
+  const kinematics::Mechanism& mechanism() const { return m_design.mechanism; }
   /// Mobility, ranges and limits; crank range and gaps on the design's grid.
   const kinematics::DesignAnalysis& analysis() const { return m_analysis; }
   /// The displayed cycle: the design's crank angles at displaySpec()'s samples, computing what
@@ -157,7 +155,7 @@ private:
   };
 
   kinematics::Design m_design;
-  kinematics::Mechanism m_mechanism;
+  std::optional<kinematics::FourBarStructure> m_fourBar;
   kinematics::DesignAnalysis m_analysis;
   kinematics::SweepResult m_sweep;
   kinematics::SweepSpec m_displaySpec;

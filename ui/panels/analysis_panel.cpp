@@ -159,8 +159,8 @@ void AnalysisPanel::refreshLinkage() {
 void AnalysisPanel::refreshMotion() {
   const k::Pose& pose = m_document->pose();
   const k::Mechanism& m = m_document->mechanism();
-  if (m_document->fourBar() != nullptr) {
-    m_transmissionNow->setText(degrees(pose.transmissionAngle[k::fourbar::kC.index], 1));
+  if (const auto& fourBar = m_document->fourBar()) {
+    m_transmissionNow->setText(degrees(pose.transmissionAngle[fourBar->c.index], 1));
   } else {
     // One angle per dyad that has one (RRR and RRP joints), named by its joint.
     QStringList parts;
@@ -172,7 +172,7 @@ void AnalysisPanel::refreshMotion() {
     m_transmissionNow->setText(parts.isEmpty() ? tr("—") : parts.join(", "));
   }
   m_warning->setVisible(m_document->poseStatus() == k::PoseStatus::Singular);
-  m_warning->setText(m_document->fourBar() != nullptr
+  m_warning->setText(m_document->fourBar()
                          ? tr("Toggle position: coupler and rocker are in line; ω and α are undefined here.")
                          : tr("Toggle position: a dyad is stretched straight or folded; ω and α are undefined here."));
 }

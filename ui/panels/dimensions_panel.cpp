@@ -3,6 +3,7 @@
 #include "ui/canvas/mechanism_drawing.h"
 #include "ui/document/edit_design_command.h"
 #include "ui/document/mechanism_document.h"
+#include "ui/panels/fourbar_lengths_editor.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -17,21 +18,26 @@ namespace linkwright::ui {
 namespace k = kinematics;
 
 DimensionsPanel::DimensionsPanel(MechanismDocument* document, QWidget* parent)
-    : QWidget(parent), m_document(document), m_box(new QGroupBox(tr("Dimensions"), this)),
-      m_grid(new QGridLayout(m_box)), m_message(new QLabel(this)) {
+    : QWidget(parent), m_document(document), m_fourBar(new FourBarLengthsEditor(document, this)),
+      m_box(new QGroupBox(tr("Dimensions"), this)), m_grid(new QGridLayout(m_box)), m_message(new QLabel(this)) {
   auto* layout = new QVBoxLayout(this);
   m_grid->setColumnStretch(1, 1);
   m_grid->setVerticalSpacing(3);
+  layout->addWidget(m_fourBar);
   layout->addWidget(m_box);
   m_message->setWordWrap(true);
   m_message->setStyleSheet("color: #b00020;");
   m_message->hide();
   layout->addWidget(m_message);
+  connect(m_fourBar, &FourBarLengthsEditor::edited, this, &DimensionsPanel::showOutcome);
   connect(document, &MechanismDocument::changed, this, [this](Changes what) {
+    if ((what & Change::File) && m_document->undoStack()->count() == 0) m_fourBar->resetSliderRanges();
     if (what & Change::Design) refresh();
   });
   refresh();
 }
+
+LengthEditor* DimensionsPanel::lengthEditor(int index) const { return m_fourBar->lengthEditor(index); }
 
 QComboBox* DimensionsPanel::branchBox(k::PointId point) const {
   for (const auto& [p, box] : m_branches)
@@ -105,9 +111,16 @@ void DimensionsPanel::rebuild() {
 }
 
 void DimensionsPanel::refresh() {
-  const k::MechanismDesign* design = m_document->linkage();
-  if (design == nullptr) return;  // hidden: the lengths panel edits four-bars
-  const k::Mechanism& m = design->mechanism;
+  const bool fourBar = m_document->fourBar().has_value();
+  m_fourBar->setVisible(fourBar);
+  m_box->setVisible(!fourBar);
+  if (fourBar && !m_wasFourBar) m_fourBar->resetSliderRanges();
+  m_wasFourBar = fourBar;
+  if (fourBar) {
+    m_fourBar->refresh();
+    return;
+  }
+  const k::Mechanism& m = m_document->mechanism();
   if (dimensionFields(m) != m_fields || m_editors.empty()) rebuild();
   m_refreshing = true;
   for (std::size_t i = 0; i < m_fields.size(); ++i) m_editors[i]->setValue(fieldValue(m, m_fields[i]));
@@ -116,9 +129,7 @@ void DimensionsPanel::refresh() {
 }
 
 void DimensionsPanel::editField(std::size_t index, double value) {
-  const k::MechanismDesign* current = m_document->linkage();
-  if (current == nullptr) return;
-  k::MechanismDesign d = *current;
+  k::Design d = m_document->design();
   setFieldValue(d.mechanism, m_fields[index], value);
   const DimensionField& f = m_fields[index];
   const QString what = tr("Change %1: %2").arg(pointDisplayName(d.mechanism.points[f.point().index].name), f.label);
@@ -126,9 +137,7 @@ void DimensionsPanel::editField(std::size_t index, double value) {
 }
 
 void DimensionsPanel::editBranch(k::PointId point, int index) {
-  const k::MechanismDesign* current = m_document->linkage();
-  if (current == nullptr) return;
-  k::MechanismDesign d = *current;
+  k::Design d = m_document->design();
   *branchOf(d.mechanism.points[point.index]) = index == 0 ? k::Branch::Open : k::Branch::Crossed;
   showOutcome(
       m_document->edit(d, tr("Switch branch of %1").arg(pointDisplayName(d.mechanism.points[point.index].name))));

@@ -1,9 +1,11 @@
 #pragma once
-// The side panel for any linkage other than a four-bar: each point with the numbers that
-// define it (dimension_fields.h) in spin boxes, and its assembly branch where it has one.
-// Every change goes through the document (validated, undoable); a refused change shows why
-// and the editors snap back to the document's values. The editors are rebuilt only when the
-// linkage's structure changes (a dyad attached, another document), so typing keeps focus.
+// The side panel where a linkage's dimensions are typed. A linkage recognised as a four-bar
+// shows its named lengths with sliders and its coupler point (fourbar_lengths_editor.h); any
+// other lists each point with the numbers that define it (dimension_fields.h) in spin boxes,
+// and its assembly branch where it has one. Every change goes through the document
+// (validated, undoable); a refused change shows why and the editors snap back to the
+// document's values. The point editors are rebuilt only when the linkage's structure changes
+// (a dyad attached, another document), so typing keeps focus.
 
 #include "ui/panels/dimension_fields.h"
 
@@ -19,6 +21,8 @@ class QLabel;
 
 namespace linkwright::ui {
 
+class FourBarLengthsEditor;
+class LengthEditor;
 class MechanismDocument;
 
 class DimensionsPanel : public QWidget {
@@ -26,7 +30,13 @@ class DimensionsPanel : public QWidget {
 public:
   explicit DimensionsPanel(MechanismDocument* document, QWidget* parent = nullptr);
 
-  /// The fields shown, in order, and their editors (same order).
+  /// The four-bar face, shown while the linkage is a four-bar.
+  FourBarLengthsEditor* fourBarEditor() const { return m_fourBar; }
+  /// The point-by-point face, shown for any other linkage.
+  QGroupBox* pointsBox() const { return m_box; }
+  /// Its editor of frame (0), crank (1), coupler (2), rocker (3).
+  LengthEditor* lengthEditor(int index) const;
+  /// The point-by-point fields (any other linkage), in order, and their editors (same order).
   const std::vector<DimensionField>& fields() const { return m_fields; }
   QDoubleSpinBox* editor(std::size_t index) const { return m_editors[index]; }
   /// The branch box of `point`, if it has one.
@@ -42,6 +52,8 @@ private:
   void showOutcome(const std::optional<QString>& refusal);
 
   MechanismDocument* m_document;
+  FourBarLengthsEditor* m_fourBar;
+  bool m_wasFourBar = false;  // a four-bar again (undo after attaching a dyad): its sliders need ranges
   QGroupBox* m_box;
   QGridLayout* m_grid;
   QLabel* m_message;

@@ -1,7 +1,6 @@
 #include "ui/panels/dynamics_panel.h"
 
 #include "ui/colors.h"
-#include "ui/document/dynamics_fields.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/panels/mass_table.h"
 
@@ -133,7 +132,7 @@ void DynamicsPanel::refresh() {
 
 void DynamicsPanel::refreshTables() {
   const k::Mechanism& m = m_document->mechanism();
-  const k::LinkageDynamics& d = designDynamics(m_document->design());
+  const k::LinkageDynamics& d = m_document->design().dynamics;
   const QString unit = QString::fromStdString(m_document->lengthUnit());
   m_links->setHorizontalHeaderItem(2, new QTableWidgetItem(tr("Centre along\n[%1]").arg(unit)));
   m_links->setHorizontalHeaderItem(3, new QTableWidgetItem(tr("Centre across\n[%1]").arg(unit)));
@@ -178,7 +177,7 @@ void DynamicsPanel::refreshTables() {
 
 void DynamicsPanel::refreshLoads() {
   const k::Mechanism& m = m_document->mechanism();
-  const k::Loads& loads = designDynamics(m_document->design()).loads;
+  const k::Loads& loads = m_document->design().dynamics.loads;
   const QSignalBlocker b1(m_gravity), b2(m_g), b3(m_torqueLink), b4(m_torque), b5(m_forceTarget), b6(m_forceX),
       b7(m_forceY);
   m_gravity->setChecked(loads.gravity.has_value());
@@ -233,7 +232,8 @@ void DynamicsPanel::refreshLoads() {
 }
 
 void DynamicsPanel::submit(const QString& description, const std::function<void(k::LinkageDynamics&)>& change) {
-  const k::Design design = withDynamics(m_document->design(), change);
+  k::Design design = m_document->design();
+  change(design.dynamics);
   if (const auto why = m_document->edit(design, description)) {
     refuse(*why);
   } else {
@@ -261,7 +261,7 @@ void DynamicsPanel::editLink(int row, int column, std::optional<double> value, b
   const QString description = column == 1   ? tr("Change mass of %1").arg(qname)
                               : column == 4 ? tr("Change inertia of %1").arg(qname)
                                             : tr("Move centre of mass of %1").arg(qname);
-  const auto& links = designDynamics(m_document->design()).links;
+  const auto& links = m_document->design().dynamics.links;
   const auto existing = std::find_if(links.begin(), links.end(), [&](const k::LinkMass& l) { return l.link == name; });
   if (column == 3 && value && (existing == links.end() || !existing->centre)) {
     // The default centre's position along the link is the core's to compute (the midpoint);

@@ -6,7 +6,7 @@
 // "m·L²/12"). Every edit is a new design through MechanismDocument::edit, so it is undoable;
 // an edit the core refuses (checkDesign names the field) changes nothing and is shown.
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 #include "kinematics/dynamics/mass_properties.h"
 
 #include <QString>

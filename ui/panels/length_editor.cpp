@@ -15,12 +15,12 @@ constexpr int kSliderSteps = 1000;
 }
 
 LengthEditor::LengthEditor(const QString& label, bool allowNonPositive, QWidget* parent)
-    : QWidget(parent), m_spin(new QDoubleSpinBox(this)), m_slider(new QSlider(Qt::Horizontal, this)) {
+    : QWidget(parent), m_label(new QLabel(label, this)), m_spin(new QDoubleSpinBox(this)),
+      m_slider(new QSlider(Qt::Horizontal, this)) {
   auto* layout = new QGridLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
-  auto* name = new QLabel(label, this);
-  name->setBuddy(m_spin);
-  layout->addWidget(name, 0, 0);
+  m_label->setBuddy(m_spin);
+  layout->addWidget(m_label, 0, 0);
   layout->addWidget(m_spin, 0, 1);
   layout->addWidget(m_slider, 1, 0, 1, 2);
   m_spin->setDecimals(4);
@@ -53,6 +53,8 @@ void LengthEditor::setValue(double value) {
   syncSlider();
   m_updating = false;
 }
+
+void LengthEditor::setLabel(const QString& label) { m_label->setText(label); }
 
 void LengthEditor::setUnit(const QString& unit) { m_spin->setSuffix(" " + unit); }
 

@@ -20,6 +20,7 @@ public:
   /// Shows `value` without emitting edited().
   void setValue(double value);
   void setUnit(const QString& unit);
+  void setLabel(const QString& label);
   /// The slider spans [low, high]; the spin box accepts anything valid.
   void setSliderRange(double low, double high);
 
@@ -30,6 +31,7 @@ signals:
 private:
   void syncSlider();
 
+  QLabel* m_label;
   QDoubleSpinBox* m_spin;
   QSlider* m_slider;
   double m_low = 0.0;

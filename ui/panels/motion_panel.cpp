@@ -3,11 +3,11 @@
 #include "ui/number_text.h"
 
 #include "ui/animation/crank_animator.h"
-#include "ui/document/design_fields.h"
 #include "ui/document/edit_design_command.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/settings.h"
 
+#include "kinematics/design/fourbar_dimensions.h"
 #include "kinematics/model/units.h"
 
 #include <QCheckBox>
@@ -116,16 +116,16 @@ void MotionPanel::refreshDesign() {
   {
     const QSignalBlocker block(m_speed);
     m_speed->setSuffix(rpm ? tr(" rpm") : tr(" rad/s"));
-    m_speed->setValue(rpm ? k::radPerSecToRpm(designOmega(d)) : designOmega(d));
+    m_speed->setValue(rpm ? k::radPerSecToRpm(d.omega) : d.omega);
   }
   {
     const QSignalBlocker block(m_alpha);
-    m_alpha->setValue(designAlpha(d));
+    m_alpha->setValue(d.alpha);
   }
   // Other linkages choose a branch per joint, in the dimensions panel.
-  const k::FourBarDesign* fourBar = m_document->fourBar();
-  m_driveForm->setRowVisible(m_branch, fourBar != nullptr);
-  if (fourBar == nullptr) return;
+  const auto& fourBar = m_document->fourBar();
+  m_driveForm->setRowVisible(m_branch, fourBar.has_value());
+  if (!fourBar) return;
   const QSignalBlocker block(m_branch);
   m_branch->setCurrentIndex(fourBar->branch == k::Branch::Open ? 0 : 1);
 }
@@ -142,22 +142,26 @@ void MotionPanel::refreshMotion() {
 void MotionPanel::editSpeed() {
   const bool rpm = m_speedUnit->currentIndex() == 0;
   const double omega = rpm ? k::rpmToRadPerSec(m_speed->value()) : m_speed->value();
-  const k::Design d = withShared(m_document->design(), [omega](auto& x) { x.omega = omega; });
+  k::Design d = m_document->design();
+  d.omega = omega;
   if (m_document->edit(d, tr("Change crank speed"), MergeKey{ContinuousEdit::Speed, 0, m_editSerial++}))
     refreshDesign();
 }
 
 void MotionPanel::editAlpha() {
   const double alpha = m_alpha->value();
-  const k::Design d = withShared(m_document->design(), [alpha](auto& x) { x.alpha = alpha; });
+  k::Design d = m_document->design();
+  d.alpha = alpha;
   if (m_document->edit(d, tr("Change crank acceleration"), MergeKey{ContinuousEdit::Acceleration, 0, m_editSerial++}))
     refreshDesign();
 }
 
 void MotionPanel::editBranch() {
-  if (m_document->fourBar() == nullptr) return;
-  k::FourBarDesign d = *m_document->fourBar();
-  d.branch = m_branch->currentIndex() == 0 ? k::Branch::Open : k::Branch::Crossed;
+  const auto& fourBar = m_document->fourBar();
+  if (!fourBar) return;
+  k::Design d = m_document->design();
+  d.mechanism =
+      k::withFourBarBranch(d.mechanism, *fourBar, m_branch->currentIndex() == 0 ? k::Branch::Open : k::Branch::Crossed);
   if (m_document->edit(d, tr("Switch assembly branch"))) refreshDesign();
 }
 

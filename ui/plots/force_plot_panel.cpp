@@ -1,7 +1,6 @@
 #include "ui/plots/force_plot_panel.h"
 
 #include "ui/colors.h"
-#include "ui/document/design_fields.h"
 #include "ui/document/force_results.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/plots/axis_range.h"
@@ -97,8 +96,8 @@ void ForcePlotPanel::refreshAll() {
   if (cycle == nullptr || sweep == nullptr) return;
 
   const k::Design& design = m_document->design();
-  const double fromDeg = designFromDeg(design);
-  const double toDeg = designToDeg(design);
+  const double fromDeg = design.fromDeg;
+  const double toDeg = design.toDeg;
   m_runs.resize(1);
   buildTorqueRuns(*sweep, *cycle, m_unit, m_runs[0]);
   m_torque->setData(m_runs, tr("torque [N·m]"), m_unit, fromDeg, toDeg);
@@ -132,8 +131,7 @@ void ForcePlotPanel::alignCharts() {
 
 std::optional<double> ForcePlotPanel::cursorX() const {
   const k::Design& design = m_document->design();
-  const std::optional<double> deg =
-      wrapIntoRange(k::radToDeg(m_document->crankAngle()), designFromDeg(design), designToDeg(design));
+  const std::optional<double> deg = wrapIntoRange(k::radToDeg(m_document->crankAngle()), design.fromDeg, design.toDeg);
   if (!deg) return std::nullopt;
   return toAngleUnit(k::degToRad(*deg), m_unit);
 }

@@ -1,6 +1,5 @@
 #include "ui/plots/plot_panel.h"
 
-#include "ui/document/design_fields.h"
 #include "ui/plots/axis_range.h"
 #include "ui/plots/hover_readout.h"
 #include "ui/plots/limit_markers.h"
@@ -162,8 +161,8 @@ void PlotPanel::applySelection() {
 
 void PlotPanel::refreshData() {
   const kinematics::Design& design = m_document->design();
-  const double fromDeg = designFromDeg(design);
-  const double toDeg = designToDeg(design);
+  const double fromDeg = design.fromDeg;
+  const double toDeg = design.toDeg;
   const QString lengthUnit = QString::fromStdString(m_document->lengthUnit());
   const kinematics::SweepResult& sweep = m_document->sweep();
   const QuantitySelection shown = selection();
@@ -175,7 +174,7 @@ void PlotPanel::refreshData() {
   m_limits->setYSpan(angles->valueRange().min, angles->valueRange().max);
   // Limit positions are a four-bar's (empty otherwise), on its rocker's curve.
   m_limits->setPositions(limitMarkerPoints(m_document->analysis().limits, sweep, fromDeg, toDeg, m_unit),
-                         m_document->fourBar() != nullptr && shown.contains(PlotQuantity::RockerAngle));
+                         m_document->fourBar().has_value() && shown.contains(PlotQuantity::RockerAngle));
   refreshCursor();
   alignCharts();  // axis labels may have changed width
 }
@@ -192,7 +191,7 @@ void PlotPanel::alignCharts() {
 void PlotPanel::refreshCursor() {
   const kinematics::Design& design = m_document->design();
   const std::optional<double> xDeg =
-      wrapIntoRange(kinematics::radToDeg(m_document->crankAngle()), designFromDeg(design), designToDeg(design));
+      wrapIntoRange(kinematics::radToDeg(m_document->crankAngle()), design.fromDeg, design.toDeg);
   const std::optional<double> x =
       xDeg ? std::optional<double>(toAngleUnit(kinematics::degToRad(*xDeg), m_unit)) : std::nullopt;
   for (QuantityChartView* view : m_views) view->setCursorX(x);

@@ -247,7 +247,7 @@ TEST_CASE("bad input gives an error naming the problem", "[analysis][centres][er
   REQUIRE_FALSE(noGuide.ok());
   CHECK(noGuide.error().field == "guide direction");
 
-  const auto shaper = findMechanismExample("shaper");
+  const auto shaper = findExample("shaper");
   REQUIRE(shaper.has_value());
   const auto pose = solvePose(shaper->mechanism, {0.3, 1.0, 0.0});
   REQUIRE(pose.ok());

@@ -4,7 +4,9 @@
 
 #include "kinematics/analysis/sampling_accuracy.h"
 #include "kinematics/design/examples.h"
+#include "kinematics/design/fourbar_dimensions.h"
 #include "kinematics/model/constraint_form.h"
+#include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
 
@@ -29,8 +31,10 @@ TEST_CASE("exact peaks of the LS3 piston match its closed form", "[accuracy]") {
 }
 
 TEST_CASE("peaks read off samples converge to the exact ones", "[accuracy]") {
-  const auto e = findFourBarExample("miranda-fourbar").value();
-  const Mechanism m = makeFourBar(e.lengths, e.branch, "mm", e.couplerPoint).value();
+  const auto e = findExample("miranda-fourbar").value();
+  const FourBarStructure s = asFourBar(e.mechanism).value();
+  const Mechanism m = makeFourBar(s.lengths, s.branch, "mm", couplerPointOf(e.mechanism, s).value().spec).value();
+  REQUIRE(m == e.mechanism);
   const auto exact = exactPeaks(m, e.omega, 3600);
   REQUIRE(exact.ok());
   double previous = 1.0;
@@ -56,8 +60,9 @@ TEST_CASE("peaks read off samples converge to the exact ones", "[accuracy]") {
 }
 
 TEST_CASE("a sweep's Newton tolerance is the accuracy it delivers", "[accuracy][newton]") {
-  const auto e = findFourBarExample("miranda-fourbar").value();
-  const Mechanism m = makeFourBar(e.lengths, e.branch, "mm").value();
+  const auto e = findExample("miranda-fourbar").value();
+  const FourBarStructure s = asFourBar(e.mechanism).value();
+  const Mechanism m = makeFourBar(s.lengths, s.branch, "mm").value();
   const auto start = solvePose(m, {0.0, e.omega, 0.0}, {false, false});
   REQUIRE(start.ok());
   const Mechanism newton = withNewtonPoints(m, start->position);

@@ -15,7 +15,7 @@ using namespace linkwright::kinematics;
 TEST_CASE("every parameter of every example reads back what was set, and nothing else moves", "[parameters]") {
   std::vector<Mechanism> mechanisms{
       *makeFourBar({60.0, 25.0, 70.0, 45.0}, Branch::Open, "mm", CouplerPointSpec{35.0, -20.0})};
-  for (const MechanismExample& e : mechanismExamples()) mechanisms.push_back(e.mechanism);
+  for (const Example& e : examples()) mechanisms.push_back(e.mechanism);
   for (const Mechanism& m : mechanisms) {
     const std::vector<Parameter> parameters = parametersOf(m);
     REQUIRE_FALSE(parameters.empty());
@@ -49,7 +49,7 @@ TEST_CASE("each kind of point lists the numbers that define it", "[parameters]")
   CHECK(parameterUnit(S::Along) == ParameterUnit::Offset);
 
   // A free point lists its guess, then each constraint whose later point it is, once.
-  const auto triad = findMechanismExample("stephenson-ii");
+  const auto triad = findExample("stephenson-ii");
   REQUIRE(triad.has_value());
   const std::vector<Parameter> all = parametersOf(triad->mechanism);
   for (std::size_t c = 0; c < triad->mechanism.constraints.size(); ++c)

@@ -1,6 +1,7 @@
 // Linkwright documents: save → open reproduces the design exactly, for four-bars and every
-// other linkage; a version 1 file still reads; every malformed, invalid, foreign or newer file
-// is refused with a message naming the member.
+// other linkage; a version 1 or 2 file holding a four-bar by its lengths still reads, and
+// re-saves in the linkage form; every malformed, invalid, foreign or newer file is refused
+// with a message naming the member.
 
 #include "kinematics/io/document_json.h"
 #include "kinematics/design/examples.h"
@@ -19,12 +20,9 @@ using namespace linkwright::kinematics::io;
 
 namespace {
 
-FourBarDesign sampleDesign() {
-  FourBarDesign d;
-  d.lengths = {60.0, 25.0, 70.0, 45.0};
-  d.lengthUnit = "mm";
-  d.branch = Branch::Crossed;
-  d.couplerPoint = CouplerPointSpec{35.0, -20.25};
+// The four-bar tests/kinematics/io/documents/fourbar_v1.json holds.
+Design sampleDesign() {
+  Design d = fourBarDesign({60.0, 25.0, 70.0, 45.0}, Branch::Crossed, "mm", CouplerPointSpec{35.0, -20.25}).value();
   d.omega = 1.0471975511965976;  // 10 rpm: not a short decimal, so the round trip is tested
   d.alpha = 0.1;
   d.fromDeg = -30.0;
@@ -33,12 +31,19 @@ FourBarDesign sampleDesign() {
   return d;
 }
 
-// The document read back as a four-bar design (fails the test if it is not one).
-FourBarDesign fourBar(const Result<Design>& read) {
+// The document read back (fails the test if it does not read).
+Design designOf(const Result<Design>& read) {
   INFO((read.ok() ? std::string() : read.error().message));
   REQUIRE(read.ok());
-  REQUIRE(std::holds_alternative<FourBarDesign>(*read));
-  return std::get<FourBarDesign>(*read);
+  return *read;
+}
+
+std::string fileText(const std::string& path) {
+  std::ifstream file(path);
+  REQUIRE(file.good());
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
 }
 
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
@@ -47,37 +52,38 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return text.replace(at, from.size(), to);
 }
 
+// sampleDesign in the older four-bar form, as Linkwright wrote it before the linkage form
+// (version 1, or 2 as that writer saved it).
+std::string fourBarFormText(int version) {
+  return replaced(fileText(LINKWRIGHT_TEST_DOCUMENTS "/fourbar_v1.json"), "\"version\": 1",
+                  "\"version\": " + std::to_string(version));
+}
+
 }  // namespace
 
 TEST_CASE("a document round-trips every field exactly", "[io][document]") {
-  const FourBarDesign d = sampleDesign();
+  const Design d = sampleDesign();
   const std::string text = writeDocument(d);
-  const FourBarDesign back = fourBar(readDocument(text));
+  const Design back = designOf(readDocument(text));
   CHECK(back == d);
+  CHECK(back.kind == "four-bar");
   CHECK(writeDocument(back) == text);
 
-  FourBarDesign plain = d;
-  plain.couplerPoint.reset();
-  CHECK(fourBar(readDocument(writeDocument(plain))) == plain);
+  Design plain = d;
+  plain.mechanism = makeFourBar({60.0, 25.0, 70.0, 45.0}, Branch::Crossed, "mm").value();
+  CHECK(designOf(readDocument(writeDocument(plain))) == plain);
 }
 
 TEST_CASE("every built-in example round-trips", "[io][document]") {
-  for (const FourBarExample& e : fourBarExamples()) {
+  for (const Example& e : examples()) {
     CAPTURE(e.name);
-    const FourBarDesign d = designFromExample(e);
-    REQUIRE_FALSE(checkDesign(d).has_value());
-    CHECK(fourBar(readDocument(writeDocument(d))) == d);
-  }
-  for (const MechanismExample& e : mechanismExamples()) {
-    CAPTURE(e.name);
-    const MechanismDesign d = designFromExample(e);
+    const Design d = designFromExample(e);
     REQUIRE_FALSE(checkDesign(d).has_value());
     const std::string text = writeDocument(d);
     const auto back = readDocument(text);
     INFO(text << (back.ok() ? std::string() : back.error().message));
     REQUIRE(back.ok());
-    REQUIRE(std::holds_alternative<MechanismDesign>(*back));
-    CHECK(std::get<MechanismDesign>(*back) == d);
+    CHECK(*back == d);
     CHECK(writeDocument(*back) == text);
   }
 }
@@ -95,7 +101,7 @@ TEST_CASE("a linkage with moving guides, two-slider pins and free points round-t
   m.points.push_back({"F", FreePoint{Eigen::Vector2d(10.0, 90.0)}});
   m.constraints.push_back({fourbar::kB, PointId{m.points.size() - 1}, 75.0});
   m.constraints.push_back({fourbar::kC, PointId{m.points.size() - 1}, 60.5});
-  MechanismDesign d;
+  Design d;
   d.kind = "test";
   d.mechanism = m;
   const std::string text = writeDocument(d);
@@ -103,7 +109,7 @@ TEST_CASE("a linkage with moving guides, two-slider pins and free points round-t
   const auto back = readDocument(text);
   INFO((back.ok() ? std::string() : back.error().message));
   REQUIRE(back.ok());
-  CHECK(std::get<MechanismDesign>(*back) == d);
+  CHECK(*back == d);
   CHECK_THAT(
       text,
       Catch::Contains("{\"name\": \"S\", \"type\": \"rrp\", \"first\": \"P\", \"length\": 60, \"branch\": \"crossed\", "
@@ -112,20 +118,65 @@ TEST_CASE("a linkage with moving guides, two-slider pins and free points round-t
 }
 
 TEST_CASE("a version 1 document still opens, as the same four-bar", "[io][document][migration]") {
-  std::ifstream file(LINKWRIGHT_TEST_DOCUMENTS "/fourbar_v1.json");
-  REQUIRE(file.good());
-  std::stringstream text;
-  text << file.rdbuf();
-  const FourBarDesign d = fourBar(readDocument(text.str()));
+  const std::string text = fileText(LINKWRIGHT_TEST_DOCUMENTS "/fourbar_v1.json");
+  const Design d = designOf(readDocument(text));
   CHECK(d == sampleDesign());
-  // Saved again it becomes version 2, identical otherwise.
-  CHECK(writeDocument(d) == replaced(text.str(), "\"version\": 1", "\"version\": 2"));
+  // Saved again it becomes a version 2 document in the linkage form, the same design.
+  const std::string saved = writeDocument(d);
+  CHECK(saved == writeDocument(sampleDesign()));
+  CHECK_THAT(saved, Catch::StartsWith("{\n  \"format\": \"linkwright\",\n  \"version\": 2,"));
+  CHECK(designOf(readDocument(saved)) == d);
+}
+
+TEST_CASE("a four-bar-form document of version 1 or 2 re-saves in the linkage form and reads back equal",
+          "[io][document][migration]") {
+  for (const int version : {1, 2}) {
+    CAPTURE(version);
+    const std::string old = fourBarFormText(version);
+    const Design d = designOf(readDocument(old));
+    CHECK(d == sampleDesign());
+    // makeFourBar's mechanism: the ids and names O2, O4, B, C, P and crank, coupler, rocker.
+    CHECK(d.kind == "four-bar");
+    CHECK(d.mechanism ==
+          makeFourBar({60.0, 25.0, 70.0, 45.0}, Branch::Crossed, "mm", CouplerPointSpec{35.0, -20.25}).value());
+    const std::string saved = writeDocument(d);
+    CHECK_THAT(saved, Catch::StartsWith("{\n  \"format\": \"linkwright\",\n  \"version\": 2,"));
+    CHECK_THAT(saved, Catch::Contains("\"type\": \"linkage\",\n    \"kind\": \"four-bar\""));
+    CHECK_THAT(saved, !Catch::Contains("\"lengths\"") && !Catch::Contains("\"type\": \"four-bar\""));
+    const Design back = designOf(readDocument(saved));
+    CHECK(back == d);
+    CHECK(writeDocument(back) == saved);
+  }
+}
+
+TEST_CASE("a four-bar-form document with dynamics (version 3) still reads", "[io][document][migration]") {
+  // The older writer saved a four-bar with masses as version 3 in the four-bar form.
+  const Design funsho = designForExample("funsho-fourbar").value();
+  const std::string linkageText = writeDocument(funsho);
+  const std::string dynamics = linkageText.substr(linkageText.find(",\n  \"dynamics\""));
+  const std::string old =
+      "{\n  \"format\": \"linkwright\",\n  \"version\": 3,\n  \"mechanism\": {\n"
+      "    \"type\": \"four-bar\",\n    \"length_unit\": \"mm\",\n    \"branch\": \"open\",\n"
+      "    \"lengths\": {\"frame\": 30, \"crank\": 10, \"coupler\": 35, \"rocker\": 20}\n  },\n"
+      "  \"driver\": {\"omega_rad_s\": 100, \"alpha_rad_s2\": 0},\n"
+      "  \"analysis\": {\"from_deg\": 0, \"to_deg\": 360, \"samples\": 721}" +
+      dynamics;
+  CAPTURE(old);
+  const Design d = designOf(readDocument(old));
+  CHECK(d == funsho);
+  CHECK(writeDocument(d) == linkageText);
 }
 
 TEST_CASE("the document text is what the format note says", "[io][document]") {
   const std::string text = writeDocument(sampleDesign());
-  CHECK_THAT(text, Catch::StartsWith("{\n  \"format\": \"linkwright\",\n  \"version\": 2,"));
-  CHECK_THAT(text, Catch::Contains("\"lengths\": {\"frame\": 60, \"crank\": 25, \"coupler\": 70, \"rocker\": 45}"));
+  CHECK_THAT(text, Catch::StartsWith("{\n  \"format\": \"linkwright\",\n  \"version\": 2,\n  \"mechanism\": {\n"
+                                     "    \"type\": \"linkage\",\n    \"kind\": \"four-bar\",\n"
+                                     "    \"length_unit\": \"mm\",\n    \"points\": ["));
+  // The lengths are the points' definitions: C on (B, O4) with coupler 70 and rocker 45.
+  CHECK_THAT(text, Catch::Contains("{\"name\": \"O4\", \"type\": \"ground\", \"x\": 60, \"y\": 0}"));
+  CHECK_THAT(text, Catch::Contains("{\"name\": \"B\", \"type\": \"crank\", \"pivot\": \"O2\", \"length\": 25"));
+  CHECK_THAT(text,
+             Catch::Contains("\"first\": \"B\", \"first_length\": 70, \"second\": \"O4\", \"second_length\": 45"));
   CHECK_THAT(text, Catch::Contains("\"omega_rad_s\": 1.0471975511965976"));
 }
 
@@ -142,7 +193,8 @@ TEST_CASE("a value that is still not finite is written as null, which the reader
 }
 
 TEST_CASE("bad documents are refused with the member named", "[io][document][errors]") {
-  const std::string good = writeDocument(sampleDesign());
+  // The older four-bar form: its messages keep their paths ("mechanism.lengths.coupler").
+  const std::string good = fourBarFormText(2);
   auto [text, expected] = GENERATE_COPY(table<std::string, std::string>({
       {"not json", "not valid JSON: line 1, column 2: syntax error while parsing value - invalid literal"},
       {"[1, 2]", "document must be a JSON object"},
@@ -171,14 +223,37 @@ TEST_CASE("bad documents are refused with the member named", "[io][document][err
   CHECK_THAT(d.error().message, Catch::Contains(expected));
 }
 
+TEST_CASE("a damaged four-bar saved in the linkage form is refused with the member named", "[io][document][errors]") {
+  const std::string good = writeDocument(sampleDesign());
+  auto [text, expected] = GENERATE_COPY(table<std::string, std::string>({
+      {replaced(good, "\"linkwright\"", "\"solvespace\""), "not a Linkwright document"},
+      {replaced(good, "\"version\": 2", "\"version\": 7"),
+       "this file is document version 7, written by a newer Linkwright; this one reads up to version 3"},
+      {replaced(good, "\"version\": 2", "\"version\": 1"),
+       "must be \"four-bar\" in a version 1 document (got \"linkage\")"},
+      {replaced(good, "\"first_length\": 70", "\"first_length\": -70"),
+       "mechanism.points[3].first_length must be positive and finite (got -70)"},
+      {replaced(good, "\"branch\": \"crossed\"", "\"branch\": \"sideways\""),
+       "must be \"open\" or \"crossed\" (got \"sideways\")"},
+      {replaced(good, "\"samples\": 1441", "\"samples\": 1"), "analysis.samples must be a whole number from 2"},
+      {replaced(good, "\"to_deg\": 330", "\"to_deg\": -90"), "analysis.to_deg must be greater than"},
+      {good.substr(0, good.size() / 2), "not valid JSON"},
+  }));
+  CAPTURE(text);
+  const auto d = readDocument(text);
+  REQUIRE_FALSE(d.ok());
+  CHECK_THAT(d.error().message, Catch::Contains(expected));
+}
+
 TEST_CASE("unknown members are ignored, so minor additions stay readable", "[io][document]") {
-  const std::string text =
-      replaced(writeDocument(sampleDesign()), "\"version\": 2,", "\"version\": 2,\n  \"comment\": {\"x\": [1]},");
-  CHECK(fourBar(readDocument(text)) == sampleDesign());
+  for (const std::string& good : {writeDocument(sampleDesign()), fourBarFormText(2)}) {
+    const std::string text = replaced(good, "\"version\": 2,", "\"version\": 2,\n  \"comment\": {\"x\": [1]},");
+    CHECK(designOf(readDocument(text)) == sampleDesign());
+  }
 }
 
 TEST_CASE("bad linkage documents are refused with the member named", "[io][document][errors]") {
-  const std::string good = writeDocument(designFromExample(*findMechanismExample("watt-ii")));
+  const std::string good = writeDocument(designFromExample(*findExample("watt-ii")));
   auto [text, expected] = GENERATE_COPY(table<std::string, std::string>({
       {replaced(good, "\"version\": 2", "\"version\": 1"),
        "must be \"four-bar\" in a version 1 document (got \"linkage\")"},

@@ -3,7 +3,9 @@
 
 #include "kinematics/model/fourbar.h"
 #include "kinematics/design/examples.h"
+#include "kinematics/design/fourbar_dimensions.h"
 #include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 
 #include "tests/support/approx.h"
@@ -118,22 +120,40 @@ TEST_CASE("makeFourBar rejects a non-finite coupler point", "[fourbar][errors]")
 }
 
 TEST_CASE("The built-in examples carry the seeds' data", "[fourbar][examples]") {
-  const auto thesis = findFourBarExample("thesis-crank-rocker");
+  const auto thesis = findExample("thesis-crank-rocker");
   REQUIRE(thesis.has_value());
-  CHECK(thesis->lengths == kThesis);
-  CHECK(thesis->branch == Branch::Open);
+  CHECK(thesis->kind == "four-bar");
+  const auto thesisFourBar = asFourBar(thesis->mechanism);
+  REQUIRE(thesisFourBar.has_value());
+  CHECK(thesisFourBar->lengths == kThesis);
+  CHECK(thesisFourBar->branch == Branch::Open);
   CHECK(thesis->omega == rpmToRadPerSec(10.0));
   CHECK(thesis->stepDeg == 30.0);
 
-  const auto alvi = findFourBarExample("alvi-fourbar");
+  const auto alvi = findExample("alvi-fourbar");
   REQUIRE(alvi.has_value());
-  CHECK(alvi->lengths == linkwright::test::kAlvi);
+  REQUIRE(asFourBar(alvi->mechanism).has_value());
+  CHECK(asFourBar(alvi->mechanism)->lengths == linkwright::test::kAlvi);
   CHECK(alvi->omega == 10.5);
   CHECK(alvi->stepDeg == 40.0);
 
-  CHECK_FALSE(findFourBarExample("no-such-example").has_value());
-  for (const FourBarExample& e : fourBarExamples()) {
+  CHECK_FALSE(findExample("no-such-example").has_value());
+  // The seeds' four-bars come first, each makeFourBar's mechanism for its lengths.
+  const std::vector<Example> all = examples();
+  REQUIRE(all.size() >= 4);
+  CHECK(all[0].name == "thesis-crank-rocker");
+  CHECK(all[1].name == "alvi-fourbar");
+  CHECK(all[2].name == "miranda-fourbar");
+  CHECK(all[3].name == "funsho-fourbar");
+  for (const Example& e : all) {
+    if (e.kind != "four-bar") continue;
     CAPTURE(e.name);
-    CHECK(makeFourBar(e.lengths, e.branch, e.lengthUnit).ok());
+    const auto s = asFourBar(e.mechanism);
+    REQUIRE(s.has_value());
+    const auto p = couplerPointOf(e.mechanism, *s);
+    const auto built =
+        makeFourBar(s->lengths, s->branch, e.mechanism.lengthUnit, p ? std::optional(p->spec) : std::nullopt);
+    REQUIRE(built.ok());
+    CHECK(*built == e.mechanism);
   }
 }

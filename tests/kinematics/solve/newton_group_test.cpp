@@ -6,9 +6,11 @@
 
 #include "kinematics/solve/newton_group.h"
 #include "kinematics/design/examples.h"
+#include "kinematics/design/fourbar_dimensions.h"
 #include "kinematics/model/constraint_form.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
 #include "kinematics/solve/sweep.h"
@@ -153,17 +155,20 @@ Mechanism fourBar(const FourBarLengths& lengths, Branch branch = Branch::Open) {
 }  // namespace
 
 TEST_CASE("Newton agrees with the closed-form dyads on the four-bar examples every 1°", "[newton]") {
-  for (const FourBarExample& e : fourBarExamples())
+  for (const Example& e : examples()) {
+    if (e.kind != "four-bar") continue;
+    const auto s = asFourBar(e.mechanism);
+    REQUIRE(s.has_value());
     for (const Branch branch : {Branch::Open, Branch::Crossed}) {
-      const auto m = makeFourBar(e.lengths, branch, e.lengthUnit, e.couplerPoint);
-      REQUIRE(m.ok());
-      checkAgreement(*m, e.omega, e.name + (branch == Branch::Open ? " open" : " crossed"));
+      const Mechanism m = withFourBarBranch(e.mechanism, *s, branch);
+      checkAgreement(m, e.omega, e.name + (branch == Branch::Open ? " open" : " crossed"));
     }
+  }
 }
 
 TEST_CASE("Newton agrees with the closed form on the dyad six-bars (two groups each)", "[newton]") {
-  for (const MechanismExample& e : mechanismExamples())
-    if (rrrCount(e.mechanism) >= 2) checkAgreement(e.mechanism, e.omega, e.name);
+  for (const Example& e : examples())
+    if (e.kind != "four-bar" && rrrCount(e.mechanism) >= 2) checkAgreement(e.mechanism, e.omega, e.name);
 }
 
 TEST_CASE("Newton reports non-convergence where the linkage cannot close, as the dyads do", "[newton]") {

@@ -7,8 +7,9 @@
 #include "ui/document/mechanism_document.h"
 #include "ui/geometry.h"
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 #include "kinematics/model/fourbar.h"
+#include "tests/ui/support/four_bar_design.h"
 
 #include <catch2/catch.hpp>
 
@@ -18,11 +19,7 @@
 
 namespace linkwright::ui::test {
 
-inline kinematics::FourBarDesign nonGrashofDesign() {
-  kinematics::FourBarDesign design;
-  design.lengths = {40.0, 30.0, 20.0, 25.0};
-  return design;
-}
+inline kinematics::Design nonGrashofDesign() { return linkwright::testing::fourBar({40.0, 30.0, 20.0, 25.0}); }
 
 struct ShownView {
   MechanismDocument document;

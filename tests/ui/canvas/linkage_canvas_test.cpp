@@ -128,12 +128,12 @@ TEST_CASE("dragging a linkage's joint with the mouse goes through dragPoint and 
   CHECK(status.last().first().toString().contains("Drag E"));
   v.drag(press, drop, 6);
   const QPointF target = v.view.mapToScene(drop) - v.view.mapToScene(press) + grabbed;
-  const k::Mechanism& original = std::get<k::MechanismDesign>(before).mechanism;
+  const k::Mechanism& original = before.mechanism;
   const auto expected =
       k::dragPoint(original, k::solvePose(original, {0.0, 0.0, 0.0}).value(), 0.0, e, toEigen(target));
   REQUIRE(expected);
   const auto& got = std::get<k::RrrPoint>(v.document.mechanism().points[e.index].definition);
-  const auto& want = std::get<k::RrrPoint>(expected->points[e.index].definition);
+  const auto& want = std::get<k::RrrPoint>(expected->mechanism.points[e.index].definition);
   CHECK(got.firstLength == Approx(want.firstLength).margin(1e-9));
   CHECK(got.secondLength == Approx(want.secondLength).margin(1e-9));
   CHECK(v.point(e).x() == Approx(target.x()).margin(1e-9));

@@ -27,9 +27,9 @@ namespace {
 
 void requireItemsAtPose(ShownView& v) {
   const auto& scene = v.scene();
-  for (const auto handle : {k::FourBarHandle::O2, k::FourBarHandle::O4, k::FourBarHandle::B, k::FourBarHandle::C}) {
-    CAPTURE(static_cast<int>(handle));
-    CHECK(scene.handleItem(handle)->pos() == v.point(linkwright::ui::handlePoint(handle)));
+  for (const auto point : {fourbar::kO2, fourbar::kO4, fourbar::kB, fourbar::kC}) {
+    CAPTURE(point.index);
+    CHECK(scene.handleItem(point)->pos() == v.point(point));
   }
   CHECK(scene.linkItem(fourbar::kCrank)->line() == QLineF(v.point(fourbar::kO2), v.point(fourbar::kB)));
   CHECK(scene.linkItem(fourbar::kCoupler)->line() == QLineF(v.point(fourbar::kB), v.point(fourbar::kC)));
@@ -47,14 +47,13 @@ int countMoveTos(const QPainterPath& path) {
 TEST_CASE("items move to the new pose after a design change and after motion", "[canvas][scene]") {
   ShownView v;
   requireItemsAtPose(v);
-  const QPointF cBefore = v.scene().handleItem(k::FourBarHandle::C)->pos();
+  const QPointF cBefore = v.scene().handleItem(fourbar::kC)->pos();
 
-  k::FourBarDesign edited = *v.document.fourBar();
-  edited.lengths = {50.0, 20.0, 65.0, 40.0};
+  const k::Design edited = linkwright::testing::withLengths(v.document.design(), {50.0, 20.0, 65.0, 40.0});
   REQUIRE_FALSE(v.document.edit(edited, "lengths"));
   requireItemsAtPose(v);
-  CHECK(v.scene().handleItem(k::FourBarHandle::C)->pos() != cBefore);
-  CHECK(v.scene().handleItem(k::FourBarHandle::O4)->pos() == QPointF(50.0, 0.0));
+  CHECK(v.scene().handleItem(fourbar::kC)->pos() != cBefore);
+  CHECK(v.scene().handleItem(fourbar::kO4)->pos() == QPointF(50.0, 0.0));
 
   v.document.setCrankAngle(1.0);
   requireItemsAtPose(v);
@@ -84,7 +83,7 @@ TEST_CASE("the crank's range is drawn only when the crank cannot turn fully", "[
   }
   SECTION("undoing back to a crank-rocker hides it again") {
     ShownView v;
-    k::FourBarDesign design = nonGrashofDesign();
+    const k::Design design = nonGrashofDesign();
     REQUIRE_FALSE(v.document.edit(design, "lengths"));
     CHECK(v.scene().feasibleRangeItem()->isVisible());
     v.document.undoStack()->undo();
@@ -95,27 +94,27 @@ TEST_CASE("the crank's range is drawn only when the crank cannot turn fully", "[
 TEST_CASE("the coupler point, its triangle and its path follow the design", "[canvas][scene]") {
   SECTION("no coupler point: nothing drawn for it") {
     ShownView v;
-    CHECK(v.scene().handleItem(k::FourBarHandle::CouplerPoint) == nullptr);
+    CHECK(v.scene().handleItem(fourbar::kCouplerPoint) == nullptr);
     CHECK(v.scene().pathItem(fourbar::kCouplerPoint) == nullptr);
     CHECK(v.scene().couplerTriangleItem() == nullptr);
-    CHECK_FALSE(v.scene().handlePosition(k::FourBarHandle::CouplerPoint));
+    CHECK_FALSE(v.scene().handlePosition(fourbar::kCouplerPoint));
   }
   SECTION("full rotation: one unbroken path through every sample") {
-    k::FourBarDesign design;
-    design.couplerPoint = k::CouplerPointSpec{35.0, 15.0};
+    const k::Design design =
+        k::fourBarDesign(k::kThesisCrankRocker, k::Branch::Open, "mm", k::CouplerPointSpec{35.0, 15.0}).value();
     ShownView v(design);
     const QPainterPath path = v.scene().pathItem(fourbar::kCouplerPoint)->path();
     CHECK(v.scene().pathItem(fourbar::kCouplerPoint)->isVisible());
     CHECK(countMoveTos(path) == 1);
     CHECK(path.elementCount() == static_cast<int>(v.document.sweep().size()));
-    CHECK(v.scene().handleItem(k::FourBarHandle::CouplerPoint)->pos() == v.point(fourbar::kCouplerPoint));
+    CHECK(v.scene().handleItem(fourbar::kCouplerPoint)->pos() == v.point(fourbar::kCouplerPoint));
     const QPolygonF triangle = v.scene().couplerTriangleItem()->polygon();
     REQUIRE(triangle.size() == 3);
     CHECK(triangle[2] == v.point(fourbar::kCouplerPoint));
   }
   SECTION("partial range: the path breaks where the linkage cannot be assembled") {
-    k::FourBarDesign design = nonGrashofDesign();
-    design.couplerPoint = k::CouplerPointSpec{10.0, 8.0};
+    const k::Design design =
+        k::fourBarDesign({40.0, 30.0, 20.0, 25.0}, k::Branch::Open, "mm", k::CouplerPointSpec{10.0, 8.0}).value();
     ShownView v(design);
     REQUIRE_FALSE(v.document.sweep().notAssembled.empty());
     // The grid 0°..360° sees the range [−φ, φ] as two runs: from 0° and up to 360°.
@@ -169,7 +168,7 @@ TEST_CASE("presentation scale thickens links and enlarges pins", "[canvas][scene
   const double width = v.scene().linkItem(fourbar::kCrank)->pen().widthF();
   v.view.setPresentationScale(2.0);
   CHECK(v.scene().linkItem(fourbar::kCrank)->pen().widthF() == Approx(2.0 * width));
-  CHECK(v.scene().handleItem(k::FourBarHandle::B)->scale() == 2.0);
-  CHECK(v.scene().handleItem(k::FourBarHandle::O2)->scale() == 2.0);
+  CHECK(v.scene().handleItem(fourbar::kB)->scale() == 2.0);
+  CHECK(v.scene().handleItem(fourbar::kO2)->scale() == 2.0);
   CHECK(v.scene().linkItem(fourbar::kCrank)->pen().isCosmetic());
 }

@@ -57,9 +57,7 @@ TEST_CASE("dragging the background pans the view and edits nothing", "[canvas][n
 
 TEST_CASE("a document reset fits the new design, whatever its size", "[canvas][navigation]") {
   ShownView v;
-  k::FourBarDesign metres;
-  metres.lengths = {0.06, 0.025, 0.07, 0.045};
-  metres.lengthUnit = "m";
+  k::Design metres = k::fourBarDesign({0.06, 0.025, 0.07, 0.045}, k::Branch::Open, "m").value();
   v.wheel(QPoint(400, 300), -5);  // the user had zoomed out
   v.document.reset(metres);
   for (const auto id : {fourbar::kO2, fourbar::kO4, fourbar::kB, fourbar::kC}) CHECK(insideViewport(v, v.point(id)));

@@ -92,8 +92,8 @@ TEST_CASE("the view renders the linkage with its grid", "[canvas][render]") {
 }
 
 TEST_CASE("a non-Grashof linkage shows its unreachable crank angles", "[canvas][render]") {
-  k::FourBarDesign design = nonGrashofDesign();
-  design.couplerPoint = k::CouplerPointSpec{10.0, 8.0};
+  k::Design design =
+      k::fourBarDesign({40.0, 30.0, 20.0, 25.0}, k::Branch::Open, "mm", k::CouplerPointSpec{10.0, 8.0}).value();
   ShownView v(design);
   const QImage image = grabView(v);
   CHECK(image.save("/tmp/linkwright_canvas_nongrashof.png"));
@@ -164,10 +164,8 @@ TEST_CASE("zoomed in, pins and links keep their pixel size", "[canvas][render]")
 }
 
 TEST_CASE("QGraphicsView::render, as the image export uses it, draws the labels too", "[canvas][render]") {
-  k::FourBarDesign metres;
-  metres.lengths = {0.06, 0.025, 0.07, 0.045};
-  metres.lengthUnit = "m";
-  metres.couplerPoint = k::CouplerPointSpec{0.03, 0.02};
+  k::Design metres =
+      k::fourBarDesign({0.06, 0.025, 0.07, 0.045}, k::Branch::Open, "m", k::CouplerPointSpec{0.03, 0.02}).value();
   ShownView v(metres);
   v.view.setShowVelocityArrows(true);
   const QImage shown = grabView(v);

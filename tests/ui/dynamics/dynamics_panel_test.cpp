@@ -6,9 +6,11 @@
 #include "ui/document/mechanism_document.h"
 #include "ui/panels/mass_table.h"
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 
 #include <QCheckBox>
+
+#include "tests/ui/support/four_bar_design.h"
 
 #include <catch2/catch.hpp>
 
@@ -18,7 +20,7 @@ namespace k = linkwright::kinematics;
 namespace {
 
 k::Design funsho() { return *k::designForExample("funsho-fourbar"); }
-double couplerMass(const MechanismDocument& doc) { return doc.fourBar()->dynamics.links[1].mass; }
+double couplerMass(const MechanismDocument& doc) { return doc.design().dynamics.links[1].mass; }
 
 }  // namespace
 
@@ -35,7 +37,7 @@ TEST_CASE("the panel lists each link's mass, centre and inertia from the design"
   CHECK(t->horizontalHeaderItem(2)->text() == "Centre along\n[mm]");
   CHECK(panel.sliderTable()->rowCount() == 0);
 
-  doc.reset(k::FourBarDesign{});  // no masses: the core's defaults, shown as such
+  doc.reset(linkwright::testing::fourBar());  // no masses: the core's defaults, shown as such
   CHECK(t->item(0, 1)->text() == "0");
   CHECK(t->item(0, 2)->text() == "midpoint");
   CHECK(t->item(0, 4)->text() == "m·L²/12");
@@ -61,7 +63,7 @@ TEST_CASE("a negative mass is refused with the core's message and the design is 
   doc.reset(funsho());
   DynamicsPanel panel(&doc);
   const k::Design before = doc.design();
-  k::FourBarDesign candidate = *doc.fourBar();
+  k::Design candidate = doc.design();
   candidate.dynamics.links[1].mass = -1.0;
   const std::string core = k::checkDesign(candidate)->message;
   panel.linkTable()->item(1, 1)->setText("-1");
@@ -77,12 +79,12 @@ TEST_CASE("clearing an inertia returns it to the core's default; gravity switche
   doc.reset(funsho());
   DynamicsPanel panel(&doc);
   panel.linkTable()->item(2, 4)->setText("");
-  CHECK_FALSE(doc.fourBar()->dynamics.links[2].inertia.has_value());
+  CHECK_FALSE(doc.design().dynamics.links[2].inertia.has_value());
   CHECK(panel.linkTable()->item(2, 4)->text() == "m·L²/12");
   panel.gravityBox()->setChecked(true);
-  REQUIRE(doc.fourBar()->dynamics.loads.gravity.has_value());
-  CHECK(*doc.fourBar()->dynamics.loads.gravity == Eigen::Vector2d(0.0, -k::kStandardGravity));
+  REQUIRE(doc.design().dynamics.loads.gravity.has_value());
+  CHECK(*doc.design().dynamics.loads.gravity == Eigen::Vector2d(0.0, -k::kStandardGravity));
   doc.undoStack()->undo();
-  CHECK_FALSE(doc.fourBar()->dynamics.loads.gravity.has_value());
+  CHECK_FALSE(doc.design().dynamics.loads.gravity.has_value());
   CHECK_FALSE(panel.gravityBox()->isChecked());
 }

@@ -5,7 +5,7 @@
 #include "ui/document/force_results.h"
 #include "ui/document/mechanism_document.h"
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 
 #include <catch2/catch.hpp>
 

@@ -8,7 +8,7 @@
 #include "ui/plots/force_chart_view.h"
 #include "ui/plots/polar_load_view.h"
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 #include "kinematics/model/units.h"
 
 #include <QComboBox>

@@ -5,7 +5,7 @@
 
 #include "ui/document/mechanism_document.h"
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/dynamics/inverse_dynamics.h"
 
@@ -19,7 +19,7 @@ namespace k = linkwright::kinematics;
 namespace {
 
 k::Design funsho() { return *k::designForExample("funsho-fourbar"); }
-const k::LinkageDynamics& dynamicsOf(const MechanismDocument& doc) { return doc.fourBar()->dynamics; }
+const k::LinkageDynamics& dynamicsOf(const MechanismDocument& doc) { return doc.design().dynamics; }
 
 }  // namespace
 
@@ -29,7 +29,7 @@ TEST_CASE("ForceResults computes nothing while disabled", "[forces][results]") {
   ForceResults forces(&doc);
   QSignalSpy spy(&forces, &ForceResults::changed);
   doc.setCrankAngle(1.0);
-  doc.edit(*doc.fourBar(), "noop");  // an unchanged design: nothing happens either way
+  doc.edit(doc.design(), "noop");  // an unchanged design: nothing happens either way
   CHECK(forces.state() == ForceResults::State::Disabled);
   CHECK(forces.cycleForces() == nullptr);
   CHECK(forces.poseForces() == nullptr);
@@ -96,8 +96,8 @@ TEST_CASE("a design without masses or loads, or with an unknown unit, has no for
   CHECK(forces.message().contains("no masses or loads"));
   CHECK(forces.cycleForces() == nullptr);
 
-  k::FourBarDesign d = std::get<k::FourBarDesign>(funsho());
-  d.lengthUnit = "furlong";
+  k::Design d = funsho();
+  d.mechanism.lengthUnit = "furlong";
   if (!doc.validate(d)) {  // kinematics accept any unit label; forces need metres
     doc.reset(d);
     CHECK(forces.state() == ForceResults::State::Failed);

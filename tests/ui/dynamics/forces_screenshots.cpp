@@ -7,7 +7,7 @@
 #include "ui/panels/dynamics_panel.h"
 #include "ui/plots/force_plot_panel.h"
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 #include "kinematics/model/units.h"
 
 #include <QApplication>
@@ -35,19 +35,18 @@ void save(QWidget& w, const QString& dir, const QString& name, QSize size) {
 
 // Gives a linkage without masses some: 0.5 kg per link, 0.4 kg per slider block.
 void addMasses(k::Design& design) {
-  auto* linkage = std::get_if<k::MechanismDesign>(&design);
-  if (linkage == nullptr || !linkage->dynamics.empty()) return;
-  for (const k::Link& link : linkage->mechanism.links)
-    linkage->dynamics.links.push_back({link.name, 0.5, std::nullopt, std::nullopt});
-  for (const k::Point& p : linkage->mechanism.points)
-    if (std::holds_alternative<k::RrpPoint>(p.definition)) linkage->dynamics.sliders.push_back({p.name, 0, 0.4, 0.0});
+  if (!design.dynamics.empty()) return;
+  for (const k::Link& link : design.mechanism.links)
+    design.dynamics.links.push_back({link.name, 0.5, std::nullopt, std::nullopt});
+  for (const k::Point& p : design.mechanism.points)
+    if (std::holds_alternative<k::RrpPoint>(p.definition)) design.dynamics.sliders.push_back({p.name, 0, 0.4, 0.0});
 }
 
 void shoot(const std::string& example, double crankDeg, const QString& dir, bool masses) {
   MechanismDocument doc;
   k::Design design = *k::designForExample(example);
   if (masses) addMasses(design);
-  else std::visit([](auto& d) { d.dynamics = {}; }, design);
+  else design.dynamics = {};
   doc.reset(design);
   doc.setRequest(ForceResults::forcesRequest(doc.request()));
   doc.setCrankAngle(k::degToRad(crankDeg));

@@ -13,7 +13,8 @@ namespace linkwright::ui::test {
 
 inline const std::vector<PlotCurve>& fourBarCurves() {
   static const std::vector<PlotCurve> curves = [] {
-    const kinematics::Mechanism m = kinematics::buildMechanism(kinematics::FourBarDesign{}).value();
+    const kinematics::Mechanism m =
+        kinematics::makeFourBar(kinematics::kThesisCrankRocker, kinematics::Branch::Open).value();
     return plotCurves(m, kinematics::solvePose(m, {}).value());
   }();
   return curves;

@@ -5,6 +5,8 @@
 #include "kinematics/design/design.h"
 #include "kinematics/model/units.h"
 
+#include "tests/ui/support/four_bar_design.h"
+
 #include <catch2/catch.hpp>
 
 using namespace linkwright::ui;
@@ -13,21 +15,21 @@ namespace k = linkwright::kinematics;
 namespace {
 
 struct Solved {
-  k::FourBarDesign design;
+  k::Design design;
   k::SweepResult sweep;
   k::LimitReport limits;
 };
 
-Solved solve(const k::FourBarDesign& design) {
-  const k::Mechanism m = k::buildMechanism(design).value();
-  return {design, k::sweep(m, k::designSweepSpec(design)).value(),
-          k::fourBarLimitPositions(design.lengths, design.branch)};
+Solved solve(const k::Design& design) {
+  const auto fourBar = k::asFourBar(design.mechanism).value();
+  return {design, k::sweep(design.mechanism, k::designSweepSpec(design)).value(),
+          k::fourBarLimitPositions(fourBar.lengths, fourBar.branch)};
 }
 
 }  // namespace
 
 TEST_CASE("Limit markers of the thesis crank-rocker sit at 21.59° and 228.19°", "[limit_markers]") {
-  const Solved s = solve(k::FourBarDesign{});  // 60, 25, 70, 45 mm, open
+  const Solved s = solve(linkwright::testing::fourBar());  // 60, 25, 70, 45 mm, open
   const QList<QPointF> points = limitMarkerPoints(s.limits, s.sweep, 0.0, 360.0, AngleUnit::Degrees);
   REQUIRE(points.size() == 2);
   // The thesis prints two decimals.
@@ -42,11 +44,11 @@ TEST_CASE("Limit markers of the thesis crank-rocker sit at 21.59° and 228.19°"
 }
 
 TEST_CASE("Limit markers follow the unit and leave out limits outside the grid", "[limit_markers]") {
-  const Solved s = solve(k::FourBarDesign{});
+  const Solved s = solve(linkwright::testing::fourBar());
   const QList<QPointF> rad = limitMarkerPoints(s.limits, s.sweep, 0.0, 360.0, AngleUnit::Radians);
   REQUIRE(rad.size() == 2);
   CHECK(rad[0].x() == Approx(s.limits.positions[0].crankAngle));
-  k::FourBarDesign part;
+  k::Design part = linkwright::testing::fourBar();
   part.fromDeg = 0.0;
   part.toDeg = 180.0;
   part.samples = 361;

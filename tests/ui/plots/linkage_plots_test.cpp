@@ -7,7 +7,7 @@
 #include "ui/plots/quantity_chart_view.h"
 #include "ui/plots/quantity_selector.h"
 
-#include "kinematics/design/mechanism_design.h"
+#include "kinematics/design/design.h"
 #include "kinematics/model/units.h"
 
 #include <QCheckBox>
@@ -16,6 +16,8 @@
 #include <QGraphicsLayout>
 #include <QLineSeries>
 #include <QValueAxis>
+
+#include "tests/ui/support/four_bar_design.h"
 
 #include <catch2/catch.hpp>
 
@@ -90,7 +92,7 @@ TEST_CASE("a six-bar plots links 3 to 6 and both transmission angles; back to a 
   CHECK(link6[42].y() == k::radToDeg(doc.sweep().linkAlpha[4][42]));
   CHECK(panel.limitMarkers()->lineXs().isEmpty());
 
-  doc.reset(k::FourBarDesign{});
+  doc.reset(linkwright::testing::fourBar());
   CHECK(keys(panel.curves()).size() == 7);
   CHECK(panel.limitMarkers()->lineXs().size() == 2);
   CHECK_FALSE(panel.chartView(QuantityKind::Alpha)->isHidden());

@@ -25,6 +25,8 @@
 #include <QSignalSpy>
 #include <QValueAxis>
 
+#include "tests/ui/support/four_bar_design.h"
+
 #include <catch2/catch.hpp>
 
 #include <memory>
@@ -54,13 +56,7 @@ QList<QPointF> expectedDegrees(const k::SweepResult& s, const std::vector<double
 
 void tick(PlotPanel& panel, PlotQuantity q, bool on) { panel.selector()->checkBox(q)->setChecked(on); }
 
-k::FourBarDesign nonGrashof() {
-  k::FourBarDesign d;
-  d.lengths = {40.0, 30.0, 20.0, 25.0};
-  d.fromDeg = 0.0;
-  d.toDeg = 360.0;
-  return d;
-}
+k::Design nonGrashof() { return linkwright::testing::fourBar({40.0, 30.0, 20.0, 25.0}); }
 
 constexpr std::size_t kCoupler = k::fourbar::kCoupler.index;
 constexpr std::size_t kRocker = k::fourbar::kRocker.index;
@@ -112,8 +108,7 @@ TEST_CASE("Editing a length re-plots what the core now says", "[plot_panel]") {
   MechanismDocument doc;
   PlotPanel panel(&doc);
   const QList<QPointF> before = plotted(panel, PlotQuantity::RockerAngle);
-  k::FourBarDesign d = *doc.fourBar();
-  d.lengths.coupler = 65.0;
+  const k::Design d = linkwright::testing::withLengths(doc.design(), {60.0, 25.0, 65.0, 45.0});
   REQUIRE_FALSE(doc.edit(d, QStringLiteral("coupler")).has_value());
   const QList<QPointF> after = plotted(panel, PlotQuantity::RockerAngle);
   CHECK(after != before);

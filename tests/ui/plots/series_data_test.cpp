@@ -4,6 +4,8 @@
 #include "kinematics/design/design.h"
 #include "kinematics/model/units.h"
 
+#include "tests/ui/support/four_bar_design.h"
+
 #include <catch2/catch.hpp>
 
 #include <limits>
@@ -109,9 +111,8 @@ TEST_CASE("A column the sweep did not compute gives no points", "[series_data]")
 }
 
 TEST_CASE("A real sweep: every assembled sample of the default design, one run", "[series_data]") {
-  const k::FourBarDesign design;
-  const k::Mechanism m = k::buildMechanism(design).value();
-  const k::SweepResult sweep = k::sweep(m, k::designSweepSpec(design)).value();
+  const k::Design design = linkwright::testing::fourBar();
+  const k::SweepResult sweep = k::sweep(design.mechanism, k::designSweepSpec(design)).value();
   SeriesRuns runs;
   buildSeriesRuns(sweep, PlotQuantity::CouplerAngle, AngleUnit::Degrees, runs);
   REQUIRE(runs.runs.size() == 1);
