@@ -50,8 +50,10 @@ kinematics::Result<std::vector<double>> parseList(const std::string& option, con
 
 const std::set<std::string>& optionsOf(Command command) {
   static const std::set<std::string> analyze{
-      "--fourbar", "--example", "--unit",   "--rpm",           "--omega", "--alpha",  "--from",   "--to",
-      "--step",    "--samples", "--branch", "--coupler-point", "-o",      "--output", "--format", "--forces"};
+      "--fourbar", "--example",  "--unit",      "--rpm",       "--omega",   "--alpha",
+      "--from",    "--to",       "--step",      "--samples",   "--branch",  "--coupler-point",
+      "-o",        "--output",   "--format",    "--forces",    "--law",     "--ramp-time",
+      "--rise",    "--duration", "--law-table", "--from-time", "--to-time", "--step-time"};
   static const std::set<std::string> extremes{"--fourbar", "--example", "--unit",   "--rpm",
                                               "--omega",   "--alpha",   "--from",   "--to",
                                               "--step",    "--samples", "--branch", "--coupler-point"};
@@ -189,6 +191,19 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
     inv.json = true;
   } else if (option == "--forces") {
     inv.forces = true;
+  } else if (option == "--law") {
+    if (value != "constant" && value != "ramp" && value != "cycloidal" && value != "345" && value != "table")
+      return usage(option, option + " must be constant, ramp, cycloidal, 345 or table (got '" + value + "')");
+    inv.law = value;
+  } else if (option == "--ramp-time") return positive(inv.rampTime, option, value);
+  else if (option == "--rise") return number(inv.riseDeg);
+  else if (option == "--duration") return positive(inv.duration, option, value);
+  else if (option == "--from-time") return number(inv.fromTime);
+  else if (option == "--to-time") return number(inv.toTime);
+  else if (option == "--law-table") {
+    if (value.empty()) return usage(option, option + " needs a file name");
+    inv.lawTable = value;
+    if (!inv.law) inv.law = "table";
   } else if (option == "--svg") {
     if (value.empty()) return usage(option, option + " needs a file name");
     inv.svgFile = value;
@@ -214,6 +229,32 @@ std::optional<Error> checkArm(const Invocation& inv) {
   return std::nullopt;
 }
 
+// A motion law replaces the angle grid and the constant α; each law takes its own options.
+std::optional<Error> checkLaw(const Invocation& inv) {
+  const bool timeOptions = inv.rampTime || inv.riseDeg || inv.duration || inv.lawTable || inv.fromTime || inv.toTime ||
+                           (inv.stepTime && inv.command != Command::Arm);
+  if (!inv.law && timeOptions)
+    return usage("--law",
+                 "the time options (--ramp-time, --rise, --duration, --law-table, --from-time, --to-time, "
+                 "--step-time) need --law");
+  if (!inv.law) return std::nullopt;
+  for (const auto& [given, option] : {std::pair{inv.toDeg.has_value(), "--to"},
+                                      {inv.stepDeg.has_value(), "--step"},
+                                      {inv.alpha.has_value(), "--alpha"}})
+    if (given)
+      return usage(option, std::string(option) +
+                               " sets the angle grid; with --law the crank follows the law in time "
+                               "(use --from-time, --to-time and --samples or --step-time)");
+  if (inv.stepTime && inv.samples) return usage("--samples", "--step-time and --samples cannot be used together");
+  const std::string& law = *inv.law;
+  if (law == "ramp" && !inv.rampTime) return usage("--ramp-time", "--law ramp needs --ramp-time S");
+  if ((law == "cycloidal" || law == "345") && (!inv.riseDeg || !inv.duration))
+    return usage(inv.riseDeg ? "--duration" : "--rise", "--law " + law + " needs --rise DEG and --duration S");
+  if (law == "table" && !inv.lawTable) return usage("--law-table", "--law table needs --law-table FILE.csv");
+  if (law != "table" && inv.lawTable) return usage("--law-table", "--law-table goes with --law table");
+  return std::nullopt;
+}
+
 std::optional<Error> checkCombination(const Invocation& inv) {
   if (inv.command == Command::Arm) return checkArm(inv);
   if (inv.command == Command::Centres && inv.atDeg.empty())
@@ -230,7 +271,7 @@ std::optional<Error> checkCombination(const Invocation& inv) {
                                                               ")");
   if (inv.rpm && inv.omega) return usage("--omega", "--rpm and --omega cannot be used together");
   if (inv.stepDeg && inv.samples) return usage("--samples", "--step and --samples cannot be used together");
-  return std::nullopt;
+  return checkLaw(inv);
 }
 
 }  // namespace

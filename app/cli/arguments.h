@@ -34,6 +34,14 @@ struct Invocation {
   std::optional<double> toDeg;
   std::optional<double> stepDeg;
   std::optional<long long> samples;
+  // analyze on a time base: the crank follows a motion law (kinematics/solve/motion_law.h).
+  std::optional<std::string> law;       ///< constant, ramp, cycloidal, 345 or table
+  std::optional<double> rampTime;       ///< s, ramp
+  std::optional<double> riseDeg;        ///< degrees, cycloidal and 345
+  std::optional<double> duration;       ///< s, cycloidal and 345
+  std::optional<std::string> lawTable;  ///< a CSV of time_s and the crank angle in degrees, table
+  std::optional<double> fromTime;       ///< s
+  std::optional<double> toTime;         ///< s
   std::optional<kinematics::Branch> branch;
   std::optional<kinematics::CouplerPointSpec> couplerPoint;
   std::optional<std::string> outputFile;

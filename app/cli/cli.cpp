@@ -55,6 +55,22 @@ constexpr const char* kAnalyzeOptions = R"(Speed and range (analyze, extremes):
                       angle step in degrees (default: the example's; 1 for --fourbar),
                       or N evenly spaced angles from --from to --to inclusive
   --coupler-point U,V add point P fixed on the coupler: U along B→C, V 90° CCW from it
+Motion in time (analyze): instead of the angle grid, the crank follows a motion law and
+  the table gains a first column time_s; ω and α are the law's at each instant.
+  --law constant      from --from degrees at --rpm / --omega
+  --law ramp --ramp-time S
+                      from rest at --from, constant acceleration to --rpm / --omega in S
+                      seconds, then constant speed
+  --law cycloidal|345 --rise DEG --duration S
+                      a cycloidal or 3-4-5 polynomial rise of DEG from --from in S seconds
+  --law-table FILE    a measured θ(t): a CSV whose first line names time_s and the angle
+                      in _deg or _rad (time_s,crank_angle_deg), then at least four rows;
+                      a C² cubic spline through them (a cubic is reproduced exactly)
+  --from-time S, --to-time S
+                      the times analysed (default: from 0, or the table's first time, to
+                      the rise's end, the ramp and one turn, one turn, or the table's end)
+  --step-time S | --samples N
+                      time step, or N evenly spaced instants (default 361)
   --format csv|table  CSV (default) or an aligned table of the link columns, 4 decimals
   --forces            (analyze) add inverse dynamics from the masses and loads of the
                       document's "dynamics" or the example's (funsho-fourbar has them):

@@ -48,6 +48,12 @@ kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& invocat
 /// The sweep the speed and range options ask for, with `defaults` for what they leave out.
 kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Invocation& invocation, const GridDefaults& defaults);
 
+/// The time base --law asks for: the law from --law and its options, starting at --from
+/// (degrees) at the speed of --rpm / --omega; times from --from-time to --to-time (defaults:
+/// the table's span, a rise's duration, a ramp and one turn, one turn) every --step-time
+/// seconds or at --samples instants (default 361).
+kinematics::Result<kinematics::SweepSpec> timeSweepSpecFor(const Invocation& invocation, const GridDefaults& defaults);
+
 /// The linkage an invocation describes, swept over the grid it asks for (analyze, extremes).
 struct SweptMechanism {
   ResolvedMechanism resolved;

@@ -40,6 +40,7 @@ std::optional<Error> checkOptions(const Invocation& inv) {
 
 kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Invocation& inv, const GridDefaults& d) {
   if (auto e = checkOptions(inv)) return *e;
+  if (inv.law) return timeSweepSpecFor(inv, d);
   kinematics::SweepSpec spec;
   spec.omega = inv.rpm ? kinematics::rpmToRadPerSec(*inv.rpm) : inv.omega.value_or(d.omega);
   spec.alpha = inv.alpha.value_or(d.alpha);

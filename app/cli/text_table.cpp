@@ -13,7 +13,7 @@ void writeSweepTable(std::ostream& out, const kinematics::Mechanism& m, const ki
                      const kinematics::ForceSweep* forces, int decimals) {
   using kinematics::io::ColumnQuantity;
   std::vector<kinematics::io::SweepColumn> columns;
-  for (auto& c : kinematics::io::sweepColumns(m, r.request)) {
+  for (auto& c : kinematics::io::sweepColumns(m, r.request, !r.time.empty())) {
     // The crank's own ω and α are the constant input: the CSV has them, the table need not.
     const bool crankRate = (c.quantity == ColumnQuantity::LinkOmega || c.quantity == ColumnQuantity::LinkAlpha) &&
                            kinematics::io::isDrivenCrankLink(m, kinematics::LinkId{c.index});

@@ -9,11 +9,12 @@ namespace {
 
 constexpr const char* kLineEnd = "\r\n";
 
-// The input column is the requested grid: 12 significant digits print 30 as "30", not as the
-// radian round trip "29.999999999999996".
+// The input and time columns are the requested grid: 12 significant digits print 30 as "30",
+// not as the radian round trip "29.999999999999996", and 3 × 0.01 s as "0.03".
 std::string cellText(const SweepColumn& column, const SweepResult& r, std::size_t j) {
   const double value = column.value(r, j);
-  return column.quantity == ColumnQuantity::InputAngle ? formatShort(value, 12) : formatDouble(value);
+  const bool grid = column.quantity == ColumnQuantity::InputAngle || column.quantity == ColumnQuantity::Time;
+  return grid ? formatShort(value, 12) : formatDouble(value);
 }
 
 }  // namespace
@@ -37,7 +38,7 @@ std::vector<std::string> sweepCsvHeader(const Mechanism& m, const SolveRequest& 
 namespace {
 
 void writeCsv(std::ostream& out, const Mechanism& m, const SweepResult& r, const ForceSweep* forces) {
-  const std::vector<SweepColumn> columns = sweepColumns(m, r.request);
+  const std::vector<SweepColumn> columns = sweepColumns(m, r.request, !r.time.empty());
   const std::vector<ForceColumn> forceCols = forces ? forceColumns(forces->bodies) : std::vector<ForceColumn>{};
   for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << csvField(columns[c].name);
   for (const ForceColumn& c : forceCols) out << ',' << csvField(c.name);

@@ -33,6 +33,7 @@ bool SweepColumn::isRate() const {
 
 double SweepColumn::value(const SweepResult& r, std::size_t j) const {
   switch (quantity) {
+  case ColumnQuantity::Time: return r.time[j];
   case ColumnQuantity::InputAngle: return radToDeg(r.inputAngle[j]);
   case ColumnQuantity::LinkAngle: return radToDeg(r.linkAngle[index][j]);
   case ColumnQuantity::LinkOmega: return r.linkOmega[index][j];
@@ -51,6 +52,7 @@ double SweepColumn::value(const SweepResult& r, std::size_t j) const {
 double SweepColumn::valueOf(const Pose& p, double inputAngle, double nearDeg) const {
   const auto unwrapped = [&](double deg) { return nearDeg + std::remainder(deg - nearDeg, 360.0); };
   switch (quantity) {
+  case ColumnQuantity::Time: return 0.0;  // not a property of the pose
   case ColumnQuantity::InputAngle: return radToDeg(inputAngle);
   case ColumnQuantity::LinkAngle: return unwrapped(radToDeg(p.linkAngle[index]));
   case ColumnQuantity::LinkOmega: return p.linkOmega[index];
@@ -66,11 +68,13 @@ double SweepColumn::valueOf(const Pose& p, double inputAngle, double nearDeg) co
   return 0.0;
 }
 
-std::vector<SweepColumn> sweepColumns(const Mechanism& m, const SolveRequest& request) {
+std::vector<SweepColumn> sweepColumns(const Mechanism& m, const SolveRequest& request, bool timeBase) {
   using Q = ColumnQuantity;
   const bool vel = request.velocities || request.accelerations;
   const bool acc = request.accelerations;
-  std::vector<SweepColumn> columns{{"crank_angle_deg", Q::InputAngle, 0}};
+  std::vector<SweepColumn> columns;
+  if (timeBase) columns.push_back({"time_s", Q::Time, 0});
+  columns.push_back({"crank_angle_deg", Q::InputAngle, 0});
   for (std::size_t k = 0; k < m.links.size(); ++k) {
     const std::string& name = m.links[k].name;
     if (!isDrivenCrankLink(m, LinkId{k})) columns.push_back({name + "_angle_deg", Q::LinkAngle, k});

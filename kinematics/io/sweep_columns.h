@@ -2,6 +2,7 @@
 // The columns a sweep can be tabulated in, each with a name that carries its unit. The CSV
 // writer, the CLI's text table and (later) the GUI's plots all pick from this one list, so a
 // quantity has the same name and unit everywhere:
+//   time_s                             the instant, on a time base (SweepResult::time)
 //   crank_angle_deg                    the input angle (the sweep's grid)
 //   <link>_angle_deg                   each moving link other than the driven crank, unwrapped
 //   <link>_omega_rad_s, <link>_alpha_rad_s2   each moving link, crank first
@@ -17,6 +18,7 @@
 namespace linkwright::kinematics::io {
 
 enum class ColumnQuantity {
+  Time,
   InputAngle,
   LinkAngle,
   LinkOmega,
@@ -50,7 +52,8 @@ struct SweepColumn {
 /// the input angle and its ω, α are the driver's.
 bool isDrivenCrankLink(const Mechanism& mechanism, LinkId link);
 
-/// All columns available for this mechanism and request, in CSV order.
-std::vector<SweepColumn> sweepColumns(const Mechanism& mechanism, const SolveRequest& request);
+/// All columns available for this mechanism and request, in CSV order; `time_s` first when
+/// the sweep ran on a time base.
+std::vector<SweepColumn> sweepColumns(const Mechanism& mechanism, const SolveRequest& request, bool timeBase = false);
 
 }  // namespace linkwright::kinematics::io

@@ -108,12 +108,11 @@ public:
   }
 
 private:
-  double angleAt(std::size_t j) const { return sweepAngle(m_spec, j); }
-
   void solveOne(std::size_t j) {
-    const double angle = angleAt(j);
+    const DriverState driver = sweepDriver(m_spec, j);
+    const double angle = driver.angle;
     m_out.inputAngle[j] = angle;
-    const PoseReport report = solveSample(angle);
+    const PoseReport report = solveSample(driver);
     m_out.report[j] = report;
     if (report.status == PoseStatus::NotAssemblable) {
       m_writer.writeNothing(j);
@@ -139,7 +138,7 @@ private:
     }
     std::array<DriverState, kMaxBlock>& drivers = m_blockDrivers;
     std::array<PoseReport, kMaxBlock>& reports = m_blockReports;
-    for (std::size_t b = 0; b < count; ++b) drivers[b] = driver(angleAt(j + b));
+    for (std::size_t b = 0; b < count; ++b) drivers[b] = sweepDriver(m_spec, j + b);
     const BranchGuide keep{m_last->branchSign, {}};
     const std::size_t solved = solveBlockInto(m_mech, {drivers.data(), count}, m_request, {m_blockPoses.data(), count},
                                               keep, m_scope, {reports.data(), count});
@@ -172,10 +171,9 @@ private:
     m_haveBefore = true;
   }
 
-  DriverState driver(double angle) const { return {angle, m_spec.omega, m_spec.alpha}; }
-
-  PoseReport solve(double angle, const SolveRequest& request, Pose& pose, const BranchGuide& guide = {}) const {
-    return solvePoseInto(m_mech, driver(angle), request, pose, guide, &m_scope);
+  PoseReport solve(const DriverState& driver, const SolveRequest& request, Pose& pose,
+                   const BranchGuide& guide = {}) const {
+    return solvePoseInto(m_mech, driver, request, pose, guide, &m_scope);
   }
 
   // The current pose becomes the last, the last the one before it: the three poses rotate, no
@@ -192,23 +190,24 @@ private:
     m_haveLast = true;
   }
 
-  PoseReport solveSample(double angle) {
-    if (!m_haveLast) return solve(angle, m_request, *m_current);
+  PoseReport solveSample(const DriverState& driver) {
+    const double angle = driver.angle;
+    if (!m_haveLast) return solve(driver, m_request, *m_current);
     const BranchGuide keep{m_last->branchSign, {}};
-    PoseReport report = solve(angle, m_request, *m_current, keep);
+    PoseReport report = solve(driver, m_request, *m_current, keep);
     if (report.status == PoseStatus::NotAssemblable ||
         !branchAmbiguous(m_mech, m_dyads, m_lastAngle, *m_last, angle, *m_current))
       return report;
     const Eigen::Vector2d* before = m_haveBefore ? m_before->position.data() : nullptr;
     if (!refine(0, m_lastAngle, *m_last, m_beforeAngle, before, angle, scratch(0))) {
       // The path leaves the assemblable region between two samples: start afresh here.
-      const PoseReport afresh = solve(angle, m_request, *m_current);
+      const PoseReport afresh = solve(driver, m_request, *m_current);
       if (afresh.status != PoseStatus::NotAssemblable) m_out.lockedBetween.push_back({m_lastAngle, angle});
       return afresh;
     }
     const BranchGuide tracked{m_scratch[0].branchSign, {}};
     m_current->position = m_scratch[0].position;  // free points start from the tracked solution
-    return solve(angle, m_request, *m_current, tracked);
+    return solve(driver, m_request, *m_current, tracked);
   }
 
   // Positions at angle b continuing from pose `a` at angle aAngle; halves the step while a
@@ -219,15 +218,16 @@ private:
     out.position = a.position;
     out.assembled = true;
     const BranchGuide keep{a.branchSign, {}};
-    if (solve(b, kPositionsOnly, out, keep).status == PoseStatus::NotAssemblable) return false;
+    if (solve({b, 0.0, 0.0}, kPositionsOnly, out, keep).status == PoseStatus::NotAssemblable) return false;
     if (!branchAmbiguous(m_mech, m_dyads, aAngle, a, b, out)) return true;
     if (std::abs(b - aAngle) <= kMinRefineStep || depth == kMaxRefineDepth) {
       if (before == nullptr) return true;
-      const double ratio = (b - aAngle) / (aAngle - beforeAngle);
+      // A driver at rest between samples (a dwell) gives no direction to extrapolate.
+      const double ratio = aAngle != beforeAngle ? (b - aAngle) / (aAngle - beforeAngle) : 0.0;
       for (std::size_t i = 0; i < m_predicted.size(); ++i)
         m_predicted[i] = a.position[i] + ratio * (a.position[i] - before[i]);
       const BranchGuide nearest{{}, m_predicted};
-      solve(b, kPositionsOnly, out, nearest);
+      solve({b, 0.0, 0.0}, kPositionsOnly, out, nearest);
       return true;
     }
     const double mid = 0.5 * (aAngle + b);
@@ -313,7 +313,7 @@ void summarize(const Mechanism& m, const SweepSpec& spec, SweepResult& out) {
     if (r.status == PoseStatus::Ok) continue;
     if (!out.firstFailure && r.status == PoseStatus::NotAssemblable) {
       preparePose(m, scratch);
-      solvePoseInto(m, {out.inputAngle[j], spec.omega, spec.alpha}, kPositionsOnly, scratch);
+      solvePoseInto(m, sweepDriver(spec, j), kPositionsOnly, scratch);
       out.firstFailure = describeFailure(m, r, scratch, out.inputAngle[j]);
     }
     if (r.status != PoseStatus::NotAssemblable) continue;
@@ -331,7 +331,26 @@ bool SweepResult::lockedAfter(std::size_t sample) const {
          });
 }
 
+// A time base: a valid law, finite ordered times, within a table law's data.
+std::optional<Error> checkTimeBase(const TimeBase& time) {
+  if (auto e = checkMotionLaw(time.law)) return e;
+  if (auto e = checkMagnitude(time.fromTime, "from time", 1e6, "s")) return e;
+  if (auto e = checkMagnitude(time.toTime, "to time", 1e6, "s")) return e;
+  if (time.toTime < time.fromTime)
+    return Error{ErrorCode::InvalidValue, "to time",
+                 "to time must not be before from time (got " + formatNumber(time.fromTime) + " to " +
+                     formatNumber(time.toTime) + " s)"};
+  if (const auto span = lawTimeSpan(time.law); span && (time.fromTime < span->first || time.toTime > span->second))
+    return Error{ErrorCode::InvalidValue, "from time",
+                 "the times " + formatNumber(time.fromTime) + " to " + formatNumber(time.toTime) +
+                     " s leave the law's table, which runs from " + formatNumber(span->first) + " to " +
+                     formatNumber(span->second) + " s"};
+  return std::nullopt;
+}
+
 std::optional<Error> checkSweepSpec(const SweepSpec& spec) {
+  if (spec.time)
+    if (auto e = checkTimeBase(*spec.time)) return e;
   if (auto e = checkMagnitude(spec.fromAngle, "from angle", degToRad(kMaxAngleDeg), "rad (1e6 degrees)")) return e;
   if (auto e = checkMagnitude(spec.toAngle, "to angle", degToRad(kMaxAngleDeg), "rad (1e6 degrees)")) return e;
   if (auto e = checkMagnitude(spec.omega, "omega", kMaxOmega, "rad/s")) return e;
@@ -343,7 +362,22 @@ std::optional<Error> checkSweepSpec(const SweepSpec& spec) {
   return std::nullopt;
 }
 
+double sweepTime(const SweepSpec& spec, std::size_t index) {
+  if (!spec.time) return 0.0;
+  const TimeBase& t = *spec.time;
+  if (spec.samples <= 1) return t.fromTime;
+  const double u = static_cast<double>(index) / static_cast<double>(spec.samples - 1);
+  return index + 1 == spec.samples ? t.toTime : t.fromTime + u * (t.toTime - t.fromTime);
+}
+
+DriverState sweepDriver(const SweepSpec& spec, std::size_t index) {
+  if (!spec.time) return {sweepAngle(spec, index), spec.omega, spec.alpha};
+  const MotionState s = motionAt(spec.time->law, sweepTime(spec, index));
+  return {s.position, s.velocity, s.acceleration};
+}
+
 double sweepAngle(const SweepSpec& spec, std::size_t index) {
+  if (spec.time) return sweepDriver(spec, index).angle;
   if (spec.samples <= 1) return spec.fromAngle;
   const double t = static_cast<double>(index) / static_cast<double>(spec.samples - 1);
   return index + 1 == spec.samples ? spec.toAngle : spec.fromAngle + t * (spec.toAngle - spec.fromAngle);
@@ -359,6 +393,8 @@ std::optional<Error> sweepInto(const Mechanism& mechanism, const SweepSpec& spec
   normalized.velocities = request.velocities || request.accelerations;
   const SolveScope scope = scopeOf(mechanism, normalized.only);
   allocate(mechanism, spec.samples, normalized, scope, out);
+  out.time.resize(spec.time ? spec.samples : 0);
+  for (std::size_t j = 0; j < out.time.size(); ++j) out.time[j] = sweepTime(spec, j);
   Tracker(mechanism, spec, out.request, scope, out).run();
   summarize(mechanism, spec, out);
   return std::nullopt;

@@ -1,5 +1,6 @@
 #pragma once
-// A sweep solves a mechanism over a range of input angles at a given crank ω and α, tracking
+// A sweep solves a mechanism over a range of input angles at a given crank ω and α, or over a
+// range of times with the crank following a motion law (motion_law.h), tracking
 // each dyad's assembly branch continuously. Results are stored one column per quantity,
 // allocated once before the loop. Link angles are unwrapped, so they are continuous (no jumps
 // at ±180°).
@@ -18,6 +19,7 @@
 
 #include "kinematics/model/mechanism.h"
 #include "kinematics/model/result.h"
+#include "kinematics/solve/motion_law.h"
 #include "kinematics/solve/pose.h"
 
 #include <optional>
@@ -25,16 +27,29 @@
 
 namespace linkwright::kinematics {
 
-/// The input range and state of a sweep. Angles in rad; `samples` evenly spaced inputs from
-/// `fromAngle` to `toAngle` inclusive (one sample: `fromAngle` only). At every sample the crank
-/// has angular velocity `omega` (rad/s) and acceleration `alpha` (rad/s²): a kinematic state
-/// table, as the seeds' tables are, not a time integration.
+/// A time base: the driver follows `law` (motion_law.h), sampled at evenly spaced instants
+/// from `fromTime` to `toTime` inclusive (s).
+struct TimeBase {
+  MotionLaw law;
+  double fromTime = 0.0;
+  double toTime = 0.0;
+  bool operator==(const TimeBase&) const = default;
+};
+
+/// The input range and state of a sweep, in one of two forms:
+/// - an angle grid: `samples` evenly spaced inputs from `fromAngle` to `toAngle` (rad)
+///   inclusive (one sample: `fromAngle` only), at each of which the crank has angular
+///   velocity `omega` (rad/s) and acceleration `alpha` (rad/s²): a kinematic state table, as
+///   the seeds' tables are;
+/// - a time base (`time` set; the angles, ω and α above are then unused): `samples` instants,
+///   at each of which the crank's angle, ω and α are the motion law's.
 struct SweepSpec {
   double fromAngle = 0.0;
   double toAngle = 0.0;
   std::size_t samples = 1;
   double omega = 0.0;
   double alpha = 0.0;
+  std::optional<TimeBase> time;
   bool operator==(const SweepSpec&) const = default;
 };
 
@@ -52,6 +67,7 @@ struct AngleRange {
 /// columns are valid wherever assembled().
 struct SweepResult {
   SolveRequest request;
+  std::vector<double> time;        ///< s, on a time base (SweepSpec::time); else empty
   std::vector<double> inputAngle;  ///< rad
   std::vector<PoseReport> report;  ///< per sample: Ok, Singular or NotAssemblable
   std::vector<std::vector<Eigen::Vector2d>> position;
@@ -77,11 +93,19 @@ struct SweepResult {
   bool lockedAfter(std::size_t sample) const;
 };
 
-/// Error naming the field if the spec has a non-finite angle, ω or α, or zero samples.
+/// Error naming the field if the spec has a non-finite angle, ω or α, or zero samples; or, on
+/// a time base, an invalid law, a non-finite time, toTime < fromTime, or times outside a table
+/// law's data.
 std::optional<Error> checkSweepSpec(const SweepSpec& spec);
 
 /// The input angle of sample `index` (rad).
 double sweepAngle(const SweepSpec& spec, std::size_t index);
+
+/// The instant of sample `index` on a time base (s); 0 without one.
+double sweepTime(const SweepSpec& spec, std::size_t index);
+
+/// The crank's angle, ω and α at sample `index`.
+DriverState sweepDriver(const SweepSpec& spec, std::size_t index);
 
 /// Copies sample j of a sweep into a prepared pose: positions, velocities and accelerations of
 /// every point, angle, ω and α of every link. The sweep must hold all of them (the default

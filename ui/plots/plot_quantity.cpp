@@ -24,6 +24,7 @@ class Text {
 
 QuantityKind kindOf(ColumnQuantity c) {
   switch (c) {
+  case ColumnQuantity::Time:  // an x axis, never a curve
   case ColumnQuantity::InputAngle:
   case ColumnQuantity::LinkAngle:
   case ColumnQuantity::TransmissionAngle: return QuantityKind::Angle;

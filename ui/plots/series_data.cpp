@@ -19,6 +19,7 @@ public:
       return present ? &columns[index] : nullptr;
     };
     switch (q.column) {
+    case ColumnQuantity::Time: m_scalar = &s.time; break;
     case ColumnQuantity::InputAngle: m_scalar = &s.inputAngle; break;
     case ColumnQuantity::LinkAngle: m_scalar = pick(s.linkAngle, q.index); break;
     case ColumnQuantity::LinkOmega: m_scalar = pick(s.linkOmega, q.index); break;
