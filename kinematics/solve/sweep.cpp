@@ -340,6 +340,12 @@ std::optional<Error> checkTimeBase(const TimeBase& time) {
     return Error{ErrorCode::InvalidValue, "to time",
                  "to time must not be before from time (got " + formatNumber(time.fromTime) + " to " +
                      formatNumber(time.toTime) + " s)"};
+  // The laws are monotonic between their ends (a table is bounded by its rows), so the
+  // angles at the two ends bound every sample's: within the domain's ±1e6 degrees.
+  for (const double t : {time.fromTime, time.toTime})
+    if (auto e = checkMagnitude(motionAt(time.law, t).position, "the law's angle at " + formatNumber(t) + " s",
+                                degToRad(kMaxAngleDeg), "rad (1e6 degrees)"))
+      return e;
   if (const auto span = lawTimeSpan(time.law); span && (time.fromTime < span->first || time.toTime > span->second))
     return Error{ErrorCode::InvalidValue, "from time",
                  "the times " + formatNumber(time.fromTime) + " to " + formatNumber(time.toTime) +

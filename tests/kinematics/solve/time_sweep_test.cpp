@@ -113,6 +113,11 @@ TEST_CASE("a bad time base is refused with the reason", "[sweep][time][errors]")
   SweepSpec table = rampSpec();
   table.time->law = makeTableLaw({0.0, 0.5, 1.0, 1.5}, {0.0, 0.1, 0.3, 0.6}).value();
   CHECK_THAT(sweep(m, table).error().message, Catch::Contains("leave the law's table, which runs from 0 to 1.5 s"));
+  // 1e6 rad/s for 1e6 s would turn the crank 1e12 rad: past the domain's ±1e6 degrees.
+  SweepSpec endless = rampSpec();
+  endless.time = TimeBase{ConstantVelocity{0.0, 1e6}, -1e6, 1e6};
+  CHECK_THAT(sweep(m, endless).error().message,
+             Catch::Contains("the law's angle at -1e+06 s must be finite and within"));
   SweepSpec badLaw = rampSpec();
   badLaw.time->law = CycloidalRise{0.0, 1.0, -1.0};
   CHECK_THAT(sweep(m, badLaw).error().message, Catch::Contains("law.duration"));
