@@ -1,7 +1,7 @@
 // The window with linkages other than four-bars: Export ▸ CSV equals `linkwright-cli analyze
 // --example NAME` byte for byte, File ▸ New and the Examples menu offer every kind and example,
-// save → open in a new window reproduces the linkage, attaching a dyad swaps the four-bar's
-// lengths panel for the dimensions panel, and a corrupt file changes nothing.
+// save → open in a new window reproduces the linkage, attaching a dyad turns the dimensions
+// panel from the four-bar's named lengths to its points, and a corrupt file changes nothing.
 
 #include "ui/document/mechanism_document.h"
 #include "ui/main_window.h"
