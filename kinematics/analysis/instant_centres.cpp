@@ -1,6 +1,7 @@
 #include "kinematics/analysis/instant_centres.h"
 
 #include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/recognise.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/model/vec2.h"
 
@@ -128,44 +129,17 @@ Result<InstantCentres> instantCentres(const Mechanism& m, const Pose& pose) {
     return Error{ErrorCode::InvalidStructure, "pose",
                  "the pose has " + std::to_string(pose.position.size()) + " points but the mechanism has " +
                      std::to_string(m.points.size())};
-  const auto isGround = [&](PointId id) { return std::holds_alternative<GroundPoint>(m.points[id.index].definition); };
-  std::optional<std::size_t> tip, dyad;
-  std::size_t dyads = 0;
-  for (std::size_t i = 0; i < m.points.size(); ++i) {
-    const PointDefinition& d = m.points[i].definition;
-    if (std::holds_alternative<CrankPoint>(d)) tip = i;
-    else if (!std::holds_alternative<GroundPoint>(d) && !std::holds_alternative<AttachedPoint>(d)) {
-      ++dyads;
-      dyad = i;
-    }
-  }
-  const auto unsupported = [&](const std::string& why) {
-    return Error{ErrorCode::InvalidStructure, "mechanism",
-                 "instant centres are computed for four-bars and slider-cranks only: this linkage " + why};
-  };
-  if (!tip || dyads != 1)
-    return unsupported("has " + std::to_string(dyads) + " dyads where a four-bar or slider-crank has one");
-  const PointId pivot = std::get<CrankPoint>(m.points[*tip].definition).pivot;
-  const Eigen::Vector2d& o2 = pose.position[pivot.index];
-  const Eigen::Vector2d& b = pose.position[*tip];
-  const Eigen::Vector2d& c = pose.position[*dyad];
-  const PointDefinition& d = m.points[*dyad].definition;
-  if (const auto* rrr = std::get_if<RrrPoint>(&d)) {
-    const bool firstIsTip = rrr->first.index == *tip;
-    const PointId other = firstIsTip ? rrr->second : rrr->first;
-    if ((firstIsTip || rrr->second.index == *tip) && isGround(other) && other != pivot && isGround(pivot))
-      return fourBarInstantCentres(o2, pose.position[other.index], b, c);
-    return unsupported("has an RRR dyad at " + m.points[*dyad].name +
-                       " that does not join the crank tip to a ground pivot");
-  }
-  if (const auto* rrp = std::get_if<RrpPoint>(&d)) {
-    if (rrp->first.index == *tip && !rrp->guide.link && isGround(pivot))
-      return sliderCrankInstantCentres(o2, b, c,
-                                       Eigen::Vector2d(std::cos(rrp->guide.angle), std::sin(rrp->guide.angle)));
-    return unsupported("has a slider at " + m.points[*dyad].name +
-                       " that is not on a ground guide driven from the crank tip");
-  }
-  return unsupported("has a slotted link or a double slider at " + m.points[*dyad].name);
+  // What the linkage is decides the centres; where its links carry points does not matter.
+  const auto at = [&pose](PointId p) -> const Eigen::Vector2d& { return pose.position[p.index]; };
+  if (const auto f = asFourBar(m, PointsOnLinks::AnyLink))
+    return fourBarInstantCentres(at(f->o2), at(f->o4), at(f->b), at(f->c));
+  if (const auto s = asSliderCrank(m, PointsOnLinks::AnyLink))
+    return sliderCrankInstantCentres(at(s->o2), at(s->b), at(s->c),
+                                     Eigen::Vector2d(std::cos(s->guideAngle), std::sin(s->guideAngle)));
+  return Error{ErrorCode::InvalidStructure, "mechanism",
+               "instant centres are computed for four-bars and slider-cranks only: this linkage is neither (a crank, "
+               "one joint on its tip held by a second ground pivot or on a ground guide, and points fixed on their "
+               "links)"};
 }
 
 MechanicalAdvantage mechanicalAdvantage(const InstantCentres& c) {

@@ -25,9 +25,17 @@ bool joins(const Link& link, PointId a, PointId b) {
   return (link.first == a && link.second == b) || (link.first == b && link.second == a);
 }
 
+// Whether point `id`, fixed on a link, is one the recogniser allows: on the link B–C, or on
+// any link when `allowed` says so.
+bool allowedRider(const Mechanism& m, PointId id, PointId b, PointId c, PointsOnLinks allowed) {
+  const auto* attached = definitionOf<AttachedPoint>(m, id);
+  if (!attached || attached->link.index >= m.links.size()) return false;
+  return allowed == PointsOnLinks::AnyLink || joins(m.links[attached->link.index], b, c);
+}
+
 }  // namespace
 
-std::optional<FourBarStructure> asFourBar(const Mechanism& m) {
+std::optional<FourBarStructure> asFourBar(const Mechanism& m, PointsOnLinks allowed) {
   if (!m.constraints.empty()) return std::nullopt;
   const auto b = crankPoint(m);
   if (!b) return std::nullopt;
@@ -59,11 +67,27 @@ std::optional<FourBarStructure> asFourBar(const Mechanism& m) {
         continue;
       }
     }
-    // Anything else must be a point fixed on the coupler B–C.
-    const auto* attached = definitionOf<AttachedPoint>(m, id);
-    if (!found || !attached || attached->link.index >= m.links.size() ||
-        !joins(m.links[attached->link.index], found->b, found->c))
-      return std::nullopt;
+    // Anything else must be a point fixed on the coupler B–C (or, if allowed, any link).
+    if (!found || !allowedRider(m, id, found->b, found->c, allowed)) return std::nullopt;
+  }
+  return found;
+}
+
+std::optional<SliderCrankStructure> asSliderCrank(const Mechanism& m, PointsOnLinks allowed) {
+  if (!m.constraints.empty()) return std::nullopt;
+  const auto b = crankPoint(m);
+  if (!b) return std::nullopt;
+  const PointId o2 = definitionOf<CrankPoint>(m, *b)->pivot;
+  std::optional<SliderCrankStructure> found;
+  for (std::size_t i = 0; i < m.points.size(); ++i) {
+    const PointId id{i};
+    if (id == *b || definitionOf<GroundPoint>(m, id)) continue;
+    const auto* slider = definitionOf<RrpPoint>(m, id);
+    if (slider && !found && slider->first == *b && !slider->guide.link) {
+      found = SliderCrankStructure{o2, *b, id, slider->guide.angle};
+      continue;
+    }
+    if (!found || !allowedRider(m, id, found->b, found->c, allowed)) return std::nullopt;
   }
   return found;
 }

@@ -24,9 +24,29 @@ struct FourBarStructure {
   double inputAngle(double frameCrankAngle) const { return frameCrankAngle + frameAngle - crankPhase; }
 };
 
+/// Which points fixed on links a recogniser lets a linkage carry and still be the textbook
+/// mechanism: the four-bar's editors show a point on the coupler only, while its instant
+/// centres do not depend on where its links carry points.
+enum class PointsOnLinks {
+  CouplerOnly,  ///< a four-bar: on the coupler B–C (a slider-crank: on its rod B–C)
+  AnyLink,      ///< on any of the mechanism's moving links
+};
+
 /// The mechanism's four-bar, if it is one. Safe on an unchecked mechanism (its lengths are
 /// then as stored: checkFourBarLengths says whether they are valid).
-std::optional<FourBarStructure> asFourBar(const Mechanism& mechanism);
+std::optional<FourBarStructure> asFourBar(const Mechanism& mechanism,
+                                          PointsOnLinks allowed = PointsOnLinks::CouplerOnly);
+
+/// A mechanism that is a slider-crank: a crank O2→B and a slider C on B along a straight
+/// ground guide, and nothing else but ground points and points fixed on its links.
+struct SliderCrankStructure {
+  PointId o2, b, c;
+  double guideAngle = 0.0;  ///< the guide's direction (rad, CCW from +x)
+};
+
+/// The mechanism's slider-crank, if it is one. Safe on an unchecked mechanism.
+std::optional<SliderCrankStructure> asSliderCrank(const Mechanism& mechanism,
+                                                  PointsOnLinks allowed = PointsOnLinks::CouplerOnly);
 
 /// A mechanism that is a quick-return shaper or Whitworth: a crank O2→B, a slotted rocker
 /// through B about O4 ending at D, and a ram R on a horizontal ground guide, linked to D.

@@ -262,3 +262,18 @@ TEST_CASE("bad input gives an error naming the problem", "[analysis][centres][er
   REQUIRE_FALSE(wrongPose.ok());
   CHECK(wrongPose.error().message == "the pose has 0 points but the mechanism has 4");
 }
+
+TEST_CASE("a four-bar whose rocker carries a point has the same centres", "[analysis][centres]") {
+  // The centres depend on the loop, not on where its links carry points.
+  Mechanism plain = makeFourBar({60, 25, 70, 45}, Branch::Open).value();
+  Mechanism carrying = plain;
+  carrying.points.push_back({"R", AttachedPoint{fourbar::kRocker, 30.0, 5.0}});
+  for (const double deg : {10.0, 130.0, 250.0}) {
+    CAPTURE(deg);
+    const auto a = instantCentres(plain, solvePose(plain, {degToRad(deg), 1.0, 0.0}).value());
+    const auto b = instantCentres(carrying, solvePose(carrying, {degToRad(deg), 1.0, 0.0}).value());
+    REQUIRE(a.ok());
+    REQUIRE(b.ok());
+    CHECK(*b == *a);
+  }
+}

@@ -101,3 +101,28 @@ TEST_CASE("asQuickReturn reads makeShaper's geometry and ram branch back", "[rec
       CHECK(q->ramBranch == branch);
     }
 }
+
+TEST_CASE("a point on the rocker is allowed where PointsOnLinks::AnyLink says so", "[recognise]") {
+  Mechanism m = drawnFourBar(Branch::Open);
+  std::get<AttachedPoint>(m.points.back().definition).link = LinkId{1};  // on the rocker
+  const auto s = asFourBar(m, PointsOnLinks::AnyLink);
+  REQUIRE(s.has_value());
+  CHECK(s->lengths == asFourBar(drawnFourBar(Branch::Open))->lengths);
+  CHECK_FALSE(asSliderCrank(m, PointsOnLinks::AnyLink).has_value());
+}
+
+TEST_CASE("asSliderCrank reads makeSliderCrank's points and guide, and refuses the rest", "[recognise]") {
+  for (const bool reversed : {false, true}) {
+    const SliderCrankGeometry g{46.0, 150.0, 12.0, reversed};
+    const auto s = asSliderCrank(makeSliderCrank(g).value());
+    REQUIRE(s.has_value());
+    CHECK(s->o2 == slidercrank::kO2);
+    CHECK(s->b == slidercrank::kB);
+    CHECK(s->c == slidercrank::kC);
+    CHECK(std::cos(s->guideAngle) == within(reversed ? -1.0 : 1.0, 1e-15));
+  }
+  CHECK_FALSE(asSliderCrank(drawnFourBar(Branch::Open)).has_value());
+  CHECK_FALSE(asSliderCrank(*makeShaper(kSeedShaper)).has_value());
+  CHECK_FALSE(asSliderCrank(*makeSixBar(kWattIISixBar)).has_value());
+  CHECK_FALSE(asFourBar(*makeSliderCrank(kLs3Engine)).has_value());
+}
