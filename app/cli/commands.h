@@ -30,6 +30,8 @@ struct GridDefaults {
   double fromDeg = 0.0;
   double toDeg = 360.0;
   double stepDeg = 1.0;
+  std::optional<kinematics::TimeBase> time;  ///< a document's time base: its crank's motion law
+  long long timeSamples = 0;                 ///< the instants of that time base
 };
 
 /// The linkage an invocation describes (--fourbar lengths, an --example or a document),

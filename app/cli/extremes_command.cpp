@@ -58,6 +58,11 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
   };
   const auto swept = sweepInvocation(inv);
   if (!swept) return fail(swept.error());
+  // Refinement between samples moves the crank at one ω and α: an angle grid's state.
+  if (swept->spec.time)
+    return fail(k::Error{k::ErrorCode::InvalidValue, "FILE",
+                         "extremes refines over an angle grid, and this document's crank follows a motion law in "
+                         "time: use analyze (or give --law with analyze)"});
   const auto* resolved = &swept->resolved;
   const auto* spec = &swept->spec;
   const auto* result = &swept->result;

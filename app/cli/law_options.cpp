@@ -6,6 +6,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -17,6 +18,7 @@ using k::Error;
 using k::ErrorCode;
 
 constexpr long long kDefaultTimeSamples = 361;
+constexpr std::uintmax_t kMaxTableBytes = 64u << 20;
 
 Error badValue(const std::string& option, const std::string& why) {
   return Error{ErrorCode::InvalidValue, option, option + " " + why};
@@ -34,6 +36,11 @@ std::optional<double> parseCell(std::string cell) {
 // A measured θ(t): a header naming the time in s and the angle in degrees or radians
 // ("time_s,crank_angle_deg"), then one row per instant.
 k::Result<k::TableLaw> readLawTable(const std::string& path) {
+  // A table is a file of text: not a device or a pipe, and not larger than a measurement is.
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error) || std::filesystem::file_size(path, error) > kMaxTableBytes)
+    return badValue("--law-table",
+                    path + " cannot be opened for reading as a table (a regular file of at most 64 MiB)");
   std::ifstream file(path);
   if (!file) return badValue("--law-table", path + " cannot be opened for reading");
   std::string header;

@@ -17,7 +17,13 @@ namespace {
 
 // A design's grid as defaults: its samples become the step that reproduces them.
 GridDefaults gridOf(const k::Design& d) {
-  return {d.omega, d.alpha, d.fromDeg, d.toDeg, (d.toDeg - d.fromDeg) / static_cast<double>(d.samples - 1)};
+  return {d.omega,
+          d.alpha,
+          d.fromDeg,
+          d.toDeg,
+          (d.toDeg - d.fromDeg) / static_cast<double>(d.samples - 1),
+          d.time,
+          static_cast<long long>(d.samples)};
 }
 
 // The document named on the command line; errors name the file.

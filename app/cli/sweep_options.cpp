@@ -41,6 +41,24 @@ std::optional<Error> checkOptions(const Invocation& inv) {
 kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Invocation& inv, const GridDefaults& d) {
   if (auto e = checkOptions(inv)) return *e;
   if (inv.law) return timeSweepSpecFor(inv, d);
+  if (d.time) {
+    // A document whose crank follows a law: its time base, at --samples instants if given.
+    for (const auto& [given, option] : {std::pair{inv.rpm.has_value(), "--rpm"},
+                                        {inv.omega.has_value(), "--omega"},
+                                        {inv.alpha.has_value(), "--alpha"},
+                                        {inv.fromDeg.has_value(), "--from"},
+                                        {inv.toDeg.has_value(), "--to"},
+                                        {inv.stepDeg.has_value(), "--step"}})
+      if (given)
+        return badValue(option,
+                        "does not apply: this document's crank follows a motion law in time (give --law "
+                        "to replace it)");
+    kinematics::SweepSpec spec;
+    spec.time = d.time;
+    spec.samples = static_cast<std::size_t>(inv.samples.value_or(d.timeSamples));
+    if (auto e = kinematics::checkSweepSpec(spec)) return badValue("--samples", e->message);
+    return spec;
+  }
   kinematics::SweepSpec spec;
   spec.omega = inv.rpm ? kinematics::rpmToRadPerSec(*inv.rpm) : inv.omega.value_or(d.omega);
   spec.alpha = inv.alpha.value_or(d.alpha);

@@ -18,6 +18,8 @@ std::optional<Error> checkDesign(const Design& d) {
     }
   if (auto e = checkMechanism(d.mechanism)) return e;
   if (auto e = checkDriveAndGrid(d.omega, d.alpha, d.fromDeg, d.toDeg, d.samples)) return e;
+  if (d.time)
+    if (auto e = checkTimeBase(*d.time)) return e;
   return checkDesignDynamics(d.mechanism, d.dynamics);
 }
 
@@ -50,7 +52,7 @@ std::size_t samplesEveryHalfDegree(double fromDeg, double toDeg) {
 }
 
 SweepSpec designSweepSpec(const Design& d) {
-  return {degToRad(d.fromDeg), degToRad(d.toDeg), d.samples, d.omega, d.alpha};
+  return {degToRad(d.fromDeg), degToRad(d.toDeg), d.samples, d.omega, d.alpha, d.time};
 }
 
 Result<Design> fourBarDesign(const FourBarLengths& lengths, Branch branch, const std::string& lengthUnit,

@@ -26,6 +26,9 @@ struct Design {
   double toDeg = 360.0;       ///< analysis grid end, degrees
   std::size_t samples = 721;  ///< grid points from fromDeg to toDeg inclusive (≥ 2)
   LinkageDynamics dynamics;   ///< masses and loads for forces, by link and point name; empty: none
+  /// A time base: the crank follows a motion law, analysed at `samples` instants from its
+  /// fromTime to its toTime; omega, alpha, fromDeg and toDeg are then unused.
+  std::optional<TimeBase> time;
   bool operator==(const Design&) const = default;
 };
 
@@ -45,7 +48,7 @@ std::optional<Error> checkDesignDynamics(const Mechanism& mechanism, const Linka
 /// Grid points every 0.5° from fromDeg to toDeg inclusive: how examples become designs.
 std::size_t samplesEveryHalfDegree(double fromDeg, double toDeg);
 
-/// The design's analysis grid at its crank speed.
+/// The design's analysis grid: its angles at its crank speed, or its time base.
 SweepSpec designSweepSpec(const Design& design);
 
 /// A four-bar design (makeFourBar's points O2, O4, B, C and P, links crank, coupler,

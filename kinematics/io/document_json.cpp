@@ -3,6 +3,7 @@
 #include "kinematics/io/dynamics_json.h"
 #include "kinematics/io/json.h"
 #include "kinematics/io/json_reader.h"
+#include "kinematics/io/law_json.h"
 #include "kinematics/io/mechanism_json.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/mechanism_check.h"
@@ -76,23 +77,41 @@ std::string documentPath(const std::string& field) {
   if (field == "alpha") return "driver.alpha_rad_s2";
   if (field == "fromDeg") return "analysis.from_deg";
   if (field == "toDeg") return "analysis.to_deg";
+  if (field == "from time") return "analysis.from_time_s";
+  if (field == "to time") return "analysis.to_time_s";
+  if (field == "law.start") return "driver.law.start_rad";
+  if (field == "law.rise") return "driver.law.rise_rad";
+  if (field == "law.duration") return "driver.law.duration_s";
+  if (field == "law.rampTime") return "driver.law.ramp_time_s";
+  if (field.rfind("law peak ", 0) == 0) return "driver.law's " + field.substr(4);
+  if (field.rfind("the law's ", 0) == 0) return "driver.law's " + field.substr(10);
   return "analysis." + field;
 }
 
 // The driver, analysis and dynamics members.
 void writeMotion(std::ostream& s, const Design& d) {
   s << "\n  },\n  \"driver\": {\"omega_rad_s\": " << formatJsonNumber(d.omega)
-    << ", \"alpha_rad_s2\": " << formatJsonNumber(d.alpha)
-    << "},\n  \"analysis\": {\"from_deg\": " << formatJsonNumber(d.fromDeg)
-    << ", \"to_deg\": " << formatJsonNumber(d.toDeg) << ", \"samples\": " << d.samples << "}";
+    << ", \"alpha_rad_s2\": " << formatJsonNumber(d.alpha);
+  if (d.time) {
+    s << ",\n    \"law\": ";
+    writeLaw(s, d.time->law);
+  }
+  s << "},\n  \"analysis\": {\"from_deg\": " << formatJsonNumber(d.fromDeg)
+    << ", \"to_deg\": " << formatJsonNumber(d.toDeg) << ", \"samples\": " << d.samples;
+  if (d.time)
+    s << ", \"from_time_s\": " << formatJsonNumber(d.time->fromTime)
+      << ", \"to_time_s\": " << formatJsonNumber(d.time->toTime);
+  s << "}";
   writeDynamicsMember(s, d.dynamics);
   s << "\n}\n";
 }
 
 void readMotion(const JsonValue& root, JsonReader& r, Design& d) {
+  const JsonValue* law = nullptr;
   if (const JsonValue* drv = r.object(root, "driver", "driver")) {
     d.omega = r.number(*drv, "omega_rad_s", "driver.omega_rad_s").value_or(0.0);
     d.alpha = r.number(*drv, "alpha_rad_s2", "driver.alpha_rad_s2").value_or(0.0);
+    law = r.object(*drv, "law", "driver.law", false);
   }
   if (const JsonValue* a = r.object(root, "analysis", "analysis")) {
     d.fromDeg = r.number(*a, "from_deg", "analysis.from_deg").value_or(0.0);
@@ -101,6 +120,13 @@ void readMotion(const JsonValue& root, JsonReader& r, Design& d) {
     if (!r.error && (samples != std::floor(samples) || samples < 2 || samples > 1e7))
       r.fail("analysis.samples", "must be a whole number from 2 to 10000000 (got " + formatShort(samples) + ")");
     else d.samples = static_cast<std::size_t>(samples);
+    // A law puts the analysis on a time base (version 4).
+    if (law != nullptr) {
+      auto read = readLaw(*law, "driver.law", r);
+      const double from = r.number(*a, "from_time_s", "analysis.from_time_s").value_or(0.0);
+      const double to = r.number(*a, "to_time_s", "analysis.to_time_s").value_or(0.0);
+      if (read) d.time = TimeBase{std::move(*read), from, to};
+    }
   }
 }
 
@@ -112,12 +138,12 @@ void writeLinkage(std::ostream& s, const Design& d) {
 }
 
 // A design check's error restated with the document path, so the message names what is in
-// the file (the check's message starts with its own field name).
+// the file (a check's message starts with its own field name, or else is quoted whole).
 std::optional<Error> inDocument(std::optional<Error> e) {
   if (!e) return std::nullopt;
   const std::string path = documentPath(e->field);
-  const std::string reason = e->message.substr(std::min(e->message.size(), e->message.find(' ')));
-  return Error{e->code, path, path + reason};
+  const bool named = e->message.rfind(e->field, 0) == 0;
+  return Error{e->code, path, path + (named ? e->message.substr(e->field.size()) : ": " + e->message)};
 }
 
 // A four-bar's lengths and coupler point are checked by their document names; the built
@@ -137,12 +163,18 @@ Result<Mechanism> buildRead(const FourBarMembers& f) {
 std::optional<Error> checkRead(const Design& d) {
   if (auto e = checkMechanism(d.mechanism)) return Error{e->code, "mechanism." + e->field, "mechanism." + e->message};
   if (auto e = inDocument(checkDriveAndGrid(d.omega, d.alpha, d.fromDeg, d.toDeg, d.samples))) return e;
+  if (d.time)
+    if (auto e = inDocument(checkTimeBase(*d.time))) return e;
   return checkDocumentDynamics(d.mechanism, d.dynamics);
 }
 
-// Version 3 added "dynamics": a design without masses or loads is written as version 2, so
-// Linkwright 2 readers still open it; one with them as 3, so they refuse it rather than drop them.
-int versionFor(const Design& design) { return design.dynamics.empty() ? 2 : kDocumentVersion; }
+// Version 3 added "dynamics" and version 4 the driver's "law": a design is written as the
+// oldest version that holds it, so older Linkwrights still open it, or refuse it rather than
+// drop what they do not know.
+int versionFor(const Design& design) {
+  if (design.time) return 4;
+  return design.dynamics.empty() ? 2 : 3;
+}
 
 }  // namespace
 

@@ -2,7 +2,9 @@
 // The Linkwright document: a Design as JSON, with a format name and a version so that a file
 // from a newer Linkwright is refused with a clear message instead of misread. Every design is
 // written as "type": "linkage" (its points, links and constraints: mechanism_json.h), version 2,
-// or version 3 when it carries "dynamics" (masses and loads, dynamics_json.h). Version 1 and 2
+// version 3 when it carries "dynamics" (masses and loads, dynamics_json.h), version 4 when its
+// crank follows a motion law in time ("driver.law", law_json.h, with "analysis.from_time_s"
+// and "to_time_s"). Version 1 and 2
 // files that hold a four-bar by its lengths ("type": "four-bar") still read, into the mechanism
 // makeFourBar builds, so they analyse as before and re-save in the linkage form.
 //
@@ -29,9 +31,9 @@
 
 namespace linkwright::kinematics::io {
 
-/// The newest document version this build reads, and writes for a design with dynamics
-/// (a design without them is written as version 2).
-inline constexpr int kDocumentVersion = 3;
+/// The newest document version this build reads, and writes for a design with a motion law
+/// (one with dynamics only is written as version 3, one with neither as version 2).
+inline constexpr int kDocumentVersion = 4;
 
 /// The document text for a design (UTF-8, LF line ends, trailing newline).
 std::string writeDocument(const Design& design);

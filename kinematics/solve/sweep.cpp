@@ -331,7 +331,6 @@ bool SweepResult::lockedAfter(std::size_t sample) const {
          });
 }
 
-// A time base: a valid law, finite ordered times, within a table law's data.
 std::optional<Error> checkTimeBase(const TimeBase& time) {
   if (auto e = checkMotionLaw(time.law)) return e;
   if (auto e = checkMagnitude(time.fromTime, "from time", 1e6, "s")) return e;

@@ -93,6 +93,11 @@ struct SweepResult {
   bool lockedAfter(std::size_t sample) const;
 };
 
+/// Error naming the field ("law.duration", "from time", …) for an invalid law, a non-finite
+/// time, toTime < fromTime, a law that would turn the crank past ±1e6 degrees, or times outside
+/// a table law's data.
+std::optional<Error> checkTimeBase(const TimeBase& time);
+
 /// Error naming the field if the spec has a non-finite angle, ω or α, or zero samples; or, on
 /// a time base, an invalid law, a non-finite time, toTime < fromTime, or times outside a table
 /// law's data.

@@ -5,6 +5,8 @@
 
 #include "tests/cli/run_cli.h"
 
+#include "kinematics/design/design.h"
+#include "kinematics/io/document_json.h"
 #include "kinematics/model/units.h"
 
 #include "tests/support/approx.h"
@@ -109,4 +111,33 @@ TEST_CASE("bad law options are refused with the option named", "[cli][law][error
     CHECK_THAT(r.err, Catch::Contains(message));
     CHECK(r.out.empty());
   }
+}
+
+TEST_CASE("a document whose crank follows a law is analysed on its time base", "[cli][law][document]") {
+  k::Design d = *k::designForExample("thesis-crank-rocker");
+  d.samples = 31;
+  d.time = k::TimeBase{k::RampToSpeed{0.0, k::rpmToRadPerSec(10.0), 2.0}, 0.0, 3.0};
+  const std::string path = (std::filesystem::temp_directory_path() / "linkwright_law_document.linkwright").string();
+  {
+    std::ofstream f(path);
+    f << k::io::writeDocument(d);
+  }
+  // The same table as the options that describe the same law.
+  const auto fromFile = runCliCommand({"analyze", path});
+  const auto fromOptions = runCliCommand({"analyze", "--example", "thesis-crank-rocker", "--law", "ramp", "--ramp-time",
+                                          "2", "--to-time", "3", "--samples", "31"});
+  INFO(fromFile.err);
+  REQUIRE(fromFile.code == 0);
+  REQUIRE(fromOptions.code == 0);
+  CHECK(fromFile.out == fromOptions.out);
+  CHECK(rowsOf(fromFile.out, kHead).size() == 31);
+  CHECK(runCliCommand({"analyze", path, "--samples", "4"}).out.size() < fromFile.out.size());
+  // The angle grid's options and extremes' refinement do not apply to it.
+  const auto to = runCliCommand({"analyze", path, "--to", "90"});
+  CHECK(to.code == 2);
+  CHECK_THAT(to.err, Catch::Contains("--to does not apply: this document's crank follows a motion law in time"));
+  const auto extremes = runCliCommand({"extremes", path});
+  CHECK(extremes.code == 2);
+  CHECK_THAT(extremes.err, Catch::Contains("extremes refines over an angle grid"));
+  std::filesystem::remove(path);
 }

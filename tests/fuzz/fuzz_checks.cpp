@@ -109,10 +109,12 @@ std::optional<std::string> checkArguments(std::string_view bytes) {
   const Command c = inv.command;
   // A sweep is run only on a grid of at most a few thousand angles, so no input makes an
   // iteration slow (the default grid of --fourbar is 1°, of an example its own few hundred).
-  const bool smallGrid = inv.samples ? *inv.samples <= 4000 : (!inv.stepDeg || *inv.stepDeg >= 0.1);
+  // (a law's --step-time may ask for up to 1e7 instants: such runs are left out too).
+  const bool smallGrid =
+      inv.samples ? *inv.samples <= 4000 : (!inv.stepDeg || *inv.stepDeg >= 0.1) && !(inv.law && inv.stepTime);
   const bool cheap = c == Command::Classify || c == Command::Centres || c == Command::Examples || c == Command::Help ||
                      c == Command::Version || ((c == Command::Analyze || c == Command::Extremes) && smallGrid);
-  if (!cheap || inv.outputFile || inv.svgFile || inv.documentPath) return std::nullopt;
+  if (!cheap || inv.outputFile || inv.svgFile || inv.documentPath || inv.lawTable) return std::nullopt;
   return checkRun(args);
 }
 

@@ -222,3 +222,18 @@ TEST_CASE("an edit that moves the crank restores the crank angle on undo", "[ui]
   doc.undoStack()->redo();
   CHECK(doc.crankAngle() == 1.25);
 }
+
+TEST_CASE("a design whose crank follows a motion law is refused with the reason, for now", "[ui][document][law]") {
+  // The designer shows angle grids; it says so instead of dropping the law.
+  MechanismDocument doc;
+  kinematics::Design timed = doc.design();
+  timed.time = kinematics::TimeBase{kinematics::CycloidalRise{0.0, 1.0, 0.5}, 0.0, 0.5};
+  REQUIRE_FALSE(kinematics::checkDesign(timed).has_value());
+  const auto why = doc.validate(timed);
+  REQUIRE(why.has_value());
+  CHECK(why->contains("motion law in time"));
+  CHECK(why->contains("linkwright-cli analyze"));
+  const kinematics::Design before = doc.design();
+  CHECK(doc.edit(timed, "law").has_value());
+  CHECK(doc.design() == before);
+}

@@ -25,6 +25,11 @@ MechanismDocument::MechanismDocument(QObject* parent)
 
 std::optional<QString> MechanismDocument::validate(const k::Design& design) const {
   if (auto e = k::checkDesign(design)) return QString::fromStdString(e->message);
+  // Refused rather than shown on the angle grid, which would quietly drop the law.
+  if (design.time)
+    return tr(
+        "its crank follows a motion law in time, which the designer cannot show yet; "
+        "linkwright-cli analyze analyses it");
   if (const auto fourBar = k::asFourBar(design.mechanism)) {
     const k::InputRange range = k::fourBarInputRange(fourBar->lengths);
     if (range.ranges.empty() && !range.fullRotation)

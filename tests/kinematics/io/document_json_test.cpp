@@ -200,7 +200,7 @@ TEST_CASE("bad documents are refused with the member named", "[io][document][err
       {"[1, 2]", "document must be a JSON object"},
       {replaced(good, "\"linkwright\"", "\"solvespace\""), "not a Linkwright document"},
       {replaced(good, "\"version\": 2", "\"version\": 7"),
-       "this file is document version 7, written by a newer Linkwright; this one reads up to version 3"},
+       "this file is document version 7, written by a newer Linkwright; this one reads up to version 4"},
       {replaced(good, "\"version\": 2", "\"version\": 1.5"), "version must be a whole number"},
       {replaced(good, "\"version\": 2", "\"version\": \"1\""), "version must be a number"},
       {replaced(good, "\"four-bar\"", "\"six-bar\""),
@@ -228,7 +228,7 @@ TEST_CASE("a damaged four-bar saved in the linkage form is refused with the memb
   auto [text, expected] = GENERATE_COPY(table<std::string, std::string>({
       {replaced(good, "\"linkwright\"", "\"solvespace\""), "not a Linkwright document"},
       {replaced(good, "\"version\": 2", "\"version\": 7"),
-       "this file is document version 7, written by a newer Linkwright; this one reads up to version 3"},
+       "this file is document version 7, written by a newer Linkwright; this one reads up to version 4"},
       {replaced(good, "\"version\": 2", "\"version\": 1"),
        "must be \"four-bar\" in a version 1 document (got \"linkage\")"},
       {replaced(good, "\"first_length\": 70", "\"first_length\": -70"),

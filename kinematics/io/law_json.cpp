@@ -1,0 +1,87 @@
+#include "kinematics/io/law_json.h"
+
+#include "kinematics/io/number_format.h"
+
+namespace linkwright::kinematics::io {
+namespace {
+
+std::string number(double value) { return formatJsonNumber(value); }
+
+void writeList(std::ostream& out, const std::vector<double>& values) {
+  out << '[';
+  for (std::size_t i = 0; i < values.size(); ++i) out << (i ? ", " : "") << number(values[i]);
+  out << ']';
+}
+
+struct LawWriter {
+  std::ostream& out;
+  void operator()(const ConstantVelocity& l) const {
+    out << R"({"type": "constant", "start_rad": )" << number(l.start) << R"(, "velocity_rad_s": )" << number(l.velocity)
+        << '}';
+  }
+  void operator()(const RampToSpeed& l) const {
+    out << R"({"type": "ramp", "start_rad": )" << number(l.start) << R"(, "velocity_rad_s": )" << number(l.velocity)
+        << R"(, "ramp_time_s": )" << number(l.rampTime) << '}';
+  }
+  void rise(const char* type, double start, double rise, double duration) const {
+    out << R"({"type": ")" << type << R"(", "start_rad": )" << number(start) << R"(, "rise_rad": )" << number(rise)
+        << R"(, "duration_s": )" << number(duration) << '}';
+  }
+  void operator()(const CycloidalRise& l) const { rise("cycloidal", l.start, l.rise, l.duration); }
+  void operator()(const PolynomialRise& l) const { rise("345", l.start, l.rise, l.duration); }
+  void operator()(const TableLaw& l) const {
+    out << R"({"type": "table", "time_s": )";
+    writeList(out, l.time);
+    out << R"(, "angle_rad": )";
+    writeList(out, l.position);
+    out << '}';
+  }
+};
+
+std::vector<double> readList(const JsonValue& parent, const std::string& key, const std::string& path, JsonReader& r) {
+  std::vector<double> values;
+  const JsonValue* list = r.array(parent, key, path + "." + key);
+  if (list == nullptr) return values;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const JsonValue& item = (*list)[i];
+    if (!item.is_number()) {
+      r.fail(path + "." + key + "[" + std::to_string(i) + "]", "must be a number");
+      return values;
+    }
+    values.push_back(item.get<double>());
+  }
+  return values;
+}
+
+}  // namespace
+
+void writeLaw(std::ostream& out, const MotionLaw& law) { std::visit(LawWriter{out}, law); }
+
+std::optional<MotionLaw> readLaw(const JsonValue& value, const std::string& path, JsonReader& r) {
+  const auto type = r.string(value, "type", path + ".type");
+  if (!type) return std::nullopt;
+  const auto num = [&](const char* key) { return r.number(value, key, path + "." + key).value_or(0.0); };
+  std::optional<MotionLaw> law;
+  if (*type == "constant") law = ConstantVelocity{num("start_rad"), num("velocity_rad_s")};
+  else if (*type == "ramp") law = RampToSpeed{num("start_rad"), num("velocity_rad_s"), num("ramp_time_s")};
+  else if (*type == "cycloidal") law = CycloidalRise{num("start_rad"), num("rise_rad"), num("duration_s")};
+  else if (*type == "345") law = PolynomialRise{num("start_rad"), num("rise_rad"), num("duration_s")};
+  else if (*type == "table") {
+    auto time = readList(value, "time_s", path, r);
+    auto angle = readList(value, "angle_rad", path, r);
+    if (r.error) return std::nullopt;
+    auto table = makeTableLaw(std::move(time), std::move(angle));
+    if (!table) {
+      r.fail(path, table.error().message);
+      return std::nullopt;
+    }
+    law = std::move(*table);
+  } else {
+    r.fail(path + ".type",
+           "must be \"constant\", \"ramp\", \"cycloidal\", \"345\" or \"table\" (got \"" + *type + "\")");
+  }
+  if (r.error) return std::nullopt;
+  return law;
+}
+
+}  // namespace linkwright::kinematics::io
