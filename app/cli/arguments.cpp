@@ -54,9 +54,10 @@ const std::set<std::string>& optionsOf(Command command) {
       "--from",    "--to",       "--step",      "--samples",   "--branch",  "--coupler-point",
       "-o",        "--output",   "--format",    "--forces",    "--law",     "--ramp-time",
       "--rise",    "--duration", "--law-table", "--from-time", "--to-time", "--step-time"};
-  static const std::set<std::string> extremes{"--fourbar", "--example", "--unit",   "--rpm",
-                                              "--omega",   "--alpha",   "--from",   "--to",
-                                              "--step",    "--samples", "--branch", "--coupler-point"};
+  static const std::set<std::string> extremes{
+      "--fourbar", "--example",  "--unit",      "--rpm",       "--omega",         "--alpha",    "--from",
+      "--to",      "--step",     "--samples",   "--branch",    "--coupler-point", "--law",      "--ramp-time",
+      "--rise",    "--duration", "--law-table", "--from-time", "--to-time",       "--step-time"};
   static const std::set<std::string> classify{"--fourbar", "--example", "--unit", "--branch", "--json"};
   static const std::set<std::string> arm{"--example", "--arm",     "--from-point", "--to-point",
                                          "--speed",   "--samples", "--step-time",  "--elbow",

@@ -55,8 +55,9 @@ constexpr const char* kAnalyzeOptions = R"(Speed and range (analyze, extremes):
                       angle step in degrees (default: the example's; 1 for --fourbar),
                       or N evenly spaced angles from --from to --to inclusive
   --coupler-point U,V add point P fixed on the coupler: U along B→C, V 90° CCW from it
-Motion in time (analyze): instead of the angle grid, the crank follows a motion law and
-  the table gains a first column time_s; ω and α are the law's at each instant.
+Motion in time (analyze, extremes): instead of the angle grid, the crank follows a motion law;
+  analyze's table gains a first column time_s, extremes are refined in time; ω and α are
+  the law's at each instant.
   --law constant      from --from degrees at --rpm / --omega
   --law ramp --ramp-time S
                       from rest at --from, constant acceleration to --rpm / --omega in S

@@ -43,10 +43,15 @@ std::optional<k::Extrema> columnExtrema(const k::Mechanism& m, const k::SweepSpe
 
 std::string angleText(double radians) { return k::io::formatFixed(k::radToDeg(radians), 4); }
 
-void printRow(std::ostream& out, const std::string& name, const k::Extrema& e) {
+// Where an extremum is: the crank angle on an angle grid, the instant on a time base.
+std::string whereText(const k::Extremum& e, bool timeBase) {
+  return timeBase ? k::io::formatFixed(e.time, 6) : angleText(e.inputAngle);
+}
+
+void printRow(std::ostream& out, const std::string& name, const k::Extrema& e, bool timeBase) {
   out << std::left << std::setw(26) << name << std::right << std::setw(18) << k::io::formatShort(e.minimum.value, 9)
-      << std::setw(14) << angleText(e.minimum.inputAngle) << std::setw(18) << k::io::formatShort(e.maximum.value, 9)
-      << std::setw(14) << angleText(e.maximum.inputAngle) << "\n";
+      << std::setw(14) << whereText(e.minimum, timeBase) << std::setw(18) << k::io::formatShort(e.maximum.value, 9)
+      << std::setw(14) << whereText(e.maximum, timeBase) << "\n";
 }
 
 }  // namespace
@@ -58,24 +63,27 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
   };
   const auto swept = sweepInvocation(inv);
   if (!swept) return fail(swept.error());
-  // Refinement between samples moves the crank at one ω and α: an angle grid's state.
-  if (swept->spec.time)
-    return fail(k::Error{k::ErrorCode::InvalidValue, "FILE",
-                         "extremes refines over an angle grid, and this document's crank follows a motion law in "
-                         "time: use analyze (or give --law with analyze)"});
   const auto* resolved = &swept->resolved;
   const auto* spec = &swept->spec;
   const auto* result = &swept->result;
 
-  out << "extremes over crank angles " << k::io::formatShort(k::radToDeg(spec->fromAngle)) << "° to "
-      << k::io::formatShort(k::radToDeg(spec->toAngle)) << "°, refined between " << spec->samples << " samples; crank "
-      << k::io::formatShort(spec->omega) << " rad/s, " << k::io::formatShort(spec->alpha) << " rad/s²\n";
-  out << std::left << std::setw(26) << "quantity" << std::right << std::setw(18) << "minimum" << std::setw(14)
-      << "at crank_deg" << std::setw(18) << "maximum" << std::setw(14) << "at crank_deg"
-      << "\n";
+  const bool timeBase = spec->time.has_value();
+  if (timeBase)
+    out << "extremes over times " << k::io::formatShort(spec->time->fromTime) << " s to "
+        << k::io::formatShort(spec->time->toTime) << " s, refined between " << spec->samples
+        << " samples; the crank follows its motion law\n";
+  else
+    out << "extremes over crank angles " << k::io::formatShort(k::radToDeg(spec->fromAngle)) << "° to "
+        << k::io::formatShort(k::radToDeg(spec->toAngle)) << "°, refined between " << spec->samples
+        << " samples; crank " << k::io::formatShort(spec->omega) << " rad/s, " << k::io::formatShort(spec->alpha)
+        << " rad/s²\n";
+  const char* where = timeBase ? "at time_s" : "at crank_deg";
+  out << std::left << std::setw(26) << "quantity" << std::right << std::setw(18) << "minimum" << std::setw(14) << where
+      << std::setw(18) << "maximum" << std::setw(14) << where << "\n";
   for (const k::io::SweepColumn& column : k::io::sweepColumns(resolved->mechanism, result->request)) {
     if (column.quantity == k::io::ColumnQuantity::InputAngle) continue;
-    if (const auto e = columnExtrema(resolved->mechanism, *spec, *result, column)) printRow(out, column.name, *e);
+    if (const auto e = columnExtrema(resolved->mechanism, *spec, *result, column))
+      printRow(out, column.name, *e, timeBase);
   }
   // Speed and acceleration magnitudes of each moving point: what seed 003 reports.
   const k::Mechanism& m = resolved->mechanism;
@@ -86,11 +94,11 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
     const auto speed = refineOver(
         m, *spec, *result, ok, [&](std::size_t j) { return result->velocity[i][j].norm(); },
         [i](const k::Pose& p, double) { return p.velocity[i].norm(); });
-    if (speed) printRow(out, m.points[i].name + "_speed_" + u + "_s", *speed);
+    if (speed) printRow(out, m.points[i].name + "_speed_" + u + "_s", *speed, timeBase);
     const auto accel = refineOver(
         m, *spec, *result, ok, [&](std::size_t j) { return result->acceleration[i][j].norm(); },
         [i](const k::Pose& p, double) { return p.acceleration[i].norm(); });
-    if (accel) printRow(out, m.points[i].name + "_accel_" + u + "_s2", *accel);
+    if (accel) printRow(out, m.points[i].name + "_accel_" + u + "_s2", *accel, timeBase);
   }
   noteLocks(*result, err);
   if (!result->notAssembled.empty()) {

@@ -8,25 +8,42 @@
 namespace linkwright::kinematics {
 namespace {
 
-// Golden-section search for the maximum of `sign`·f on [lo, hi]; returns the best (angle,
-// value) among the ends and the interior points it visited.
+// What the search moves along: the input angle on an angle grid, the time on a time base.
+double parameterAt(const SweepSpec& spec, std::size_t j) {
+  return spec.time ? sweepTime(spec, j) : sweepAngle(spec, j);
+}
+
+DriverState driverAt(const SweepSpec& spec, double parameter) {
+  if (!spec.time) return {parameter, spec.omega, spec.alpha};
+  const MotionState s = motionAt(spec.time->law, parameter);
+  return {s.position, s.velocity, s.acceleration};
+}
+
+// Golden-section search for the maximum of `sign`·f on [lo, hi] (of the sweep's parameter);
+// returns the best extremum among the ends and the interior points it visited.
 struct Search {
   const Mechanism& mechanism;
   const SweepSpec& spec;
   const PoseQuantity& quantity;
   Pose pose;
 
-  std::optional<double> evaluate(double angle) {
-    const PoseReport r = solvePoseInto(mechanism, {angle, spec.omega, spec.alpha}, {true, true}, pose);
+  std::optional<double> evaluate(double parameter) {
+    const DriverState driver = driverAt(spec, parameter);
+    const PoseReport r = solvePoseInto(mechanism, driver, {true, true}, pose);
     if (r.status != PoseStatus::Ok) return std::nullopt;
-    return quantity(pose, angle);
+    return quantity(pose, driver.angle);
+  }
+
+  Extremum at(double value, double parameter, bool refined) const {
+    if (!spec.time) return {value, parameter, refined};
+    return {value, driverAt(spec, parameter).angle, refined, parameter};
   }
 
   Extremum maximize(double lo, double hi, double sign, const Extremum& start, double tolerance) {
     constexpr double kInvPhi = 0.6180339887498949;
     Extremum best = start;
-    auto consider = [&](double angle, std::optional<double> v) {
-      if (v && sign * *v > sign * best.value) best = {*v, angle, true};
+    auto consider = [&](double parameter, std::optional<double> v) {
+      if (v && sign * *v > sign * best.value) best = at(*v, parameter, true);
       return v ? sign * *v : -INFINITY;
     };
     double a = lo, b = hi;
@@ -69,24 +86,25 @@ std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec
   // a full turn the ends are neighbours too: an extremum just before the first sample is one
   // just before the last.
   const std::size_t n = values.size();
-  const bool fullTurn = n > 2 && std::abs(std::abs(spec.toAngle - spec.fromAngle) - 2.0 * kPi) < 1e-9;
-  const double step = n > 1 ? sweepAngle(spec, 1) - sweepAngle(spec, 0) : 0.0;
+  const bool fullTurn = !spec.time && n > 2 && std::abs(std::abs(spec.toAngle - spec.fromAngle) - 2.0 * kPi) < 1e-9;
+  const double step = n > 1 ? parameterAt(spec, 1) - parameterAt(spec, 0) : 0.0;
   auto bracket = [&](std::size_t j) {
-    double lo = sweepAngle(spec, j);
+    double lo = parameterAt(spec, j);
     double hi = lo;
-    if (j > 0 && valid[j - 1]) lo = sweepAngle(spec, j - 1);
+    if (j > 0 && valid[j - 1]) lo = parameterAt(spec, j - 1);
     else if (j == 0 && fullTurn && valid[n - 2]) lo -= step;
-    if (j + 1 < n && valid[j + 1]) hi = sweepAngle(spec, j + 1);
+    if (j + 1 < n && valid[j + 1]) hi = parameterAt(spec, j + 1);
     else if (j + 1 == n && fullTurn && valid[1]) hi += step;
     return std::pair{std::min(lo, hi), std::max(lo, hi)};
   };
   Extrema out;
   const auto [minLo, minHi] = bracket(*lowest);
-  out.minimum =
-      search.maximize(minLo, minHi, -1.0, {values[*lowest], sweepAngle(spec, *lowest), false}, angleTolerance);
+  out.minimum = search.maximize(minLo, minHi, -1.0, search.at(values[*lowest], parameterAt(spec, *lowest), false),
+                                angleTolerance);
   const auto [maxLo, maxHi] = bracket(*highest);
-  out.maximum =
-      search.maximize(maxLo, maxHi, 1.0, {values[*highest], sweepAngle(spec, *highest), false}, angleTolerance);
+  out.maximum = search.maximize(maxLo, maxHi, 1.0, search.at(values[*highest], parameterAt(spec, *highest), false),
+                                angleTolerance);
+  if (spec.time) return out;
   // Report angles inside the requested range (a full-turn bracket may step just outside it).
   for (Extremum* e : {&out.minimum, &out.maximum}) {
     const double lowEnd = std::min(spec.fromAngle, spec.toAngle);

@@ -15,11 +15,12 @@
 
 namespace linkwright::kinematics {
 
-/// One extreme value and the input angle (rad) where it occurs.
+/// One extreme value and the input angle (rad) where it occurs; on a time base, the instant.
 struct Extremum {
   double value = 0.0;
   double inputAngle = 0.0;
   bool refined = false;  ///< true if the search improved on the best sample
+  double time = 0.0;     ///< s, on a time base (SweepSpec::time); else 0
   bool operator==(const Extremum&) const = default;
 };
 
@@ -35,7 +36,8 @@ using PoseQuantity = std::function<double(const Pose& pose, double inputAngle)>;
 /// Refines the extremes of `quantity` over `sampled` (a sweep of `mechanism` over `spec`):
 /// `values[j]` is the quantity at sample j and `valid[j]` says whether it exists there (rates
 /// do not at a toggle). Nullopt if no sample is valid. The search stays between the valid
-/// neighbours of the best sample, to `angleTolerance` rad.
+/// neighbours of the best sample, to `angleTolerance` rad; on a time base it searches in time,
+/// the crank following the law, to `angleTolerance` s.
 std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec& spec,
                                      const std::vector<double>& values, const std::vector<bool>& valid,
                                      const PoseQuantity& quantity, double angleTolerance = 1e-10);

@@ -132,12 +132,35 @@ TEST_CASE("a document whose crank follows a law is analysed on its time base", "
   CHECK(fromFile.out == fromOptions.out);
   CHECK(rowsOf(fromFile.out, kHead).size() == 31);
   CHECK(runCliCommand({"analyze", path, "--samples", "4"}).out.size() < fromFile.out.size());
-  // The angle grid's options and extremes' refinement do not apply to it.
+  // The angle grid's options do not apply to it; extremes refine in time.
   const auto to = runCliCommand({"analyze", path, "--to", "90"});
   CHECK(to.code == 2);
   CHECK_THAT(to.err, Catch::Contains("--to does not apply: this document's crank follows a motion law in time"));
   const auto extremes = runCliCommand({"extremes", path});
-  CHECK(extremes.code == 2);
-  CHECK_THAT(extremes.err, Catch::Contains("extremes refines over an angle grid"));
+  CHECK(extremes.code == 0);
+  CHECK_THAT(extremes.out, Catch::StartsWith("extremes over times 0 s to 3 s, refined between 31 samples"));
   std::filesystem::remove(path);
+}
+
+TEST_CASE("extremes on a time base are refined in time: a cycloidal rise's peak α at T/4", "[cli][law][extremes]") {
+  // Sampled every 0.07 s, so no sample lands on T/4 = 0.125 s: the search finds it.
+  const auto r = runCliCommand({"extremes", "--fourbar", "60,25,70,45", "--law", "cycloidal", "--rise", "90",
+                                "--duration", "0.5", "--step-time", "0.07"});
+  REQUIRE(r.code == 0);
+  std::istringstream lines(r.out);
+  std::string line;
+  bool found = false;
+  while (std::getline(lines, line)) {
+    if (line.rfind("crank_alpha_rad_s2", 0) != 0) continue;
+    std::istringstream cells(line.substr(std::string("crank_alpha_rad_s2").size()));
+    double minimum = 0, minimumAt = 0, maximum = 0, maximumAt = 0;
+    cells >> minimum >> minimumAt >> maximum >> maximumAt;
+    const double peak = 2.0 * k::kPi * k::degToRad(90.0) / (0.5 * 0.5);
+    CHECK(maximum == within(peak, 1e-7 * peak));  // printed to 9 digits
+    CHECK(maximumAt == within(0.125, 1e-6));      // printed to 6 decimals
+    CHECK(minimum == within(-peak, 1e-7 * peak));
+    CHECK(minimumAt == within(0.375, 1e-6));
+    found = true;
+  }
+  CHECK(found);
 }
