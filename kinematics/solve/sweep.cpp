@@ -22,6 +22,10 @@ namespace {
 // (a full turn halved 40 times is 6e-12 rad) merely bounds the scratch space.
 constexpr double kMinRefineStep = 1e-7;
 constexpr int kMaxRefineDepth = 40;
+// Refinement solves between two samples at most: a toggle needs a few dozen (one path down to
+// kMinRefineStep), but a dyad held at its assembly limit by a rigid loop is ambiguous on every
+// sub-step, and halving both halves to kMinRefineStep would take 2^17 solves a degree.
+constexpr int kMaxRefineSolves = 256;
 const SolveRequest kPositionsOnly{false, false, {}, {}, false};
 
 bool isDyad(const Mechanism& m, std::size_t i) {
@@ -193,6 +197,7 @@ private:
   PoseReport solveSample(const DriverState& driver) {
     const double angle = driver.angle;
     if (!m_haveLast) return solve(driver, m_request, *m_current);
+    m_refineSolves = 0;
     const BranchGuide keep{m_last->branchSign, {}};
     PoseReport report = solve(driver, m_request, *m_current, keep);
     if (report.status == PoseStatus::NotAssemblable ||
@@ -220,7 +225,7 @@ private:
     const BranchGuide keep{a.branchSign, {}};
     if (solve({b, 0.0, 0.0}, kPositionsOnly, out, keep).status == PoseStatus::NotAssemblable) return false;
     if (!branchAmbiguous(m_mech, m_dyads, aAngle, a, b, out)) return true;
-    if (std::abs(b - aAngle) <= kMinRefineStep || depth == kMaxRefineDepth) {
+    if (std::abs(b - aAngle) <= kMinRefineStep || depth == kMaxRefineDepth || ++m_refineSolves > kMaxRefineSolves) {
       if (before == nullptr) return true;
       // A driver at rest between samples (a dwell) gives no direction to extrapolate.
       const double ratio = aAngle != beforeAngle ? (b - aAngle) / (aAngle - beforeAngle) : 0.0;
@@ -256,6 +261,7 @@ private:
   std::array<Pose*, kMaxBlock> m_blockPoses{};
   std::array<DriverState, kMaxBlock> m_blockDrivers{};
   std::array<PoseReport, kMaxBlock> m_blockReports{};
+  int m_refineSolves = 0;  // refinement solves for the current sample, against kMaxRefineSolves
   Pose* m_current = &m_poses[0];
   Pose* m_last = &m_poses[1];
   Pose* m_before = &m_poses[2];
