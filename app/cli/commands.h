@@ -8,6 +8,7 @@
 #include "app/cli/exit_codes.h"
 
 #include "kinematics/dynamics/mass_properties.h"
+#include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/solve/sweep.h"
 
@@ -23,7 +24,7 @@ ExitCode runArm(const Invocation& invocation, std::ostream& out, std::ostream& e
 ExitCode runCentres(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runAccuracy(const Invocation& invocation, std::ostream& out, std::ostream& err);
 
-/// What an example brings besides the linkage: crank speed and the angle grid.
+/// What an example brings besides the linkage: the driver's speed and the input grid.
 struct GridDefaults {
   double omega = 1.0;  ///< rad/s
   double alpha = 0.0;  ///< rad/s²
@@ -32,6 +33,11 @@ struct GridDefaults {
   double stepDeg = 1.0;
   std::optional<kinematics::TimeBase> time;  ///< a document's time base: its crank's motion law
   long long timeSamples = 0;                 ///< the instants of that time base
+  /// What --from, --to, --step and a law's start are in: degrees for a crank, the length
+  /// unit for a path or actuator driver.
+  kinematics::InputKind input = kinematics::InputKind::Angle;
+  /// The grid value `value` (degrees or length) as the driver's coordinate (rad or length).
+  double toInput(double value) const;
 };
 
 /// The linkage an invocation describes (--fourbar lengths, an --example or a document),

@@ -73,13 +73,14 @@ k::Result<k::TableLaw> readLawTable(const std::string& path) {
   return law;
 }
 
-// The law the options describe, starting at --from at the crank speed of --rpm / --omega.
-k::Result<k::MotionLaw> lawFor(const Invocation& inv, double start, double omega) {
+// The law the options describe, starting at --from at the driver speed of --rpm / --omega;
+// --rise in degrees for a crank, in the length unit for a linear driver.
+k::Result<k::MotionLaw> lawFor(const Invocation& inv, const GridDefaults& d, double start, double omega) {
   const std::string& name = *inv.law;
   if (name == "constant") return k::MotionLaw{k::ConstantVelocity{start, omega}};
   if (name == "ramp") return k::MotionLaw{k::RampToSpeed{start, omega, *inv.rampTime}};
-  if (name == "cycloidal") return k::MotionLaw{k::CycloidalRise{start, k::degToRad(*inv.riseDeg), *inv.duration}};
-  if (name == "345") return k::MotionLaw{k::PolynomialRise{start, k::degToRad(*inv.riseDeg), *inv.duration}};
+  if (name == "cycloidal") return k::MotionLaw{k::CycloidalRise{start, d.toInput(*inv.riseDeg), *inv.duration}};
+  if (name == "345") return k::MotionLaw{k::PolynomialRise{start, d.toInput(*inv.riseDeg), *inv.duration}};
   auto table = readLawTable(*inv.lawTable);
   if (!table) return table.error();
   return k::MotionLaw{std::move(*table)};
@@ -100,7 +101,7 @@ std::optional<double> defaultEndTime(const k::MotionLaw& law, double omega) {
 
 kinematics::Result<kinematics::SweepSpec> timeSweepSpecFor(const Invocation& inv, const GridDefaults& d) {
   const double omega = inv.rpm ? k::rpmToRadPerSec(*inv.rpm) : inv.omega.value_or(d.omega);
-  auto law = lawFor(inv, k::degToRad(inv.fromDeg.value_or(d.fromDeg)), omega);
+  auto law = lawFor(inv, d, d.toInput(inv.fromDeg.value_or(d.fromDeg)), omega);
   if (!law) return law.error();
   if (auto e = k::checkMotionLaw(*law)) return badValue("--law", "gives " + e->message);
   const auto span = k::lawTimeSpan(*law);

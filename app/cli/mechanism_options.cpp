@@ -3,6 +3,7 @@
 #include "kinematics/design/design.h"
 #include "kinematics/design/fourbar_dimensions.h"
 #include "kinematics/io/document_json.h"
+#include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/validate.h"
 
@@ -45,12 +46,13 @@ k::Result<ResolvedMechanism> resolveExample(const std::string& name) {
     return k::Error{k::ErrorCode::InvalidValue, "--example",
                     "--example: no example named '" + name + "' (available: " + names + ")"};
   }
-  return ResolvedMechanism{std::move(e->mechanism),
-                           {e->omega, e->alpha, e->fromDeg, e->toDeg, e->stepDeg},
-                           std::move(e->dynamics),
-                           "the example " + e->name,
-                           e->kind,
-                           e->description};
+  return ResolvedMechanism{
+      std::move(e->mechanism),
+      {e->omega, e->alpha, e->fromDeg, e->toDeg, e->stepDeg, e->time, static_cast<long long>(e->timeSamples)},
+      std::move(e->dynamics),
+      "the example " + e->name,
+      e->kind,
+      e->description};
 }
 
 k::Result<ResolvedMechanism> resolveSource(const Invocation& inv) {
@@ -96,6 +98,7 @@ kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& inv) {
   auto r = resolveSource(inv);
   if (!r) return r.error();
   if (auto e = applyFourBarOptions(inv, r.value())) return *e;
+  r.value().defaults.input = k::inputKind(r.value().mechanism);
   return r;
 }
 

@@ -38,11 +38,16 @@ std::optional<Error> checkOptions(const Invocation& inv) {
 
 }  // namespace
 
+double GridDefaults::toInput(double value) const {
+  return input == kinematics::InputKind::Angle ? kinematics::degToRad(value) : value;
+}
+
 kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Invocation& inv, const GridDefaults& d) {
   if (auto e = checkOptions(inv)) return *e;
   if (inv.law) return timeSweepSpecFor(inv, d);
   if (d.time) {
-    // A document whose crank follows a law: its time base, at --samples instants if given.
+    // A document or example whose driver follows a law: its time base, at --samples instants
+    // if given.
     for (const auto& [given, option] : {std::pair{inv.rpm.has_value(), "--rpm"},
                                         {inv.omega.has_value(), "--omega"},
                                         {inv.alpha.has_value(), "--alpha"},
@@ -51,7 +56,7 @@ kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Invocation& inv, co
                                         {inv.stepDeg.has_value(), "--step"}})
       if (given)
         return badValue(option,
-                        "does not apply: this document's crank follows a motion law in time (give --law "
+                        "does not apply: this linkage's driver follows a motion law in time (give --law "
                         "to replace it)");
     kinematics::SweepSpec spec;
     spec.time = d.time;
@@ -87,8 +92,8 @@ kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Invocation& inv, co
     samples = static_cast<long long>(intervals) + 1;
     last = from + intervals * step;
   }
-  spec.fromAngle = kinematics::degToRad(from);
-  spec.toAngle = kinematics::degToRad(last);
+  spec.fromAngle = d.toInput(from);
+  spec.toAngle = d.toInput(last);
   spec.samples = static_cast<std::size_t>(samples);
   return spec;
 }

@@ -74,9 +74,16 @@ MobilityReport mobility(const Mechanism& m) {
   MobilityReport r;
   r.links = 1;  // the ground
   for (const Point& p : m.points) {
-    if (std::holds_alternative<CrankPoint>(p.definition)) {
+    if (std::holds_alternative<CrankPoint>(p.definition) || std::holds_alternative<PathPoint>(p.definition)) {
+      // The crank and its pivot; or the block that carries a driven point along its path, in
+      // its (straight or curved) slot.
       r.links += 1;
       r.fullJoints += 1;
+    } else if (std::holds_alternative<ActuatorPoint>(p.definition)) {
+      // The driven link, the cylinder and its rod: pins at the link's parent, at the end and
+      // at the base, and the cylinder's sliding joint.
+      r.links += 3;
+      r.fullJoints += 4;
     } else if (std::holds_alternative<RrrPoint>(p.definition) || std::holds_alternative<RrpPoint>(p.definition) ||
                std::holds_alternative<RprPoint>(p.definition) || std::holds_alternative<PrpPoint>(p.definition)) {
       // Two links and three joints: pin, pin, pin (RRR); pin, pin, slider (RRP); pin, slider,

@@ -1,5 +1,6 @@
 #include "kinematics/design/design.h"
 
+#include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
@@ -52,7 +53,12 @@ std::size_t samplesEveryHalfDegree(double fromDeg, double toDeg) {
 }
 
 SweepSpec designSweepSpec(const Design& d) {
-  return {degToRad(d.fromDeg), degToRad(d.toDeg), d.samples, d.omega, d.alpha, d.time};
+  return {inputFromDisplay(d.mechanism, d.fromDeg),
+          inputFromDisplay(d.mechanism, d.toDeg),
+          d.samples,
+          d.omega,
+          d.alpha,
+          d.time};
 }
 
 Result<Design> fourBarDesign(const FourBarLengths& lengths, Branch branch, const std::string& lengthUnit,
@@ -75,6 +81,10 @@ Design designFromExample(const Example& e) {
   d.fromDeg = e.fromDeg;
   d.toDeg = e.toDeg;
   d.samples = samplesEveryHalfDegree(e.fromDeg, e.toDeg);
+  if (e.time) {
+    d.time = e.time;
+    d.samples = e.timeSamples;
+  }
   return d;
 }
 

@@ -20,10 +20,12 @@ namespace linkwright::kinematics {
 struct Design {
   std::string kind = "linkage";  ///< a label shown to the user: "four-bar", "slider-crank", "watt-ii", …
   Mechanism mechanism;
-  double omega = 1.0;         ///< crank, rad/s (CCW positive)
-  double alpha = 0.0;         ///< crank, rad/s²
-  double fromDeg = 0.0;       ///< analysis grid start, degrees
-  double toDeg = 360.0;       ///< analysis grid end, degrees
+  // The input grid, in the input's display unit (driver.h): a crank's in degrees and rad/s, a
+  // path's or actuator's in the length unit and per second.
+  double omega = 1.0;         ///< the driver's rate: a crank's rad/s (CCW positive)
+  double alpha = 0.0;         ///< the driver's acceleration: a crank's rad/s²
+  double fromDeg = 0.0;       ///< analysis grid start: a crank's degrees
+  double toDeg = 360.0;       ///< analysis grid end: a crank's degrees
   std::size_t samples = 721;  ///< grid points from fromDeg to toDeg inclusive (≥ 2)
   LinkageDynamics dynamics;   ///< masses and loads for forces, by link and point name; empty: none
   /// A time base: the crank follows a motion law, analysed at `samples` instants from its

@@ -1,5 +1,8 @@
 #include "kinematics/design/examples.h"
 
+#include "kinematics/model/driven_linkages.h"
+#include "kinematics/model/driver.h"
+#include "kinematics/model/path_shape.h"
 #include "kinematics/model/sixbar_newton.h"
 #include "kinematics/model/units.h"
 
@@ -44,6 +47,37 @@ Example sixBarExample(const SixBarGeometry& g, std::string description) {
                         2.0 * kPi);
 }
 
+// A linkage whose driver follows `law` from time 0 to `duration`, at `samples` instants. Its
+// input grid (for a user who switches the time base off) covers the same travel at the
+// law's mean speed.
+Example timedExample(std::string name, std::string description, std::string kind, Mechanism mechanism, MotionLaw law,
+                     double duration, std::size_t samples) {
+  const double from = motionAt(law, 0.0).position;
+  const double to = motionAt(law, duration).position;
+  Example e = linkageExample(std::move(name), std::move(description), std::move(kind), std::move(mechanism),
+                             (to - from) / duration);
+  const bool crank = inputKind(e.mechanism) == InputKind::Angle;
+  e.fromDeg = crank ? radToDeg(from) : from;
+  e.toDeg = crank ? radToDeg(to) : to;
+  e.stepDeg = (e.toDeg - e.fromDeg) / static_cast<double>(samples - 1);
+  e.time = TimeBase{std::move(law), 0.0, duration};
+  e.timeSamples = samples;
+  return e;
+}
+
+// Seed 004's arm: r1 = 0.3 m, r2 = 0.2 m, the tip from (0.3, 0) to (0, 0.3) m at 2 m/s, the
+// elbow down (its plots have θ1 rising from −39° to 51°); its MATLAB steps x by 0.003 m: 101
+// samples.
+Example seedArmExample() {
+  const PolylinePath line{{{0.3, 0.0}, {0.0, 0.3}}};
+  const double speed = 2.0;
+  return timedExample("seed-arm",
+                      "two-link arm 0.3 m and 0.2 m, its tip driven from (0.3, 0) to (0, 0.3) m at 2 m/s, elbow "
+                      "down (seed 004's welding arm, by inverse kinematics)",
+                      "two-link arm", makeTwoLinkArm({0.3, 0.2, line, Branch::Crossed, "m"}).value(),
+                      ConstantVelocity{0.0, speed}, pathLength(line) / speed, 101);
+}
+
 }  // namespace
 
 std::vector<Example> examples() {
@@ -84,6 +118,18 @@ std::vector<Example> examples() {
       sixBarExample(kStephensonISixBar, "Stephenson I six-bar: links 5 and 6 from a point on the crank to the rocker"),
       sixBarExample(kStephensonIIISixBar,
                     "Stephenson III six-bar: links 5 and 6 from the coupler to a third ground pivot O6"),
+      seedArmExample(),
+      timedExample("piston-driven",
+                   "slider-crank driven from its piston (a compressor's linkage worked from the piston side): crank "
+                   "40, rod 140 mm; the piston moves 78 of its 80 mm stroke in 50 ms on a 3-4-5 polynomial, "
+                   "stopping 1 mm short of each dead centre, where the crank cannot be driven from the piston",
+                   "slider-crank", makePistonDriven({40.0, 140.0, Branch::Open, "mm"}).value(),
+                   PolynomialRise{1.0, 78.0, 0.05}, 0.05, 201),
+      timedExample("excavator-boom",
+                   "excavator-style boom: a rocker about O driven by a hydraulic cylinder from A (0.3, -0.9) m to "
+                   "the boom's eye 1 m out; the cylinder extends from 1.2 to 1.9 m in 4 s on a cycloidal law, the "
+                   "boom tip is 2.8 m from O",
+                   "cylinder rocker", makeCylinderRocker({}).value(), CycloidalRise{1.2, 0.7, 4.0}, 4.0, 201),
       linkageExample("stephenson-ii",
                      "Stephenson II six-bar (ground binary): its two ternary links close one loop with links 5 and 6, "
                      "a triad no dyad order solves, so C..E are found by Newton-Raphson",

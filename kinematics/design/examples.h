@@ -8,6 +8,7 @@
 #include "kinematics/model/shaper.h"
 #include "kinematics/model/sixbar.h"
 #include "kinematics/model/slider_crank.h"
+#include "kinematics/solve/sweep.h"
 
 #include <optional>
 #include <string>
@@ -28,6 +29,10 @@ struct Example {
   double toDeg = 360.0;      ///< default table end, degrees
   double stepDeg = 1.0;      ///< default table step, degrees
   LinkageDynamics dynamics;  ///< masses and loads, if the source gives them (else empty)
+  /// A time base, when the example's driver follows a motion law (the angles above are then
+  /// unused), analysed at `timeSamples` instants.
+  std::optional<TimeBase> time;
+  std::size_t timeSamples = 0;
   bool operator==(const Example&) const = default;
 };
 

@@ -33,6 +33,26 @@ bool secondGuide(ParameterSlot s) {
   return s == ParameterSlot::SecondGuideX || s == ParameterSlot::SecondGuideY || s == ParameterSlot::SecondGuideAngle;
 }
 
+// A path's numbers: a polyline's vertices, an arc's centre, radius, start and sweep.
+template <typename Shape>
+NumberPtr<Shape> pathNumber(Shape& shape, const Parameter& p) {
+  using S = ParameterSlot;
+  if (auto* line = std::get_if<PolylinePath>(&shape)) {
+    if (p.vertex >= line->vertices.size()) return nullptr;
+    auto& v = line->vertices[p.vertex];
+    return p.slot == S::PathX ? &v.x() : p.slot == S::PathY ? &v.y() : nullptr;
+  }
+  auto& arc = std::get<ArcPath>(shape);
+  switch (p.slot) {
+  case S::X: return &arc.centre.x();
+  case S::Y: return &arc.centre.y();
+  case S::Length: return &arc.radius;
+  case S::Phase: return &arc.startAngle;
+  case S::Sweep: return &arc.sweep;
+  default: return nullptr;
+  }
+}
+
 // The number behind a parameter: one table for reading and writing.
 template <typename M>
 NumberPtr<M> numberOf(M& m, const Parameter& p) {
@@ -43,6 +63,8 @@ NumberPtr<M> numberOf(M& m, const Parameter& p) {
     return p.slot == S::X ? &g->position.x() : p.slot == S::Y ? &g->position.y() : nullptr;
   if (auto* c = std::get_if<CrankPoint>(&d))
     return p.slot == S::Length ? &c->length : p.slot == S::Phase ? &c->phase : nullptr;
+  if (auto* driven = std::get_if<PathPoint>(&d)) return pathNumber(driven->path, p);
+  if (auto* a = std::get_if<ActuatorPoint>(&d)) return p.slot == S::Length ? &a->length : nullptr;
   if (auto* r = std::get_if<RrrPoint>(&d))
     return p.slot == S::Length ? &r->firstLength : p.slot == S::SecondLength ? &r->secondLength : nullptr;
   if (auto* s = std::get_if<RrpPoint>(&d))
@@ -77,6 +99,16 @@ std::vector<Parameter> parametersOf(const Mechanism& m) {
     const auto& d = m.points[i].definition;
     if (std::holds_alternative<GroundPoint>(d)) add({S::X, S::Y});
     else if (std::holds_alternative<CrankPoint>(d)) add({S::Length, S::Phase});
+    else if (const auto* driven = std::get_if<PathPoint>(&d)) {
+      if (const auto* line = std::get_if<PolylinePath>(&driven->path)) {
+        for (std::size_t v = 0; v < line->vertices.size(); ++v) {
+          out.push_back({p, S::PathX, 0, v});
+          out.push_back({p, S::PathY, 0, v});
+        }
+      } else {
+        add({S::X, S::Y, S::Length, S::Phase, S::Sweep});
+      }
+    } else if (std::holds_alternative<ActuatorPoint>(d)) add({S::Length});
     else if (std::holds_alternative<RrrPoint>(d)) add({S::Length, S::SecondLength});
     else if (std::holds_alternative<RrpPoint>(d)) add({S::Length, S::GuideX, S::GuideY, S::GuideAngle});
     else if (std::holds_alternative<RprPoint>(d)) add({S::Length});
@@ -101,7 +133,8 @@ ParameterUnit parameterUnit(ParameterSlot slot) {
   case ParameterSlot::ConstraintLength: return ParameterUnit::Length;
   case ParameterSlot::Phase:
   case ParameterSlot::GuideAngle:
-  case ParameterSlot::SecondGuideAngle: return ParameterUnit::Angle;
+  case ParameterSlot::SecondGuideAngle:
+  case ParameterSlot::Sweep: return ParameterUnit::Angle;
   default: return ParameterUnit::Offset;
   }
 }

@@ -1,7 +1,7 @@
 #pragma once
 // The numbers that define each point of a linkage, as typed parameters: a ground pivot's x
-// and y, a crank's length and phase, an RRR joint's two lengths, a slider's rod length and
-// its guide, a slotted link's length, a point's offsets on its link, a free point's guess and
+// and y, a crank's length and phase, a driven point's path, an actuator's link length, an RRR
+// joint's two lengths, a slider's rod length and its guide, a slotted link's length, a point's offsets on its link, a free point's guess and
 // the constraint lengths that reach it. Editors list them, read them and set them through
 // here, so no editor touches a point definition itself.
 
@@ -15,11 +15,12 @@ namespace linkwright::kinematics {
 
 /// Which number of a point's definition.
 enum class ParameterSlot {
-  X,                 ///< a ground pivot's x, a free point's guessed x
-  Y,                 ///< a ground pivot's y, a free point's guessed y
-  Length,            ///< a crank's, a slider's rod's or a slotted link's length; an RRR's first length
+  X,                 ///< a ground pivot's x, a free point's guessed x, an arc path's centre x
+  Y,                 ///< a ground pivot's y, a free point's guessed y, an arc path's centre y
+  Length,            ///< a crank's, a slider's rod's, a slotted link's or an actuator's driven link's
+                     ///< length; an RRR's first length; an arc path's radius
   SecondLength,      ///< an RRR's second length
-  Phase,             ///< a crank's phase (rad)
+  Phase,             ///< a crank's phase; an arc path's start angle (rad)
   Along,             ///< a point fixed on a link: along it
   Across,            ///< a point fixed on a link: across it
   GuideX,            ///< a slider's guide (a PRP's first): a point on it, x (along its link when on one)
@@ -29,6 +30,9 @@ enum class ParameterSlot {
   SecondGuideY,      ///< … as GuideY
   SecondGuideAngle,  ///< … as GuideAngle
   ConstraintLength,  ///< the length of Mechanism::constraints[constraint], listed under its later point
+  PathX,             ///< a polyline path's vertex `vertex`: x
+  PathY,             ///< … y
+  Sweep,             ///< an arc path's sweep (rad)
 };
 
 /// What a parameter's value is: a length (positive), an offset or coordinate (any sign), or
@@ -39,6 +43,7 @@ struct Parameter {
   PointId point;
   ParameterSlot slot = ParameterSlot::X;
   std::size_t constraint = 0;  ///< ConstraintLength only
+  std::size_t vertex = 0;      ///< PathX and PathY only
   bool operator==(const Parameter&) const = default;
 };
 

@@ -1,6 +1,7 @@
 #include "kinematics/design/point_drag.h"
 
 #include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/path_shape.h"
 #include "kinematics/model/recognise.h"
 #include "kinematics/model/vec2.h"
 #include "kinematics/solve/guide_line.h"
@@ -13,7 +14,7 @@ namespace {
 struct Dragger {
   Mechanism& m;
   const Pose& pose;
-  double inputAngle;
+  double& input;  // the driver's coordinate, which dragging a driven point moves
   std::size_t index;
   const Eigen::Vector2d& target;
 
@@ -33,7 +34,20 @@ struct Dragger {
   std::optional<Error> operator()(CrankPoint& c) const {
     if (auto e = lengthTo(c.pivot, c.length)) return e;
     const Eigen::Vector2d r = target - pose.position[c.pivot.index];
-    c.phase = std::remainder(std::atan2(r.y(), r.x()) - inputAngle, 2.0 * std::acos(-1.0));
+    c.phase = std::remainder(std::atan2(r.y(), r.x()) - input, 2.0 * std::acos(-1.0));
+    return std::nullopt;
+  }
+  // The driven point slides along its path to the place nearest the pointer.
+  std::optional<Error> operator()(PathPoint& d) const {
+    input = nearestPathCoordinate(d.path, target);
+    return std::nullopt;
+  }
+  // The actuator's end: its link takes the new length, the actuator the new stroke.
+  std::optional<Error> operator()(ActuatorPoint& a) const {
+    if (auto e = lengthTo(a.first, a.length)) return e;
+    if (auto e = lengthTo(a.base, input)) return e;
+    const double side = cross(target - pose.position[a.first.index], target - pose.position[a.base.index]);
+    a.branch = side >= 0.0 ? Branch::Open : Branch::Crossed;
     return std::nullopt;
   }
   std::optional<Error> operator()(RrrPoint& r) const {
@@ -125,8 +139,9 @@ Result<PointDrag> dragPoint(const Mechanism& mechanism, const Pose& pose, double
   Mechanism& m = out.mechanism;
   const auto fourBar = rule == DragRule::FrameLine ? asFourBar(mechanism) : std::nullopt;
   const bool framed = fourBar && (point == fourBar->o2 || point == fourBar->o4 || point == fourBar->b);
-  if (auto e = framed ? dragOnFrameLine(*fourBar, m, pose, out.inputAngle, point, target)
-                      : std::visit(Dragger{m, pose, inputAngle, point.index, target}, m.points[point.index].definition))
+  if (auto e =
+          framed ? dragOnFrameLine(*fourBar, m, pose, out.inputAngle, point, target)
+                 : std::visit(Dragger{m, pose, out.inputAngle, point.index, target}, m.points[point.index].definition))
     return *e;
   if (auto e = checkMechanism(m)) return *e;
   return out;

@@ -70,6 +70,7 @@ std::vector<Cluster> barsOf(const Mechanism& m) {
     const PointDefinition& def = m.points[i].definition;
     if (std::holds_alternative<GroundPoint>(def)) clusters[0].points.push_back(i);
     else if (const auto* c = std::get_if<CrankPoint>(&def)) addBar(clusters, {c->pivot.index, i});
+    else if (const auto* actuator = std::get_if<ActuatorPoint>(&def)) addBar(clusters, {actuator->first.index, i});
     else if (const auto* r = std::get_if<RrrPoint>(&def)) {
       addBar(clusters, {r->first.index, i});
       addBar(clusters, {r->second.index, i});
@@ -193,11 +194,18 @@ Result<BodyModel> bodiesOf(const Mechanism& m) {
     }
     b.links.push_back(LinkId{l});
   }
+  bool crank = false;
   for (std::size_t i = 0; i < m.points.size(); ++i)
     if (const auto* c = std::get_if<CrankPoint>(&m.points[i].definition)) {
       model.crankPivot = c->pivot;
       model.crankTip = PointId{i};
+      crank = true;
     }
+  // The balance is solved for the torque on a driven crank; a linear driver's force is not
+  // one of its unknowns yet.
+  if (!crank)
+    return Error{ErrorCode::InvalidStructure, "dynamics",
+                 "forces need a crank driver: this linkage is driven by a point on a path or a linear actuator"};
   const auto driven = bodyHolding(model, model.crankPivot, model.crankTip);
   if (!driven || *driven == kGroundBody)
     return Error{ErrorCode::InvalidStructure, "points",
@@ -222,6 +230,7 @@ double linkLength(const Mechanism& m, LinkId id) {
   for (const auto& [child, parent] : {std::pair{l.second, l.first}, std::pair{l.first, l.second}}) {
     const PointDefinition& def = m.points[child.index].definition;
     if (const auto* c = std::get_if<CrankPoint>(&def); c && c->pivot == parent) return c->length;
+    if (const auto* a = std::get_if<ActuatorPoint>(&def); a && a->first == parent) return a->length;
     if (const auto* r = std::get_if<RrrPoint>(&def)) {
       if (r->first == parent) return r->firstLength;
       if (r->second == parent) return r->secondLength;

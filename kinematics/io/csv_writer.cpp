@@ -13,7 +13,8 @@ constexpr const char* kLineEnd = "\r\n";
 // not as the radian round trip "29.999999999999996", and 3 × 0.01 s as "0.03".
 std::string cellText(const SweepColumn& column, const SweepResult& r, std::size_t j) {
   const double value = column.value(r, j);
-  const bool grid = column.quantity == ColumnQuantity::InputAngle || column.quantity == ColumnQuantity::Time;
+  const bool grid = column.quantity == ColumnQuantity::InputAngle || column.quantity == ColumnQuantity::InputLength ||
+                    column.quantity == ColumnQuantity::Time;
   return grid ? formatShort(value, 12) : formatDouble(value);
 }
 

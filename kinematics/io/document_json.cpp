@@ -69,18 +69,18 @@ FourBarMembers readFourBar(const JsonValue& mech, JsonReader& r) {
 }
 
 // Maps checkDesign's field names onto document paths, so the message names what is in the file.
-std::string documentPath(const std::string& field) {
+std::string documentPath(const std::string& field, const InputKeys& keys) {
   if (field == "lengths" || field.rfind("lengths.", 0) == 0) return "mechanism." + field;
   if (field == "couplerPoint.along") return "mechanism.coupler_point.along";
   if (field == "couplerPoint.across") return "mechanism.coupler_point.across";
-  if (field == "omega") return "driver.omega_rad_s";
-  if (field == "alpha") return "driver.alpha_rad_s2";
-  if (field == "fromDeg") return "analysis.from_deg";
-  if (field == "toDeg") return "analysis.to_deg";
+  if (field == "omega") return "driver." + keys.rate;
+  if (field == "alpha") return "driver." + keys.acceleration;
+  if (field == "fromDeg") return "analysis." + keys.from;
+  if (field == "toDeg") return "analysis." + keys.to;
   if (field == "from time") return "analysis.from_time_s";
   if (field == "to time") return "analysis.to_time_s";
-  if (field == "law.start") return "driver.law.start_rad";
-  if (field == "law.rise") return "driver.law.rise_rad";
+  if (field == "law.start") return "driver.law." + keys.lawStart;
+  if (field == "law.rise") return "driver.law." + keys.lawRise;
   if (field == "law.duration") return "driver.law.duration_s";
   if (field == "law.rampTime") return "driver.law.ramp_time_s";
   if (field.rfind("law peak ", 0) == 0) return "driver.law's " + field.substr(4);
@@ -88,16 +88,19 @@ std::string documentPath(const std::string& field) {
   return "analysis." + field;
 }
 
+InputKeys keysOf(const Mechanism& m) { return inputKeys(inputKind(m), m.lengthUnit); }
+
 // The driver, analysis and dynamics members.
 void writeMotion(std::ostream& s, const Design& d) {
-  s << "\n  },\n  \"driver\": {\"omega_rad_s\": " << formatJsonNumber(d.omega)
-    << ", \"alpha_rad_s2\": " << formatJsonNumber(d.alpha);
+  const InputKeys keys = keysOf(d.mechanism);
+  s << "\n  },\n  \"driver\": {\"" << keys.rate << "\": " << formatJsonNumber(d.omega) << ", \"" << keys.acceleration
+    << "\": " << formatJsonNumber(d.alpha);
   if (d.time) {
     s << ",\n    \"law\": ";
-    writeLaw(s, d.time->law);
+    writeLaw(s, d.time->law, keys);
   }
-  s << "},\n  \"analysis\": {\"from_deg\": " << formatJsonNumber(d.fromDeg)
-    << ", \"to_deg\": " << formatJsonNumber(d.toDeg) << ", \"samples\": " << d.samples;
+  s << "},\n  \"analysis\": {\"" << keys.from << "\": " << formatJsonNumber(d.fromDeg) << ", \"" << keys.to
+    << "\": " << formatJsonNumber(d.toDeg) << ", \"samples\": " << d.samples;
   if (d.time)
     s << ", \"from_time_s\": " << formatJsonNumber(d.time->fromTime)
       << ", \"to_time_s\": " << formatJsonNumber(d.time->toTime);
@@ -106,23 +109,23 @@ void writeMotion(std::ostream& s, const Design& d) {
   s << "\n}\n";
 }
 
-void readMotion(const JsonValue& root, JsonReader& r, Design& d) {
+void readMotion(const JsonValue& root, const InputKeys& keys, JsonReader& r, Design& d) {
   const JsonValue* law = nullptr;
   if (const JsonValue* drv = r.object(root, "driver", "driver")) {
-    d.omega = r.number(*drv, "omega_rad_s", "driver.omega_rad_s").value_or(0.0);
-    d.alpha = r.number(*drv, "alpha_rad_s2", "driver.alpha_rad_s2").value_or(0.0);
+    d.omega = r.number(*drv, keys.rate, "driver." + keys.rate).value_or(0.0);
+    d.alpha = r.number(*drv, keys.acceleration, "driver." + keys.acceleration).value_or(0.0);
     law = r.object(*drv, "law", "driver.law", false);
   }
   if (const JsonValue* a = r.object(root, "analysis", "analysis")) {
-    d.fromDeg = r.number(*a, "from_deg", "analysis.from_deg").value_or(0.0);
-    d.toDeg = r.number(*a, "to_deg", "analysis.to_deg").value_or(0.0);
+    d.fromDeg = r.number(*a, keys.from, "analysis." + keys.from).value_or(0.0);
+    d.toDeg = r.number(*a, keys.to, "analysis." + keys.to).value_or(0.0);
     const double samples = r.number(*a, "samples", "analysis.samples").value_or(0.0);
     if (!r.error && (samples != std::floor(samples) || samples < 2 || samples > 1e7))
       r.fail("analysis.samples", "must be a whole number from 2 to 10000000 (got " + formatShort(samples) + ")");
     else d.samples = static_cast<std::size_t>(samples);
     // A law puts the analysis on a time base (version 4).
     if (law != nullptr) {
-      auto read = readLaw(*law, "driver.law", r);
+      auto read = readLaw(*law, "driver.law", keys, r);
       const double from = r.number(*a, "from_time_s", "analysis.from_time_s").value_or(0.0);
       const double to = r.number(*a, "to_time_s", "analysis.to_time_s").value_or(0.0);
       if (read) d.time = TimeBase{std::move(*read), from, to};
@@ -139,9 +142,9 @@ void writeLinkage(std::ostream& s, const Design& d) {
 
 // A design check's error restated with the document path, so the message names what is in
 // the file (a check's message starts with its own field name, or else is quoted whole).
-std::optional<Error> inDocument(std::optional<Error> e) {
+std::optional<Error> inDocument(std::optional<Error> e, const InputKeys& keys = inputKeys(InputKind::Angle, "")) {
   if (!e) return std::nullopt;
-  const std::string path = documentPath(e->field);
+  const std::string path = documentPath(e->field, keys);
   const bool named = e->message.rfind(e->field, 0) == 0;
   return Error{e->code, path, path + (named ? e->message.substr(e->field.size()) : ": " + e->message)};
 }
@@ -162,16 +165,19 @@ Result<Mechanism> buildRead(const FourBarMembers& f) {
 
 std::optional<Error> checkRead(const Design& d) {
   if (auto e = checkMechanism(d.mechanism)) return Error{e->code, "mechanism." + e->field, "mechanism." + e->message};
-  if (auto e = inDocument(checkDriveAndGrid(d.omega, d.alpha, d.fromDeg, d.toDeg, d.samples))) return e;
+  const InputKeys keys = keysOf(d.mechanism);
+  if (auto e = inDocument(checkDriveAndGrid(d.omega, d.alpha, d.fromDeg, d.toDeg, d.samples), keys)) return e;
   if (d.time)
-    if (auto e = inDocument(checkTimeBase(*d.time))) return e;
+    if (auto e = inDocument(checkTimeBase(*d.time), keys)) return e;
   return checkDocumentDynamics(d.mechanism, d.dynamics);
 }
 
-// Version 3 added "dynamics" and version 4 the driver's "law": a design is written as the
-// oldest version that holds it, so older Linkwrights still open it, or refuse it rather than
-// drop what they do not know.
+// Version 3 added "dynamics", version 4 the driver's "law" and version 5 drivers other than a
+// crank (points driven along a path, linear actuators): a design is written as the oldest
+// version that holds it, so older Linkwrights still open it, or refuse it rather than drop
+// what they do not know.
 int versionFor(const Design& design) {
+  if (inputKind(design.mechanism) != InputKind::Angle) return 5;
   if (design.time) return 4;
   return design.dynamics.empty() ? 2 : 3;
 }
@@ -200,7 +206,7 @@ Result<Design> readDocument(std::string_view text) {
   Design d;
   if (type == "four-bar") {
     const FourBarMembers f = readFourBar(*mech, r);
-    readMotion(root, r, d);
+    readMotion(root, inputKeys(InputKind::Angle, f.lengthUnit), r, d);
     d.dynamics = readDynamicsMember(root, r);
     if (r.error) return *r.error;
     auto built = buildRead(f);
@@ -218,7 +224,8 @@ Result<Design> readDocument(std::string_view text) {
   const std::string unit = r.string(*mech, "length_unit", "mechanism.length_unit").value_or("");
   d.mechanism = readMechanismMembers(*mech, "mechanism", r);
   d.mechanism.lengthUnit = unit;
-  readMotion(root, r, d);
+  if (r.error) return *r.error;
+  readMotion(root, keysOf(d.mechanism), r, d);
   d.dynamics = readDynamicsMember(root, r);
   if (r.error) return *r.error;
   if (auto e = checkRead(d)) return *e;

@@ -31,9 +31,10 @@
 
 namespace linkwright::kinematics::io {
 
-/// The newest document version this build reads, and writes for a design with a motion law
-/// (one with dynamics only is written as version 3, one with neither as version 2).
-inline constexpr int kDocumentVersion = 4;
+/// The newest document version this build reads, and writes for a design driven other than by
+/// a crank (a design with a motion law is written as version 4, one with dynamics only as
+/// version 3, one with neither as version 2).
+inline constexpr int kDocumentVersion = 5;
 
 /// The document text for a design (UTF-8, LF line ends, trailing newline).
 std::string writeDocument(const Design& design);

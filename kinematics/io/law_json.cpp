@@ -15,24 +15,27 @@ void writeList(std::ostream& out, const std::vector<double>& values) {
 
 struct LawWriter {
   std::ostream& out;
+  const InputKeys& keys;
+
+  std::string key(const std::string& name) const { return '"' + name + "\": "; }
   void operator()(const ConstantVelocity& l) const {
-    out << R"({"type": "constant", "start_rad": )" << number(l.start) << R"(, "velocity_rad_s": )" << number(l.velocity)
-        << '}';
+    out << R"({"type": "constant", )" << key(keys.lawStart) << number(l.start) << ", " << key(keys.lawVelocity)
+        << number(l.velocity) << '}';
   }
   void operator()(const RampToSpeed& l) const {
-    out << R"({"type": "ramp", "start_rad": )" << number(l.start) << R"(, "velocity_rad_s": )" << number(l.velocity)
-        << R"(, "ramp_time_s": )" << number(l.rampTime) << '}';
+    out << R"({"type": "ramp", )" << key(keys.lawStart) << number(l.start) << ", " << key(keys.lawVelocity)
+        << number(l.velocity) << R"(, "ramp_time_s": )" << number(l.rampTime) << '}';
   }
   void rise(const char* type, double start, double rise, double duration) const {
-    out << R"({"type": ")" << type << R"(", "start_rad": )" << number(start) << R"(, "rise_rad": )" << number(rise)
-        << R"(, "duration_s": )" << number(duration) << '}';
+    out << R"({"type": ")" << type << "\", " << key(keys.lawStart) << number(start) << ", " << key(keys.lawRise)
+        << number(rise) << R"(, "duration_s": )" << number(duration) << '}';
   }
   void operator()(const CycloidalRise& l) const { rise("cycloidal", l.start, l.rise, l.duration); }
   void operator()(const PolynomialRise& l) const { rise("345", l.start, l.rise, l.duration); }
   void operator()(const TableLaw& l) const {
     out << R"({"type": "table", "time_s": )";
     writeList(out, l.time);
-    out << R"(, "angle_rad": )";
+    out << ", " << key(keys.lawTable);
     writeList(out, l.position);
     out << '}';
   }
@@ -55,20 +58,29 @@ std::vector<double> readList(const JsonValue& parent, const std::string& key, co
 
 }  // namespace
 
-void writeLaw(std::ostream& out, const MotionLaw& law) { std::visit(LawWriter{out}, law); }
+InputKeys inputKeys(InputKind kind, const std::string& u) {
+  if (kind == InputKind::Angle)
+    return {"omega_rad_s", "alpha_rad_s2",   "from_deg", "to_deg",
+            "start_rad",   "velocity_rad_s", "rise_rad", "angle_rad"};
+  return {"velocity_" + u + "_s", "acceleration_" + u + "_s2", "from_" + u, "to_" + u,
+          "start_" + u,           "velocity_" + u + "_s",      "rise_" + u, "position_" + u};
+}
 
-std::optional<MotionLaw> readLaw(const JsonValue& value, const std::string& path, JsonReader& r) {
+void writeLaw(std::ostream& out, const MotionLaw& law, const InputKeys& keys) { std::visit(LawWriter{out, keys}, law); }
+
+std::optional<MotionLaw> readLaw(const JsonValue& value, const std::string& path, const InputKeys& keys,
+                                 JsonReader& r) {
   const auto type = r.string(value, "type", path + ".type");
   if (!type) return std::nullopt;
-  const auto num = [&](const char* key) { return r.number(value, key, path + "." + key).value_or(0.0); };
+  const auto num = [&](const std::string& key) { return r.number(value, key, path + "." + key).value_or(0.0); };
   std::optional<MotionLaw> law;
-  if (*type == "constant") law = ConstantVelocity{num("start_rad"), num("velocity_rad_s")};
-  else if (*type == "ramp") law = RampToSpeed{num("start_rad"), num("velocity_rad_s"), num("ramp_time_s")};
-  else if (*type == "cycloidal") law = CycloidalRise{num("start_rad"), num("rise_rad"), num("duration_s")};
-  else if (*type == "345") law = PolynomialRise{num("start_rad"), num("rise_rad"), num("duration_s")};
+  if (*type == "constant") law = ConstantVelocity{num(keys.lawStart), num(keys.lawVelocity)};
+  else if (*type == "ramp") law = RampToSpeed{num(keys.lawStart), num(keys.lawVelocity), num("ramp_time_s")};
+  else if (*type == "cycloidal") law = CycloidalRise{num(keys.lawStart), num(keys.lawRise), num("duration_s")};
+  else if (*type == "345") law = PolynomialRise{num(keys.lawStart), num(keys.lawRise), num("duration_s")};
   else if (*type == "table") {
     auto time = readList(value, "time_s", path, r);
-    auto angle = readList(value, "angle_rad", path, r);
+    auto angle = readList(value, keys.lawTable, path, r);
     if (r.error) return std::nullopt;
     auto table = makeTableLaw(std::move(time), std::move(angle));
     if (!table) {

@@ -20,6 +20,11 @@ public:
     m_out << "\"type\": \"crank\", \"pivot\": " << point(c.pivot) << ", \"length\": " << formatJsonNumber(c.length)
           << ", \"phase_rad\": " << formatJsonNumber(c.phase);
   }
+  void operator()(const PathPoint& d) { m_out << "\"type\": \"path\", \"path\": " << path(d.path); }
+  void operator()(const ActuatorPoint& a) {
+    m_out << "\"type\": \"actuator\", \"first\": " << point(a.first) << ", \"length\": " << formatJsonNumber(a.length)
+          << ", \"base\": " << point(a.base) << ", \"branch\": \"" << branchName(a.branch) << "\"";
+  }
   void operator()(const RrrPoint& r) {
     m_out << "\"type\": \"rrr\", \"first\": " << point(r.first)
           << ", \"first_length\": " << formatJsonNumber(r.firstLength) << ", \"second\": " << point(r.second)
@@ -48,6 +53,19 @@ private:
   static std::string xy(const Eigen::Vector2d& p) {
     return ", \"x\": " + formatJsonNumber(p.x()) + ", \"y\": " + formatJsonNumber(p.y());
   }
+  static std::string path(const PathShape& shape) {
+    if (const auto* line = std::get_if<PolylinePath>(&shape)) {
+      std::string s = "{\"shape\": \"polyline\", \"vertices\": [";
+      for (std::size_t k = 0; k < line->vertices.size(); ++k)
+        s += std::string(k == 0 ? "" : ", ") + "{\"x\": " + formatJsonNumber(line->vertices[k].x()) +
+             ", \"y\": " + formatJsonNumber(line->vertices[k].y()) + "}";
+      return s + "]}";
+    }
+    const auto& arc = std::get<ArcPath>(shape);
+    return "{\"shape\": \"arc\"" + xy(arc.centre) + ", \"radius\": " + formatJsonNumber(arc.radius) +
+           ", \"start_angle_rad\": " + formatJsonNumber(arc.startAngle) +
+           ", \"sweep_rad\": " + formatJsonNumber(arc.sweep) + "}";
+  }
   std::string guide(const Guide& g) const {
     std::string s = "{";
     if (g.link) s += "\"link\": " + jsonQuote(m_m.links[g.link->index].name) + ", ";
@@ -72,6 +90,13 @@ public:
     if (type == "ground") return GroundPoint{xy(v, path)};
     if (type == "crank")
       return CrankPoint{point(v, "pivot", path), positive(v, "length", path), number(v, "phase_rad", path)};
+    if (type == "path") {
+      const JsonValue* shape = m_r.object(v, "path", path + ".path");
+      return PathPoint{shape ? pathShape(*shape, path + ".path") : PathShape{}};
+    }
+    if (type == "actuator")
+      return ActuatorPoint{point(v, "first", path), positive(v, "length", path), point(v, "base", path),
+                           branch(v, path)};
     if (type == "rrr")
       return RrrPoint{point(v, "first", path), positive(v, "first_length", path), point(v, "second", path),
                       positive(v, "second_length", path), branch(v, path)};
@@ -90,7 +115,8 @@ public:
     if (type == "attached")
       return AttachedPoint{link(v, "link", path), number(v, "along", path), number(v, "across", path)};
     if (type == "free") return FreePoint{xy(v, path)};
-    m_r.fail(path + ".type", "must be one of ground, crank, rrr, rrp, rpr, prp, attached, free (got \"" + type + "\")");
+    m_r.fail(path + ".type",
+             "must be one of ground, crank, path, actuator, rrr, rrp, rpr, prp, attached, free (got \"" + type + "\")");
     return GroundPoint{};
   }
 
@@ -125,6 +151,29 @@ private:
     const auto it = m_links.find(name);
     if (it == m_links.end()) m_r.fail(path + "." + key, "names no link of this mechanism (got \"" + name + "\")");
     return it == m_links.end() ? LinkId{} : LinkId{it->second};
+  }
+  PathShape pathShape(const JsonValue& v, const std::string& path) {
+    const std::string shape = m_r.string(v, "shape", path + ".shape").value_or("");
+    if (shape == "arc")
+      return ArcPath{xy(v, path), positive(v, "radius", path), number(v, "start_angle_rad", path),
+                     number(v, "sweep_rad", path)};
+    if (shape != "polyline") {
+      m_r.fail(path + ".shape", "must be \"polyline\" or \"arc\" (got \"" + shape + "\")");
+      return PolylinePath{};
+    }
+    PolylinePath line;
+    const JsonValue* vertices = m_r.array(v, "vertices", path + ".vertices");
+    if (vertices == nullptr) return line;
+    for (std::size_t k = 0; k < vertices->size(); ++k) {
+      const JsonValue& vertex = (*vertices)[k];
+      const std::string at = path + ".vertices[" + std::to_string(k) + "]";
+      if (!vertex.is_object()) {
+        m_r.fail(at, "must be an object with x and y");
+        return line;
+      }
+      line.vertices.push_back(xy(vertex, at));
+    }
+    return line;
   }
   Guide guide(const JsonValue& g, const std::string& path) {
     Guide out;

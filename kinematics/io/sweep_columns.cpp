@@ -1,5 +1,6 @@
 #include "kinematics/io/sweep_columns.h"
 
+#include "kinematics/model/driver.h"
 #include "kinematics/model/units.h"
 
 #include <cmath>
@@ -7,8 +8,17 @@
 namespace linkwright::kinematics::io {
 namespace {
 
-bool isDyad(const Point& p) {
-  return std::holds_alternative<RrrPoint>(p.definition) || std::holds_alternative<RrpPoint>(p.definition);
+bool isDyad(const Point& p) { return hasAssemblyBranch(p.definition); }
+
+// The input's column: the crank angle in degrees, or the linear driver's coordinate, named
+// for its point ("tip_s_m") or actuator ("actuator_length_mm").
+SweepColumn inputColumn(const Mechanism& m) {
+  if (inputKind(m) == InputKind::Angle) return {"crank_angle_deg", ColumnQuantity::InputAngle, 0};
+  const auto driver = driverPoint(m);
+  const std::string& u = m.lengthUnit;
+  if (driver && std::holds_alternative<ActuatorPoint>(m.points[driver->index].definition))
+    return {"actuator_length_" + u, ColumnQuantity::InputLength, 0};
+  return {(driver ? m.points[driver->index].name : std::string("input")) + "_s_" + u, ColumnQuantity::InputLength, 0};
 }
 
 }  // namespace
@@ -35,6 +45,7 @@ double SweepColumn::value(const SweepResult& r, std::size_t j) const {
   switch (quantity) {
   case ColumnQuantity::Time: return r.time[j];
   case ColumnQuantity::InputAngle: return radToDeg(r.inputAngle[j]);
+  case ColumnQuantity::InputLength: return r.inputAngle[j];
   case ColumnQuantity::LinkAngle: return radToDeg(r.linkAngle[index][j]);
   case ColumnQuantity::LinkOmega: return r.linkOmega[index][j];
   case ColumnQuantity::LinkAlpha: return r.linkAlpha[index][j];
@@ -54,6 +65,7 @@ double SweepColumn::valueOf(const Pose& p, double inputAngle, double nearDeg) co
   switch (quantity) {
   case ColumnQuantity::Time: return 0.0;  // not a property of the pose
   case ColumnQuantity::InputAngle: return radToDeg(inputAngle);
+  case ColumnQuantity::InputLength: return inputAngle;
   case ColumnQuantity::LinkAngle: return unwrapped(radToDeg(p.linkAngle[index]));
   case ColumnQuantity::LinkOmega: return p.linkOmega[index];
   case ColumnQuantity::LinkAlpha: return p.linkAlpha[index];
@@ -74,7 +86,7 @@ std::vector<SweepColumn> sweepColumns(const Mechanism& m, const SolveRequest& re
   const bool acc = request.accelerations;
   std::vector<SweepColumn> columns;
   if (timeBase) columns.push_back({"time_s", Q::Time, 0});
-  columns.push_back({"crank_angle_deg", Q::InputAngle, 0});
+  columns.push_back(inputColumn(m));
   for (std::size_t k = 0; k < m.links.size(); ++k) {
     const std::string& name = m.links[k].name;
     if (!isDrivenCrankLink(m, LinkId{k})) columns.push_back({name + "_angle_deg", Q::LinkAngle, k});

@@ -3,10 +3,11 @@
 // writer, the CLI's text table and (later) the GUI's plots all pick from this one list, so a
 // quantity has the same name and unit everywhere:
 //   time_s                             the instant, on a time base (SweepResult::time)
-//   crank_angle_deg                    the input angle (the sweep's grid)
+//   crank_angle_deg                    the input angle (the sweep's grid), for a crank driver;
+//   <point>_s_<unit>, actuator_length_<unit>   the input of a path or actuator driver
 //   <link>_angle_deg                   each moving link other than the driven crank, unwrapped
 //   <link>_omega_rad_s, <link>_alpha_rad_s2   each moving link, crank first
-//   transmission_angle_deg             per RRR or RRP dyad (suffixed _<point> when several)
+//   transmission_angle_deg             per RRR, RRP or actuator dyad (suffixed _<point> when several)
 //   <point>_x_<unit>, _y_, _vx_<unit>_s, _vy_, _ax_<unit>_s2, _ay_   each moving point
 
 #include "kinematics/model/mechanism.h"
@@ -20,6 +21,7 @@ namespace linkwright::kinematics::io {
 enum class ColumnQuantity {
   Time,
   InputAngle,
+  InputLength,
   LinkAngle,
   LinkOmega,
   LinkAlpha,

@@ -3,7 +3,8 @@
 // from points before it (ground pivot, driven crank tip, RRR dyad joint, point fixed on a
 // link), and the moving links whose angles, rates and accelerations are reported. This is the
 // dyad decomposition of Pyslvs and of every closed-form textbook method: solving the points in
-// order solves the linkage. One crank drives it (one degree of freedom). RRP dyads (sliders on
+// order solves the linkage. One driver moves it (one degree of freedom): a crank, a point driven
+// along a path, or a linear actuator (driver.h names its coordinate). RRP dyads (sliders on
 // a guide) make slider-cranks; RPR dyads (slotted links) make quick-return mechanisms; PRP
 // dyads join two sliders. Six-bars are a four-bar plus one more dyad.
 //
@@ -35,12 +36,53 @@ struct GroundPoint {
 };
 
 /// The driven crank tip: at `length` from ground point `pivot`, at the input angle plus
-/// `phase` (rad). There is exactly one per mechanism.
+/// `phase` (rad). The input is the crank's angle (rad).
 struct CrankPoint {
   PointId pivot;
   double length = 1.0;
   double phase = 0.0;
   bool operator==(const CrankPoint&) const = default;
+};
+
+/// A path fixed to the ground, by its vertices, straight between them. Its coordinate s is the
+/// arc length from the first vertex (length unit); beyond the ends the path goes on straight
+/// along its end segments. Two vertices make a line segment (a slider's guide); a table of
+/// points makes a polyline.
+struct PolylinePath {
+  std::vector<Eigen::Vector2d> vertices;
+  bool operator==(const PolylinePath&) const = default;
+};
+
+/// A circular arc fixed to the ground: centre, radius, the angle where s = 0 (rad, CCW from
+/// +x) and the sweep (rad; positive runs counter-clockwise). s is the arc length from the
+/// start, signed along the sweep; beyond the ends the path goes on around its circle.
+struct ArcPath {
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  double radius = 1.0;
+  double startAngle = 0.0;
+  double sweep = 1.0;
+  bool operator==(const ArcPath&) const = default;
+};
+
+using PathShape = std::variant<PolylinePath, ArcPath>;
+
+/// A point driven along a ground path (a tool tip following a line, a piston on its bore):
+/// the input is its path coordinate s (length unit, path_shape.h).
+struct PathPoint {
+  PathShape path;
+  bool operator==(const PathPoint&) const = default;
+};
+
+/// The far end C of a linear actuator (a hydraulic cylinder pinned at ground or link point
+/// `base`): at `length` from point `first` (on the link it drives) and at the input distance
+/// from `base`, on the side given by `branch` (as an RRR point's, with `base` second). The
+/// input is the actuator's length, pin to pin (length unit).
+struct ActuatorPoint {
+  PointId first;
+  double length = 1.0;
+  PointId base;
+  Branch branch = Branch::Open;
+  bool operator==(const ActuatorPoint&) const = default;
 };
 
 /// The joint C of an RRR dyad: at `firstLength` from point `first` and at `secondLength` from
@@ -116,8 +158,16 @@ struct FreePoint {
   bool operator==(const FreePoint&) const = default;
 };
 
-using PointDefinition =
-    std::variant<GroundPoint, CrankPoint, RrrPoint, RrpPoint, RprPoint, PrpPoint, AttachedPoint, FreePoint>;
+using PointDefinition = std::variant<GroundPoint, CrankPoint, PathPoint, ActuatorPoint, RrrPoint, RrpPoint, RprPoint,
+                                     PrpPoint, AttachedPoint, FreePoint>;
+
+/// True for the points solved as one of two mirror-image candidates, whose branch a sweep
+/// tracks and whose transmission angle and assembly gap a pose reports: RRR and RRP dyads and
+/// linear actuators.
+inline bool hasAssemblyBranch(const PointDefinition& d) {
+  return std::holds_alternative<RrrPoint>(d) || std::holds_alternative<RrpPoint>(d) ||
+         std::holds_alternative<ActuatorPoint>(d);
+}
 
 /// A named point. Its definition refers only to points (and links) defined before it.
 struct Point {
@@ -127,7 +177,7 @@ struct Point {
 };
 
 /// A moving rigid link between two points that its definition keeps at constant distance
-/// (crank pivot and tip, or a dyad joint and one of its parents). Its angle is the direction
+/// (crank pivot and tip, a dyad joint and one of its parents, an actuator's end and `first`). Its angle is the direction
 /// from `first` to `second`.
 struct Link {
   std::string name;

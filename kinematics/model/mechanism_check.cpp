@@ -1,6 +1,8 @@
 #include "kinematics/model/mechanism_check.h"
 
 #include "kinematics/model/constraint_form.h"
+#include "kinematics/model/driver.h"
+#include "kinematics/model/path_shape.h"
 #include "kinematics/model/validate.h"
 
 #include <algorithm>
@@ -40,19 +42,25 @@ std::optional<Error> checkGuide(const Mechanism& m, const Guide& g, std::size_t 
   return checkCoordinate(g.angle, field + ".angle");
 }
 
-std::optional<Error> checkPoint(const Mechanism& m, std::size_t i, int& cranks) {
+std::optional<Error> checkPoint(const Mechanism& m, std::size_t i) {
   const PointDefinition& def = m.points[i].definition;
   if (const auto* g = std::get_if<GroundPoint>(&def)) {
     if (auto e = checkCoordinate(g->position.x(), pointField(i, "x"))) return e;
     return checkCoordinate(g->position.y(), pointField(i, "y"));
   }
   if (const auto* c = std::get_if<CrankPoint>(&def)) {
-    ++cranks;
     if (auto e = checkEarlier(c->pivot, i, "pivot")) return e;
     if (!std::holds_alternative<GroundPoint>(m.points[c->pivot.index].definition))
       return structureError(pointField(i, "pivot"), "must be a ground point");
     if (auto e = checkLength(c->length, pointField(i, "length"))) return e;
     return checkCoordinate(c->phase, pointField(i, "phase"));
+  }
+  if (const auto* d = std::get_if<PathPoint>(&def)) return checkPathShape(d->path, pointField(i, "path"));
+  if (const auto* a = std::get_if<ActuatorPoint>(&def)) {
+    if (auto e = checkEarlier(a->first, i, "first")) return e;
+    if (auto e = checkEarlier(a->base, i, "base")) return e;
+    if (a->first == a->base) return structureError(pointField(i, "base"), "must differ from its first point");
+    return checkLength(a->length, pointField(i, "length"));
   }
   if (const auto* r = std::get_if<RrrPoint>(&def)) {
     if (auto e = checkEarlier(r->first, i, "first")) return e;
@@ -95,6 +103,7 @@ bool isRigidPair(const Mechanism& m, PointId a, PointId b) {
   auto definesFrom = [&](PointId child, PointId parent) {
     const PointDefinition& def = m.points[child.index].definition;
     if (const auto* c = std::get_if<CrankPoint>(&def)) return c->pivot == parent;
+    if (const auto* actuator = std::get_if<ActuatorPoint>(&def)) return actuator->first == parent;
     if (const auto* r = std::get_if<RrrPoint>(&def)) return r->first == parent || r->second == parent;
     if (const auto* p = std::get_if<RrpPoint>(&def)) return p->first == parent;
     if (const auto* s = std::get_if<RprPoint>(&def)) return s->pivot == parent;
@@ -170,6 +179,24 @@ std::string lengthName(const Mechanism& m, PointId a, PointId b) {
   return "the length " + m.points[a.index].name + "–" + m.points[b.index].name;
 }
 
+// A path's extent counts as a length (a driven point's travel), its vertices or centre as
+// coordinates.
+template <typename Coordinate>
+void pathDimensions(const PathShape& shape, std::size_t i, const std::string& name, std::vector<Dimension>& lengths,
+                    Coordinate coordinate) {
+  if (const auto* line = std::get_if<PolylinePath>(&shape)) {
+    for (const Eigen::Vector2d& v : line->vertices) {
+      coordinate(v.x(), i, "path.x");
+      coordinate(v.y(), i, "path.y");
+    }
+    return;
+  }
+  const auto& arc = std::get<ArcPath>(shape);
+  lengths.push_back({arc.radius, name + " path radius"});
+  coordinate(arc.centre.x(), i, "path.centre.x");
+  coordinate(arc.centre.y(), i, "path.centre.y");
+}
+
 // Every length and every coordinate the mechanism's numbers hold.
 void dimensionsOf(const Mechanism& m, std::vector<Dimension>& lengths, std::vector<Dimension>& coordinates) {
   const auto coordinate = [&](double v, std::size_t i, const char* member) {
@@ -183,6 +210,10 @@ void dimensionsOf(const Mechanism& m, std::vector<Dimension>& lengths, std::vect
       coordinate(g->position.y(), i, "y");
     } else if (const auto* c = std::get_if<CrankPoint>(&def)) {
       lengths.push_back({c->length, lengthName(m, c->pivot, self)});
+    } else if (const auto* actuator = std::get_if<ActuatorPoint>(&def)) {
+      lengths.push_back({actuator->length, lengthName(m, actuator->first, self)});
+    } else if (const auto* d = std::get_if<PathPoint>(&def)) {
+      pathDimensions(d->path, i, m.points[i].name, lengths, coordinate);
     } else if (const auto* r = std::get_if<RrrPoint>(&def)) {
       lengths.push_back({r->firstLength, lengthName(m, r->first, self)});
       lengths.push_back({r->secondLength, lengthName(m, r->second, self)});
@@ -231,11 +262,15 @@ std::optional<Error> checkMechanism(const Mechanism& m) {
     if (!names.insert(m.points[i].name).second)
       return structureError(pointField(i, "name"), "repeats the name '" + m.points[i].name + "'");
   }
-  int cranks = 0;
-  for (std::size_t i = 0; i < m.points.size(); ++i)
-    if (auto e = checkPoint(m, i, cranks)) return e;
-  if (cranks != 1)
-    return structureError("points", "must contain exactly one crank (got " + std::to_string(cranks) + ")");
+  int drivers = 0;
+  for (std::size_t i = 0; i < m.points.size(); ++i) {
+    if (auto e = checkPoint(m, i)) return e;
+    drivers += isDriver(m.points[i].definition) ? 1 : 0;
+  }
+  if (drivers != 1)
+    return structureError("points",
+                          "must contain exactly one driver: a crank, a point on a path or a linear actuator (got " +
+                              std::to_string(drivers) + ")");
   for (std::size_t k = 0; k < m.constraints.size(); ++k)
     if (auto e = checkConstraint(m, k)) return e;
   for (std::size_t i = 0; i < m.points.size(); ++i) {

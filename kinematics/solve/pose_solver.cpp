@@ -1,7 +1,9 @@
 #include "kinematics/solve/pose_solver.h"
 
 #include "kinematics/io/number_format.h"
+#include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/path_shape.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/model/vec2.h"
@@ -103,6 +105,55 @@ struct Solver {
     if (wantVelocity) pose.velocity[i] = c.length * driver.omega * perp(radial);
     if (wantAcceleration)
       pose.acceleration[i] = c.length * (driver.alpha * perp(radial) - driver.omega * driver.omega * radial);
+  }
+
+  // The driven point on its path: v = ṡ·p'(s), a = s̈·p'(s) + ṡ²·p''(s) (path_shape.h).
+  void onPath(Lane& lane, std::size_t i, const PathPoint& d) const {
+    const DriverState& driver = *lane.driver;
+    Pose& pose = *lane.pose;
+    const PathState at = pathAt(d.path, driver.angle);
+    pose.position[i] = at.point;
+    if (wantVelocity) pose.velocity[i] = driver.omega * at.tangent;
+    if (wantAcceleration) pose.acceleration[i] = driver.alpha * at.tangent + driver.omega * driver.omega * at.curvature;
+  }
+
+  // The actuator's end: an RRR dyad whose second length is the input q. Differentiating
+  // |C − base|² = q² adds q·q̇ to the velocity row and q̇² + q·q̈ to the acceleration row.
+  bool actuator(Lane& lane, std::size_t i, const ActuatorPoint& a) const {
+    const DriverState& driver = *lane.driver;
+    Pose& pose = *lane.pose;
+    const double q = driver.angle;
+    const RrrCandidates cand =
+        q > 0.0 ? rrrCandidates(pose.position[a.first.index], a.length, pose.position[a.base.index], q)
+                : RrrCandidates{AssemblyFailure::TooClose};
+    if (cand.failure != AssemblyFailure::None) {
+      lane.report = {PoseStatus::NotAssemblable, PointId{i}, cand.failure};
+      return false;
+    }
+    const signed char sign = chooseSign(i, a.branch, cand.open, cand.crossed);
+    const Eigen::Vector2d c = sign > 0 ? cand.open : cand.crossed;
+    pose.position[i] = c;
+    pose.assemblyGap[i] = std::min(a.length + q - cand.distance, cand.distance - std::abs(a.length - q));
+    pose.branchSign[i] = sign;
+    const Eigen::Vector2d r1 = c - pose.position[a.first.index];
+    const Eigen::Vector2d r2 = c - pose.position[a.base.index];
+    if (wantTransmission) pose.transmissionAngle[i] = std::atan2(std::abs(cross(r1, r2)), r1.dot(r2));
+    if (!wantVelocity || !lane.ratesValid) return true;
+    double inverse = 0.0;
+    if (!rrrInverseDeterminant(r1, r2, a.length * q, inverse)) {
+      markSingular(lane, i);
+      return true;
+    }
+    const Eigen::Vector2d& v1 = pose.velocity[a.first.index];
+    const Eigen::Vector2d& vb = pose.velocity[a.base.index];
+    const Eigen::Vector2d v = rrrSolve(r1, r2, inverse, {r1.dot(v1), r2.dot(vb) + q * driver.omega});
+    pose.velocity[i] = v;
+    if (!wantAcceleration) return true;
+    pose.acceleration[i] = rrrSolve(r1, r2, inverse,
+                                    {r1.dot(pose.acceleration[a.first.index]) - (v - v1).squaredNorm(),
+                                     r2.dot(pose.acceleration[a.base.index]) - (v - vb).squaredNorm() +
+                                         driver.omega * driver.omega + q * driver.alpha});
+    return true;
   }
 
   // +1 for the open candidate, −1 for the crossed one: the predicted position decides if
@@ -344,6 +395,11 @@ struct Solver {
     crank(lane, i, c);
     return true;
   }
+  bool solve(Lane& lane, std::size_t i, const PathPoint& d) const {
+    onPath(lane, i, d);
+    return true;
+  }
+  bool solve(Lane& lane, std::size_t i, const ActuatorPoint& a) const { return actuator(lane, i, a); }
   bool solve(Lane& lane, std::size_t i, const RrpPoint& p) const { return rrp(lane, i, p); }
   bool solve(Lane& lane, std::size_t i, const RprPoint& s) const { return rpr(lane, i, s); }
   bool solve(Lane& lane, std::size_t i, const PrpPoint& q) const { return prp(lane, i, q); }
@@ -441,6 +497,30 @@ std::string describeFreeGroup(const Mechanism& m, const PoseReport& report, cons
          " iterations" + where + "); the linkage probably cannot close here";
 }
 
+// An actuator that cannot reach or is at a toggle: the dyad's sentence, with the actuator's
+// length in place of a link.
+std::string describeActuator(const Mechanism& m, const PoseReport& report, const Pose& pose, const ActuatorPoint& a,
+                             double q, const std::string& at) {
+  const std::string& name = m.points[report.culprit.index].name;
+  const std::string& n1 = m.points[a.first.index].name;
+  const std::string& base = m.points[a.base.index].name;
+  const std::string len1 = lengthName(m, report.culprit, a.first, "first length");
+  const std::string unit = " " + m.lengthUnit;
+  if (report.status == PoseStatus::Singular)
+    return name + " is at a toggle position" + at + ": " + len1 + " and the actuator " + base + "–" + name +
+           " are collinear, so the actuator cannot move it there";
+  if (!(q > 0.0)) return name + " cannot be placed" + at + ": an actuator's length must be positive";
+  const double apart = (pose.position[a.base.index] - pose.position[a.first.index]).norm();
+  const std::string gap = n1 + " and " + base + " are " + io::formatShort(apart) + unit + " apart, ";
+  if (report.failure == AssemblyFailure::TooFar)
+    return name + " cannot be assembled" + at + ": " + gap + "more than " + len1 +
+           " + actuator = " + io::formatShort(a.length + q) + unit;
+  if (report.failure == AssemblyFailure::TooClose)
+    return name + " cannot be assembled" + at + ": " + gap + "less than |" + len1 +
+           " − actuator| = " + io::formatShort(std::abs(a.length - q)) + unit;
+  return name + " cannot be assembled" + at + ": " + n1 + " and " + base + " coincide, so " + name + " is undetermined";
+}
+
 }  // namespace
 
 void preparePose(const Mechanism& m, Pose& pose) {
@@ -504,7 +584,9 @@ Result<Pose> solvePose(const Mechanism& m, const DriverState& driver, const Solv
 std::string describeFailure(const Mechanism& m, const PoseReport& report, const Pose& pose, double inputAngle) {
   const std::size_t i = report.culprit.index;
   const std::string& name = m.points[i].name;
-  const std::string at = " at crank angle " + io::formatShort(radToDeg(inputAngle)) + "°";
+  const std::string unit = inputUnit(m);
+  const std::string at = " at " + inputName(m) + " " + io::formatShort(inputDisplayValue(m, inputAngle)) +
+                         (unit == "°" ? unit : " " + unit);
   if (std::holds_alternative<FreePoint>(m.points[i].definition) && report.status != PoseStatus::Ok)
     return describeFreeGroup(m, report, pose, at);
   if (const auto* p = std::get_if<RrpPoint>(&m.points[i].definition); p != nullptr && report.status != PoseStatus::Ok) {
@@ -525,6 +607,9 @@ std::string describeFailure(const Mechanism& m, const PoseReport& report, const 
       s != nullptr && report.status == PoseStatus::NotAssemblable)
     return name + " cannot be placed" + at + ": " + m.points[s->through.index].name + " lies on the pivot " +
            m.points[s->pivot.index].name + ", so the slot's direction is undetermined";
+  if (const auto* a = std::get_if<ActuatorPoint>(&m.points[i].definition);
+      a != nullptr && report.status != PoseStatus::Ok)
+    return describeActuator(m, report, pose, *a, inputAngle, at);
   const auto* r = std::get_if<RrrPoint>(&m.points[i].definition);
   if (report.status == PoseStatus::Ok || r == nullptr) return name + " solved" + at;
   const std::string& n1 = m.points[r->first.index].name;

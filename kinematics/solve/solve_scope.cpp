@@ -33,7 +33,10 @@ public:
     auto need = [&](PointId p) { m_scope.solvePoint[p.index] = 1; };
     const PointDefinition& def = m_mech.points[i].definition;
     if (const auto* c = std::get_if<CrankPoint>(&def)) need(c->pivot);
-    else if (const auto* r = std::get_if<RrrPoint>(&def)) {
+    else if (const auto* actuator = std::get_if<ActuatorPoint>(&def)) {
+      need(actuator->first);
+      need(actuator->base);
+    } else if (const auto* r = std::get_if<RrrPoint>(&def)) {
       need(r->first);
       need(r->second);
     } else if (const auto* p = std::get_if<RrpPoint>(&def)) {

@@ -1,5 +1,6 @@
 #include "kinematics/solve/sweep.h"
 
+#include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <span>
 
 namespace linkwright::kinematics {
@@ -28,18 +30,15 @@ constexpr int kMaxRefineDepth = 40;
 constexpr int kMaxRefineSolves = 256;
 const SolveRequest kPositionsOnly{false, false, {}, {}, false};
 
-bool isDyad(const Mechanism& m, std::size_t i) {
-  const PointDefinition& def = m.points[i].definition;
-  return std::holds_alternative<RrrPoint>(def) || std::holds_alternative<RrpPoint>(def);
-}
-
 // A dyad whose branch a sweep tracks, with what moves it: its parent points (`second` is
-// absent for a slider, whose other parent is its guide) and the link carrying its guide.
+// absent for a slider, whose other parent is its guide), the link carrying its guide, and for
+// an actuator the input, which is its length.
 struct TrackedDyad {
   std::size_t point;
   std::size_t first;
   std::optional<std::size_t> second;
   std::optional<LinkId> guideLink;
+  bool lengthIsInput = false;
 };
 
 // The dyads a scope solves, looked up once per sweep.
@@ -49,6 +48,8 @@ std::vector<TrackedDyad> dyadsIn(const Mechanism& m, const SolveScope& scope) {
     const PointDefinition& def = m.points[p.index].definition;
     if (const auto* r = std::get_if<RrrPoint>(&def)) out.push_back({p.index, r->first.index, r->second.index, {}});
     if (const auto* s = std::get_if<RrpPoint>(&def)) out.push_back({p.index, s->first.index, {}, s->guide.link});
+    if (const auto* a = std::get_if<ActuatorPoint>(&def))
+      out.push_back({p.index, a->first.index, a->base.index, {}, true});
   }
   return out;
 }
@@ -72,19 +73,34 @@ double guideMotion(const Mechanism& m, LinkId k, const Pose& a, const Pose& b) {
 // True unless every dyad provably stays away from its toggle between poses a and b. The gap to
 // an assembly limit (Pose::assemblyGap) changes no faster than the parents move, so it cannot
 // close if the gaps at both ends exceed the parents' displacement (doubled, since a chord
-// understates the path). Steps over half a radian are always split: there a chord says too
-// little about the path.
-// `dyads`: the RRR and RRP points solved (dyadsIn).
-bool branchAmbiguous(const Mechanism& m, std::span<const TrackedDyad> dyads, double aAngle, const Pose& a,
-                     double bAngle, const Pose& b) {
-  if (std::abs(bAngle - aAngle) > 0.5) return true;
+// understates the path). Input steps over `maxStep` are always split: there a chord says too
+// little about the path (inputStepLimit).
+// `dyads`: the RRR, RRP and actuator points solved (dyadsIn).
+bool branchAmbiguous(const Mechanism& m, std::span<const TrackedDyad> dyads, double maxStep, double aAngle,
+                     const Pose& a, double bAngle, const Pose& b) {
+  if (std::abs(bAngle - aAngle) > maxStep) return true;
   for (const TrackedDyad& d : dyads) {
     double motion = displacementBound(b.position[d.first] - a.position[d.first]);
+    if (d.lengthIsInput) motion += std::abs(bAngle - aAngle);
     if (d.second) motion += displacementBound(b.position[*d.second] - a.position[*d.second]);
     if (d.guideLink) motion += guideMotion(m, *d.guideLink, a, b);
     if (a.assemblyGap[d.point] + b.assemblyGap[d.point] <= 2.0 * motion) return true;
   }
   return false;
+}
+
+// The largest input step whose chords the branch test trusts: half a radian of crank, half the
+// radius of an arc path; a straight path or an actuator moves its point along the chord.
+double inputStepLimit(const Mechanism& m) {
+  const auto driver = driverPoint(m);
+  if (!driver) return 0.5;
+  const PointDefinition& def = m.points[driver->index].definition;
+  if (const auto* d = std::get_if<PathPoint>(&def)) {
+    if (const auto* arc = std::get_if<ArcPath>(&d->path)) return 0.5 * arc->radius;
+    return std::numeric_limits<double>::infinity();
+  }
+  if (std::holds_alternative<ActuatorPoint>(def)) return std::numeric_limits<double>::infinity();
+  return 0.5;
 }
 
 // Solves one sweep: tracks branches from sample to sample and writes the columns.
@@ -93,7 +109,7 @@ public:
   Tracker(const Mechanism& m, const SweepSpec& spec, const SolveRequest& request, const SolveScope& scope,
           SweepResult& out)
       : m_mech(m), m_spec(spec), m_request(request), m_scope(scope), m_out(out), m_writer(m, out),
-        m_dyads(dyadsIn(m, scope)), m_scratch(kMaxRefineDepth + 1) {
+        m_dyads(dyadsIn(m, scope)), m_maxStep(inputStepLimit(m)), m_scratch(kMaxRefineDepth + 1) {
     for (Pose& p : m_poses) preparePose(m, p);
     m_predicted.assign(m.points.size(), Eigen::Vector2d::Zero());
     m_hasFreePoints = std::any_of(m.points.begin(), m.points.end(),
@@ -152,7 +168,7 @@ private:
       const double previousAngle = kept == 0 ? m_lastAngle : drivers[kept - 1].angle;
       const Pose& previous = kept == 0 ? *m_last : m_block[kept - 1];
       if (reports[kept].status == PoseStatus::NotAssemblable ||
-          branchAmbiguous(m_mech, m_dyads, previousAngle, previous, angle, m_block[kept]))
+          branchAmbiguous(m_mech, m_dyads, m_maxStep, previousAngle, previous, angle, m_block[kept]))
         break;
     }
     for (std::size_t b = 0; b < kept; ++b) {
@@ -201,7 +217,7 @@ private:
     const BranchGuide keep{m_last->branchSign, {}};
     PoseReport report = solve(driver, m_request, *m_current, keep);
     if (report.status == PoseStatus::NotAssemblable ||
-        !branchAmbiguous(m_mech, m_dyads, m_lastAngle, *m_last, angle, *m_current))
+        !branchAmbiguous(m_mech, m_dyads, m_maxStep, m_lastAngle, *m_last, angle, *m_current))
       return report;
     const Eigen::Vector2d* before = m_haveBefore ? m_before->position.data() : nullptr;
     if (!refine(0, m_lastAngle, *m_last, m_beforeAngle, before, angle, scratch(0))) {
@@ -224,7 +240,7 @@ private:
     out.assembled = true;
     const BranchGuide keep{a.branchSign, {}};
     if (solve({b, 0.0, 0.0}, kPositionsOnly, out, keep).status == PoseStatus::NotAssemblable) return false;
-    if (!branchAmbiguous(m_mech, m_dyads, aAngle, a, b, out)) return true;
+    if (!branchAmbiguous(m_mech, m_dyads, m_maxStep, aAngle, a, b, out)) return true;
     if (std::abs(b - aAngle) <= kMinRefineStep || depth == kMaxRefineDepth || ++m_refineSolves > kMaxRefineSolves) {
       if (before == nullptr) return true;
       // A driver at rest between samples (a dwell) gives no direction to extrapolate.
@@ -256,6 +272,7 @@ private:
   SweepResult& m_out;
   SampleWriter m_writer;
   std::vector<TrackedDyad> m_dyads;
+  double m_maxStep;
   Pose m_poses[3];
   std::array<Pose, kMaxBlock> m_block;  // a block's poses, and their drivers and reports
   std::array<Pose*, kMaxBlock> m_blockPoses{};
@@ -301,7 +318,8 @@ void allocate(const Mechanism& m, std::size_t n, const SolveRequest& request, co
   sizeColumns(out.linkOmega, scope.reportLink, request.velocities, n);
   sizeColumns(out.linkAlpha, scope.reportLink, request.accelerations, n);
   std::vector<unsigned char> dyads = scope.reportPoint;
-  for (std::size_t i = 0; i < dyads.size(); ++i) dyads[i] = dyads[i] != 0 && isDyad(m, i) ? 1 : 0;
+  for (std::size_t i = 0; i < dyads.size(); ++i)
+    dyads[i] = dyads[i] != 0 && hasAssemblyBranch(m.points[i].definition) ? 1 : 0;
   if (!request.transmissionAngles) std::fill(dyads.begin(), dyads.end(), 0);
   sizeColumns(out.transmissionAngle, dyads, true, n);
   out.notAssembled.clear();

@@ -135,7 +135,7 @@ TEST_CASE("a document whose crank follows a law is analysed on its time base", "
   // The angle grid's options do not apply to it; extremes refine in time.
   const auto to = runCliCommand({"analyze", path, "--to", "90"});
   CHECK(to.code == 2);
-  CHECK_THAT(to.err, Catch::Contains("--to does not apply: this document's crank follows a motion law in time"));
+  CHECK_THAT(to.err, Catch::Contains("--to does not apply: this linkage's driver follows a motion law in time"));
   const auto extremes = runCliCommand({"extremes", path});
   CHECK(extremes.code == 0);
   CHECK_THAT(extremes.out, Catch::StartsWith("extremes over times 0 s to 3 s, refined between 31 samples"));

@@ -19,6 +19,10 @@ struct HintOf {
   QString operator()(const k::CrankPoint&) const {
     return tr("Drag %1 to change the crank length and phase").arg(name);
   }
+  QString operator()(const k::PathPoint&) const { return tr("Drag %1 along its path to move the input").arg(name); }
+  QString operator()(const k::ActuatorPoint&) const {
+    return tr("Drag %1 to change its link's length and the actuator's stroke").arg(name);
+  }
   QString operator()(const k::RrrPoint&) const {
     return tr("Drag %1 to change the lengths of the two links it joins").arg(name);
   }

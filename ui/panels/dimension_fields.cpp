@@ -39,10 +39,15 @@ QString labelOf(const k::Mechanism& m, const k::Parameter& p) {
   const auto& d = m.points[p.point.index].definition;
   const auto to = [&](k::PointId other) { return tr("to %1").arg(nameOf(m, other)); };
   const bool free = std::holds_alternative<k::FreePoint>(d);
+  const auto* driven = std::get_if<k::PathPoint>(&d);
+  const bool onArc = driven != nullptr && std::holds_alternative<k::ArcPath>(driven->path);
   switch (p.slot) {
-  case S::X: return free ? tr("guess x") : tr("x");
-  case S::Y: return free ? tr("guess y") : tr("y");
-  case S::Phase: return tr("phase");
+  case S::X: return free ? tr("guess x") : onArc ? tr("path centre x") : tr("x");
+  case S::Y: return free ? tr("guess y") : onArc ? tr("path centre y") : tr("y");
+  case S::Phase: return onArc ? tr("path start angle") : tr("phase");
+  case S::Sweep: return tr("path sweep");
+  case S::PathX: return tr("path point %1 x").arg(p.vertex + 1);
+  case S::PathY: return tr("path point %1 y").arg(p.vertex + 1);
   case S::Along: return tr("along");
   case S::Across: return tr("across");
   case S::Length:
@@ -50,6 +55,8 @@ QString labelOf(const k::Mechanism& m, const k::Parameter& p) {
     if (const auto* r = std::get_if<k::RrrPoint>(&d)) return to(r->first);
     if (const auto* s = std::get_if<k::RrpPoint>(&d)) return to(s->first);
     if (const auto* s = std::get_if<k::RprPoint>(&d)) return to(s->pivot);
+    if (const auto* a = std::get_if<k::ActuatorPoint>(&d)) return to(a->first);
+    if (onArc) return tr("path radius");
     return {};
   case S::SecondLength: return to(std::get<k::RrrPoint>(d).second);
   case S::GuideX:
@@ -93,12 +100,14 @@ void setFieldValue(k::Mechanism& mechanism, const DimensionField& field, double 
 k::Branch* branchOf(k::Point& point) {
   if (auto* r = std::get_if<k::RrrPoint>(&point.definition)) return &r->branch;
   if (auto* s = std::get_if<k::RrpPoint>(&point.definition)) return &s->branch;
+  if (auto* a = std::get_if<k::ActuatorPoint>(&point.definition)) return &a->branch;
   return nullptr;
 }
 
 const k::Branch* branchOf(const k::Point& point) {
   if (const auto* r = std::get_if<k::RrrPoint>(&point.definition)) return &r->branch;
   if (const auto* s = std::get_if<k::RrpPoint>(&point.definition)) return &s->branch;
+  if (const auto* a = std::get_if<k::ActuatorPoint>(&point.definition)) return &a->branch;
   return nullptr;
 }
 
@@ -106,6 +115,8 @@ QString pointRole(const k::Mechanism& m, k::PointId p) {
   const auto& d = m.points[p.index].definition;
   if (std::holds_alternative<k::GroundPoint>(d)) return tr("ground pivot");
   if (std::holds_alternative<k::CrankPoint>(d)) return tr("crank tip");
+  if (std::holds_alternative<k::PathPoint>(d)) return tr("driven along a path");
+  if (std::holds_alternative<k::ActuatorPoint>(d)) return tr("end of a linear actuator");
   if (std::holds_alternative<k::RrrPoint>(d)) return tr("joint of two links");
   if (std::holds_alternative<k::RrpPoint>(d)) return tr("slider");
   if (std::holds_alternative<k::RprPoint>(d)) return tr("slotted link's tip");

@@ -30,6 +30,7 @@ QuantityKind kindOf(ColumnQuantity c) {
   case ColumnQuantity::TransmissionAngle: return QuantityKind::Angle;
   case ColumnQuantity::LinkOmega: return QuantityKind::Omega;
   case ColumnQuantity::LinkAlpha: return QuantityKind::Alpha;
+  case ColumnQuantity::InputLength:
   case ColumnQuantity::PointX:
   case ColumnQuantity::PointY: return QuantityKind::Position;
   case ColumnQuantity::PointVx:

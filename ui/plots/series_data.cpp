@@ -20,7 +20,8 @@ public:
     };
     switch (q.column) {
     case ColumnQuantity::Time: m_scalar = &s.time; break;
-    case ColumnQuantity::InputAngle: m_scalar = &s.inputAngle; break;
+    case ColumnQuantity::InputAngle:
+    case ColumnQuantity::InputLength: m_scalar = &s.inputAngle; break;
     case ColumnQuantity::LinkAngle: m_scalar = pick(s.linkAngle, q.index); break;
     case ColumnQuantity::LinkOmega: m_scalar = pick(s.linkOmega, q.index); break;
     case ColumnQuantity::LinkAlpha: m_scalar = pick(s.linkAlpha, q.index); break;

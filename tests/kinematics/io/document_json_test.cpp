@@ -200,7 +200,7 @@ TEST_CASE("bad documents are refused with the member named", "[io][document][err
       {"[1, 2]", "document must be a JSON object"},
       {replaced(good, "\"linkwright\"", "\"solvespace\""), "not a Linkwright document"},
       {replaced(good, "\"version\": 2", "\"version\": 7"),
-       "this file is document version 7, written by a newer Linkwright; this one reads up to version 4"},
+       "this file is document version 7, written by a newer Linkwright; this one reads up to version 5"},
       {replaced(good, "\"version\": 2", "\"version\": 1.5"), "version must be a whole number"},
       {replaced(good, "\"version\": 2", "\"version\": \"1\""), "version must be a number"},
       {replaced(good, "\"four-bar\"", "\"six-bar\""),
@@ -228,7 +228,7 @@ TEST_CASE("a damaged four-bar saved in the linkage form is refused with the memb
   auto [text, expected] = GENERATE_COPY(table<std::string, std::string>({
       {replaced(good, "\"linkwright\"", "\"solvespace\""), "not a Linkwright document"},
       {replaced(good, "\"version\": 2", "\"version\": 7"),
-       "this file is document version 7, written by a newer Linkwright; this one reads up to version 4"},
+       "this file is document version 7, written by a newer Linkwright; this one reads up to version 5"},
       {replaced(good, "\"version\": 2", "\"version\": 1"),
        "must be \"four-bar\" in a version 1 document (got \"linkage\")"},
       {replaced(good, "\"first_length\": 70", "\"first_length\": -70"),
@@ -267,6 +267,51 @@ TEST_CASE("bad linkage documents are refused with the member named", "[io][docum
       {replaced(good, "{\"name\": \"O4\"", "{\"name\": \"O2\""), "mechanism.points[1].name repeats the name 'O2'"},
       {replaced(good, "\"links\": [", "\"links\": 3, \"x\": ["), "mechanism.links must be an array"},
       {replaced(good, "\"branch\": \"open\"", "\"branch\": \"up\""), "must be \"open\" or \"crossed\" (got \"up\")"},
+  }));
+  CAPTURE(text);
+  const auto d = readDocument(text);
+  REQUIRE_FALSE(d.ok());
+  CHECK_THAT(d.error().message, Catch::Contains(expected));
+}
+
+TEST_CASE("a linear driver's document is version 5 and names its units in its keys", "[io][document][driven]") {
+  const std::string arm = writeDocument(*designForExample("seed-arm"));
+  CHECK_THAT(arm, Catch::Contains("\"version\": 5"));
+  CHECK_THAT(arm, Catch::Contains(R"({"name": "tip", "type": "path", "path": {"shape": "polyline", "vertices": )"
+                                  R"([{"x": 0.3, "y": 0}, {"x": 0, "y": 0.3}]}})"));
+  CHECK_THAT(arm, Catch::Contains(R"("law": {"type": "constant", "start_m": 0, "velocity_m_s": 2})"));
+  CHECK_THAT(arm, Catch::Contains(R"("analysis": {"from_m": 0, "to_m": 0.4242640687119285)"));
+  const std::string boom = writeDocument(*designForExample("excavator-boom"));
+  CHECK_THAT(boom, Catch::Contains(R"({"name": "C", "type": "actuator", "first": "O", "length": 1, "base": "A", )"
+                                   R"("branch": "open"})"));
+  // A crank's law keeps its radians, and its document stays version 4.
+  Design timed = *designForExample("thesis-crank-rocker");
+  timed.time = TimeBase{CycloidalRise{0.0, 1.0, 2.0}, 0.0, 2.0};
+  CHECK_THAT(writeDocument(timed), Catch::Contains("\"version\": 4"));
+  CHECK_THAT(writeDocument(timed), Catch::Contains(R"("start_rad": 0, "rise_rad": 1)"));
+  // An arc path reads back exactly.
+  Design arc = *designForExample("seed-arm");
+  std::get<PathPoint>(arc.mechanism.points[1].definition).path = ArcPath{{0.1, 0.1}, 0.2, 0.3, -1.5};
+  const auto back = readDocument(writeDocument(arc));
+  REQUIRE(back.ok());
+  CHECK(*back == arc);
+}
+
+TEST_CASE("bad driver documents are refused with the member named", "[io][document][driven][errors]") {
+  const std::string arm = writeDocument(*designForExample("seed-arm"));
+  const std::string boom = writeDocument(*designForExample("excavator-boom"));
+  auto [text, expected] = GENERATE_COPY(table<std::string, std::string>({
+      {replaced(arm, "\"shape\": \"polyline\"", "\"shape\": \"spiral\""),
+       "mechanism.points[1].path.shape must be \"polyline\" or \"arc\" (got \"spiral\")"},
+      {replaced(arm, "[{\"x\": 0.3, \"y\": 0}, {\"x\": 0, \"y\": 0.3}]", "[{\"x\": 0.3, \"y\": 0}]"),
+       "mechanism.points[1].path.vertices needs at least two points (got 1)"},
+      {replaced(arm, "[{\"x\": 0.3, \"y\": 0}, ", "[3, "), "mechanism.points[1].path.vertices[0] must be an object"},
+      {replaced(arm, "\"velocity_m_s\": 2}", "\"velocity_rad_s\": 2}"), "driver.law.velocity_m_s"},
+      {replaced(boom, "\"base\": \"A\"", "\"base\": \"O\""),
+       "mechanism.points[2].base must differ from its first point"},
+      {replaced(boom, "\"base\": \"A\"", "\"base\": \"Q\""),
+       "mechanism.points[2].base names no point of this mechanism (got \"Q\")"},
+      {replaced(boom, "\"rise_m\": 0.7", "\"rise_m\": 1e300"), "driver.law.rise_m"},
   }));
   CAPTURE(text);
   const auto d = readDocument(text);

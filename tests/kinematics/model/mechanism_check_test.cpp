@@ -75,12 +75,14 @@ TEST_CASE("checkMechanism names the first structural or numeric problem", "[mech
          m.points.resize(2);  // the two pivots only: nothing drives it
          m.links.clear();
        },
-       ErrorCode::InvalidStructure, "points", "points must contain exactly one crank (got 0)"},
+       ErrorCode::InvalidStructure, "points",
+       "points must contain exactly one driver: a crank, a point on a path or a linear actuator (got 0)"},
       {"two cranks",
        [](Mechanism& m) {
          m.points.push_back({"B2", CrankPoint{fourbar::kO4, 10.0, 0.0}});
        },
-       ErrorCode::InvalidStructure, "points", "points must contain exactly one crank (got 2)"},
+       ErrorCode::InvalidStructure, "points",
+       "points must contain exactly one driver: a crank, a point on a path or a linear actuator (got 2)"},
       {"a crank pivot that is not on the ground",
        [](Mechanism& m) {
          m.points.push_back({"B2", CrankPoint{fourbar::kB, 10.0, 0.0}});
