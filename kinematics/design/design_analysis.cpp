@@ -1,5 +1,6 @@
 #include "kinematics/design/design_analysis.h"
 
+#include "kinematics/model/driver.h"
 #include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 
@@ -38,7 +39,7 @@ void toInputAngles(const FourBarStructure& s, DesignAnalysis& a) {
 
 }  // namespace
 
-InputRange assembledRange(const SweepResult& sweep) {
+InputRange assembledRange(const SweepResult& sweep, InputKind input) {
   InputRange range;
   std::size_t j = 0;
   while (j < sweep.size()) {
@@ -53,7 +54,7 @@ InputRange assembledRange(const SweepResult& sweep) {
   }
   const bool everySample = range.ranges.size() == 1 && sweep.notAssembled.empty();
   const double span = sweep.size() > 1 ? sweep.inputAngle.back() - sweep.inputAngle.front() : 0.0;
-  range.fullRotation = everySample && span >= 2.0 * kPi * (1.0 - 1e-12);
+  range.fullRotation = input == InputKind::Angle && everySample && span >= 2.0 * kPi * (1.0 - 1e-12);
   if (range.fullRotation) range.ranges.clear();
   return range;
 }
@@ -70,7 +71,7 @@ DesignAnalysis analyseDesign(const Mechanism& mechanism, const SweepResult& grid
     toInputAngles(*fourBar, a);
     return a;
   }
-  a.inputRange = assembledRange(gridSweep);
+  a.inputRange = assembledRange(gridSweep, inputKind(mechanism));
   if (const auto q = asQuickReturn(mechanism)) a.quickReturn = shaperQuickReturn(q->geometry, q->ramBranch);
   return a;
 }

@@ -12,6 +12,7 @@
 #include "kinematics/analysis/mobility.h"
 #include "kinematics/analysis/quick_return.h"
 #include "kinematics/analysis/transmission.h"
+#include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/solve/sweep.h"
 
@@ -39,7 +40,7 @@ DesignAnalysis analyseDesign(const Mechanism& mechanism, const SweepResult& grid
 
 /// The input ranges over which `sweep` assembled, one per run of assembled samples (a lock
 /// between two samples, SweepResult::lockedBetween, ends a run); a full turn when every
-/// sample of a grid spanning 360° or more assembled.
-InputRange assembledRange(const SweepResult& sweep);
+/// sample of a crank's grid spanning 360° or more assembled (a linear input never turns).
+InputRange assembledRange(const SweepResult& sweep, InputKind input = InputKind::Angle);
 
 }  // namespace linkwright::kinematics

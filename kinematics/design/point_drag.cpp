@@ -3,6 +3,7 @@
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/path_shape.h"
 #include "kinematics/model/recognise.h"
+#include "kinematics/model/validate.h"
 #include "kinematics/model/vec2.h"
 #include "kinematics/solve/guide_line.h"
 
@@ -145,6 +146,28 @@ Result<PointDrag> dragPoint(const Mechanism& mechanism, const Pose& pose, double
     return *e;
   if (auto e = checkMechanism(m)) return *e;
   return out;
+}
+
+Result<Mechanism> dragPathVertex(const Mechanism& mechanism, PointId point, std::size_t vertex,
+                                 const Eigen::Vector2d& target) {
+  const auto* driven = point.index < mechanism.points.size()
+                           ? std::get_if<PathPoint>(&mechanism.points[point.index].definition)
+                           : nullptr;
+  const auto* line = driven != nullptr ? std::get_if<PolylinePath>(&driven->path) : nullptr;
+  if (line == nullptr || vertex >= line->vertices.size())
+    return Error{ErrorCode::InvalidStructure, "point", "the dragged path vertex does not belong to this linkage"};
+  if (!target.allFinite()) return Error{ErrorCode::InvalidValue, "target", "the drag target must be a finite position"};
+  Mechanism m = mechanism;
+  auto& vertices = std::get<PolylinePath>(std::get<PathPoint>(m.points[point.index].definition).path).vertices;
+  vertices[vertex] = target;
+  const std::string& name = m.points[point.index].name;
+  for (const std::size_t other : {vertex - 1, vertex + 1})
+    if (other < vertices.size() && !((vertices[other] - target).norm() >= kMinLength))
+      return Error{ErrorCode::InvalidValue, name,
+                   "point " + std::to_string(vertex + 1) + " of " + name + "'s path cannot be dropped onto point " +
+                       std::to_string(other + 1) + ": the segment between them would have no length"};
+  if (auto e = checkMechanism(m)) return *e;
+  return m;
 }
 
 }  // namespace linkwright::kinematics

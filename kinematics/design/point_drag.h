@@ -4,6 +4,8 @@
 //
 //   ground pivot      its position
 //   crank tip         crank length, and the phase so the tip sits on the target now
+//   point on a path   the input: the point slides along its path to the place nearest the target
+//   actuator's end    its link's length, the branch, and the input (the actuator's length)
 //   RRR joint         both lengths (to its parents) and the branch (the target's side)
 //   RRP slider        the rod length; the slider stays on its guide (target projected on it)
 //   RPR slotted tip   the slotted link's length (target projected on the slot's line)
@@ -43,5 +45,11 @@ struct PointDrag {
 /// checked here: solve or sweep the result for that.
 Result<PointDrag> dragPoint(const Mechanism& mechanism, const Pose& pose, double inputAngle, PointId point,
                             const Eigen::Vector2d& target, DragRule rule = DragRule::Free);
+
+/// Moves vertex `vertex` of the polyline path that drives `point` to `target` (length unit);
+/// the driver's coordinate is left as it is. An Error names the vertex if the point has no
+/// such vertex or the path would get a segment of no length.
+Result<Mechanism> dragPathVertex(const Mechanism& mechanism, PointId point, std::size_t vertex,
+                                 const Eigen::Vector2d& target);
 
 }  // namespace linkwright::kinematics

@@ -77,6 +77,46 @@ struct Nearest {
   }
 };
 
+// Where the path crosses the circle |p − c| = radius, as path coordinates within its ends.
+struct Crossings {
+  const Eigen::Vector2d& c;
+  double radius;
+  std::vector<double>& out;
+
+  void operator()(const PolylinePath& p) const {
+    double start = 0.0;
+    for (std::size_t k = 0; k + 1 < p.vertices.size(); ++k) {
+      // |a + t·u − c|² = R² with |u| = 1: t² + 2t·u·(a − c) + |a − c|² − R² = 0.
+      const Eigen::Vector2d d = p.vertices[k + 1] - p.vertices[k];
+      const double length = d.norm();
+      const Eigen::Vector2d u = d / length;
+      const Eigen::Vector2d w = p.vertices[k] - c;
+      const double b = u.dot(w);
+      const double disc = b * b - (w.squaredNorm() - radius * radius);
+      if (disc >= 0.0)
+        for (const double t : {-b - std::sqrt(disc), -b + std::sqrt(disc)})
+          if (t >= 0.0 && t <= length) out.push_back(start + t);
+      start += length;
+    }
+  }
+
+  void operator()(const ArcPath& a) const {
+    // |m + r·e(φ) − c|² = R²: r·e(φ)·(m − c) = (R² − r² − |m − c|²)/2, i.e. cos(φ − ψ) = k.
+    const Eigen::Vector2d w = a.centre - c;
+    const double d = w.norm();
+    if (!(d > 0.0)) return;  // concentric: the whole arc is in or out
+    const double k = (radius * radius - a.radius * a.radius - d * d) / (2.0 * a.radius * d);
+    if (k < -1.0 || k > 1.0) return;
+    const double psi = std::atan2(w.y(), w.x()) + kPi;  // e(φ) points from m toward c at φ = ψ
+    const double turn = a.sweep >= 0.0 ? 1.0 : -1.0;
+    for (const double phi : {psi + std::acos(k), psi - std::acos(k)}) {
+      double along = std::remainder(turn * (phi - a.startAngle), 2.0 * kPi);
+      if (along < 0.0) along += 2.0 * kPi;
+      if (along <= std::abs(a.sweep)) out.push_back(a.radius * along);
+    }
+  }
+};
+
 struct CheckShape {
   const std::string& field;
 
@@ -115,6 +155,22 @@ PathState pathAt(const PathShape& shape, double s) { return std::visit(StateAt{s
 
 double nearestPathCoordinate(const PathShape& shape, const Eigen::Vector2d& target) {
   return std::visit(Nearest{target}, shape);
+}
+
+std::vector<std::pair<double, double>> pathOutsideAnnulus(const PathShape& shape, const Eigen::Vector2d& centre,
+                                                          double inner, double outer) {
+  std::vector<double> cuts{0.0, pathLength(shape)};
+  for (const double radius : {inner, outer}) std::visit(Crossings{centre, radius, cuts}, shape);
+  std::sort(cuts.begin(), cuts.end());
+  std::vector<std::pair<double, double>> outside;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    if (!(cuts[i + 1] > cuts[i])) continue;
+    const double reach = (pathAt(shape, 0.5 * (cuts[i] + cuts[i + 1])).point - centre).norm();
+    if (reach >= inner && reach <= outer) continue;
+    if (!outside.empty() && outside.back().second == cuts[i]) outside.back().second = cuts[i + 1];
+    else outside.emplace_back(cuts[i], cuts[i + 1]);
+  }
+  return outside;
 }
 
 double pathLength(const PathShape& shape) { return std::visit(LengthOf{}, shape); }

@@ -16,6 +16,8 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace linkwright::kinematics {
 
@@ -30,6 +32,14 @@ PathState pathAt(const PathShape& shape, double s);
 
 /// The coordinate s of the point of the path (between its ends) nearest `target`.
 double nearestPathCoordinate(const PathShape& shape, const Eigen::Vector2d& target);
+
+/// The stretches of the path between its ends that lie outside the annulus about `centre`
+/// with radii `inner` ≤ `outer`, as (from, to) path coordinates in increasing order: where a
+/// point driven along the path cannot be reached by two links of lengths l1 and l2 from a
+/// pivot at `centre` (inner = |l1 − l2|, outer = l1 + l2). Exact: the crossings are roots of
+/// a quadratic on each segment, of a cosine on an arc.
+std::vector<std::pair<double, double>> pathOutsideAnnulus(const PathShape& shape, const Eigen::Vector2d& centre,
+                                                          double inner, double outer);
 
 /// The path's length from its start to its end (length unit).
 double pathLength(const PathShape& shape);

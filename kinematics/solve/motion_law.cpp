@@ -149,6 +149,23 @@ MotionState motionAt(const MotionLaw& law, double t) { return std::visit(StateAt
 
 std::optional<Error> checkMotionLaw(const MotionLaw& law) { return std::visit(CheckLaw{}, law); }
 
+std::optional<double> timeAtPosition(const MotionLaw& law, double q, double fromTime, double toTime) {
+  double lo = fromTime, hi = toTime;
+  const double qLo = motionAt(law, lo).position - q;
+  const double qHi = motionAt(law, hi).position - q;
+  if (qLo == 0.0) return lo;
+  if (qHi == 0.0) return hi;
+  if ((qLo < 0.0) == (qHi < 0.0)) return std::nullopt;
+  // 200 halvings take any span of doubles down to adjacent values.
+  for (int i = 0; i < 200 && hi - lo > 0.0; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    if ((motionAt(law, mid).position - q < 0.0) == (qLo < 0.0)) lo = mid;
+    else hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 std::optional<std::pair<double, double>> lawTimeSpan(const MotionLaw& law) {
   if (const auto* table = std::get_if<TableLaw>(&law)) return std::pair{table->time.front(), table->time.back()};
   return std::nullopt;

@@ -81,6 +81,11 @@ Result<TableLaw> makeTableLaw(std::vector<double> time, std::vector<double> posi
 /// Error naming the first invalid field ("law.duration", "law.velocity", …) and the value.
 std::optional<Error> checkMotionLaw(const MotionLaw& law);
 
+/// When, between `fromTime` and `toTime`, the law reaches position `q`: by bisection, exact to
+/// round-off for a law that moves one way over those times (every closed-form law does);
+/// nullopt if q is not between the positions at the two times.
+std::optional<double> timeAtPosition(const MotionLaw& law, double q, double fromTime, double toTime);
+
 /// The times over which `law` is defined by data: the table's first and last time; nullopt
 /// for the closed-form laws, which are defined at every time.
 std::optional<std::pair<double, double>> lawTimeSpan(const MotionLaw& law);

@@ -55,11 +55,13 @@ TEST_CASE("every example and every New template opens, solves and assembles", "[
     CHECK(doc.analysis().mobility.mobility == 1);
     CHECK(doc.undoStack()->count() == 0);
   }
-  // The kinds File ▸ New lists are the ones the brief names, in order.
+  // The kinds File ▸ New lists are the ones the brief names, in order, then the linkages
+  // driven other than by a crank.
   QStringList labels;
   for (const auto& t : ui::designTemplates()) labels << QString(t.label).remove('&');
   CHECK(labels == QStringList{"Four-bar", "Slider-crank", "Crank-shaper", "Whitworth quick return", "Watt I six-bar",
-                              "Watt II six-bar", "Stephenson I six-bar", "Stephenson III six-bar"});
+                              "Watt II six-bar", "Stephenson I six-bar", "Stephenson III six-bar", "Two-link arm",
+                              "Piston-driven slider-crank", "Cylinder-driven boom"});
 }
 
 TEST_CASE("a slider-crank and a Watt II solve through the document", "[ui][linkage]") {

@@ -66,7 +66,7 @@ TEST_CASE("File ▸ New offers each kind of linkage and the Examples menu every 
   REQUIRE(newMenu != nullptr);
   QStringList kinds;
   for (QAction* a : newMenu->actions()) kinds << a->text().remove('&');
-  CHECK(kinds.size() == 8);
+  CHECK(kinds.size() == 11);
   for (QAction* a : newMenu->actions()) {
     CAPTURE(a->text().toStdString());
     a->trigger();

@@ -9,10 +9,18 @@ namespace linkwright::ui {
 
 namespace k = kinematics;
 
-k::Result<DesignDrag> dragDesign(const MechanismDocument& document, k::PointId point, const Eigen::Vector2d& target) {
+k::Result<DesignDrag> dragDesign(const MechanismDocument& document, const DragHandle& handle,
+                                 const Eigen::Vector2d& target) {
   k::Design design = document.design();
-  auto dragged =
-      k::dragPoint(design.mechanism, document.pose(), document.crankAngle(), point, target, k::DragRule::FrameLine);
+  k::Result<k::PointDrag> dragged = k::PointDrag{};
+  if (handle.pathVertex) {
+    auto moved = k::dragPathVertex(design.mechanism, handle.point, *handle.pathVertex, target);
+    if (!moved) return moved.error();
+    dragged = k::PointDrag{std::move(*moved), document.crankAngle()};
+  } else {
+    dragged = k::dragPoint(design.mechanism, document.pose(), document.crankAngle(), handle.point, target,
+                           k::DragRule::FrameLine);
+  }
   if (!dragged) return dragged.error();
   // Positions only: the question is whether it assembles here, not how fast it moves.
   const auto solved =

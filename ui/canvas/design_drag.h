@@ -5,6 +5,8 @@
 // at the crank angle it is shown at, so the dragged point lands under the pointer; if not, the
 // solver's sentence says why.
 
+#include "ui/canvas/drag_handles.h"
+
 #include "kinematics/design/design.h"
 #include "kinematics/model/result.h"
 
@@ -19,8 +21,9 @@ struct DesignDrag {
   double crankAngle = 0.0;  ///< rad, where the crank is shown after the drag
 };
 
-/// The design after dragging `point` of `document`'s design to `target` (model units).
-kinematics::Result<DesignDrag> dragDesign(const MechanismDocument& document, kinematics::PointId point,
+/// The design after dragging `handle` of `document`'s design to `target` (model units): a
+/// point (point_drag.h's dragPoint) or a vertex of a driven point's path (dragPathVertex).
+kinematics::Result<DesignDrag> dragDesign(const MechanismDocument& document, const DragHandle& handle,
                                           const Eigen::Vector2d& target);
 
 }  // namespace linkwright::ui

@@ -46,25 +46,44 @@ QString fourBarHint(const k::FourBarStructure& s, const k::Mechanism& m, k::Poin
 
 }  // namespace
 
-std::vector<k::PointId> draggablePoints(const DrawingPlan& plan) {
-  std::vector<k::PointId> points;
+std::vector<DragHandle> dragHandles(const DrawingPlan& plan, const k::Mechanism& m) {
+  std::vector<DragHandle> handles;
   const std::size_t n = plan.draggable.size();
+  const auto add = [&](std::size_t i) { handles.push_back({k::PointId{i}, std::nullopt}); };
   // Later points sit on top of earlier ones in the drawing, so they are picked first.
   for (std::size_t i = n; i-- > 0;)
-    if (plan.draggable[i] && plan.attached[i]) points.push_back({i});
+    if (plan.draggable[i] && plan.attached[i]) add(i);
   for (std::size_t i = n; i-- > 0;)
-    if (plan.draggable[i] && !plan.attached[i] && !plan.ground[i]) points.push_back({i});
+    if (plan.draggable[i] && !plan.attached[i] && !plan.ground[i]) add(i);
+  // A driven point usually sits on its path's first vertex at the start: the point wins.
+  for (const k::PointId p : plan.drivenPaths) {
+    const auto& path = std::get<k::PathPoint>(m.points[p.index].definition).path;
+    if (const auto* line = std::get_if<k::PolylinePath>(&path))
+      for (std::size_t v = 0; v < line->vertices.size(); ++v) handles.push_back({p, v});
+  }
   for (std::size_t i = n; i-- > 0;)
-    if (plan.draggable[i] && plan.ground[i]) points.push_back({i});
-  return points;
+    if (plan.draggable[i] && plan.ground[i]) add(i);
+  return handles;
 }
 
 QString dragPointName(const k::Mechanism& mechanism, k::PointId point) {
   return point.index < mechanism.points.size() ? pointDisplayName(mechanism.points[point.index].name) : QString();
 }
 
-QString dragHint(const std::optional<k::FourBarStructure>& fourBar, const k::Mechanism& mechanism, k::PointId point) {
+QString dragHandleName(const k::Mechanism& mechanism, const DragHandle& handle) {
+  const QString point = dragPointName(mechanism, handle.point);
+  if (!handle.pathVertex) return point;
+  return tr("%1 path point %2").arg(point).arg(*handle.pathVertex + 1);
+}
+
+QString dragHint(const std::optional<k::FourBarStructure>& fourBar, const k::Mechanism& mechanism,
+                 const DragHandle& handle) {
+  const k::PointId point = handle.point;
   if (point.index >= mechanism.points.size()) return {};
+  if (handle.pathVertex)
+    return tr("Drag to move point %1 of the path %2 is driven along")
+        .arg(*handle.pathVertex + 1)
+        .arg(dragPointName(mechanism, point));
   if (fourBar) return fourBarHint(*fourBar, mechanism, point);
   return std::visit(HintOf{dragPointName(mechanism, point)}, mechanism.points[point.index].definition);
 }

@@ -34,6 +34,11 @@ void JointHandleItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, 
     painter->setPen(QPen(kPinOutlineColor, canvas::kOutlineWidthPx));
     painter->setBrush(kPinFillColor);
     painter->drawEllipse(QPointF(0, 0), canvas::kPinRadiusPx, canvas::kPinRadiusPx);
+  } else if (m_style == Style::Vertex) {
+    painter->setPen(QPen(kPinOutlineColor, canvas::kOutlineWidthPx));
+    painter->setBrush(kGroundFillColor);
+    const double half = canvas::kDotRadiusPx;
+    painter->drawRect(QRectF(-half, -half, 2.0 * half, 2.0 * half));
   } else {
     painter->setPen(QPen(Qt::white, 1.0));
     painter->setBrush(m_dotColor);

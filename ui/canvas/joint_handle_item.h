@@ -1,6 +1,7 @@
 #pragma once
 // A joint the user can grab: a pin (white circle, dark outline) for B and C, a filled dot for
-// the coupler point P. Pixel-sized at any zoom; pos() is the joint in scene coordinates.
+// the coupler point P, a small square for a vertex of a driven point's path. Pixel-sized at any
+// zoom; pos() is the joint in scene coordinates.
 
 #include <QColor>
 #include <QGraphicsItem>
@@ -9,7 +10,7 @@ namespace linkwright::ui {
 
 class JointHandleItem : public QGraphicsItem {
 public:
-  enum class Style { Pin, Dot };
+  enum class Style { Pin, Dot, Vertex };
   explicit JointHandleItem(Style style, const QColor& dotColor = Qt::black, QGraphicsItem* parent = nullptr);
 
   /// Highlighted while the pointer is over it or it is being dragged.

@@ -59,7 +59,7 @@ void LinkageScene::updateDesign(const MechanismDocument& document) {
     m_items.reset();
     m_items = std::make_unique<MechanismItems>(this, m, std::move(plan));
     m_items->setPresentationScale(m_presentationScale);
-    m_handlePoints = draggablePoints(m_items->plan());
+    m_handles = dragHandles(m_items->plan(), m);
     rebuildArrows(m.points.size());
   }
   const k::InputRange& range = document.analysis().inputRange;
@@ -69,7 +69,7 @@ void LinkageScene::updateDesign(const MechanismDocument& document) {
     m_range->setRange(range, toQt(document.pose().position[crank->pivot.index]), crank->length, crank->phase);
 
   computeBounds(document);
-  m_items->setDesign(m, document.sweep(), document.pose(), linkageSize());
+  m_items->setDesign(m, document.sweep(), document.pose(), linkageSize(), document.design().time);
   // Slideways and slotted bars reach a little past the points; a fit shows them whole.
   if (const QRectF extra = m_items->extraExtent(); !extra.isNull()) m_bounds = m_bounds.united(extra);
   computeArrowScales(document);
@@ -195,16 +195,16 @@ void LinkageScene::setShowAccelerationArrows(bool show) {
     if (arrow != nullptr) arrow->setVisible(false);
 }
 
-std::optional<QPointF> LinkageScene::handlePosition(k::PointId point) const {
-  const QGraphicsItem* item = handleItem(point);
+std::optional<QPointF> LinkageScene::handlePosition(const DragHandle& handle) const {
+  const QGraphicsItem* item = handleItem(handle);
   if (item == nullptr) return std::nullopt;
   return item->pos();
 }
 
-void LinkageScene::setHotHandle(std::optional<k::PointId> point) { m_items->setHot(point); }
+void LinkageScene::setHotHandle(const std::optional<DragHandle>& handle) { m_items->setHot(handle); }
 
 const DrawingPlan& LinkageScene::plan() const { return m_items->plan(); }
-const QGraphicsItem* LinkageScene::handleItem(k::PointId point) const { return m_items->handle(point); }
+const QGraphicsItem* LinkageScene::handleItem(const DragHandle& handle) const { return m_items->handle(handle); }
 const LinkItem* LinkageScene::linkItem(k::LinkId link) const { return m_items->link(link); }
 const SlottedLinkItem* LinkageScene::slottedLinkItem(k::LinkId link) const { return m_items->slottedLink(link); }
 const QGraphicsPolygonItem* LinkageScene::bodyItem(k::LinkId link) const { return m_items->body(link); }

@@ -7,6 +7,7 @@
 // ranges, arrow scales, bounds), on motion it only moves items. LinkageView shows it and turns
 // mouse input into edits.
 
+#include "ui/canvas/drag_handles.h"
 #include "ui/canvas/mechanism_drawing.h"
 
 #include "kinematics/design/point_drag.h"
@@ -54,12 +55,12 @@ public:
   /// The larger side of contentBounds(), never zero.
   double linkageSize() const;
 
-  /// The points that have a drag handle, in picking order.
-  const std::vector<kinematics::PointId>& handlePoints() const { return m_handlePoints; }
-  /// Where the handle on `point` is drawn now (scene units); nullopt if it has none.
-  std::optional<QPointF> handlePosition(kinematics::PointId point) const;
+  /// The drag handles, in picking order.
+  const std::vector<DragHandle>& handles() const { return m_handles; }
+  /// Where a handle is drawn now (scene units); nullopt if there is no such handle.
+  std::optional<QPointF> handlePosition(const DragHandle& handle) const;
   /// Highlights one handle (or none).
-  void setHotHandle(std::optional<kinematics::PointId> point);
+  void setHotHandle(const std::optional<DragHandle>& handle);
 
   /// A boxed message next to `scenePos` (why a drag was refused), until hideMessage().
   void showMessage(const QPointF& scenePos, const QString& text);
@@ -67,7 +68,8 @@ public:
 
   /// Read access for the view's tests and for export. Null where the item does not exist.
   const DrawingPlan& plan() const;
-  const QGraphicsItem* handleItem(kinematics::PointId point) const;
+  const MechanismItems& mechanismItems() const { return *m_items; }
+  const QGraphicsItem* handleItem(const DragHandle& handle) const;
   const LinkItem* linkItem(kinematics::LinkId link) const;
   const SlottedLinkItem* slottedLinkItem(kinematics::LinkId link) const;
   const QGraphicsPolygonItem* bodyItem(kinematics::LinkId link) const;
@@ -94,7 +96,7 @@ private:
   std::optional<std::size_t> sliderIndex(kinematics::PointId joint) const;
 
   std::unique_ptr<MechanismItems> m_items;
-  std::vector<kinematics::PointId> m_handlePoints;
+  std::vector<DragHandle> m_handles;
   FeasibleRangeItem* m_range;
   std::vector<ArrowItem*> m_velocityArrows;  // per point; null for ground pivots
   std::vector<ArrowItem*> m_accelerationArrows;

@@ -140,10 +140,10 @@ QPointF LinkageView::sceneAt(const QPointF& viewportPos) const {
   return viewportTransform().inverted().map(viewportPos);
 }
 
-std::optional<k::PointId> LinkageView::handleAt(const QPointF& viewportPos) const {
-  std::optional<k::PointId> best;
+std::optional<DragHandle> LinkageView::handleAt(const QPointF& viewportPos) const {
+  std::optional<DragHandle> best;
   double bestDistance = canvas::kPickRadiusPx * m_presentationScale;
-  for (const k::PointId handle : m_scene->handlePoints()) {
+  for (const DragHandle& handle : m_scene->handles()) {
     const std::optional<QPointF> at = m_scene->handlePosition(handle);
     if (!at) continue;
     const double distance = QLineF(viewportTransform().map(*at), viewportPos).length();
@@ -270,7 +270,7 @@ void LinkageView::resizeEvent(QResizeEvent* event) {
 }
 
 void LinkageView::updateHover(const QPointF& viewportPos) {
-  const std::optional<k::PointId> handle = handleAt(viewportPos);
+  const std::optional<DragHandle> handle = handleAt(viewportPos);
   m_scene->setHotHandle(handle);
   if (handle) viewport()->setCursor(Qt::OpenHandCursor);
   else viewport()->unsetCursor();
@@ -279,28 +279,28 @@ void LinkageView::updateHover(const QPointF& viewportPos) {
   m_hover = handle;
 }
 
-void LinkageView::startDrag(k::PointId point, const QPointF& viewportPos) {
+void LinkageView::startDrag(const DragHandle& handle, const QPointF& viewportPos) {
   m_gesture = Gesture::Drag;
-  m_dragPoint = point;
-  m_grabOffset = *m_scene->handlePosition(point) - sceneAt(viewportPos);
+  m_dragHandle = handle;
+  m_grabOffset = *m_scene->handlePosition(handle) - sceneAt(viewportPos);
   m_lastPointer = viewportPos;
   m_lastRefusal.clear();
   ++m_dragCount;
-  m_scene->setHotHandle(point);
+  m_scene->setHotHandle(handle);
   viewport()->setCursor(Qt::ClosedHandCursor);
-  emit statusMessage(dragHint(m_document->fourBar(), m_document->mechanism(), point));
+  emit statusMessage(dragHint(m_document->fourBar(), m_document->mechanism(), handle));
 }
 
 void LinkageView::dragTo(const QPointF& viewportPos) {
   m_lastPointer = viewportPos;
   const Eigen::Vector2d target = toEigen(sceneAt(viewportPos) + m_grabOffset);
-  const k::Result<DesignDrag> outcome = dragDesign(*m_document, m_dragPoint, target);
+  const k::Result<DesignDrag> outcome = dragDesign(*m_document, m_dragHandle, target);
   if (!outcome) {
     refuse(QString::fromStdString(outcome.error().message), viewportPos);
     return;
   }
-  const MergeKey mergeKey{ContinuousEdit::DragPoint, m_dragPoint.index, m_dragCount};
-  const QString name = dragPointName(m_document->mechanism(), m_dragPoint);
+  const MergeKey mergeKey{ContinuousEdit::DragPoint, m_dragHandle.point.index, m_dragCount};
+  const QString name = dragHandleName(m_document->mechanism(), m_dragHandle);
   if (const auto why = m_document->edit(outcome->design, tr("Move %1").arg(name), mergeKey, outcome->crankAngle)) {
     refuse(*why, viewportPos);
     return;

@@ -2,16 +2,18 @@
 // The linkage canvas: a QGraphicsView over a LinkageScene in model units, y up (the view
 // flips y). It draws a scale grid behind the linkage, zooms with the wheel about the cursor,
 // pans by dragging the background (left or middle button), and turns drags of the points
-// into document edits through the core (dragPoint, with a four-bar's frame-line rule:
-// design_drag.h), one undo step per drag. An edit the core or the document refuses
+// and of driven paths' vertices into document edits through the core (dragPoint, with a
+// four-bar's frame-line rule, or dragPathVertex: design_drag.h), one undo step per drag. An edit the core or the document refuses
 // changes nothing; the reason is shown next to the cursor and emitted as editRefused.
 //
 // Fitting: the view fits the drawing when first shown, on resize until the user zooms or
 // pans, after fitToView(), and after a document reset (File ▸ New / Open / Examples, seen as
 // one Design|File change).
 
-#include "kinematics/model/ids.h"
+#include "ui/canvas/drag_handles.h"
 #include "ui/document/mechanism_document.h"
+
+#include "kinematics/model/ids.h"
 
 #include <QGraphicsView>
 
@@ -70,10 +72,10 @@ private:
 
   void onDocumentChanged(linkwright::ui::Changes what);
   QPointF sceneAt(const QPointF& viewportPos) const;
-  std::optional<kinematics::PointId> handleAt(const QPointF& viewportPos) const;
+  std::optional<DragHandle> handleAt(const QPointF& viewportPos) const;
   void zoomAbout(const QPointF& viewportPos, double factor);
   void scrollByPixels(const QPointF& delta);
-  void startDrag(kinematics::PointId point, const QPointF& viewportPos);
+  void startDrag(const DragHandle& handle, const QPointF& viewportPos);
   void dragTo(const QPointF& viewportPos);
   void refuse(const QString& reason, const QPointF& viewportPos);
   void updateHover(const QPointF& viewportPos);
@@ -85,13 +87,13 @@ private:
   bool m_autoFit = true;
   Gesture m_gesture = Gesture::None;
   Qt::MouseButton m_gestureButton = Qt::NoButton;
-  kinematics::PointId m_dragPoint;
+  DragHandle m_dragHandle;
   QPointF m_grabOffset;     // handle minus pointer (scene units), fixed for one drag
   QPointF m_lastPointer;    // viewport pixels, last pan or drag position
   QPointF m_scrollResidue;  // sub-pixel remainder of programmatic scrolling
   int m_dragCount = 0;      // makes each drag its own undo step
   QString m_lastRefusal;
-  std::optional<kinematics::PointId> m_hover;
+  std::optional<DragHandle> m_hover;
 };
 
 }  // namespace linkwright::ui

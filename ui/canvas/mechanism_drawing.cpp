@@ -48,6 +48,22 @@ DrawingPlan planDrawing(const k::Mechanism& m) {
       if (a->link.index < attachedTo.size()) attachedTo[a->link.index].push_back(id);
     } else if (const auto* s = std::get_if<k::RrpPoint>(&definition)) {
       plan.sliders.push_back({id, 0, sliders++, !s->guide.link.has_value()});
+    } else if (const auto* driven = std::get_if<k::PathPoint>(&definition)) {
+      plan.drivenPaths.push_back(id);
+      const auto* line = std::get_if<k::PolylinePath>(&driven->path);
+      plan.pathVertices.push_back(line != nullptr ? line->vertices.size() : 0);
+    } else if (const auto* actuator = std::get_if<k::ActuatorPoint>(&definition)) {
+      plan.actuators.push_back({actuator->base, id});
+      join(plan, actuator->base, id);
+    } else if (const auto* r = std::get_if<k::RrrPoint>(&definition)) {
+      const auto isGround = [&](k::PointId q) {
+        return std::holds_alternative<k::GroundPoint>(m.points[q.index].definition);
+      };
+      const auto isDriven = [&](k::PointId q) {
+        return std::holds_alternative<k::PathPoint>(m.points[q.index].definition);
+      };
+      if (isGround(r->first) && isDriven(r->second)) plan.workspaces.push_back({r->first, id, r->second});
+      if (isDriven(r->first) && isGround(r->second)) plan.workspaces.push_back({r->second, id, r->first});
     } else if (const auto* p = std::get_if<k::PrpPoint>(&definition)) {
       plan.draggable[i] = false;  // the guides fix it (point_drag.h)
       plan.sliders.push_back({id, 0, sliders, !p->first.link.has_value()});

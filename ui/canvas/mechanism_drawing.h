@@ -2,7 +2,8 @@
 // What the canvas draws for a mechanism, read off its structure (never its numbers): which
 // links are plain bars, which carry points and so are drawn as plates (ternary bodies), which
 // are slotted (RPR), where the sliders sit on which guides, which ground pivots the dashed
-// frame joins, which points get a handle, a traced path or a rate arrow, and which points a
+// frame joins, which points are driven along which paths, which actuators and two-link
+// workspaces to draw, which points get a handle, a traced path or a rate arrow, and which points a
 // label should keep clear of. Two mechanisms with the same plan differ only in dimensions, so
 // the scene keeps its items and just moves them.
 
@@ -50,6 +51,22 @@ struct PointPair {
   bool operator==(const PointPair&) const = default;
 };
 
+/// A linear actuator (a cylinder) from its base pin to its end.
+struct ActuatorShape {
+  kinematics::PointId base;
+  kinematics::PointId end;
+  bool operator==(const ActuatorShape&) const = default;
+};
+
+/// Two links from a ground pivot to a point driven along a path (a two-link arm): the joint
+/// between them can only be assembled while the driven point is inside their workspace.
+struct WorkspaceShape {
+  kinematics::PointId pivot;
+  kinematics::PointId joint;
+  kinematics::PointId driven;
+  bool operator==(const WorkspaceShape&) const = default;
+};
+
 struct DrawingPlan {
   std::vector<bool> barLinks;  ///< per link: drawn as a plain bar (not slotted)
   std::vector<BodyShape> bodies;
@@ -57,6 +74,10 @@ struct DrawingPlan {
   std::vector<SlotShape> slottedLinks;
   std::vector<PointPair> frameLines;
   std::vector<PointPair> constraintBars;
+  std::vector<kinematics::PointId> drivenPaths;  ///< points driven along a path: their paths are drawn
+  std::vector<std::size_t> pathVertices;         ///< per driven path: its vertices' handles (0 for an arc)
+  std::vector<ActuatorShape> actuators;
+  std::vector<WorkspaceShape> workspaces;
   std::vector<bool> ground;                                  ///< per point: a ground pivot
   std::vector<bool> draggable;                               ///< per point: has a drag handle (all but PRP pins)
   std::vector<bool> traced;                                  ///< per point: its path over the cycle is drawn

@@ -1,7 +1,9 @@
 #include "ui/canvas/mechanism_items.h"
 
+#include "ui/canvas/actuator_item.h"
 #include "ui/canvas/canvas_style.h"
 #include "ui/canvas/coupler_path_item.h"
+#include "ui/canvas/driven_path_item.h"
 #include "ui/canvas/ground_pivot_item.h"
 #include "ui/canvas/joint_handle_item.h"
 #include "ui/canvas/label_item.h"
@@ -9,9 +11,12 @@
 #include "ui/canvas/slider_block_item.h"
 #include "ui/canvas/slideway_item.h"
 #include "ui/canvas/slotted_link_item.h"
+#include "ui/canvas/workspace_item.h"
 #include "ui/colors.h"
 #include "ui/geometry.h"
+#include "ui/number_text.h"
 
+#include "kinematics/model/path_shape.h"
 #include "kinematics/solve/guide_line.h"
 
 #include <QGraphicsLineItem>
@@ -99,6 +104,14 @@ MechanismItems::MechanismItems(QGraphicsScene* scene, const k::Mechanism& m, Dra
   }
   for (std::size_t i = 0; i < m_plan.constraintBars.size(); ++i)
     m_constraintBars.push_back(add(new LinkItem(kFrameColor)));
+  for (std::size_t i = 0; i < m_plan.drivenPaths.size(); ++i) {
+    m_drivenPaths.push_back(add(new DrivenPathItem));
+    m_vertexHandles.emplace_back();
+    for (std::size_t v = 0; v < m_plan.pathVertices[i]; ++v)
+      m_vertexHandles.back().push_back(add(new JointHandleItem(JointHandleItem::Style::Vertex)));
+  }
+  for (std::size_t i = 0; i < m_plan.actuators.size(); ++i) m_actuators.push_back(add(new ActuatorItem));
+  for (std::size_t i = 0; i < m_plan.workspaces.size(); ++i) m_workspaces.push_back(add(new WorkspaceItem));
   m_grounds.assign(points, nullptr);
   m_joints.assign(points, nullptr);
   m_labels.assign(points, nullptr);
@@ -122,7 +135,14 @@ MechanismItems::~MechanismItems() {
   }
 }
 
-QGraphicsItem* MechanismItems::handle(k::PointId p) const {
+QGraphicsItem* MechanismItems::handle(const DragHandle& h) const {
+  const k::PointId p = h.point;
+  if (h.pathVertex) {
+    for (std::size_t d = 0; d < m_plan.drivenPaths.size(); ++d)
+      if (m_plan.drivenPaths[d] == p && *h.pathVertex < m_vertexHandles[d].size())
+        return m_vertexHandles[d][*h.pathVertex];
+    return nullptr;
+  }
   if (p.index >= m_grounds.size() || !m_plan.draggable[p.index]) return nullptr;
   return m_grounds[p.index] != nullptr ? static_cast<QGraphicsItem*>(m_grounds[p.index]) : m_joints[p.index];
 }
@@ -148,8 +168,9 @@ CouplerPathItem* MechanismItems::path(k::PointId p) const {
 LabelItem* MechanismItems::label(k::PointId p) const { return p.index < m_labels.size() ? m_labels[p.index] : nullptr; }
 
 void MechanismItems::setDesign(const k::Mechanism& m, const k::SweepResult& sweep, const k::Pose& pose,
-                               double linkageSize) {
+                               double linkageSize, const std::optional<k::TimeBase>& time) {
   m_margin = 0.06 * linkageSize;
+  setDrivenDesign(m, sweep, pose, time);
   for (std::size_t i = 0; i < m_paths.size(); ++i)
     if (m_paths[i] != nullptr) m_paths[i]->setFromSweep(sweep, k::PointId{i});
   // The block's travel over the cycle, measured along its guide or its slot.
@@ -211,7 +232,63 @@ void MechanismItems::setDesign(const k::Mechanism& m, const k::SweepResult& swee
       if (tipDistance > 0.0) include(pivot + (tip - pivot) * (barLength(s, tipDistance) / tipDistance));
     }
   }
+  // A driven point's whole path and a workspace's outer circle belong in the picture too.
+  for (const QGraphicsItem* item : m_drivenPaths) {
+    const QRectF r = item->boundingRect();
+    include(r.topLeft());
+    include(r.bottomRight());
+  }
+  for (const QGraphicsItem* item : m_workspaces) {
+    const QRectF r = item->boundingRect();
+    include(r.topLeft());
+    include(r.bottomRight());
+  }
   m_extraExtent = any ? QRectF(low, high) : QRectF();
+}
+
+// The driven points' paths with the stretches no workspace reaches, the annuli, and the
+// cylinders' barrels (a little shorter than each actuator's shortest length over the cycle).
+void MechanismItems::setDrivenDesign(const k::Mechanism& m, const k::SweepResult& sweep, const k::Pose& pose,
+                                     const std::optional<k::TimeBase>& time) {
+  for (std::size_t w = 0; w < m_plan.workspaces.size(); ++w) {
+    const WorkspaceShape& shape = m_plan.workspaces[w];
+    const auto& r = std::get<k::RrrPoint>(m.points[shape.joint.index].definition);
+    m_workspaces[w]->setAnnulus(positionOf(pose, shape.pivot), std::abs(r.firstLength - r.secondLength),
+                                r.firstLength + r.secondLength);
+  }
+  const QString unit = QString::fromStdString(m.lengthUnit);
+  for (std::size_t d = 0; d < m_plan.drivenPaths.size(); ++d) {
+    const k::PointId point = m_plan.drivenPaths[d];
+    const k::PathShape& path = std::get<k::PathPoint>(m.points[point.index].definition).path;
+    std::vector<DrivenPathItem::Stretch> stretches;
+    for (const WorkspaceShape& shape : m_plan.workspaces) {
+      if (shape.driven != point) continue;
+      const auto& r = std::get<k::RrrPoint>(m.points[shape.joint.index].definition);
+      for (const auto& [from, to] :
+           k::pathOutsideAnnulus(path, pose.position[shape.pivot.index], std::abs(r.firstLength - r.secondLength),
+                                 r.firstLength + r.secondLength)) {
+        const auto t0 = time ? k::timeAtPosition(time->law, from, time->fromTime, time->toTime) : std::nullopt;
+        const auto t1 = time ? k::timeAtPosition(time->law, to, time->fromTime, time->toTime) : std::nullopt;
+        const QString label =
+            t0 && t1 ? QObject::tr("outside %1–%2 s").arg(numberText(*t0, 'g', 4), numberText(*t1, 'g', 4))
+                     : QObject::tr("outside s %1–%2 %3").arg(numberText(from, 'g', 4), numberText(to, 'g', 4), unit);
+        stretches.push_back({from, to, label});
+      }
+    }
+    m_drivenPaths[d]->setShape(path, stretches);
+    if (const auto* line = std::get_if<k::PolylinePath>(&path))
+      for (std::size_t v = 0; v < m_vertexHandles[d].size() && v < line->vertices.size(); ++v)
+        m_vertexHandles[d][v]->setPos(toQt(line->vertices[v]));
+  }
+  for (std::size_t a = 0; a < m_plan.actuators.size(); ++a) {
+    const ActuatorShape& shape = m_plan.actuators[a];
+    double shortest = (pose.position[shape.end.index] - pose.position[shape.base.index]).norm();
+    for (std::size_t j = 0; j < sweep.size() && shape.end.index < sweep.position.size(); ++j)
+      if (sweep.assembled(j) && !sweep.position[shape.end.index].empty())
+        shortest =
+            std::min(shortest, (sweep.position[shape.end.index][j] - sweep.position[shape.base.index][j]).norm());
+    m_actuators[a]->setBarrel(0.85 * shortest);
+  }
 }
 
 double MechanismItems::barLength(std::size_t slot, double tipDistance) const {
@@ -231,6 +308,8 @@ void MechanismItems::setPose(const k::Mechanism& m, const k::Pose& pose) {
     m_frameLines[i]->setLine(QLineF(at(m_plan.frameLines[i].first), at(m_plan.frameLines[i].second)));
   for (std::size_t i = 0; i < m_constraintBars.size(); ++i)
     m_constraintBars[i]->setEnds(at(m_plan.constraintBars[i].first), at(m_plan.constraintBars[i].second));
+  for (std::size_t i = 0; i < m_actuators.size(); ++i)
+    m_actuators[i]->setEnds(at(m_plan.actuators[i].base), at(m_plan.actuators[i].end));
   for (std::size_t i = 0; i < m_grounds.size(); ++i) {
     if (m_grounds[i] != nullptr) m_grounds[i]->setPos(at({i}));
     if (m_joints[i] != nullptr) m_joints[i]->setPos(at({i}));
@@ -312,6 +391,9 @@ void MechanismItems::setPresentationScale(double factor) {
   for (LinkItem* l : m_constraintBars) l->setPresentationScale(factor);
   for (SlottedLinkItem* s : m_slots) s->setPresentationScale(factor);
   for (SlidewayItem* s : m_slideways) s->setPresentationScale(factor);
+  for (DrivenPathItem* p : m_drivenPaths) p->setPresentationScale(factor);
+  for (ActuatorItem* a : m_actuators) a->setPresentationScale(factor);
+  for (WorkspaceItem* w : m_workspaces) w->setPresentationScale(factor);
   for (CouplerPathItem* p : m_paths)
     if (p != nullptr) p->setPresentationScale(factor);
   for (QGraphicsLineItem* line : m_frameLines)
@@ -325,17 +407,21 @@ void MechanismItems::setPresentationScale(double factor) {
   };
   scaleAll(m_grounds);
   scaleAll(m_joints);
+  for (const auto& vertices : m_vertexHandles) scaleAll(vertices);
   scaleAll(m_labels);
   scaleAll(m_blocks);
   scaleAll(m_slotBlocks);
 }
 
-void MechanismItems::setHot(std::optional<k::PointId> point) {
+void MechanismItems::setHot(const std::optional<DragHandle>& handle) {
   for (std::size_t i = 0; i < m_grounds.size(); ++i) {
-    const bool hot = point && point->index == i;
+    const bool hot = handle && !handle->pathVertex && handle->point.index == i;
     if (m_grounds[i] != nullptr) m_grounds[i]->setHot(hot);
     if (m_joints[i] != nullptr) m_joints[i]->setHot(hot);
   }
+  for (std::size_t d = 0; d < m_vertexHandles.size(); ++d)
+    for (std::size_t v = 0; v < m_vertexHandles[d].size(); ++v)
+      m_vertexHandles[d][v]->setHot(handle && handle->point == m_plan.drivenPaths[d] && handle->pathVertex == v);
 }
 
 }  // namespace linkwright::ui

@@ -22,6 +22,9 @@ std::vector<DesignTemplate> designTemplates() {
       {tr("Watt I&I six-bar"), "watt-ii", "watt-ii"},
       {tr("Stephenson I six-&bar"), "stephenson-i", "stephenson-i"},
       {tr("Stephenson III six-ba&r"), "stephenson-iii", "stephenson-iii"},
+      {tr("Two-link &arm"), "two-link arm", "seed-arm"},
+      {tr("&Piston-driven slider-crank"), "slider-crank", "piston-driven"},
+      {tr("&Cylinder-driven boom"), "cylinder rocker", "excavator-boom"},
   };
 }
 

@@ -6,6 +6,7 @@
 #include "ui/document/design_templates.h"
 #include "ui/document/mechanism_document.h"
 
+#include "kinematics/model/driver.h"
 #include "kinematics/model/units.h"
 
 #include <QFormLayout>
@@ -39,10 +40,17 @@ QString badge(const QColor& colour, const QString& text, const QString& note) {
       .arg(colour.name(), text.toHtmlEscaped(), note.toHtmlEscaped());
 }
 
-QString rangesText(const std::vector<k::AngleRange>& ranges) {
+// An input value in the driver's display unit (model/driver.h): a crank's degrees, else the
+// length unit.
+QString inputText(const k::Mechanism& m, double q) {
+  if (k::inputKind(m) == k::InputKind::Angle) return degrees(q, 1);
+  return numberText(q, 'g', 6) + " " + QString::fromStdString(m.lengthUnit);
+}
+
+QString rangesText(const k::Mechanism& m, const std::vector<k::AngleRange>& ranges) {
   QStringList parts;
   for (const k::AngleRange& r : ranges)
-    parts << (r.from == r.to ? degrees(r.from, 1) : degrees(r.from, 1) + " … " + degrees(r.to, 1));
+    parts << (r.from == r.to ? inputText(m, r.from) : inputText(m, r.from) + " … " + inputText(m, r.to));
   return parts.join(", ");
 }
 
@@ -98,8 +106,13 @@ void AnalysisPanel::refreshDesign() {
   const k::MobilityReport& m = a.mobility;
   m_mobility->setText(
       tr("M = 3(%1 − 1) − 2·%2 − %3 = %4").arg(m.links).arg(m.fullJoints).arg(m.halfJoints).arg(m.mobility));
+  const k::Mechanism& linkage = m_document->mechanism();
+  const bool crank = k::inputKind(linkage) == k::InputKind::Angle;
+  if (auto* label = qobject_cast<QLabel*>(m_form->labelForField(m_range)))
+    label->setText(crank ? tr("Crank range") : tr("Input range"));
   if (a.inputRange.fullRotation) m_range->setText(tr("full turn"));
-  else m_range->setText(rangesText(a.inputRange.ranges) + tr(" (rocks between the ends)"));
+  else
+    m_range->setText(rangesText(linkage, a.inputRange.ranges) + (crank ? tr(" (rocks between the ends)") : QString()));
   // A four-bar's rows for any linkage that is one, however it was built or stored.
   const bool fourBar = a.grashof.has_value();
   for (QLabel* row : {m_sums, m_transmissionRange, m_limits}) m_form->setRowVisible(row, fourBar);
@@ -153,7 +166,7 @@ void AnalysisPanel::refreshLinkage() {
   }
   const auto& gaps = a.notAssembled;
   m_form->setRowVisible(m_notAssembled, !gaps.empty());
-  m_notAssembled->setText(rangesText(gaps));
+  m_notAssembled->setText(rangesText(m_document->mechanism(), gaps));
 }
 
 void AnalysisPanel::refreshMotion() {
@@ -162,11 +175,11 @@ void AnalysisPanel::refreshMotion() {
   if (const auto& fourBar = m_document->fourBar()) {
     m_transmissionNow->setText(degrees(pose.transmissionAngle[fourBar->c.index], 1));
   } else {
-    // One angle per dyad that has one (RRR and RRP joints), named by its joint.
+    // One angle per dyad that has one (RRR, RRP and actuator joints), named by its joint.
     QStringList parts;
     for (std::size_t i = 0; i < m.points.size() && i < pose.transmissionAngle.size(); ++i) {
       const auto& d = m.points[i].definition;
-      if (std::holds_alternative<k::RrrPoint>(d) || std::holds_alternative<k::RrpPoint>(d))
+      if (k::hasAssemblyBranch(d))
         parts << QString("%1 %2").arg(QString::fromStdString(m.points[i].name), degrees(pose.transmissionAngle[i], 1));
     }
     m_transmissionNow->setText(parts.isEmpty() ? tr("—") : parts.join(", "));

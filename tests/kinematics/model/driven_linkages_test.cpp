@@ -233,3 +233,57 @@ TEST_CASE("forces are refused for a linear driver, with the reason", "[driven][d
   CHECK(model.error().message ==
         "forces need a crank driver: this linkage is driven by a point on a path or a linear actuator");
 }
+
+TEST_CASE("the stretches of a path outside the arm's reach are exact", "[driven][path][arm]") {
+  // arm --from-point 0.3,0 --to-point 0.7,0 at 2 m/s: unreachable from t = 0.1 s to 0.2 s.
+  const TwoLinkArm arm{0.3, 0.2};
+  const LinePath line{{0.3, 0.0}, {0.7, 0.0}, 2.0};
+  const auto reference = followLine(arm, Branch::Open, line, 2).value();
+  const PolylinePath path{{line.from, line.to}};
+  const auto outside = pathOutsideAnnulus(path, Eigen::Vector2d::Zero(), 0.1, 0.5);
+  REQUIRE(outside.size() == 1);
+  REQUIRE(reference.unreachable.size() == 1);
+  CHECK(outside[0].first / line.speed == within(reference.unreachable[0].first, 1e-15));
+  CHECK(outside[0].second / line.speed == within(reference.unreachable[0].second, 1e-15));
+  // An arc through the outer circle twice and a polyline through the inner one: each stretch
+  // ends on a circle, and its middle lies outside the annulus.
+  for (const PathShape& shape : {PathShape{ArcPath{{0.6, 0.0}, 0.25, kPi, -kPi}},
+                                 PathShape{PolylinePath{{{-0.4, 0.05}, {0.4, 0.05}, {0.4, 0.6}}}}}) {
+    const auto stretches = pathOutsideAnnulus(shape, Eigen::Vector2d::Zero(), 0.1, 0.5);
+    REQUIRE_FALSE(stretches.empty());
+    for (const auto& [from, to] : stretches) {
+      CAPTURE(from, to);
+      const double middle = pathAt(shape, 0.5 * (from + to)).point.norm();
+      CHECK((middle < 0.1 || middle > 0.5));
+      for (const double s : {from, to}) {
+        if (s == 0.0 || s == pathLength(shape)) continue;
+        const double r = pathAt(shape, s).point.norm();
+        CHECK(std::min(std::abs(r - 0.1), std::abs(r - 0.5)) < 1e-15);
+      }
+    }
+  }
+}
+
+TEST_CASE("a law's time at a position inverts it", "[driven][law]") {
+  const MotionLaw law = CycloidalRise{1.2, 0.7, 4.0};
+  for (const double t : {0.0, 0.3, 2.0, 3.9, 4.0}) {
+    const auto back = timeAtPosition(law, motionAt(law, t).position, 0.0, 4.0);
+    REQUIRE(back);
+    CHECK(*back == within(t, 1e-9));
+  }
+  CHECK_FALSE(timeAtPosition(law, 2.0, 0.0, 4.0));
+}
+
+TEST_CASE("a path's vertex drags to its target, never onto its neighbour", "[driven][drag]") {
+  const Mechanism arm = seedArm(Branch::Crossed).mechanism;
+  const auto moved = dragPathVertex(arm, kTip, 1, {0.1, 0.4});
+  REQUIRE(moved);
+  const auto& line = std::get<PolylinePath>(std::get<PathPoint>(moved->points[kTip.index].definition).path);
+  CHECK(line.vertices[1] == Eigen::Vector2d(0.1, 0.4));
+  const auto onto = dragPathVertex(arm, kTip, 1, {0.3, 0.0});
+  REQUIRE_FALSE(onto);
+  CHECK(onto.error().message ==
+        "point 2 of tip's path cannot be dropped onto point 1: the segment between them would have no length");
+  CHECK_FALSE(dragPathVertex(arm, kTip, 2, {0.0, 0.0}));
+  CHECK_FALSE(dragPathVertex(arm, kElbow, 0, {0.0, 0.0}));
+}

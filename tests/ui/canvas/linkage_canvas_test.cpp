@@ -45,7 +45,7 @@ TEST_CASE("every point of a linkage but a PRP pin has a handle, at its solved po
     CAPTURE(name);
     ShownView v(example(name));
     const std::size_t points = v.document.mechanism().points.size();
-    CHECK(v.scene().handlePoints().size() == points);
+    CHECK(v.scene().handles().size() == points);
     for (std::size_t i = 0; i < points; ++i) {
       CAPTURE(i);
       const QGraphicsItem* handle = v.scene().handleItem(k::PointId{i});
@@ -152,7 +152,7 @@ TEST_CASE("a PRP pin has no handle; its two blocks sit on their guides", "[canva
   REQUIRE_FALSE(v.document.edit(*attached, "attach").has_value());
   const k::PointId pin{v.document.mechanism().points.size() - 1};
   CHECK(v.scene().handleItem(pin) == nullptr);
-  CHECK(v.scene().handlePoints().size() == v.document.mechanism().points.size() - 1);
+  CHECK(v.scene().handles().size() == v.document.mechanism().points.size() - 1);
   std::size_t blocks = 0;
   for (const auto& s : v.scene().plan().sliders) blocks += s.joint == pin ? 1 : 0;
   CHECK(blocks == 2);
