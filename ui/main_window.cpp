@@ -12,6 +12,7 @@
 #include "ui/message_banner.h"
 #include "ui/panels/analysis_panel.h"
 #include "ui/panels/dimensions_panel.h"
+#include "ui/panels/drive_panel.h"
 #include "ui/panels/dynamics_panel.h"
 #include "ui/panels/motion_panel.h"
 #include "ui/plots/force_plot_panel.h"
@@ -52,10 +53,9 @@ MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), m_settings(std::make_unique<Settings>()), m_document(new MechanismDocument(this)),
       m_animator(new CrankAnimator(m_document, this)), m_banner(new MessageBanner(this)),
       m_canvas(new LinkageView(m_document, this)), m_plots(new PlotPanel(m_document, this)),
-      m_dimensions(new DimensionsPanel(m_document, this)),
-      m_motion(new MotionPanel(m_document, m_animator, m_settings.get(), this)),
-      m_analysis(new AnalysisPanel(m_document, this)), m_forces(new ForceResults(m_document, this)),
-      m_dynamicsPanel(new DynamicsPanel(m_document, this)),
+      m_dimensions(new DimensionsPanel(m_document, this)), m_drive(new DrivePanel(m_document, m_settings.get(), this)),
+      m_motion(new MotionPanel(m_document, m_animator, this)), m_analysis(new AnalysisPanel(m_document, this)),
+      m_forces(new ForceResults(m_document, this)), m_dynamicsPanel(new DynamicsPanel(m_document, this)),
       m_forcePlots(new ForcePlotPanel(m_document, m_forces, this)), m_forceArrows(new ForceArrowsItem) {
   setObjectName("MainWindow");
   m_normalFont = font();
@@ -63,6 +63,7 @@ MainWindow::MainWindow(QWidget* parent)
   auto* sideLayout = new QVBoxLayout(side);
   sideLayout->setContentsMargins(0, 0, 0, 0);
   sideLayout->addWidget(m_dimensions);
+  sideLayout->addWidget(m_drive);
   sideLayout->addWidget(m_motion);
   sideLayout->addWidget(m_analysis);
   sideLayout->addStretch();

@@ -1,5 +1,5 @@
 #pragma once
-// The designer window: canvas in the middle, dimensions / drive / analysis panels on the left,
+// The designer window: canvas in the middle, dimensions / drive / motion / analysis panels on the left,
 // plots on the right; File (New ▸ each kind of linkage), Edit (Attach dyad…), View, Examples
 // and Help menus. The window wires widgets to
 // the document; it computes nothing itself. Each file and export action has a dialog-free
@@ -25,6 +25,7 @@ namespace linkwright::ui {
 class AnalysisPanel;
 class CrankAnimator;
 class DimensionsPanel;
+class DrivePanel;
 class DynamicsPanel;
 class ForceArrowsItem;
 class ForcePlotPanel;
@@ -46,6 +47,7 @@ public:
   LinkageView* canvas() const { return m_canvas; }
   PlotPanel* plots() const { return m_plots; }
   DimensionsPanel* dimensionsPanel() const { return m_dimensions; }
+  DrivePanel* drivePanel() const { return m_drive; }
   MotionPanel* motionPanel() const { return m_motion; }
   AnalysisPanel* analysisPanel() const { return m_analysis; }
   CrankAnimator* animator() const { return m_animator; }
@@ -103,6 +105,7 @@ private:
   LinkageView* m_canvas;
   PlotPanel* m_plots;
   DimensionsPanel* m_dimensions;
+  DrivePanel* m_drive;
   MotionPanel* m_motion;
   AnalysisPanel* m_analysis;
   ForceResults* m_forces;

@@ -103,7 +103,7 @@ kinematics::Result<kinematics::SweepSpec> timeSweepSpecFor(const Invocation& inv
   const double omega = inv.rpm ? k::rpmToRadPerSec(*inv.rpm) : inv.omega.value_or(d.omega);
   auto law = lawFor(inv, d, d.toInput(inv.fromDeg.value_or(d.fromDeg)), omega);
   if (!law) return law.error();
-  if (auto e = k::checkMotionLaw(*law)) return badValue("--law", "gives " + e->message);
+  if (auto e = k::checkMotionLaw(*law, d.input)) return badValue("--law", "gives " + e->message);
   const auto span = k::lawTimeSpan(*law);
   const double from = inv.fromTime.value_or(span ? span->first : 0.0);
   const auto end = inv.toTime ? inv.toTime : defaultEndTime(*law, omega);
@@ -126,7 +126,7 @@ kinematics::Result<kinematics::SweepSpec> timeSweepSpecFor(const Invocation& inv
   spec.samples = static_cast<std::size_t>(samples);
   const double last = inv.stepTime ? from + static_cast<double>(samples - 1) * *inv.stepTime : *end;
   spec.time = k::TimeBase{std::move(*law), from, last};
-  if (auto e = k::checkSweepSpec(spec)) return badValue("--from-time", "/ --to-time: " + e->message);
+  if (auto e = k::checkSweepSpec(spec, d.input)) return badValue("--from-time", "/ --to-time: " + e->message);
   return spec;
 }
 

@@ -20,17 +20,22 @@ Error badValue(const std::string& option, const std::string& why) {
   return Error{ErrorCode::InvalidValue, option, option + " " + why};
 }
 
-// The input domain (kinematics/model/validate.h), named by the option the user typed.
-std::optional<Error> checkOptions(const Invocation& inv) {
+// The input domain (kinematics/model/validate.h, driver.h), named by the option the user
+// typed: --from, --to and --step in degrees for a crank, in the length unit for a linear driver.
+std::optional<Error> checkOptions(const Invocation& inv, kinematics::InputKind kind) {
   using namespace kinematics;
   if (inv.rpm && !(std::isfinite(*inv.rpm) && std::abs(rpmToRadPerSec(*inv.rpm)) <= kMaxOmega))
     return badValue("--rpm", "must be finite and within ±" + formatShort(kMaxOmega * 60.0 / (2.0 * kPi), 3) +
                                  " rev/min, 1e6 rad/s (got " + formatNumber(*inv.rpm) + ")");
-  for (const auto& [value, option, max, unit] : {std::tuple{inv.omega, "--omega", kMaxOmega, "rad/s"},
-                                                 {inv.alpha, "--alpha", kMaxAlpha, "rad/s²"},
-                                                 {inv.fromDeg, "--from", kMaxAngleDeg, "degrees"},
-                                                 {inv.toDeg, "--to", kMaxAngleDeg, "degrees"},
-                                                 {inv.stepDeg, "--step", 2.0 * kMaxAngleDeg, "degrees"}})
+  const InputDomain d = inputDomain(kind);
+  const bool angle = kind == InputKind::Angle;
+  const double grid = angle ? kMaxAngleDeg : d.position;
+  const char* gridUnit = angle ? "degrees" : d.positionUnit;
+  for (const auto& [value, option, max, unit] : {std::tuple{inv.omega, "--omega", d.rate, d.rateUnit},
+                                                 {inv.alpha, "--alpha", d.acceleration, d.accelerationUnit},
+                                                 {inv.fromDeg, "--from", grid, gridUnit},
+                                                 {inv.toDeg, "--to", grid, gridUnit},
+                                                 {inv.stepDeg, "--step", 2.0 * grid, gridUnit}})
     if (value)
       if (auto e = checkMagnitude(*value, option, max, unit)) return e;
   return std::nullopt;
@@ -43,7 +48,7 @@ double GridDefaults::toInput(double value) const {
 }
 
 kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Invocation& inv, const GridDefaults& d) {
-  if (auto e = checkOptions(inv)) return *e;
+  if (auto e = checkOptions(inv, d.input)) return *e;
   if (inv.law) return timeSweepSpecFor(inv, d);
   if (d.time) {
     // A document or example whose driver follows a law: its time base, at --samples instants
@@ -61,7 +66,7 @@ kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Invocation& inv, co
     kinematics::SweepSpec spec;
     spec.time = d.time;
     spec.samples = static_cast<std::size_t>(inv.samples.value_or(d.timeSamples));
-    if (auto e = kinematics::checkSweepSpec(spec)) return badValue("--samples", e->message);
+    if (auto e = kinematics::checkSweepSpec(spec, d.input)) return badValue("--samples", e->message);
     return spec;
   }
   kinematics::SweepSpec spec;

@@ -18,9 +18,10 @@ std::optional<Error> checkDesign(const Design& d) {
       return e;
     }
   if (auto e = checkMechanism(d.mechanism)) return e;
-  if (auto e = checkDriveAndGrid(d.omega, d.alpha, d.fromDeg, d.toDeg, d.samples)) return e;
+  const InputKind kind = inputKind(d.mechanism);
+  if (auto e = checkDriveAndGrid(d.omega, d.alpha, d.fromDeg, d.toDeg, d.samples, kind)) return e;
   if (d.time)
-    if (auto e = checkTimeBase(*d.time)) return e;
+    if (auto e = checkTimeBase(*d.time, kind)) return e;
   return checkDesignDynamics(d.mechanism, d.dynamics);
 }
 
@@ -32,11 +33,17 @@ std::optional<Error> checkDesignDynamics(const Mechanism& mechanism, const Linka
   return e;
 }
 
-std::optional<Error> checkDriveAndGrid(double omega, double alpha, double fromDeg, double toDeg, std::size_t samples) {
-  if (auto e = checkMagnitude(omega, "omega", kMaxOmega, "rad/s")) return e;
-  if (auto e = checkMagnitude(alpha, "alpha", kMaxAlpha, "rad/s²")) return e;
-  if (auto e = checkMagnitude(fromDeg, "fromDeg", kMaxAngleDeg, "degrees")) return e;
-  if (auto e = checkMagnitude(toDeg, "toDeg", kMaxAngleDeg, "degrees")) return e;
+std::optional<Error> checkDriveAndGrid(double omega, double alpha, double fromDeg, double toDeg, std::size_t samples,
+                                       InputKind kind) {
+  const InputDomain d = inputDomain(kind);
+  const bool angle = kind == InputKind::Angle;
+  if (auto e = checkMagnitude(omega, "omega", d.rate, d.rateUnit)) return e;
+  if (auto e = checkMagnitude(alpha, "alpha", d.acceleration, d.accelerationUnit)) return e;
+  if (auto e =
+          checkMagnitude(fromDeg, "fromDeg", angle ? kMaxAngleDeg : d.position, angle ? "degrees" : d.positionUnit))
+    return e;
+  if (auto e = checkMagnitude(toDeg, "toDeg", angle ? kMaxAngleDeg : d.position, angle ? "degrees" : d.positionUnit))
+    return e;
   if (toDeg <= fromDeg)
     return Error{
         ErrorCode::InvalidValue, "toDeg",

@@ -40,9 +40,11 @@ struct Design {
 /// ("dynamics.links[0].mass").
 std::optional<Error> checkDesign(const Design& design);
 
-/// The driver and grid rules every design shares: finite ω, α and angles, toDeg > fromDeg,
-/// 2 ≤ samples ≤ 10 000 000. Fields "omega", "alpha", "fromDeg", "toDeg", "samples".
-std::optional<Error> checkDriveAndGrid(double omega, double alpha, double fromDeg, double toDeg, std::size_t samples);
+/// The driver and grid rules every design shares: ω, α and the grid's ends within the input
+/// domain of the driver's kind, toDeg > fromDeg, 2 ≤ samples ≤ 10 000 000. Fields "omega",
+/// "alpha", "fromDeg", "toDeg", "samples".
+std::optional<Error> checkDriveAndGrid(double omega, double alpha, double fromDeg, double toDeg, std::size_t samples,
+                                       InputKind kind = InputKind::Angle);
 
 /// checkDynamics with "dynamics." before the field and the message.
 std::optional<Error> checkDesignDynamics(const Mechanism& mechanism, const LinkageDynamics& dynamics);

@@ -166,9 +166,10 @@ Result<Mechanism> buildRead(const FourBarMembers& f) {
 std::optional<Error> checkRead(const Design& d) {
   if (auto e = checkMechanism(d.mechanism)) return Error{e->code, "mechanism." + e->field, "mechanism." + e->message};
   const InputKeys keys = keysOf(d.mechanism);
-  if (auto e = inDocument(checkDriveAndGrid(d.omega, d.alpha, d.fromDeg, d.toDeg, d.samples), keys)) return e;
+  const InputKind kind = inputKind(d.mechanism);
+  if (auto e = inDocument(checkDriveAndGrid(d.omega, d.alpha, d.fromDeg, d.toDeg, d.samples, kind), keys)) return e;
   if (d.time)
-    if (auto e = inDocument(checkTimeBase(*d.time), keys)) return e;
+    if (auto e = inDocument(checkTimeBase(*d.time, kind), keys)) return e;
   return checkDocumentDynamics(d.mechanism, d.dynamics);
 }
 

@@ -1,8 +1,16 @@
 #include "kinematics/model/driver.h"
 
 #include "kinematics/model/units.h"
+#include "kinematics/model/validate.h"
 
 namespace linkwright::kinematics {
+
+InputDomain inputDomain(InputKind kind) {
+  if (kind == InputKind::Angle)
+    return {degToRad(kMaxAngleDeg), kMaxOmega, kMaxAlpha, "rad (1e6 degrees)", "rad/s", "rad/s²", "omega", "alpha"};
+  return {kMaxLength,       kMaxLength * kMaxOmega, kMaxLength * kMaxAlpha, "length units",
+          "length units/s", "length units/s²",      "input velocity",       "input acceleration"};
+}
 
 bool isDriver(const PointDefinition& d) {
   return std::holds_alternative<CrankPoint>(d) || std::holds_alternative<PathPoint>(d) ||

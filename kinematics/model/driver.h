@@ -13,6 +13,23 @@ namespace linkwright::kinematics {
 
 enum class InputKind { Angle, Length };
 
+/// The input domain (validate.h) for a driver's coordinate, rate and acceleration, with the
+/// words messages use: a crank's angle within ±1e6 degrees, ω and α within the domain's; a
+/// linear driver's position within ±kMaxLength, its speed within kMaxOmega·kMaxLength and its
+/// acceleration within kMaxAlpha·kMaxLength (a point on a link of the largest size turning at
+/// the largest ω and α moves that fast).
+struct InputDomain {
+  double position;
+  double rate;
+  double acceleration;
+  const char* positionUnit;
+  const char* rateUnit;
+  const char* accelerationUnit;
+  const char* rateName;          ///< "omega" or "input velocity"
+  const char* accelerationName;  ///< "alpha" or "input acceleration"
+};
+InputDomain inputDomain(InputKind kind);
+
 /// True for the definitions that take the input (CrankPoint, PathPoint, ActuatorPoint).
 bool isDriver(const PointDefinition& definition);
 

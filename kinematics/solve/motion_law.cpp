@@ -97,27 +97,31 @@ std::optional<Error> checkDuration(double value, const std::string& field) {
   return fieldError(field, "must be positive and at most 1e6 s (got " + formatNumber(value) + ")");
 }
 
-// Bounds every law shares: the driver's speed and acceleration within the domain's ω and α.
-std::optional<Error> checkPeaks(double velocity, double acceleration) {
-  if (auto e = checkMagnitude(velocity, "law peak velocity", kMaxOmega, "per s")) return e;
-  return checkMagnitude(acceleration, "law peak acceleration", kMaxAlpha, "per s²");
-}
-
-std::optional<Error> checkRise(double start, double rise, double duration) {
-  if (auto e = checkMagnitude(start, "law.start", degToRad(kMaxAngleDeg), "rad")) return e;
-  if (auto e = checkMagnitude(rise, "law.rise", degToRad(kMaxAngleDeg), "rad")) return e;
-  if (auto e = checkDuration(duration, "law.duration")) return e;
-  // Cycloidal 2h/T and 2πh/T²; the 3-4-5 rise peaks lower (1.875h/T, 5.77h/T²).
-  return checkPeaks(2.0 * rise / duration, kTwoPi * rise / (duration * duration));
-}
-
 struct CheckLaw {
+  InputDomain domain;
+
+  // Bounds every law shares: the driver's speed and acceleration within the domain's.
+  std::optional<Error> checkPeaks(double velocity, double acceleration) const {
+    if (auto e = checkMagnitude(velocity, "law peak velocity", domain.rate, domain.rateUnit)) return e;
+    return checkMagnitude(acceleration, "law peak acceleration", domain.acceleration, domain.accelerationUnit);
+  }
+  std::optional<Error> checkPosition(double value, const char* field) const {
+    return checkMagnitude(value, field, domain.position, domain.positionUnit);
+  }
+  std::optional<Error> checkRise(double start, double rise, double duration) const {
+    if (auto e = checkPosition(start, "law.start")) return e;
+    if (auto e = checkPosition(rise, "law.rise")) return e;
+    if (auto e = checkDuration(duration, "law.duration")) return e;
+    // Cycloidal 2h/T and 2πh/T²; the 3-4-5 rise peaks lower (1.875h/T, 5.77h/T²).
+    return checkPeaks(2.0 * rise / duration, kTwoPi * rise / (duration * duration));
+  }
+
   std::optional<Error> operator()(const ConstantVelocity& l) const {
-    if (auto e = checkMagnitude(l.start, "law.start", degToRad(kMaxAngleDeg), "rad")) return e;
+    if (auto e = checkPosition(l.start, "law.start")) return e;
     return checkPeaks(l.velocity, 0.0);
   }
   std::optional<Error> operator()(const RampToSpeed& l) const {
-    if (auto e = checkMagnitude(l.start, "law.start", degToRad(kMaxAngleDeg), "rad")) return e;
+    if (auto e = checkPosition(l.start, "law.start")) return e;
     if (auto e = checkDuration(l.rampTime, "law.rampTime")) return e;
     return checkPeaks(l.velocity, l.velocity / l.rampTime);
   }
@@ -139,6 +143,8 @@ struct CheckLaw {
       }
       peakAcceleration = std::max({peakAcceleration, std::abs(l.curvature[i]), std::abs(l.curvature[i + 1])});
     }
+    for (std::size_t i = 0; i < l.position.size(); ++i)
+      if (auto e = checkPosition(l.position[i], "law.table position")) return e;
     return checkPeaks(peakVelocity, peakAcceleration);
   }
 };
@@ -147,23 +153,8 @@ struct CheckLaw {
 
 MotionState motionAt(const MotionLaw& law, double t) { return std::visit(StateAt{t}, law); }
 
-std::optional<Error> checkMotionLaw(const MotionLaw& law) { return std::visit(CheckLaw{}, law); }
-
-std::optional<double> timeAtPosition(const MotionLaw& law, double q, double fromTime, double toTime) {
-  double lo = fromTime, hi = toTime;
-  const double qLo = motionAt(law, lo).position - q;
-  const double qHi = motionAt(law, hi).position - q;
-  if (qLo == 0.0) return lo;
-  if (qHi == 0.0) return hi;
-  if ((qLo < 0.0) == (qHi < 0.0)) return std::nullopt;
-  // 200 halvings take any span of doubles down to adjacent values.
-  for (int i = 0; i < 200 && hi - lo > 0.0; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    if (mid <= lo || mid >= hi) break;
-    if ((motionAt(law, mid).position - q < 0.0) == (qLo < 0.0)) lo = mid;
-    else hi = mid;
-  }
-  return 0.5 * (lo + hi);
+std::optional<Error> checkMotionLaw(const MotionLaw& law, InputKind kind) {
+  return std::visit(CheckLaw{inputDomain(kind)}, law);
 }
 
 std::optional<std::pair<double, double>> lawTimeSpan(const MotionLaw& law) {
@@ -178,7 +169,8 @@ Result<TableLaw> makeTableLaw(std::vector<double> time, std::vector<double> posi
   for (std::size_t i = 0; i < n; ++i) {
     const std::string row = "law.table[" + std::to_string(i) + "]";
     if (auto e = checkMagnitude(time[i], row + ".time", kMaxTime, "s")) return *e;
-    if (auto e = checkMagnitude(position[i], row + ".position", degToRad(kMaxAngleDeg), "rad")) return *e;
+    // The widest domain here; checkMotionLaw holds the rows to the driver's own.
+    if (auto e = checkMagnitude(position[i], row + ".position", kMaxLength, "")) return *e;
     if (i > 0 && !(time[i] > time[i - 1]))
       return fieldError(row + ".time", "must be later than the row before (got " + formatNumber(time[i]) + " after " +
                                            formatNumber(time[i - 1]) + ")");

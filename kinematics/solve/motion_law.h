@@ -17,6 +17,7 @@
 // its first or last point at rest (a sweep on a time base stays within them).
 // Times in s; q in the driver's unit (rad for a crank), q̇ per s, q̈ per s².
 
+#include "kinematics/model/driver.h"
 #include "kinematics/model/result.h"
 
 #include <optional>
@@ -78,13 +79,9 @@ MotionState motionAt(const MotionLaw& law, double t);
 /// points, a non-finite value, or times not strictly increasing.
 Result<TableLaw> makeTableLaw(std::vector<double> time, std::vector<double> position);
 
-/// Error naming the first invalid field ("law.duration", "law.velocity", …) and the value.
-std::optional<Error> checkMotionLaw(const MotionLaw& law);
-
-/// When, between `fromTime` and `toTime`, the law reaches position `q`: by bisection, exact to
-/// round-off for a law that moves one way over those times (every closed-form law does);
-/// nullopt if q is not between the positions at the two times.
-std::optional<double> timeAtPosition(const MotionLaw& law, double q, double fromTime, double toTime);
+/// Error naming the first invalid field ("law.duration", "law.velocity", …) and the value;
+/// positions, speeds and accelerations within the input domain of the driver's kind.
+std::optional<Error> checkMotionLaw(const MotionLaw& law, InputKind kind = InputKind::Angle);
 
 /// The times over which `law` is defined by data: the table's first and last time; nullopt
 /// for the closed-form laws, which are defined at every time.

@@ -569,9 +569,15 @@ std::size_t solveBlockInto(const Mechanism& m, std::span<const DriverState> driv
 
 Result<Pose> solvePose(const Mechanism& m, const DriverState& driver, const SolveRequest& request) {
   if (auto e = checkMechanism(m)) return *e;
-  if (auto e = checkMagnitude(driver.angle, "input angle", degToRad(kMaxAngleDeg), "rad (1e6 degrees)")) return *e;
-  if (auto e = checkMagnitude(driver.omega, "input omega", kMaxOmega, "rad/s")) return *e;
-  if (auto e = checkMagnitude(driver.alpha, "input alpha", kMaxAlpha, "rad/s²")) return *e;
+  const InputKind kind = inputKind(m);
+  const InputDomain d = inputDomain(kind);
+  const bool angle = kind == InputKind::Angle;
+  if (auto e = checkMagnitude(driver.angle, angle ? "input angle" : "input position", d.position, d.positionUnit))
+    return *e;
+  if (auto e = checkMagnitude(driver.omega, angle ? "input omega" : d.rateName, d.rate, d.rateUnit)) return *e;
+  if (auto e =
+          checkMagnitude(driver.alpha, angle ? "input alpha" : d.accelerationName, d.acceleration, d.accelerationUnit))
+    return *e;
   if (auto e = checkNewtonSettings(request.newton)) return *e;
   Pose pose;
   preparePose(m, pose);

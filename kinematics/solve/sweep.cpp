@@ -355,8 +355,8 @@ bool SweepResult::lockedAfter(std::size_t sample) const {
          });
 }
 
-std::optional<Error> checkTimeBase(const TimeBase& time) {
-  if (auto e = checkMotionLaw(time.law)) return e;
+std::optional<Error> checkTimeBase(const TimeBase& time, InputKind kind) {
+  if (auto e = checkMotionLaw(time.law, kind)) return e;
   if (auto e = checkMagnitude(time.fromTime, "from time", 1e6, "s")) return e;
   if (auto e = checkMagnitude(time.toTime, "to time", 1e6, "s")) return e;
   if (time.toTime < time.fromTime)
@@ -364,10 +364,13 @@ std::optional<Error> checkTimeBase(const TimeBase& time) {
                  "to time must not be before from time (got " + formatNumber(time.fromTime) + " to " +
                      formatNumber(time.toTime) + " s)"};
   // The laws are monotonic between their ends (a table is bounded by its rows), so the
-  // angles at the two ends bound every sample's: within the domain's ±1e6 degrees.
+  // positions at the two ends bound every sample's: within the domain's.
+  const InputDomain domain = inputDomain(kind);
   for (const double t : {time.fromTime, time.toTime})
-    if (auto e = checkMagnitude(motionAt(time.law, t).position, "the law's angle at " + formatNumber(t) + " s",
-                                degToRad(kMaxAngleDeg), "rad (1e6 degrees)"))
+    if (auto e = checkMagnitude(motionAt(time.law, t).position,
+                                std::string(kind == InputKind::Angle ? "the law's angle" : "the law's position") +
+                                    " at " + formatNumber(t) + " s",
+                                domain.position, domain.positionUnit))
       return e;
   if (const auto span = lawTimeSpan(time.law); span && (time.fromTime < span->first || time.toTime > span->second))
     return Error{ErrorCode::InvalidValue, "from time",
@@ -377,13 +380,16 @@ std::optional<Error> checkTimeBase(const TimeBase& time) {
   return std::nullopt;
 }
 
-std::optional<Error> checkSweepSpec(const SweepSpec& spec) {
+std::optional<Error> checkSweepSpec(const SweepSpec& spec, InputKind kind) {
   if (spec.time)
-    if (auto e = checkTimeBase(*spec.time)) return e;
-  if (auto e = checkMagnitude(spec.fromAngle, "from angle", degToRad(kMaxAngleDeg), "rad (1e6 degrees)")) return e;
-  if (auto e = checkMagnitude(spec.toAngle, "to angle", degToRad(kMaxAngleDeg), "rad (1e6 degrees)")) return e;
-  if (auto e = checkMagnitude(spec.omega, "omega", kMaxOmega, "rad/s")) return e;
-  if (auto e = checkMagnitude(spec.alpha, "alpha", kMaxAlpha, "rad/s²")) return e;
+    if (auto e = checkTimeBase(*spec.time, kind)) return e;
+  const InputDomain d = inputDomain(kind);
+  const bool angle = kind == InputKind::Angle;
+  if (auto e = checkMagnitude(spec.fromAngle, angle ? "from angle" : "from input", d.position, d.positionUnit))
+    return e;
+  if (auto e = checkMagnitude(spec.toAngle, angle ? "to angle" : "to input", d.position, d.positionUnit)) return e;
+  if (auto e = checkMagnitude(spec.omega, d.rateName, d.rate, d.rateUnit)) return e;
+  if (auto e = checkMagnitude(spec.alpha, d.accelerationName, d.acceleration, d.accelerationUnit)) return e;
   if (spec.samples == 0 || spec.samples > static_cast<std::size_t>(kMaxSamples))
     return Error{
         ErrorCode::InvalidValue, "samples",
@@ -415,7 +421,7 @@ double sweepAngle(const SweepSpec& spec, std::size_t index) {
 std::optional<Error> sweepInto(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request,
                                SweepResult& out) {
   if (auto e = checkMechanism(mechanism)) return e;
-  if (auto e = checkSweepSpec(spec)) return e;
+  if (auto e = checkSweepSpec(spec, inputKind(mechanism))) return e;
   if (auto e = checkNewtonSettings(request.newton)) return e;
   if (auto e = checkSelection(mechanism, request.only)) return e;
   SolveRequest normalized = request;

@@ -96,12 +96,13 @@ struct SweepResult {
 /// Error naming the field ("law.duration", "from time", …) for an invalid law, a non-finite
 /// time, toTime < fromTime, a law that would turn the crank past ±1e6 degrees, or times outside
 /// a table law's data.
-std::optional<Error> checkTimeBase(const TimeBase& time);
+std::optional<Error> checkTimeBase(const TimeBase& time, InputKind kind = InputKind::Angle);
 
 /// Error naming the field if the spec has a non-finite angle, ω or α, or zero samples; or, on
 /// a time base, an invalid law, a non-finite time, toTime < fromTime, or times outside a table
 /// law's data.
-std::optional<Error> checkSweepSpec(const SweepSpec& spec);
+/// The bounds are those of the driver's kind (driver.h's InputDomain).
+std::optional<Error> checkSweepSpec(const SweepSpec& spec, InputKind kind = InputKind::Angle);
 
 /// The input angle of sample `index` (rad).
 double sweepAngle(const SweepSpec& spec, std::size_t index);

@@ -6,9 +6,11 @@
 #include "ui/document/mechanism_document.h"
 
 #include "kinematics/design/design.h"
+#include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
 
 #include "tests/ui/support/four_bar_design.h"
+#include "tests/ui/support/timed_design.h"
 
 #include <catch2/catch.hpp>
 
@@ -223,17 +225,68 @@ TEST_CASE("an edit that moves the crank restores the crank angle on undo", "[ui]
   CHECK(doc.crankAngle() == 1.25);
 }
 
-TEST_CASE("a design whose crank follows a motion law is refused with the reason, for now", "[ui][document][law]") {
-  // The designer shows angle grids; it says so instead of dropping the law.
+TEST_CASE("a design whose crank follows a motion law opens and is swept on its time base", "[ui][document][law]") {
   MechanismDocument doc;
-  kinematics::Design timed = doc.design();
-  timed.time = kinematics::TimeBase{kinematics::CycloidalRise{0.0, 1.0, 0.5}, 0.0, 0.5};
-  REQUIRE_FALSE(kinematics::checkDesign(timed).has_value());
-  const auto why = doc.validate(timed);
-  REQUIRE(why.has_value());
-  CHECK(why->contains("motion law in time"));
-  CHECK(why->contains("linkwright-cli analyze"));
-  const kinematics::Design before = doc.design();
-  CHECK(doc.edit(timed, "law").has_value());
-  CHECK(doc.design() == before);
+  const kinematics::Design timed = testing::cycloidalFourBar();
+  CHECK_FALSE(doc.validate(timed).has_value());
+  REQUIRE_FALSE(doc.edit(timed, "law").has_value());
+  CHECK(doc.design() == timed);
+  const kinematics::SweepResult& s = doc.sweep();
+  REQUIRE(s.size() > 2);
+  REQUIRE(s.time.size() == s.size());
+  CHECK(s.time.front() == 0.0);
+  CHECK(s.time.back() == testing::kRiseDuration);
+  CHECK(s.inputAngle.back() == Approx(2.0 * kinematics::kPi).margin(1e-12));
+  CHECK(doc.time() == 0.0);
+  CHECK(doc.plotAxis() == ui::PlotAxis::Time);
+}
+
+TEST_CASE("on a time base the pose is the law's at the instant shown: its angle, ω and α", "[ui][document][law]") {
+  MechanismDocument doc;
+  doc.reset(testing::cycloidalFourBar());
+  const double quarter = testing::kRiseDuration / 4.0;  // the cycloid's peak acceleration
+  doc.setTime(quarter);
+  CHECK(doc.time() == quarter);
+  const auto& crank = kinematics::fourbar::kCrank;
+  const double h = 2.0 * kinematics::kPi;
+  const double T = testing::kRiseDuration;
+  CHECK(doc.crankAngle() == Approx(h * (0.25 - 1.0 / (2.0 * kinematics::kPi))).margin(1e-12));
+  CHECK(doc.pose().linkOmega[crank.index] == Approx(h / T).margin(1e-12));  // (h/T)(1 − cos π/2)
+  CHECK(doc.pose().linkAlpha[crank.index] == Approx(2.0 * kinematics::kPi * h / (T * T)).margin(1e-9));
+  // Times outside the time base are clamped into it.
+  doc.setTime(7.0);
+  CHECK(doc.time() == T);
+  CHECK(doc.crankAngle() == Approx(h).margin(1e-12));
+}
+
+TEST_CASE("on a time base a crank angle is reached at the instant the law has it there", "[ui][document][law]") {
+  MechanismDocument doc;
+  doc.reset(testing::cycloidalFourBar());
+  doc.setCrankAngle(kinematics::kPi);  // half the rise: at half the time, by symmetry
+  CHECK(doc.time() == Approx(testing::kRiseDuration / 2.0).margin(1e-12));
+  CHECK(doc.crankAngle() == Approx(kinematics::kPi).margin(1e-12));
+}
+
+TEST_CASE("undoing an edit on a time base restores the instant shown", "[ui][document][law]") {
+  MechanismDocument doc;
+  doc.reset(testing::cycloidalFourBar());
+  doc.setTime(0.2);
+  kinematics::Design slower = doc.design();
+  slower.time->toTime = 0.1;  // the instant is clamped into the shorter time base
+  REQUIRE_FALSE(doc.edit(slower, "to time").has_value());
+  CHECK(doc.time() == 0.1);
+  doc.undoStack()->undo();
+  CHECK(doc.design() == testing::cycloidalFourBar());
+  CHECK(doc.time() == 0.2);
+}
+
+TEST_CASE("a document file with a motion law round-trips and opens as it was saved", "[ui][document][law]") {
+  QTemporaryDir dir;
+  const QString path = dir.filePath("cycloid.linkwright");
+  REQUIRE_FALSE(ui::saveDesignFile(path, testing::cycloidalFourBar()).has_value());
+  kinematics::Design read;
+  REQUIRE_FALSE(ui::loadDesignFile(path, read).has_value());
+  CHECK(read == testing::cycloidalFourBar());
+  MechanismDocument doc;
+  CHECK_FALSE(doc.validate(read).has_value());
 }

@@ -62,8 +62,7 @@ TEST_CASE("a length that cannot be assembled is refused, shown, and the editor s
 TEST_CASE("the branch box switches the assembly branch, undoably", "[ui][panels]") {
   ui::MechanismDocument doc;
   ui::CrankAnimator animator(&doc);
-  ui::Settings settings;
-  ui::MotionPanel motion(&doc, &animator, &settings);
+  ui::MotionPanel motion(&doc, &animator);
   motion.branchBox()->setCurrentIndex(1);
   CHECK(doc.fourBar()->branch == kinematics::Branch::Crossed);
   doc.undoStack()->undo();

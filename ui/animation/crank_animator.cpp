@@ -4,6 +4,7 @@
 
 #include "kinematics/model/units.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace linkwright::ui {
@@ -23,6 +24,9 @@ CrankAnimator::CrankAnimator(MechanismDocument* document, QObject* parent)
 void CrankAnimator::play() {
   if (isPlaying()) return;
   m_travelled = 0.0;
+  // A time base played to its end starts again from its beginning.
+  if (const auto& time = m_document->design().time; time && !m_loop && m_document->time() >= time->toTime)
+    m_document->setTime(time->fromTime);
   m_clock.start();
   m_timer.start();
   emit playingChanged(true);
@@ -36,17 +40,48 @@ void CrankAnimator::pause() {
 
 void CrankAnimator::togglePlay() { isPlaying() ? pause() : play(); }
 
-void CrankAnimator::stepForward() { moveBy(m_stepAngle); }
+void CrankAnimator::stepForward() {
+  if (m_document->onTimeBase()) m_document->setTime(m_document->time() + m_stepTime);
+  else moveBy(m_stepAngle);
+}
 
-void CrankAnimator::stepBackward() { moveBy(-m_stepAngle); }
+void CrankAnimator::stepBackward() {
+  if (m_document->onTimeBase()) m_document->setTime(m_document->time() - m_stepTime);
+  else moveBy(-m_stepAngle);
+}
 
 void CrankAnimator::advance(double dt) {
+  if (m_document->onTimeBase()) {
+    advanceInTime(dt);
+    return;
+  }
   // A crank at rest still animates, at 1 rad/s, so "play" always shows the motion.
   const double omega = m_document->design().omega;
   const double rate = omega != 0.0 ? omega : 1.0;
   moveBy(m_direction * rate * dt);
   m_travelled += std::abs(rate * dt);
   if (!m_loop && m_travelled >= 2.0 * k::kPi) pause();
+}
+
+void CrankAnimator::advanceInTime(double dt) {
+  const double from = m_document->design().time->fromTime;
+  const double to = m_document->design().time->toTime;
+  m_direction = 1;
+  double t = m_document->time() + dt;
+  // Reaching the end within round-off shows the end, not the start again.
+  constexpr double kRoundOff = 1e-9;
+  if (t > to && t <= to + kRoundOff * std::max(1.0, to - from)) t = to;
+  if (t > to) {
+    if (!m_loop) {
+      m_document->setTime(to);
+      pause();
+      return;
+    }
+    // Over the end: on from the start by what is left, as a clock does.
+    const double span = to - from;
+    t = span > 0.0 ? from + std::fmod(t - from, span) : from;
+  }
+  m_document->setTime(t);
 }
 
 void CrankAnimator::moveBy(double delta) {

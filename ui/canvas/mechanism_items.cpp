@@ -18,10 +18,12 @@
 
 #include "kinematics/model/path_shape.h"
 #include "kinematics/solve/guide_line.h"
+#include "kinematics/solve/law_inverse.h"
 
 #include <QGraphicsLineItem>
 #include <QGraphicsPolygonItem>
 #include <QGraphicsScene>
+#include <QPainterPath>
 #include <QPen>
 
 #include <algorithm>
@@ -232,17 +234,15 @@ void MechanismItems::setDesign(const k::Mechanism& m, const k::SweepResult& swee
       if (tipDistance > 0.0) include(pivot + (tip - pivot) * (barLength(s, tipDistance) / tipDistance));
     }
   }
-  // A driven point's whole path and a workspace's outer circle belong in the picture too.
-  for (const QGraphicsItem* item : m_drivenPaths) {
-    const QRectF r = item->boundingRect();
+  // A driven point's whole path and a workspace's outer circle belong in the picture too: their
+  // geometry, not their items' bounds, which count a cosmetic pen's pixels as scene units.
+  const auto includePath = [&](const QPainterPath& path) {
+    const QRectF r = path.boundingRect();
     include(r.topLeft());
     include(r.bottomRight());
-  }
-  for (const QGraphicsItem* item : m_workspaces) {
-    const QRectF r = item->boundingRect();
-    include(r.topLeft());
-    include(r.bottomRight());
-  }
+  };
+  for (const DrivenPathItem* item : m_drivenPaths) includePath(item->path());
+  for (const WorkspaceItem* item : m_workspaces) includePath(item->path());
   m_extraExtent = any ? QRectF(low, high) : QRectF();
 }
 
@@ -267,8 +267,11 @@ void MechanismItems::setDrivenDesign(const k::Mechanism& m, const k::SweepResult
       for (const auto& [from, to] :
            k::pathOutsideAnnulus(path, pose.position[shape.pivot.index], std::abs(r.firstLength - r.secondLength),
                                  r.firstLength + r.secondLength)) {
-        const auto t0 = time ? k::timeAtPosition(time->law, from, time->fromTime, time->toTime) : std::nullopt;
-        const auto t1 = time ? k::timeAtPosition(time->law, to, time->fromTime, time->toTime) : std::nullopt;
+        const auto when = [&](double s) {
+          const std::vector<double> t = time ? k::timesAtPosition(*time, s, 1) : std::vector<double>{};
+          return t.empty() ? std::nullopt : std::optional<double>(t.front());
+        };
+        const std::optional<double> t0 = when(from), t1 = when(to);
         const QString label =
             t0 && t1 ? QObject::tr("outside %1–%2 s").arg(numberText(*t0, 'g', 4), numberText(*t1, 'g', 4))
                      : QObject::tr("outside s %1–%2 %3").arg(numberText(from, 'g', 4), numberText(to, 'g', 4), unit);

@@ -9,9 +9,9 @@ EditDesignCommand::EditDesignCommand(MechanismDocument* document, DesignState be
     : QUndoCommand(text), m_document(document), m_before(std::move(before)), m_after(std::move(after)),
       m_mergeKey(mergeKey) {}
 
-void EditDesignCommand::undo() { m_document->applyDesign(m_before.design, m_before.crankAngle); }
+void EditDesignCommand::undo() { m_document->applyDesign(m_before); }
 
-void EditDesignCommand::redo() { m_document->applyDesign(m_after.design, m_after.crankAngle); }
+void EditDesignCommand::redo() { m_document->applyDesign(m_after); }
 
 bool EditDesignCommand::mergeWith(const QUndoCommand* other) {
   const auto* next = dynamic_cast<const EditDesignCommand*>(other);

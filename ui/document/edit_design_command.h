@@ -27,10 +27,12 @@ struct MergeKey {
   bool operator==(const MergeKey&) const = default;
 };
 
-/// A design (four-bar or any linkage) and the crank angle (rad) it is shown at.
+/// A design (four-bar or any linkage) and the crank angle (rad) it is shown at; on a time
+/// base, the instant (s), which sets the angle.
 struct DesignState {
   kinematics::Design design;
   double crankAngle = 0.0;
+  double time = 0.0;
 };
 
 class EditDesignCommand : public QUndoCommand {

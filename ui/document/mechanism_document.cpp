@@ -1,7 +1,10 @@
 #include "ui/document/mechanism_document.h"
 
+#include "kinematics/solve/law_inverse.h"
 #include "ui/document/edit_design_command.h"
 
+#include "kinematics/model/driver.h"
+#include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
 
 #include <algorithm>
@@ -25,11 +28,6 @@ MechanismDocument::MechanismDocument(QObject* parent)
 
 std::optional<QString> MechanismDocument::validate(const k::Design& design) const {
   if (auto e = k::checkDesign(design)) return QString::fromStdString(e->message);
-  // Refused rather than shown on the angle grid, which would quietly drop the law.
-  if (design.time)
-    return tr(
-        "its crank follows a motion law in time, which the designer cannot show yet; "
-        "linkwright-cli analyze analyses it");
   if (const auto fourBar = k::asFourBar(design.mechanism)) {
     const k::InputRange range = k::fourBarInputRange(fourBar->lengths);
     if (range.ranges.empty() && !range.fullRotation)
@@ -67,24 +65,53 @@ std::optional<QString> MechanismDocument::edit(const k::Design& design, const QS
                                                std::optional<double> crankAngleAfter) {
   if (auto why = validate(design)) return why;
   const double angleAfter = crankAngleAfter.value_or(m_crankAngle);
-  if (design == m_design && angleAfter == m_crankAngle) return std::nullopt;
-  m_undo.push(new EditDesignCommand(this, {m_design, m_crankAngle}, {design, angleAfter}, description, mergeKey));
+  // On a time base the instant is the motion state: a move of the crank (a drag of its tip)
+  // goes to when the law has it there.
+  double timeAfter = m_time;
+  if (design.time && crankAngleAfter)
+    timeAfter = k::timeNearestPosition(*design.time, *crankAngleAfter, m_time, 2.0 * k::kPi);
+  if (design == m_design && angleAfter == m_crankAngle && timeAfter == m_time) return std::nullopt;
+  m_undo.push(new EditDesignCommand(this, {m_design, m_crankAngle, m_time}, {design, angleAfter, timeAfter},
+                                    description, mergeKey));
   return std::nullopt;
 }
 
-void MechanismDocument::applyDesign(const k::Design& design, double crankAngle) {
-  m_design = design;
-  m_crankAngle = crankAngle;
+void MechanismDocument::applyDesign(const DesignState& state) {
+  m_design = state.design;
+  m_crankAngle = state.crankAngle;
+  m_time = state.time;
   rebuild();
   emit changed(Changes(Change::Design) | Change::Motion);
 }
 
 void MechanismDocument::setCrankAngle(double angle) {
+  if (m_design.time) {
+    setTime(k::timeNearestPosition(*m_design.time, angle, m_time, 2.0 * k::kPi));
+    return;
+  }
   const double clamped = m_analysis.inputRange.clamp(angle);
   if (clamped == m_crankAngle) return;
   m_crankAngle = clamped;
   solvePoseNow();
   emit changed(Change::Motion);
+}
+
+void MechanismDocument::setTime(double t) {
+  if (!m_design.time || !std::isfinite(t)) return;
+  const double clamped = std::clamp(t, m_design.time->fromTime, m_design.time->toTime);
+  if (clamped == m_time) return;
+  m_time = clamped;
+  clampMotion();
+  solvePoseNow();
+  emit changed(Change::Motion);
+}
+
+void MechanismDocument::setPlotAxis(PlotAxis axis) {
+  if (axis == m_plotAxis) return;
+  const PlotAxis shown = plotAxis();
+  m_plotAxis = axis;
+  // Without a time base the plots show the input either way: nothing to redraw.
+  if (plotAxis() != shown) emit changed(Change::PlotAxis);
 }
 
 void MechanismDocument::setRequest(const k::SolveRequest& request) {
@@ -127,9 +154,18 @@ void MechanismDocument::measureQualityNow() {
 
 void MechanismDocument::measureQuality() {
   m_estimateTimer.stop();
-  m_estimate = estimatePeakError(m_design.mechanism, m_displaySpec.omega,
-                                 samplesPerRevolution(m_displaySpec.samples, m_design.toDeg - m_design.fromDeg),
-                                 m_request.newton);
+  if (m_design.time) {
+    // The estimate reads peaks off a crank turning at one speed; a law's samples are evenly
+    // spaced in time, not in angle, so that measurement would not be this sampling's.
+    m_estimate = QualityEstimate{};
+    m_estimate.unavailable = tr("not measured on a time base");
+  } else if (k::inputKind(m_design.mechanism) != k::InputKind::Angle) {
+    m_estimate = QualityEstimate{};  // its cycle is a crank's turn
+    m_estimate.unavailable = tr("not measured for a linear input");
+  } else {
+    m_estimate = estimatePeakError(m_design.mechanism, m_displaySpec.omega,
+                                   samplesPerRevolution(m_displaySpec.samples, displaySpanDeg()), m_request.newton);
+  }
   emit changed(Change::Estimate);
 }
 
@@ -140,6 +176,7 @@ void MechanismDocument::reset(const k::Design& design, const QString& filePath) 
   m_design = design;
   m_filePath = filePath;
   m_crankAngle = 0.0;
+  m_time = design.time ? design.time->fromTime : 0.0;
   rebuild();
   m_undo.setClean();
   emit changed(Changes(Change::Design) | Change::File);
@@ -173,14 +210,33 @@ void MechanismDocument::rebuild() {
     else grid = sweepGrid(m_design.mechanism, k::designSweepSpec(m_design));
   }
   m_analysis = k::analyseDesign(m_design.mechanism, grid);
-  m_crankAngle = m_analysis.inputRange.clamp(m_crankAngle);
+  clampMotion();
   solvePoseNow();
   scheduleEstimate();
 }
 
+void MechanismDocument::clampMotion() {
+  if (!m_design.time) {
+    m_time = 0.0;
+    m_crankAngle = m_analysis.inputRange.clamp(m_crankAngle);
+    return;
+  }
+  // The law decides where the crank is, assembled or not: a sample it cannot reach shows
+  // as a gap in the plots, as on an angle grid.
+  m_time = std::clamp(m_time, m_design.time->fromTime, m_design.time->toTime);
+  m_crankAngle = k::motionAt(m_design.time->law, m_time).position;
+}
+
+double MechanismDocument::displaySpanDeg() const {
+  // The floor of samples per revolution is a crank's; a linear input has no turns (0: none).
+  if (k::inputKind(m_design.mechanism) != k::InputKind::Angle) return 0.0;
+  if (m_design.time) return k::radToDeg(k::lawTravel(*m_design.time));
+  return m_design.toDeg - m_design.fromDeg;
+}
+
 k::SweepSpec MechanismDocument::wantedDisplaySpec() const {
   k::SweepSpec spec = k::designSweepSpec(m_design);
-  spec.samples = displaySampleCount(m_quality, m_displayWidth, m_design.toDeg - m_design.fromDeg);
+  spec.samples = displaySampleCount(m_quality, m_displayWidth, displaySpanDeg());
   return spec;
 }
 
@@ -207,9 +263,12 @@ void MechanismDocument::resweep() {
 }
 
 void MechanismDocument::solvePoseNow() {
-  const k::SweepSpec spec = k::designSweepSpec(m_design);
-  const k::PoseReport report =
-      k::solvePoseInto(m_design.mechanism, {m_crankAngle, spec.omega, spec.alpha}, {true, true}, m_pose);
+  k::DriverState driver{m_crankAngle, m_design.omega, m_design.alpha};
+  if (m_design.time) {
+    const k::MotionState s = k::motionAt(m_design.time->law, m_time);
+    driver = {s.position, s.velocity, s.acceleration};
+  }
+  const k::PoseReport report = k::solvePoseInto(m_design.mechanism, driver, {true, true}, m_pose);
   m_poseStatus = report.status;
 }
 

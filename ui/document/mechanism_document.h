@@ -1,11 +1,13 @@
 #pragma once
-// The open document: owns the design (what is saved: any linkage), the undo stack, the motion state (the crank angle the canvas shows) and the
-// solved results the views read. Every view re-reads it when it emits changed(); views never
-// solve anything themselves (STYLE.md, layering rule 2).
+// The open document: owns the design (what is saved: any linkage), the undo stack, the motion
+// state (the crank angle the canvas shows; on a time base, the instant, which sets the angle)
+// and the solved results the views read, and the view settings the plots share (their x axis).
+// Every view re-reads it when it emits changed(); views never solve anything themselves
+// (STYLE.md, layering rule 2).
 //
 // Two grids: the analysis (crank range, gaps) uses the design's saved grid, as CSV export
-// does; the displayed sweep spans the same crank angles with as many samples as the plots
-// have pixels times the sampling quality, and computes only the quantities they show.
+// does; the displayed sweep spans the same crank angles (or times) with as many samples as the
+// plots have pixels times the sampling quality, and computes only the quantities they show.
 
 #include "ui/document/edit_design_command.h"
 #include "ui/document/quality_estimate.h"
@@ -35,9 +37,14 @@ enum class Change {
   Request = 0x4,    ///< which quantities or how many samples are computed (the sweep was redone)
   File = 0x8,       ///< file name or modified flag
   Estimate = 0x10,  ///< the quality estimate was measured anew (qualityEstimate())
+  PlotAxis = 0x20,  ///< what the plots' x axis shows (plotAxis())
 };
 Q_DECLARE_FLAGS(Changes, Change)
 Q_DECLARE_OPERATORS_FOR_FLAGS(Changes)
+
+/// What the plots' x axis shows: the time (s), which needs a time base, or the input (the
+/// crank angle).
+enum class PlotAxis { Time, Input };
 
 class MechanismDocument : public QObject {
   Q_OBJECT
@@ -65,7 +72,8 @@ public:
   /// How many sweeps the document has run (display, grid and validation ones): tests read it
   /// to show that an edit does each piece of work once.
   long sweepsRun() const { return m_sweepsRun; }
-  /// The pose at crankAngle(), with velocities and accelerations.
+  /// The pose at crankAngle() (on a time base, at time(), with the law's ω and α), with
+  /// velocities and accelerations.
   const kinematics::Pose& pose() const { return m_pose; }
   /// Status of pose(): Ok, or Singular at a toggle position.
   kinematics::PoseStatus poseStatus() const { return m_poseStatus; }
@@ -81,13 +89,29 @@ public:
                               std::optional<MergeKey> mergeKey = std::nullopt,
                               std::optional<double> crankAngleAfter = std::nullopt);
 
-  /// Replaces the design and crank angle without touching the undo stack (the undo command
-  /// calls it). Emits one changed(Design | Motion).
-  void applyDesign(const kinematics::Design& design, double crankAngle);
+  /// Replaces the design and the crank angle, or on a time base the instant, without touching
+  /// the undo stack (the undo command calls it). Emits one changed(Design | Motion).
+  void applyDesign(const DesignState& state);
 
-  /// Crank angle in rad. Clamped into the assemblable range.
+  /// Crank angle in rad. Clamped into the assemblable range; on a time base, the law's angle
+  /// at time() (unwrapped: a law may turn the crank many times).
   double crankAngle() const { return m_crankAngle; }
+  /// Moves the crank. On a time base it moves to the instant nearest time() at which the law
+  /// has the crank at `angle` (any turn), or where it comes nearest if it never does.
   void setCrankAngle(double angle);
+
+  /// Whether the design's crank follows a motion law in time (Design::time).
+  bool onTimeBase() const { return m_design.time.has_value(); }
+  /// The instant shown, s, within the time base's [fromTime, toTime]; 0 without a time base.
+  double time() const { return m_time; }
+  /// Moves to instant `t` (s), clamped into the time base; ignored without one.
+  void setTime(double t);
+
+  /// The plots' x axis: the one chosen, except that without a time base it is the input.
+  PlotAxis plotAxis() const { return onTimeBase() ? m_plotAxis : PlotAxis::Input; }
+  /// The choice itself (Time by default: a design with a time base is plotted in time).
+  PlotAxis chosenPlotAxis() const { return m_plotAxis; }
+  void setPlotAxis(PlotAxis axis);
 
   /// Which quantities the sweep computes (plots ask only for what they show). Its Newton
   /// settings follow quality(); setRequest ignores the ones it is given.
@@ -138,8 +162,12 @@ signals:
 private:
   void rebuild();       // mechanism, sweep, analysis, pose from m_design
   void resweep();       // sweep only (request or sampling changed)
-  void solvePoseNow();  // pose at m_crankAngle
+  void solvePoseNow();  // pose at m_crankAngle, or at m_time on a time base
+  void clampMotion();   // m_time into the time base and the crank angle with it, or the angle into the range
   kinematics::SweepSpec wantedDisplaySpec() const;
+  // Degrees of crank angle the displayed sweep spans: the grid's, or the law's travel; 0 for
+  // a linear input.
+  double displaySpanDeg() const;
   void scheduleEstimate();
   void measureQuality();  // the timer's: it is no longer active when it fires
   // The design's own grid, positions only: what validation and the analysis read.
@@ -173,6 +201,8 @@ private:
   kinematics::SolveRequest m_request{true, true};
   bool m_forcesNeeded = false;
   double m_crankAngle = 0.0;
+  double m_time = 0.0;
+  PlotAxis m_plotAxis = PlotAxis::Time;
   QUndoStack m_undo;
   QString m_filePath;
 };

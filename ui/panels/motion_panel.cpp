@@ -3,11 +3,10 @@
 #include "ui/number_text.h"
 
 #include "ui/animation/crank_animator.h"
-#include "ui/document/edit_design_command.h"
 #include "ui/document/mechanism_document.h"
-#include "ui/settings.h"
 
 #include "kinematics/design/fourbar_dimensions.h"
+#include "kinematics/model/driver.h"
 #include "kinematics/model/units.h"
 
 #include <QCheckBox>
@@ -29,38 +28,20 @@ namespace linkwright::ui {
 
 namespace k = kinematics;
 
-MotionPanel::MotionPanel(MechanismDocument* document, CrankAnimator* animator, Settings* settings, QWidget* parent)
-    : QWidget(parent), m_document(document), m_animator(animator), m_settings(settings),
-      m_speed(new QDoubleSpinBox(this)), m_speedUnit(new QComboBox(this)), m_alpha(new QDoubleSpinBox(this)),
-      m_branch(new QComboBox(this)), m_play(new QPushButton(this)), m_back(new QPushButton(this)),
-      m_forward(new QPushButton(this)), m_step(new QDoubleSpinBox(this)), m_loop(new QCheckBox(tr("Loop"), this)),
-      m_angle(new QSlider(Qt::Horizontal, this)), m_angleText(new QLabel(this)) {
+MotionPanel::MotionPanel(MechanismDocument* document, CrankAnimator* animator, QWidget* parent)
+    : QWidget(parent), m_document(document), m_animator(animator), m_branch(new QComboBox(this)),
+      m_play(new QPushButton(this)), m_back(new QPushButton(this)), m_forward(new QPushButton(this)),
+      m_step(new QDoubleSpinBox(this)), m_loop(new QCheckBox(tr("Loop"), this)),
+      m_position(new QSlider(Qt::Horizontal, this)), m_positionText(new QLabel(this)) {
   auto* layout = new QVBoxLayout(this);
-  auto* drive = new QGroupBox(tr("Drive"), this);
-  auto* form = new QFormLayout(drive);
-  m_driveForm = form;
-  auto* speedRow = new QHBoxLayout;
-  m_speed->setRange(-1e5, 1e5);
-  m_speed->setDecimals(4);
-  m_speed->setKeyboardTracking(false);
-  m_speedUnit->addItems({tr("rpm"), tr("rad/s")});
-  m_speedUnit->setCurrentIndex(settings->speedInRpm() ? 0 : 1);
-  speedRow->addWidget(m_speed, 1);
-  speedRow->addWidget(m_speedUnit);
-  form->addRow(tr("Crank speed ω₂"), speedRow);
-  m_alpha->setRange(-1e6, 1e6);
-  m_alpha->setDecimals(4);
-  m_alpha->setSuffix(tr(" rad/s²"));
-  m_alpha->setKeyboardTracking(false);
-  form->addRow(tr("Crank accel. α₂"), m_alpha);
+  auto* motion = new QGroupBox(tr("Motion"), this);
+  auto* motionLayout = new QVBoxLayout(motion);
+  m_form = new QFormLayout;
   m_branch->addItem(tr("Open"));
   m_branch->addItem(tr("Crossed"));
   m_branch->setToolTip(tr("Assembly branch: open has sin(θ4 − θ3) > 0, crossed is its mirror image"));
-  form->addRow(tr("Branch"), m_branch);
-  layout->addWidget(drive);
-
-  auto* motion = new QGroupBox(tr("Motion"), this);
-  auto* motionLayout = new QVBoxLayout(motion);
+  m_form->addRow(tr("Branch"), m_branch);
+  motionLayout->addLayout(m_form);
   auto* buttons = new QHBoxLayout;
   m_back->setIcon(style()->standardIcon(QStyle::SP_MediaSeekBackward));
   m_back->setToolTip(tr("Step back"));
@@ -69,36 +50,29 @@ MotionPanel::MotionPanel(MechanismDocument* document, CrankAnimator* animator, S
   m_play->setIcon(style()->standardIcon(QStyle::SP_MediaPlay));
   m_play->setToolTip(tr("Play / pause (Space)"));
   m_step->setRange(0.01, 180.0);
-  m_step->setValue(30.0);
+  m_step->setValue(k::radToDeg(animator->stepAngle()));
   m_step->setSuffix(tr("°"));
   m_step->setToolTip(tr("Step angle"));
-  m_loop->setChecked(true);
+  m_loop->setChecked(animator->isLooping());
   buttons->addWidget(m_back);
   buttons->addWidget(m_play);
   buttons->addWidget(m_forward);
   buttons->addWidget(m_step);
   buttons->addWidget(m_loop);
   motionLayout->addLayout(buttons);
-  m_angle->setRange(-1800, 1800);  // tenths of a degree
-  motionLayout->addWidget(m_angle);
-  motionLayout->addWidget(m_angleText);
+  m_position->setRange(-1800, 1800);  // tenths of a degree
+  motionLayout->addWidget(m_position);
+  m_positionText->setWordWrap(true);
+  motionLayout->addWidget(m_positionText);
   layout->addWidget(motion);
 
-  connect(m_speed, &QDoubleSpinBox::valueChanged, this, [this] { editSpeed(); });
-  connect(m_speedUnit, &QComboBox::currentIndexChanged, this, [this](int index) {
-    m_settings->setSpeedInRpm(index == 0);
-    refreshDesign();
-  });
-  connect(m_alpha, &QDoubleSpinBox::valueChanged, this, [this] { editAlpha(); });
   connect(m_branch, &QComboBox::currentIndexChanged, this, [this] { editBranch(); });
   connect(m_play, &QPushButton::clicked, animator, &CrankAnimator::togglePlay);
   connect(m_back, &QPushButton::clicked, animator, &CrankAnimator::stepBackward);
   connect(m_forward, &QPushButton::clicked, animator, &CrankAnimator::stepForward);
-  connect(m_step, &QDoubleSpinBox::valueChanged, this,
-          [this](double deg) { m_animator->setStepAngle(k::degToRad(deg)); });
+  connect(m_step, &QDoubleSpinBox::valueChanged, this, &MotionPanel::onStep);
   connect(m_loop, &QCheckBox::toggled, animator, &CrankAnimator::setLooping);
-  connect(m_angle, &QSlider::valueChanged, this,
-          [this](int tenths) { m_document->setCrankAngle(k::degToRad(tenths / 10.0)); });
+  connect(m_position, &QSlider::valueChanged, this, &MotionPanel::onSlider);
   connect(animator, &CrankAnimator::playingChanged, this, [this](bool playing) {
     m_play->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
   });
@@ -110,50 +84,80 @@ MotionPanel::MotionPanel(MechanismDocument* document, CrankAnimator* animator, S
   refreshMotion();
 }
 
+QString MotionPanel::positionText() const { return m_positionText->text(); }
+
 void MotionPanel::refreshDesign() {
-  const k::Design& d = m_document->design();
-  const bool rpm = m_speedUnit->currentIndex() == 0;
-  {
-    const QSignalBlocker block(m_speed);
-    m_speed->setSuffix(rpm ? tr(" rpm") : tr(" rad/s"));
-    m_speed->setValue(rpm ? k::radPerSecToRpm(d.omega) : d.omega);
-  }
-  {
-    const QSignalBlocker block(m_alpha);
-    m_alpha->setValue(d.alpha);
+  const bool inTime = m_document->onTimeBase();
+  // A new time span starts with a tenth of it as the step.
+  const auto& time = m_document->design().time;
+  const double span = time ? time->toTime - time->fromTime : 0.0;
+  if (inTime && span > 0.0 && span != m_span) m_animator->setStepTime(span / 10.0);
+  const bool stepChanged = span != m_span;
+  m_span = span;
+  if (inTime != m_inTime || (inTime && stepChanged)) {
+    m_inTime = inTime;
+    const QSignalBlocker blockStep(m_step);
+    const QSignalBlocker blockSlider(m_position);
+    if (inTime) {
+      m_step->setRange(0.001, 1e6);
+      m_step->setDecimals(3);
+      m_step->setSuffix(tr(" s"));
+      m_step->setValue(m_animator->stepTime());
+      m_step->setToolTip(tr("Step time"));
+      m_position->setRange(0, kTimeSliderSteps);
+    } else {
+      m_step->setRange(0.01, 180.0);
+      m_step->setDecimals(2);
+      m_step->setSuffix(tr("°"));
+      m_step->setValue(k::radToDeg(m_animator->stepAngle()));
+      m_step->setToolTip(tr("Step angle"));
+      m_position->setRange(-1800, 1800);
+    }
   }
   // Other linkages choose a branch per joint, in the dimensions panel.
   const auto& fourBar = m_document->fourBar();
-  m_driveForm->setRowVisible(m_branch, fourBar.has_value());
+  m_form->setRowVisible(m_branch, fourBar.has_value());
   if (!fourBar) return;
   const QSignalBlocker block(m_branch);
   m_branch->setCurrentIndex(fourBar->branch == k::Branch::Open ? 0 : 1);
 }
 
 void MotionPanel::refreshMotion() {
-  const double deg = k::radToDeg(std::remainder(m_document->crankAngle(), 2.0 * k::kPi));
-  {
-    const QSignalBlocker block(m_angle);
-    m_angle->setValue(static_cast<int>(std::lround(deg * 10.0)));
+  const QSignalBlocker block(m_position);
+  if (m_inTime) {
+    const k::TimeBase& time = *m_document->design().time;
+    const double span = time.toTime - time.fromTime;
+    const double u = span > 0.0 ? (m_document->time() - time.fromTime) / span : 0.0;
+    m_position->setValue(static_cast<int>(std::lround(u * kTimeSliderSteps)));
+    const QString t = numberText(m_document->time(), 'f', 3);
+    const k::Mechanism& m = m_document->mechanism();
+    if (k::inputKind(m) == k::InputKind::Angle)
+      m_positionText->setText(
+          tr("t = %1 s · crank angle θ₂ = %2°").arg(t, numberText(k::radToDeg(m_document->crankAngle()), 'f', 1)));
+    else
+      m_positionText->setText(tr("t = %1 s · %2 = %3 %4")
+                                  .arg(t, QString::fromStdString(k::inputName(m)),
+                                       numberText(m_document->crankAngle(), 'g', 5),
+                                       QString::fromStdString(m.lengthUnit)));
+    return;
   }
-  m_angleText->setText(tr("Crank angle θ₂ = %1°").arg(numberText(deg, 'f', 1)));
+  const double deg = k::radToDeg(std::remainder(m_document->crankAngle(), 2.0 * k::kPi));
+  m_position->setValue(static_cast<int>(std::lround(deg * 10.0)));
+  m_positionText->setText(tr("Crank angle θ₂ = %1°").arg(numberText(deg, 'f', 1)));
 }
 
-void MotionPanel::editSpeed() {
-  const bool rpm = m_speedUnit->currentIndex() == 0;
-  const double omega = rpm ? k::rpmToRadPerSec(m_speed->value()) : m_speed->value();
-  k::Design d = m_document->design();
-  d.omega = omega;
-  if (m_document->edit(d, tr("Change crank speed"), MergeKey{ContinuousEdit::Speed, 0, m_editSerial++}))
-    refreshDesign();
+void MotionPanel::onSlider(int value) {
+  if (!m_inTime) {
+    m_document->setCrankAngle(k::degToRad(value / 10.0));
+    return;
+  }
+  const k::TimeBase& time = *m_document->design().time;
+  m_document->setTime(time.fromTime + (time.toTime - time.fromTime) * value / kTimeSliderSteps);
 }
 
-void MotionPanel::editAlpha() {
-  const double alpha = m_alpha->value();
-  k::Design d = m_document->design();
-  d.alpha = alpha;
-  if (m_document->edit(d, tr("Change crank acceleration"), MergeKey{ContinuousEdit::Acceleration, 0, m_editSerial++}))
-    refreshDesign();
+void MotionPanel::onStep(double value) {
+  if (m_inTime) m_animator->setStepTime(value);
+  else m_animator->setStepAngle(k::degToRad(value));
 }
 
 void MotionPanel::editBranch() {

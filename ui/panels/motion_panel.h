@@ -1,6 +1,7 @@
 #pragma once
-// Drive and motion controls: crank speed (rpm or rad/s) and acceleration, a four-bar's assembly branch,
-// play / pause, step forward and back by a chosen angle, loop, and the crank angle itself.
+// Motion controls: a four-bar's assembly branch, play / pause, step forward and back by a
+// chosen angle (on a time base, a chosen time), loop, and the crank angle itself (on a time
+// base, the instant). How the crank is driven (ω, α or a motion law) is the drive panel's.
 
 #include <QWidget>
 
@@ -16,40 +17,43 @@ namespace linkwright::ui {
 
 class CrankAnimator;
 class MechanismDocument;
-class Settings;
 
 class MotionPanel : public QWidget {
   Q_OBJECT
 public:
-  MotionPanel(MechanismDocument* document, CrankAnimator* animator, Settings* settings, QWidget* parent = nullptr);
+  MotionPanel(MechanismDocument* document, CrankAnimator* animator, QWidget* parent = nullptr);
 
   QPushButton* playButton() const { return m_play; }
   QComboBox* branchBox() const { return m_branch; }
-  QDoubleSpinBox* speedBox() const { return m_speed; }
+  /// The crank angle (tenths of a degree), or on a time base the instant (thousandths of the span).
+  QSlider* positionSlider() const { return m_position; }
+  QDoubleSpinBox* stepBox() const { return m_step; }
+  /// "Crank angle θ₂ = 30.0°", or on a time base "t = 0.250 s · crank angle θ₂ = 45.0°".
+  QString positionText() const;
+
+  /// Slider steps across a time base.
+  static constexpr int kTimeSliderSteps = 1000;
 
 private:
   void refreshDesign();
   void refreshMotion();
-  void editSpeed();
-  void editAlpha();
   void editBranch();
+  void onSlider(int value);
+  void onStep(double value);
 
   MechanismDocument* m_document;
   CrankAnimator* m_animator;
-  Settings* m_settings;
-  QDoubleSpinBox* m_speed;
-  QComboBox* m_speedUnit;
-  QFormLayout* m_driveForm = nullptr;
-  QDoubleSpinBox* m_alpha;
+  QFormLayout* m_form = nullptr;
   QComboBox* m_branch;
   QPushButton* m_play;
   QPushButton* m_back;
   QPushButton* m_forward;
   QDoubleSpinBox* m_step;
   QCheckBox* m_loop;
-  QSlider* m_angle;
-  QLabel* m_angleText;
-  int m_editSerial = 0;
+  QSlider* m_position;
+  QLabel* m_positionText;
+  bool m_inTime = false;  // what the slider and the step box are showing
+  double m_span = 0.0;    // the time base's span the step was chosen for, s
 };
 
 }  // namespace linkwright::ui

@@ -37,8 +37,7 @@ void ForceChartView::setCurves(const std::vector<Curve>& curves) {
   m_cursor->raise();
 }
 
-void ForceChartView::setData(const std::vector<SeriesRuns>& runs, const QString& valueTitle, AngleUnit unit,
-                             double fromDeg, double toDeg) {
+void ForceChartView::setData(const std::vector<SeriesRuns>& runs, const QString& valueTitle, const PlotXAxis& x) {
   m_values.clear();
   static const SeriesRuns kNone;
   for (std::size_t i = 0; i < m_lines.size(); ++i) {
@@ -60,10 +59,9 @@ void ForceChartView::setData(const std::vector<SeriesRuns>& runs, const QString&
   }
   applyAxisRange(m_yAxis, y);
   m_yAxis->setTitleText(valueTitle);
-  const AxisRange x = crankAxisRange(fromDeg, toDeg, unit);
-  applyAxisRange(m_xAxis, x);
-  m_xAxis->setTickInterval(x.step);
-  m_xAxis->setTitleText(crankAxisTitle(unit));
+  applyAxisRange(m_xAxis, x.range);
+  m_xAxis->setTickInterval(x.range.step);
+  m_xAxis->setTitleText(x.title);
   m_cursor->setYSpan(y.min, y.max);
 }
 

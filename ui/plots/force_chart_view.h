@@ -1,11 +1,12 @@
 #pragma once
-// A chart of force quantities against crank angle (the driving torque, the joint reaction
-// magnitudes): a line per curve, split into segments where the forces were not solved,
-// explicit value axes with rounded ranges, and a crank-angle cursor (VerticalMarker) that
-// moves without touching the data. Series are updated with replace(); no animations.
+// A chart of force quantities against time or crank angle (the driving torque, the joint
+// reaction magnitudes): a line per curve, split into segments where the forces were not
+// solved, explicit value axes with rounded ranges, and a cursor (VerticalMarker) that moves
+// without touching the data. Series are updated with replace(); no animations.
 
 #include "ui/plots/angle_unit.h"
 #include "ui/plots/axis_range.h"
+#include "ui/plots/plot_x_axis.h"
 #include "ui/plots/segmented_line.h"
 #include "ui/plots/series_data.h"
 #include "ui/plots/vertical_marker.h"
@@ -36,10 +37,9 @@ public:
   /// Makes one line per curve (keeps the series if the curves are unchanged). The legend is
   /// shown only for more than one curve.
   void setCurves(const std::vector<Curve>& curves);
-  /// Replaces the lines with `runs` (one per curve, in order; x in `unit`, y in the value
-  /// unit) and resets the axes: x over the grid [fromDeg, toDeg], y around the values.
-  void setData(const std::vector<SeriesRuns>& runs, const QString& valueTitle, AngleUnit unit, double fromDeg,
-               double toDeg);
+  /// Replaces the lines with `runs` (one per curve, in order; x on `x`'s axis, y in the value
+  /// unit) and resets the axes: x to `x`'s range and title, y around the values.
+  void setData(const std::vector<SeriesRuns>& runs, const QString& valueTitle, const PlotXAxis& x);
   /// Moves the cursor to `x` (plot units), or hides it. Touches no data series.
   void setCursorX(std::optional<double> x);
   std::optional<double> cursorX() const { return m_cursor->x(); }

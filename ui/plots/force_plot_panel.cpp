@@ -6,6 +6,7 @@
 #include "ui/plots/axis_range.h"
 #include "ui/plots/force_chart_view.h"
 #include "ui/plots/plot_area_alignment.h"
+#include "ui/plots/plot_x_axis.h"
 #include "ui/plots/polar_load_view.h"
 
 #include <QChart>
@@ -74,6 +75,9 @@ ForcePlotPanel::ForcePlotPanel(MechanismDocument* document, ForceResults* forces
     if (cycle) refreshAll();
     else refreshCursor();
   });
+  connect(document, &MechanismDocument::changed, this, [this](Changes what) {
+    if (what & Change::PlotAxis) refreshAll();
+  });
   refreshAll();
 }
 
@@ -95,12 +99,11 @@ void ForcePlotPanel::refreshAll() {
   m_charts->setVisible(cycle != nullptr && sweep != nullptr);
   if (cycle == nullptr || sweep == nullptr) return;
 
-  const k::Design& design = m_document->design();
-  const double fromDeg = design.fromDeg;
-  const double toDeg = design.toDeg;
+  const PlotXAxis x = plotXAxis(m_document->design(), *sweep, m_document->plotAxis(), m_unit);
+  m_x = x;
   m_runs.resize(1);
-  buildTorqueRuns(*sweep, *cycle, m_unit, m_runs[0]);
-  m_torque->setData(m_runs, tr("torque [N·m]"), m_unit, fromDeg, toDeg);
+  buildTorqueRuns(*sweep, *cycle, m_unit, m_runs[0], x.source);
+  m_torque->setData(m_runs, tr("torque [N·m]"), x);
 
   const std::vector<ForceJoint> joints = forceJoints(cycle->bodies);
   std::vector<ForceChartView::Curve> curves;
@@ -108,8 +111,9 @@ void ForcePlotPanel::refreshAll() {
     curves.push_back({QStringLiteral("joint_") + j.name, j.prismatic ? tr("%1 |N|").arg(j.name) : j.name, j.color});
   m_joints->setCurves(curves);
   m_runs.resize(joints.size());
-  for (std::size_t i = 0; i < joints.size(); ++i) buildJointForceRuns(*sweep, *cycle, joints[i], m_unit, m_runs[i]);
-  m_joints->setData(m_runs, tr("|F| [N]"), m_unit, fromDeg, toDeg);
+  for (std::size_t i = 0; i < joints.size(); ++i)
+    buildJointForceRuns(*sweep, *cycle, joints[i], m_unit, m_runs[i], x.source);
+  m_joints->setData(m_runs, tr("|F| [N]"), x);
 
   if (joints != m_jointList) {
     const QString kept = m_selector->currentText();
@@ -129,12 +133,7 @@ void ForcePlotPanel::alignCharts() {
   if (m_charts->isVisible()) alignPlotAreas({m_torque->chart(), m_joints->chart()});
 }
 
-std::optional<double> ForcePlotPanel::cursorX() const {
-  const k::Design& design = m_document->design();
-  const std::optional<double> deg = wrapIntoRange(k::radToDeg(m_document->crankAngle()), design.fromDeg, design.toDeg);
-  if (!deg) return std::nullopt;
-  return toAngleUnit(k::degToRad(*deg), m_unit);
-}
+std::optional<double> ForcePlotPanel::cursorX() const { return ui::cursorX(*m_document, m_x, m_unit); }
 
 void ForcePlotPanel::refreshCursor() {
   const std::optional<double> x = m_forces->cycleForces() != nullptr ? cursorX() : std::nullopt;

@@ -1,12 +1,13 @@
 #pragma once
-// The force plots: the driving torque and the joint reaction magnitudes against crank angle,
-// and the polar load diagram of the pin joint the combo box picks. Everything comes from a
-// ForceResults (the core's inverse dynamics on the document's cycle); a crank move moves the
-// cursors and the polar dot only. When there are no forces (no masses or loads, an unknown
+// The force plots: the driving torque and the joint reaction magnitudes against time or crank
+// angle (the document's plotAxis()), and the polar load diagram of the pin joint the combo box
+// picks. Everything comes from a ForceResults (the core's inverse dynamics on the document's
+// cycle); a crank move moves the cursors and the polar dot only. When there are no forces (no masses or loads, an unknown
 // length unit) the charts hide and a line says why.
 
 #include "ui/plots/angle_unit.h"
 #include "ui/plots/force_series.h"
+#include "ui/plots/plot_x_axis.h"
 
 #include <QWidget>
 
@@ -29,7 +30,7 @@ public:
   /// `forces`: whoever shows the panel does.
   ForcePlotPanel(MechanismDocument* document, ForceResults* forces, QWidget* parent = nullptr);
 
-  /// Unit of the crank-angle axes. Degrees by default.
+  /// Unit of the crank-angle axis (when the plots show the input). Degrees by default.
   void setAngleUnit(AngleUnit unit);
 
   ForceChartView* torqueChart() const { return m_torque; }
@@ -59,6 +60,7 @@ private:
   QWidget* m_charts;
   std::vector<ForceJoint> m_jointList;
   std::vector<SeriesRuns> m_runs;  // reused between updates
+  PlotXAxis m_x;                   // of the last refreshAll
 };
 
 }  // namespace linkwright::ui

@@ -61,16 +61,17 @@ std::vector<ForceJoint> forceJoints(const k::BodyModel& bodies) {
   return joints;
 }
 
-void buildTorqueRuns(const k::SweepResult& sweep, const k::ForceSweep& forces, AngleUnit unit, SeriesRuns& out) {
+void buildTorqueRuns(const k::SweepResult& sweep, const k::ForceSweep& forces, AngleUnit unit, SeriesRuns& out,
+                     const XSource& x) {
   buildRuns(
       samplesOf(sweep, forces), [&](std::size_t j) { return forces.ok(j); },
-      [&](std::size_t j) { return toAngleUnit(sweep.inputAngle[j], unit); },
-      [&](std::size_t j) { return forces.driveTorque[j]; }, out);
+      [&](std::size_t j) { return sampleX(sweep, j, x, unit); }, [&](std::size_t j) { return forces.driveTorque[j]; },
+      out);
 }
 
 void buildJointForceRuns(const k::SweepResult& sweep, const k::ForceSweep& forces, const ForceJoint& joint,
-                         AngleUnit unit, SeriesRuns& out) {
-  const auto x = [&](std::size_t j) { return toAngleUnit(sweep.inputAngle[j], unit); };
+                         AngleUnit unit, SeriesRuns& out, const XSource& xSource) {
+  const auto x = [&](std::size_t j) { return sampleX(sweep, j, xSource, unit); };
   const auto ok = [&](std::size_t j) { return forces.ok(j); };
   const bool present = joint.prismatic ? joint.index < forces.normal.size() : joint.index < forces.revolute.size();
   const std::size_t samples = present ? samplesOf(sweep, forces) : 0;

@@ -6,6 +6,7 @@
 // for the kinematic curves.
 
 #include "ui/plots/angle_unit.h"
+#include "ui/plots/plot_x_axis.h"
 #include "ui/plots/series_data.h"
 
 #include "kinematics/dynamics/force_sweep.h"
@@ -31,14 +32,14 @@ struct ForceJoint {
 /// The joints of `bodies`: the revolute ones, then the prismatic ones.
 std::vector<ForceJoint> forceJoints(const kinematics::BodyModel& bodies);
 
-/// x = crank angle (in `unit`), y = driving torque (N·m), at the samples whose forces are Ok.
-/// `sweep` is the kinematic sweep `forces` was solved on.
+/// x = time or crank angle (in `unit`) as `x` says, y = driving torque (N·m), at the samples
+/// whose forces are Ok. `sweep` is the kinematic sweep `forces` was solved on.
 void buildTorqueRuns(const kinematics::SweepResult& sweep, const kinematics::ForceSweep& forces, AngleUnit unit,
-                     SeriesRuns& out);
+                     SeriesRuns& out, const XSource& x = {});
 
-/// x = crank angle (in `unit`), y = |F| of a pin joint or |N| of a slider's (N).
+/// x as for buildTorqueRuns, y = |F| of a pin joint or |N| of a slider's (N).
 void buildJointForceRuns(const kinematics::SweepResult& sweep, const kinematics::ForceSweep& forces,
-                         const ForceJoint& joint, AngleUnit unit, SeriesRuns& out);
+                         const ForceJoint& joint, AngleUnit unit, SeriesRuns& out, const XSource& x = {});
 
 /// The polar load diagram of revolute joint `revolute`: x = Fx, y = Fy (N, world frame; the
 /// force on the joint's body from its hub), one point per Ok sample, in sweep order.

@@ -17,16 +17,15 @@ QString formatReadoutNumber(double value) {
   return numberText(value, 'f', decimals);
 }
 
-QString readoutText(const PlotCurve& curve, QPointF point, AngleUnit unit, const QString& lengthUnit) {
+QString readoutText(const PlotCurve& curve, QPointF point, AngleUnit unit, const QString& lengthUnit,
+                    const PlotXAxis& x) {
   const QuantityKind kind = quantityKind(curve.quantity);
   // Degrees read best with the degree sign right after the number, as in "at crank 90.0°".
   const bool degreeSign = unit == AngleUnit::Degrees;
   const QString value = kind == QuantityKind::Angle && degreeSign
                             ? formatReadoutNumber(point.y()) + QStringLiteral("°")
                             : formatReadoutNumber(point.y()) + QLatin1Char(' ') + quantityUnit(kind, unit, lengthUnit);
-  const QString crank = degreeSign ? numberText(point.x(), 'f', 1) + QStringLiteral("°")
-                                   : numberText(point.x(), 'f', 3) + QLatin1Char(' ') + angleUnitSymbol(unit);
-  return HoverReadout::tr("%1 = %2 at crank %3").arg(curve.name, value, crank);
+  return HoverReadout::tr("%1 = %2 at %3").arg(curve.name, value, xReadoutText(point.x(), x, unit));
 }
 
 HoverReadout::HoverReadout(QWidget* parent) : QLabel(parent) {
@@ -36,13 +35,13 @@ HoverReadout::HoverReadout(QWidget* parent) : QLabel(parent) {
 }
 
 void HoverReadout::showPoint(const PlotCurve& curve, QPointF point, AngleUnit unit, const QString& lengthUnit,
-                             bool inside) {
+                             bool inside, const PlotXAxis& x) {
   if (!inside) {
     clearPoint();
     QToolTip::hideText();
     return;
   }
-  const QString text = readoutText(curve, point, unit, lengthUnit);
+  const QString text = readoutText(curve, point, unit, lengthUnit, x);
   setText(text);
   QToolTip::showText(QCursor::pos(), text, this);
 }

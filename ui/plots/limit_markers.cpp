@@ -1,5 +1,6 @@
 #include "ui/plots/limit_markers.h"
 
+#include "kinematics/solve/law_inverse.h"
 #include "ui/colors.h"
 #include "ui/plots/axis_range.h"
 #include "ui/plots/series_visibility.h"
@@ -10,6 +11,7 @@
 #include <QScatterSeries>
 #include <QValueAxis>
 
+#include <algorithm>
 #include <cmath>
 
 namespace linkwright::ui {
@@ -18,14 +20,15 @@ namespace {
 namespace k = kinematics;
 
 // The core reports the rocker angle in (−π, π]; the sweep's is unwrapped and may be whole
-// turns away. Pick the turn nearest the sweep's value at the grid sample nearest `xDeg`.
-double rockerAngleOnCurve(double rockerAngle, const k::SweepResult& sweep, double xDeg, double fromDeg, double toDeg) {
+// turns away. Pick the turn nearest the sweep's value at sample `u` × (samples − 1), rounded
+// (`u` in [0, 1]: where the limit lies along the grid or the time base).
+double rockerAngleOnCurve(double rockerAngle, const k::SweepResult& sweep, double u) {
   const std::size_t n = sweep.size();
   const std::size_t link = k::fourbar::kRocker.index;
-  if (n < 2 || link >= sweep.linkAngle.size() || toDeg == fromDeg) return rockerAngle;
-  const double t = (xDeg - fromDeg) / (toDeg - fromDeg);
-  const auto j = static_cast<std::size_t>(std::lround(t * static_cast<double>(n - 1)));
-  if (j >= n || !sweep.assembled(j)) return rockerAngle;
+  if (n < 2 || link >= sweep.linkAngle.size() || sweep.linkAngle[link].size() != n || !std::isfinite(u))
+    return rockerAngle;
+  const auto j = static_cast<std::size_t>(std::lround(std::clamp(u, 0.0, 1.0) * static_cast<double>(n - 1)));
+  if (!sweep.assembled(j)) return rockerAngle;
   const double turn = 2.0 * k::kPi;
   return rockerAngle + turn * std::round((sweep.linkAngle[link][j] - rockerAngle) / turn);
 }
@@ -38,8 +41,28 @@ QList<QPointF> limitMarkerPoints(const k::LimitReport& limits, const k::SweepRes
   for (const k::LimitPosition& limit : limits.positions) {
     const std::optional<double> xDeg = wrapIntoRange(k::radToDeg(limit.crankAngle), fromDeg, toDeg);
     if (!xDeg) continue;
-    const double rocker = rockerAngleOnCurve(limit.rockerAngle, sweep, *xDeg, fromDeg, toDeg);
+    const double u = toDeg != fromDeg ? (*xDeg - fromDeg) / (toDeg - fromDeg) : 0.0;
+    const double rocker = rockerAngleOnCurve(limit.rockerAngle, sweep, u);
     points.append(QPointF(toAngleUnit(k::degToRad(*xDeg), unit), toAngleUnit(rocker, unit)));
+  }
+  return points;
+}
+
+std::optional<QList<QPointF>> limitMarkerPointsInTime(const k::LimitReport& limits, const k::SweepResult& sweep,
+                                                      const k::TimeBase& time, PlotAxis axis, AngleUnit unit,
+                                                      qsizetype most) {
+  QList<QPointF> points;
+  const double span = time.toTime - time.fromTime;
+  for (const k::LimitPosition& limit : limits.positions) {
+    // One more than allowed tells "too many" from "exactly enough".
+    const auto left = static_cast<std::size_t>(most - points.size() + 1);
+    for (const double t : k::timesAtPosition(time, limit.crankAngle, left, 2.0 * k::kPi)) {
+      const double u = span > 0.0 ? (t - time.fromTime) / span : 0.0;
+      const double rocker = rockerAngleOnCurve(limit.rockerAngle, sweep, u);
+      const double x = axis == PlotAxis::Time ? t : toAngleUnit(k::motionAt(time.law, t).position, unit);
+      points.append(QPointF(x, toAngleUnit(rocker, unit)));
+    }
+    if (points.size() > most) return std::nullopt;
   }
   return points;
 }

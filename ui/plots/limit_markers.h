@@ -2,7 +2,10 @@
 // The rocker's limit (dead-centre) positions on the angle chart: a dashed vertical line at
 // each limit's crank angle and a point labelled "limit" on the rocker-angle curve. The
 // positions come from the core (DesignAnalysis::limits); this only places them on the axes.
+// On a time base a limit is marked at every instant the law's crank passes its angle (found
+// on the law itself, ui/document/drive_time.h), on a time axis or the input axis alike.
 
+#include "ui/document/mechanism_document.h"
 #include "ui/plots/angle_unit.h"
 #include "ui/plots/vertical_marker.h"
 
@@ -14,6 +17,7 @@
 #include <QPointF>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QChart;
@@ -28,6 +32,19 @@ namespace linkwright::ui {
 /// angle lies outside the grid are left out.
 QList<QPointF> limitMarkerPoints(const kinematics::LimitReport& limits, const kinematics::SweepResult& sweep,
                                  double fromDeg, double toDeg, AngleUnit unit);
+
+/// More limit crossings than this on a time base are not marked (the lines would hide the curves).
+inline constexpr qsizetype kMostLimitMarkers = 48;
+
+/// The limits on a time base: a point at every instant within `time` at which the law's crank
+/// is at a limit's crank angle (any turn), in time order per limit. x = that instant (s) on the
+/// time axis, or that crank angle (unwrapped, as the sweep's, in `unit`) on the input axis;
+/// y = the rocker angle moved by whole turns next to the sweep's at the nearest sample.
+/// `sweep` is on `time`'s base. nullopt if there are more than `most`: too many to mark.
+std::optional<QList<QPointF>> limitMarkerPointsInTime(const kinematics::LimitReport& limits,
+                                                      const kinematics::SweepResult& sweep,
+                                                      const kinematics::TimeBase& time, PlotAxis axis, AngleUnit unit,
+                                                      qsizetype most = kMostLimitMarkers);
 
 class LimitMarkers {
   Q_DECLARE_TR_FUNCTIONS(LimitMarkers)

@@ -4,12 +4,14 @@
 #include "ui/plots/hover_readout.h"
 #include "ui/plots/limit_markers.h"
 #include "ui/plots/plot_area_alignment.h"
+#include "ui/plots/plot_x_axis.h"
 #include "ui/plots/quality_bar.h"
 #include "ui/plots/quantity_chart_view.h"
 #include "ui/plots/quantity_selector.h"
 
 #include <QChart>
 #include <QGraphicsLayout>
+#include <QLabel>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -38,7 +40,7 @@ QString titleOf(QuantityKind kind) {
 
 PlotPanel::PlotPanel(MechanismDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document), m_quality(new QualityBar(document, this)),
-      m_selector(new QuantitySelector(this)), m_readout(new HoverReadout(this)) {
+      m_selector(new QuantitySelector(this)), m_limitNote(new QLabel(this)), m_readout(new HoverReadout(this)) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->setSpacing(2);
@@ -54,12 +56,16 @@ PlotPanel::PlotPanel(MechanismDocument* document, QWidget* parent)
     view->setMinimumHeight(110);
     connect(view, &QuantityChartView::curveHovered, this, [this](PlotQuantity q, QPointF p, bool inside) {
       if (const PlotCurve* c = curve(q))
-        m_readout->showPoint(*c, p, m_unit, QString::fromStdString(m_document->lengthUnit()), inside);
+        m_readout->showPoint(*c, p, m_unit, QString::fromStdString(m_document->lengthUnit()), inside, m_x);
     });
     connect(view, &QuantityChartView::resized, this, &PlotPanel::alignCharts);
     m_views[static_cast<std::size_t>(kind)] = view;
     layout->addWidget(view, 1);
   }
+  m_limitNote->setObjectName(QStringLiteral("limit_note"));
+  m_limitNote->setWordWrap(true);
+  m_limitNote->hide();
+  layout->addWidget(m_limitNote);
   layout->addWidget(m_readout);
   QuantityChartView* angles = chartView(QuantityKind::Angle);
   m_limits = std::make_unique<LimitMarkers>(angles->chart(), angles->xAxis(), angles->yAxis());
@@ -113,7 +119,8 @@ void PlotPanel::onDocumentChanged(Changes what) {
   // A new structure has new quantities; the document has already swept for what they need
   // (setRequestSource), so the plots only follow.
   if (what & Change::Design) refreshCurves();
-  if (what & (Changes(Change::Design) | Change::Request)) refreshData();
+  if (what & Change::PlotAxis) m_readout->clearPoint();
+  if (what & (Changes(Change::Design) | Change::Request | Change::PlotAxis)) refreshData();
   else if (what & Change::Motion) refreshCursor();
 }
 
@@ -161,23 +168,38 @@ void PlotPanel::applySelection() {
 
 void PlotPanel::refreshData() {
   const kinematics::Design& design = m_document->design();
-  const double fromDeg = design.fromDeg;
-  const double toDeg = design.toDeg;
   const QString lengthUnit = QString::fromStdString(m_document->lengthUnit());
   const kinematics::SweepResult& sweep = m_document->sweep();
   const QuantitySelection shown = selection();
+  m_x = plotXAxis(design, sweep, m_document->plotAxis(), m_unit);
+  const PlotXAxis& x = m_x;
   for (QuantityChartView* view : m_views) {
     view->setVisible(shown.any(view->kind(), m_curves));
-    view->setData(sweep, shown, m_unit, fromDeg, toDeg, lengthUnit);
+    view->setData(sweep, shown, m_unit, x, lengthUnit);
   }
   QuantityChartView* angles = chartView(QuantityKind::Angle);
   m_limits->setYSpan(angles->valueRange().min, angles->valueRange().max);
-  // Limit positions are a four-bar's (empty otherwise), on its rocker's curve.
-  m_limits->setPositions(limitMarkerPoints(m_document->analysis().limits, sweep, fromDeg, toDeg, m_unit),
-                         m_document->fourBar().has_value() && shown.contains(PlotQuantity::RockerAngle));
+  // Limit positions are a four-bar's (empty otherwise), on its rocker's curve; on a time base
+  // wherever the law passes them, unless that is too often to read.
+  const kinematics::LimitReport& limits = m_document->analysis().limits;
+  QList<QPointF> points;
+  QString note;
+  if (!design.time) {
+    points = limitMarkerPoints(limits, sweep, design.fromDeg, design.toDeg, m_unit);
+  } else if (auto inTime = limitMarkerPointsInTime(limits, sweep, *design.time, x.source.axis, m_unit)) {
+    points = *inTime;
+  } else {
+    note = tr("Rocker limit positions are not marked: the crank passes them more than %1 times in this time span.")
+               .arg(kMostLimitMarkers);
+  }
+  m_limits->setPositions(points, m_document->fourBar().has_value() && shown.contains(PlotQuantity::RockerAngle));
+  m_limitNote->setText(note);
+  m_limitNote->setVisible(!note.isEmpty() && !angles->isHidden());
   refreshCursor();
   alignCharts();  // axis labels may have changed width
 }
+
+QString PlotPanel::limitNote() const { return m_limitNote->isHidden() ? QString() : m_limitNote->text(); }
 
 void PlotPanel::alignCharts() {
   QList<QChart*> shown;
@@ -189,11 +211,7 @@ void PlotPanel::alignCharts() {
 }
 
 void PlotPanel::refreshCursor() {
-  const kinematics::Design& design = m_document->design();
-  const std::optional<double> xDeg =
-      wrapIntoRange(kinematics::radToDeg(m_document->crankAngle()), design.fromDeg, design.toDeg);
-  const std::optional<double> x =
-      xDeg ? std::optional<double>(toAngleUnit(kinematics::degToRad(*xDeg), m_unit)) : std::nullopt;
+  const std::optional<double> x = cursorX(*m_document, m_x, m_unit);
   for (QuantityChartView* view : m_views) view->setCursorX(x);
 }
 

@@ -1,16 +1,19 @@
 #pragma once
-// The live plots against crank angle, one chart per kind, stacked so they read together: link
+// The live plots against time or crank angle (the document's plotAxis(), plot_x_axis.h), one
+// chart per kind, stacked so they read together: link
 // and transmission angles, link ω, link α, and for linkages with sliders their positions,
 // velocities and accelerations. The quantities come from the mechanism (plot_quantity.h); a
 // row of checkboxes picks them, and the document is asked to compute only what is shown. Charts
 // with nothing to show are hidden. Curves are re-read from the document's sweep when the
 // design or request changes; a crank move only moves the cursor on each chart. Hovering a
-// curve reads its value out; a four-bar's rocker limit positions are marked on the angle chart.
+// curve reads its value out; a four-bar's rocker limit positions are marked on the angle chart
+// (on a time base at each instant the crank passes them, or not at all, with a note saying why).
 // The plots also decide the displayed sweep's resolution: its samples follow the plot area's
 // width (times the quality the bar above the charts sets), reported once a resize settles.
 
 #include "ui/plots/angle_unit.h"
 #include "ui/plots/plot_quantity.h"
+#include "ui/plots/plot_x_axis.h"
 
 #include "ui/document/mechanism_document.h"
 
@@ -23,6 +26,7 @@
 #include <vector>
 
 class QChartView;
+class QLabel;
 
 class QGraphicsView;
 
@@ -63,6 +67,8 @@ public:
   /// The chart for one kind of quantity.
   QuantityChartView* chartView(QuantityKind kind) const;
   LimitMarkers* limitMarkers() const { return m_limits.get(); }
+  /// Why limit positions the analysis has are not marked; empty when they are (or there are none).
+  QString limitNote() const;
   HoverReadout* hoverReadout() const { return m_readout; }
   QuantitySelector* selector() const { return m_selector; }
   QualityBar* qualityBar() const { return m_quality; }
@@ -96,7 +102,9 @@ private:
   std::vector<PlotCurve> m_curves;
   std::array<QuantityChartView*, kQuantityKindCount> m_views{};
   std::unique_ptr<LimitMarkers> m_limits;
+  QLabel* m_limitNote;
   HoverReadout* m_readout;
+  PlotXAxis m_x;  // what the charts show on x since the last refreshData
 };
 
 }  // namespace linkwright::ui

@@ -146,8 +146,6 @@ QString valueAxisTitle(QuantityKind kind, AngleUnit unit, const QString& lengthU
   return u;
 }
 
-QString crankAxisTitle(AngleUnit unit) { return Text::tr("crank angle [%1]").arg(angleUnitSymbol(unit)); }
-
 bool QuantitySelection::contains(PlotQuantity q) const {
   return std::find(m_hidden.begin(), m_hidden.end(), q) == m_hidden.end();
 }

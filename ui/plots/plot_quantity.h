@@ -67,8 +67,7 @@ const PlotCurve* findCurve(const std::vector<PlotCurve>& curves, PlotQuantity qu
 QString quantityUnit(QuantityKind kind, AngleUnit unit, const QString& lengthUnit = QStringLiteral("mm"));
 /// The y-axis title of a chart: "angle [deg]", "ω [rad/s]", "position [mm]", ...
 QString valueAxisTitle(QuantityKind kind, AngleUnit unit, const QString& lengthUnit = QStringLiteral("mm"));
-/// The x-axis title: "crank angle [deg]".
-QString crankAxisTitle(AngleUnit unit);
+/// (The x axis's title is plot_x_axis.h's: the time or the input.)
 
 /// Which quantities are shown: all but those the user unticked. A quantity the mechanism
 /// does not have is simply never drawn.

@@ -97,9 +97,17 @@ void QualityBar::refreshCost() {
   }
   const kinematics::SweepSpec& spec = m_document->displaySpec();
   const double spanDeg = kinematics::radToDeg(spec.toAngle - spec.fromAngle);
-  m_cost->setText(tr("%1 samples/rev · sweep %2 ms")
-                      .arg(samplesPerRevolution(spec.samples, spanDeg))
-                      .arg(m_document->sweepMilliseconds(), 0, 'f', m_document->sweepMilliseconds() < 10.0 ? 2 : 1));
+  const int msDecimals = m_document->sweepMilliseconds() < 10.0 ? 2 : 1;
+  // On a time base the samples are evenly spaced in time, not in crank angle.
+  if (spec.time)
+    m_cost->setText(tr("%1 samples over %2 s · sweep %3 ms")
+                        .arg(spec.samples)
+                        .arg(numberText(spec.time->toTime - spec.time->fromTime, 'g', 4))
+                        .arg(m_document->sweepMilliseconds(), 0, 'f', msDecimals));
+  else
+    m_cost->setText(tr("%1 samples/rev · sweep %2 ms")
+                        .arg(samplesPerRevolution(spec.samples, spanDeg))
+                        .arg(m_document->sweepMilliseconds(), 0, 'f', msDecimals));
   m_cost->setToolTip(tr("%1 samples across the plots, computing %2; the last sweep took %3 ms")
                          .arg(spec.samples)
                          .arg(m_document->request().accelerations ? tr("positions, ω and α")
@@ -113,8 +121,8 @@ void QualityBar::refreshError() {
   // Until the estimate settles (a drag, a resize), the last figure stays, greyed.
   m_error->setEnabled(!m_document->qualityEstimatePending());
   if (!e.error) {
-    m_error->setText(e.samplesPerRevolution == 0 ? tr("peak error: measuring…")
-                                                 : tr("peak error %1").arg(e.unavailable));
+    m_error->setText(e.samplesPerRevolution == 0 && e.unavailable.isEmpty() ? tr("peak error: measuring…")
+                                                                            : tr("peak error %1").arg(e.unavailable));
     m_error->setToolTip(e.detail.isEmpty() ? QString()
                                            : tr("<p>The error is measured against the exact peaks over one full cycle "
                                                 "of the crank. The core says: %1</p>")

@@ -70,11 +70,11 @@ void QuantityChartView::setCurves(const std::vector<PlotCurve>& curves) {
 }
 
 void QuantityChartView::setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection,
-                                AngleUnit unit, double fromDeg, double toDeg, const QString& lengthUnit) {
+                                AngleUnit unit, const PlotXAxis& x, const QString& lengthUnit) {
   m_values.clear();
   for (Curve& curve : m_curves) {
     const bool shown = selection.contains(curve.curve.quantity);
-    if (shown) buildSeriesRuns(sweep, curve.curve.quantity, unit, m_runs);
+    if (shown) buildSeriesRuns(sweep, curve.curve.quantity, unit, m_runs, x.source);
     else m_runs.runs.clear();
     for (const QList<QPointF>& run : m_runs.runs)
       for (const QPointF& p : run) m_values.push_back(p.y());
@@ -86,10 +86,9 @@ void QuantityChartView::setData(const kinematics::SweepResult& sweep, const Quan
   std::tie(m_lo, m_hi) = m_values.empty() ? std::pair<double, double>{kNone, -kNone} : robustSpan(m_values);
   applyValueRange();
   m_yAxis->setTitleText(valueAxisTitle(m_kind, unit, lengthUnit));
-  const AxisRange x = crankAxisRange(fromDeg, toDeg, unit);
-  applyAxisRange(m_xAxis, x);
-  m_xAxis->setTickInterval(x.step);
-  m_xAxis->setTitleText(crankAxisTitle(unit));
+  applyAxisRange(m_xAxis, x.range);
+  m_xAxis->setTickInterval(x.range.step);
+  m_xAxis->setTitleText(x.title);
 }
 
 int QuantityChartView::tickBudget() const {

@@ -1,10 +1,12 @@
 #pragma once
 // One chart of one kind of quantity (angles, ω, α, slider positions, velocities or
-// accelerations) against crank angle: a line per selected quantity, split into segments where the sweep has no value, explicit value axes with
-// rounded ranges, and a crank-angle cursor that moves without touching the data.
+// accelerations) against time or crank angle (plot_x_axis.h): a line per selected quantity,
+// split into segments where the sweep has no value, explicit value axes with rounded ranges,
+// and a cursor that moves without touching the data.
 
 #include "ui/plots/axis_range.h"
 #include "ui/plots/plot_quantity.h"
+#include "ui/plots/plot_x_axis.h"
 #include "ui/plots/segmented_line.h"
 #include "ui/plots/series_data.h"
 #include "ui/plots/vertical_marker.h"
@@ -39,9 +41,9 @@ public:
   const AxisRange& valueRange() const { return m_valueRange; }
 
   /// Replaces the curves with the sweep's values of the selected quantities (the others are
-  /// emptied and hidden) and resets both axes: x over the grid [fromDeg, toDeg].
-  void setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection, AngleUnit unit, double fromDeg,
-               double toDeg, const QString& lengthUnit = QStringLiteral("mm"));
+  /// emptied and hidden), x on `x`'s axis, and resets both axes (x to `x`'s range and title).
+  void setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection, AngleUnit unit,
+               const PlotXAxis& x, const QString& lengthUnit = QStringLiteral("mm"));
   /// Moves the cursor to `x` (plot units), or hides it. Touches no data series.
   void setCursorX(std::optional<double> x);
   std::optional<double> cursorX() const { return m_cursor->x(); }

@@ -69,7 +69,7 @@ bool hasValue(const k::SweepResult& s, PlotQuantity q, std::size_t j) {
   return Column(s, q, AngleUnit::Radians).present() && sampleCarries(s, q, j);
 }
 
-void buildSeriesRuns(const k::SweepResult& s, PlotQuantity q, AngleUnit unit, SeriesRuns& out) {
+void buildSeriesRuns(const k::SweepResult& s, PlotQuantity q, AngleUnit unit, SeriesRuns& out, const XSource& x) {
   const Column values(s, q, unit);
   qsizetype runCount = 0;
   out.minY = 0.0;
@@ -91,7 +91,7 @@ void buildSeriesRuns(const k::SweepResult& s, PlotQuantity q, AngleUnit unit, Se
     run.reserve(static_cast<qsizetype>(end - j));
     for (; j < end; ++j) {
       const double y = values.at(j);
-      run.append(QPointF(toAngleUnit(s.inputAngle[j], unit), y));
+      run.append(QPointF(sampleX(s, j, x, unit), y));
       out.minY = first ? y : std::min(out.minY, y);
       out.maxY = first ? y : std::max(out.maxY, y);
       first = false;

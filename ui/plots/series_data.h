@@ -1,12 +1,13 @@
 #pragma once
-// Turns sweep columns into plot points: x = crank angle, y = one quantity, angles in the plot's
-// angle unit (lengths in the mechanism's). Samples that carry no value are left out and break the line into runs, so a
+// Turns sweep columns into plot points: x = the time or the crank angle (plot_x_axis.h), y = one
+// quantity, angles in the plot's angle unit (lengths in the mechanism's). Samples that carry no value are left out and break the line into runs, so a
 // curve never bridges a range the linkage cannot reach: positions exist where the sample is
 // assembled, rates (ω, α) only where it is ok (the sweep stores placeholder zeros at toggle
 // and unassembled samples, which must never be plotted).
 
 #include "ui/plots/angle_unit.h"
 #include "ui/plots/plot_quantity.h"
+#include "ui/plots/plot_x_axis.h"
 
 #include "kinematics/solve/sweep.h"
 
@@ -29,8 +30,10 @@ struct SeriesRuns {
 /// the column computed at all).
 bool hasValue(const kinematics::SweepResult& sweep, PlotQuantity quantity, std::size_t sample);
 
-/// Fills `out` with the plottable samples of `quantity`. Reuses `out`'s lists: one allocation
-/// per run, none per point. No runs if the sweep did not compute the column.
-void buildSeriesRuns(const kinematics::SweepResult& sweep, PlotQuantity quantity, AngleUnit unit, SeriesRuns& out);
+/// Fills `out` with the plottable samples of `quantity`, x from `x` (a crank angle by default).
+/// Reuses `out`'s lists: one allocation per run, none per point. No runs if the sweep did not
+/// compute the column.
+void buildSeriesRuns(const kinematics::SweepResult& sweep, PlotQuantity quantity, AngleUnit unit, SeriesRuns& out,
+                     const XSource& x = {});
 
 }  // namespace linkwright::ui

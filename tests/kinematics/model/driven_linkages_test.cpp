@@ -264,16 +264,6 @@ TEST_CASE("the stretches of a path outside the arm's reach are exact", "[driven]
   }
 }
 
-TEST_CASE("a law's time at a position inverts it", "[driven][law]") {
-  const MotionLaw law = CycloidalRise{1.2, 0.7, 4.0};
-  for (const double t : {0.0, 0.3, 2.0, 3.9, 4.0}) {
-    const auto back = timeAtPosition(law, motionAt(law, t).position, 0.0, 4.0);
-    REQUIRE(back);
-    CHECK(*back == within(t, 1e-9));
-  }
-  CHECK_FALSE(timeAtPosition(law, 2.0, 0.0, 4.0));
-}
-
 TEST_CASE("a path's vertex drags to its target, never onto its neighbour", "[driven][drag]") {
   const Mechanism arm = seedArm(Branch::Crossed).mechanism;
   const auto moved = dragPathVertex(arm, kTip, 1, {0.1, 0.4});

@@ -1,6 +1,8 @@
 #include "tests/kinematics/soak/random_linkages.h"
 
+#include "kinematics/model/driven_linkages.h"
 #include "kinematics/model/fourbar.h"
+#include "kinematics/model/path_shape.h"
 #include "kinematics/model/shaper.h"
 #include "kinematics/model/sixbar.h"
 #include "kinematics/model/sixbar_newton.h"
@@ -147,6 +149,72 @@ DrawnLinkage newton(std::mt19937& rng) {
   });
 }
 
+// A linkage driven other than by a crank, swept over its driver's whole travel (which may run
+// out of reach: the sweep reports those samples, the soak checks the rest).
+DrawnLinkage driven(std::mt19937& rng) {
+  const double f = scale(rng, 1e2);
+  DrawnLinkage d;
+  // Eigen::Vector2d, not auto: an Eigen product expression would outlive its temporary vector.
+  const auto point = [&](double spread) -> Eigen::Vector2d {
+    const double x = uniform(rng, -spread, spread);
+    const double y = uniform(rng, -spread, spread);
+    return Eigen::Vector2d(x, y) * f;
+  };
+  const double which = unit(rng);
+  if (which < 0.5) {
+    const double upper = f * logUniform(rng, 1.0, 10.0);
+    const double forearm = f * logUniform(rng, 1.0, 10.0);
+    const double reach = (upper + forearm) / f;
+    k::PathShape path;
+    const double shape = unit(rng);
+    if (shape < 0.4) path = k::PolylinePath{{point(reach), point(reach)}};
+    else if (shape < 0.7) path = k::PolylinePath{{point(reach), point(reach), point(reach)}};
+    else
+      path = k::ArcPath{point(0.5 * reach), f * logUniform(rng, 0.3, reach), uniform(rng, -k::kPi, k::kPi),
+                        (chance(rng, 0.5) ? -1.0 : 1.0) * uniform(rng, 0.2, 2.0 * k::kPi)};
+    const k::Branch elbow = branch(rng);
+    d = fromResult(k::makeTwoLinkArm({upper, forearm, path, elbow, "mm"}), [&](std::ostream& s) {
+      s << "arm " << upper << "," << forearm << (elbow == k::Branch::Open ? " open" : " crossed");
+      if (const auto* line = std::get_if<k::PolylinePath>(&path)) {
+        s << " polyline";
+        for (const Eigen::Vector2d& v : line->vertices) s << " " << v.x() << "," << v.y();
+      } else {
+        const auto& arc = std::get<k::ArcPath>(path);
+        s << " arc centre " << arc.centre.x() << "," << arc.centre.y() << " radius " << arc.radius << " start "
+          << arc.startAngle << " sweep " << arc.sweep;
+      }
+    });
+    if (d.mechanism) d.inputTo = k::pathLength(path);
+    // An arc tighter than the arm bends the tip's path on its own scale.
+    const auto* arc = std::get_if<k::ArcPath>(&path);
+    d.inputScale = arc != nullptr ? std::min(upper + forearm, arc->radius) : upper + forearm;
+  } else if (which < 0.75) {
+    const double crank = f * logUniform(rng, 1.0, 10.0);
+    const double rod = crank * logUniform(rng, 1.05, 10.0);
+    const k::Branch b = branch(rng);
+    d = fromResult(k::makePistonDriven({crank, rod, b, "mm"}),
+                   [&](std::ostream& s) { s << "piston-driven crank " << crank << " rod " << rod; });
+    // Between the dead centres, where the crank cannot be driven from the piston.
+    d.inputFrom = 0.01 * crank;
+    d.inputTo = 1.99 * crank;
+    d.inputScale = crank;
+  } else {
+    const Eigen::Vector2d base = point(5.0);
+    const double eye = f * logUniform(rng, 0.3, 5.0);
+    const double tip = eye * uniform(rng, 0.5, 3.0);
+    const k::Branch b = branch(rng);
+    d = fromResult(k::makeCylinderRocker({base, eye, tip, b, "mm"}), [&](std::ostream& s) {
+      s << "cylinder rocker base " << base.x() << "," << base.y() << " eye " << eye << " tip " << tip;
+    });
+    // Between the cylinder's folded and stretched limits, where the boom toggles.
+    const double far = base.norm();
+    d.inputFrom = std::abs(far - eye) + 0.01 * std::min(far, eye);
+    d.inputTo = far + eye - 0.01 * std::min(far, eye);
+    d.inputScale = eye;
+  }
+  return d;
+}
+
 }  // namespace
 
 double unit(std::mt19937& rng) { return (static_cast<double>(rng()) + 0.5) / 4294967296.0; }
@@ -158,6 +226,7 @@ std::string kindName(LinkageKind kind) {
   case LinkageKind::Shaper: return "shaper";
   case LinkageKind::SixBar: return "six-bar";
   case LinkageKind::Newton: return "newton";
+  case LinkageKind::Driven: return "driven";
   }
   return "?";
 }
@@ -169,6 +238,7 @@ DrawnLinkage drawLinkage(LinkageKind kind, std::mt19937& rng) {
   case LinkageKind::Shaper: return shaper(rng);
   case LinkageKind::SixBar: return sixBar(rng);
   case LinkageKind::Newton: return newton(rng);
+  case LinkageKind::Driven: return driven(rng);
   }
   return {};
 }

@@ -122,20 +122,38 @@ void compare(double exact, const Estimate& e, const std::string& what, const k::
   }
 }
 
+// True if a driven point's polyline path turns a corner within `reach` of input q: there its
+// velocity jumps, and differences across the corner say nothing about the rates either side.
+bool cornerWithin(const k::Mechanism& m, double q, double reach) {
+  for (const k::Point& p : m.points) {
+    const auto* driven = std::get_if<k::PathPoint>(&p.definition);
+    const auto* line = driven != nullptr ? std::get_if<k::PolylinePath>(&driven->path) : nullptr;
+    if (line == nullptr) continue;
+    double corner = 0.0;
+    for (std::size_t v = 0; v + 2 < line->vertices.size(); ++v) {
+      corner += (line->vertices[v + 1] - line->vertices[v]).norm();
+      if (std::abs(corner - q) <= reach) return true;
+    }
+  }
+  return false;
+}
+
 void checkRates(const k::Mechanism& m, const k::SweepSpec& spec, const k::SweepResult& s, double size, std::size_t j,
-                SweepCheck& c) {
+                double inputScale, SweepCheck& c) {
   // Near a toggle the rates are steep and the differences meaningless: keep 1e-3 of the size.
   const auto pose = k::solvePose(m, {s.inputAngle[j], spec.omega, spec.alpha});
   double gap = size;
   if (pose)
     for (std::size_t i = 0; i < m.points.size(); ++i)
       if (pose->branchSign[i] != 0) gap = std::min(gap, pose->assemblyGap[i]);
-  // The crank turns 1e-3 rad over the stencil's step h, less near a toggle: there the n-th
-  // derivative grows like (size/gap)^n, and the Richardson estimate of the truncation error
-  // only holds while a step of the crank moves the dyad by much less than its gap.
+  // The crank turns 1e-3 rad over the stencil's step h (a linear input moves 1e-3 of its
+  // scale), less near a toggle: there the n-th derivative grows like (size/gap)^n, and the
+  // Richardson estimate of the truncation error only holds while a step of the crank moves
+  // the dyad by much less than its gap.
   const double turn = 1e-3 * std::min(1.0, 10.0 * gap / size);
-  const double h = turn / (std::abs(spec.omega) + std::sqrt(std::abs(spec.alpha)));
-  const auto poses = pose && gap > 1e-3 * size ? stencil(m, spec, s, j, h, size) : std::nullopt;
+  const double h = turn * inputScale / (std::abs(spec.omega) + std::sqrt(std::abs(spec.alpha) * inputScale));
+  const bool smooth = !cornerWithin(m, s.inputAngle[j], 2.0 * h * (std::abs(spec.omega) + h * std::abs(spec.alpha)));
+  const auto poses = pose && gap > 1e-3 * size && smooth ? stencil(m, spec, s, j, h, size) : std::nullopt;
   if (!poses) {
     ++c.ratesSkipped;
     return;
@@ -168,8 +186,8 @@ void checkRates(const k::Mechanism& m, const k::SweepSpec& spec, const k::SweepR
 
 }  // namespace
 
-SweepCheck checkSweep(const k::Mechanism& m, const k::SweepSpec& spec, const k::SweepResult& s,
-                      std::size_t rateSamples) {
+SweepCheck checkSweep(const k::Mechanism& m, const k::SweepSpec& spec, const k::SweepResult& s, std::size_t rateSamples,
+                      double inputScale) {
   SweepCheck c;
   const double size = std::max(sizeOf(s), std::numeric_limits<double>::min());
   std::optional<std::size_t> first;
@@ -190,7 +208,7 @@ SweepCheck checkSweep(const k::Mechanism& m, const k::SweepSpec& spec, const k::
     if (s.ok(j)) ok.push_back(j);
   const std::size_t count = std::min(rateSamples, ok.size());
   for (std::size_t n = 0; n < count && c.findings.empty(); ++n)
-    checkRates(m, spec, s, size, ok[n * ok.size() / count], c);
+    checkRates(m, spec, s, size, ok[n * ok.size() / count], inputScale, c);
   return c;
 }
 

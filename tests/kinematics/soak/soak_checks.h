@@ -23,8 +23,10 @@ struct SweepCheck {
 
 /// Checks `sweep`, the result of sweep(mechanism, spec) with the default request; compares
 /// rates with time differences at up to `rateSamples` samples spread over the sweep.
+/// `inputScale`: how far the input moves for a radian's worth of motion (1 for a crank; for a
+/// linear driver a length of the linkage, so the differences' step moves it as little).
 SweepCheck checkSweep(const kinematics::Mechanism& mechanism, const kinematics::SweepSpec& spec,
-                      const kinematics::SweepResult& sweep, std::size_t rateSamples);
+                      const kinematics::SweepResult& sweep, std::size_t rateSamples, double inputScale = 1.0);
 
 /// Closure tolerance: 1e-9 of the linkage's size, a thousand times the misfit the suite's
 /// closed-form dyads reach at length ratios of 1e6 (1e-15 of the size times 1e6 over the

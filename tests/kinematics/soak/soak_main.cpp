@@ -3,7 +3,7 @@
 // printed with the seed, the linkage's index and its dimensions, to reproduce), 2 for bad
 // usage. CTest runs it briefly (soak.short); docs/robustness.md gives the long command.
 //
-//   linkwright_soak [--count N] [--seed S] [--samples K] [--kind all|four-bar|slider-crank|shaper|six-bar|newton]
+//   linkwright_soak [--count N] [--seed S] [--samples K] [--kind all|four-bar|slider-crank|shaper|six-bar|newton|driven]
 //                   [--from I]
 //
 // --from I draws the first I linkages without checking them, so a finding's linkage I is
@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
   Options o;
   if (!parse(argc, argv, o)) {
     std::cerr << "usage: linkwright_soak [--count N] [--seed S] [--samples K>=3] "
-                 "[--kind all|four-bar|slider-crank|shaper|six-bar|newton] [--from I<N]\n";
+                 "[--kind all|four-bar|slider-crank|shaper|six-bar|newton|driven] [--from I<N]\n";
     return 2;
   }
   const auto start = std::chrono::steady_clock::now();
@@ -88,12 +88,13 @@ int main(int argc, char** argv) {
       ++t.refused;
       if (d.refusal.empty()) findings.push_back("refused without a message");
     } else {
-      const k::SweepSpec spec{0.0, 2.0 * k::kPi, o.samples, omega, alpha};
+      // The drawn speed per unit of input: a linear driver's scales with the linkage.
+      const k::SweepSpec spec{d.inputFrom, d.inputTo, o.samples, omega * d.inputScale, alpha * d.inputScale};
       const auto s = k::sweep(*d.mechanism, spec);
       if (!s) {
         findings.push_back("sweep failed: " + s.error().message);
       } else {
-        const test::SweepCheck c = test::checkSweep(*d.mechanism, spec, *s, 3);
+        const test::SweepCheck c = test::checkSweep(*d.mechanism, spec, *s, 3, d.inputScale);
         if (c.assembled > 0) ++t.assembled;
         t.samples += c.assembled;
         t.ratesCompared += c.ratesCompared;

@@ -14,6 +14,7 @@
 #include <QComboBox>
 #include <QLineSeries>
 #include <QScatterSeries>
+#include <QValueAxis>
 
 #include <catch2/catch.hpp>
 
@@ -88,4 +89,28 @@ TEST_CASE("without masses the force plots hide and say why", "[forces][plots]") 
   CHECK(panel.statusText().contains("Properties"));
   CHECK(panel.torqueChart()->isHidden() == false);  // its container hides, not the chart itself
   CHECK_FALSE(panel.torqueChart()->isVisibleTo(&panel));
+}
+
+TEST_CASE("on a time base the force plots run against time, or the input as the document says",
+          "[forces][plots][law]") {
+  MechanismDocument doc;
+  k::Design timed = *k::designForExample("funsho-fourbar");
+  timed.time = k::TimeBase{k::CycloidalRise{0.0, 2.0 * k::kPi, 0.5}, 0.0, 0.5};
+  doc.reset(timed);
+  ForceResults forces(&doc);
+  forces.setEnabled(true);
+  ForcePlotPanel panel(&doc, &forces);
+  const k::SweepResult& s = *forces.cycleSweep();
+  REQUIRE(s.time.size() == s.size());
+  QList<QPointF> torque = plotted(panel.torqueChart()->segments(0));
+  REQUIRE_FALSE(torque.isEmpty());
+  CHECK(torque.front().x() == s.time.front());
+  CHECK(torque.back().x() == 0.5);  // the law's end time
+  CHECK(panel.torqueChart()->xAxis()->titleText() == "time [s]");
+  doc.setTime(0.25);
+  CHECK(panel.torqueChart()->cursorX() == 0.25);
+  doc.setPlotAxis(PlotAxis::Input);
+  torque = plotted(panel.torqueChart()->segments(0));
+  CHECK(torque.back().x() == Approx(360.0).margin(1e-12));
+  CHECK(panel.torqueChart()->xAxis()->titleText() == "crank angle [deg]");
 }
