@@ -6,6 +6,7 @@
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/number_format.h"
+#include "kinematics/model/driver.h"
 #include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
@@ -21,27 +22,38 @@ using kinematics::Error;
 using kinematics::ErrorCode;
 using kinematics::io::formatShort;
 
-std::string degreesText(double radians) { return formatShort(kinematics::radToDeg(radians)) + "°"; }
+// An input value in the driver's display unit: "30°" for a crank, "12 mm" for a linear driver.
+std::string inputText(const kinematics::Mechanism& m, double q) {
+  const std::string unit = kinematics::inputUnit(m);
+  return formatShort(kinematics::inputDisplayValue(m, q)) + (unit == "°" ? unit : " " + unit);
+}
 
-std::string rangesText(const std::vector<kinematics::AngleRange>& ranges) {
+std::string rangesText(const kinematics::Mechanism& m, const std::vector<kinematics::AngleRange>& ranges) {
   std::string text;
   for (const auto& r : ranges) {
     if (!text.empty()) text += ", ";
-    text += r.from == r.to ? degreesText(r.from) : degreesText(r.from) + " to " + degreesText(r.to);
+    text += r.from == r.to ? inputText(m, r.from) : inputText(m, r.from) + " to " + inputText(m, r.to);
   }
   return text;
 }
 
+// "crank angles", "tip path positions", "actuator A–C lengths".
+std::string inputsName(const kinematics::Mechanism& m) {
+  std::string name = kinematics::inputName(m);
+  return name.ends_with("position") || name.ends_with("length") || name.ends_with("angle") ? name + "s" : name;
+}
+
 void reportUnassembled(const kinematics::SweepResult& result, const ResolvedMechanism& resolved, std::ostream& err) {
+  const kinematics::Mechanism& m = resolved.mechanism;
   std::size_t failed = 0;
   for (std::size_t j = 0; j < result.size(); ++j) failed += result.assembled(j) ? 0 : 1;
-  err << "linkwright-cli: the linkage cannot be assembled at " << failed << " of " << result.size()
-      << " requested crank angles (" << rangesText(result.notAssembled) << "); those rows are left out.\n";
+  err << "linkwright-cli: the linkage cannot be assembled at " << failed << " of " << result.size() << " requested "
+      << inputsName(m) << " (" << rangesText(m, result.notAssembled) << "); those rows are left out.\n";
   if (result.firstFailure) err << "  " << *result.firstFailure << ".\n";
   if (!kinematics::asFourBar(resolved.mechanism)) return;
   const kinematics::InputRange range = kinematics::analyseDesign(resolved.mechanism, {}).inputRange;
   if (range.ranges.empty()) err << "  It cannot be assembled at any crank angle.\n";
-  else err << "  It can be assembled for crank angles " << rangesText(range.ranges) << " (exact).\n";
+  else err << "  It can be assembled for crank angles " << rangesText(m, range.ranges) << " (exact).\n";
 }
 
 // The forces the invocation asks for, or the reason there are none.
@@ -59,22 +71,33 @@ kinematics::Result<std::optional<kinematics::ForceSweep>> forcesFor(const Invoca
   return std::optional<kinematics::ForceSweep>{std::move(*forces)};
 }
 
+// A sample in the driver's own words: "crank angle 30°", "C path position 12 mm", with its
+// instant first on a time base.
+std::string sampleText(const kinematics::Mechanism& m, const kinematics::SweepResult& result, std::size_t j) {
+  const std::string unit = kinematics::inputUnit(m);
+  const std::string input = kinematics::inputName(m) + " " +
+                            formatShort(kinematics::inputDisplayValue(m, result.inputAngle[j])) +
+                            (unit == "°" ? unit : " " + unit);
+  if (result.time.empty()) return input;
+  return "time " + formatShort(result.time[j]) + " s (" + input + ")";
+}
+
 // Samples whose kinematics exist but whose forces do not (a structure that locks there).
-void reportUndeterminedForces(const kinematics::SweepResult& result, const kinematics::ForceSweep& forces,
-                              std::ostream& err) {
+void reportUndeterminedForces(const kinematics::Mechanism& m, const kinematics::SweepResult& result,
+                              const kinematics::ForceSweep& forces, std::ostream& err) {
   for (std::size_t j = 0; j < result.size(); ++j)
     if (result.ok(j) && !forces.ok(j))
-      err << "linkwright-cli: note: the joint forces are not determined at crank angle "
-          << degreesText(result.inputAngle[j]) << " (the Newton–Euler system is singular; force cells left empty)\n";
+      err << "linkwright-cli: note: the joint forces are not determined at " << sampleText(m, result, j)
+          << " (the Newton–Euler system is singular; force cells left empty)\n";
 }
 
 }  // namespace
 
-void noteLocks(const kinematics::SweepResult& sweep, std::ostream& err) {
+void noteLocks(const kinematics::Mechanism& m, const kinematics::SweepResult& sweep, std::ostream& err) {
   for (const kinematics::AngleRange& step : sweep.lockedBetween)
-    err << "linkwright-cli: note: the linkage locks between crank angles " << degreesText(step.from) << " and "
-        << degreesText(step.to) << " (a dyad passes its assembly limit between these samples); from "
-        << degreesText(step.to) << " on it is assembled afresh on the chosen branches, so points jump there\n";
+    err << "linkwright-cli: note: the linkage locks between " << inputsName(m) << " " << inputText(m, step.from)
+        << " and " << inputText(m, step.to) << " (a dyad passes its assembly limit between these samples); from "
+        << inputText(m, step.to) << " on it is assembled afresh on the chosen branches, so points jump there\n";
 }
 
 ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err) {
@@ -102,11 +125,14 @@ ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err)
   } else {
     out << csv.str() << std::flush;
   }
-  for (const double angle : result->singularAngles)
-    err << "linkwright-cli: note: toggle position at crank angle " << degreesText(angle)
-        << ": coupler and rocker are collinear, ω and α are undefined (cells left empty)\n";
-  noteLocks(*result, err);
-  if (forceSweep) reportUndeterminedForces(*result, *forceSweep, err);
+  for (const double q : result->singularAngles)
+    err << "linkwright-cli: note: toggle position at " << kinematics::inputName(*mechanism) << " "
+        << inputText(*mechanism, q)
+        << (kinematics::inputKind(*mechanism) == kinematics::InputKind::Angle
+                ? ": coupler and rocker are collinear, ω and α are undefined (cells left empty)\n"
+                : ": a dyad is stretched straight or folded, its rates are undefined (cells left empty)\n");
+  noteLocks(*mechanism, *result, err);
+  if (forceSweep) reportUndeterminedForces(*mechanism, *result, *forceSweep, err);
   if (!result->notAssembled.empty()) {
     reportUnassembled(*result, swept->resolved, err);
     return ExitCode::NotAssemblable;

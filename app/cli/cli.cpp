@@ -55,9 +55,13 @@ constexpr const char* kAnalyzeOptions = R"(Speed and range (analyze, extremes):
                       angle step in degrees (default: the example's; 1 for --fourbar),
                       or N evenly spaced angles from --from to --to inclusive
   --coupler-point U,V add point P fixed on the coupler: U along B→C, V 90° CCW from it
+  A linkage driven by a point on a path or a linear actuator (seed-arm, piston-driven,
+  excavator-boom) takes --from, --to, --step, --rise and --omega/--alpha in its length
+  unit (and per s, per s²): its input is the point's path position or the actuator's
+  length; its first CSV column says which (tip_s_m, actuator_length_m).
 Motion in time (analyze, extremes): instead of the angle grid, the crank follows a motion law;
   analyze's table gains a first column time_s, extremes are refined in time; ω and α are
-  the law's at each instant.
+  the law's at each instant. An example or document with a motion law follows it.
   --law constant      from --from degrees at --rpm / --omega
   --law ramp --ramp-time S
                       from rest at --from, constant acceleration to --rpm / --omega in S
@@ -75,8 +79,9 @@ Motion in time (analyze, extremes): instead of the angle grid, the crank follows
   --format csv|table  CSV (default) or an aligned table of the link columns, 4 decimals
   --forces            (analyze) add inverse dynamics from the masses and loads of the
                       document's "dynamics" or the example's (funsho-fourbar has them):
-                      joint forces, driving torque, shaking force. The length unit must
-                      be m, cm, mm, in or ft; ω and α are the crank's at every angle
+                      joint forces, the driver's torque or force, shaking force. The
+                      length unit must be m, cm, mm, in or ft; the driver's rates are the
+                      sweep's at every sample (a crank's ω and α, or its motion law's)
   -o, --output FILE   write the output to FILE (atomically) instead of standard output
 
 Output: RFC 4180 CSV, '.' decimal point, round-trip precision. Columns carry units:
@@ -88,10 +93,16 @@ With --forces, then (world frame, N and N·m, CCW positive): F_<joint>_x_N, _y_N
   F_<joint>_N for each pin: the force on a link from the ground at a ground pivot, else
   from the link defined first (on the coupler from the crank at B, on the rocker from the
   coupler at C); N_<slider>_N and M_<slider>_Nm for each slider block: the normal force
-  (along the guide direction turned 90° CCW) and couple on it from its guide; T_drive_Nm,
-  the motor torque on the crank; shaking_x_N, shaking_y_N, shaking_N and
-  shaking_moment_Nm, the linkage's force on its frame and that force's moment about the
-  crank pivot, with the motor's reaction. Cells are empty where the forces are undefined.
+  (along the guide direction turned 90° CCW) and couple on it from its guide; the driver's:
+  T_drive_Nm, the motor torque on the crank; actuator_force_N, a linear actuator's axial
+  force (positive pushing its ends apart); <point>_drive_fx_N, _fy_N and
+  <point>_drive_force_N, the force on a point driven along a path (the guide's reaction
+  included) and its part along the path (positive toward increasing s); for a path point
+  at the tip of a two-link arm, <shoulder>_joint_torque_Nm and <elbow>_joint_torque_Nm, the
+  motor torques that move the arm the same way with its tip free; shaking_x_N, shaking_y_N,
+  shaking_N and shaking_moment_Nm, the linkage's force on its frame and that force's
+  moment about the crank pivot (other drivers: the first ground point), with the motor's
+  reaction. Cells are empty where the forces are undefined.
 )";
 
 constexpr const char* kClassifyOptions = R"(Classify options:

@@ -2,7 +2,8 @@
 // `analyze --format table`: the sweep as an aligned, fixed-decimal table for reading in a
 // terminal, like the seeds' printed tables (angles, ω and α of the moving links, and the
 // transmission angle; with forces, the joint force sizes, slider normal forces, the driving
-// torque and the shaking force). CSV remains the format for tools.
+// torque or the drive's force along its input, an arm's joint torques and the shaking force).
+// CSV remains the format for tools.
 
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/model/mechanism.h"

@@ -24,6 +24,9 @@ void allocate(ForceSweep& out, std::size_t samples) {
   out.normal.assign(out.bodies.prismatics.size(), std::vector<double>(samples, 0.0));
   out.moment.assign(out.bodies.prismatics.size(), std::vector<double>(samples, 0.0));
   out.driveTorque.assign(samples, 0.0);
+  out.driveAlong.assign(samples, 0.0);
+  out.driveForce.assign(samples, Eigen::Vector2d::Zero());
+  out.jointTorque.assign(samples, Eigen::Vector2d::Zero());
   out.shakingForce.assign(samples, Eigen::Vector2d::Zero());
   out.shakingMoment.assign(samples, 0.0);
 }
@@ -35,6 +38,9 @@ void store(const PoseForces& f, std::size_t j, ForceSweep& out) {
     out.moment[k][j] = f.moment[k];
   }
   out.driveTorque[j] = f.driveTorque;
+  out.driveAlong[j] = f.driveAlong;
+  out.driveForce[j] = f.driveForce;
+  out.jointTorque[j] = f.jointTorque;
   out.shakingForce[j] = f.shakingForce;
   out.shakingMoment[j] = f.shakingMoment;
 }
@@ -47,6 +53,9 @@ PoseForces ForceSweep::at(std::size_t j) const {
   for (const auto& column : normal) f.normal.push_back(column[j]);
   for (const auto& column : moment) f.moment.push_back(column[j]);
   f.driveTorque = driveTorque[j];
+  f.driveAlong = driveAlong[j];
+  f.driveForce = driveForce[j];
+  f.jointTorque = jointTorque[j];
   f.shakingForce = shakingForce[j];
   f.shakingMoment = shakingMoment[j];
   return f;
@@ -76,7 +85,7 @@ Result<ForceSweep> sweepForces(const Mechanism& mechanism, const LinkageDynamics
       continue;
     }
     copySampleToPose(sweep, j, pose);
-    out.status[j] = solve.solveInto(pose, forces);
+    out.status[j] = solve.solveInto(pose, forces, sweep.inputAngle[j]);
     if (out.status[j] == PoseStatus::Ok) store(forces, j, out);
   }
   return out;

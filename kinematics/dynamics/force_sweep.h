@@ -1,8 +1,9 @@
 #pragma once
 // Inverse dynamics over a sweep: the forces of inverse_dynamics.h at every sample of a
 // kinematic sweep (sweep.h), stored one column per quantity like SweepResult, for the CSV
-// columns, the plots and the polar load diagrams. The crank's ω and α are the sweep's, so a
-// sweep with α ≠ 0 gives the forces of an accelerating crank.
+// columns, the plots and the polar load diagrams. The driver's rates are the sweep's, so a
+// sweep with α ≠ 0 (or on a time base) gives the forces of an accelerating crank, cylinder or
+// path drive.
 
 #include "kinematics/dynamics/inverse_dynamics.h"
 #include "kinematics/dynamics/mass_properties.h"
@@ -27,9 +28,12 @@ struct ForceSweep {
   std::vector<std::vector<Eigen::Vector2d>> revolute;  ///< N, force on joint.body from joint.hub
   std::vector<std::vector<double>> normal;             ///< N, per prismatic joint (PoseForces::normal)
   std::vector<std::vector<double>> moment;             ///< N·m, per prismatic joint
-  std::vector<double> driveTorque;                     ///< N·m, on the driven body, CCW +
+  std::vector<double> driveTorque;                     ///< N·m, a crank's, on the driven body, CCW +
+  std::vector<double> driveAlong;                      ///< N, a linear driver's along its input (PoseForces)
+  std::vector<Eigen::Vector2d> driveForce;             ///< N, a linear driver's on the driven body
+  std::vector<Eigen::Vector2d> jointTorque;            ///< N·m, a serial arm's shoulder (x) and elbow (y)
   std::vector<Eigen::Vector2d> shakingForce;           ///< N, on the frame
-  std::vector<double> shakingMoment;                   ///< N·m, about the crank pivot
+  std::vector<double> shakingMoment;                   ///< N·m, about bodies.momentPoint (the crank pivot)
 
   std::size_t size() const { return status.size(); }
   bool ok(std::size_t sample) const { return status[sample] == PoseStatus::Ok; }
@@ -39,7 +43,8 @@ struct ForceSweep {
 
 /// Solves the forces at every sample of `sweep`, which must come from sweep(mechanism, …)
 /// with accelerations requested (an error otherwise, as for an invalid mechanism, dynamics
-/// or length unit: see InverseDynamics::create).
+/// or length unit: see InverseDynamics::create). Each sample's input (inputAngle) is the
+/// driver's coordinate a path drive's tangent is taken at.
 Result<ForceSweep> sweepForces(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepResult& sweep);
 
 }  // namespace linkwright::kinematics

@@ -1,6 +1,7 @@
 #include "kinematics/dynamics/inverse_dynamics.h"
 
 #include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/path_shape.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/vec2.h"
 
@@ -81,6 +82,9 @@ void InverseDynamics::prepare(PoseForces& f) const {
   f.normal.assign(m_bodies.prismatics.size(), 0.0);
   f.moment.assign(m_bodies.prismatics.size(), 0.0);
   f.driveTorque = 0.0;
+  f.driveAlong = 0.0;
+  f.driveForce.setZero();
+  f.jointTorque.setZero();
   f.shakingForce.setZero();
   f.shakingMoment = 0.0;
 }
@@ -142,7 +146,41 @@ void InverseDynamics::addJoints(const Pose& pose) {
       m_matrix(row + 2, c + 1) += sign;  // the couple M = L·x: its row and column scalings cancel
     }
   }
-  m_matrix(rowOf(m_bodies.driven) + 2, m_matrix.cols() - 1) += 1.0;
+}
+
+// A force of unit size along `direction` at `point` on `body`, times `sign`, per unit of the
+// unknown in `column` (a force: no scaling, its moment row divided by L like every other).
+void InverseDynamics::addForceColumn(const Pose& pose, BodyId body, const Eigen::Vector2d& point,
+                                     const Eigen::Vector2d& direction, double sign, Eigen::Index column) {
+  if (body == kGroundBody) return;
+  const Eigen::Index row = rowOf(body);
+  const Eigen::Vector2d r = point - at(pose, m_bodies.bodies[body.index].reference);
+  m_matrix(row, column) += sign * direction.x();
+  m_matrix(row + 1, column) += sign * direction.y();
+  m_matrix(row + 2, column) += sign * cross(r, direction) / m_scale;
+}
+
+// The driver's columns, after the joints' (rigid_bodies.h, header comment).
+void InverseDynamics::addDrive(const Pose& pose) {
+  const Drive& d = m_bodies.drive;
+  const auto c = static_cast<Eigen::Index>(2 * (m_bodies.revolutes.size() + m_bodies.prismatics.size()));
+  switch (d.kind) {
+  case DriveKind::Crank: m_matrix(rowOf(d.body) + 2, c) += 1.0; break;  // T = L·x, as a couple M
+  case DriveKind::Actuator: {
+    const Eigen::Vector2d tip = at(pose, d.point);
+    const Eigen::Vector2d base = at(pose, d.pivot);
+    m_actuatorAxis = (tip - base).normalized();
+    addForceColumn(pose, d.body, tip, m_actuatorAxis, 1.0, c);
+    addForceColumn(pose, d.base, base, m_actuatorAxis, -1.0, c);
+    break;
+  }
+  case DriveKind::Path: {
+    const Eigen::Vector2d p = at(pose, d.point);
+    addForceColumn(pose, d.body, p, Eigen::Vector2d::UnitX(), 1.0, c);
+    addForceColumn(pose, d.body, p, Eigen::Vector2d::UnitY(), 1.0, c + 1);
+    break;
+  }
+  }
 }
 
 // Inertia (and −m g) on the right, external loads moved to it with their sign changed.
@@ -182,8 +220,12 @@ void InverseDynamics::addRightHandSide(const Pose& pose) {
   }
 }
 
+Eigen::Vector2d InverseDynamics::momentOrigin(const Pose& pose) const {
+  return m_bodies.momentPoint ? at(pose, *m_bodies.momentPoint) : Eigen::Vector2d::Zero();
+}
+
 void InverseDynamics::assemble(const Pose& pose) {
-  const Eigen::Vector2d o = at(pose, m_bodies.crankPivot);
+  const Eigen::Vector2d o = momentOrigin(pose);
   double size = 0.0;
   for (const Eigen::Vector2d& p : pose.position) size = std::max(size, (m_metres * p - o).norm());
   m_scale = size > 0.0 ? size : 1.0;
@@ -191,12 +233,13 @@ void InverseDynamics::assemble(const Pose& pose) {
   m_rhs.setZero();
   bodyRates(pose);
   addJoints(pose);
+  addDrive(pose);
   addRightHandSide(pose);
 }
 
-void InverseDynamics::extract(const Pose& pose, PoseForces& f) const {
+void InverseDynamics::extract(const Pose& pose, std::optional<double> input, PoseForces& f) const {
   const double L = m_scale;
-  const Eigen::Vector2d o = at(pose, m_bodies.crankPivot);
+  const Eigen::Vector2d o = momentOrigin(pose);
   f.shakingForce.setZero();
   f.shakingMoment = 0.0;
   const auto& rev = m_bodies.revolutes;
@@ -216,11 +259,48 @@ void InverseDynamics::extract(const Pose& pose, PoseForces& f) const {
     f.shakingForce -= onBlock;
     f.shakingMoment -= cross(at(pose, pri[j].pin) - o, onBlock) + f.moment[j];
   }
-  f.driveTorque = m_solution(m_solution.size() - 1) * L;
-  f.shakingMoment -= f.driveTorque;
+  extractDrive(pose, input, f);
 }
 
-PoseStatus InverseDynamics::solveInto(const Pose& pose, PoseForces& forces) {
+// The driver's unknowns (after the joints'), its reaction on the frame and, for a serial arm,
+// τ = JᵀF (header comment).
+void InverseDynamics::extractDrive(const Pose& pose, std::optional<double> input, PoseForces& f) const {
+  const Drive& d = m_bodies.drive;
+  const auto c = static_cast<Eigen::Index>(2 * (m_bodies.revolutes.size() + m_bodies.prismatics.size()));
+  const Eigen::Vector2d o = momentOrigin(pose);
+  f.driveTorque = 0.0;
+  f.driveAlong = 0.0;
+  f.driveForce.setZero();
+  f.jointTorque.setZero();
+  switch (d.kind) {
+  case DriveKind::Crank:
+    f.driveTorque = m_solution(c) * m_scale;
+    f.shakingMoment -= f.driveTorque;
+    return;
+  case DriveKind::Actuator:
+    f.driveAlong = m_solution(c);
+    f.driveForce = f.driveAlong * m_actuatorAxis;
+    if (d.base != kGroundBody) return;
+    f.shakingForce -= f.driveForce;
+    f.shakingMoment -= cross(at(pose, d.pivot) - o, f.driveForce);
+    return;
+  case DriveKind::Path: {
+    const Eigen::Vector2d p = at(pose, d.point);
+    const PathShape& shape = std::get<PathPoint>(m_mechanism.points[d.point.index].definition).path;
+    const double s = input ? *input : nearestPathCoordinate(shape, pose.position[d.point.index]);
+    f.driveForce = m_solution.segment<2>(c);
+    f.driveAlong = f.driveForce.dot(pathAt(shape, s).tangent);
+    f.shakingForce -= f.driveForce;
+    f.shakingMoment -= cross(p - o, f.driveForce);
+    if (m_bodies.arm)
+      f.jointTorque = Eigen::Vector2d(cross(p - at(pose, m_bodies.arm->pivot), f.driveForce),
+                                      cross(p - at(pose, m_bodies.arm->elbow), f.driveForce));
+    return;
+  }
+  }
+}
+
+PoseStatus InverseDynamics::solveInto(const Pose& pose, PoseForces& forces, std::optional<double> input) {
   assemble(pose);
   m_qr.compute(m_matrix);
   if (m_qr.rank() < m_matrix.cols()) {
@@ -237,17 +317,18 @@ PoseStatus InverseDynamics::solveInto(const Pose& pose, PoseForces& forces) {
     prepare(forces);
     return PoseStatus::Singular;
   }
-  extract(pose, forces);
+  extract(pose, input, forces);
   return PoseStatus::Ok;
 }
 
-Result<PoseForces> forcesAtPose(const Mechanism& mechanism, const LinkageDynamics& dynamics, const Pose& pose) {
+Result<PoseForces> forcesAtPose(const Mechanism& mechanism, const LinkageDynamics& dynamics, const Pose& pose,
+                                std::optional<double> input) {
   auto solver = InverseDynamics::create(mechanism, dynamics);
   if (!solver) return solver.error();
   InverseDynamics& solve = solver.value();
   PoseForces forces;
   solve.prepare(forces);
-  if (solve.solveInto(pose, forces) != PoseStatus::Ok)
+  if (solve.solveInto(pose, forces, input) != PoseStatus::Ok)
     return Error{ErrorCode::Singular, "pose",
                  "the joint forces are not determined at this pose: the Newton–Euler system is singular (a toggle "
                  "position, or links that lock each other)"};

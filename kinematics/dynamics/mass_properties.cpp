@@ -42,6 +42,12 @@ std::optional<Error> checkSliderKey(const Mechanism& m, const std::string& point
   const auto id = m.findPoint(point);
   if (!id) return valueError(field + ".point", "names no point of this mechanism (got \"" + point + "\")");
   const PointDefinition& def = m.points[id->index].definition;
+  // The path drive's carriage is not a body of the model (rigid_bodies.h): it carries nothing.
+  if (std::holds_alternative<PathPoint>(def))
+    return valueError(field + ".point", "must name a slider's point (an rrp, rpr or prp point; got \"" + point +
+                                            "\", which is driven along a path: its carriage is massless and takes "
+                                            "no load; put the mass or load on a link that holds " +
+                                            point + ")");
   if (!isSliderPoint(def))
     return valueError(field + ".point", "must name a slider's point (an rrp, rpr or prp point; got \"" + point + "\")");
   const int guides = std::holds_alternative<PrpPoint>(def) ? 2 : 1;

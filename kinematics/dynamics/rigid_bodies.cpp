@@ -1,5 +1,6 @@
 #include "kinematics/dynamics/rigid_bodies.h"
 
+#include "kinematics/model/driver.h"
 #include "kinematics/solve/guide_line.h"
 
 #include <algorithm>
@@ -156,6 +157,80 @@ std::string countText(const BodyModel& model) {
          " prismatic joints";
 }
 
+Error fixedError(const Mechanism& m, const std::string& what, PointId point) {
+  return Error{ErrorCode::InvalidStructure, "points",
+               "the " + what + " " + m.points[point.index].name +
+                   " is fixed to the ground by the rest of the linkage: nothing can move"};
+}
+
+// The driver's generalized force acts on a body (header comment): the one that holds the
+// crank, the actuator's link or the path point, and for an actuator the one at its base.
+std::optional<Error> findDrive(BodyModel& model, const Mechanism& m) {
+  const auto driver = driverPoint(m);
+  if (!driver) return Error{ErrorCode::InvalidStructure, "points", "forces need a driver: this linkage has none"};
+  Drive& d = model.drive;
+  d.point = *driver;
+  d.pivot = *driver;
+  d.name = m.points[driver->index].name;
+  const PointDefinition& def = m.points[driver->index].definition;
+  if (const auto* c = std::get_if<CrankPoint>(&def)) {
+    d.kind = DriveKind::Crank;
+    d.pivot = c->pivot;
+    const auto body = bodyHolding(model, c->pivot, *driver);
+    if (!body || *body == kGroundBody) return fixedError(m, "crank", *driver);
+    d.body = *body;
+  } else if (const auto* a = std::get_if<ActuatorPoint>(&def)) {
+    d.kind = DriveKind::Actuator;
+    d.pivot = a->base;
+    const auto body = bodyHolding(model, a->first, *driver);
+    if (!body || *body == kGroundBody) return fixedError(m, "actuator's end", *driver);
+    const auto base = model.hubOf(a->base);
+    const std::string& name = m.points[driver->index].name;
+    const std::string& baseName = m.points[a->base.index].name;
+    if (!base)
+      return Error{ErrorCode::InvalidStructure, "points",
+                   "forces need the base " + baseName + " of the actuator to " + name +
+                       " on a body (the ground or a link) to push from: it is on none"};
+    if (*base == *body)
+      return Error{ErrorCode::InvalidStructure, "points",
+                   "the actuator's ends " + baseName + " and " + name +
+                       " lie on one rigid body, so it cannot change length: nothing can move"};
+    d.body = *body;
+    d.base = *base;
+  } else {
+    d.kind = DriveKind::Path;
+    const auto body = model.hubOf(*driver);
+    const std::string& name = m.points[driver->index].name;
+    if (!body)
+      return Error{ErrorCode::InvalidStructure, "points",
+                   "forces need the point " + name + " driven along the path to lie on a link: it is on none"};
+    if (*body == kGroundBody) return fixedError(m, "point on the path", *driver);
+    d.body = *body;
+  }
+  return std::nullopt;
+}
+
+// The RRR point whose parents are a ground pivot and the path driver's point, if any.
+std::optional<SerialArm> serialArm(const BodyModel& model, const Mechanism& m) {
+  if (model.drive.kind != DriveKind::Path) return std::nullopt;
+  const PointId tip = model.drive.point;
+  for (std::size_t i = 0; i < m.points.size(); ++i) {
+    const auto* r = std::get_if<RrrPoint>(&m.points[i].definition);
+    if (!r) continue;
+    for (const auto& [pivot, end] : {std::pair{r->first, r->second}, std::pair{r->second, r->first}})
+      if (end == tip && model.holds(kGroundBody, pivot))
+        return SerialArm{pivot, PointId{i}, m.points[pivot.index].name, m.points[i].name};
+  }
+  return std::nullopt;
+}
+
+std::optional<PointId> momentPoint(const BodyModel& model) {
+  if (model.drive.kind == DriveKind::Crank) return model.drive.pivot;
+  const auto& ground = model.bodies[kGroundBody.index].points;
+  if (ground.empty()) return std::nullopt;
+  return ground.front();
+}
+
 }  // namespace
 
 int BodyModel::mobility() const {
@@ -165,6 +240,12 @@ int BodyModel::mobility() const {
 std::optional<BodyId> BodyModel::findSlider(const SliderKey& key) const {
   for (std::size_t k = 0; k < bodies.size(); ++k)
     if (bodies[k].kind == BodyKind::Slider && bodies[k].slider == key) return BodyId{k};
+  return std::nullopt;
+}
+
+std::optional<BodyId> BodyModel::hubOf(PointId point) const {
+  for (std::size_t k = 0; k < bodies.size(); ++k)
+    if (holds(BodyId{k}, point)) return BodyId{k};
   return std::nullopt;
 }
 
@@ -194,32 +275,21 @@ Result<BodyModel> bodiesOf(const Mechanism& m) {
     }
     b.links.push_back(LinkId{l});
   }
-  bool crank = false;
-  for (std::size_t i = 0; i < m.points.size(); ++i)
-    if (const auto* c = std::get_if<CrankPoint>(&m.points[i].definition)) {
-      model.crankPivot = c->pivot;
-      model.crankTip = PointId{i};
-      crank = true;
-    }
-  // The balance is solved for the torque on a driven crank; a linear driver's force is not
-  // one of its unknowns yet.
-  if (!crank)
-    return Error{ErrorCode::InvalidStructure, "dynamics",
-                 "forces need a crank driver: this linkage is driven by a point on a path or a linear actuator"};
-  const auto driven = bodyHolding(model, model.crankPivot, model.crankTip);
-  if (!driven || *driven == kGroundBody)
-    return Error{ErrorCode::InvalidStructure, "points",
-                 "the crank " + m.points[model.crankTip.index].name +
-                     " is fixed to the ground by the rest of the linkage: nothing can move"};
-  model.driven = *driven;
   nameBodies(model, m);
   addBlocks(model, m);
   addRevolutes(model, m);
-  if (model.unknowns() != model.equations())
+  if (auto e = findDrive(model, m)) return *e;
+  if (model.unknowns() != model.equations()) {
+    const std::string need = model.drive.kind == DriveKind::Path
+                                 ? "two degrees of freedom with its path point free (the path drive takes both)"
+                                 : "one degree of freedom";
     return Error{ErrorCode::InvalidStructure, "mechanism",
-                 "forces need a linkage with one degree of freedom: " + countText(model) +
-                     ", so inverse dynamics would have " + std::to_string(model.unknowns()) + " unknowns for " +
-                     std::to_string(model.equations()) + " equations"};
+                 "forces need a linkage with " + need + ": " + countText(model) + ", so inverse dynamics would have " +
+                     std::to_string(model.unknowns()) + " unknowns for " + std::to_string(model.equations()) +
+                     " equations"};
+  }
+  model.arm = serialArm(model, m);
+  model.momentPoint = momentPoint(model);
   return model;
 }
 

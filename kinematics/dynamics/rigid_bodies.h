@@ -3,9 +3,11 @@
 // dynamics (inverse_dynamics.h) writes Newton–Euler equations for. The Mechanism lists points
 // and the links it reports; forces need bodies, so the bars each definition implies are merged:
 //
-//   Bars. A crank joins its pivot and tip; an RRR point C joins C to each parent; an RRP point
-//     joins C to its first point; an RPR point joins the slotted link's pivot and tip; an
-//     attached point lies on its link's body; every Link and every DistanceConstraint is a bar.
+//   Bars. A crank joins its pivot and tip; an actuator's end C joins C to its first point (the
+//     actuator between base and C is no bar); a point on a path joins nothing; an RRR point C
+//     joins C to each parent; an RRP point joins C to its first point; an RPR point joins the
+//     slotted link's pivot and tip; an attached point lies on its link's body; every Link and
+//     every DistanceConstraint is a bar.
 //   Merging, repeated until nothing changes: two bodies that share two points are one body;
 //     three bodies that pairwise share three distinct single points (a triangle of pins) are
 //     one rigid body. This finds the ternary plates of a Stephenson II built from constraint
@@ -19,10 +21,24 @@
 //     and one other body. The hub is the ground if the ground holds the point, else the body
 //     with the lowest index (bodies are numbered ground first, then in the order their first
 //     bar was defined, then the blocks in point order).
+//   The driver. Its generalized force is one or two more unknowns (inverse_dynamics.h):
+//     a crank's torque T on the body holding its pivot and tip; a linear actuator's axial
+//     force f, on the body its link (first→C) lies on at C and, reversed, on the body holding
+//     its base at the base (the actuator is a massless two-force member, not a body; its link
+//     counts as a bar like an RRR's first bar); a path drive's force F (x and y) on the body
+//     holding the driven point, at the point (a massless carriage on the ground path: its
+//     tangential part drives, its normal part is the guide's reaction).
 //   Gruebler. With n bodies (ground included) and j revolute plus prismatic joints, each joint
 //     removing two freedoms, the mobility is M = 3(n − 1) − 2j. Inverse dynamics has
-//     2j + 1 unknowns (two per joint and the driving torque) and 3(n − 1) equations (three per
-//     moving body): square exactly when M = 1. bodiesOf refuses any other count, naming it.
+//     2j + d unknowns (two per joint and the driver's d: 1 for a crank or an actuator, 2 for a
+//     path drive) and 3(n − 1) equations (three per moving body): square exactly when M = d.
+//     A crank or an actuator leaves one freedom to drive (M = 1); a path driver's point is a
+//     free end of the linkage, so with the point free it has two (M = 2: the two-link arm's
+//     shoulder and elbow), which the path takes both of. bodiesOf refuses any other count,
+//     naming it.
+//   Serial arm. When a path driver's point P is the far end of an RRR dyad from a ground
+//     pivot G (the RRR point E with parents G and P: the arm's shoulder, elbow and tip), the
+//     model names G and E, whose joint torques τ = JᵀF inverse dynamics also reports.
 
 #include "kinematics/model/mechanism.h"
 #include "kinematics/model/result.h"
@@ -94,33 +110,69 @@ struct PrismaticJoint {
   bool operator==(const PrismaticJoint&) const = default;
 };
 
+enum class DriveKind {
+  Crank,     ///< one unknown: the torque on the crank's body from the ground
+  Actuator,  ///< one unknown: the actuator's axial force
+  Path,      ///< two unknowns: the force of the path drive on the driven point's body
+};
+
+/// The driver as inverse dynamics sees it: where its generalized force acts.
+struct Drive {
+  DriveKind kind = DriveKind::Crank;
+  PointId point;  ///< the driver point: the crank tip, the actuator's end C, the point on the path
+  PointId pivot;  ///< the crank's pivot, the actuator's base; for a path driver, `point`
+  BodyId body;    ///< the driven body: it holds pivot and tip (crank), first and C (actuator), or the point (path)
+  BodyId base = kGroundBody;  ///< actuator: the body holding its base, which feels −f; else the ground
+  std::string name;           ///< the driver point's name (the force columns' prefix for a path drive)
+  bool operator==(const Drive&) const = default;
+
+  /// Unknowns the driver adds: 1 (T or f) or 2 (F's x and y).
+  std::size_t unknowns() const { return kind == DriveKind::Path ? 2 : 1; }
+};
+
+/// A path driver's point P at the far end of an RRR dyad E from a ground pivot G: a two-link
+/// serial chain G–E–P (seed 004's arm: shoulder O, elbow, tip).
+struct SerialArm {
+  PointId pivot;  ///< G, the shoulder: held by the ground
+  PointId elbow;  ///< E, the RRR point whose parents are G and P
+  std::string pivotName;
+  std::string elbowName;
+  bool operator==(const SerialArm&) const = default;
+};
+
 /// Bodies and joints of a mechanism, with its Gruebler count.
 struct BodyModel {
   std::vector<Body> bodies;  ///< [0] ground, then rigid bodies, then blocks
   std::vector<RevoluteJoint> revolutes;
   std::vector<PrismaticJoint> prismatics;
   std::vector<BodyId> linkBody;  ///< per Mechanism link: the body it lies on
-  BodyId driven;                 ///< the body holding the crank pivot and tip
-  PointId crankPivot;
-  PointId crankTip;
+  Drive drive;
+  std::optional<SerialArm> arm;  ///< path drivers at the end of a two-link chain from the ground
+  /// Where the shaking moment is taken: the crank's pivot, else the first point the ground
+  /// holds; none (the world origin) when the ground holds no point.
+  std::optional<PointId> momentPoint;
   bool operator==(const BodyModel&) const = default;
 
   std::size_t movingBodies() const { return bodies.size() - 1; }
-  /// Gruebler–Kutzbach mobility 3(n − 1) − 2j (1 for every model bodiesOf returns).
+  /// Gruebler–Kutzbach mobility 3(n − 1) − 2j: drive.unknowns() for every model bodiesOf returns.
   int mobility() const;
-  /// Unknowns of inverse dynamics: 2 per joint and the driving torque.
-  std::size_t unknowns() const { return 2 * (revolutes.size() + prismatics.size()) + 1; }
+  /// Unknowns of inverse dynamics: 2 per joint and the driver's (1 or 2).
+  std::size_t unknowns() const { return 2 * (revolutes.size() + prismatics.size()) + drive.unknowns(); }
   /// Newton–Euler equations: 3 per moving body.
   std::size_t equations() const { return 3 * movingBodies(); }
   /// The block `key` names, if there is one.
   std::optional<BodyId> findSlider(const SliderKey& key) const;
   /// Whether `body` holds `point`.
   bool holds(BodyId body, PointId point) const;
+  /// The body a force at `point` is put on: the ground if it holds the point, else the lowest
+  /// body that does (the point's hub, as for its revolute joints); none if no body holds it.
+  std::optional<BodyId> hubOf(PointId point) const;
 };
 
 /// The bodies and joints of a mechanism that checkMechanism accepts. Fails (InvalidStructure)
-/// if the crank is fixed to the ground, or if unknowns ≠ equations (mobility ≠ 1), naming the
-/// count.
+/// if the driven body is fixed to the ground (the crank, the actuator's link or the path point
+/// held by the ground), if an actuator's ends lie on one body or a path point on none, or if
+/// unknowns ≠ equations (mobility ≠ the driver's unknowns), naming the count.
 Result<BodyModel> bodiesOf(const Mechanism& mechanism);
 
 /// The fixed distance between a link's ends from the definitions (length unit): the crank

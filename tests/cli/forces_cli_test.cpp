@@ -1,6 +1,7 @@
 // linkwright-cli analyze --forces: the force columns follow the kinematic ones with their
-// units, their values are the core's, a document's dynamics are used, and a linkage without
-// masses (or with a unit forces cannot convert) is refused with exit code 2.
+// units, their values are the core's, a document's dynamics are used (with a crank, a point
+// driven along a path or a cylinder as the driver), and a linkage without masses (or with a
+// unit forces cannot convert) is refused with exit code 2.
 
 #include "app/cli/cli.h"
 #include "tests/cli/run_cli.h"
@@ -9,6 +10,7 @@
 #include "kinematics/design/examples.h"
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/document_json.h"
+#include "kinematics/io/force_columns.h"
 #include "kinematics/model/units.h"
 
 #include <catch2/catch.hpp>
@@ -123,9 +125,66 @@ TEST_CASE("analyze FILE.json --forces uses the document's dynamics and checks it
   std::filesystem::remove(path);
 }
 
+TEST_CASE("analyze FILE --forces: a path-driven arm and a cylinder-driven boom, as the core gives them",
+          "[cli][forces][driven]") {
+  using namespace kinematics;
+  const Eigen::Vector2d g = standardGravity();
+  struct Case {
+    std::string example;
+    LinkageDynamics dynamics;
+    std::vector<std::string> forceNames;
+  };
+  const std::vector<Case> cases{
+      {"seed-arm",
+       {{{"upper", 2.0, LinkFramePoint{0.15, 0.0}, 0.02}, {"forearm", 1.5, LinkFramePoint{0.1, 0.0}, 0.006}},
+        {},
+        {g, {}, {{"forearm", "tip", 0, Eigen::Vector2d(0.0, -20.0)}}}},
+       {"F_O_x_N", "F_O_y_N", "F_O_N", "F_elbow_x_N", "F_elbow_y_N", "F_elbow_N", "tip_drive_fx_N", "tip_drive_fy_N",
+        "tip_drive_force_N", "O_joint_torque_Nm", "elbow_joint_torque_Nm", "shaking_x_N", "shaking_y_N", "shaking_N",
+        "shaking_moment_Nm"}},
+      {"excavator-boom",
+       {{{"boom", 50.0, LinkFramePoint{1.4, 0.05}, 30.0}},
+        {},
+        {g, {}, {{"boom", "tip", 0, Eigen::Vector2d(0.0, -2000.0)}}}},
+       {"F_O_x_N", "F_O_y_N", "F_O_N", "actuator_force_N", "shaking_x_N", "shaking_y_N", "shaking_N",
+        "shaking_moment_Nm"}}};
+  for (const Case& c : cases) {
+    CAPTURE(c.example);
+    Design design = *designForExample(c.example);
+    design.dynamics = c.dynamics;
+    const auto path =
+        (std::filesystem::temp_directory_path() / ("linkwright_cli_forces_" + c.example + ".json")).string();
+    std::ofstream(path, std::ios::binary) << io::writeDocument(design);
+    const Run r = run({"analyze", path, "--forces"});
+    std::filesystem::remove(path);
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    const auto rows = lines(r.out);
+    const auto header = split(rows[0], ',');
+    REQUIRE(header.size() > c.forceNames.size());
+    CHECK(std::vector<std::string>(header.end() - static_cast<std::ptrdiff_t>(c.forceNames.size()), header.end()) ==
+          c.forceNames);
+    CHECK(header[0] == "time_s");
+
+    // One row mid-move, every force cell the core's to the last digit.
+    const auto s = sweep(design.mechanism, designSweepSpec(design)).value();
+    const auto f = sweepForces(design.mechanism, design.dynamics, s).value();
+    const std::size_t j = s.size() / 3;
+    REQUIRE(f.ok(j));
+    const auto row = split(rows[j + 1], ',');
+    REQUIRE(row.size() == header.size());
+    for (const io::ForceColumn& column : io::forceColumns(f.bodies)) {
+      CAPTURE(column.name);
+      CHECK(std::stod(row[columnOf(header, column.name)]) == column.value(f, j));
+    }
+  }
+}
+
 TEST_CASE("--help lists --forces, its columns and its exit code", "[cli][forces]") {
   const Run r = run({"--help", "analyze"});
   REQUIRE(r.code == 0);
   CHECK_THAT(r.out, Catch::Contains("--forces") && Catch::Contains("T_drive_Nm") && Catch::Contains("F_<joint>_x_N") &&
+                        Catch::Contains("actuator_force_N") && Catch::Contains("<point>_drive_force_N") &&
+                        Catch::Contains("_joint_torque_Nm") &&
                         Catch::Contains("--forces for a linkage without masses"));
 }

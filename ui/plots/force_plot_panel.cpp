@@ -66,7 +66,6 @@ ForcePlotPanel::ForcePlotPanel(MechanismDocument* document, ForceResults* forces
   pages->addTab(polar, tr("Polar load diagrams"));
   layout->addWidget(m_charts, 1);
 
-  m_torque->setCurves({{QStringLiteral("torque"), tr("T₂"), kCrankColor}});
   // The two charts share the crank axis: same plot-area edges, so the cursors line up.
   for (ForceChartView* chart : {m_torque, m_joints})
     connect(chart, &ForceChartView::resized, this, &ForcePlotPanel::alignCharts);
@@ -101,9 +100,15 @@ void ForcePlotPanel::refreshAll() {
 
   const PlotXAxis x = plotXAxis(m_document->design(), *sweep, m_document->plotAxis(), m_unit);
   m_x = x;
-  m_runs.resize(1);
-  buildTorqueRuns(*sweep, *cycle, m_unit, m_runs[0], x.source);
-  m_torque->setData(m_runs, tr("torque [N·m]"), x);
+  const DriveChart drive = driveChart(cycle->bodies);
+  std::vector<ForceChartView::Curve> driveCurves;
+  for (std::size_t i = 0; i < drive.curves.size(); ++i)
+    driveCurves.push_back({QStringLiteral("drive_%1").arg(i), drive.curves[i], i == 0 ? kCrankColor : kCouplerColor});
+  m_torque->setCurves(driveCurves);
+  m_torque->chart()->setTitle(drive.title);
+  m_runs.resize(drive.curves.size());
+  for (std::size_t i = 0; i < drive.curves.size(); ++i) buildDriveRuns(*sweep, *cycle, i, m_unit, m_runs[i], x.source);
+  m_torque->setData(m_runs, drive.valueTitle, x);
 
   const std::vector<ForceJoint> joints = forceJoints(cycle->bodies);
   std::vector<ForceChartView::Curve> curves;

@@ -2,6 +2,8 @@
 
 #include "ui/colors.h"
 
+#include <QObject>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -61,12 +63,29 @@ std::vector<ForceJoint> forceJoints(const k::BodyModel& bodies) {
   return joints;
 }
 
-void buildTorqueRuns(const k::SweepResult& sweep, const k::ForceSweep& forces, AngleUnit unit, SeriesRuns& out,
-                     const XSource& x) {
+DriveChart driveChart(const k::BodyModel& bodies) {
+  if (bodies.arm)
+    return {QObject::tr("Joint torques"),
+            QObject::tr("torque [N·m]"),
+            {QObject::tr("τ %1").arg(QString::fromStdString(bodies.arm->pivotName)),
+             QObject::tr("τ %1").arg(QString::fromStdString(bodies.arm->elbowName))}};
+  if (bodies.drive.kind == k::DriveKind::Crank)
+    return {QObject::tr("Driving torque"), QObject::tr("torque [N·m]"), {QObject::tr("T₂")}};
+  const QString name =
+      bodies.drive.kind == k::DriveKind::Actuator ? QObject::tr("actuator") : QString::fromStdString(bodies.drive.name);
+  return {QObject::tr("Drive force"), QObject::tr("force [N]"), {QObject::tr("%1 along its input").arg(name)}};
+}
+
+void buildDriveRuns(const k::SweepResult& sweep, const k::ForceSweep& forces, std::size_t curve, AngleUnit unit,
+                    SeriesRuns& out, const XSource& x) {
+  const k::BodyModel& bodies = forces.bodies;
+  const auto value = [&](std::size_t j) {
+    if (bodies.arm) return curve == 0 ? forces.jointTorque[j].x() : forces.jointTorque[j].y();
+    return bodies.drive.kind == k::DriveKind::Crank ? forces.driveTorque[j] : forces.driveAlong[j];
+  };
   buildRuns(
       samplesOf(sweep, forces), [&](std::size_t j) { return forces.ok(j); },
-      [&](std::size_t j) { return sampleX(sweep, j, x, unit); }, [&](std::size_t j) { return forces.driveTorque[j]; },
-      out);
+      [&](std::size_t j) { return sampleX(sweep, j, x, unit); }, value, out);
 }
 
 void buildJointForceRuns(const k::SweepResult& sweep, const k::ForceSweep& forces, const ForceJoint& joint,

@@ -1,6 +1,7 @@
 #pragma once
-// Turns the core's force columns (kinematics::ForceSweep) into plot points: the driving torque
-// and each joint's reaction magnitude against crank angle, and each pin joint's force vector
+// Turns the core's force columns (kinematics::ForceSweep) into plot points: what drives the
+// linkage (a crank's torque, a linear driver's force along its input, a two-link arm's joint
+// torques) and each joint's reaction magnitude against time or the input, and each pin joint's force vector
 // as a polar locus. Samples whose forces were not solved (status not Ok: unassembled, a toggle,
 // a singular force system) are left out and break the lines into runs, as series_data.h does
 // for the kinematic curves.
@@ -32,12 +33,23 @@ struct ForceJoint {
 /// The joints of `bodies`: the revolute ones, then the prismatic ones.
 std::vector<ForceJoint> forceJoints(const kinematics::BodyModel& bodies);
 
-/// x = time or crank angle (in `unit`) as `x` says, y = driving torque (N·m), at the samples
-/// whose forces are Ok. `sweep` is the kinematic sweep `forces` was solved on.
-void buildTorqueRuns(const kinematics::SweepResult& sweep, const kinematics::ForceSweep& forces, AngleUnit unit,
-                     SeriesRuns& out, const XSource& x = {});
+/// What the driver's chart shows: a crank's torque T (N·m); a serial arm's shoulder and elbow
+/// torques (N·m), which is what its motors give; another linear driver's force along its input
+/// (N: an actuator's axial force, a path drive's tangential force).
+struct DriveChart {
+  QString title;                ///< "Driving torque", "Joint torques", "Drive force"
+  QString valueTitle;           ///< "torque [N·m]", "force [N]"
+  std::vector<QString> curves;  ///< legend texts, one per curve
+};
+DriveChart driveChart(const kinematics::BodyModel& bodies);
 
-/// x as for buildTorqueRuns, y = |F| of a pin joint or |N| of a slider's (N).
+/// x = time or the input (an angle in `unit`) as `x` says, y = the driver chart's curve
+/// `curve` (driveChart), at the samples whose forces are Ok. `sweep` is the kinematic sweep
+/// `forces` was solved on.
+void buildDriveRuns(const kinematics::SweepResult& sweep, const kinematics::ForceSweep& forces, std::size_t curve,
+                    AngleUnit unit, SeriesRuns& out, const XSource& x = {});
+
+/// x as for buildDriveRuns, y = |F| of a pin joint or |N| of a slider's (N).
 void buildJointForceRuns(const kinematics::SweepResult& sweep, const kinematics::ForceSweep& forces,
                          const ForceJoint& joint, AngleUnit unit, SeriesRuns& out, const XSource& x = {});
 

@@ -2,8 +2,10 @@
 // Linkages with masses and loads for the dynamics tests: one of each kind the core solves
 // (four-bar, slider-crank, shaper with an RPR block, a dyad six-bar, the Newton-solved
 // Stephenson II, a PRP yoke), with round-number properties chosen to exercise every term:
-// centres off the link line, α2 ≠ 0, gravity, torques and forces on links and sliders.
+// centres off the link line, α2 ≠ 0, gravity, torques and forces on links and sliders; and
+// the three examples driven along a path or by an actuator, on their time bases.
 
+#include "kinematics/design/design.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/model/fourbar.h"
@@ -94,6 +96,31 @@ inline std::vector<DynamicsCase> dynamicsCases() {
                     {{"C", 0, 0.1, 1e-5}, {"C", 1, 0.3, 0.0}},
                     {g, {}, {{"", "C", 1, Eigen::Vector2d(0.0, -40.0)}}}},
                    {kinematics::degToRad(-60.0), kinematics::degToRad(60.0), 121, 30.0, 10.0}});
+  return cases;
+}
+
+/// The linkages driven other than by a crank, with masses: seed 004's arm (upper 2 kg,
+/// forearm 1.5 kg, centres at mid-link, a 20 N torch at the tip, in a vertical plane), the
+/// piston-driven slider-crank (crank and rod masses, a 500 N load on the rod at the piston pin)
+/// and the excavator boom (50 kg, its centre off the boom line, 2 kN at the tip), each on its
+/// example's time base.
+inline std::vector<DynamicsCase> drivenDynamicsCases() {
+  using namespace kinematics;
+  const Eigen::Vector2d g = standardGravity();
+  std::vector<DynamicsCase> cases;
+  const auto add = [&](const std::string& name, LinkageDynamics dynamics) {
+    const Design d = *designForExample(name);
+    cases.push_back({name, d.mechanism, std::move(dynamics), designSweepSpec(d)});
+  };
+  add("seed-arm", {{{"upper", 2.0, LinkFramePoint{0.15, 0.0}, 0.02}, {"forearm", 1.5, LinkFramePoint{0.1, 0.0}, 0.006}},
+                   {},
+                   {g, {}, {{"forearm", "tip", 0, Eigen::Vector2d(0.0, -20.0)}}}});
+  add("piston-driven", {{{"crank", 0.5, std::nullopt, std::nullopt}, {"rod", 0.8, LinkFramePoint{50.0, 2.0}, 2e-3}},
+                        {},
+                        {g, {{"crank", -3.0}}, {{"rod", "C", 0, Eigen::Vector2d(-500.0, 0.0)}}}});
+  add("excavator-boom", {{{"boom", 50.0, LinkFramePoint{1.4, 0.05}, 30.0}},
+                         {},
+                         {g, {}, {{"boom", "tip", 0, Eigen::Vector2d(0.0, -2000.0)}}}});
   return cases;
 }
 

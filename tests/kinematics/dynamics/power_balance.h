@@ -1,11 +1,14 @@
 #pragma once
 // The power balance of a linkage at one pose, computed from the pose alone (not from the
-// force solver's bodies): driving power T·ω2 plus the power of the external loads and of
-// gravity equals the rate of change of kinetic energy Σ(m v_G·a_G + I ω α), since ideal
-// joints do no work. Used to check inverse_dynamics.h on every sample of a sweep.
+// force solver's bodies): the driving power (a crank's T·ω2, an actuator's f·q̇, a path
+// drive's F·v) plus the power of the external loads and of gravity equals the rate of change
+// of kinetic energy Σ(m v_G·a_G + I ω α), since ideal joints do no work. Used to check
+// inverse_dynamics.h on every sample of a sweep.
 
+#include "kinematics/dynamics/inverse_dynamics.h"
 #include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/dynamics/rigid_bodies.h"
+#include "kinematics/model/driver.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/vec2.h"
 #include "kinematics/solve/guide_line.h"
@@ -21,7 +24,7 @@ namespace linkwright::test {
 
 /// The terms of the balance (W), and the sum of their magnitudes (the scale of a residual).
 struct PowerBalance {
-  double drive = 0.0;    ///< T·ω2
+  double drive = 0.0;    ///< T·ω2, f·q̇ or F·v
   double loads = 0.0;    ///< Σ T_L·ω + Σ F·v
   double gravity = 0.0;  ///< Σ m g·v_G
   double kinetic = 0.0;  ///< dE/dt = Σ (m v_G·a_G + I ω α)
@@ -59,14 +62,33 @@ inline kinematics::PointId blockPin(const kinematics::Mechanism& m, kinematics::
 
 }  // namespace detail
 
-/// The balance at `pose` for the driving torque `torque` (N·m) and crank speed `omega2`.
+/// The driving power (W) at `p` of the forces `f` solved for it, from the pose's rates: the
+/// crank's T times its ω (tip about pivot), the actuator's f times its rate of extension
+/// u·(v_C − v_base), the path drive's F·v_P.
+inline double drivePower(const kinematics::Mechanism& m, const kinematics::Pose& p, const kinematics::PoseForces& f) {
+  using namespace kinematics;
+  const double s = *metresPerLengthUnit(m.lengthUnit);
+  const std::size_t point = driverPoint(m)->index;
+  const PointDefinition& def = m.points[point].definition;
+  if (const auto* c = std::get_if<CrankPoint>(&def)) {
+    const Eigen::Vector2d r = p.position[point] - p.position[c->pivot.index];
+    return f.driveTorque * cross(r, p.velocity[point] - p.velocity[c->pivot.index]) / r.squaredNorm();
+  }
+  if (const auto* a = std::get_if<ActuatorPoint>(&def)) {
+    const Eigen::Vector2d u = (p.position[point] - p.position[a->base.index]).normalized();
+    return f.driveAlong * u.dot(s * (p.velocity[point] - p.velocity[a->base.index]));
+  }
+  return f.driveForce.dot(s * p.velocity[point]);
+}
+
+/// The balance at `pose` for the driving power `drive` (W: drivePower, or T·ω2 for a crank).
 inline PowerBalance powerBalance(const kinematics::Mechanism& m, const kinematics::LinkageDynamics& d,
-                                 const kinematics::Pose& p, double torque, double omega2) {
+                                 const kinematics::Pose& p, double drive) {
   using namespace kinematics;
   const double s = *metresPerLengthUnit(m.lengthUnit);
   const Eigen::Vector2d g = d.loads.gravity.value_or(Eigen::Vector2d::Zero());
   PowerBalance b;
-  b.drive = torque * omega2;
+  b.drive = drive;
   b.scale = std::abs(b.drive);
   auto addMass = [&](double mass, double inertia, double w, double alpha, const Eigen::Vector2d& v,
                      const Eigen::Vector2d& a) {

@@ -53,7 +53,8 @@ TEST_CASE("bodiesOf: a four-bar has ground, crank, coupler, rocker and four pins
   CHECK(model->revolutes[2].body == BodyId{2});
   CHECK(model->revolutes[3].hub == BodyId{2});
   CHECK(model->revolutes[3].body == BodyId{3});
-  CHECK(model->driven == BodyId{1});
+  CHECK(model->drive.body == BodyId{1});
+  CHECK(model->drive.kind == DriveKind::Crank);
   CHECK(model->linkBody == std::vector<BodyId>{BodyId{1}, BodyId{2}, BodyId{3}});
   CHECK(model->mobility() == 1);
   CHECK(model->unknowns() == 9);  // seed 004's 9×9 system

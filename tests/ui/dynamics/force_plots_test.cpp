@@ -114,3 +114,33 @@ TEST_CASE("on a time base the force plots run against time, or the input as the 
   CHECK(torque.back().x() == Approx(360.0).margin(1e-12));
   CHECK(panel.torqueChart()->xAxis()->titleText() == "crank angle [deg]");
 }
+
+TEST_CASE("an arm's force chart shows its joint torques, an actuator's its force", "[forces][plots][driven]") {
+  k::Design arm = *k::designForExample("seed-arm");
+  arm.dynamics.links = {{"upper", 2.0, k::LinkFramePoint{0.15, 0.0}, 0.02},
+                        {"forearm", 1.5, std::nullopt, std::nullopt}};
+  MechanismDocument doc;
+  doc.reset(arm);
+  ForceResults forces(&doc);
+  forces.setEnabled(true);
+  ForcePlotPanel panel(&doc, &forces);
+  panel.resize(900, 600);
+  panel.show();
+  const k::ForceSweep& f = *forces.cycleForces();
+  REQUIRE(okSamples(f) > 0);
+  CHECK(panel.torqueChart()->chart()->title() == "Joint torques");
+  const QList<QPointF> shoulder = plotted(panel.torqueChart()->segments(0));
+  const QList<QPointF> elbow = plotted(panel.torqueChart()->segments(1));
+  REQUIRE(static_cast<std::size_t>(shoulder.size()) == okSamples(f));
+  CHECK(shoulder.front() == QPointF(0.0, f.jointTorque.front().x()));  // on the time axis
+  CHECK(elbow.back().y() == f.jointTorque.back().y());
+
+  k::Design boom = *k::designForExample("excavator-boom");
+  boom.dynamics.links = {{"boom", 50.0, std::nullopt, std::nullopt}};
+  doc.reset(boom);
+  const k::ForceSweep& g = *forces.cycleForces();
+  CHECK(panel.torqueChart()->chart()->title() == "Drive force");
+  const QList<QPointF> axial = plotted(panel.torqueChart()->segments(0));
+  REQUIRE(static_cast<std::size_t>(axial.size()) == okSamples(g));
+  CHECK(axial.front().y() == g.driveAlong.front());
+}
