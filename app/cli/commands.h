@@ -36,6 +36,7 @@ struct GridDefaults {
   /// What --from, --to, --step and a law's start are in: degrees for a crank, the length
   /// unit for a path or actuator driver.
   kinematics::InputKind input = kinematics::InputKind::Angle;
+  std::string lengthUnit = "mm";  ///< the linkage's: a linear driver's table names it
   /// The grid value `value` (degrees or length) as the driver's coordinate (rad or length).
   double toInput(double value) const;
 };

@@ -1,10 +1,10 @@
 #include "app/cli/commands.h"
 
+#include "kinematics/io/law_table_csv.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -18,57 +18,23 @@ using k::Error;
 using k::ErrorCode;
 
 constexpr long long kDefaultTimeSamples = 361;
-constexpr std::uintmax_t kMaxTableBytes = 64u << 20;
 
 Error badValue(const std::string& option, const std::string& why) {
   return Error{ErrorCode::InvalidValue, option, option + " " + why};
 }
 
-std::optional<double> parseCell(std::string cell) {
-  while (!cell.empty() && (cell.back() == '\r' || cell.back() == ' ')) cell.pop_back();
-  while (!cell.empty() && cell.front() == ' ') cell.erase(cell.begin());
-  double value = 0.0;
-  const auto [end, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
-  if (ec != std::errc{} || end != cell.data() + cell.size() || cell.empty()) return std::nullopt;
-  return value;
-}
-
-// A measured θ(t): a header naming the time in s and the angle in degrees or radians
-// ("time_s,crank_angle_deg"), then one row per instant.
-k::Result<k::TableLaw> readLawTable(const std::string& path) {
-  // A table is a file of text: not a device or a pipe, and not larger than a measurement is.
+// A measured q(t) (io/law_table_csv.h), from a regular file: not a device or a pipe.
+k::Result<k::TableLaw> readLawTable(const std::string& path, const GridDefaults& d) {
   std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error) || std::filesystem::file_size(path, error) > kMaxTableBytes)
+  if (!std::filesystem::is_regular_file(path, error) ||
+      std::filesystem::file_size(path, error) > k::io::kMaxLawTableBytes)
     return badValue("--law-table",
                     path + " cannot be opened for reading as a table (a regular file of at most 64 MiB)");
-  std::ifstream file(path);
+  std::ifstream file(path, std::ios::binary);
   if (!file) return badValue("--law-table", path + " cannot be opened for reading");
-  std::string header;
-  std::getline(file, header);
-  if (!header.empty() && header.back() == '\r') header.pop_back();
-  const std::size_t comma = header.find(',');
-  const std::string angleName = comma == std::string::npos ? "" : header.substr(comma + 1);
-  const bool degrees = angleName.size() > 4 && angleName.ends_with("_deg");
-  const bool radians = angleName.size() > 4 && angleName.ends_with("_rad");
-  if (header.substr(0, comma) != "time_s" || !(degrees || radians))
-    return badValue("--law-table", path +
-                                       ": the first line must name the columns time_s and the angle in _deg or "
-                                       "_rad, e.g. time_s,crank_angle_deg (got '" +
-                                       header + "')");
-  std::vector<double> time, angle;
-  std::string line;
-  for (int row = 2; std::getline(file, line); ++row) {
-    if (line.empty() || line == "\r") continue;
-    const std::size_t at = line.find(',');
-    const auto t = parseCell(line.substr(0, at));
-    const auto q = at == std::string::npos ? std::nullopt : parseCell(line.substr(at + 1));
-    if (!t || !q)
-      return badValue("--law-table",
-                      path + " line " + std::to_string(row) + ": expected two numbers (got '" + line + "')");
-    time.push_back(*t);
-    angle.push_back(degrees ? k::degToRad(*q) : *q);
-  }
-  auto law = k::makeTableLaw(std::move(time), std::move(angle));
+  std::ostringstream text;
+  text << file.rdbuf();
+  auto law = k::io::readLawTableCsv(text.str(), d.input, d.lengthUnit);
   if (!law) return badValue("--law-table", path + ": " + law.error().message);
   return law;
 }
@@ -81,7 +47,7 @@ k::Result<k::MotionLaw> lawFor(const Invocation& inv, const GridDefaults& d, dou
   if (name == "ramp") return k::MotionLaw{k::RampToSpeed{start, omega, *inv.rampTime}};
   if (name == "cycloidal") return k::MotionLaw{k::CycloidalRise{start, d.toInput(*inv.riseDeg), *inv.duration}};
   if (name == "345") return k::MotionLaw{k::PolynomialRise{start, d.toInput(*inv.riseDeg), *inv.duration}};
-  auto table = readLawTable(*inv.lawTable);
+  auto table = readLawTable(*inv.lawTable, d);
   if (!table) return table.error();
   return k::MotionLaw{std::move(*table)};
 }

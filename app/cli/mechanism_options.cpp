@@ -99,6 +99,7 @@ kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& inv) {
   if (!r) return r.error();
   if (auto e = applyFourBarOptions(inv, r.value())) return *e;
   r.value().defaults.input = k::inputKind(r.value().mechanism);
+  r.value().defaults.lengthUnit = r.value().mechanism.lengthUnit;
   return r;
 }
 

@@ -109,3 +109,18 @@ TEST_CASE("a linear driver's grid options are refused while its law applies", "[
   CHECK(r.code != 0);
   CHECK_THAT(r.err, Catch::Contains("--to does not apply: this linkage's driver follows a motion law in time"));
 }
+
+TEST_CASE("a cylinder follows a measured s(t) table in metres", "[cli][driven][law]") {
+  const std::string path = (std::filesystem::temp_directory_path() / "linkwright_cylinder_table.csv").string();
+  {
+    std::ofstream f(path, std::ios::binary);
+    f << "time_s,actuator_length_m\n0,1.2\n1,1.3\n2,1.5\n3,1.6\n";
+  }
+  const auto r = runCliCommand(
+      {"analyze", "--example", "excavator-boom", "--law", "table", "--law-table", path, "--samples", "4"});
+  std::filesystem::remove(path);
+  REQUIRE(r.code == 0);
+  const auto columns = columnsOf(r.out);
+  CHECK(columns.at("actuator_length_m") == std::vector<double>{1.2, 1.3, 1.5, 1.6});
+  CHECK(columns.at("time_s") == std::vector<double>{0.0, 1.0, 2.0, 3.0});
+}

@@ -443,7 +443,8 @@ void DrivePanel::editDrive(int index) {
 
 void DrivePanel::chooseTable() {
   const QString path =
-      QFileDialog::getOpenFileName(this, tr("Load a θ(t) table"), QString(), tr("CSV tables (*.csv);;All files (*)"));
+      QFileDialog::getOpenFileName(this, tr("Load a q(t) table: a crank's angle or a linear driver's position in time"),
+                                   QString(), tr("CSV tables (*.csv);;All files (*)"));
   if (path.isEmpty()) {
     refresh();  // the law box goes back to the drive the design has
     return;
@@ -452,7 +453,7 @@ void DrivePanel::chooseTable() {
 }
 
 std::optional<QString> DrivePanel::loadTable(const QString& path) {
-  auto read = readLawTableFile(path);
+  auto read = readLawTableFile(path, m_document->mechanism());
   if (auto* why = std::get_if<QString>(&read)) {
     showOutcome(*why);
     return *why;

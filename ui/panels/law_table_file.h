@@ -1,11 +1,10 @@
 #pragma once
-// A measured θ(t) for a table law, read from a CSV file in the format `linkwright-cli
-// --law-table` reads: a header naming the time in s and the angle in degrees or radians
-// ("time_s,crank_angle_deg"), then one "time,angle" row per instant. The spline is fitted by
-// the core (makeTableLaw), which also checks the rows.
-// (The CLI's reader lives in app/cli; both should move to kinematics/io, where the GUI and the
-// CLI would share one.)
+// A measured q(t) for a table law, read from a CSV file by the core's reader
+// (kinematics/io/law_table_csv.h, which the CLI's --law-table uses too): a header naming the
+// time in s and the position with its unit (a crank's angle in _deg or _rad, a linear driver's
+// position in the linkage's length unit), then one "time,position" row per instant.
 
+#include "kinematics/model/mechanism.h"
 #include "kinematics/solve/motion_law.h"
 
 #include <QString>
@@ -14,7 +13,9 @@
 
 namespace linkwright::ui {
 
-/// The table law in the file at `path`, or a sentence saying which line is wrong and why.
-std::variant<kinematics::TableLaw, QString> readLawTableFile(const QString& path);
+/// The table law in the file at `path` for `mechanism`'s driver, or a sentence naming the
+/// file and saying which line is wrong and why.
+std::variant<kinematics::TableLaw, QString> readLawTableFile(const QString& path,
+                                                             const kinematics::Mechanism& mechanism);
 
 }  // namespace linkwright::ui
