@@ -19,15 +19,12 @@ namespace k = kinematics;
 
 DimensionsPanel::DimensionsPanel(MechanismDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document), m_fourBar(new FourBarLengthsEditor(document, this)),
-      m_box(new QGroupBox(tr("Dimensions"), this)), m_grid(new QGridLayout(m_box)), m_message(new QLabel(this)) {
+      m_box(new QGroupBox(tr("Dimensions"), this)), m_grid(new QGridLayout(m_box)), m_message(new RefusalLabel(this)) {
   auto* layout = new QVBoxLayout(this);
   m_grid->setColumnStretch(1, 1);
   m_grid->setVerticalSpacing(3);
   layout->addWidget(m_fourBar);
   layout->addWidget(m_box);
-  m_message->setWordWrap(true);
-  m_message->setStyleSheet("color: #b00020;");
-  m_message->hide();
   layout->addWidget(m_message);
   connect(m_fourBar, &FourBarLengthsEditor::edited, this, &DimensionsPanel::showOutcome);
   connect(document, &MechanismDocument::changed, this, [this](Changes what) {
@@ -45,7 +42,7 @@ QComboBox* DimensionsPanel::branchBox(k::PointId point) const {
   return nullptr;
 }
 
-QString DimensionsPanel::refusalMessage() const { return m_message->isHidden() ? QString() : m_message->text(); }
+QString DimensionsPanel::refusalMessage() const { return m_message->refusal(); }
 
 void DimensionsPanel::rebuild() {
   for (QWidget* w : m_rows) delete w;
@@ -144,12 +141,7 @@ void DimensionsPanel::editBranch(k::PointId point, int index) {
 }
 
 void DimensionsPanel::showOutcome(const std::optional<QString>& refusal) {
-  if (refusal) {
-    m_message->setText(tr("Not applied: %1").arg(*refusal));
-    m_message->show();
-  } else {
-    m_message->hide();
-  }
+  m_message->showOutcome(refusal);
   refresh();  // a refused value snaps back to the document's
 }
 

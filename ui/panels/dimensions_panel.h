@@ -8,6 +8,7 @@
 // (a dyad attached, another document), so typing keeps focus.
 
 #include "ui/panels/dimension_fields.h"
+#include "ui/panels/refusal_label.h"
 
 #include <QWidget>
 
@@ -56,7 +57,7 @@ private:
   bool m_wasFourBar = false;  // a four-bar again (undo after attaching a dyad): its sliders need ranges
   QGroupBox* m_box;
   QGridLayout* m_grid;
-  QLabel* m_message;
+  RefusalLabel* m_message;
   std::vector<DimensionField> m_fields;
   std::vector<QDoubleSpinBox*> m_editors;
   std::vector<std::pair<kinematics::PointId, QComboBox*>> m_branches;

@@ -140,12 +140,12 @@ DrivePanel::DrivePanel(MechanismDocument* document, Settings* settings, QWidget*
     : QWidget(parent), m_document(document), m_settings(settings), m_law(new QComboBox(this)),
       m_speedUnit(new QComboBox(this)), m_samples(new QSpinBox(this)), m_tableName(new QLabel(this)),
       m_loadTable(new QPushButton(tr("Load CSV…"), this)), m_axis(new QComboBox(this)), m_form(nullptr),
-      m_message(new QLabel(this)) {
+      m_message(new RefusalLabel(this)) {
   auto* layout = new QVBoxLayout(this);
   auto* box = new QGroupBox(tr("Drive"), this);
   m_form = new QFormLayout(box);
   m_law->addItems({tr("Constant speed on a grid"), tr("Constant speed in time"), tr("Ramp to speed"),
-                   tr("Cycloidal rise"), tr("3-4-5 polynomial rise"), tr("Table θ(t) from CSV…")});
+                   tr("Cycloidal rise"), tr("3-4-5 polynomial rise"), tr("Table from CSV…")});
   m_law->setToolTip(
       tr("Constant speed on a grid has one rate and acceleration at every input value; the others move the input "
          "in time by a motion law and analyse it on a time base"));
@@ -198,9 +198,6 @@ DrivePanel::DrivePanel(MechanismDocument* document, Settings* settings, QWidget*
   m_form->addRow(tr("Plot x axis"), m_axis);
   layout->addWidget(box);
   m_message->setObjectName(QStringLiteral("drive_message"));
-  m_message->setWordWrap(true);
-  m_message->setStyleSheet("color: #b00020;");
-  m_message->hide();
   layout->addWidget(m_message);
 
   connect(m_law, &QComboBox::currentIndexChanged, this, [this](int index) {
@@ -222,7 +219,7 @@ DrivePanel::DrivePanel(MechanismDocument* document, Settings* settings, QWidget*
   refresh();
 }
 
-QString DrivePanel::refusalMessage() const { return m_message->isHidden() ? QString() : m_message->text(); }
+QString DrivePanel::refusalMessage() const { return m_message->refusal(); }
 
 DrivePanel::Drive DrivePanel::driveOf(const k::Design& design) {
   if (!design.time) return Drive::AngleGrid;
@@ -471,12 +468,7 @@ std::optional<QString> DrivePanel::loadTable(const QString& path) {
 }
 
 void DrivePanel::showOutcome(const std::optional<QString>& refusal) {
-  if (refusal) {
-    m_message->setText(tr("Not applied: %1").arg(*refusal));
-    m_message->show();
-  } else {
-    m_message->hide();
-  }
+  m_message->showOutcome(refusal);
   refresh();  // a refused value snaps back to the document's
 }
 

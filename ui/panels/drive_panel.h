@@ -9,6 +9,7 @@
 // refused value snaps back and a line says why, as in the dimensions panel.
 
 #include "ui/document/mechanism_document.h"
+#include "ui/panels/refusal_label.h"
 
 #include <QString>
 #include <QWidget>
@@ -79,7 +80,7 @@ private:
   QPushButton* m_loadTable;
   QComboBox* m_axis;
   QFormLayout* m_form;
-  QLabel* m_message;
+  RefusalLabel* m_message;
   QWidget* m_speedRow = nullptr;
   QWidget* m_tableRow = nullptr;
   QString m_tablePath;
