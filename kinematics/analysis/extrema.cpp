@@ -15,7 +15,7 @@ double parameterAt(const SweepSpec& spec, std::size_t j) {
 
 DriverState driverAt(const SweepSpec& spec, double parameter) {
   if (!spec.time) return {parameter, spec.omega, spec.alpha};
-  const MotionState s = motionAt(spec.time->law, parameter);
+  const DriverState s = motionAt(spec.time->law, parameter);
   return {s.position, s.velocity, s.acceleration};
 }
 
@@ -31,12 +31,12 @@ struct Search {
     const DriverState driver = driverAt(spec, parameter);
     const PoseReport r = solvePoseInto(mechanism, driver, {true, true}, pose);
     if (r.status != PoseStatus::Ok) return std::nullopt;
-    return quantity(pose, driver.angle);
+    return quantity(pose, driver.position);
   }
 
   Extremum at(double value, double parameter, bool refined) const {
     if (!spec.time) return {value, parameter, refined};
-    return {value, driverAt(spec, parameter).angle, refined, parameter};
+    return {value, driverAt(spec, parameter).position, refined, parameter};
   }
 
   Extremum maximize(double lo, double hi, double sign, const Extremum& start, double tolerance) {

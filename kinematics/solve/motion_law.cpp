@@ -14,7 +14,7 @@ constexpr double kTwoPi = 2.0 * kPi;
 
 // A rise of `h` over `T` from `q0`, with the normalised profile s(u), s'(u), s''(u).
 template <typename Profile>
-MotionState rise(double q0, double h, double T, double t, Profile profile) {
+DriverState rise(double q0, double h, double T, double t, Profile profile) {
   if (t <= 0.0) return {q0, 0.0, 0.0};
   if (t >= T) return {q0 + h, 0.0, 0.0};
   const auto [s, ds, dds] = profile(t / T);
@@ -23,27 +23,27 @@ MotionState rise(double q0, double h, double T, double t, Profile profile) {
 
 struct StateAt {
   double t;
-  MotionState operator()(const ConstantVelocity& l) const { return {l.start + l.velocity * t, l.velocity, 0.0}; }
-  MotionState operator()(const RampToSpeed& l) const {
+  DriverState operator()(const ConstantVelocity& l) const { return {l.start + l.velocity * t, l.velocity, 0.0}; }
+  DriverState operator()(const RampToSpeed& l) const {
     if (t <= 0.0) return {l.start, 0.0, 0.0};
     const double a = l.velocity / l.rampTime;
     if (t <= l.rampTime) return {l.start + 0.5 * a * t * t, a * t, a};
     return {l.start + 0.5 * l.velocity * l.rampTime + l.velocity * (t - l.rampTime), l.velocity, 0.0};
   }
-  MotionState operator()(const CycloidalRise& l) const {
+  DriverState operator()(const CycloidalRise& l) const {
     return rise(l.start, l.rise, l.duration, t, [](double u) {
       const double w = kTwoPi * u;
       return std::array<double, 3>{u - std::sin(w) / kTwoPi, 1.0 - std::cos(w), kTwoPi * std::sin(w)};
     });
   }
-  MotionState operator()(const PolynomialRise& l) const {
+  DriverState operator()(const PolynomialRise& l) const {
     return rise(l.start, l.rise, l.duration, t, [](double u) {
       const double u2 = u * u;
       return std::array<double, 3>{u2 * u * (10.0 - 15.0 * u + 6.0 * u2), u2 * (30.0 - 60.0 * u + 30.0 * u2),
                                    u * (60.0 - 180.0 * u + 120.0 * u2)};
     });
   }
-  MotionState operator()(const TableLaw& l) const {
+  DriverState operator()(const TableLaw& l) const {
     const std::vector<double>& x = l.time;
     const std::vector<double>& y = l.position;
     const std::vector<double>& m = l.curvature;
@@ -138,7 +138,7 @@ struct CheckLaw {
                              l.curvature[i] * l.curvature[i + 1] < 0.0
                                  ? t0 + (t1 - t0) * l.curvature[i] / (l.curvature[i] - l.curvature[i + 1])
                                  : t0}) {
-        const MotionState s = StateAt{t}(l);
+        const DriverState s = StateAt{t}(l);
         peakVelocity = std::max(peakVelocity, std::abs(s.velocity));
       }
       peakAcceleration = std::max({peakAcceleration, std::abs(l.curvature[i]), std::abs(l.curvature[i + 1])});
@@ -151,7 +151,7 @@ struct CheckLaw {
 
 }  // namespace
 
-MotionState motionAt(const MotionLaw& law, double t) { return std::visit(StateAt{t}, law); }
+DriverState motionAt(const MotionLaw& law, double t) { return std::visit(StateAt{t}, law); }
 
 std::optional<Error> checkMotionLaw(const MotionLaw& law, InputKind kind) {
   return std::visit(CheckLaw{inputDomain(kind)}, law);

@@ -19,20 +19,13 @@
 
 #include "kinematics/model/driver.h"
 #include "kinematics/model/result.h"
+#include "kinematics/solve/pose.h"
 
 #include <optional>
 #include <variant>
 #include <vector>
 
 namespace linkwright::kinematics {
-
-/// The driver's coordinate and its first two time derivatives at one instant.
-struct MotionState {
-  double position = 0.0;
-  double velocity = 0.0;
-  double acceleration = 0.0;
-  bool operator==(const MotionState&) const = default;
-};
 
 struct ConstantVelocity {
   double start = 0.0;     ///< q at t = 0
@@ -73,7 +66,7 @@ struct TableLaw {
 using MotionLaw = std::variant<ConstantVelocity, RampToSpeed, CycloidalRise, PolynomialRise, TableLaw>;
 
 /// The law's state at time `t` (s). The law must be valid (checkMotionLaw).
-MotionState motionAt(const MotionLaw& law, double t);
+DriverState motionAt(const MotionLaw& law, double t);
 
 /// A table law through (time, position) points, or an Error naming the row: fewer than four
 /// points, a non-finite value, or times not strictly increasing.

@@ -1,6 +1,6 @@
 #pragma once
 // The request (what to compute, and how hard Newton tries for free points), the driver state
-// (crank angle, ω, α) and the pose (the solved state of every point and link at one input)
+// (its input, rate and acceleration) and the pose (the solved state of every point and link at one input)
 // that the pose solver fills.
 
 #include "kinematics/model/ids.h"
@@ -47,11 +47,14 @@ struct SolveRequest {
   bool operator==(const SolveRequest&) const = default;
 };
 
-/// The crank's state: angle (rad, CCW from +x), ω (rad/s, CCW positive), α (rad/s²).
+/// The driver's state: its input q and the first two time derivatives (model/driver.h): a
+/// crank's angle (rad, CCW from +x), ω (rad/s, CCW positive) and α (rad/s²); a linear
+/// driver's position (length unit), speed and acceleration. A motion law gives one at every
+/// instant (motion_law.h).
 struct DriverState {
-  double angle = 0.0;
-  double omega = 0.0;
-  double alpha = 0.0;
+  double position = 0.0;
+  double velocity = 0.0;
+  double acceleration = 0.0;
   bool operator==(const DriverState&) const = default;
 };
 

@@ -98,23 +98,25 @@ struct Solver {
   void crank(Lane& lane, std::size_t i, const CrankPoint& c) const {
     const DriverState& driver = *lane.driver;
     Pose& pose = *lane.pose;
-    const double phi = driver.angle + c.phase;
+    const double phi = driver.position + c.phase;
     const Eigen::Vector2d radial(std::cos(phi), std::sin(phi));
     const Eigen::Vector2d o = pose.position[c.pivot.index];
     pose.position[i] = o + c.length * radial;
-    if (wantVelocity) pose.velocity[i] = c.length * driver.omega * perp(radial);
+    if (wantVelocity) pose.velocity[i] = c.length * driver.velocity * perp(radial);
     if (wantAcceleration)
-      pose.acceleration[i] = c.length * (driver.alpha * perp(radial) - driver.omega * driver.omega * radial);
+      pose.acceleration[i] =
+          c.length * (driver.acceleration * perp(radial) - driver.velocity * driver.velocity * radial);
   }
 
   // The driven point on its path: v = ṡ·p'(s), a = s̈·p'(s) + ṡ²·p''(s) (path_shape.h).
   void onPath(Lane& lane, std::size_t i, const PathPoint& d) const {
     const DriverState& driver = *lane.driver;
     Pose& pose = *lane.pose;
-    const PathState at = pathAt(d.path, driver.angle);
+    const PathState at = pathAt(d.path, driver.position);
     pose.position[i] = at.point;
-    if (wantVelocity) pose.velocity[i] = driver.omega * at.tangent;
-    if (wantAcceleration) pose.acceleration[i] = driver.alpha * at.tangent + driver.omega * driver.omega * at.curvature;
+    if (wantVelocity) pose.velocity[i] = driver.velocity * at.tangent;
+    if (wantAcceleration)
+      pose.acceleration[i] = driver.acceleration * at.tangent + driver.velocity * driver.velocity * at.curvature;
   }
 
   // The actuator's end: an RRR dyad whose second length is the input q. Differentiating
@@ -122,7 +124,7 @@ struct Solver {
   bool actuator(Lane& lane, std::size_t i, const ActuatorPoint& a) const {
     const DriverState& driver = *lane.driver;
     Pose& pose = *lane.pose;
-    const double q = driver.angle;
+    const double q = driver.position;
     const RrrCandidates cand =
         q > 0.0 ? rrrCandidates(pose.position[a.first.index], a.length, pose.position[a.base.index], q)
                 : RrrCandidates{AssemblyFailure::TooClose};
@@ -146,13 +148,13 @@ struct Solver {
     }
     const Eigen::Vector2d& v1 = pose.velocity[a.first.index];
     const Eigen::Vector2d& vb = pose.velocity[a.base.index];
-    const Eigen::Vector2d v = rrrSolve(r1, r2, inverse, {r1.dot(v1), r2.dot(vb) + q * driver.omega});
+    const Eigen::Vector2d v = rrrSolve(r1, r2, inverse, {r1.dot(v1), r2.dot(vb) + q * driver.velocity});
     pose.velocity[i] = v;
     if (!wantAcceleration) return true;
     pose.acceleration[i] = rrrSolve(r1, r2, inverse,
                                     {r1.dot(pose.acceleration[a.first.index]) - (v - v1).squaredNorm(),
                                      r2.dot(pose.acceleration[a.base.index]) - (v - vb).squaredNorm() +
-                                         driver.omega * driver.omega + q * driver.alpha});
+                                         driver.velocity * driver.velocity + q * driver.acceleration});
     return true;
   }
 
@@ -346,9 +348,9 @@ struct Solver {
   void crankLink(Lane& lane, std::size_t k, double phase) const {
     const DriverState& driver = *lane.driver;
     Pose& pose = *lane.pose;
-    pose.linkAngle[k] = wrapAngle(driver.angle + phase);
-    if (wantVelocity) pose.linkOmega[k] = driver.omega;
-    if (wantAcceleration) pose.linkAlpha[k] = driver.alpha;
+    pose.linkAngle[k] = wrapAngle(driver.position + phase);
+    if (wantVelocity) pose.linkOmega[k] = driver.velocity;
+    if (wantAcceleration) pose.linkAlpha[k] = driver.acceleration;
   }
 
   void linkAngle(Lane& lane, std::size_t k) const {
@@ -572,11 +574,11 @@ Result<Pose> solvePose(const Mechanism& m, const DriverState& driver, const Solv
   const InputKind kind = inputKind(m);
   const InputDomain d = inputDomain(kind);
   const bool angle = kind == InputKind::Angle;
-  if (auto e = checkMagnitude(driver.angle, angle ? "input angle" : "input position", d.position, d.positionUnit))
+  if (auto e = checkMagnitude(driver.position, angle ? "input angle" : "input position", d.position, d.positionUnit))
     return *e;
-  if (auto e = checkMagnitude(driver.omega, angle ? "input omega" : d.rateName, d.rate, d.rateUnit)) return *e;
-  if (auto e =
-          checkMagnitude(driver.alpha, angle ? "input alpha" : d.accelerationName, d.acceleration, d.accelerationUnit))
+  if (auto e = checkMagnitude(driver.velocity, angle ? "input omega" : d.rateName, d.rate, d.rateUnit)) return *e;
+  if (auto e = checkMagnitude(driver.acceleration, angle ? "input alpha" : d.accelerationName, d.acceleration,
+                              d.accelerationUnit))
     return *e;
   if (auto e = checkNewtonSettings(request.newton)) return *e;
   Pose pose;
@@ -584,7 +586,7 @@ Result<Pose> solvePose(const Mechanism& m, const DriverState& driver, const Solv
   const PoseReport report = solvePoseInto(m, driver, request, pose);
   if (report.status == PoseStatus::Ok) return pose;
   const ErrorCode code = report.status == PoseStatus::Singular ? ErrorCode::Singular : ErrorCode::NotAssemblable;
-  return Error{code, m.points[report.culprit.index].name, describeFailure(m, report, pose, driver.angle)};
+  return Error{code, m.points[report.culprit.index].name, describeFailure(m, report, pose, driver.position)};
 }
 
 std::string describeFailure(const Mechanism& m, const PoseReport& report, const Pose& pose, double inputAngle) {

@@ -130,7 +130,7 @@ public:
 private:
   void solveOne(std::size_t j) {
     const DriverState driver = sweepDriver(m_spec, j);
-    const double angle = driver.angle;
+    const double angle = driver.position;
     m_out.inputAngle[j] = angle;
     const PoseReport report = solveSample(driver);
     m_out.report[j] = report;
@@ -164,15 +164,15 @@ private:
                                               keep, m_scope, {reports.data(), count});
     std::size_t kept = 0;
     for (; kept < solved; ++kept) {
-      const double angle = drivers[kept].angle;
-      const double previousAngle = kept == 0 ? m_lastAngle : drivers[kept - 1].angle;
+      const double angle = drivers[kept].position;
+      const double previousAngle = kept == 0 ? m_lastAngle : drivers[kept - 1].position;
       const Pose& previous = kept == 0 ? *m_last : m_block[kept - 1];
       if (reports[kept].status == PoseStatus::NotAssemblable ||
           branchAmbiguous(m_mech, m_dyads, m_maxStep, previousAngle, previous, angle, m_block[kept]))
         break;
     }
     for (std::size_t b = 0; b < kept; ++b) {
-      m_out.inputAngle[j + b] = drivers[b].angle;
+      m_out.inputAngle[j + b] = drivers[b].position;
       m_out.report[j + b] = reports[b];
       if (reports[b].status == PoseStatus::Singular) clearRates(m_block[b]);
     }
@@ -186,8 +186,8 @@ private:
   void keepBlockEnd(std::size_t kept, const std::array<DriverState, kMaxBlock>& drivers) {
     std::swap(*m_last, m_block[kept - 1]);
     std::swap(m_before->position, m_block[kept >= 2 ? kept - 2 : 0].position);
-    m_beforeAngle = kept >= 2 ? drivers[kept - 2].angle : m_lastAngle;
-    m_lastAngle = drivers[kept - 1].angle;
+    m_beforeAngle = kept >= 2 ? drivers[kept - 2].position : m_lastAngle;
+    m_lastAngle = drivers[kept - 1].position;
     m_haveBefore = true;
   }
 
@@ -211,7 +211,7 @@ private:
   }
 
   PoseReport solveSample(const DriverState& driver) {
-    const double angle = driver.angle;
+    const double angle = driver.position;
     if (!m_haveLast) return solve(driver, m_request, *m_current);
     m_refineSolves = 0;
     const BranchGuide keep{m_last->branchSign, {}};
@@ -407,12 +407,12 @@ double sweepTime(const SweepSpec& spec, std::size_t index) {
 
 DriverState sweepDriver(const SweepSpec& spec, std::size_t index) {
   if (!spec.time) return {sweepAngle(spec, index), spec.omega, spec.alpha};
-  const MotionState s = motionAt(spec.time->law, sweepTime(spec, index));
+  const DriverState s = motionAt(spec.time->law, sweepTime(spec, index));
   return {s.position, s.velocity, s.acceleration};
 }
 
 double sweepAngle(const SweepSpec& spec, std::size_t index) {
-  if (spec.time) return sweepDriver(spec, index).angle;
+  if (spec.time) return sweepDriver(spec, index).position;
   if (spec.samples <= 1) return spec.fromAngle;
   const double t = static_cast<double>(index) / static_cast<double>(spec.samples - 1);
   return index + 1 == spec.samples ? spec.toAngle : spec.fromAngle + t * (spec.toAngle - spec.fromAngle);

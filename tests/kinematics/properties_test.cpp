@@ -114,7 +114,7 @@ TEST_CASE("Loop closure and analytic rates against time differences of positions
         const DriverState state{insideAngle(rng, l.range), signedLogUniform(rng, 0.1, 100.0),
                                 signedLogUniform(rng, 0.1, 1000.0)};
         CAPTURE(l.lengths.frame, l.lengths.crank, l.lengths.coupler, l.lengths.rocker, toString(l.category),
-                branch == Branch::Open, state.angle, state.omega, state.alpha);
+                branch == Branch::Open, state.position, state.velocity, state.acceleration);
         const auto pose = solvePose(*m, state);
         INFO((pose.ok() ? std::string() : pose.error().message));
         REQUIRE(pose.ok());
@@ -135,7 +135,7 @@ TEST_CASE("Loop closure and analytic rates against time differences of positions
 
         // Step: the crank turns δ = 1e-3 rad per h (δ² ≈ 1e-6 truncation, δ large enough that
         // round-off stays ~ε/δ² ≈ 2e-10 relative for second differences).
-        const double h = 1e-3 / (std::abs(state.omega) + std::sqrt(std::abs(state.alpha)));
+        const double h = 1e-3 / (std::abs(state.velocity) + std::sqrt(std::abs(state.acceleration)));
         const TimeStencil stencil(*m, state, h);
         // Position round-off: B = O2 + a·(cos, sin) carries a few ulps of a; C and P a few dozen
         // roundings of coordinates up to the linkage's size, amplified by 1/sin μ in the dyad

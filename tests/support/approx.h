@@ -111,7 +111,7 @@ public:
   TimeStencil(const kinematics::Mechanism& mechanism, const kinematics::DriverState& state, double h) : m_h(h) {
     for (int k = -2; k <= 2; ++k) {
       const double t = k * h;
-      const double angle = state.angle + state.omega * t + 0.5 * state.alpha * t * t;
+      const double angle = state.position + state.velocity * t + 0.5 * state.acceleration * t * t;
       const auto pose = kinematics::solvePose(mechanism, {angle, 0.0, 0.0}, {false, false});
       INFO("stencil sample t = " << t << ": " << (pose.ok() ? std::string() : pose.error().message));
       REQUIRE(pose.ok());
@@ -155,7 +155,7 @@ inline void checkAllRatesAgainstDifferences(const kinematics::Mechanism& mechani
   const auto pose = kinematics::solvePose(mechanism, state);
   INFO((pose.ok() ? std::string() : pose.error().message));
   REQUIRE(pose.ok());
-  const double h = 1e-3 / (std::abs(state.omega) + std::sqrt(std::abs(state.alpha)));
+  const double h = 1e-3 / (std::abs(state.velocity) + std::sqrt(std::abs(state.acceleration)));
   const TimeStencil stencil(mechanism, state, h);
   const double noise = 64.0 * std::numeric_limits<double>::epsilon() * size / sine;
   for (std::size_t i = 0; i < mechanism.points.size(); ++i) {

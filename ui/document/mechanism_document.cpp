@@ -265,7 +265,7 @@ void MechanismDocument::resweep() {
 void MechanismDocument::solvePoseNow() {
   k::DriverState driver{m_crankAngle, m_design.omega, m_design.alpha};
   if (m_design.time) {
-    const k::MotionState s = k::motionAt(m_design.time->law, m_time);
+    const k::DriverState s = k::motionAt(m_design.time->law, m_time);
     driver = {s.position, s.velocity, s.acceleration};
   }
   const k::PoseReport report = k::solvePoseInto(m_design.mechanism, driver, {true, true}, m_pose);

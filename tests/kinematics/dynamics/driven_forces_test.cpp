@@ -121,7 +121,7 @@ TEST_CASE("the drive force along the input times the input's rate is the drive p
       CAPTURE(j);
       const Pose pose = poseAt(c.mechanism, s, j);
       const double power = linkwright::test::drivePower(c.mechanism, pose, f.at(j));
-      const double rate = sweepDriver(c.spec, j).omega * *metresPerLengthUnit(c.mechanism.lengthUnit);
+      const double rate = sweepDriver(c.spec, j).velocity * *metresPerLengthUnit(c.mechanism.lengthUnit);
       CHECK(f.driveAlong[j] * rate == Approx(power).epsilon(1e-12).margin(1e-12 * std::abs(f.driveAlong[j] * rate)));
       CHECK(f.driveTorque[j] == 0.0);
       ++checked;

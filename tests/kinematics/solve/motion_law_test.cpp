@@ -21,8 +21,8 @@ namespace {
 // Central differences of q and q̇ at t: O(h²) errors, h = 1e-5 of the law's time scale.
 void checkRatesAgainstDifferences(const MotionLaw& law, double t, double timeScale) {
   const double h = 1e-5 * timeScale;
-  const MotionState s = motionAt(law, t);
-  const MotionState before = motionAt(law, t - h), after = motionAt(law, t + h);
+  const DriverState s = motionAt(law, t);
+  const DriverState before = motionAt(law, t - h), after = motionAt(law, t + h);
   const double velocityScale = std::max(1.0, std::abs(s.velocity));
   const double accelerationScale = std::max(1.0 / timeScale, std::abs(s.acceleration));
   CAPTURE(t, s.position, s.velocity, s.acceleration);
@@ -48,11 +48,11 @@ TEST_CASE("every closed-form law's rates are the time derivatives of its positio
 
 TEST_CASE("a ramp starts at rest, accelerates evenly and cruises at its speed", "[motion_law]") {
   const RampToSpeed ramp{1.0, 3.0, 2.0};
-  CHECK(motionAt(ramp, -1.0) == MotionState{1.0, 0.0, 0.0});
-  CHECK(motionAt(ramp, 1.0) == MotionState{1.0 + 0.5 * 1.5 * 1.0, 1.5, 1.5});
+  CHECK(motionAt(ramp, -1.0) == DriverState{1.0, 0.0, 0.0});
+  CHECK(motionAt(ramp, 1.0) == DriverState{1.0 + 0.5 * 1.5 * 1.0, 1.5, 1.5});
   // At the end of the ramp q = q0 + vT/2, and it goes on at v.
   CHECK(motionAt(ramp, 2.0).position == 1.0 + 3.0);
-  CHECK(motionAt(ramp, 3.0) == MotionState{1.0 + 3.0 + 3.0, 3.0, 0.0});
+  CHECK(motionAt(ramp, 3.0) == DriverState{1.0 + 3.0 + 3.0, 3.0, 0.0});
 }
 
 TEST_CASE("a cycloidal rise peaks at 2πh/T² and dwells at both ends", "[motion_law]") {
@@ -61,15 +61,15 @@ TEST_CASE("a cycloidal rise peaks at 2πh/T² and dwells at both ends", "[motion
   // At u = 1/4, sin 2πu is 1: the peak acceleration, exactly.
   CHECK(motionAt(law, T / 4.0).acceleration == within(2.0 * kPi * h / (T * T), 1e-15));
   CHECK(motionAt(law, T / 2.0).velocity == within(2.0 * h / T, 1e-15));
-  CHECK(motionAt(law, 0.0) == MotionState{0.2, 0.0, 0.0});
-  CHECK(motionAt(law, T) == MotionState{0.2 + h, 0.0, 0.0});
-  CHECK(motionAt(law, 2.0 * T) == MotionState{0.2 + h, 0.0, 0.0});
+  CHECK(motionAt(law, 0.0) == DriverState{0.2, 0.0, 0.0});
+  CHECK(motionAt(law, T) == DriverState{0.2 + h, 0.0, 0.0});
+  CHECK(motionAt(law, 2.0 * T) == DriverState{0.2 + h, 0.0, 0.0});
 }
 
 TEST_CASE("a 3-4-5 rise is at mid-stroke at T/2, at 15h/8T", "[motion_law]") {
   const double h = 2.0, T = 4.0;
   const PolynomialRise law{1.0, h, T};
-  const MotionState mid = motionAt(law, T / 2.0);
+  const DriverState mid = motionAt(law, T / 2.0);
   CHECK(mid.position == within(1.0 + h / 2.0, 1e-15));
   CHECK(mid.velocity == within(15.0 * h / (8.0 * T), 1e-15));
   CHECK(mid.acceleration == within(0.0, 1e-15));
@@ -91,7 +91,7 @@ TEST_CASE("a table law reproduces a cubic to round-off, at and between its rows"
   REQUIRE_FALSE(checkMotionLaw(*law).has_value());
   for (double t = 0.0; t <= 2.0; t += 0.0371) {
     CAPTURE(t);
-    const MotionState s = motionAt(*law, t);
+    const DriverState s = motionAt(*law, t);
     CHECK(s.position == within(q(t), 1e-14));
     CHECK(s.velocity == within(dq(t), 1e-13));
     CHECK(s.acceleration == within(ddq(t), 1e-12));

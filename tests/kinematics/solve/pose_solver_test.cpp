@@ -163,11 +163,11 @@ TEST_CASE("solvePoseInto follows a branch guide", "[pose_solver]") {
   const std::vector<signed char> crossed{0, 0, 0, -1};
   REQUIRE(solvePoseInto(*m, state, {}, pose, {crossed, {}}).status == PoseStatus::Ok);
   CHECK(pose.branchSign[kC] == -1);
-  const Pose reference = solveFourBar(kThesis, Branch::Crossed, state.angle, 1.0);
+  const Pose reference = solveFourBar(kThesis, Branch::Crossed, state.position, 1.0);
   CHECK(pose.position[kC] == reference.position[kC]);
 
   // A predicted position picks the nearer candidate, whatever the signs say.
-  const Pose open = solveFourBar(kThesis, Branch::Open, state.angle, 1.0);
+  const Pose open = solveFourBar(kThesis, Branch::Open, state.position, 1.0);
   std::vector<Eigen::Vector2d> predicted(4, Eigen::Vector2d::Zero());
   predicted[kC] = open.position[kC] + Eigen::Vector2d(0.5, -0.5);
   REQUIRE(solvePoseInto(*m, state, {}, pose, {crossed, predicted}).status == PoseStatus::Ok);

@@ -48,7 +48,7 @@ TEST_CASE("on a time base the crank follows the law and every rate is the exact 
     const double t = result->time[j];
     CAPTURE(t);
     CHECK(t == within(0.01 * static_cast<double>(j), 1e-15));
-    const MotionState s = motionAt(law, t);
+    const DriverState s = motionAt(law, t);
     CHECK(result->inputAngle[j] == s.position);
     CHECK(result->linkOmega[kCrank][j] == s.velocity);
     CHECK(result->linkAlpha[kCrank][j] == s.acceleration);
@@ -60,7 +60,7 @@ TEST_CASE("on a time base the crank follows the law and every rate is the exact 
     }
   }
   // While the crank accelerates, the rocker's α is not what ω₂ alone gives: the α₂ term shows.
-  const MotionState s = motionAt(law, 1.0);
+  const DriverState s = motionAt(law, 1.0);
   const Pose withoutAlpha = solvePose(m, {s.position, s.velocity, 0.0}).value();
   CHECK(std::abs(result->linkAlpha[kRocker][100] - withoutAlpha.linkAlpha[kRocker]) > 1e-3);
 }
@@ -72,7 +72,7 @@ TEST_CASE("on a time base ω and α are the time derivatives of the swept angles
   const SweepSpec spec = rampSpec();
   const MotionLaw& law = spec.time->law;
   const auto at = [&](double t) {
-    const MotionState s = motionAt(law, t);
+    const DriverState s = motionAt(law, t);
     return solvePose(m, {s.position, s.velocity, s.acceleration}).value();
   };
   const double h = 1e-5;
