@@ -97,3 +97,21 @@ TEST_CASE("stepping moves the crank by the chosen angle", "[ui][animation]") {
   animator.stepBackward();
   CHECK(kinematics::radToDeg(doc.crankAngle()) == Approx(20.0));
 }
+
+TEST_CASE("a linear input on a grid is moved, stepped and named in its length unit", "[ui][panels][driven]") {
+  ui::MechanismDocument doc;
+  kinematics::Design boom = *kinematics::designForExample("excavator-boom");
+  boom.time.reset();  // its grid: the cylinder from 1.2 to 1.9 m
+  doc.reset(boom);
+  ui::CrankAnimator animator(&doc);
+  ui::MotionPanel motion(&doc, &animator);
+  CHECK(motion.stepBox()->suffix() == " m");
+  CHECK(motion.stepBox()->value() == Approx(0.07));  // a tenth of the grid
+  motion.positionSlider()->setValue(ui::MotionPanel::kTimeSliderSteps / 2);
+  CHECK(doc.crankAngle() == Approx(1.55).epsilon(1e-12));
+  CHECK(motion.positionText() == "Actuator A–C length = 1.55 m");
+  animator.stepForward();
+  CHECK(doc.crankAngle() == Approx(1.62).epsilon(1e-12));
+  CHECK(doc.analysis().inputRange.ranges.size() == 1);
+  CHECK_FALSE(doc.analysis().inputRange.fullRotation);
+}

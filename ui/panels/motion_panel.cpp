@@ -22,6 +22,7 @@
 #include <QStyle>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace linkwright::ui {
@@ -87,31 +88,50 @@ MotionPanel::MotionPanel(MechanismDocument* document, CrankAnimator* animator, Q
 QString MotionPanel::positionText() const { return m_positionText->text(); }
 
 void MotionPanel::refreshDesign() {
-  const bool inTime = m_document->onTimeBase();
-  // A new time span starts with a tenth of it as the step.
-  const auto& time = m_document->design().time;
-  const double span = time ? time->toTime - time->fromTime : 0.0;
-  if (inTime && span > 0.0 && span != m_span) m_animator->setStepTime(span / 10.0);
-  const bool stepChanged = span != m_span;
+  const k::Design& design = m_document->design();
+  const Scale scale = m_document->onTimeBase()                                 ? Scale::Time
+                      : k::inputKind(design.mechanism) == k::InputKind::Length ? Scale::LinearInput
+                                                                               : Scale::CrankAngle;
+  const double span = scale == Scale::Time          ? design.time->toTime - design.time->fromTime
+                      : scale == Scale::LinearInput ? design.toDeg - design.fromDeg
+                                                    : 0.0;
+  // A new time span or linear grid starts with a tenth of it as the step.
+  const bool spanChanged = span != m_span;
+  if (span > 0.0 && spanChanged) {
+    if (scale == Scale::Time) m_animator->setStepTime(span / 10.0);
+    else m_animator->setStepAngle(span / 10.0);
+  }
   m_span = span;
-  if (inTime != m_inTime || (inTime && stepChanged)) {
-    m_inTime = inTime;
+  if (scale != m_scale || (scale != Scale::CrankAngle && spanChanged)) {
+    m_scale = scale;
     const QSignalBlocker blockStep(m_step);
     const QSignalBlocker blockSlider(m_position);
-    if (inTime) {
+    const QString unit = QString::fromStdString(design.mechanism.lengthUnit);
+    switch (scale) {
+    case Scale::Time:
       m_step->setRange(0.001, 1e6);
       m_step->setDecimals(3);
       m_step->setSuffix(tr(" s"));
       m_step->setValue(m_animator->stepTime());
       m_step->setToolTip(tr("Step time"));
       m_position->setRange(0, kTimeSliderSteps);
-    } else {
+      break;
+    case Scale::LinearInput:
+      m_step->setRange(std::max(span, 1e-12) / 1000.0, std::max(span, 1e-12));
+      m_step->setDecimals(4);
+      m_step->setSuffix(QStringLiteral(" ") + unit);
+      m_step->setValue(m_animator->stepAngle());
+      m_step->setToolTip(tr("Step of the input"));
+      m_position->setRange(0, kTimeSliderSteps);
+      break;
+    case Scale::CrankAngle:
       m_step->setRange(0.01, 180.0);
       m_step->setDecimals(2);
       m_step->setSuffix(tr("°"));
       m_step->setValue(k::radToDeg(m_animator->stepAngle()));
       m_step->setToolTip(tr("Step angle"));
       m_position->setRange(-1800, 1800);
+      break;
     }
   }
   // Other linkages choose a branch per joint, in the dimensions panel.
@@ -124,40 +144,55 @@ void MotionPanel::refreshDesign() {
 
 void MotionPanel::refreshMotion() {
   const QSignalBlocker block(m_position);
-  if (m_inTime) {
-    const k::TimeBase& time = *m_document->design().time;
+  const k::Design& design = m_document->design();
+  const k::Mechanism& m = design.mechanism;
+  const double q = m_document->crankAngle();
+  // The input in its own words: "crank angle θ₂ = 45.0°", "tip path position = 0.15 m".
+  const QString input = k::inputKind(m) == k::InputKind::Angle
+                            ? tr("crank angle θ₂ = %1°").arg(numberText(k::radToDeg(q), 'f', 1))
+                            : tr("%1 = %2 %3")
+                                  .arg(QString::fromStdString(k::inputName(m)), numberText(q, 'g', 5),
+                                       QString::fromStdString(m.lengthUnit));
+  switch (m_scale) {
+  case Scale::Time: {
+    const k::TimeBase& time = *design.time;
     const double span = time.toTime - time.fromTime;
     const double u = span > 0.0 ? (m_document->time() - time.fromTime) / span : 0.0;
     m_position->setValue(static_cast<int>(std::lround(u * kTimeSliderSteps)));
-    const QString t = numberText(m_document->time(), 'f', 3);
-    const k::Mechanism& m = m_document->mechanism();
-    if (k::inputKind(m) == k::InputKind::Angle)
-      m_positionText->setText(
-          tr("t = %1 s · crank angle θ₂ = %2°").arg(t, numberText(k::radToDeg(m_document->crankAngle()), 'f', 1)));
-    else
-      m_positionText->setText(tr("t = %1 s · %2 = %3 %4")
-                                  .arg(t, QString::fromStdString(k::inputName(m)),
-                                       numberText(m_document->crankAngle(), 'g', 5),
-                                       QString::fromStdString(m.lengthUnit)));
+    m_positionText->setText(tr("t = %1 s · %2").arg(numberText(m_document->time(), 'f', 3), input));
     return;
   }
-  const double deg = k::radToDeg(std::remainder(m_document->crankAngle(), 2.0 * k::kPi));
+  case Scale::LinearInput: {
+    const double u = m_span > 0.0 ? (q - design.fromDeg) / m_span : 0.0;
+    m_position->setValue(static_cast<int>(std::lround(std::clamp(u, 0.0, 1.0) * kTimeSliderSteps)));
+    m_positionText->setText(input.left(1).toUpper() + input.mid(1));
+    return;
+  }
+  case Scale::CrankAngle: break;
+  }
+  const double deg = k::radToDeg(std::remainder(q, 2.0 * k::kPi));
   m_position->setValue(static_cast<int>(std::lround(deg * 10.0)));
   m_positionText->setText(tr("Crank angle θ₂ = %1°").arg(numberText(deg, 'f', 1)));
 }
 
 void MotionPanel::onSlider(int value) {
-  if (!m_inTime) {
-    m_document->setCrankAngle(k::degToRad(value / 10.0));
+  const k::Design& design = m_document->design();
+  const double u = static_cast<double>(value) / kTimeSliderSteps;
+  switch (m_scale) {
+  case Scale::CrankAngle: m_document->setCrankAngle(k::degToRad(value / 10.0)); return;
+  case Scale::LinearInput: m_document->setCrankAngle(design.fromDeg + m_span * u); return;
+  case Scale::Time:
+    m_document->setTime(design.time->fromTime + (design.time->toTime - design.time->fromTime) * u);
     return;
   }
-  const k::TimeBase& time = *m_document->design().time;
-  m_document->setTime(time.fromTime + (time.toTime - time.fromTime) * value / kTimeSliderSteps);
 }
 
 void MotionPanel::onStep(double value) {
-  if (m_inTime) m_animator->setStepTime(value);
-  else m_animator->setStepAngle(k::degToRad(value));
+  switch (m_scale) {
+  case Scale::Time: m_animator->setStepTime(value); return;
+  case Scale::LinearInput: m_animator->setStepAngle(value); return;
+  case Scale::CrankAngle: m_animator->setStepAngle(k::degToRad(value)); return;
+  }
 }
 
 void MotionPanel::editBranch() {

@@ -25,13 +25,15 @@ public:
 
   QPushButton* playButton() const { return m_play; }
   QComboBox* branchBox() const { return m_branch; }
-  /// The crank angle (tenths of a degree), or on a time base the instant (thousandths of the span).
+  /// The crank angle (tenths of a degree); a linear input over its grid, or on a time base the
+  /// instant (thousandths of the span).
   QSlider* positionSlider() const { return m_position; }
   QDoubleSpinBox* stepBox() const { return m_step; }
-  /// "Crank angle θ₂ = 30.0°", or on a time base "t = 0.250 s · crank angle θ₂ = 45.0°".
+  /// "Crank angle θ₂ = 30.0°", "actuator A–C length = 1.5 m", or on a time base
+  /// "t = 0.250 s · crank angle θ₂ = 45.0°".
   QString positionText() const;
 
-  /// Slider steps across a time base.
+  /// Slider steps across a time base or a linear input's grid.
   static constexpr int kTimeSliderSteps = 1000;
 
 private:
@@ -52,8 +54,11 @@ private:
   QCheckBox* m_loop;
   QSlider* m_position;
   QLabel* m_positionText;
-  bool m_inTime = false;  // what the slider and the step box are showing
-  double m_span = 0.0;    // the time base's span the step was chosen for, s
+  // What the slider and the step box are showing: a crank's angle (degrees), a linear input
+  // over its grid (its length unit), or the time base's instants (s).
+  enum class Scale { CrankAngle, LinearInput, Time };
+  Scale m_scale = Scale::CrankAngle;
+  double m_span = 0.0;  // the time base's or linear grid's span the step was chosen for
 };
 
 }  // namespace linkwright::ui

@@ -2,6 +2,7 @@
 
 #include "ui/number_text.h"
 
+#include "kinematics/model/driver.h"
 #include "kinematics/model/units.h"
 
 #include <QComboBox>
@@ -103,6 +104,12 @@ void QualityBar::refreshCost() {
     m_cost->setText(tr("%1 samples over %2 s · sweep %3 ms")
                         .arg(spec.samples)
                         .arg(numberText(spec.time->toTime - spec.time->fromTime, 'g', 4))
+                        .arg(m_document->sweepMilliseconds(), 0, 'f', msDecimals));
+  else if (kinematics::inputKind(m_document->mechanism()) == kinematics::InputKind::Length)
+    m_cost->setText(tr("%1 samples over %2 %3 · sweep %4 ms")
+                        .arg(spec.samples)
+                        .arg(numberText(spec.toAngle - spec.fromAngle, 'g', 4))
+                        .arg(QString::fromStdString(m_document->mechanism().lengthUnit))
                         .arg(m_document->sweepMilliseconds(), 0, 'f', msDecimals));
   else
     m_cost->setText(tr("%1 samples/rev · sweep %2 ms")
