@@ -36,16 +36,27 @@ QList<QPointF> plotted(const QList<QLineSeries*>& segments) {
   return points;
 }
 
+// A document on `design` with forces on and the force plots shown.
+struct ShownForces {
+  MechanismDocument doc;
+  ForceResults forces{&doc};
+  ForcePlotPanel panel{&doc, &forces};
+
+  explicit ShownForces(const k::Design& design) {
+    doc.reset(design);
+    forces.setEnabled(true);
+    panel.resize(900, 600);
+    panel.show();
+  }
+};
+
 }  // namespace
 
 TEST_CASE("the force plots show the core's torque, joint magnitudes and polar loci", "[forces][plots]") {
-  MechanismDocument doc;
-  doc.reset(*k::designForExample("funsho-fourbar"));
-  ForceResults forces(&doc);
-  forces.setEnabled(true);
-  ForcePlotPanel panel(&doc, &forces);
-  panel.resize(900, 600);
-  panel.show();
+  ShownForces shown(*k::designForExample("funsho-fourbar"));
+  MechanismDocument& doc = shown.doc;
+  ForceResults& forces = shown.forces;
+  ForcePlotPanel& panel = shown.panel;
   const k::ForceSweep& f = *forces.cycleForces();
   const k::SweepResult& s = *forces.cycleSweep();
 
@@ -93,14 +104,12 @@ TEST_CASE("without masses the force plots hide and say why", "[forces][plots]") 
 
 TEST_CASE("on a time base the force plots run against time, or the input as the document says",
           "[forces][plots][law]") {
-  MechanismDocument doc;
   k::Design timed = *k::designForExample("funsho-fourbar");
   timed.time = k::TimeBase{k::CycloidalRise{0.0, 2.0 * k::kPi, 0.5}, 0.0, 0.5};
-  doc.reset(timed);
-  ForceResults forces(&doc);
-  forces.setEnabled(true);
-  ForcePlotPanel panel(&doc, &forces);
-  const k::SweepResult& s = *forces.cycleSweep();
+  ShownForces shown(timed);
+  MechanismDocument& doc = shown.doc;
+  ForcePlotPanel& panel = shown.panel;
+  const k::SweepResult& s = *shown.forces.cycleSweep();
   REQUIRE(s.time.size() == s.size());
   QList<QPointF> torque = plotted(panel.torqueChart()->segments(0));
   REQUIRE_FALSE(torque.isEmpty());
@@ -119,14 +128,9 @@ TEST_CASE("an arm's force chart shows its joint torques, an actuator's its force
   k::Design arm = *k::designForExample("seed-arm");
   arm.dynamics.links = {{"upper", 2.0, k::LinkFramePoint{0.15, 0.0}, 0.02},
                         {"forearm", 1.5, std::nullopt, std::nullopt}};
-  MechanismDocument doc;
-  doc.reset(arm);
-  ForceResults forces(&doc);
-  forces.setEnabled(true);
-  ForcePlotPanel panel(&doc, &forces);
-  panel.resize(900, 600);
-  panel.show();
-  const k::ForceSweep& f = *forces.cycleForces();
+  ShownForces shown(arm);
+  ForcePlotPanel& panel = shown.panel;
+  const k::ForceSweep& f = *shown.forces.cycleForces();
   REQUIRE(okSamples(f) > 0);
   CHECK(panel.torqueChart()->chart()->title() == "Joint torques");
   const QList<QPointF> shoulder = plotted(panel.torqueChart()->segments(0));
@@ -137,8 +141,8 @@ TEST_CASE("an arm's force chart shows its joint torques, an actuator's its force
 
   k::Design boom = *k::designForExample("excavator-boom");
   boom.dynamics.links = {{"boom", 50.0, std::nullopt, std::nullopt}};
-  doc.reset(boom);
-  const k::ForceSweep& g = *forces.cycleForces();
+  shown.doc.reset(boom);
+  const k::ForceSweep& g = *shown.forces.cycleForces();
   CHECK(panel.torqueChart()->chart()->title() == "Drive force");
   const QList<QPointF> axial = plotted(panel.torqueChart()->segments(0));
   REQUIRE(static_cast<std::size_t>(axial.size()) == okSamples(g));
