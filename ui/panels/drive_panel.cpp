@@ -25,6 +25,7 @@
 #include <QVBoxLayout>
 
 #include <cmath>
+#include <type_traits>
 #include <variant>
 
 namespace linkwright::ui {
@@ -43,63 +44,31 @@ QString boundText(double value) {
   return text.replace(QLatin1String("e+0"), QLatin1String("e")).replace(QLatin1String("e+"), QLatin1String("e"));
 }
 
-// The members several laws share; nullopt where the law has none.
-template <typename Get>
-std::optional<double> member(const k::MotionLaw& law, Get get) {
-  return std::visit([&](const auto& l) { return get(l); }, law);
+// The number behind `field` in a law, in SI units (rad, rad/s, s): the members several laws
+// share, by field; null where the law has none. One table for reading and writing.
+template <typename Law>
+std::conditional_t<std::is_const_v<Law>, const double*, double*> lawNumber(Law& l, Field field) {
+  if constexpr (requires { l.start; })
+    if (field == Field::Start) return &l.start;
+  if constexpr (requires { l.velocity; })
+    if (field == Field::Speed) return &l.velocity;
+  if constexpr (requires { l.rise; })
+    if (field == Field::Rise) return &l.rise;
+  if constexpr (requires { l.duration; })
+    if (field == Field::Duration) return &l.duration;
+  if constexpr (requires { l.rampTime; })
+    if (field == Field::RampTime) return &l.rampTime;
+  return nullptr;
 }
 
-std::optional<double> lawStart(const k::MotionLaw& law) {
-  return member(law, [](const auto& l) -> std::optional<double> {
-    if constexpr (requires { l.start; }) return l.start;
-    return std::nullopt;
-  });
+std::optional<double> lawMember(const k::MotionLaw& law, Field field) {
+  const double* number = std::visit([&](const auto& l) { return lawNumber(l, field); }, law);
+  return number != nullptr ? std::optional<double>(*number) : std::nullopt;
 }
 
-std::optional<double> lawVelocity(const k::MotionLaw& law) {
-  return member(law, [](const auto& l) -> std::optional<double> {
-    if constexpr (requires { l.velocity; }) return l.velocity;
-    return std::nullopt;
-  });
-}
-
-std::optional<double> lawRise(const k::MotionLaw& law) {
-  return member(law, [](const auto& l) -> std::optional<double> {
-    if constexpr (requires { l.rise; }) return l.rise;
-    return std::nullopt;
-  });
-}
-
-std::optional<double> lawDuration(const k::MotionLaw& law) {
-  return member(law, [](const auto& l) -> std::optional<double> {
-    if constexpr (requires { l.duration; }) return l.duration;
-    return std::nullopt;
-  });
-}
-
-std::optional<double> lawRampTime(const k::MotionLaw& law) {
-  return member(law, [](const auto& l) -> std::optional<double> {
-    if constexpr (requires { l.rampTime; }) return l.rampTime;
-    return std::nullopt;
-  });
-}
-
-// Sets a law's member in SI units (rad, rad/s, s); a law without it is left alone.
+// Sets a law's member; a law without it is left alone.
 void setLawMember(k::MotionLaw& law, Field field, double value) {
-  std::visit(
-      [&](auto& l) {
-        if constexpr (requires { l.start; })
-          if (field == Field::Start) l.start = value;
-        if constexpr (requires { l.velocity; })
-          if (field == Field::Speed) l.velocity = value;
-        if constexpr (requires { l.rise; })
-          if (field == Field::Rise) l.rise = value;
-        if constexpr (requires { l.duration; })
-          if (field == Field::Duration) l.duration = value;
-        if constexpr (requires { l.rampTime; })
-          if (field == Field::RampTime) l.rampTime = value;
-      },
-      law);
+  if (double* number = std::visit([&](auto& l) { return lawNumber(l, field); }, law)) *number = value;
 }
 
 // `design` driven as `drive`, its numbers carried over where the old drive had them, else
@@ -108,20 +77,22 @@ void setLawMember(k::MotionLaw& law, Field field, double value) {
 // span at speed (a turn, for a crank), or that span.
 k::Design withDrive(k::Design d, Drive drive) {
   const std::optional<k::MotionLaw> old = d.time ? std::optional(d.time->law) : std::nullopt;
-  const auto keep = [&](auto get, double fallback) { return old ? get(*old).value_or(fallback) : fallback; };
+  const auto keep = [&](Field field, double fallback) {
+    return old ? lawMember(*old, field).value_or(fallback) : fallback;
+  };
   // The grid is in the input's display unit (degrees for a crank); laws are in its own (rad).
   const double gridFrom = k::inputFromDisplay(d.mechanism, d.fromDeg);
   const double gridSpan = k::inputFromDisplay(d.mechanism, d.toDeg) - gridFrom;
-  const double start = keep(lawStart, gridFrom);
-  const double speed = keep(lawVelocity, d.omega);
+  const double start = keep(Field::Start, gridFrom);
+  const double speed = keep(Field::Speed, d.omega);
   if (drive == Drive::AngleGrid) {
     d.omega = speed;
     d.time.reset();
     return d;
   }
-  const double rise = keep(lawRise, gridSpan);
-  const double duration = keep(lawDuration, 1.0);
-  const double rampTime = keep(lawRampTime, 1.0);
+  const double rise = keep(Field::Rise, gridSpan);
+  const double duration = keep(Field::Duration, 1.0);
+  const double rampTime = keep(Field::RampTime, 1.0);
   const double turn = speed != 0.0 && gridSpan != 0.0 ? std::abs(gridSpan / speed) : 1.0;
   switch (drive) {
   case Drive::ConstantSpeed: d.time = k::TimeBase{k::ConstantVelocity{start, speed}, 0.0, turn}; break;
@@ -311,12 +282,12 @@ void DrivePanel::refresh() {
     const auto shown = [&d](std::optional<double> q) {
       return q ? std::optional(k::inputDisplayValue(d.mechanism, *q)) : q;
     };
-    const std::optional<double> velocity = lawVelocity(law);
+    const std::optional<double> velocity = lawMember(law, Field::Speed);
     show(Field::Speed, velocity ? std::optional(speedToShown(*velocity)) : std::nullopt);
-    show(Field::Start, shown(lawStart(law)));
-    show(Field::Rise, shown(lawRise(law)));
-    show(Field::Duration, lawDuration(law));
-    show(Field::RampTime, lawRampTime(law));
+    show(Field::Start, shown(lawMember(law, Field::Start)));
+    show(Field::Rise, shown(lawMember(law, Field::Rise)));
+    show(Field::Duration, lawMember(law, Field::Duration));
+    show(Field::RampTime, lawMember(law, Field::RampTime));
     show(Field::FromTime, d.time->fromTime);
     show(Field::ToTime, d.time->toTime);
     if (const auto* table = std::get_if<k::TableLaw>(&law)) {
