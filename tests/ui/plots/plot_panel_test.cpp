@@ -3,6 +3,7 @@
 #include "ui/plots/plot_panel.h"
 
 #include "four_bar_curves.h"
+#include "plotted_points.h"
 
 #include "ui/plots/hover_readout.h"
 #include "ui/plots/limit_markers.h"
@@ -34,16 +35,10 @@
 using namespace linkwright::ui;
 using linkwright::ui::test::fourBarCurve;
 using linkwright::ui::test::fourBarQuantities;
+using linkwright::ui::test::plotted;
 namespace k = linkwright::kinematics;
 
 namespace {
-
-// All points of a quantity, segment after segment (sweep order).
-QList<QPointF> plotted(const PlotPanel& panel, PlotQuantity q) {
-  QList<QPointF> points;
-  for (const QLineSeries* segment : panel.chartView(quantityKind(q))->segments(q)) points += segment->points();
-  return points;
-}
 
 // What the sweep says should be plotted, written out from its documented contract:
 // positions where assembled, rates where ok, x the crank angle, all in degrees.

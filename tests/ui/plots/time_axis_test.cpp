@@ -6,6 +6,7 @@
 #include "ui/plots/plot_x_axis.h"
 
 #include "four_bar_curves.h"
+#include "plotted_points.h"
 
 #include "ui/plots/hover_readout.h"
 #include "ui/plots/limit_markers.h"
@@ -25,18 +26,9 @@
 
 using namespace linkwright::ui;
 using linkwright::ui::test::fourBarCurve;
+using linkwright::ui::test::plotted;
 namespace k = linkwright::kinematics;
 namespace testing = linkwright::testing;
-
-namespace {
-
-QList<QPointF> plotted(const PlotPanel& panel, PlotQuantity q) {
-  QList<QPointF> points;
-  for (const QLineSeries* segment : panel.chartView(quantityKind(q))->segments(q)) points += segment->points();
-  return points;
-}
-
-}  // namespace
 
 TEST_CASE("on a time base the series' x are the sweep's times, or its input angles in degrees", "[ui][plots][law]") {
   MechanismDocument doc;
