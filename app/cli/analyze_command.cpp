@@ -52,8 +52,8 @@ void reportUnassembled(const kinematics::SweepResult& result, const ResolvedMech
   if (result.firstFailure) err << "  " << *result.firstFailure << ".\n";
   if (!kinematics::asFourBar(resolved.mechanism)) return;
   const kinematics::InputRange range = kinematics::analyseDesign(resolved.mechanism, {}).inputRange;
-  if (range.ranges.empty()) err << "  It cannot be assembled at any crank angle.\n";
-  else err << "  It can be assembled for crank angles " << rangesText(m, range.ranges) << " (exact).\n";
+  if (range.ranges.empty()) err << "  It cannot be assembled at any " << kinematics::inputName(m) << ".\n";
+  else err << "  It can be assembled for " << inputsName(m) << " " << rangesText(m, range.ranges) << " (exact).\n";
 }
 
 // The forces the invocation asks for, or the reason there are none.
@@ -80,6 +80,19 @@ std::string sampleText(const kinematics::Mechanism& m, const kinematics::SweepRe
                             (unit == "°" ? unit : " " + unit);
   if (result.time.empty()) return input;
   return "time " + formatShort(result.time[j]) + " s (" + input + ")";
+}
+
+// Why a toggle has no rates: a four-bar's coupler and output link (its rocker, or its crank
+// when driven from the rocker) are collinear; any other linkage has a dyad stretched or folded.
+std::string toggleText(const kinematics::Mechanism& m) {
+  const auto linkName = [&m](kinematics::PointId a, kinematics::PointId b) -> std::string {
+    for (const kinematics::Link& link : m.links)
+      if ((link.first == a && link.second == b) || (link.first == b && link.second == a)) return link.name;
+    return m.points[a.index].name + "–" + m.points[b.index].name;
+  };
+  if (const auto f = kinematics::asFourBar(m))
+    return linkName(f->b, f->c) + " and " + linkName(f->o4, f->c) + " are collinear, ω and α are undefined";
+  return "a dyad is stretched straight or folded, its rates are undefined";
 }
 
 // Samples whose kinematics exist but whose forces do not (a structure that locks there).
@@ -127,10 +140,7 @@ ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err)
   }
   for (const double q : result->singularAngles)
     err << "linkwright-cli: note: toggle position at " << kinematics::inputName(*mechanism) << " "
-        << inputText(*mechanism, q)
-        << (kinematics::inputKind(*mechanism) == kinematics::InputKind::Angle
-                ? ": coupler and rocker are collinear, ω and α are undefined (cells left empty)\n"
-                : ": a dyad is stretched straight or folded, its rates are undefined (cells left empty)\n");
+        << inputText(*mechanism, q) << ": " << toggleText(*mechanism) << " (cells left empty)\n";
   noteLocks(*mechanism, *result, err);
   if (forceSweep) reportUndeterminedForces(*mechanism, *result, *forceSweep, err);
   if (!result->notAssembled.empty()) {

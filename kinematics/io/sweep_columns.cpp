@@ -10,10 +10,16 @@ namespace {
 
 bool isDyad(const Point& p) { return hasAssemblyBranch(p.definition); }
 
-// The input's column: the crank angle in degrees, or the linear driver's coordinate, named
-// for its point ("tip_s_m") or actuator ("actuator_length_mm").
+// The input's column: the crank angle in degrees, named for the driven link, whose own angle
+// column it replaces ("crank_angle_deg"; "rocker_angle_deg" for a four-bar driven from its
+// rocker), or the linear driver's coordinate, named for its point ("tip_s_m") or actuator
+// ("actuator_length_mm").
 SweepColumn inputColumn(const Mechanism& m) {
-  if (inputKind(m) == InputKind::Angle) return {"crank_angle_deg", ColumnQuantity::InputAngle, 0};
+  if (inputKind(m) == InputKind::Angle) {
+    for (std::size_t k = 0; k < m.links.size(); ++k)
+      if (isDrivenCrankLink(m, LinkId{k})) return {m.links[k].name + "_angle_deg", ColumnQuantity::InputAngle, 0};
+    return {"crank_angle_deg", ColumnQuantity::InputAngle, 0};
+  }
   const auto driver = driverPoint(m);
   const std::string& u = m.lengthUnit;
   if (driver && std::holds_alternative<ActuatorPoint>(m.points[driver->index].definition))

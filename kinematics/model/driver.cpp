@@ -29,11 +29,19 @@ InputKind inputKind(const Mechanism& m) {
                                                                                           : InputKind::Length;
 }
 
+double inputPeriod(const Mechanism& m) { return inputKind(m) == InputKind::Angle ? 2.0 * kPi : 0.0; }
+
 std::string inputName(const Mechanism& m) {
   const auto driver = driverPoint(m);
   if (!driver) return "input";
   const Point& p = m.points[driver->index];
-  if (std::holds_alternative<CrankPoint>(p.definition)) return "crank angle";
+  if (const auto* c = std::get_if<CrankPoint>(&p.definition)) {
+    // A linkage driven from its rocker (design/redrive.h) names that link, not "crank".
+    for (const Link& link : m.links)
+      if ((link.first == c->pivot && link.second == *driver) || (link.first == *driver && link.second == c->pivot))
+        return link.name + " angle";
+    return "crank angle";
+  }
   if (const auto* a = std::get_if<ActuatorPoint>(&p.definition))
     return "actuator " + m.points[a->base.index].name + "–" + p.name + " length";
   return p.name + " path position";

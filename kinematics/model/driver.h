@@ -39,7 +39,11 @@ std::optional<PointId> driverPoint(const Mechanism& mechanism);
 /// Angle for a crank, Length for a path or actuator driver (and for a mechanism without one).
 InputKind inputKind(const Mechanism& mechanism);
 
-/// What the input is, for messages and titles: "crank angle", "C path position",
+/// The input's period: 2π for a crank (a turn brings it back), 0 for a linear input.
+double inputPeriod(const Mechanism& mechanism);
+
+/// What the input is, for messages and titles: "crank angle" (a crank's link by its name:
+/// "rocker angle" for a four-bar driven from its rocker), "C path position",
 /// "actuator A–C length".
 std::string inputName(const Mechanism& mechanism);
 

@@ -8,6 +8,7 @@
 #include "kinematics/design/design.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
+#include "kinematics/solve/motion_law.h"
 
 #include "tests/ui/support/four_bar_design.h"
 #include "tests/ui/support/timed_design.h"
@@ -289,4 +290,16 @@ TEST_CASE("a document file with a motion law round-trips and opens as it was sav
   CHECK(read == testing::cycloidalFourBar());
   MechanismDocument doc;
   CHECK_FALSE(doc.validate(read).has_value());
+}
+
+TEST_CASE("a linear input on a time base is reached where the law has it, not a turn's length away",
+          "[ui][document][law]") {
+  MechanismDocument doc;
+  doc.reset(kinematics::designForExample("piston-driven").value());
+  doc.setTime(0.04);  // near the end of the rise, about 70 mm along
+  // 2π mm past the start is one position among many, not the start again.
+  const double q = 1.0 + 2.0 * kinematics::kPi;
+  doc.setCrankAngle(q);
+  CHECK(doc.crankAngle() == Approx(q).margin(1e-9));
+  CHECK(kinematics::motionAt(doc.design().time->law, doc.time()).position == Approx(q).margin(1e-9));
 }

@@ -187,3 +187,75 @@ TEST_CASE("a θ(t) table is loaded from a CSV file, and a malformed one is refus
   CHECK(why->contains("must name the columns time_s"));
   CHECK(doc.design() == before);
 }
+
+TEST_CASE("driving a four-bar from its rocker keeps its pose and law kind, as one undo step", "[ui][panels][driver]") {
+  ui::MechanismDocument doc;
+  doc.reset(k::designForExample("thesis-crank-rocker").value());
+  ui::Settings settings;
+  ui::DrivePanel drive(&doc, &settings);
+  doc.setCrankAngle(k::degToRad(40.0));
+  const k::Design before = doc.design();
+  const k::Pose pose = doc.pose();
+  REQUIRE(drive.driverBox()->count() == 2);
+  CHECK(drive.driverBox()->isEnabled());
+  CHECK(drive.driverBox()->itemText(1) == "rocker about O4 (angle)");
+  choose(drive, Drive::CycloidalRise);
+
+  drive.driverBox()->setCurrentIndex(1);
+  const k::Mechanism& m = doc.mechanism();
+  CHECK(m.points[k::driverPoint(m)->index].name == "C");
+  CHECK(drive.driverBox()->currentIndex() == 0);  // the driver now listed first
+  CHECK(drive.driverBox()->itemText(0) == "rocker about O4 (angle)");
+  CHECK(drive.lawBox()->currentIndex() == static_cast<int>(Drive::CycloidalRise));
+  CHECK(doc.undoStack()->count() == 2);
+  CHECK(drive.refusalMessage().isEmpty());
+
+  doc.undoStack()->undo();
+  doc.undoStack()->undo();
+  CHECK(doc.design() == before);
+  CHECK(doc.pose().position == pose.position);
+}
+
+TEST_CASE("driving from the rocker on a grid leaves every joint where it was", "[ui][panels][driver]") {
+  ui::MechanismDocument doc;
+  doc.reset(k::designForExample("thesis-crank-rocker").value());
+  ui::Settings settings;
+  ui::DrivePanel drive(&doc, &settings);
+  doc.setCrankAngle(k::degToRad(130.0));
+  const k::Pose before = doc.pose();
+  const k::Mechanism old = doc.mechanism();
+  drive.driverBox()->setCurrentIndex(1);
+  REQUIRE(drive.refusalMessage().isEmpty());
+  for (const k::Point& p : old.points) {
+    INFO(p.name);
+    const auto i = old.findPoint(p.name)->index;
+    const auto j = doc.mechanism().findPoint(p.name)->index;
+    CHECK((doc.pose().position[j] - before.position[i]).norm() < 1e-9);
+  }
+}
+
+TEST_CASE("a driver that cannot take a slider's mass is refused with the core's reason",
+          "[ui][panels][driver][errors]") {
+  ui::MechanismDocument doc;
+  k::Design ls3 = k::designForExample("ls3-engine").value();
+  ls3.dynamics.sliders = {{"C", 0, 0.5, 0.0}};
+  doc.reset(ls3);
+  ui::Settings settings;
+  ui::DrivePanel drive(&doc, &settings);
+  REQUIRE(drive.driverBox()->count() == 2);
+  drive.driverBox()->setCurrentIndex(1);
+  CHECK(doc.design() == ls3);
+  CHECK(doc.undoStack()->count() == 0);
+  CHECK(drive.refusalMessage().contains("C along its guide (position)"));
+  CHECK(drive.refusalMessage().contains("its carriage is massless"));
+  CHECK(drive.driverBox()->currentIndex() == 0);
+}
+
+TEST_CASE("a linkage with one possible driver shows it, disabled", "[ui][panels][driver]") {
+  ui::MechanismDocument doc;
+  doc.reset(k::designForExample("excavator-boom").value());
+  ui::Settings settings;
+  ui::DrivePanel drive(&doc, &settings);
+  CHECK(drive.driverBox()->count() == 1);
+  CHECK_FALSE(drive.driverBox()->isEnabled());
+}

@@ -69,7 +69,7 @@ std::optional<QString> MechanismDocument::edit(const k::Design& design, const QS
   // goes to when the law has it there.
   double timeAfter = m_time;
   if (design.time && crankAngleAfter)
-    timeAfter = k::timeNearestPosition(*design.time, *crankAngleAfter, m_time, 2.0 * k::kPi);
+    timeAfter = k::timeNearestPosition(*design.time, *crankAngleAfter, m_time, k::inputPeriod(design.mechanism));
   if (design == m_design && angleAfter == m_crankAngle && timeAfter == m_time) return std::nullopt;
   m_undo.push(new EditDesignCommand(this, {m_design, m_crankAngle, m_time}, {design, angleAfter, timeAfter},
                                     description, mergeKey));
@@ -86,7 +86,7 @@ void MechanismDocument::applyDesign(const DesignState& state) {
 
 void MechanismDocument::setCrankAngle(double angle) {
   if (m_design.time) {
-    setTime(k::timeNearestPosition(*m_design.time, angle, m_time, 2.0 * k::kPi));
+    setTime(k::timeNearestPosition(*m_design.time, angle, m_time, k::inputPeriod(m_design.mechanism)));
     return;
   }
   const double clamped = m_analysis.inputRange.clamp(angle);

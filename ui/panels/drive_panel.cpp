@@ -6,6 +6,7 @@
 #include "ui/plots/plot_x_axis.h"
 #include "ui/settings.h"
 
+#include "kinematics/design/redrive.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
@@ -108,13 +109,15 @@ k::Design withDrive(k::Design d, Drive drive) {
 }  // namespace
 
 DrivePanel::DrivePanel(MechanismDocument* document, Settings* settings, QWidget* parent)
-    : QWidget(parent), m_document(document), m_settings(settings), m_law(new QComboBox(this)),
-      m_speedUnit(new QComboBox(this)), m_samples(new QSpinBox(this)), m_tableName(new QLabel(this)),
-      m_loadTable(new QPushButton(tr("Load CSV…"), this)), m_axis(new QComboBox(this)), m_form(nullptr),
-      m_message(new RefusalLabel(this)) {
+    : QWidget(parent), m_document(document), m_settings(settings), m_driver(new QComboBox(this)),
+      m_law(new QComboBox(this)), m_speedUnit(new QComboBox(this)), m_samples(new QSpinBox(this)),
+      m_tableName(new QLabel(this)), m_loadTable(new QPushButton(tr("Load CSV…"), this)), m_axis(new QComboBox(this)),
+      m_form(nullptr), m_message(new RefusalLabel(this)) {
   auto* layout = new QVBoxLayout(this);
   auto* box = new QGroupBox(tr("Drive"), this);
   m_form = new QFormLayout(box);
+  m_driver->setObjectName(QStringLiteral("driver"));
+  m_form->addRow(tr("Driven from"), m_driver);
   m_law->addItems({tr("Constant speed on a grid"), tr("Constant speed in time"), tr("Ramp to speed"),
                    tr("Cycloidal rise"), tr("3-4-5 polynomial rise"), tr("Table from CSV…")});
   m_law->setToolTip(
@@ -171,6 +174,9 @@ DrivePanel::DrivePanel(MechanismDocument* document, Settings* settings, QWidget*
   m_message->setObjectName(QStringLiteral("drive_message"));
   layout->addWidget(m_message);
 
+  connect(m_driver, &QComboBox::currentIndexChanged, this, [this](int index) {
+    if (!m_refreshing) editDriver(index);
+  });
   connect(m_law, &QComboBox::currentIndexChanged, this, [this](int index) {
     if (!m_refreshing) editDrive(index);
   });
@@ -248,6 +254,14 @@ void DrivePanel::refresh() {
   m_refreshing = true;
   const k::Design& d = m_document->design();
   const Drive drive = driveOf(d);
+  m_driver->clear();
+  for (const k::DriverChoice& choice : k::driverChoices(d.mechanism))
+    m_driver->addItem(QString::fromStdString(choice.description));
+  m_driver->setEnabled(m_driver->count() > 1);
+  m_driver->setToolTip(m_driver->count() > 1
+                           ? tr("Drive the linkage from another joint: the joint next to the driver takes the input, "
+                                "the linkage stays where it is")
+                           : tr("This linkage has no other joint it can be driven from"));
   m_law->setCurrentIndex(static_cast<int>(drive));
   const bool grid = drive == Drive::AngleGrid;
   const bool rise = drive == Drive::CycloidalRise || drive == Drive::PolynomialRise;
@@ -397,6 +411,25 @@ void DrivePanel::editSamples() {
   k::Design d = m_document->design();
   d.samples = static_cast<std::size_t>(value);
   showOutcome(m_document->edit(d, tr("Change samples")));
+}
+
+void DrivePanel::editDriver(int index) {
+  const k::Design& design = m_document->design();
+  const std::vector<k::DriverChoice> choices = k::driverChoices(design.mechanism);
+  if (index <= 0 || static_cast<std::size_t>(index) >= choices.size()) return;
+  const auto next = k::driveFrom(design, choices[static_cast<std::size_t>(index)].point, m_document->crankAngle());
+  if (!next) {
+    showOutcome(tr("driving from %1: %2")
+                    .arg(QString::fromStdString(choices[static_cast<std::size_t>(index)].description),
+                         QString::fromStdString(next.error().message)));
+    return;
+  }
+  // A motion law keeps its kind, its numbers now in the new input's coordinate and range; a
+  // table of the old input's positions means nothing for the new one.
+  const Drive drive = driveOf(design);
+  const k::Design d =
+      drive == Drive::AngleGrid || drive == Drive::Table ? next->design : withDrive(next->design, drive);
+  showOutcome(m_document->edit(d, tr("Drive from %1").arg(m_driver->itemText(index)), std::nullopt, next->input));
 }
 
 void DrivePanel::editDrive(int index) {

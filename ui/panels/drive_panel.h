@@ -1,11 +1,12 @@
 #pragma once
-// How the input is driven, and what the plots run against: constant speed over the grid (ω and
+// What drives the linkage and how, and what the plots run against: the driver (the crank, or a
+// joint next to it: kinematics/design/redrive.h), then constant speed over the grid (ω and
 // α, no time base), or a motion law in time (kinematics/solve/motion_law.h: constant speed, a
 // ramp to speed, a cycloidal or 3-4-5 rise, or a θ(t) table from a CSV file) with its numbers
 // and the time base it is analysed on; the grid's sample count; and the plots' x axis (time or
 // the input). A crank's numbers are in degrees and rpm or rad/s, a linear input's (an actuator,
-// a point on a path) in its length unit (kinematics/model/driver.h). Each change is one undoable design edit through the document, checked
-// field by field here (the field, the value and what is accepted) and then by the core; a
+// a point on a path) in its length unit (kinematics/model/driver.h). Each change is one
+// undoable design edit through the document, checked field by field here (the field, the value and what is accepted) and then by the core; a
 // refused value snaps back and a line says why, as in the dimensions panel.
 
 #include "ui/document/mechanism_document.h"
@@ -41,6 +42,8 @@ public:
 
   DrivePanel(MechanismDocument* document, Settings* settings, QWidget* parent = nullptr);
 
+  /// The points the linkage can be driven from (kinematics::driverChoices), the driver first.
+  QComboBox* driverBox() const { return m_driver; }
   QComboBox* lawBox() const { return m_law; }
   QComboBox* axisBox() const { return m_axis; }
   QComboBox* speedUnitBox() const { return m_speedUnit; }
@@ -57,6 +60,7 @@ public:
 
 private:
   void refresh();
+  void editDriver(int index);
   void editDrive(int index);
   void editField(Field field);
   void editSamples();
@@ -72,6 +76,7 @@ private:
 
   MechanismDocument* m_document;
   Settings* m_settings;
+  QComboBox* m_driver;
   QComboBox* m_law;
   QComboBox* m_speedUnit;
   std::array<QDoubleSpinBox*, kFieldCount> m_fields{};
