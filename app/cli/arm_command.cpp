@@ -1,14 +1,19 @@
 // `linkwright-cli arm`: the two-link arm of seed 004 (or any other) with its tip on a straight
-// line at constant speed, one row per time sample: the joints from the core's inverse
-// kinematics (kinematics/analysis/two_link_arm.h), the stretches of the path outside the
-// workspace from its exact line–circle crossings.
+// line at constant speed, one row per time sample. A thin alias of analyze: the arm is a
+// linkage like any other (a ground pivot, the tip driven along the line, the elbow an RRR
+// joint: model/driven_linkages.h), swept on its time base by the same solver; this command
+// only keeps the options and columns scripts written for it know. The stretches of the path
+// outside the workspace come from their exact crossings with its annulus.
 
 #include "app/cli/atomic_file.h"
 #include "app/cli/commands.h"
 
 #include "kinematics/analysis/two_link_arm.h"
+#include "kinematics/design/design.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/number_format.h"
+#include "kinematics/model/driven_linkages.h"
+#include "kinematics/model/path_shape.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 
@@ -24,21 +29,23 @@ namespace {
 namespace k = kinematics;
 using k::io::formatShort;
 
-// Seed 004: r1 = 0.3 m, r2 = 0.2 m, tip from (0.3, 0) to (0, 0.3) m at 2 m/s. Its MATLAB steps
-// x by 0.003 m: 101 points. Its plots have θ1 rising from −39° to 51°: the elbow down.
+// Seed 004's arm is the example seed-arm: the same document analyze reads.
 constexpr const char* kSeedArmName = "seed-arm";
-const k::TwoLinkArm kSeedArm{0.3, 0.2};
-const k::LinePath kSeedPath{{0.3, 0.0}, {0.0, 0.3}, 2.0};
 constexpr long long kDefaultSamples = 101;
 using k::kMaxSamples;  // the input domain's (validate.h)
 
+// Point and link ids of makeTwoLinkArm's mechanism.
+constexpr std::size_t kTip = 1;
+constexpr std::size_t kElbow = 2;
+constexpr std::size_t kUpper = 0;
+constexpr std::size_t kForearm = 1;
+
 struct ArmRequest {
   k::TwoLinkArm arm;
-  k::LinePath path;
-  k::Branch elbow = k::Branch::Open;
-  double duration = 0.0;      ///< s
-  Eigen::Vector2d velocity;   ///< of the tip, length unit / s
-  std::vector<double> times;  ///< s
+  k::Mechanism mechanism;  ///< makeTwoLinkArm's: O, tip on the line, elbow
+  k::PolylinePath line;    ///< the tip's path, from --from-point to --to-point
+  double speed = 0.0;      ///< of the tip along it, length unit / s
+  k::SweepSpec spec;       ///< the time base: the tip at `speed` from the line's start
 };
 
 k::Error badValue(const std::string& option, const std::string& message) {
@@ -47,25 +54,21 @@ k::Error badValue(const std::string& option, const std::string& message) {
 
 std::string pointText(const Eigen::Vector2d& p) { return "(" + formatShort(p.x()) + ", " + formatShort(p.y()) + ")"; }
 
-// The time grid: --samples N evenly spaced (as followLine spaces them), or every --step-time
-// seconds from 0, ending at the path's end when the step lands on it (as analyze's --step).
-k::Result<std::vector<double>> timeGrid(const Invocation& inv, double duration) {
-  std::vector<double> times;
+// The time grid: --samples N evenly spaced over the path, or every --step-time seconds from
+// 0, ending at the path's end when the step lands on it (as analyze's --step).
+k::Result<std::pair<double, std::size_t>> timeGrid(const Invocation& inv, double duration) {
   if (inv.stepTime) {
     const double intervals = std::floor(duration / *inv.stepTime + 1e-9);
     if (intervals + 1.0 > static_cast<double>(kMaxSamples))
       return badValue("--step-time", "--step-time is too small: it would give " + formatShort(intervals + 1.0) +
                                          " rows (at most " + std::to_string(kMaxSamples) + ")");
-    for (long long j = 0; j <= static_cast<long long>(intervals); ++j)
-      times.push_back(static_cast<double>(j) * *inv.stepTime);
-    return times;
+    return std::pair{intervals * *inv.stepTime, static_cast<std::size_t>(intervals) + 1};
   }
   const long long n = inv.samples.value_or(kDefaultSamples);
   if (n > kMaxSamples)
     return badValue("--samples", "--samples must be between 2 and " + std::to_string(kMaxSamples) + " (got " +
                                      std::to_string(n) + ")");
-  for (long long j = 0; j < n; ++j) times.push_back(duration * static_cast<double>(j) / static_cast<double>(n - 1));
-  return times;
+  return std::pair{duration, static_cast<std::size_t>(n)};
 }
 
 // The option that sets a field checkArmPath names.
@@ -77,9 +80,12 @@ std::string optionFor(const std::string& field) {
 }
 
 k::Result<ArmRequest> armRequest(const Invocation& inv) {
-  ArmRequest r;
+  k::TwoLinkArm arm;
+  k::LinePath path;
+  k::Branch elbow = k::Branch::Open;
   if (inv.example) {
-    if (*inv.example != kSeedArmName)
+    const auto seed = k::designForExample(kSeedArmName);
+    if (*inv.example != kSeedArmName || !seed)
       return badValue("--example",
                       "--example: no arm example named '" + *inv.example + "' (arm has one: " + kSeedArmName + ")");
     if (inv.lengthUnit != "m")
@@ -87,28 +93,33 @@ k::Result<ArmRequest> armRequest(const Invocation& inv) {
                                     " example is in metres; give --arm, --from-point, "
                                     "--to-point and --speed without --example to work in " +
                                     inv.lengthUnit);
-    r.arm = kSeedArm;
-    r.path = kSeedPath;
-    r.elbow = k::Branch::Crossed;
+    const k::Mechanism& m = seed->mechanism;
+    const auto& line = std::get<k::PolylinePath>(std::get<k::PathPoint>(m.points[kTip].definition).path);
+    const auto& joint = std::get<k::RrrPoint>(m.points[kElbow].definition);
+    arm = {joint.firstLength, joint.secondLength};
+    path = {line.vertices.front(), line.vertices.back(), std::get<k::ConstantVelocity>(seed->time->law).velocity};
+    elbow = joint.branch;
   }
-  if (inv.arm) r.arm = {inv.arm->first, inv.arm->second};
-  if (inv.fromPoint) r.path.from = *inv.fromPoint;
-  if (inv.toPoint) r.path.to = *inv.toPoint;
-  if (inv.speed) r.path.speed = *inv.speed;
-  if (inv.elbow) r.elbow = *inv.elbow;
-  if (auto e = k::checkArmPath(r.arm, r.path)) {
+  if (inv.arm) arm = {inv.arm->first, inv.arm->second};
+  if (inv.fromPoint) path.from = *inv.fromPoint;
+  if (inv.toPoint) path.to = *inv.toPoint;
+  if (inv.speed) path.speed = *inv.speed;
+  if (inv.elbow) elbow = *inv.elbow;
+  if (auto e = k::checkArmPath(arm, path)) {
     const std::string option = optionFor(e->field);
     return badValue(option, option + ": " + e->message);
   }
-  const double length = (r.path.to - r.path.from).norm();
+  const double length = (path.to - path.from).norm();
   if (!(length > 0.0))
-    return badValue("--to-point", "--to-point must differ from --from-point (both are " + pointText(r.path.from) + ")");
-  // The same arithmetic as followLine, so a row equals the core's sample bit for bit.
-  r.duration = length / r.path.speed;
-  r.velocity = (r.path.to - r.path.from) / r.duration;
-  auto times = timeGrid(inv, r.duration);
-  if (!times) return times.error();
-  r.times = std::move(*times);
+    return badValue("--to-point", "--to-point must differ from --from-point (both are " + pointText(path.from) + ")");
+  ArmRequest r{arm, {}, k::PolylinePath{{path.from, path.to}}, path.speed, {}};
+  auto mechanism = k::makeTwoLinkArm({arm.upper, arm.forearm, r.line, elbow, inv.lengthUnit});
+  if (!mechanism) return badValue("--arm", "--arm: " + mechanism.error().message);
+  r.mechanism = std::move(*mechanism);
+  const auto grid = timeGrid(inv, length / path.speed);
+  if (!grid) return grid.error();
+  r.spec.samples = grid->second;
+  r.spec.time = k::TimeBase{k::ConstantVelocity{0.0, path.speed}, 0.0, grid->first};
   return r;
 }
 
@@ -121,31 +132,17 @@ struct ArmRow {
   k::ArmState state;  ///< angles unwrapped along the path
 };
 
-std::vector<ArmRow> solveRows(const ArmRequest& r) {
-  std::vector<ArmRow> rows;
-  std::optional<std::pair<double, double>> last;  // the previous defined angles, for unwrapping
-  for (const double t : r.times) {
-    ArmRow row;
-    row.time = t;
-    row.tip = r.path.from + r.velocity * t;
-    const auto full = k::solveTwoLinkArm(r.arm, r.elbow, row.tip, r.velocity);
-    if (full) {
-      row.status = RowStatus::Ok;
-      row.state = *full;
-    } else if (full.error().code == k::ErrorCode::Singular) {
-      // Stretched or folded: the position exists, the rates do not.
-      const auto position = k::solveTwoLinkArm(r.arm, r.elbow, row.tip);
-      row.status = position ? RowStatus::Singular : RowStatus::Unreachable;
-      if (position) row.state = *position;
-    }
-    if (row.status != RowStatus::Unreachable) {
-      if (last) {
-        row.state.upperAngle = last->first + std::remainder(row.state.upperAngle - last->first, 2.0 * k::kPi);
-        row.state.forearmAngle = last->second + std::remainder(row.state.forearmAngle - last->second, 2.0 * k::kPi);
-      }
-      last = std::pair{row.state.upperAngle, row.state.forearmAngle};
-    }
-    rows.push_back(row);
+// The sweep's samples as the arm's rows; the tip wherever it is, reachable or not.
+std::vector<ArmRow> armRows(const ArmRequest& r, const k::SweepResult& s) {
+  std::vector<ArmRow> rows(s.size());
+  for (std::size_t j = 0; j < s.size(); ++j) {
+    ArmRow& row = rows[j];
+    row.time = s.time[j];
+    row.tip = k::pathAt(r.line, s.inputAngle[j]).point;
+    row.status = s.ok(j) ? RowStatus::Ok : s.assembled(j) ? RowStatus::Singular : RowStatus::Unreachable;
+    if (row.status == RowStatus::Unreachable) continue;
+    row.state = {s.linkAngle[kUpper][j], s.linkAngle[kForearm][j], s.linkOmega[kUpper][j], s.linkOmega[kForearm][j],
+                 s.linkAlpha[kUpper][j], s.linkAlpha[kForearm][j], s.position[kElbow][j]};
   }
   return rows;
 }
@@ -218,18 +215,18 @@ void writeTable(std::ostream& out, const std::vector<ArmColumn>& columns, const 
 
 // The stretches of the path outside the workspace, exactly, and the samples in them.
 bool reportUnreachable(const ArmRequest& r, const std::vector<ArmRow>& rows, const std::string& u, std::ostream& err) {
-  const auto exact = k::followLine(r.arm, r.elbow, r.path, 2);
+  const auto outside = k::pathOutsideAnnulus(r.line, Eigen::Vector2d::Zero(), std::abs(r.arm.upper - r.arm.forearm),
+                                             r.arm.upper + r.arm.forearm);
   const std::size_t missed = static_cast<std::size_t>(
       std::count_if(rows.begin(), rows.end(), [](const ArmRow& row) { return row.status == RowStatus::Unreachable; }));
-  if ((!exact || exact->unreachable.empty()) && missed == 0) return false;
+  if (outside.empty() && missed == 0) return false;
   err << "linkwright-cli: the tip leaves the arm's workspace (" << formatShort(std::abs(r.arm.upper - r.arm.forearm))
       << " " << u << " to " << formatShort(r.arm.upper + r.arm.forearm) << " " << u << " from the shoulder): " << missed
       << " of " << rows.size() << " samples cannot be reached; their joint cells are left empty.\n";
-  if (exact)
-    for (const auto& [from, to] : exact->unreachable)
-      err << "  unreachable for t = " << formatShort(from) << " s to " << formatShort(to) << " s (exact): tip from "
-          << pointText(r.path.from + r.velocity * from) << " " << u << " to "
-          << pointText(r.path.from + r.velocity * to) << " " << u << "\n";
+  for (const auto& [from, to] : outside)
+    err << "  unreachable for t = " << formatShort(from / r.speed) << " s to " << formatShort(to / r.speed)
+        << " s (exact): tip from " << pointText(k::pathAt(r.line, from).point) << " " << u << " to "
+        << pointText(k::pathAt(r.line, to).point) << " " << u << "\n";
   return true;
 }
 
@@ -253,7 +250,12 @@ ExitCode runArm(const Invocation& inv, std::ostream& out, std::ostream& err) {
     err << "linkwright-cli: " << request.error().message << "\n";
     return ExitCode::BadInput;
   }
-  const std::vector<ArmRow> rows = solveRows(*request);
+  const auto swept = k::sweep(request->mechanism, request->spec);
+  if (!swept) {
+    err << "linkwright-cli: " << swept.error().message << "\n";
+    return ExitCode::BadInput;
+  }
+  const std::vector<ArmRow> rows = armRows(*request, *swept);
   const std::vector<ArmColumn> columns = armColumns(inv.lengthUnit);
   std::ostringstream text;
   if (inv.tableFormat) writeTable(text, columns, rows);

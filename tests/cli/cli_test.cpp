@@ -390,21 +390,22 @@ TEST_CASE("arm follows seed 004's line: every row equals the core's solution", "
     CAPTURE(row);
     REQUIRE(s.reachable);
     // The time column prints 12 significant digits (within 5e-12 relative, as analyze's angle
-    // column); everything else round-trips exactly.
+    // column). The tip is on the path at s = 2t, the joints from the linkage solver (arm is an
+    // alias of analyze): equal to the closed form to round-off, and to 1e-12.
     CHECK(t.value(row, "time_s") == Approx(s.time).epsilon(1e-11));
-    CHECK(t.value(row, "tip_x_m") == s.tip.x());
-    CHECK(t.value(row, "tip_y_m") == s.tip.y());
+    CHECK(t.value(row, "tip_x_m") == Approx(s.tip.x()).margin(1e-15));
+    CHECK(t.value(row, "tip_y_m") == Approx(s.tip.y()).margin(1e-15));
     // Angles are unwrapped along the path: equal to the core's up to whole turns.
     for (const auto& [name, angle] :
          {std::pair{"upper_angle_deg", s.state.upperAngle}, {"forearm_angle_deg", s.state.forearmAngle}})
       CHECK(std::remainder(kinematics::degToRad(t.value(row, name)) - angle, 2 * kinematics::kPi) ==
             Approx(0).margin(1e-12));
-    CHECK(t.value(row, "upper_omega_rad_s") == s.state.upperOmega);
-    CHECK(t.value(row, "forearm_omega_rad_s") == s.state.forearmOmega);
-    CHECK(t.value(row, "upper_alpha_rad_s2") == s.state.upperAlpha);
-    CHECK(t.value(row, "forearm_alpha_rad_s2") == s.state.forearmAlpha);
-    CHECK(t.value(row, "elbow_x_m") == s.state.elbow.x());
-    CHECK(t.value(row, "elbow_y_m") == s.state.elbow.y());
+    CHECK(t.value(row, "upper_omega_rad_s") == Approx(s.state.upperOmega).epsilon(1e-12));
+    CHECK(t.value(row, "forearm_omega_rad_s") == Approx(s.state.forearmOmega).epsilon(1e-12));
+    CHECK(t.value(row, "upper_alpha_rad_s2") == Approx(s.state.upperAlpha).epsilon(1e-12));
+    CHECK(t.value(row, "forearm_alpha_rad_s2") == Approx(s.state.forearmAlpha).epsilon(1e-12));
+    CHECK(t.value(row, "elbow_x_m") == Approx(s.state.elbow.x()).margin(1e-15));
+    CHECK(t.value(row, "elbow_y_m") == Approx(s.state.elbow.y()).margin(1e-15));
   }
   // Closed form at the ends: the elbow angle off the tip line is acos(7/9) (|OB| = 0.3 m at
   // both ends), so θ1 goes from −38.94° to 90° − 38.94° = 51.06°, as the seed's plot shows.
@@ -424,7 +425,7 @@ TEST_CASE("arm gives both elbow solutions: up is the core's open branch, mirrore
   REQUIRE(core.ok());
   for (std::size_t row = 0; row < 11; ++row) {
     CAPTURE(row);
-    CHECK(u.value(row, "forearm_omega_rad_s") == core->samples[row].state.forearmOmega);
+    CHECK(u.value(row, "forearm_omega_rad_s") == Approx(core->samples[row].state.forearmOmega).epsilon(1e-12));
     const Eigen::Vector2d tip(u.value(row, "tip_x_m"), u.value(row, "tip_y_m"));
     const Eigen::Vector2d eu(u.value(row, "elbow_x_m"), u.value(row, "elbow_y_m"));
     const Eigen::Vector2d ed(d.value(row, "elbow_x_m"), d.value(row, "elbow_y_m"));

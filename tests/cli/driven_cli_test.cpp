@@ -1,10 +1,13 @@
 // analyze on linkages driven other than by a crank: seed 004's arm through analyze equals the
-// arm command (its closed-form inverse kinematics) in every column arm prints, for both
-// elbows; a piston and a cylinder take their laws in the length unit.
+// closed-form inverse kinematics (analysis/two_link_arm.h) in every column the arm command
+// prints, for both elbows, and the arm command (an alias of analyze) prints those columns; a
+// piston and a cylinder take their laws in the length unit.
 
 #include "tests/cli/run_cli.h"
 
+#include "kinematics/analysis/two_link_arm.h"
 #include "kinematics/design/design.h"
+#include "kinematics/design/redrive.h"
 #include "kinematics/io/document_json.h"
 
 #include "tests/support/approx.h"
@@ -58,6 +61,34 @@ void checkSameColumns(const std::string& armCsv, const std::string& analyzeCsv) 
   }
 }
 
+// Seed 004's arm solved in closed form at every row's tip, which runs from (0.3, 0) toward
+// (0, 0.3) m at 2 m/s: analyze's columns equal it to 1e-12 (angles modulo a turn).
+void checkClosedForm(const std::string& analyzeCsv, k::Branch elbow) {
+  const auto columns = columnsOf(analyzeCsv);
+  const Eigen::Vector2d from(0.3, 0.0);
+  const Eigen::Vector2d velocity = Eigen::Vector2d(-0.3, 0.3).normalized() * 2.0;
+  const std::vector<double>& time = columns.at("time_s");
+  REQUIRE(time.size() == 101);
+  for (std::size_t j = 0; j < time.size(); ++j) {
+    CAPTURE(j);
+    // The tip as printed (17 digits round-trip); the time only has 12 significant digits.
+    const Eigen::Vector2d tip(columns.at("tip_x_m")[j], columns.at("tip_y_m")[j]);
+    CHECK((tip - (from + velocity * time[j])).norm() < 1e-12);
+    const auto exact = k::solveTwoLinkArm({0.3, 0.2}, elbow, tip, velocity);
+    REQUIRE(exact.ok());
+    const auto degrees = [](double rad) { return rad * 180.0 / M_PI; };
+    const auto sameAngle = [](double a, double b) { return std::abs(std::remainder(a - b, 360.0)) <= 1e-12 * 360.0; };
+    CHECK(sameAngle(columns.at("upper_angle_deg")[j], degrees(exact->upperAngle)));
+    CHECK(sameAngle(columns.at("forearm_angle_deg")[j], degrees(exact->forearmAngle)));
+    CHECK(columns.at("upper_omega_rad_s")[j] == within(exact->upperOmega, 1e-12));
+    CHECK(columns.at("forearm_omega_rad_s")[j] == within(exact->forearmOmega, 1e-12));
+    CHECK(columns.at("upper_alpha_rad_s2")[j] == within(exact->upperAlpha, 1e-12));
+    CHECK(columns.at("forearm_alpha_rad_s2")[j] == within(exact->forearmAlpha, 1e-12));
+    CHECK(columns.at("elbow_x_m")[j] == within(exact->elbow.x(), 1e-12));
+    CHECK(columns.at("elbow_y_m")[j] == within(exact->elbow.y(), 1e-12));
+  }
+}
+
 }  // namespace
 
 TEST_CASE("analyze --example seed-arm equals arm --example seed-arm, elbow down", "[cli][arm][driven]") {
@@ -66,6 +97,7 @@ TEST_CASE("analyze --example seed-arm equals arm --example seed-arm, elbow down"
   REQUIRE(arm.code == 0);
   REQUIRE(analyzed.code == 0);
   checkSameColumns(arm.out, analyzed.out);
+  checkClosedForm(analyzed.out, k::Branch::Crossed);
   const auto columns = columnsOf(analyzed.out);
   CHECK(columns.at("upper_angle_deg").front() == within(-38.9424, 5e-5));
   CHECK(columns.at("forearm_omega_rad_s").front() == within(10.54738, 5e-6));
@@ -85,6 +117,7 @@ TEST_CASE("analyze of the arm document with the elbow up equals arm --elbow up",
   REQUIRE(arm.code == 0);
   REQUIRE(analyzed.code == 0);
   checkSameColumns(arm.out, analyzed.out);
+  checkClosedForm(analyzed.out, k::Branch::Open);
 }
 
 TEST_CASE("a piston's law is in millimetres and a cylinder's in metres", "[cli][driven]") {
@@ -123,4 +156,30 @@ TEST_CASE("a cylinder follows a measured s(t) table in metres", "[cli][driven][l
   const auto columns = columnsOf(r.out);
   CHECK(columns.at("actuator_length_m") == std::vector<double>{1.2, 1.3, 1.5, 1.6});
   CHECK(columns.at("time_s") == std::vector<double>{0.0, 1.0, 2.0, 3.0});
+}
+
+TEST_CASE("a four-bar driven from its rocker is analysed in the rocker's angle; a toggle names its links",
+          "[cli][driven]") {
+  // Frame 40, crank 10, coupler 40, rocker 30: with the rocker at 90° C is (40, 30), 50 from
+  // O2, so crank and coupler are stretched in line: the toggle of the rocker-driven linkage.
+  const k::Design d = *k::fourBarDesign({40, 10, 40, 30});
+  const auto rocker = k::driveFrom(d, d.mechanism.findPoint("C").value(), 0.0);
+  REQUIRE(rocker.ok());
+  const std::string path = (std::filesystem::temp_directory_path() / "linkwright_rocker_driven.linkwright").string();
+  {
+    std::ofstream f(path, std::ios::binary);
+    f << k::io::writeDocument(rocker->design);
+  }
+  const auto r = runCliCommand({"analyze", path, "--from", "90", "--to", "110", "--samples", "3"});
+  std::filesystem::remove(path);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.err, Catch::Contains("toggle position at rocker angle 90°: coupler and crank are collinear, ω and α "
+                                    "are undefined (cells left empty)"));
+  const auto columns = columnsOf(r.out);
+  CHECK(r.out.rfind("rocker_angle_deg,crank_angle_deg,crank_omega_rad_s,", 0) == 0);  // the input first
+  CHECK(columns.at("rocker_angle_deg")[0] == within(90.0, 1e-12));
+  CHECK(columns.at("B_x_mm")[0] == within(8.0, 1e-12));  // B on O2–C, 10 mm out of 50
+  CHECK(columns.at("B_y_mm")[0] == within(6.0, 1e-12));
+  CHECK(std::isnan(columns.at("crank_omega_rad_s")[0]));  // left empty at the toggle
+  CHECK(columns.at("rocker_omega_rad_s")[1] == within(1.0, 1e-12));
 }
