@@ -9,9 +9,13 @@ namespace linkwright::kinematics {
 bool InputRange::contains(double angle, double tolerance) const {
   if (fullRotation) return true;
   for (const AngleRange& r : ranges) {
+    if (period == 0.0) {
+      if (angle >= r.from - tolerance && angle <= r.to + tolerance) return true;
+      continue;
+    }
     // Shift the angle into the turn that starts at r.from.
-    const double shifted = r.from + std::fmod(std::fmod(angle - r.from, 2.0 * kPi) + 2.0 * kPi, 2.0 * kPi);
-    if (shifted <= r.to + tolerance || shifted - 2.0 * kPi >= r.from - tolerance) return true;
+    const double shifted = r.from + std::fmod(std::fmod(angle - r.from, period) + period, period);
+    if (shifted <= r.to + tolerance || shifted - period >= r.from - tolerance) return true;
   }
   return false;
 }
@@ -22,7 +26,7 @@ double InputRange::clamp(double angle) const {
   double bestDistance = INFINITY;
   for (const AngleRange& r : ranges) {
     for (const double edge : {r.from, r.to}) {
-      const double distance = std::abs(std::remainder(angle - edge, 2.0 * kPi));
+      const double distance = period == 0.0 ? std::abs(angle - edge) : std::abs(std::remainder(angle - edge, period));
       if (distance < bestDistance) {
         bestDistance = distance;
         best = edge;

@@ -7,6 +7,7 @@
 // which gives zero, one or two closed intervals of θ (or the full turn).
 
 #include "kinematics/model/fourbar.h"
+#include "kinematics/model/units.h"
 #include "kinematics/solve/sweep.h"
 
 #include <vector>
@@ -16,9 +17,12 @@ namespace linkwright::kinematics {
 struct InputRange {
   bool fullRotation = false;       ///< the crank can turn through 360°
   std::vector<AngleRange> ranges;  ///< rad, from ≤ to; empty and !fullRotation: never assembles
+  /// The input's period: a crank's 2π (a range holds its angles in any turn); 0 for a linear
+  /// input (a path position, an actuator length), whose ranges hold only the values in them.
+  double period = 2.0 * kPi;
   bool operator==(const InputRange&) const = default;
 
-  /// True if `angle` (rad, any turn) lies in the range, within `tolerance` rad.
+  /// True if `angle` (rad, any turn; a linear input's value) lies in the range, within `tolerance`.
   bool contains(double angle, double tolerance = 1e-12) const;
   /// `angle` itself if it lies in the range (or the range is empty), else the nearest range
   /// edge (rad, as stored in `ranges`): where a dragged or animated crank must stop.

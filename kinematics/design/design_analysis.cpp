@@ -41,6 +41,7 @@ void toInputAngles(const FourBarStructure& s, DesignAnalysis& a) {
 
 InputRange assembledRange(const SweepResult& sweep, InputKind input) {
   InputRange range;
+  if (input == InputKind::Length) range.period = 0.0;
   std::size_t j = 0;
   while (j < sweep.size()) {
     if (!sweep.assembled(j)) {

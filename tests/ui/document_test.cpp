@@ -6,6 +6,7 @@
 #include "ui/document/mechanism_document.h"
 
 #include "kinematics/design/design.h"
+#include "kinematics/design/redrive.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/motion_law.h"
@@ -302,4 +303,13 @@ TEST_CASE("a linear input on a time base is reached where the law has it, not a 
   doc.setCrankAngle(q);
   CHECK(doc.crankAngle() == Approx(q).margin(1e-9));
   CHECK(kinematics::motionAt(doc.design().time->law, doc.time()).position == Approx(q).margin(1e-9));
+}
+
+TEST_CASE("a design on a linear grid opens at its grid's start, inside the range", "[ui][document]") {
+  const kinematics::Design ls3 = kinematics::designForExample("ls3-engine").value();
+  const auto piston = kinematics::driveFrom(ls3, ls3.mechanism.findPoint("C").value(), 1.0);
+  REQUIRE(piston.ok());
+  MechanismDocument doc;
+  doc.reset(piston->design);
+  CHECK(doc.crankAngle() == Approx(piston->design.fromDeg).margin(1e-12));
 }

@@ -7,6 +7,7 @@
 #include "kinematics/design/design_analysis.h"
 #include "kinematics/analysis/assembly_range.h"
 #include "kinematics/design/examples.h"
+#include "kinematics/model/driven_linkages.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/shaper.h"
 #include "kinematics/model/units.h"
@@ -112,4 +113,24 @@ TEST_CASE("assembledRange ends a range at a lock between two samples", "[design]
   REQUIRE(r.ranges.size() == 2);
   CHECK(radToDeg(r.ranges[0].to) == within(290.0, 1e-12));
   CHECK(radToDeg(r.ranges[1].from) == within(295.0, 1e-12));
+}
+
+TEST_CASE("a linear input's range holds only its own values: no turn wraps it", "[design][analysis]") {
+  // The piston-driven slider-crank over 80 mm of its stroke: 0 mm and 2π mm are not in
+  // [10, 70] mm, though 0 + 2π·k would be for a crank's angle.
+  const Mechanism m = *makePistonDriven({40.0, 140.0, Branch::Open, "mm"});
+  const auto sweep = linkwright::kinematics::sweep(m, {10.0, 70.0, 61, 1.0, 0.0}, {false, false});
+  REQUIRE(sweep.ok());
+  const InputRange r = assembledRange(*sweep, InputKind::Length);
+  CHECK(r.period == 0.0);
+  REQUIRE(r.ranges.size() == 1);
+  CHECK_FALSE(r.contains(0.0));
+  CHECK_FALSE(r.contains(2.0 * kPi));
+  CHECK(r.contains(10.0));
+  CHECK(r.clamp(0.0) == 10.0);
+  CHECK(r.clamp(71.0) == 70.0);
+  CHECK(r.clamp(33.0) == 33.0);
+  // The same numbers as a crank's angles wrap: 2π·10 rad + 0.5 is 0.5 rad.
+  const InputRange angles{false, {{0.0, 1.0}}};
+  CHECK(angles.contains(20.0 * kPi + 0.5));
 }
