@@ -1,0 +1,122 @@
+#pragma once
+// Four-bar path generation: a coupler point P through 4 to 10 target points, with or without
+// prescribed crank angles (timing), by bounded least squares from many starts. There is no
+// closed form past five points (Alt–Burmester: nine in general need polynomial continuation), so
+// we minimise Σ|P(θ_i) − target_i|² over the linkage: ground pivot O2, frame angle β (O4 =
+// O2 + d·(cos β, sin β)), the four lengths d, a (crank), b (coupler), c (rocker), the coupler
+// point (along, across) on B→C, and the crank angles θ_i: one free angle per target without
+// timing; with timing θ_i = θ0 + τ_i (θ0 free) or θ_i = β + τ_i (τ measured from the frame line,
+// as the literature's benchmark problems state it). The point is
+//   B = O2 + a·(cos θ, sin θ),  C = the RRR dyad (B, b; O4, c) on ONE branch (rrr_dyad.h),
+//   P = B + along·u + across·perp(u),  u = (C − B)/b.
+// The branch is chosen per start and kept. Where a target's crank angle cannot be assembled the
+// dyad is clamped to its nearest limit (P stays continuous) and a residual proportional to the
+// gap (|O4B| − (b + c), or |b − c| − |O4B|) pushes the optimiser back: a large, smooth penalty,
+// never NaN. Every length is held in [scale·1e-2, scale·10] (scale: the diagonal of the targets'
+// bounding box) by the smooth map l = lo·(hi/lo)^σ(u), σ the logistic function, and the coupler
+// point within ±10·scale by a tanh, so no step can run away.
+//
+// The local solver is Eigen's Levenberg–Marquardt (unsupported/Eigen/LevenbergMarquardt, a port
+// of MINPACK's lmder): it ships with Eigen, which the core already depends on (Debian's
+// libeigen3-dev), so it adds no dependency; MINPACK's trust-region LM is the well-kept standard
+// for small dense nonlinear least squares, and this problem has at most 19 unknowns and 30
+// residuals. LM finds a local minimum only, so it runs from many deterministic pseudo-random
+// starts (std::mt19937 seeded by the caller; the default seed is fixed, so results repeat).
+// Each start draws a random linkage and spread of crank angles, then places it by the
+// similarity transform (rotation, translation, scale; a reflection too, which swaps the branch,
+// without timing) that best fits its points to the targets (Procrustes), so LM starts near.
+//
+// Every result is then checked independently: its Mechanism is solved with the pose solver at
+// each found crank angle, and the reported distances are those, not the optimiser's residual.
+// The defect check (defects.h) runs on the found crank angles: not Grashof when a full turn is
+// asked for, branch (targets in different assembly ranges), order, transmission over the motion
+// from the first target to the last, link lengths.
+
+#include "kinematics/model/fourbar.h"
+#include "kinematics/synthesis/candidate.h"
+
+#include <Eigen/Core>
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace linkwright::kinematics {
+
+/// What the prescribed crank angles are measured from.
+enum class TimingReference {
+  Start,  ///< θ_i = θ0 + τ_i with θ0 free: only the differences between the τ_i matter
+  Frame,  ///< θ_i = β + τ_i: τ_i measured from the frame line O2→O4 (the literature's usual form)
+};
+
+/// The path to follow.
+struct PathTarget {
+  /// The targets (length unit), in the order the coupler point must meet them; 4 to 10,
+  /// distinct. Collinear targets are allowed: a straight-line path is a real task.
+  std::vector<Eigen::Vector2d> points;
+  /// Crank angle at each target (rad), the same count as points; empty: no timing.
+  std::vector<double> timing;
+  TimingReference timingReference = TimingReference::Start;
+  bool needsFullRotation = false;  ///< a motor turns the crank round (a Grashof crank is then required)
+  std::string lengthUnit = "mm";
+};
+
+/// The number of starts that takes 6 targets to within 1 % of their scale well inside the
+/// issue's 2 s on its 2-core machine (tests/bench/synthesis_benchmark.cpp measures it).
+inline constexpr int kDefaultPathStarts = 400;
+/// The default seed: fixed, so a run repeats exactly.
+inline constexpr std::uint32_t kDefaultPathSeed = 19;
+
+/// How hard to search.
+struct PathOptions {
+  int starts = kDefaultPathStarts;        ///< LM runs from random starts, in [1, 100000]
+  std::uint32_t seed = kDefaultPathSeed;  ///< std::mt19937 seed
+  std::size_t keep = 10;                  ///< distinct local minima kept, in [1, 1000]
+  int maxEvaluations = 200;               ///< residual evaluations per LM run, in [10, 100000]
+};
+
+/// One synthesised path generator.
+struct PathCandidate {
+  /// design: the four-bar (points O2, O4, B, C, P; links crank, coupler, rocker; input: the
+  /// crank's absolute angle, CCW from +x), graded over a full turn if its crank turns fully,
+  /// else over its motion from the first target to the last; error: worstDistance;
+  /// minTransmission over that motion from the first target to the last.
+  SynthesisCandidate candidate;
+  Eigen::Vector2d o2 = Eigen::Vector2d::Zero();  ///< crank pivot (length unit)
+  Eigen::Vector2d o4 = Eigen::Vector2d::Zero();  ///< rocker pivot (length unit)
+  FourBarLengths lengths;
+  CouplerPointSpec couplerPoint;    ///< P on the coupler B→C (length unit)
+  Branch branch = Branch::Open;     ///< the one branch every target is drawn on
+  std::vector<double> crankAngles;  ///< the design's input at each target (rad, absolute, in (−π, π])
+  std::vector<double> distances;    ///< |P − target| at each target, by the pose solver (length unit)
+  double worstDistance = 0.0;       ///< the largest of distances (length unit)
+  int start = 0;                    ///< which start found it (0-based)
+  double secondsToFind = 0.0;       ///< wall time from the call's start to the end of that start (s)
+};
+
+/// The search's outcome.
+struct PathSynthesis {
+  /// Distinct local minima, best (smallest worstDistance) first, at most options.keep.
+  std::vector<PathCandidate> candidates;
+  double scale = 0.0;          ///< the diagonal of the targets' bounding box (length unit)
+  int startsRun = 0;           ///< starts completed (fewer than asked when cancelled)
+  int startsNotAssembled = 0;  ///< starts whose result could not be assembled at every target
+  bool cancelled = false;      ///< *cancel was set: candidates hold what was found before
+  double seconds = 0.0;        ///< wall time of the whole call (s)
+};
+
+/// Progress after each start: (starts done, starts in all).
+using PathProgress = std::function<void(int done, int total)>;
+
+/// Searches for four-bars whose coupler point passes through the targets. Error naming the
+/// field ("points", "points[2].x", "points[3]", "timing", "timing[1]", "starts", "keep",
+/// "maxEvaluations") for a bad request. `cancel` (may be null) is read between starts: once it
+/// is true the search stops and returns what it has, marked cancelled. `progress` (may be
+/// empty) is called on the calling thread after each start. Never throws.
+Result<PathSynthesis> synthesisePath(const PathTarget& target, const PathOptions& options = {},
+                                     const DefectBounds& bounds = {}, const std::atomic<bool>* cancel = nullptr,
+                                     const PathProgress& progress = {});
+
+}  // namespace linkwright::kinematics

@@ -1,0 +1,117 @@
+// Tests kinematics/synthesis/motion_generation.h: the four-bar built from two or three coupler
+// poses and two circle points, solved by the pose solver at the reported crank angles, puts
+// the coupler point on every pose and turns the coupler by the poses' angles, to 1e-9 of the
+// link lengths; the design is recognised as a four-bar with a tilted frame; defects and bad
+// poses are reported.
+
+#include "kinematics/synthesis/motion_generation.h"
+
+#include "kinematics/model/recognise.h"
+#include "kinematics/model/units.h"
+#include "kinematics/solve/pose_solver.h"
+
+#include "tests/support/approx.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace linkwright::kinematics;
+using linkwright::test::angleDifference;
+using linkwright::test::within;
+
+namespace {
+
+// The poses reached by the design, checked with the solver.
+void checkPassesThrough(const MotionSynthesis& s, const std::vector<CouplerPose>& poses) {
+  const Mechanism& m = s.candidate.design.mechanism;
+  const double scale = std::max({s.lengths.frame, s.lengths.crank, s.lengths.coupler, s.lengths.rocker});
+  const auto first = solvePose(m, {s.crankAngles[0], 0.0, 0.0}, {false, false});
+  REQUIRE(first.ok());
+  for (std::size_t j = 0; j < poses.size(); ++j) {
+    CAPTURE(j);
+    const auto pose = solvePose(m, {s.crankAngles[j], 0.0, 0.0}, {false, false});
+    REQUIRE(pose.ok());
+    CHECK((pose->position[fourbar::kCouplerPoint.index] - poses[j].point).norm() < 1e-9 * scale);
+    const double turned = pose->linkAngle[fourbar::kCoupler.index] - first->linkAngle[fourbar::kCoupler.index];
+    CHECK(angleDifference(turned, poses[j].angle - poses[0].angle) == within(0.0, 1e-9));
+  }
+}
+
+const std::vector<CouplerPose> kThree{
+    {{0.0, 0.0}, 0.0}, {{40.0, 20.0}, degToRad(25.0)}, {{75.0, 15.0}, degToRad(55.0)}};
+
+}  // namespace
+
+TEST_CASE("Three poses: the linkage passes through each exactly", "[synthesis][motion]") {
+  const auto [ax, ay, bx, by] = GENERATE(table<double, double, double, double>(
+      {{-20.0, -30.0, 30.0, -40.0}, {-10.0, -25.0, 50.0, -20.0}, {0.0, -40.0, 40.0, -35.0}}));
+  CAPTURE(ax, ay, bx, by);
+  const auto s = synthesiseMotion3(kThree, {{ax, ay}, {bx, by}});
+  REQUIRE(s.ok());
+  // The centre points are equidistant from their circle point's three positions.
+  for (std::size_t j = 1; j < 3; ++j) {
+    CHECK((s->a[j] - s->o2).norm() == within(s->lengths.crank, 1e-10 * s->lengths.crank));
+    CHECK((s->b[j] - s->o4).norm() == within(s->lengths.rocker, 1e-10 * s->lengths.rocker));
+  }
+  const auto fourBar = asFourBar(s->candidate.design.mechanism);
+  REQUIRE(fourBar.has_value());
+  CHECK(fourBar->lengths == s->lengths);
+  CHECK(fourBar->frameAngle == within(std::atan2(s->o4.y() - s->o2.y(), s->o4.x() - s->o2.x()), 1e-15));
+  REQUIRE_FALSE(s->candidate.has(DefectKind::Branch));
+  checkPassesThrough(*s, kThree);
+}
+
+TEST_CASE("Two poses: any centre points on the bisectors pass through both", "[synthesis][motion]") {
+  const std::vector<CouplerPose> poses{{{0.0, 0.0}, 0.0}, {{50.0, 10.0}, degToRad(40.0)}};
+  for (const double along : {-30.0, 20.0, 60.0}) {
+    CAPTURE(along);
+    const auto s = synthesiseMotion2(poses, {{-10.0, -20.0}, {30.0, -25.0}}, along, -along / 2.0);
+    REQUIRE(s.ok());
+    CHECK((s->a[1] - s->o2).norm() == within(s->lengths.crank, 1e-10 * s->lengths.crank));
+    CHECK((s->b[1] - s->o4).norm() == within(s->lengths.rocker, 1e-10 * s->lengths.rocker));
+    if (!s->candidate.has(DefectKind::Branch)) {
+      checkPassesThrough(*s, poses);
+      continue;
+    }
+    // A branch defect is real: on the branch of pose 1 the solver misses pose 2.
+    const auto pose = solvePose(s->candidate.design.mechanism, {s->crankAngles[1], 0.0, 0.0}, {false, false});
+    REQUIRE(pose.ok());
+    CHECK((pose->position[fourbar::kCouplerPoint.index] - poses[1].point).norm() > 1e-3);
+  }
+}
+
+TEST_CASE("Motion candidates report their defects", "[synthesis][motion][defects]") {
+  const auto s = synthesiseMotion3(kThree, {{-20.0, -30.0}, {30.0, -40.0}}, DefectBounds{}, {true, "mm"});
+  REQUIRE(s.ok());
+  for (const Defect& d : s->candidate.defects) CHECK_FALSE(d.message.empty());
+  // The report agrees with the Grashof class.
+  REQUIRE(s->candidate.grashof.has_value());
+  CHECK(s->candidate.has(DefectKind::NotGrashof) == !s->candidate.grashof->inputFullyRotates);
+}
+
+TEST_CASE("Bad poses and circle points are errors naming the field", "[synthesis][motion][errors]") {
+  const CirclePoints circle{{-20.0, -30.0}, {30.0, -40.0}};
+  // Two identical poses.
+  auto same = kThree;
+  same[2] = same[1];
+  auto r = synthesiseMotion3(same, circle);
+  REQUIRE_FALSE(r.ok());
+  CHECK(r.error().field == "poses[2]");
+  // Pure translation along a line: every point's positions are collinear.
+  const std::vector<CouplerPose> line{{{0.0, 0.0}, 0.3}, {{10.0, 5.0}, 0.3}, {{30.0, 15.0}, 0.3}};
+  r = synthesiseMotion3(line, circle);
+  REQUIRE_FALSE(r.ok());
+  CHECK(r.error().field == "circlePoints.a");
+  // Not three poses; a NaN.
+  CHECK(synthesiseMotion3({kThree[0], kThree[1]}, circle).error().field == "poses");
+  auto nan = kThree;
+  nan[1].angle = NAN;
+  CHECK(synthesiseMotion3(nan, circle).error().field == "poses[1].angle");
+  CHECK(synthesiseMotion3(kThree, {{-20.0, -30.0}, {-20.0, -30.0}}).error().field == "circlePoints.b");
+  // Two poses turned 90° about (10, 0): that point is the pole and cannot be a circle point.
+  const std::vector<CouplerPose> turn{{{0.0, 0.0}, 0.0}, {{10.0, -10.0}, kPi / 2.0}};
+  const auto pole = synthesiseMotion2(turn, {{10.0, 0.0}, {0.0, 5.0}}, 5.0, 5.0);
+  REQUIRE_FALSE(pole.ok());
+  CHECK(pole.error().field == "circlePoints.a");
+}
