@@ -280,8 +280,9 @@ std::optional<Error> checkCombination(const Invocation& inv) {
 kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& args) {
   Invocation inv;
   if (args.empty())
-    return usage("COMMAND",
-                 "missing command (analyze, extremes, classify, arm, centres, accuracy or examples; see --help)");
+    return usage(
+        "COMMAND",
+        "missing command (analyze, extremes, classify, arm, centres, accuracy, synthesize or examples; see --help)");
   const std::string& first = args[0];
   if (first == "--help" || first == "-h" || first == "help") {
     inv.command = Command::Help;
@@ -290,6 +291,20 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   }
   if (first == "--version") {
     inv.command = Command::Version;
+    return inv;
+  }
+  if (first == "synthesize") {
+    // Each synthesis problem has its own options (synthesize_options.h).
+    const std::vector<std::string> rest(args.begin() + 1, args.end());
+    for (const std::string& arg : rest)
+      if (arg == "--help" || arg == "-h") {
+        inv.helpTopic = "synthesize";
+        return inv;
+      }
+    auto request = parseSynthesisArguments(rest);
+    if (!request) return request.error();
+    inv.command = Command::Synthesize;
+    inv.synthesis = std::move(*request);
     return inv;
   }
   if (first == "analyze") inv.command = Command::Analyze;
@@ -302,8 +317,10 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   else if (!first.empty() && first[0] == '-')
     return usage(first, "unknown option '" + first + "' (see linkwright-cli --help)");
   else
-    return usage(first, "unknown command '" + first +
-                            "' (commands: analyze, extremes, classify, arm, centres, accuracy, examples; see --help)");
+    return usage(
+        first,
+        "unknown command '" + first +
+            "' (commands: analyze, extremes, classify, arm, centres, accuracy, synthesize, examples; see --help)");
   if (inv.command == Command::Arm) inv.lengthUnit = "m";  // the arm's seed (004) works in metres
 
   std::set<std::string> seen;

@@ -3,6 +3,8 @@
 // std::from_chars, so '.' is the decimal point whatever the locale. Every error names the
 // option and the reason.
 
+#include "app/cli/synthesize_options.h"
+
 #include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/result.h"
@@ -16,7 +18,7 @@
 
 namespace linkwright::cli {
 
-enum class Command { Help, Version, Examples, Analyze, Classify, Extremes, Arm, Centres, Accuracy };
+enum class Command { Help, Version, Examples, Analyze, Classify, Extremes, Arm, Centres, Accuracy, Synthesize };
 
 /// Everything the user asked for. Angles in degrees and speeds as typed: converted to SI by
 /// the commands, at the edge.
@@ -57,7 +59,8 @@ struct Invocation {
   std::optional<kinematics::Branch> elbow;       ///< up = Open, down = Crossed
   // centres: crank angles in degrees, finite, in the order given (--at is repeatable).
   std::vector<double> atDeg;
-  std::optional<std::string> svgFile;  ///< accuracy --svg: where to draw the error plot
+  std::optional<std::string> svgFile;         ///< accuracy --svg: where to draw the error plot
+  std::optional<SynthesisRequest> synthesis;  ///< synthesize: the problem and its options
 };
 
 /// Parses the arguments after the program name.

@@ -24,6 +24,9 @@ Commands:
              (four-bars, slider-cranks)
   accuracy   how far peaks read off N samples per turn are from the exact ones, and
              what each choice costs (CSV; optional SVG plot)
+  synthesize a linkage from the motion wanted: rocker swing and time ratio, slider or
+             shaper stroke, function generator, coupler poses, coupler path; lists
+             the candidates with their defects and writes the chosen one as a document
   examples   list the built-in examples
   --help [COMMAND], --version
 
@@ -159,6 +162,65 @@ constexpr const char* kAccuracyOptions = R"(Accuracy options (the speed-accuracy
   angles' in degrees.
 )";
 
+constexpr const char* kSynthesizeOptions =
+    R"(Synthesize (linkwright-cli synthesize PROBLEM [OPTIONS]; see docs/synthesis.md). Angles in
+degrees CCW from +x (for four-bars the frame line O2->O4 is +x); lengths in the length unit.
+  swing --swing DEG --time-ratio Q (--rocker L | --frame L) [--count N]
+                      crank-rockers whose rocker swings DEG (0 < DEG < 180) with time ratio
+                      Q (slow stroke / quick stroke, 1 to 100), the rocker or frame length
+                      fixed: N of the family (1 to 1000, default 11) and the best (largest
+                      worst transmission angle within --max-ratio)
+  slider --stroke S --time-ratio Q (--rod L | --offset E)
+                      the offset slider-crank with stroke S and time ratio Q, the rod
+                      length or the guide's offset E (any sign; 0 when Q = 1) fixed
+  shaper --stroke S --time-ratio Q --crank L --link L [--guide-height H]
+                      the crank-shaper with ram stroke S and time ratio Q (> 1), crank L,
+                      link L from the lever to the ram; the ram's guide at height H
+                      (default: mid-height of the lever tip's arc)
+  function --function NAME --x0 A --x1 B --input-start DEG --input-span DEG
+           --output-start DEG --output-span DEG [--frame L] [--points N | --at X,X,X...]
+                      a four-bar whose rocker angle follows y = NAME(x) (log10, ln, exp,
+                      sqrt, square, cube, reciprocal, sin, cos, tan; x in radians for the
+                      last three) as its crank follows x over [A, B]: crank from the start
+                      through the span, rocker likewise (spans nonzero, under 360).
+                      Freudenstein's equation at N Chebyshev points (default 3, exact;
+                      more: least squares) or at the given points (at least 3, increasing,
+                      in [A, B]); frame length L (default 100). The error is the worst
+                      output angle error over [A, B], degrees
+  motion --pose X,Y,DEG (2 or 3 times) --circle-point X,Y --circle-point X,Y
+         [--centre D --centre D] [--full-turn]
+                      a four-bar whose coupler point is at X,Y with the coupler at DEG in
+                      each pose. The circle points are the crank's, then the rocker's,
+                      moving pivot where they are at pose 1; with three poses their
+                      centre points (the ground pivots) follow (Burmester); with two, each
+                      --centre D places one on its perpendicular bisector, D from the
+                      chord's midpoint, positive to the left of pose 1 -> pose 2.
+                      --full-turn: a motor turns the crank round (a crank that cannot is
+                      a defect)
+  path --target X,Y (4 to 10 times) [--timing DEG,DEG,... [--timing-from start|frame]]
+       [--starts N] [--seed S] [--full-turn]
+                      four-bars whose coupler point passes through the targets in order,
+                      by Levenberg-Marquardt from N random starts (1 to 100000, default
+                      400; seed S, default 19: a run repeats exactly); the best ten
+                      distinct ones, best first. --timing: the crank angle at each target,
+                      from a free start angle (default) or from the frame line. The error
+                      is the worst distance to a target, in the length unit
+  Common options:
+  --unit NAME         length unit label (default mm; letters only)
+  --min-transmission DEG
+                      a worst transmission angle below DEG is a defect (0 to 90, default 40)
+  --max-link L        a link longer than L is a defect (default: no bound)
+  --max-ratio R       longest / shortest link above R is a defect (1 to 1e6, default 10)
+  --json              the candidates as JSON instead of text
+  --choose K          the candidate to write: its number in the list (default: the best)
+  -o, --output FILE   write the chosen candidate as a Linkwright document (atomically);
+                      'linkwright-cli analyze FILE' analyses it
+Output: each candidate's link lengths, error (function: degrees), Grashof class, worst
+  transmission angle over the motion it must make, and defects, each with its reason
+  (not-grashof, branch, order, transmission, link-length); a candidate with a defect is
+  listed and marked, never dropped. Then the chosen one's dimensions and figures.
+)";
+
 constexpr const char* kExitCodes = R"(Exit codes:
   0  success
   1  the output file could not be written
@@ -167,13 +229,15 @@ constexpr const char* kExitCodes = R"(Exit codes:
   3  the linkage cannot be assembled over the requested range (rows that assemble are
      still written; the message gives the ranges that do not and the range that does);
      for arm: the tip path leaves the workspace (the message gives the exact times);
-     for centres: a requested crank angle cannot be assembled
+     for centres: a requested crank angle cannot be assembled; for synthesize path: no
+     start found a four-bar that assembles at every target
 
 Examples:
   linkwright-cli analyze --fourbar 60,25,70,45 --rpm 10 --step 30
   linkwright-cli analyze --example funsho-fourbar --forces --step 30
   linkwright-cli arm --example seed-arm --format table
   linkwright-cli centres --example thesis-crank-rocker --at 0,90
+  linkwright-cli synthesize swing --swing 60 --time-ratio 1.3 --rocker 50 -o design.json
 )";
 
 }  // namespace
@@ -187,6 +251,7 @@ std::string helpText(const std::string& topic) {
   if (topic.empty() || topic == "centres") text += std::string("\n") + kCentresOptions;
   if (topic.empty() || topic == "arm") text += std::string(topic.empty() ? "\n" : "") + kArmOptions;
   if (topic.empty() || topic == "accuracy") text += std::string("\n") + kAccuracyOptions;
+  if (topic.empty() || topic == "synthesize") text += std::string("\n") + kSynthesizeOptions;
   return text + "\n" + kExitCodes;
 }
 
@@ -201,9 +266,10 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   case Command::Help:
     if (!inv.helpTopic.empty() && inv.helpTopic != "analyze" && inv.helpTopic != "classify" &&
         inv.helpTopic != "extremes" && inv.helpTopic != "arm" && inv.helpTopic != "centres" &&
-        inv.helpTopic != "accuracy" && inv.helpTopic != "examples" && inv.helpTopic != "linkwright-cli") {
+        inv.helpTopic != "accuracy" && inv.helpTopic != "synthesize" && inv.helpTopic != "examples" &&
+        inv.helpTopic != "linkwright-cli") {
       err << "linkwright-cli: no help for '" << inv.helpTopic
-          << "' (commands: analyze, extremes, classify, arm, centres, examples)\n";
+          << "' (commands: analyze, extremes, classify, arm, centres, accuracy, synthesize, examples)\n";
       return toInt(ExitCode::BadInput);
     }
     out << helpText(inv.helpTopic == "linkwright-cli" || inv.helpTopic == "examples" ? "" : inv.helpTopic);
@@ -216,6 +282,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   case Command::Arm: return toInt(runArm(inv, out, err));
   case Command::Centres: return toInt(runCentres(inv, out, err));
   case Command::Accuracy: return toInt(runAccuracy(inv, out, err));
+  case Command::Synthesize: return toInt(runSynthesize(inv, out, err));
   }
   return toInt(ExitCode::BadInput);
 }

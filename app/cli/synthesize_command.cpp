@@ -1,0 +1,52 @@
+// `linkwright-cli synthesize PROBLEM …`: solves the synthesis problem (kinematics/synthesis/),
+// prints every candidate with its defects (text or JSON) and writes the chosen one as a
+// Linkwright document that analyze, extremes and classify read.
+
+#include "app/cli/atomic_file.h"
+#include "app/cli/commands.h"
+#include "app/cli/synthesize_report.h"
+
+#include "kinematics/io/document_json.h"
+
+#include <ostream>
+
+namespace linkwright::cli {
+
+ExitCode runSynthesize(const Invocation& inv, std::ostream& out, std::ostream& err) {
+  const SynthesisRequest& request = *inv.synthesis;
+  const auto report = solveSynthesis(request);
+  if (!report) {
+    err << "linkwright-cli: " << report.error().message << "\n";
+    // A search that found nothing is not bad input: the targets may be fine, the starts too few.
+    return report.error().code == kinematics::ErrorCode::NotAssemblable ? ExitCode::NotAssemblable : ExitCode::BadInput;
+  }
+  const std::size_t count = report->rows.size();
+  if (request.choose && static_cast<std::size_t>(*request.choose) > count) {
+    err << "linkwright-cli: --choose must be between 1 and " << count << " (the candidates listed; got "
+        << *request.choose << ")\n";
+    return ExitCode::BadInput;
+  }
+  const std::size_t chosen = request.choose ? static_cast<std::size_t>(*request.choose - 1) : report->best;
+  const CandidateRow& row = report->rows[chosen];
+  // Write first, so the JSON names a document that exists.
+  if (request.outputFile) {
+    if (auto e = writeFileAtomically(*request.outputFile, kinematics::io::writeDocument(row.candidate.design))) {
+      err << "linkwright-cli: " << *e << "\n";
+      return ExitCode::IoError;
+    }
+    if (!row.candidate.defects.empty()) {
+      err << "linkwright-cli: note: candidate #" << (chosen + 1) << ", written to " << *request.outputFile
+          << ", has defects:";
+      for (const kinematics::Defect& d : row.candidate.defects) err << " " << kinematics::toString(d.kind) << ";";
+      err << " see the list\n";
+    }
+  }
+  if (request.json) writeReportJson(*report, chosen, request.outputFile, out);
+  else {
+    writeReportText(*report, chosen, out);
+    if (request.outputFile) out << "\nwrote #" << (chosen + 1) << " to " << *request.outputFile << "\n";
+  }
+  return ExitCode::Success;
+}
+
+}  // namespace linkwright::cli
