@@ -1,4 +1,5 @@
 #include "app/cli/arguments.h"
+#include "app/cli/option_values.h"
 
 #include "kinematics/model/validate.h"
 
@@ -11,42 +12,6 @@ namespace linkwright::cli {
 namespace {
 
 using kinematics::Error;
-using kinematics::ErrorCode;
-
-Error usage(const std::string& option, const std::string& message) {
-  return Error{ErrorCode::InvalidValue, option, message};
-}
-
-std::optional<double> parseNumber(const std::string& text) {
-  double value = 0.0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (ec != std::errc{} || ptr != end || text.empty()) return std::nullopt;
-  return value;
-}
-
-std::vector<std::string> splitCommas(const std::string& text) {
-  std::vector<std::string> parts;
-  std::size_t start = 0;
-  for (std::size_t comma; (comma = text.find(',', start)) != std::string::npos; start = comma + 1)
-    parts.push_back(text.substr(start, comma - start));
-  parts.push_back(text.substr(start));
-  return parts;
-}
-
-// Reads N comma-separated numbers; the error names the option and quotes the bad part.
-kinematics::Result<std::vector<double>> parseList(const std::string& option, const std::string& text, std::size_t count,
-                                                  const std::string& shape) {
-  const std::vector<std::string> parts = splitCommas(text);
-  if (parts.size() != count) return usage(option, option + " expects " + shape + " (got '" + text + "')");
-  std::vector<double> values;
-  for (const std::string& part : parts) {
-    const auto value = parseNumber(part);
-    if (!value) return usage(option, option + ": '" + part + "' is not a number (expected " + shape + ")");
-    values.push_back(*value);
-  }
-  return values;
-}
 
 const std::set<std::string>& optionsOf(Command command) {
   static const std::set<std::string> analyze{

@@ -2,6 +2,7 @@
 // without, the ones that exclude each other, counts (poses, circle points, targets) and where a
 // named function is defined. Messages name the options as the user typed them.
 
+#include "app/cli/option_values.h"
 #include "app/cli/synthesize_options.h"
 
 #include "kinematics/model/units.h"
@@ -15,12 +16,7 @@ namespace linkwright::cli {
 namespace {
 
 using kinematics::Error;
-using kinematics::ErrorCode;
 using kinematics::formatNumber;
-
-Error usage(const std::string& option, const std::string& message) {
-  return Error{ErrorCode::InvalidValue, option, message};
-}
 
 std::optional<Error> require(bool given, const std::string& option, const std::string& what) {
   if (given) return std::nullopt;

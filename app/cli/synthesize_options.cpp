@@ -1,4 +1,5 @@
 #include "app/cli/synthesize_options.h"
+#include "app/cli/option_values.h"
 
 #include "kinematics/synthesis/named_function.h"
 
@@ -15,47 +16,20 @@ namespace linkwright::cli {
 namespace {
 
 using kinematics::Error;
-using kinematics::ErrorCode;
 using kinematics::formatNumber;
 
-Error usage(const std::string& option, const std::string& message) {
-  return Error{ErrorCode::InvalidValue, option, message};
-}
-
-std::optional<double> parseNumber(const std::string& text) {
-  double value = 0.0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (ec != std::errc{} || ptr != end || text.empty()) return std::nullopt;
-  return value;
-}
-
-std::vector<std::string> splitCommas(const std::string& text) {
-  std::vector<std::string> parts;
-  std::size_t start = 0;
-  for (std::size_t comma; (comma = text.find(',', start)) != std::string::npos; start = comma + 1)
-    parts.push_back(text.substr(start, comma - start));
-  parts.push_back(text.substr(start));
-  return parts;
-}
-
-// Finite numbers, comma-separated; `count` 0 means any number of them.
-kinematics::Result<std::vector<double>> parseList(const std::string& option, const std::string& text, std::size_t count,
-                                                  const std::string& shape) {
-  const std::vector<std::string> parts = splitCommas(text);
-  if (count != 0 && parts.size() != count) return usage(option, option + " expects " + shape + " (got '" + text + "')");
-  std::vector<double> values;
-  for (const std::string& part : parts) {
-    const auto value = parseNumber(part);
-    if (!value) return usage(option, option + ": '" + part + "' is not a number (expected " + shape + ")");
-    if (auto e = kinematics::checkCoordinate(*value, option)) return usage(option, e->message);
-    values.push_back(*value);
-  }
+// Finite numbers within the input domain, comma-separated; `count` 0 means any number of them.
+kinematics::Result<std::vector<double>> parseCoordinates(const std::string& option, const std::string& text,
+                                                         std::size_t count, const std::string& shape) {
+  auto values = parseList(option, text, count, shape);
+  if (!values) return values.error();
+  for (const double value : *values)
+    if (auto e = kinematics::checkCoordinate(value, option)) return usage(option, e->message);
   return values;
 }
 
 kinematics::Result<double> finiteNumber(const std::string& option, const std::string& text) {
-  auto list = parseList(option, text, 1, "a number");
+  auto list = parseCoordinates(option, text, 1, "a number");
   if (!list) return list.error();
   return list->front();
 }
@@ -127,7 +101,7 @@ std::optional<Error> swing(SynthesisRequest& r, const std::string& option, const
 }
 
 std::optional<Error> point(std::vector<Eigen::Vector2d>& into, const std::string& option, const std::string& value) {
-  auto list = parseList(option, value, 2, "X,Y");
+  auto list = parseCoordinates(option, value, 2, "X,Y");
   if (!list) return list.error();
   into.emplace_back((*list)[0], (*list)[1]);
   return std::nullopt;
@@ -224,14 +198,14 @@ const std::map<std::string, Handler>& handlers() {
        }},
       {"--at",
        [](SynthesisRequest& r, const std::string& option, const std::string& value) -> std::optional<Error> {
-         auto list = parseList(option, value, 0, "X1,X2,X3,...");
+         auto list = parseCoordinates(option, value, 0, "X1,X2,X3,...");
          if (!list) return list.error();
          r.at.insert(r.at.end(), list->begin(), list->end());
          return std::nullopt;
        }},
       {"--pose",
        [](SynthesisRequest& r, const std::string& option, const std::string& value) -> std::optional<Error> {
-         auto list = parseList(option, value, 3, "X,Y,DEG");
+         auto list = parseCoordinates(option, value, 3, "X,Y,DEG");
          if (!list) return list.error();
          r.poses.push_back({Eigen::Vector2d((*list)[0], (*list)[1]), (*list)[2]});
          return std::nullopt;
@@ -254,7 +228,7 @@ const std::map<std::string, Handler>& handlers() {
                       const std::string& value) { return point(r.targets, option, value); }},
       {"--timing",
        [](SynthesisRequest& r, const std::string& option, const std::string& value) -> std::optional<Error> {
-         auto list = parseList(option, value, 0, "DEG,DEG,...");
+         auto list = parseCoordinates(option, value, 0, "DEG,DEG,...");
          if (!list) return list.error();
          r.timingDeg = *list;
          return std::nullopt;

@@ -19,11 +19,6 @@ using synthesis_text::number;
 // ~1e-15 rad.
 constexpr double kAngleSlack = 1e-9;
 
-double wrapPositive(double angle) {
-  const double w = std::fmod(angle, 2.0 * kPi);
-  return w < 0.0 ? w + 2.0 * kPi : w;
-}
-
 // The assemblable interval holding `angle`, and `angle` unwrapped into it; nullopt if none.
 std::optional<std::pair<AngleRange, double>> rangeHolding(const InputRange& range, double angle) {
   for (const AngleRange& r : range.ranges) {
@@ -174,6 +169,18 @@ FourBarCheck checkFourBar(const FourBarTask& task, const DefectBounds& bounds) {
           linkLengthDefect({l.frame, l.crank, l.coupler, l.rocker}, {"frame", "crank", "coupler", "rocker"}, bounds))
     check.defects.push_back(*d);
   return check;
+}
+
+double wrapPositive(double angle) {
+  const double w = std::fmod(angle, 2.0 * kPi);
+  return w < 0.0 ? w + 2.0 * kPi : w;
+}
+
+CrankSpan crankSpanThrough(const std::vector<double>& angles) {
+  const double last = wrapPositive(angles.back() - angles.front());
+  bool counterClockwise = last <= kPi;
+  if (angles.size() > 2) counterClockwise = wrapPositive(angles[1] - angles.front()) < last;
+  return {angles.front(), angles.front() + (counterClockwise ? last : last - 2.0 * kPi)};
 }
 
 }  // namespace linkwright::kinematics

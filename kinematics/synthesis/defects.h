@@ -64,6 +64,13 @@ std::optional<double> worstTransmission(const FourBarLengths& lengths);
 std::optional<Defect> linkLengthDefect(const std::vector<double>& lengths, const std::vector<std::string>& names,
                                        const DefectBounds& bounds);
 
+/// `angle` (rad) brought into [0, 2π).
+double wrapPositive(double angle);
+
+/// The crank's motion from the first of `angles` (rad, at least two) to the last, the way that
+/// passes the second (with two, the shorter way).
+CrankSpan crankSpanThrough(const std::vector<double>& angles);
+
 /// The transmission defect if `minTransmission` (rad) is below the bound.
 std::optional<Defect> transmissionDefect(double minTransmission, const DefectBounds& bounds);
 

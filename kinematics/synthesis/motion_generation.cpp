@@ -1,5 +1,7 @@
 #include "kinematics/synthesis/motion_generation.h"
 
+#include "kinematics/synthesis/placed_fourbar.h"
+
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
@@ -13,11 +15,6 @@ namespace {
 
 Error invalid(const std::string& field, const std::string& message) {
   return Error{ErrorCode::InvalidValue, field, message};
-}
-
-double wrapPositive(double angle) {
-  const double w = std::fmod(angle, 2.0 * kPi);
-  return w < 0.0 ? w + 2.0 * kPi : w;
 }
 
 std::optional<Error> checkPoint(const Eigen::Vector2d& p, const std::string& field) {
@@ -80,35 +77,6 @@ Branch branchOf(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen:
   return cross(b - a, b - o4) >= 0.0 ? Branch::Open : Branch::Crossed;
 }
 
-// The crank's motion from pose 1 to the last pose, the way that passes the middle pose (two
-// poses: the shorter way).
-CrankSpan workingSpan(const std::vector<double>& angles) {
-  const double last = wrapPositive(angles.back() - angles.front());
-  bool counterClockwise = last <= kPi;
-  if (angles.size() > 2) counterClockwise = wrapPositive(angles[1] - angles.front()) < last;
-  return {angles.front(), angles.front() + (counterClockwise ? last : last - 2.0 * kPi)};
-}
-
-Mechanism motionMechanism(const MotionSynthesis& s, const CouplerPose& pose1, const std::string& unit) {
-  const Eigen::Vector2d u = (s.b[0] - s.a[0]).normalized();
-  const Eigen::Vector2d r = pose1.point - s.a[0];
-  Mechanism m;
-  m.lengthUnit = unit;
-  m.points = {
-      {"O2", GroundPoint{s.o2}},
-      {"O4", GroundPoint{s.o4}},
-      {"B", CrankPoint{fourbar::kO2, s.lengths.crank, 0.0}},
-      {"C", RrrPoint{fourbar::kB, s.lengths.coupler, fourbar::kO4, s.lengths.rocker, s.branch}},
-      {"P", AttachedPoint{fourbar::kCoupler, r.dot(u), cross(u, r)}},
-  };
-  m.links = {
-      {"crank", fourbar::kO2, fourbar::kB},
-      {"coupler", fourbar::kB, fourbar::kC},
-      {"rocker", fourbar::kO4, fourbar::kC},
-  };
-  return m;
-}
-
 Result<MotionSynthesis> build(const std::vector<CouplerPose>& poses, const CirclePoints& c, const Eigen::Vector2d& o2,
                               const Eigen::Vector2d& o4, const DefectBounds& bounds, const MotionOptions& options) {
   MotionSynthesis s;
@@ -138,11 +106,13 @@ Result<MotionSynthesis> build(const std::vector<CouplerPose>& poses, const Circl
     task.crankAngles.push_back(s.crankAngles[j] - frameAngle);
     task.branches.push_back(branchOf(s.a[j], s.b[j], o4));
   }
-  const CrankSpan span = workingSpan(s.crankAngles);
+  const CrankSpan span = crankSpanThrough(s.crankAngles);
   task.workingRange = CrankSpan{span.from - frameAngle, span.to - frameAngle};
   Design d;
   d.kind = "four-bar";
-  d.mechanism = motionMechanism(s, poses[0], options.lengthUnit);
+  const Eigen::Vector2d u = (s.b[0] - s.a[0]).normalized();
+  const Eigen::Vector2d r = poses[0].point - s.a[0];  // P on the coupler A→B, from A
+  d.mechanism = placedFourBar(o2, o4, s.lengths, s.branch, {r.dot(u), cross(u, r)}, options.lengthUnit);
   d.fromDeg = radToDeg(std::min(span.from, span.to));
   d.toDeg = radToDeg(std::max(span.from, span.to));
   d.samples = std::max<std::size_t>(2, samplesEveryHalfDegree(d.fromDeg, d.toDeg));

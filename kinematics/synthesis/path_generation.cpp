@@ -1,5 +1,7 @@
 #include "kinematics/synthesis/path_generation.h"
 
+#include "kinematics/synthesis/placed_fourbar.h"
+
 #include "kinematics/design/design.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
@@ -34,11 +36,6 @@ constexpr double kExactFit = 1e-13;
 
 Error invalid(const std::string& field, const std::string& message) {
   return Error{ErrorCode::InvalidValue, field, message};
-}
-
-double wrapPositive(double angle) {
-  const double w = std::fmod(angle, 2.0 * kPi);
-  return w < 0.0 ? w + 2.0 * kPi : w;
 }
 
 // The bounding box's centre and diagonal.
@@ -266,31 +263,6 @@ std::optional<Minimum> refine(Eigen::VectorXd x, Branch branch, const std::vecto
   return m;
 }
 
-// The crank's motion from the first target to the last, the way that passes the second.
-CrankSpan workingSpan(const std::vector<double>& angles) {
-  const double last = wrapPositive(angles.back() - angles.front());
-  const bool counterClockwise = wrapPositive(angles[1] - angles.front()) <= last;
-  return {angles.front(), angles.front() + (counterClockwise ? last : last - 2.0 * kPi)};
-}
-
-Mechanism pathMechanism(const PathCandidate& c, const std::string& unit) {
-  Mechanism m;
-  m.lengthUnit = unit;
-  m.points = {
-      {"O2", GroundPoint{c.o2}},
-      {"O4", GroundPoint{c.o4}},
-      {"B", CrankPoint{fourbar::kO2, c.lengths.crank, 0.0}},
-      {"C", RrrPoint{fourbar::kB, c.lengths.coupler, fourbar::kO4, c.lengths.rocker, c.branch}},
-      {"P", AttachedPoint{fourbar::kCoupler, c.couplerPoint.along, c.couplerPoint.across}},
-  };
-  m.links = {
-      {"crank", fourbar::kO2, fourbar::kB},
-      {"coupler", fourbar::kB, fourbar::kC},
-      {"rocker", fourbar::kO4, fourbar::kC},
-  };
-  return m;
-}
-
 // The minimum in the user's units, measured with the pose solver and checked for defects;
 // nullopt if the solver cannot assemble it at some target (it then reaches no target there).
 std::optional<PathCandidate> candidateFrom(const Minimum& m, const PathTarget& t, const Eigen::Vector2d& centre,
@@ -308,7 +280,7 @@ std::optional<PathCandidate> candidateFrom(const Minimum& m, const PathTarget& t
   c.secondsToFind = m.seconds;
   Design d;
   d.kind = "four-bar";
-  d.mechanism = pathMechanism(c, t.lengthUnit);
+  d.mechanism = placedFourBar(c.o2, c.o4, c.lengths, c.branch, c.couplerPoint, t.lengthUnit);
   SolveRequest request{false, false};
   request.transmissionAngles = false;
   for (std::size_t i = 0; i < t.points.size(); ++i) {
@@ -318,7 +290,7 @@ std::optional<PathCandidate> candidateFrom(const Minimum& m, const PathTarget& t
     c.worstDistance = std::max(c.worstDistance, c.distances.back());
   }
   const double beta = std::atan2(c.o4.y() - c.o2.y(), c.o4.x() - c.o2.x());
-  const CrankSpan span = workingSpan(c.crankAngles);
+  const CrankSpan span = crankSpanThrough(c.crankAngles);
   FourBarTask task{c.lengths,
                    {},
                    std::vector<Branch>(c.crankAngles.size(), c.branch),

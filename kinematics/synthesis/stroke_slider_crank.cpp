@@ -12,11 +12,6 @@ namespace {
 
 using synthesis_text::number;
 
-double wrapPositive(double angle) {
-  const double w = std::fmod(angle, 2.0 * kPi);
-  return w < 0.0 ? w + 2.0 * kPi : w;
-}
-
 Error invalid(const std::string& field, const std::string& message) {
   return Error{ErrorCode::InvalidValue, field, message};
 }

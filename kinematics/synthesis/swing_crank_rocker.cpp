@@ -18,11 +18,6 @@ namespace {
 constexpr int kScan = 512;
 constexpr int kBisections = 200;
 
-double wrapPositive(double angle) {
-  const double w = std::fmod(angle, 2.0 * kPi);
-  return w < 0.0 ? w + 2.0 * kPi : w;
-}
-
 // The construction for a unit rocker, in the frame of the header: C1 = (−s, 0), C2 = (s, 0),
 // O4 on the bisector above the chord.
 struct Construction {
