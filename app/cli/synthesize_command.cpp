@@ -30,7 +30,10 @@ ExitCode runSynthesize(const Invocation& inv, std::ostream& out, std::ostream& e
   const CandidateRow& row = report->rows[chosen];
   // Write first, so the JSON names a document that exists.
   if (request.outputFile) {
-    if (auto e = writeFileAtomically(*request.outputFile, kinematics::io::writeDocument(row.candidate.design))) {
+    // The document keeps what it was synthesised for: the designer shows the targets again.
+    kinematics::Design design = row.candidate.design;
+    design.synthesis = targetsOf(request);
+    if (auto e = writeFileAtomically(*request.outputFile, kinematics::io::writeDocument(design))) {
       err << "linkwright-cli: " << *e << "\n";
       return ExitCode::IoError;
     }

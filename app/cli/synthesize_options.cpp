@@ -293,18 +293,6 @@ bool takesValue(const std::string& option) { return option != "--json" && option
 
 }  // namespace
 
-const char* problemName(SynthesisProblem problem) {
-  switch (problem) {
-  case SynthesisProblem::Swing: return "swing";
-  case SynthesisProblem::Slider: return "slider";
-  case SynthesisProblem::Shaper: return "shaper";
-  case SynthesisProblem::Function: return "function";
-  case SynthesisProblem::Motion: return "motion";
-  case SynthesisProblem::Path: return "path";
-  }
-  return "swing";
-}
-
 kinematics::Result<SynthesisRequest> parseSynthesisArguments(const std::vector<std::string>& args) {
   SynthesisRequest r;
   const std::string problems = "swing, slider, shaper, function, motion or path";

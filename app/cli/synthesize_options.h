@@ -4,6 +4,7 @@
 // locale); angles stay in degrees as typed and are converted by the command, at the edge. Every
 // error names the option, the value and the accepted range.
 
+#include "kinematics/design/synthesis_targets.h"
 #include "kinematics/model/result.h"
 
 #include <Eigen/Core>
@@ -14,10 +15,9 @@
 
 namespace linkwright::cli {
 
-enum class SynthesisProblem { Swing, Slider, Shaper, Function, Motion, Path };
+using kinematics::SynthesisProblem;
 
-/// "swing", "slider", "shaper", "function", "motion", "path".
-const char* problemName(SynthesisProblem problem);
+using kinematics::problemName;
 
 /// A coupler pose as typed: X,Y in the length unit, the coupler's angle in degrees CCW from +x.
 struct PoseOption {
@@ -67,6 +67,10 @@ struct SynthesisRequest {
   std::optional<long long> starts;
   std::optional<long long> seed;
 };
+
+/// The request's targets and bounds as a document keeps them (design/synthesis_targets.h):
+/// its problem's section filled from the options, the others left at their defaults.
+kinematics::SynthesisTargets targetsOf(const SynthesisRequest& request);
 
 /// Error unless the request has what its problem needs (the options it cannot do without, no
 /// two that exclude each other, the right counts of poses, circle points and targets, a range

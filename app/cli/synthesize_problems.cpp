@@ -38,13 +38,7 @@ std::string deg(double degrees) { return k::io::formatShort(degrees) + "°"; }
 std::string len(double value, const std::string& unit) { return k::io::formatShort(value) + " " + unit; }
 std::string branchName(k::Branch b) { return b == k::Branch::Open ? "open" : "crossed"; }
 
-k::DefectBounds boundsOf(const SynthesisRequest& r) {
-  k::DefectBounds b;
-  b.minTransmission = k::degToRad(r.minTransmissionDeg);
-  b.maxLinkLength = r.maxLink;
-  b.maxLinkRatio = r.maxLinkRatio;
-  return b;
-}
+k::DefectBounds boundsOf(const SynthesisRequest& r) { return targetsOf(r).bounds; }
 
 std::vector<std::pair<std::string, double>> fourBarDimensions(const k::FourBarLengths& l) {
   return {{"frame", l.frame}, {"crank", l.crank}, {"coupler", l.coupler}, {"rocker", l.rocker}};
@@ -80,8 +74,7 @@ CandidateRow swingRow(const k::CrankRockerCandidate& c) {
 
 k::Result<SynthesisReport> solveSwing(const SynthesisRequest& r) {
   const bool rocker = r.rocker.has_value();
-  const k::SwingTarget target{k::degToRad(*r.swingDeg), *r.timeRatio, rocker ? *r.rocker : *r.frame,
-                              rocker ? k::SwingScale::Rocker : k::SwingScale::Frame, r.lengthUnit};
+  const k::SwingTarget target = targetsOf(r).swing;
   const auto s = k::synthesiseCrankRocker(target, static_cast<std::size_t>(r.count), boundsOf(r));
   if (!s)
     return optionError(s.error(),
@@ -108,8 +101,7 @@ k::Result<SynthesisReport> solveSwing(const SynthesisRequest& r) {
 
 k::Result<SynthesisReport> solveSlider(const SynthesisRequest& r) {
   const bool rod = r.rod.has_value();
-  const k::StrokeTarget target{*r.stroke, *r.timeRatio, rod ? k::SliderChoice::Rod : k::SliderChoice::Offset,
-                               rod ? *r.rod : *r.offset, r.lengthUnit};
+  const k::StrokeTarget target = targetsOf(r).slider;
   const auto s = k::synthesiseSliderCrank(target, boundsOf(r));
   if (!s)
     return optionError(
@@ -136,7 +128,7 @@ k::Result<SynthesisReport> solveSlider(const SynthesisRequest& r) {
 }
 
 k::Result<SynthesisReport> solveShaper(const SynthesisRequest& r) {
-  const k::ShaperTarget target{*r.stroke, *r.timeRatio, *r.crank, *r.link, r.guideHeight, r.lengthUnit};
+  const k::ShaperTarget target = targetsOf(r).shaper;
   const auto s = k::synthesiseShaper(target, boundsOf(r));
   if (!s)
     return optionError(s.error(),
@@ -165,20 +157,7 @@ k::Result<SynthesisReport> solveShaper(const SynthesisRequest& r) {
 }
 
 k::Result<SynthesisReport> solveFunction(const SynthesisRequest& r) {
-  k::FunctionTarget target;
-  target.f = k::findNamedFunction(r.function)->f;  // the parser accepts only names it finds
-  target.x0 = *r.x0;
-  target.x1 = *r.x1;
-  target.inputStart = k::degToRad(*r.inputStartDeg);
-  target.inputSpan = k::degToRad(*r.inputSpanDeg);
-  target.outputStart = k::degToRad(*r.outputStartDeg);
-  target.outputSpan = k::degToRad(*r.outputSpanDeg);
-  target.frame = r.frame.value_or(100.0);
-  target.lengthUnit = r.lengthUnit;
-  k::FunctionOptions options;
-  options.points = r.at;
-  options.count = static_cast<std::size_t>(r.points.value_or(3));
-  const auto s = k::synthesiseFunction(target, options, boundsOf(r));
+  const auto s = k::synthesiseFunction(targetsOf(r).function, r.lengthUnit, boundsOf(r));
   if (!s)
     return optionError(s.error(),
                        {{"function", "--function"},
@@ -229,13 +208,12 @@ k::Result<SynthesisReport> solveFunction(const SynthesisRequest& r) {
 }
 
 k::Result<SynthesisReport> solveMotion(const SynthesisRequest& r) {
-  std::vector<k::CouplerPose> poses;
-  for (const PoseOption& p : r.poses) poses.push_back({p.point, k::degToRad(p.angleDeg)});
-  const k::CirclePoints circle{r.circlePoints[0], r.circlePoints[1]};
-  const k::MotionOptions options{r.fullTurn, r.lengthUnit};
+  const k::MotionTargets m = targetsOf(r).motion;
+  const std::vector<k::CouplerPose>& poses = m.poses;
+  const k::MotionOptions options{m.needsFullRotation, r.lengthUnit};
   const auto s = poses.size() == 3
-                     ? k::synthesiseMotion3(poses, circle, boundsOf(r), options)
-                     : k::synthesiseMotion2(poses, circle, r.centres[0], r.centres[1], boundsOf(r), options);
+                     ? k::synthesiseMotion3(poses, m.circlePoints, boundsOf(r), options)
+                     : k::synthesiseMotion2(poses, m.circlePoints, m.centreA, m.centreB, boundsOf(r), options);
   if (!s) {
     // The core names the circle points and centres by member; the user typed them in order.
     k::Error e = s.error();
@@ -292,15 +270,11 @@ CandidateRow pathRow(const k::PathCandidate& c) {
 }
 
 k::Result<SynthesisReport> solvePath(const SynthesisRequest& r) {
-  k::PathTarget target;
-  target.points = r.targets;
-  for (const double t : r.timingDeg) target.timing.push_back(k::degToRad(t));
-  target.timingReference = r.timingFromFrame ? k::TimingReference::Frame : k::TimingReference::Start;
-  target.needsFullRotation = r.fullTurn;
-  target.lengthUnit = r.lengthUnit;
+  const k::SynthesisTargets t = targetsOf(r);
+  const k::PathTarget& target = t.path;
   k::PathOptions options;
-  if (r.starts) options.starts = static_cast<int>(*r.starts);
-  if (r.seed) options.seed = static_cast<std::uint32_t>(*r.seed);
+  options.starts = t.pathSearch.starts;
+  options.seed = t.pathSearch.seed;
   const auto s = k::synthesisePath(target, options, boundsOf(r));
   if (!s)
     return optionError(s.error(), {{"points", "--target"}, {"timing", "--timing"}, {"starts", "--starts"}}, "path");
@@ -321,6 +295,60 @@ k::Result<SynthesisReport> solvePath(const SynthesisRequest& r) {
 }
 
 }  // namespace
+
+k::SynthesisTargets targetsOf(const SynthesisRequest& r) {
+  k::SynthesisTargets t;
+  t.problem = r.problem;
+  const std::string& u = r.lengthUnit;
+  const double q = r.timeRatio.value_or(1.0);
+  switch (r.problem) {
+  case SynthesisProblem::Swing:
+    t.swing = {k::degToRad(r.swingDeg.value_or(0.0)), q, r.rocker ? *r.rocker : r.frame.value_or(0.0),
+               r.rocker ? k::SwingScale::Rocker : k::SwingScale::Frame, u};
+    break;
+  case SynthesisProblem::Slider:
+    t.slider = {r.stroke.value_or(0.0), q, r.rod ? k::SliderChoice::Rod : k::SliderChoice::Offset,
+                r.rod ? *r.rod : r.offset.value_or(0.0), u};
+    break;
+  case SynthesisProblem::Shaper:
+    t.shaper = {r.stroke.value_or(0.0), q, r.crank.value_or(0.0), r.link.value_or(0.0), r.guideHeight, u};
+    break;
+  case SynthesisProblem::Function:
+    t.function = {r.function,
+                  r.x0.value_or(0.0),
+                  r.x1.value_or(0.0),
+                  k::degToRad(r.inputStartDeg.value_or(0.0)),
+                  k::degToRad(r.inputSpanDeg.value_or(0.0)),
+                  k::degToRad(r.outputStartDeg.value_or(0.0)),
+                  k::degToRad(r.outputSpanDeg.value_or(0.0)),
+                  r.frame.value_or(100.0),
+                  r.at,
+                  static_cast<std::size_t>(r.points.value_or(3))};
+    break;
+  case SynthesisProblem::Motion:
+    for (const PoseOption& p : r.poses) t.motion.poses.push_back({p.point, k::degToRad(p.angleDeg)});
+    if (r.circlePoints.size() == 2) t.motion.circlePoints = {r.circlePoints[0], r.circlePoints[1]};
+    if (r.centres.size() == 2) {
+      t.motion.centreA = r.centres[0];
+      t.motion.centreB = r.centres[1];
+    }
+    t.motion.needsFullRotation = r.fullTurn;
+    break;
+  case SynthesisProblem::Path:
+    t.path.points = r.targets;
+    for (const double a : r.timingDeg) t.path.timing.push_back(k::degToRad(a));
+    t.path.timingReference = r.timingFromFrame ? k::TimingReference::Frame : k::TimingReference::Start;
+    t.path.needsFullRotation = r.fullTurn;
+    t.path.lengthUnit = u;
+    if (r.starts) t.pathSearch.starts = static_cast<int>(*r.starts);
+    if (r.seed) t.pathSearch.seed = static_cast<std::uint32_t>(*r.seed);
+    break;
+  }
+  t.bounds.minTransmission = k::degToRad(r.minTransmissionDeg);
+  t.bounds.maxLinkLength = r.maxLink;
+  t.bounds.maxLinkRatio = r.maxLinkRatio;
+  return t;
+}
 
 k::Result<SynthesisReport> solveSynthesis(const SynthesisRequest& r) {
   switch (r.problem) {

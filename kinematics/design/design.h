@@ -7,6 +7,7 @@
 // its mechanism's structure (model/recognise.h), never from how it was built or stored.
 
 #include "kinematics/design/examples.h"
+#include "kinematics/design/synthesis_targets.h"
 #include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/model/result.h"
@@ -31,6 +32,9 @@ struct Design {
   /// A time base: the crank follows a motion law, analysed at `samples` instants from its
   /// fromTime to its toTime; omega, alpha, fromDeg and toDeg are then unused.
   std::optional<TimeBase> time;
+  /// What the linkage was synthesised for (synthesis_targets.h): the targets and bounds the
+  /// designer's synthesis panel shows again; none when it was never asked.
+  std::optional<SynthesisTargets> synthesis;
   bool operator==(const Design&) const = default;
 };
 

@@ -6,6 +6,7 @@
 #include "kinematics/io/law_json.h"
 #include "kinematics/io/mechanism_json.h"
 #include "kinematics/io/number_format.h"
+#include "kinematics/io/synthesis_json.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/validate.h"
 
@@ -106,6 +107,7 @@ void writeMotion(std::ostream& s, const Design& d) {
       << ", \"to_time_s\": " << formatJsonNumber(d.time->toTime);
   s << "}";
   writeDynamicsMember(s, d.dynamics);
+  if (d.synthesis) writeSynthesisMember(s, *d.synthesis);
   s << "\n}\n";
 }
 
@@ -173,11 +175,12 @@ std::optional<Error> checkRead(const Design& d) {
   return checkDocumentDynamics(d.mechanism, d.dynamics);
 }
 
-// Version 3 added "dynamics", version 4 the driver's "law" and version 5 drivers other than a
-// crank (points driven along a path, linear actuators): a design is written as the oldest
-// version that holds it, so older Linkwrights still open it, or refuse it rather than drop
-// what they do not know.
+// Version 3 added "dynamics", version 4 the driver's "law", version 5 drivers other than a
+// crank (points driven along a path, linear actuators) and version 6 the synthesis targets: a
+// design is written as the oldest version that holds it, so older Linkwrights still open it,
+// or refuse it rather than drop what they do not know.
 int versionFor(const Design& design) {
+  if (design.synthesis) return 6;
   if (inputKind(design.mechanism) != InputKind::Angle) return 5;
   if (design.time) return 4;
   return design.dynamics.empty() ? 2 : 3;
@@ -228,6 +231,7 @@ Result<Design> readDocument(std::string_view text) {
   if (r.error) return *r.error;
   readMotion(root, keysOf(d.mechanism), r, d);
   d.dynamics = readDynamicsMember(root, r);
+  d.synthesis = readSynthesisMember(root, unit, r);
   if (r.error) return *r.error;
   if (auto e = checkRead(d)) return *e;
   return d;

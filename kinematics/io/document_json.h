@@ -4,7 +4,8 @@
 // written as "type": "linkage" (its points, links and constraints: mechanism_json.h), version 2,
 // version 3 when it carries "dynamics" (masses and loads, dynamics_json.h), version 4 when its
 // crank follows a motion law in time ("driver.law", law_json.h, with "analysis.from_time_s"
-// and "to_time_s"). Version 1 and 2
+// and "to_time_s"), version 5 when it is driven other than by a crank, version 6 when it keeps
+// the targets it was synthesised for ("synthesis", synthesis_json.h). Version 1 and 2
 // files that hold a four-bar by its lengths ("type": "four-bar") still read, into the mechanism
 // makeFourBar builds, so they analyse as before and re-save in the linkage form.
 //
@@ -31,10 +32,10 @@
 
 namespace linkwright::kinematics::io {
 
-/// The newest document version this build reads, and writes for a design driven other than by
-/// a crank (a design with a motion law is written as version 4, one with dynamics only as
-/// version 3, one with neither as version 2).
-inline constexpr int kDocumentVersion = 5;
+/// The newest document version this build reads, and writes for a design that keeps synthesis
+/// targets (one driven other than by a crank is written as version 5, one with a motion law as
+/// version 4, one with dynamics only as version 3, one with none of these as version 2).
+inline constexpr int kDocumentVersion = 6;
 
 /// The document text for a design (UTF-8, LF line ends, trailing newline).
 std::string writeDocument(const Design& design);

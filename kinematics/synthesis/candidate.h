@@ -7,6 +7,7 @@
 
 #include "kinematics/analysis/grashof.h"
 #include "kinematics/design/design.h"
+#include "kinematics/design/synthesis_targets.h"
 #include "kinematics/model/units.h"
 
 #include <optional>
@@ -29,17 +30,6 @@ struct Defect {
   DefectKind kind = DefectKind::NotGrashof;
   std::string message;  ///< e.g. "minimum transmission angle 31.2° is below 40°"
   bool operator==(const Defect&) const = default;
-};
-
-/// The bounds a candidate is checked against. Length bounds are in the design's length unit.
-struct DefectBounds {
-  double minTransmission = degToRad(40.0);  ///< rad; a worst transmission angle below it is a defect
-  std::optional<double> maxLinkLength;      ///< a link longer than this is a defect; none: no bound
-  /// Longest / shortest link above this is a defect; none: no bound. The default, 10, is the
-  /// usual rule of thumb; families whose transmission keeps improving as the linkage grows
-  /// without end (the in-line crank-rocker) pick their best within it.
-  std::optional<double> maxLinkRatio = 10.0;
-  bool operator==(const DefectBounds&) const = default;
 };
 
 /// A synthesised linkage and how good it is.

@@ -1,5 +1,7 @@
 #include "kinematics/synthesis/function_generation.h"
 
+#include "kinematics/synthesis/named_function.h"
+
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/model/vec2.h"
@@ -199,6 +201,26 @@ Result<FunctionSynthesis> synthesiseFunction(const FunctionTarget& t, const Func
   s.candidate = {functionDesign(std::move(*m), t), s.error.maxAbs, check.grashof, check.minTransmission,
                  std::move(check.defects)};
   return s;
+}
+
+Result<FunctionSynthesis> synthesiseFunction(const FunctionSpec& spec, const std::string& lengthUnit,
+                                             const DefectBounds& bounds) {
+  const NamedFunction* f = findNamedFunction(spec.function);
+  if (f == nullptr) {
+    std::string names;
+    for (const NamedFunction& g : namedFunctions()) names += (names.empty() ? "" : ", ") + std::string(g.name);
+    return Error{ErrorCode::InvalidValue, "function",
+                 "function must be one of " + names + " (got \"" + spec.function + "\")"};
+  }
+  if (spec.x1 > spec.x0)
+    if (auto e = checkFunctionRange(*f, spec.x0, spec.x1)) return *e;
+  const FunctionTarget target{f->f,           spec.x0,          spec.x1,         spec.inputStart,
+                              spec.inputSpan, spec.outputStart, spec.outputSpan, spec.frame,
+                              lengthUnit};
+  FunctionOptions options;
+  options.points = spec.points;
+  options.count = spec.count;
+  return synthesiseFunction(target, options, bounds);
 }
 
 }  // namespace linkwright::kinematics

@@ -66,6 +66,12 @@ struct FunctionSynthesis {
   SynthesisCandidate candidate;
 };
 
+/// The function generator for a saved target (design/synthesis_targets.h): its function by
+/// name (named_function.h; an unknown name or a range where it is undefined is an Error naming
+/// "function", "x0" or "x1"), its precision points or Chebyshev count.
+Result<FunctionSynthesis> synthesiseFunction(const FunctionSpec& spec, const std::string& lengthUnit,
+                                             const DefectBounds& bounds = {});
+
 /// n Chebyshev points on [x0, x1], increasing.
 std::vector<double> chebyshevSpacing(double x0, double x1, std::size_t n);
 

@@ -17,6 +17,7 @@
 // here), P; links crank, coupler, rocker), and its input is the crank's absolute angle (CCW
 // from +x), which asFourBar (model/recognise.h) recognises with its frame angle.
 
+#include "kinematics/design/synthesis_targets.h"
 #include "kinematics/synthesis/candidate.h"
 #include "kinematics/synthesis/defects.h"
 
@@ -26,20 +27,6 @@
 #include <vector>
 
 namespace linkwright::kinematics {
-
-/// Where the coupler must be: its point P (length unit) and its angle φ (rad, CCW from +x).
-struct CouplerPose {
-  Eigen::Vector2d point = Eigen::Vector2d::Zero();
-  double angle = 0.0;
-  bool operator==(const CouplerPose&) const = default;
-};
-
-/// The free choices: the two circle points, where they are at pose 1 (length unit).
-struct CirclePoints {
-  Eigen::Vector2d a = Eigen::Vector2d::Zero();  ///< the crank's moving pivot
-  Eigen::Vector2d b = Eigen::Vector2d::Zero();  ///< the rocker's moving pivot
-  bool operator==(const CirclePoints&) const = default;
-};
 
 struct MotionSynthesis {
   Eigen::Vector2d o2 = Eigen::Vector2d::Zero();  ///< the crank's centre point (ground pivot)

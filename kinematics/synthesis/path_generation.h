@@ -32,6 +32,7 @@
 // asked for, branch (targets in different assembly ranges), order, transmission over the motion
 // from the first target to the last, link lengths.
 
+#include "kinematics/design/synthesis_targets.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/synthesis/candidate.h"
 
@@ -45,29 +46,11 @@
 
 namespace linkwright::kinematics {
 
-/// What the prescribed crank angles are measured from.
-enum class TimingReference {
-  Start,  ///< θ_i = θ0 + τ_i with θ0 free: only the differences between the τ_i matter
-  Frame,  ///< θ_i = β + τ_i: τ_i measured from the frame line O2→O4 (the literature's usual form)
-};
-
-/// The path to follow.
-struct PathTarget {
-  /// The targets (length unit), in the order the coupler point must meet them; 4 to 10,
-  /// distinct. Collinear targets are allowed: a straight-line path is a real task.
-  std::vector<Eigen::Vector2d> points;
-  /// Crank angle at each target (rad), the same count as points; empty: no timing.
-  std::vector<double> timing;
-  TimingReference timingReference = TimingReference::Start;
-  bool needsFullRotation = false;  ///< a motor turns the crank round (a Grashof crank is then required)
-  std::string lengthUnit = "mm";
-};
-
 /// The number of starts that takes 6 targets to within 1 % of their scale well inside the
 /// issue's 2 s on its 2-core machine (tests/bench/synthesis_benchmark.cpp measures it).
-inline constexpr int kDefaultPathStarts = 400;
+inline constexpr int kDefaultPathStarts = PathSearch{}.starts;
 /// The default seed: fixed, so a run repeats exactly.
-inline constexpr std::uint32_t kDefaultPathSeed = 19;
+inline constexpr std::uint32_t kDefaultPathSeed = PathSearch{}.seed;
 
 /// How hard to search.
 struct PathOptions {

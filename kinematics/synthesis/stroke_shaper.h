@@ -15,6 +15,7 @@
 //
 // The result is shaper.h's linkage: O2 at the origin, the ram's guide horizontal.
 
+#include "kinematics/design/synthesis_targets.h"
 #include "kinematics/model/shaper.h"
 #include "kinematics/synthesis/candidate.h"
 
@@ -22,17 +23,6 @@
 #include <string>
 
 namespace linkwright::kinematics {
-
-/// What the ram must do, and the free dimensions.
-struct ShaperTarget {
-  double stroke = 0.0;                ///< H, the ram's travel (length unit)
-  double timeRatio = 1.5;             ///< Q, in (1, kMaxTimeRatio]
-  double crank = 0.0;                 ///< r, the crank (length unit), below H / (2 (1 + sin(α/2)))
-  double link = 0.0;                  ///< D to the ram (length unit)
-  std::optional<double> guideHeight;  ///< y of the ram's guide; none: mid-height of the tip's arc
-  std::string lengthUnit = "mm";
-  bool operator==(const ShaperTarget&) const = default;
-};
 
 struct ShaperSynthesis {
   ShaperGeometry geometry;

@@ -14,28 +14,13 @@
 //
 // The result is slider_crank.h's linkage: O2 at the origin, the guide along +x at height e.
 
+#include "kinematics/design/synthesis_targets.h"
 #include "kinematics/model/slider_crank.h"
 #include "kinematics/synthesis/candidate.h"
 
 #include <string>
 
 namespace linkwright::kinematics {
-
-/// Which dimension the user fixes.
-enum class SliderChoice {
-  Rod,     ///< `value` is the rod length b
-  Offset,  ///< `value` is the offset e (any sign: a negative one mirrors the linkage)
-};
-
-/// What the slider must do.
-struct StrokeTarget {
-  double stroke = 0.0;     ///< H, the slider's travel (length unit, > 0)
-  double timeRatio = 1.0;  ///< Q, slow stroke / quick stroke, in [1, kMaxTimeRatio]
-  SliderChoice choice = SliderChoice::Rod;
-  double value = 0.0;  ///< the rod length or the offset (length unit)
-  std::string lengthUnit = "mm";
-  bool operator==(const StrokeTarget&) const = default;
-};
 
 struct SliderCrankSynthesis {
   SliderCrankGeometry geometry;

@@ -22,6 +22,7 @@
 // The built four-bar has its frame along +x (fourBarDesign); its branch is the side of the
 // frame line that C1 and C2 lie on. The rocker's limit angles are reported in that frame.
 
+#include "kinematics/design/synthesis_targets.h"
 #include "kinematics/synthesis/candidate.h"
 
 #include <optional>
@@ -29,22 +30,6 @@
 #include <vector>
 
 namespace linkwright::kinematics {
-
-/// Which length the user fixes; the others follow from the family point.
-enum class SwingScale {
-  Rocker,  ///< `length` is the rocker's
-  Frame,   ///< `length` is the frame's (the linkage is scaled to it)
-};
-
-/// What the rocker must do.
-struct SwingTarget {
-  double swing = 0.0;      ///< ψ, rad, in (0, π)
-  double timeRatio = 1.0;  ///< Q, slow stroke / quick stroke, in [1, kMaxTimeRatio]
-  double length = 1.0;     ///< the fixed length (length unit)
-  SwingScale scale = SwingScale::Rocker;
-  std::string lengthUnit = "mm";
-  bool operator==(const SwingTarget&) const = default;
-};
 
 /// One crank-rocker of the family.
 struct CrankRockerCandidate {

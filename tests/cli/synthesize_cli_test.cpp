@@ -9,6 +9,7 @@
 #include "tests/cli/run_cli.h"
 #include "tests/support/approx.h"
 
+#include "kinematics/io/document_json.h"
 #include "kinematics/io/json.h"
 #include "kinematics/model/units.h"
 
@@ -18,6 +19,7 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -142,6 +144,15 @@ TEST_CASE("synthesize --choose writes the candidate asked for", "[cli][synthesiz
   CHECK(classified["lengths"]["crank"].get<double>() ==
         within(report["candidates"][1]["lengths"]["crank"].get<double>(), 1e-12));
   CHECK(classified["rocker_swing_deg"].get<double>() == within(50.0, 1e-9));
+  // The document keeps what it was synthesised for, in radians and the document's unit.
+  std::ifstream in(file.path());
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto design = kinematics::io::readDocument(text);
+  REQUIRE(design.ok());
+  REQUIRE(design->synthesis.has_value());
+  CHECK(design->synthesis->problem == kinematics::SynthesisProblem::Swing);
+  CHECK(design->synthesis->swing ==
+        kinematics::SwingTarget{kinematics::degToRad(50.0), 1.2, 1.0, kinematics::SwingScale::Rocker, "in"});
 }
 
 TEST_CASE("synthesize function: the document meets log10 exactly at the precision points", "[cli][synthesize]") {

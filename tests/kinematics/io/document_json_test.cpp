@@ -200,7 +200,7 @@ TEST_CASE("bad documents are refused with the member named", "[io][document][err
       {"[1, 2]", "document must be a JSON object"},
       {replaced(good, "\"linkwright\"", "\"solvespace\""), "not a Linkwright document"},
       {replaced(good, "\"version\": 2", "\"version\": 7"),
-       "this file is document version 7, written by a newer Linkwright; this one reads up to version 5"},
+       "this file is document version 7, written by a newer Linkwright; this one reads up to version 6"},
       {replaced(good, "\"version\": 2", "\"version\": 1.5"), "version must be a whole number"},
       {replaced(good, "\"version\": 2", "\"version\": \"1\""), "version must be a number"},
       {replaced(good, "\"four-bar\"", "\"six-bar\""),
@@ -228,7 +228,7 @@ TEST_CASE("a damaged four-bar saved in the linkage form is refused with the memb
   auto [text, expected] = GENERATE_COPY(table<std::string, std::string>({
       {replaced(good, "\"linkwright\"", "\"solvespace\""), "not a Linkwright document"},
       {replaced(good, "\"version\": 2", "\"version\": 7"),
-       "this file is document version 7, written by a newer Linkwright; this one reads up to version 5"},
+       "this file is document version 7, written by a newer Linkwright; this one reads up to version 6"},
       {replaced(good, "\"version\": 2", "\"version\": 1"),
        "must be \"four-bar\" in a version 1 document (got \"linkage\")"},
       {replaced(good, "\"first_length\": 70", "\"first_length\": -70"),
@@ -317,4 +317,70 @@ TEST_CASE("bad driver documents are refused with the member named", "[io][docume
   const auto d = readDocument(text);
   REQUIRE_FALSE(d.ok());
   CHECK_THAT(d.error().message, Catch::Contains(expected));
+}
+
+namespace {
+
+// Every problem's targets filled with numbers that are not short decimals, some bounds unset.
+SynthesisTargets sampleTargets() {
+  SynthesisTargets t;
+  t.problem = SynthesisProblem::Path;
+  t.swing = {1.0471975511965976, 1.3, 50.0, SwingScale::Frame, "mm"};
+  t.slider = {100.0, 1.25, SliderChoice::Offset, -12.5, "mm"};
+  t.shaper = {300.0, 1.7, 50.0, 150.0, 321.0 / 7.0, "mm"};
+  t.function = {"reciprocal", 1.0, 2.0, 0.1, 1.2, 2.0, -0.9, 80.0, {1.1, 1.5, 1.9}, 3};
+  t.motion = {
+      {{{0.0, 0.0}, 0.0}, {{10.0, 5.0}, 0.3}, {{20.0, 5.0}, 2.0 / 3.0}}, {{-5.0, -5.0}, {5.0, -7.0}}, 1.5, -2.5, true};
+  t.path = {{{0, 0}, {10, 5}, {20, 5}, {30, 0}, {20, -1.0 / 3.0}},
+            {0.1, 0.2, 0.3, 0.4, 0.5},
+            TimingReference::Frame,
+            true,
+            "mm"};
+  t.pathSearch = {250, 7};
+  t.bounds = {0.5, 500.0, std::nullopt};
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("a design's synthesis targets are saved as version 6 and read back bit for bit",
+          "[io][document][synthesis]") {
+  Design d = sampleDesign();
+  d.synthesis = sampleTargets();
+  const std::string text = writeDocument(d);
+  CHECK_THAT(text, Catch::Contains("\"version\": 6"));
+  CHECK_THAT(text, Catch::Contains("\"synthesis\": {\"problem\": \"path\""));
+  const Design back = designOf(readDocument(text));
+  CHECK(back.synthesis == d.synthesis);
+  CHECK(back == d);
+  CHECK(writeDocument(back) == text);
+  // Without targets nothing changes: the same version and text as before.
+  CHECK_THAT(writeDocument(sampleDesign()), Catch::Contains("\"version\": 2"));
+  CHECK_THAT(writeDocument(sampleDesign()), !Catch::Contains("synthesis"));
+}
+
+TEST_CASE("bad synthesis targets are refused with the member named", "[io][document][synthesis][errors]") {
+  Design d = sampleDesign();
+  d.synthesis = sampleTargets();
+  const std::string good = writeDocument(d);
+  auto [text, expected] = GENERATE_COPY(table<std::string, std::string>({
+      {replaced(good, "\"problem\": \"path\"", "\"problem\": \"cam\""),
+       "synthesis.problem must be one of \"swing\", \"slider\", \"shaper\", \"function\", \"motion\", \"path\" "
+       "(got \"cam\")"},
+      {replaced(good, "\"time_ratio\": 1.3", "\"time_ratio\": \"fast\""),
+       "synthesis.swing.time_ratio must be a number"},
+      {replaced(good, "\"fixed\": \"frame\"", "\"fixed\": \"crank\""),
+       "synthesis.swing.fixed must be one of \"rocker\", \"frame\" (got \"crank\")"},
+      {replaced(good, "\"count\": 3", "\"count\": 2.5"), "synthesis.function.count must be a whole number from 3"},
+      {replaced(good, "\"full_turn\": true,", "\"full_turn\": 1,"), "synthesis.path.full_turn must be true or false"},
+      {replaced(good, "\"circle_point_a\": [-5, -5]", "\"circle_point_a\": [-5]"),
+       "synthesis.motion.circle_point_a must be a pair of numbers [x, y]"},
+      {replaced(good, "\"starts\": 250", "\"starts\": 0"), "synthesis.path.starts must be a whole number from 1"},
+      {replaced(good, "\"targets\": [[0, 0]", "\"targets\": [[0, \"a\"]"),
+       "synthesis.path.targets[0] must be a pair of numbers [x, y]"},
+  }));
+  CAPTURE(text);
+  const auto read = readDocument(text);
+  REQUIRE_FALSE(read.ok());
+  CHECK_THAT(read.error().message, Catch::Contains(expected));
 }
