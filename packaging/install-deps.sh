@@ -15,7 +15,7 @@ packages=(
   libeigen3-dev              # linear algebra for the kinematics core
   nlohmann-json3-dev         # the document reader's JSON parser
   catch2                     # Catch2 2.13 test framework
-  qt6-base-dev qt6-charts-dev qt6-svg-dev  # the GUI (Widgets, Charts, SVG export)
+  qt6-base-dev qt6-charts-dev qt6-svg-dev  # the GUI (Widgets, Concurrent, Charts, SVG export)
   libgl-dev                  # OpenGL headers that Qt6Gui's CMake package requires
   libqt6opengl6-dev          # Qt6OpenGL: Qt6Charts' CMake package requires it, yet it is only a
                              # Recommends of qt6-base-dev, which --no-install-recommends skips

@@ -19,6 +19,7 @@
 #include "ui/plots/plot_panel.h"
 #include "ui/plots/quality_bar.h"
 #include "ui/settings.h"
+#include "ui/synthesis/synthesis_panel.h"
 
 #include "kinematics/design/dyad_request.h"
 #include "kinematics/design/examples.h"
@@ -115,8 +116,8 @@ MainWindow::MainWindow(QWidget* parent)
   newDocument(*k::designForExample("thesis-crank-rocker"));
 }
 
-// Kinematics plots and the forces view (masses and loads, torque and joint-force plots, polar
-// load diagrams) share the right-hand pane as tabs.
+// Kinematics plots, the forces view (masses and loads, torque and joint-force plots, polar
+// load diagrams) and dimensional synthesis share the right-hand pane as tabs.
 QWidget* MainWindow::buildAnalysisTabs() {
   auto* forces = new QSplitter(Qt::Vertical, this);
   forces->addWidget(m_dynamicsPanel);
@@ -127,6 +128,8 @@ QWidget* MainWindow::buildAnalysisTabs() {
   m_tabs->setObjectName("AnalysisTabs");
   m_tabs->addTab(m_plots, tr("Kinematics"));
   m_tabs->addTab(forces, tr("Forces"));
+  m_synthesis = new SynthesisPanel(m_document, m_canvas, this);
+  m_tabs->addTab(m_synthesis, tr("Synthesis"));
   connect(m_tabs, &QTabWidget::currentChanged, this, &MainWindow::updateForcesNeeded);
   return m_tabs;
 }

@@ -36,6 +36,7 @@ class MessageBanner;
 class MotionPanel;
 class PlotPanel;
 class Settings;
+class SynthesisPanel;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -50,6 +51,7 @@ public:
   DrivePanel* drivePanel() const { return m_drive; }
   MotionPanel* motionPanel() const { return m_motion; }
   AnalysisPanel* analysisPanel() const { return m_analysis; }
+  SynthesisPanel* synthesisPanel() const { return m_synthesis; }
   CrankAnimator* animator() const { return m_animator; }
   MessageBanner* banner() const { return m_banner; }
 
@@ -112,6 +114,7 @@ private:
   DynamicsPanel* m_dynamicsPanel;
   ForcePlotPanel* m_forcePlots;
   ForceArrowsItem* m_forceArrows;  // owned by the canvas's scene
+  SynthesisPanel* m_synthesis = nullptr;
   QTabWidget* m_tabs = nullptr;
   QAction* m_forceArrowsAction = nullptr;
   QWidget* m_sidePanel = nullptr;

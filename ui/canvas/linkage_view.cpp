@@ -29,6 +29,7 @@ constexpr double kSceneRectSizes = 1000.0;
 constexpr double kMaxSceneRectPixels = 1.0e9;
 constexpr double kFitMarginPx = 40.0;  // room for pins, ground supports and labels
 constexpr double kWheelStep = 1.2;     // zoom per wheel notch
+constexpr double kPickDragPx = 4.0;    // a shorter pose drag is a click: direction 0
 
 }  // namespace
 
@@ -85,6 +86,14 @@ void LinkageView::renderLinkage(QPainter* painter, const QRectF& target) const {
   painter->translate(-source.center());
   m_scene->render(painter, source, source, Qt::IgnoreAspectRatio);
   painter->restore();
+}
+
+void LinkageView::setPickMode(PickMode mode) {
+  m_pickMode = mode;
+  if (m_gesture == Gesture::Pick) m_gesture = Gesture::None;
+  if (mode == PickMode::None) viewport()->unsetCursor();
+  else viewport()->setCursor(Qt::CrossCursor);
+  viewport()->update();
 }
 
 void LinkageView::fitToView() {
@@ -184,6 +193,28 @@ void LinkageView::drawBackground(QPainter* painter, const QRectF& rect) {
   paintGrid(painter, rect, visible, QString::fromStdString(m_document->lengthUnit()), m_presentationScale);
 }
 
+void LinkageView::drawForeground(QPainter* painter, const QRectF& rect) {
+  QGraphicsView::drawForeground(painter, rect);
+  if (m_gesture != Gesture::Pick || m_pickMode != PickMode::Pose) return;
+  // The direction being dragged, as a rubber band from the pressed point.
+  QPen pen(kLabelColor, 1.5 * m_presentationScale, Qt::DashLine);
+  pen.setCosmetic(true);
+  painter->setPen(pen);
+  painter->drawLine(sceneAt(m_pickStart), sceneAt(m_lastPointer));
+}
+
+void LinkageView::finishPick(const QPointF& viewportPos) {
+  const QPointF at = sceneAt(m_pickStart);
+  viewport()->update();
+  if (m_pickMode == PickMode::Point) {
+    emit pointPicked(at);
+    return;
+  }
+  const QPointF drag = sceneAt(viewportPos) - at;
+  const bool dragged = QLineF(m_pickStart, viewportPos).length() >= kPickDragPx;
+  emit posePicked(at, dragged ? std::atan2(drag.y(), drag.x()) : 0.0);
+}
+
 void LinkageView::wheelEvent(QWheelEvent* event) {
   const int notches = event->angleDelta().y();
   if (notches == 0) {
@@ -200,6 +231,14 @@ void LinkageView::mousePressEvent(QMouseEvent* event) {
     return;
   }
   const QPointF pos = event->position();
+  if (event->button() == Qt::LeftButton && m_pickMode != PickMode::None) {
+    m_gesture = Gesture::Pick;
+    m_gestureButton = Qt::LeftButton;
+    m_pickStart = pos;
+    m_lastPointer = pos;
+    event->accept();
+    return;
+  }
   if (event->button() == Qt::LeftButton) {
     if (const auto handle = handleAt(pos)) {
       startDrag(*handle, pos);
@@ -228,7 +267,13 @@ void LinkageView::mouseMoveEvent(QMouseEvent* event) {
     m_lastPointer = pos;
     m_autoFit = false;
     break;
-  case Gesture::None: updateHover(pos); break;
+  case Gesture::Pick:
+    m_lastPointer = pos;
+    viewport()->update();
+    break;
+  case Gesture::None:
+    if (m_pickMode == PickMode::None) updateHover(pos);
+    break;
   }
   event->accept();
 }
@@ -239,6 +284,13 @@ void LinkageView::mouseReleaseEvent(QMouseEvent* event) {
     return;
   }
   const QPointF pos = event->position();
+  if (m_gesture == Gesture::Pick) {
+    m_gesture = Gesture::None;
+    m_gestureButton = Qt::NoButton;
+    finishPick(pos);
+    event->accept();
+    return;
+  }
   if (m_gesture == Gesture::Drag && pos != m_lastPointer) dragTo(pos);
   m_gesture = Gesture::None;
   m_gestureButton = Qt::NoButton;

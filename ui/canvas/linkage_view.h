@@ -6,6 +6,10 @@
 // four-bar's frame-line rule, or dragPathVertex: design_drag.h), one undo step per drag. An edit the core or the document refuses
 // changes nothing; the reason is shown next to the cursor and emitted as editRefused.
 //
+// Picking: in a pick mode (the synthesis panel collecting targets) a left click emits the
+// model point clicked instead of dragging or panning; for a pose, press at the point, drag
+// along the direction and release. The middle button still pans.
+//
 // Fitting: the view fits the drawing when first shown, on resize until the user zooms or
 // pans, after fitToView(), and after a document reset (File ▸ New / Open / Examples, seen as
 // one Design|File change).
@@ -46,6 +50,11 @@ public:
   /// ratio kept, centred: for image and SVG export.
   void renderLinkage(QPainter* painter, const QRectF& target) const;
 
+  /// What a left click does: drag and pan (None), or pick a point or a pose for the caller.
+  enum class PickMode { None, Point, Pose };
+  void setPickMode(PickMode mode);
+  PickMode pickMode() const { return m_pickMode; }
+
 public slots:
   /// Fits the drawing (every position over the cycle, the pivots, the coupler path, the
   /// crank's range) into the view with a margin.
@@ -56,9 +65,15 @@ public slots:
 signals:
   void editRefused(const QString& reason);
   void statusMessage(const QString& text);
+  /// Point mode: the model point clicked (length unit).
+  void pointPicked(const QPointF& model);
+  /// Pose mode: the model point pressed and the direction dragged from it (rad, CCW from +x;
+  /// 0 for a click without a drag).
+  void posePicked(const QPointF& model, double angle);
 
 protected:
   void drawBackground(QPainter* painter, const QRectF& rect) override;
+  void drawForeground(QPainter* painter, const QRectF& rect) override;
   void wheelEvent(QWheelEvent* event) override;
   void mousePressEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
@@ -68,7 +83,7 @@ protected:
   void resizeEvent(QResizeEvent* event) override;
 
 private:
-  enum class Gesture { None, Pan, Drag };
+  enum class Gesture { None, Pan, Drag, Pick };
 
   void onDocumentChanged(linkwright::ui::Changes what);
   QPointF sceneAt(const QPointF& viewportPos) const;
@@ -80,6 +95,7 @@ private:
   void refuse(const QString& reason, const QPointF& viewportPos);
   void updateHover(const QPointF& viewportPos);
   void ensureSceneRect(bool force);
+  void finishPick(const QPointF& viewportPos);
 
   MechanismDocument* m_document;
   LinkageScene* m_scene;
@@ -94,6 +110,8 @@ private:
   int m_dragCount = 0;      // makes each drag its own undo step
   QString m_lastRefusal;
   std::optional<DragHandle> m_hover;
+  PickMode m_pickMode = PickMode::None;
+  QPointF m_pickStart;  // viewport pixels, where a pick was pressed
 };
 
 }  // namespace linkwright::ui

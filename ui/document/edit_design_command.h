@@ -15,7 +15,7 @@ namespace linkwright::ui {
 class MechanismDocument;
 
 /// What a continuous edit changes, for merging its steps.
-enum class ContinuousEdit { DragPoint, Length, CouplerPoint, Speed, Acceleration };
+enum class ContinuousEdit { DragPoint, Length, CouplerPoint, Speed, Acceleration, SynthesisTargets };
 
 /// Consecutive edits with equal keys (the moves of one drag, the steps of one slider) merge
 /// into one undo step. `serial` tells one drag or press of the same thing from the next, so

@@ -1,0 +1,66 @@
+#include "ui/synthesis/problem_form.h"
+
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+
+namespace linkwright::ui {
+
+namespace {
+// Wide enough to type any wrong value and be told why; the core decides what it accepts.
+constexpr double kFieldLimit = 1e9;
+}  // namespace
+
+ProblemForm::ProblemForm(QWidget* parent) : QWidget(parent) {}
+
+void ProblemForm::setLengthUnit(const QString& unit) {
+  m_unit = unit;
+  for (QDoubleSpinBox* box : m_lengthBoxes) box->setSuffix(QLatin1Char(' ') + unit);
+}
+
+QString ProblemForm::fieldLabel(const std::string& field) const {
+  QString best;
+  std::size_t bestLength = 0;
+  for (const auto& [name, label] : m_labels) {
+    const bool prefix = field.compare(0, name.size(), name) == 0 &&
+                        (field.size() == name.size() || field[name.size()] == '.' || field[name.size()] == '[');
+    if (prefix && name.size() > bestLength) {
+      best = label;
+      bestLength = name.size();
+    }
+  }
+  return best;
+}
+
+QString ProblemForm::explain(const std::string& field, const std::string& message) const {
+  const QString label = fieldLabel(field);
+  const QString text = QString::fromStdString(message);
+  return label.isEmpty() ? text : tr("%1: %2").arg(label, text);
+}
+
+QDoubleSpinBox* ProblemForm::numberBox(const QString& label) const {
+  const auto it = m_boxes.find(label);
+  return it == m_boxes.end() ? nullptr : it->second;
+}
+
+QDoubleSpinBox* ProblemForm::addNumber(QFormLayout* form, const QString& label, double value, Kind kind,
+                                       const std::string& field, int decimals) {
+  auto* box = new QDoubleSpinBox(this);
+  box->setObjectName(QString::fromStdString(field));
+  box->setDecimals(decimals);
+  box->setRange(-kFieldLimit, kFieldLimit);
+  box->setAccelerated(true);
+  box->setValue(value);
+  if (kind == Kind::Length) {
+    box->setSuffix(QLatin1Char(' ') + m_unit);
+    m_lengthBoxes.push_back(box);
+  } else if (kind == Kind::Angle) {
+    box->setSuffix(QStringLiteral("°"));
+  }
+  form->addRow(label, box);
+  m_labels[field] = label;
+  m_boxes[label] = box;
+  connect(box, &QDoubleSpinBox::valueChanged, this, &ProblemForm::edited);
+  return box;
+}
+
+}  // namespace linkwright::ui
