@@ -1,16 +1,22 @@
 // Drag-to-redraw latency of the real window, offscreen: a mouse drag of a joint on the canvas
-// (C of the default four-bar, or the last point of a built-in example), each move followed by
-// everything it triggers (the drag, the document's validation and sweeps, the analysis, the
-// canvas items, all plot series) and the repaint that Qt then does of the widgets that
-// changed; also the worst case of repainting the whole window. Prints the median and the 95th
-// percentile per move. Timing lives here, never in a pass/fail test.
+// (C of a four-bar, or the last point of any other example), each move followed by everything
+// it triggers (the drag, the document's validation and sweeps, the analysis, the canvas items,
+// all plot series, the forces when they are shown) and the repaint that Qt then does of the
+// widgets that changed; also the worst case of repainting the whole window. Prints the median,
+// the 95th percentile and the maximum per move, and one RESULT line for tables. Timing lives
+// here, never in a pass/fail test.
 //
-//   build/bin/linkwright_gui_benchmark [moves] [example]      (default 400, the thesis four-bar)
+//   build/bin/linkwright_gui_benchmark [--moves N] [--example NAME] [--quality draft|normal|precise] [--forces]
+//
+// Defaults: 400 moves, the thesis four-bar, Normal, kinematics only. --forces shows the Forces
+// tab and the force arrows; a linkage without masses gets 1 kg on each link (uniform bars) and gravity, so there is
+// something to solve. The older form `linkwright_gui_benchmark [moves] [example]` still works.
 
 #include "ui/canvas/linkage_view.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/geometry.h"
 #include "ui/main_window.h"
+#include "ui/settings.h"
 
 #include "kinematics/design/design.h"
 #include "kinematics/model/fourbar.h"
@@ -22,6 +28,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace {
@@ -32,13 +41,70 @@ double percentile(std::vector<double> values, double p) {
   return values[index];
 }
 
+struct Options {
+  int moves = 400;
+  std::optional<std::string> example;
+  linkwright::ui::SamplingQuality quality = linkwright::ui::SamplingQuality::Normal;
+  bool forces = false;
+};
+
+std::optional<Options> parse(int argc, char** argv) {
+  Options o;
+  int positional = 0;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const bool hasValue = i + 1 < argc;
+    if (arg == "--forces") o.forces = true;
+    else if (arg == "--moves" && hasValue) o.moves = std::max(10, std::atoi(argv[++i]));
+    else if (arg == "--example" && hasValue) o.example = argv[++i];
+    else if (arg == "--quality" && hasValue) {
+      const std::string q = argv[++i];
+      if (q == "draft") o.quality = linkwright::ui::SamplingQuality::Draft;
+      else if (q == "normal") o.quality = linkwright::ui::SamplingQuality::Normal;
+      else if (q == "precise") o.quality = linkwright::ui::SamplingQuality::Precise;
+      else return std::nullopt;
+    } else if (arg.rfind("--", 0) != 0 && positional == 0) {
+      o.moves = std::max(10, std::atoi(arg.c_str()));
+      ++positional;
+    } else if (arg.rfind("--", 0) != 0 && positional == 1) {
+      o.example = arg;
+      ++positional;
+    } else {
+      return std::nullopt;
+    }
+  }
+  return o;
+}
+
+// 1 kg on every link (a uniform bar about its midpoint) and gravity: forces to solve.
+void giveMasses(linkwright::kinematics::Design& d) {
+  for (const linkwright::kinematics::Link& link : d.mechanism.links) d.dynamics.links.push_back({link.name, 1.0});
+  d.dynamics.loads.gravity = linkwright::kinematics::standardGravity();
+}
+
+const char* qualityName(linkwright::ui::SamplingQuality q) {
+  switch (q) {
+  case linkwright::ui::SamplingQuality::Draft: return "draft";
+  case linkwright::ui::SamplingQuality::Normal: return "normal";
+  case linkwright::ui::SamplingQuality::Precise: return "precise";
+  }
+  return "normal";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
   QApplication app(argc, argv);
   QApplication::setOrganizationName("LinkwrightBenchmark");
-  const int moves = argc > 1 ? std::max(10, std::atoi(argv[1])) : 400;
+  const auto options = parse(argc, argv);
+  if (!options) {
+    std::fprintf(stderr,
+                 "usage: linkwright_gui_benchmark [--moves N] [--example NAME] [--quality draft|normal|precise] "
+                 "[--forces]\n");
+    return 2;
+  }
+  const int moves = options->moves;
 
   linkwright::ui::MainWindow window;
   window.resize(1400, 880);
@@ -46,19 +112,21 @@ int main(int argc, char** argv) {
   QApplication::processEvents();
   auto* doc = window.document();
   auto* canvas = window.canvas();
-  if (argc > 2) {
-    const auto example = linkwright::kinematics::designForExample(argv[2]);
-    if (!example) {
-      std::fprintf(stderr, "linkwright_gui_benchmark: no example named %s\n", argv[2]);
-      return 2;
-    }
-    doc->reset(*example);
-    QApplication::processEvents();
+  auto design = linkwright::kinematics::designForExample(options->example.value_or("thesis-crank-rocker"));
+  if (!design) {
+    std::fprintf(stderr, "linkwright_gui_benchmark: no example named %s\n", options->example->c_str());
+    return 2;
   }
+  if (options->forces && design->dynamics.empty()) giveMasses(*design);
+  doc->reset(*design);
+  doc->setQuality(options->quality);
+  if (options->forces) window.showForces();  // the Forces tab and the canvas's force arrows
+  QApplication::processEvents();
   const std::size_t dragged = doc->fourBar() ? doc->fourBar()->c.index : doc->mechanism().points.size() - 1;
-  std::printf("%s, dragging %s: %zu samples; plots and canvas redrawn after every move\n",
-              argc > 2 ? argv[2] : "thesis four-bar", doc->mechanism().points[dragged].name.c_str(),
-              linkwright::kinematics::designSweepSpec(doc->design()).samples);
+  const std::string name = options->example.value_or("thesis-crank-rocker");
+  std::printf("%s, dragging %s, %s, %s: %zu samples shown; plots and canvas redrawn after every move\n", name.c_str(),
+              doc->mechanism().points[dragged].name.c_str(), qualityName(options->quality),
+              options->forces ? "forces" : "kinematics", doc->sweep().size());
 
   const QPointF start = canvas->mapFromScene(linkwright::ui::toQt(doc->pose().position[dragged]));
   const long sweepsBefore = doc->sweepsRun();
@@ -93,5 +161,9 @@ int main(int argc, char** argv) {
   std::printf("worst case (handling + whole window repainted):        median %.2f ms, p95 %.2f ms\n",
               percentile(full, 0.5), percentile(full, 0.95));
   std::printf("one frame at 60 Hz: 16.67 ms\n");
+  std::printf("RESULT %s %s %s handling %.2f %.2f %.2f redraw %.2f %.2f %.2f\n", name.c_str(),
+              qualityName(options->quality), options->forces ? "forces" : "kinematics", percentile(solve, 0.5),
+              percentile(solve, 0.95), *std::max_element(solve.begin(), solve.end()), percentile(total, 0.5),
+              percentile(total, 0.95), *std::max_element(total.begin(), total.end()));
   return 0;
 }
