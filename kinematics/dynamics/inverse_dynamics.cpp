@@ -39,8 +39,7 @@ Result<InverseDynamics> InverseDynamics::create(const Mechanism& mechanism, cons
   id.m_solution.setZero(n);
   id.m_work.setZero(n);
   id.m_workspace.setZero(1);
-  id.m_qr = Eigen::ColPivHouseholderQR<Eigen::MatrixXd>(n, n);
-  id.m_qr.setThreshold(kForceRankThreshold);
+  id.m_lu = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
   return id;
 }
 
@@ -302,17 +301,17 @@ void InverseDynamics::extractDrive(const Pose& pose, std::optional<double> input
 
 PoseStatus InverseDynamics::solveInto(const Pose& pose, PoseForces& forces, std::optional<double> input) {
   assemble(pose);
-  m_qr.compute(m_matrix);
-  if (m_qr.rank() < m_matrix.cols()) {
+  m_lu.compute(m_matrix);
+  // The pivots of U, against the largest: below kForceRankThreshold the system is singular.
+  const auto pivots = m_lu.matrixLU().diagonal().cwiseAbs();
+  if (!(pivots.minCoeff() > kForceRankThreshold * pivots.maxCoeff())) {
     prepare(forces);
     return PoseStatus::Singular;
   }
-  // x = P·R⁻¹·Qᵀ·b, written out so it works in the buffers sized at create(): Eigen's solve()
-  // would allocate a copy of b at every sample (its factorization still allocates per column).
-  m_work = m_rhs;
-  m_qr.householderQ().adjoint().applyThisOnTheLeft(m_work, m_workspace);
-  m_qr.matrixQR().triangularView<Eigen::Upper>().solveInPlace(m_work);
-  for (Eigen::Index i = 0; i < m_work.size(); ++i) m_solution(m_qr.colsPermutation().indices()(i)) = m_work(i);
+  // x = U⁻¹·L⁻¹·P·b in the buffers sized at create(): no allocation per sample.
+  m_solution.noalias() = m_lu.permutationP() * m_rhs;
+  m_lu.matrixLU().triangularView<Eigen::UnitLower>().solveInPlace(m_solution);
+  m_lu.matrixLU().triangularView<Eigen::Upper>().solveInPlace(m_solution);
   if (!m_solution.allFinite()) {
     prepare(forces);
     return PoseStatus::Singular;
