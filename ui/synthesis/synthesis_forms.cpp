@@ -82,14 +82,9 @@ CrankRockerForm::CrankRockerForm(QWidget* parent) : ClosedForm(parent) {
 }
 
 k::Result<ClosedFormRequest> CrankRockerForm::request() const {
-  SwingRequest r;
-  r.target.swing = k::degToRad(m_swing->value());
-  r.target.timeRatio = m_timeRatio->value();
-  r.target.length = m_length->value();
-  r.target.scale = m_scale->currentIndex() == 0 ? k::SwingScale::Rocker : k::SwingScale::Frame;
-  r.target.lengthUnit = lengthUnit().toStdString();
-  r.count = static_cast<std::size_t>(m_count->value());
-  return ClosedFormRequest(r);
+  k::SynthesisTargets t;
+  store(t);
+  return ClosedFormRequest(SwingRequest{t.swing, static_cast<std::size_t>(m_count->value())});
 }
 
 void CrankRockerForm::load(const k::SynthesisTargets& t) {
@@ -114,13 +109,9 @@ SliderCrankForm::SliderCrankForm(QWidget* parent) : ClosedForm(parent) {
 }
 
 k::Result<ClosedFormRequest> SliderCrankForm::request() const {
-  k::StrokeTarget t;
-  t.stroke = m_stroke->value();
-  t.timeRatio = m_timeRatio->value();
-  t.choice = m_choice->currentIndex() == 0 ? k::SliderChoice::Rod : k::SliderChoice::Offset;
-  t.value = m_value->value();
-  t.lengthUnit = lengthUnit().toStdString();
-  return ClosedFormRequest(t);
+  k::SynthesisTargets t;
+  store(t);
+  return ClosedFormRequest(t.slider);
 }
 
 void SliderCrankForm::load(const k::SynthesisTargets& t) {
@@ -146,13 +137,9 @@ ShaperForm::ShaperForm(QWidget* parent) : ClosedForm(parent) {
 }
 
 k::Result<ClosedFormRequest> ShaperForm::request() const {
-  k::ShaperTarget t;
-  t.stroke = m_stroke->value();
-  t.timeRatio = m_timeRatio->value();
-  t.crank = m_crank->value();
-  t.link = m_link->value();
-  t.lengthUnit = lengthUnit().toStdString();
-  return ClosedFormRequest(t);
+  k::SynthesisTargets t;
+  store(t);
+  return ClosedFormRequest(t.shaper);
 }
 
 void ShaperForm::load(const k::SynthesisTargets& t) {
