@@ -2,6 +2,7 @@
 
 #include "app/cli/arguments.h"
 #include "app/cli/cli.h"
+#include "app/cli/commands.h"
 
 #include <algorithm>
 #include <cctype>
@@ -94,6 +95,29 @@ std::optional<std::string> checkDocument(std::string_view bytes, const std::stri
   return std::nullopt;
 }
 
+bool isCheapToRun(const cli::Invocation& inv) {
+  using cli::Command;
+  if (inv.outputFile || inv.svgFile || inv.documentPath || inv.lawTable) return false;  // files: not here
+  switch (inv.command) {
+  case Command::Classify:
+  case Command::Centres:
+  case Command::Examples:
+  case Command::Help:
+  case Command::Version: return true;
+  case Command::Analyze:
+  case Command::Extremes: {
+    // The grid the CLI itself would sweep, so that no accepted range (--to 999999 at 1°) or
+    // --step-time makes a run slow; an invocation it refuses stops before the sweep.
+    constexpr std::size_t kMaxFuzzedSamples = 4000;
+    const auto resolved = cli::resolveMechanism(inv);
+    if (!resolved) return true;
+    const auto spec = cli::sweepSpecFor(inv, resolved->defaults);
+    return !spec || spec->samples <= kMaxFuzzedSamples;
+  }
+  default: return false;
+  }
+}
+
 std::optional<std::string> checkArguments(std::string_view bytes) {
   const auto args = splitArguments(bytes);
   const auto parsed = cli::parseArguments(args);
@@ -104,17 +128,7 @@ std::optional<std::string> checkArguments(std::string_view bytes) {
     if (const auto token = nonFiniteToken(parsed.error().message, typed)) return "'" + *token + "' in the parse error";
     return std::nullopt;
   }
-  using cli::Command;
-  const auto& inv = *parsed;
-  const Command c = inv.command;
-  // A sweep is run only on a grid of at most a few thousand angles, so no input makes an
-  // iteration slow (the default grid of --fourbar is 1°, of an example its own few hundred).
-  // (a law's --step-time may ask for up to 1e7 instants: such runs are left out too).
-  const bool smallGrid =
-      inv.samples ? *inv.samples <= 4000 : (!inv.stepDeg || *inv.stepDeg >= 0.1) && !(inv.law && inv.stepTime);
-  const bool cheap = c == Command::Classify || c == Command::Centres || c == Command::Examples || c == Command::Help ||
-                     c == Command::Version || ((c == Command::Analyze || c == Command::Extremes) && smallGrid);
-  if (!cheap || inv.outputFile || inv.svgFile || inv.documentPath || inv.lawTable) return std::nullopt;
+  if (!isCheapToRun(*parsed)) return std::nullopt;
   return checkRun(args);
 }
 

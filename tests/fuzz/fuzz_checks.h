@@ -6,6 +6,8 @@
 // The promise checked: any input gives a clear error or a result, never a crash, a hang, an
 // exit code outside the documented ones, or "nan"/"inf" in any output.
 
+#include "app/cli/arguments.h"
+
 #include <optional>
 #include <string>
 #include <string_view>
@@ -19,10 +21,14 @@ namespace linkwright::fuzz {
 /// soak, so that the loader runs fast enough to be fuzzed for 10^7 inputs.)
 std::optional<std::string> checkDocument(std::string_view bytes, const std::string& scratchPath);
 
-/// NUL-separated command-line arguments: parsed, and run when the command is cheap and writes
-/// no file (classify, centres, examples, help, version, and analyze or extremes on a grid of at
-/// most a few thousand angles). Returns what went wrong, or nothing.
+/// NUL-separated command-line arguments: parsed, and run when isCheapToRun. Returns what went
+/// wrong, or nothing.
 std::optional<std::string> checkArguments(std::string_view bytes);
+
+/// Whether the fuzzer runs `invocation`: a command that reads and writes no file and finishes
+/// in milliseconds (classify, centres, examples, help, version, and analyze or extremes whose
+/// grid is at most a few thousand samples). Anything slower would be reported as a hang.
+bool isCheapToRun(const cli::Invocation& invocation);
 
 /// The arguments in NUL-separated bytes (at most 32, each at most 256 bytes: the rest is
 /// dropped, so an input cannot ask for unbounded work).

@@ -63,6 +63,24 @@ TEST_CASE("the argument checks flag what they must", "[fuzz]") {
   CHECK_FALSE(fuzz::checkArguments("analyze\0--fourbar\0-1,2,3,4"s));  // an error, clearly given
 }
 
+TEST_CASE("the arguments fuzzer runs only what finishes at once", "[fuzz]") {
+  const auto cheap = [](std::vector<std::string> args) {
+    const auto parsed = cli::parseArguments(args);
+    REQUIRE(parsed);
+    return fuzz::isCheapToRun(*parsed);
+  };
+  CHECK(cheap({"analyze", "--example", "thesis-crank-rocker"}));
+  CHECK(cheap({"extremes", "--fourbar", "60,25,70,45", "--samples", "4000"}));
+  CHECK(cheap({"analyze", "--fourbar", "60,25,70,45", "--to", "-1"}));  // refused before the sweep
+  CHECK(cheap({"classify", "--fourbar", "60,25,70,45"}));
+  // The CI's finding: a range the CLI accepts, a million rows at the default 1°.
+  CHECK_FALSE(cheap({"analyze", "--example", "thesis-crank-rocker", "--to", "999999"}));
+  CHECK_FALSE(cheap({"extremes", "--fourbar", "60,25,70,45", "--samples", "4001"}));
+  CHECK_FALSE(cheap({"analyze", "--example", "thesis-crank-rocker", "--law", "constant", "--step-time", "1e-6"}));
+  CHECK_FALSE(cheap({"analyze", "--example", "thesis-crank-rocker", "-o", "out.csv"}));
+  CHECK_FALSE(cheap({"synthesize", "swing", "--swing", "60", "--time-ratio", "1.3", "--rocker", "50"}));
+}
+
 TEST_CASE("every stored document input gives an error or finite results", "[fuzz]") {
   const auto files = storedInputs("documents");
   REQUIRE(files.size() >= 10);  // the seed corpus: one document per built-in example at least
