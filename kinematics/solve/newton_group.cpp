@@ -2,8 +2,7 @@
 
 #include "kinematics/model/validate.h"
 #include "kinematics/solve/rrr_dyad.h"
-
-#include <Eigen/LU>
+#include "kinematics/solve/small_lu.h"
 
 #include <algorithm>
 #include <array>
@@ -12,34 +11,34 @@
 namespace linkwright::kinematics {
 namespace {
 
-constexpr int kMaxUnknowns = 2 * static_cast<int>(kMaxFreeGroupPoints);
-// Dynamic sizes with a fixed capacity: the storage is inside the object, on the stack.
-using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, kMaxUnknowns, kMaxUnknowns>;
-using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxUnknowns, 1>;
 // Armijo's sufficient-decrease fraction: a step t must cut |Φ|² by at least 2σt of itself.
 constexpr double kArmijo = 1e-4;
 
-// The group's rows (its constraints, in the mechanism's order) and where its points' columns are.
+template <int N>
+using Vector = Eigen::Matrix<double, N, 1>;
+
+// The group's rows (its constraints, in the mechanism's order) and where its points' columns
+// are. N = 2k unknowns, and as many rows (checkMechanism).
+template <int N>
 class Group {
 public:
-  Group(const Mechanism& m, std::size_t first, std::size_t last) : m_first(first), m_last(last) {
+  Group(const Mechanism& m, std::size_t first) : m_first(first) {
+    int rows = 0;
     for (const DistanceConstraint& c : m.constraints) {
       const std::size_t later = constraintLaterPoint(c).index;
-      if (later >= first && later < last && m_rows < kMaxUnknowns) m_row[static_cast<std::size_t>(m_rows++)] = &c;
+      if (later >= first && later < first + N / 2 && rows < N) m_row[rows++] = &c;
     }
   }
 
-  int unknowns() const { return 2 * static_cast<int>(m_last - m_first); }
-  int rows() const { return m_rows; }
-  const DistanceConstraint& row(int r) const { return *m_row[static_cast<std::size_t>(r)]; }
+  const DistanceConstraint& row(int r) const { return *m_row[r]; }
   bool inGroup(PointId p) const { return p.index >= m_first; }  // constraints never reach past the group
-  Eigen::Index column(PointId p) const { return static_cast<Eigen::Index>(2 * (p.index - m_first)); }
+  int column(PointId p) const { return 2 * static_cast<int>(p.index - m_first); }
 
   // The scale the tolerance is relative to: the longest constraint, or the farthest solved
   // point from the origin (round-off in positions grows with it).
   double size(const Pose& pose) const {
     double s = 0.0;
-    for (int r = 0; r < m_rows; ++r) {
+    for (int r = 0; r < N; ++r) {
       const DistanceConstraint& c = row(r);
       s = std::max(s, c.length);
       for (const PointId p : {c.first, c.second})
@@ -48,36 +47,43 @@ public:
     return s;
   }
 
-  void load(const Pose& pose, Vector& q) const {
-    for (std::size_t i = m_first; i < m_last; ++i) q.segment<2>(column(PointId{i})) = pose.position[i];
+  void load(const Pose& pose, Vector<N>& q) const {
+    for (int i = 0; i < N / 2; ++i) q.template segment<2>(2 * i) = pose.position[m_first + i];
   }
-  void store(const Vector& q, Pose& pose) const {
-    for (std::size_t i = m_first; i < m_last; ++i) pose.position[i] = q.segment<2>(column(PointId{i}));
+  void store(const Vector<N>& q, Pose& pose) const {
+    for (int i = 0; i < N / 2; ++i) pose.position[m_first + i] = q.template segment<2>(2 * i);
   }
 
-  void residual(const Pose& pose, Vector& phi) const {
-    for (int r = 0; r < m_rows; ++r) {
+  void residual(const Pose& pose, Vector<N>& phi) const {
+    for (int r = 0; r < N; ++r) {
       const DistanceConstraint& c = row(r);
       const Eigen::Vector2d d = pose.position[c.first.index] - pose.position[c.second.index];
       phi[r] = (d.squaredNorm() - c.length * c.length) / (2.0 * c.length);
     }
   }
 
-  void jacobian(const Pose& pose, Matrix& j) const {
+  // Into `j`, unfactorized.
+  void jacobian(const Pose& pose, SmallLu<N>& j) const {
     j.setZero();
-    for (int r = 0; r < m_rows; ++r) {
+    for (int r = 0; r < N; ++r) {
       const DistanceConstraint& c = row(r);
       const Eigen::Vector2d g = (pose.position[c.first.index] - pose.position[c.second.index]) / c.length;
-      if (inGroup(c.first)) j.block<1, 2>(r, column(c.first)) += g.transpose();
-      if (inGroup(c.second)) j.block<1, 2>(r, column(c.second)) -= g.transpose();
+      if (inGroup(c.first)) {
+        j.at(r, column(c.first)) += g.x();
+        j.at(r, column(c.first) + 1) += g.y();
+      }
+      if (inGroup(c.second)) {
+        j.at(r, column(c.second)) -= g.x();
+        j.at(r, column(c.second) + 1) -= g.y();
+      }
     }
   }
 
   // −J_k ẋ_k for the solved points' rates `rate` (velocity or acceleration), plus −J̇q̇ when
   // `velocity` is given (the acceleration system).
   void rateRhs(const Pose& pose, const std::vector<Eigen::Vector2d>& rate, const std::vector<Eigen::Vector2d>* velocity,
-               Vector& rhs) const {
-    for (int r = 0; r < m_rows; ++r) {
+               Vector<N>& rhs) const {
+    for (int r = 0; r < N; ++r) {
       const DistanceConstraint& c = row(r);
       const Eigen::Vector2d d = pose.position[c.first.index] - pose.position[c.second.index];
       double b = 0.0;
@@ -88,28 +94,27 @@ public:
     }
   }
 
-  void storeRates(const Vector& x, std::vector<Eigen::Vector2d>& rate) const {
-    for (std::size_t i = m_first; i < m_last; ++i) rate[i] = x.segment<2>(column(PointId{i}));
+  void storeRates(const Vector<N>& x, std::vector<Eigen::Vector2d>& rate) const {
+    for (int i = 0; i < N / 2; ++i) rate[m_first + i] = x.template segment<2>(2 * i);
   }
 
 private:
   std::size_t m_first;
-  std::size_t m_last;
-  std::array<const DistanceConstraint*, kMaxUnknowns> m_row{};
-  int m_rows = 0;
+  std::array<const DistanceConstraint*, N> m_row{};
 };
 
 // One damped Newton step from q (whose residual is phi); on success q, phi and the pose hold
 // the new point. False if no step length reduces |Φ|² enough: the pose is left at q.
-bool newtonStep(const Group& g, const Eigen::PartialPivLU<Matrix>& lu, double size, Vector& q, Vector& phi,
-                Vector& trial, Pose& pose) {
-  const Vector step = lu.solve(-phi);
+template <int N>
+bool newtonStep(const Group<N>& g, const SmallLu<N>& lu, double size, Vector<N>& q, Vector<N>& phi, Pose& pose) {
+  Vector<N> step = -phi;
+  lu.solve(step.data());
   if (!step.allFinite()) return false;
   const double f0 = phi.squaredNorm();
   const double longest = step.cwiseAbs().maxCoeff();
   double t = longest > size ? size / longest : 1.0;
   for (int h = 0; h <= kNewtonHalvings; ++h, t *= 0.5) {
-    trial = q + t * step;
+    const Vector<N> trial = q + t * step;
     g.store(trial, pose);
     g.residual(pose, phi);
     if (phi.squaredNorm() <= (1.0 - 2.0 * kArmijo * t) * f0) {
@@ -122,15 +127,14 @@ bool newtonStep(const Group& g, const Eigen::PartialPivLU<Matrix>& lu, double si
   return false;
 }
 
-}  // namespace
-
-NewtonOutcome solveFreeGroup(const Mechanism& m, std::size_t first, std::size_t last, const NewtonSettings& settings,
-                             bool velocities, bool accelerations, Pose& pose) {
-  const Group g(m, first, last);
-  const Eigen::Index n = g.unknowns();
-  Vector q(n), phi(n), trial(n);
-  Matrix j(n, n);
-  Eigen::PartialPivLU<Matrix> lu(n);
+// solveFreeGroup for a group of N unknowns: the size is a constant in every loop.
+template <int N>
+NewtonOutcome solveGroup(const Mechanism& m, std::size_t first, const NewtonSettings& settings, bool velocities,
+                         bool accelerations, Pose& pose) {
+  const Group<N> g(m, first);
+  Vector<N> q;
+  Vector<N> phi;
+  SmallLu<N> lu;
   const double size = g.size(pose);
   const double target = settings.tolerance * size;
   g.load(pose, q);
@@ -140,9 +144,9 @@ NewtonOutcome solveFreeGroup(const Mechanism& m, std::size_t first, std::size_t 
   while (!(phi.cwiseAbs().maxCoeff() <= target)) {
     if (out.iterations >= settings.maxIterations) break;
     ++out.iterations;
-    g.jacobian(pose, j);
-    lu.compute(j);
-    if (!newtonStep(g, lu, size, q, phi, trial, pose)) break;
+    g.jacobian(pose, lu);
+    lu.compute();
+    if (!newtonStep(g, lu, size, q, phi, pose)) break;
   }
   out.residual = phi.cwiseAbs().maxCoeff();
   if (!(out.residual <= target)) {
@@ -150,20 +154,41 @@ NewtonOutcome solveFreeGroup(const Mechanism& m, std::size_t first, std::size_t 
     return out;
   }
   if (!velocities && !accelerations) return out;
-  g.jacobian(pose, j);
-  lu.compute(j);
-  if (!(lu.rcond() > kSingularSine)) {
+  g.jacobian(pose, lu);
+  lu.compute();
+  if (!lu.rcondAbove(kSingularSine)) {
     out.status = NewtonStatus::Singular;
     return out;
   }
-  g.rateRhs(pose, pose.velocity, nullptr, trial);
-  q = lu.solve(trial);
-  g.storeRates(q, pose.velocity);
+  Vector<N> rate;
+  g.rateRhs(pose, pose.velocity, nullptr, rate);
+  lu.solve(rate.data());
+  g.storeRates(rate, pose.velocity);
   if (!accelerations) return out;
-  g.rateRhs(pose, pose.acceleration, &pose.velocity, trial);
-  q = lu.solve(trial);
-  g.storeRates(q, pose.acceleration);
+  g.rateRhs(pose, pose.acceleration, &pose.velocity, rate);
+  lu.solve(rate.data());
+  g.storeRates(rate, pose.acceleration);
   return out;
+}
+
+}  // namespace
+
+NewtonOutcome solveFreeGroup(const Mechanism& m, std::size_t first, std::size_t last, const NewtonSettings& settings,
+                             bool velocities, bool accelerations, Pose& pose) {
+  static_assert(kMaxFreeGroupPoints == 8, "one case below per group size");
+  const bool v = velocities;
+  const bool a = accelerations;
+  switch (last - first) {
+  case 1: return solveGroup<2>(m, first, settings, v, a, pose);
+  case 2: return solveGroup<4>(m, first, settings, v, a, pose);
+  case 3: return solveGroup<6>(m, first, settings, v, a, pose);
+  case 4: return solveGroup<8>(m, first, settings, v, a, pose);
+  case 5: return solveGroup<10>(m, first, settings, v, a, pose);
+  case 6: return solveGroup<12>(m, first, settings, v, a, pose);
+  case 7: return solveGroup<14>(m, first, settings, v, a, pose);
+  case 8: return solveGroup<16>(m, first, settings, v, a, pose);
+  default: return {NewtonStatus::NoConvergence, 0, 0.0};  // checkMechanism rules it out
+  }
 }
 
 double constraintMisfit(const DistanceConstraint& c, const Pose& pose) {

@@ -26,15 +26,18 @@
 //   Both use one LU factorization (partial pivoting) of J at the converged q. J is singular
 //   where the group can move with the input held (a triad's three binaries concurrent, a
 //   converted dyad at its toggle): when LU's estimate of J's reciprocal condition number
-//   (‖J‖₁‖J⁻¹‖₁)⁻¹ is below kSingularSine, the positions stand and the rates are undefined.
+//   (‖J‖₁‖J⁻¹‖₁)⁻¹ is below kSingularSine, the positions stand and the rates are undefined
+//   (small_lu.h: where a cheap bound already puts it above, the estimate is not run).
 //   For a converted RRR dyad J = [u1ᵀ; u2ᵀ] (unit rows), whose estimate lies between
 //   |sin γ|/(2√2) and |sin γ| (γ the transmission angle): the closed form's test, within 3×.
 //
-//   Start: the pose solver's choice (pose_solver.cpp): the sweep's prediction, else the pose's
-//   last assembly (Pose::assembled), else the guesses; a warm start that fails is retried once
-//   from the guesses.
-//   Workspace: matrices of at most 2·kMaxFreeGroupPoints rows (constraint_form.h) live on the
-//   stack, so a solve never allocates, the solver keeps no state, and Pose stays a plain value.
+//   Start: the pose solver's choice (pose_solver.cpp): the guide's prediction, else the pose's
+//   positions if Pose::assembled (in a sweep, the free points' path extrapolated from the last
+//   three samples, so that one step usually meets the tolerance: sweep.cpp), else the
+//   guesses; a warm start that fails is retried once from the guesses.
+//   Workspace: each group size 2k (k ≤ kMaxFreeGroupPoints, constraint_form.h) has its own
+//   fixed-size vectors and LU (small_lu.h) on the stack, so a solve never allocates, its loops
+//   have constant bounds, the solver keeps no state, and Pose stays a plain value.
 
 #include "kinematics/model/constraint_form.h"
 #include "kinematics/model/mechanism.h"

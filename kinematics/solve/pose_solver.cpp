@@ -48,8 +48,9 @@ struct Solver {
     lane.ratesValid = false;
   }
 
-  // Where Newton starts: the sweep's extrapolated prediction if given; else this pose's own
-  // positions if they hold an assembly (the previous sample or frame: positions only move a
+  // Where Newton starts: the guide's prediction if given (a sweep's refinement at a toggle);
+  // else this pose's own positions if they hold an assembly (the previous frame of a drag; in a
+  // sweep, the free points' path extrapolated from the samples before: positions only move a
   // little between them); else the user's guesses. True unless it is the guesses.
   bool startFreeGroup(Pose& pose, std::size_t first, std::size_t last) const {
     if (!guide.predicted.empty()) {

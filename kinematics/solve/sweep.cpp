@@ -112,16 +112,16 @@ public:
         m_dyads(dyadsIn(m, scope)), m_maxStep(inputStepLimit(m)), m_scratch(kMaxRefineDepth + 1) {
     for (Pose& p : m_poses) preparePose(m, p);
     m_predicted.assign(m.points.size(), Eigen::Vector2d::Zero());
-    m_hasFreePoints = std::any_of(m.points.begin(), m.points.end(),
-                                  [](const Point& p) { return std::holds_alternative<FreePoint>(p.definition); });
+    for (std::size_t i = 0; i < m.points.size(); ++i)
+      if (std::holds_alternative<FreePoint>(m.points[i].definition)) m_freePoints.push_back(i);
   }
 
   // Samples run in blocks (solveBlock) while the branches are plainly continuous; the first
   // sample, any sample near a toggle or a gap, and linkages with free points (whose Newton
-  // starts from the previous sample) run one at a time.
+  // starts from the samples before) run one at a time.
   void run() {
     for (std::size_t j = 0; j < m_spec.samples;) {
-      if (m_haveLast && !m_hasFreePoints) j = solveBlock(j);
+      if (m_haveLast && m_freePoints.empty()) j = solveBlock(j);
       if (j < m_spec.samples) solveOne(j++);
     }
     m_writer.finish(m_mech, m_out);
@@ -132,11 +132,13 @@ private:
     const DriverState driver = sweepDriver(m_spec, j);
     const double angle = driver.position;
     m_out.inputAngle[j] = angle;
+    m_continued = true;
     const PoseReport report = solveSample(driver);
     m_out.report[j] = report;
     if (report.status == PoseStatus::NotAssemblable) {
       m_writer.writeNothing(j);
       m_haveLast = m_haveBefore = false;
+      m_run = 0;
       return;
     }
     if (report.status == PoseStatus::Singular) clearRates(*m_current);
@@ -197,17 +199,48 @@ private:
   }
 
   // The current pose becomes the last, the last the one before it: the three poses rotate, no
-  // copies. Free points then warm-start from the last sample's positions.
+  // copies. Free points then warm-start from their path extrapolated (predictFreePoints).
   void advance(double angle) {
     Pose* const oldest = m_before;
     m_before = m_last;
     m_last = m_current;
     m_current = oldest;
-    if (m_hasFreePoints) m_current->position = m_last->position;  // same sizes: no allocation
+    m_run = m_continued ? std::min(m_run + 1, 3) : 1;
+    if (!m_freePoints.empty()) predictFreePoints();
     m_beforeAngle = m_lastAngle;
     m_haveBefore = m_haveLast;
     m_lastAngle = angle;
     m_haveLast = true;
+  }
+
+  // Newton's start for the next sample, written into the current pose, which still holds the
+  // sample three back. Samples are evenly spaced in the input (or in time on a time base), so
+  // in units of one sample the parabola through a free point's last three positions gives
+  // q(0) ≈ q(−1) + Δ1 + Δ2, with Δ1 = q(−1) − q(−2) and Δ2 = Δ1 − (q(−2) − q(−3)), off by
+  // about q‴h³: Newton's first step then meets the tolerance (its error squares), where the
+  // last sample's positions, off by q′h, took two. Only where the path is smooth at this
+  // spacing, the largest |Δ2| at most half the largest |Δ1| (on a circle, steps up to 29°): on
+  // a coarse grid the parabola can overshoot by more than a step, and the last sample's
+  // positions are the safer start. The same after a gap or a lock (m_run < 3: the last samples
+  // do not form one path). The other points keep the last sample's positions.
+  void predictFreePoints() {
+    std::vector<Eigen::Vector2d>& next = m_current->position;
+    const std::vector<Eigen::Vector2d>& last = m_last->position;
+    const std::vector<Eigen::Vector2d>& before = m_before->position;
+    double step = 0.0;
+    double bend = 0.0;
+    for (const std::size_t i : m_freePoints) {
+      const Eigen::Vector2d d1 = last[i] - before[i];
+      m_predicted[i] = d1 - (before[i] - next[i]);  // Δ2, for now
+      step = std::max(step, d1.squaredNorm());
+      bend = std::max(bend, m_predicted[i].squaredNorm());
+    }
+    const bool smooth = m_run >= 3 && bend <= 0.25 * step;
+    for (const std::size_t i : m_freePoints)
+      m_predicted[i] = smooth ? Eigen::Vector2d(2.0 * last[i] - before[i] + m_predicted[i]) : last[i];
+    std::copy(last.begin(), last.end(), next.begin());  // same sizes: no allocation
+    for (const std::size_t i : m_freePoints) next[i] = m_predicted[i];
+    m_current->assembled = true;  // a warm start (pose_solver.cpp's startFreeGroup)
   }
 
   PoseReport solveSample(const DriverState& driver) {
@@ -224,6 +257,7 @@ private:
       // The path leaves the assemblable region between two samples: start afresh here.
       const PoseReport afresh = solve(driver, m_request, *m_current);
       if (afresh.status != PoseStatus::NotAssemblable) m_out.lockedBetween.push_back({m_lastAngle, angle});
+      m_continued = false;  // a jump: the path before it says nothing about the path after
       return afresh;
     }
     const BranchGuide tracked{m_scratch[0].branchSign, {}};
@@ -284,8 +318,11 @@ private:
   Pose* m_before = &m_poses[2];
   std::vector<Pose> m_scratch;
   std::vector<Eigen::Vector2d> m_predicted;
+  std::vector<std::size_t> m_freePoints;  // their indices; Newton warm-starts them from a prediction
   double m_lastAngle = 0.0, m_beforeAngle = 0.0;
-  bool m_haveLast = false, m_haveBefore = false, m_hasFreePoints = false;
+  int m_run = 0;            // consecutive assembled samples ending at the last, no lock between (at most 3)
+  bool m_continued = true;  // whether the sample being solved continues the last one's path
+  bool m_haveLast = false, m_haveBefore = false;
 };
 
 // Sizes `columns` to one column of n samples per selected entry and an empty one for the
