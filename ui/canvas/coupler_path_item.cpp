@@ -3,10 +3,18 @@
 #include "ui/canvas/canvas_style.h"
 #include "ui/geometry.h"
 
+#include <QPainter>
 #include <QPainterPath>
 #include <QPen>
+#include <QPolygonF>
+
+#include <cmath>
 
 namespace linkwright::ui {
+namespace {
+// How far (pixels) a sample may lie from the path drawn.
+constexpr double kPathTolerancePx = 0.2;
+}  // namespace
 
 CouplerPathItem::CouplerPathItem(QGraphicsItem* parent) : QGraphicsPathItem(parent) {
   QPen pen(kCouplerPointColor, canvas::kPathWidthPx, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin);
@@ -17,7 +25,7 @@ CouplerPathItem::CouplerPathItem(QGraphicsItem* parent) : QGraphicsPathItem(pare
 }
 
 void CouplerPathItem::setFromSweep(const kinematics::SweepResult& sweep, kinematics::PointId point) {
-  QPainterPath path;
+  m_runs.clear();
   if (point.index < sweep.position.size()) {
     const auto& positions = sweep.position[point.index];
     bool penDown = false;
@@ -26,12 +34,33 @@ void CouplerPathItem::setFromSweep(const kinematics::SweepResult& sweep, kinemat
         penDown = false;
         continue;
       }
-      if (penDown) path.lineTo(toQt(positions[j]));
-      else path.moveTo(toQt(positions[j]));
+      if (!penDown) m_runs.append(QList<QPointF>{});
+      m_runs.back().append(toQt(positions[j]));
       penDown = true;
     }
   }
+  QPainterPath path;
+  for (const QList<QPointF>& run : m_runs) path.addPolygon(QPolygonF(run));
+  m_drawnScale = 0.0;
   setPath(path);
+}
+
+void CouplerPathItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) {
+  // Within 5 % of the zoom it was made for, the drawn path stays within 1.05 × the tolerance.
+  constexpr double kRemakeRatio = 1.05;
+  const double scale = std::sqrt(std::abs(painter->worldTransform().determinant()));
+  if (!(m_drawnScale > 0.0 && scale <= kRemakeRatio * m_drawnScale && m_drawnScale <= kRemakeRatio * scale)) {
+    m_drawn.clear();
+    QList<QPointF> kept;
+    for (const QList<QPointF>& run : m_runs) {
+      simplifyForScreen(run, {scale, scale}, kPathTolerancePx, kept, m_scratch);
+      m_drawn.addPolygon(QPolygonF(kept));
+    }
+    m_drawnScale = scale;
+  }
+  painter->setPen(pen());
+  painter->setBrush(Qt::NoBrush);
+  painter->drawPath(m_drawn);
 }
 
 void CouplerPathItem::setPresentationScale(double factor) {

@@ -87,14 +87,17 @@ std::optional<double> wrapIntoRange(double angleDeg, double fromDeg, double toDe
 
 std::pair<double, double> robustSpan(std::vector<double>& values) {
   if (values.empty()) return {0.0, 0.0};
-  std::sort(values.begin(), values.end());
+  // Two selections and a scan, not a sort: this runs on every frame of a drag.
   const auto at = [&](double q) {
-    return values[static_cast<std::size_t>(q * static_cast<double>(values.size() - 1))];
+    const auto nth = values.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(values.size() - 1));
+    std::nth_element(values.begin(), nth, values.end());
+    return *nth;
   };
   const double lo = at(0.05);
   const double hi = at(0.95);
+  const auto [least, most] = std::minmax_element(values.begin(), values.end());
   const double margin = 0.5 * (hi - lo);
-  return {std::max(values.front(), lo - margin), std::min(values.back(), hi + margin)};
+  return {std::max(*least, lo - margin), std::min(*most, hi + margin)};
 }
 
 }  // namespace linkwright::ui

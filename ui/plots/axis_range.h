@@ -34,7 +34,7 @@ AxisRange niceValueRange(double lo, double hi, int maxTicks = 6);
 
 /// The span of `values` worth showing: their full range, unless a few samples spike far out
 /// (rates next to a toggle position grow without bound), in which case the span of the bulk
-/// (5th to 95th percentile) widened by half its width on each side. Sorts `values`.
+/// (5th to 95th percentile) widened by half its width on each side. Reorders `values`.
 std::pair<double, double> robustSpan(std::vector<double>& values);
 
 /// The crank axis: exactly the grid [fromDeg, toDeg] in `unit`, ticks anchored at 0 every

@@ -30,9 +30,12 @@ std::unique_ptr<VerticalMarker> makeCrankCursor(QChart* chart, QValueAxis* xAxis
 }
 
 void applyAxisRange(QValueAxis* axis, const AxisRange& range) {
-  axis->setRange(range.min, range.max);
-  axis->setTickCount(range.tickCount);
-  axis->setLabelFormat(QStringLiteral("%.%1f").arg(range.decimals));
+  // Each setter relays out the axis (its labels shaped afresh) even when the value is the
+  // same, which would cost a drag more than the sweep: only what changed is set.
+  if (axis->min() != range.min || axis->max() != range.max) axis->setRange(range.min, range.max);
+  if (axis->tickCount() != range.tickCount) axis->setTickCount(range.tickCount);
+  const QString format = QStringLiteral("%.%1f").arg(range.decimals);
+  if (axis->labelFormat() != format) axis->setLabelFormat(format);
 }
 
 }  // namespace linkwright::ui

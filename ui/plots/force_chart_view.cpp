@@ -20,6 +20,10 @@ ForceChartView::ForceChartView(const QString& title, bool fromZero, QWidget* par
   setChart(chart);
   setRenderHint(QPainter::Antialiasing);
   m_cursor = makeCrankCursor(chart, m_xAxis, m_yAxis);
+  // The curves are simplified for the plot area's scale: a new one may need them drawn again.
+  connect(chart, &QChart::plotAreaChanged, this, [this] {
+    for (SegmentedLine& line : m_lines) line.rescale();
+  });
 }
 
 ForceChartView::~ForceChartView() = default;
@@ -37,15 +41,12 @@ void ForceChartView::setCurves(const std::vector<Curve>& curves) {
   m_cursor->raise();
 }
 
-void ForceChartView::setData(const std::vector<SeriesRuns>& runs, const QString& valueTitle, const PlotXAxis& x) {
+bool ForceChartView::setData(const std::vector<SeriesRuns>& runs, const QString& valueTitle, const PlotXAxis& x) {
+  // The axes first: the curves are simplified for the scale they set (segmented_line.h).
   m_values.clear();
-  static const SeriesRuns kNone;
-  for (std::size_t i = 0; i < m_lines.size(); ++i) {
-    const SeriesRuns& r = i < runs.size() ? runs[i] : kNone;
+  for (const SeriesRuns& r : runs)
     for (const QList<QPointF>& run : r.runs)
       for (const QPointF& p : run) m_values.push_back(p.y());
-    m_lines[i].setRuns(r, true);
-  }
   // Forces grow without bound next to a toggle: such spikes run off the chart rather than
   // squash every other value flat.
   constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -58,11 +59,18 @@ void ForceChartView::setData(const std::vector<SeriesRuns>& runs, const QString&
     y.tickCount = static_cast<int>(std::lround(y.max / y.step)) + 1;
   }
   applyAxisRange(m_yAxis, y);
-  m_yAxis->setTitleText(valueTitle);
+  if (m_yAxis->titleText() != valueTitle) m_yAxis->setTitleText(valueTitle);
   applyAxisRange(m_xAxis, x.range);
-  m_xAxis->setTickInterval(x.range.step);
-  m_xAxis->setTitleText(x.title);
+  if (m_xAxis->tickInterval() != x.range.step) m_xAxis->setTickInterval(x.range.step);
+  if (m_xAxis->titleText() != x.title) m_xAxis->setTitleText(x.title);
   m_cursor->setYSpan(y.min, y.max);
+  static const SeriesRuns kNone;
+  ChartLayoutInputs inputs{x.range, y, x.title, valueTitle, {}};
+  for (std::size_t i = 0; i < m_lines.size(); ++i) {
+    m_lines[i].setRuns(i < runs.size() ? runs[i] : kNone, true);
+    inputs.legend.push_back(true);
+  }
+  return inputs.replace(m_layoutInputs);
 }
 
 void ForceChartView::resizeEvent(QResizeEvent* event) {
@@ -74,6 +82,10 @@ void ForceChartView::setCursorX(std::optional<double> x) { m_cursor->setX(x); }
 
 QList<QLineSeries*> ForceChartView::segments(std::size_t index) const {
   return index < m_lines.size() ? m_lines[index].segments() : QList<QLineSeries*>{};
+}
+
+QList<QPointF> ForceChartView::samples(std::size_t index) const {
+  return index < m_lines.size() ? m_lines[index].samples() : QList<QPointF>{};
 }
 
 }  // namespace linkwright::ui

@@ -6,6 +6,7 @@
 
 #include "ui/plots/angle_unit.h"
 #include "ui/plots/axis_range.h"
+#include "ui/plots/chart_layout_inputs.h"
 #include "ui/plots/plot_x_axis.h"
 #include "ui/plots/segmented_line.h"
 #include "ui/plots/series_data.h"
@@ -38,14 +39,17 @@ public:
   /// shown only for more than one curve.
   void setCurves(const std::vector<Curve>& curves);
   /// Replaces the lines with `runs` (one per curve, in order; x on `x`'s axis, y in the value
-  /// unit) and resets the axes: x to `x`'s range and title, y around the values.
-  void setData(const std::vector<SeriesRuns>& runs, const QString& valueTitle, const PlotXAxis& x);
+  /// unit) and resets the axes: x to `x`'s range and title, y around the values. Returns
+  /// whether what lays the chart out changed (quantity_chart_view.h).
+  bool setData(const std::vector<SeriesRuns>& runs, const QString& valueTitle, const PlotXAxis& x);
   /// Moves the cursor to `x` (plot units), or hides it. Touches no data series.
   void setCursorX(std::optional<double> x);
   std::optional<double> cursorX() const { return m_cursor->x(); }
 
   /// The segments of curve `index`; the first carries the legend entry.
   QList<QLineSeries*> segments(std::size_t index) const;
+  /// The samples curve `index` stands for, in order, gaps left out (segmented_line.h).
+  QList<QPointF> samples(std::size_t index) const;
   QValueAxis* xAxis() const { return m_xAxis; }
   QValueAxis* yAxis() const { return m_yAxis; }
 
@@ -62,7 +66,8 @@ private:
   QValueAxis* m_yAxis;
   std::vector<SegmentedLine> m_lines;
   std::unique_ptr<VerticalMarker> m_cursor;
-  std::vector<double> m_values;  // y values of one update, reused
+  std::vector<double> m_values;      // y values of one update, reused
+  ChartLayoutInputs m_layoutInputs;  // as of the last setData
 };
 
 }  // namespace linkwright::ui

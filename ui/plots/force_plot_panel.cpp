@@ -105,10 +105,10 @@ void ForcePlotPanel::refreshAll() {
   for (std::size_t i = 0; i < drive.curves.size(); ++i)
     driveCurves.push_back({QStringLiteral("drive_%1").arg(i), drive.curves[i], i == 0 ? kCrankColor : kCouplerColor});
   m_torque->setCurves(driveCurves);
-  m_torque->chart()->setTitle(drive.title);
+  if (m_torque->chart()->title() != drive.title) m_torque->chart()->setTitle(drive.title);
   m_runs.resize(drive.curves.size());
   for (std::size_t i = 0; i < drive.curves.size(); ++i) buildDriveRuns(*sweep, *cycle, i, m_unit, m_runs[i], x.source);
-  m_torque->setData(m_runs, drive.valueTitle, x);
+  bool relayout = m_torque->setData(m_runs, drive.valueTitle, x);
 
   const std::vector<ForceJoint> joints = forceJoints(cycle->bodies);
   std::vector<ForceChartView::Curve> curves;
@@ -118,7 +118,7 @@ void ForcePlotPanel::refreshAll() {
   m_runs.resize(joints.size());
   for (std::size_t i = 0; i < joints.size(); ++i)
     buildJointForceRuns(*sweep, *cycle, joints[i], m_unit, m_runs[i], x.source);
-  m_joints->setData(m_runs, tr("|F| [N]"), x);
+  relayout |= m_joints->setData(m_runs, tr("|F| [N]"), x);
 
   if (joints != m_jointList) {
     const QString kept = m_selector->currentText();
@@ -131,7 +131,7 @@ void ForcePlotPanel::refreshAll() {
   }
   refreshPolar();
   refreshCursor();
-  alignCharts();  // tick labels and the legend may have changed width
+  if (relayout) alignCharts();  // tick labels and the legend may have changed width
 }
 
 void ForcePlotPanel::alignCharts() {

@@ -85,7 +85,7 @@ LimitMarkers::LimitMarkers(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis)
 
 LimitMarkers::~LimitMarkers() = default;
 
-void LimitMarkers::setPositions(const QList<QPointF>& points, bool showPoints) {
+bool LimitMarkers::setPositions(const QList<QPointF>& points, bool showPoints) {
   QPen dashed(kLimitLineColor, 1.0, Qt::DashLine);
   while (m_lines.size() < static_cast<std::size_t>(points.size())) {
     const QString name = QStringLiteral("limit_line_%1").arg(m_lines.size());
@@ -97,8 +97,10 @@ void LimitMarkers::setPositions(const QList<QPointF>& points, bool showPoints) {
                          ? std::optional<double>(points[static_cast<qsizetype>(i)].x())
                          : std::nullopt);
   const bool pointsShown = showPoints && !points.isEmpty();
+  const bool legendChanges = pointsShown != m_points->isVisible();
   m_points->replace(pointsShown ? points : QList<QPointF>{});
   setSeriesShown(m_chart, m_points, pointsShown, true);
+  return legendChanges;
 }
 
 void LimitMarkers::setYSpan(double lo, double hi) {

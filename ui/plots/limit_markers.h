@@ -56,8 +56,8 @@ public:
   LimitMarkers& operator=(const LimitMarkers&) = delete;
 
   /// A line at each point's x; the labelled points themselves only if `showPoints` (the
-  /// rocker curve is shown).
-  void setPositions(const QList<QPointF>& points, bool showPoints);
+  /// rocker curve is shown). Returns whether their legend entry appeared or went.
+  bool setPositions(const QList<QPointF>& points, bool showPoints);
   /// The y extent of the lines (the value axis range).
   void setYSpan(double lo, double hi);
   /// Puts the markers back on top of the chart's series and legend (after curves were added).

@@ -23,6 +23,9 @@ void alignPlotAreas(const QList<QChart*>& charts) {
   };
   QList<Insets> natural;
   for (QChart* chart : charts) {
+    // Afresh: Qt Charts does not invalidate its layout for every change that moves the plot
+    // area (a legend marker shown), and the callers align only when something changed.
+    chart->layout()->invalidate();
     chart->layout()->activate();
     const QRectF area = chart->plotArea();
     const QMargins extra = chart->margins() - kBaseChartMargins;

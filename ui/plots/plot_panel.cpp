@@ -173,9 +173,12 @@ void PlotPanel::refreshData() {
   const QuantitySelection shown = selection();
   m_x = plotXAxis(design, sweep, m_document->plotAxis(), m_unit);
   const PlotXAxis& x = m_x;
+  bool relayout = false;
   for (QuantityChartView* view : m_views) {
-    view->setVisible(shown.any(view->kind(), m_curves));
-    view->setData(sweep, shown, m_unit, x, lengthUnit);
+    const bool visible = shown.any(view->kind(), m_curves);
+    relayout |= visible == view->isHidden();
+    view->setVisible(visible);
+    relayout |= view->setData(sweep, shown, m_unit, x, lengthUnit);
   }
   QuantityChartView* angles = chartView(QuantityKind::Angle);
   m_limits->setYSpan(angles->valueRange().min, angles->valueRange().max);
@@ -192,11 +195,12 @@ void PlotPanel::refreshData() {
     note = tr("Rocker limit positions are not marked: the crank passes them more than %1 times in this time span.")
                .arg(kMostLimitMarkers);
   }
-  m_limits->setPositions(points, m_document->fourBar().has_value() && shown.contains(PlotQuantity::RockerAngle));
+  relayout |=
+      m_limits->setPositions(points, m_document->fourBar().has_value() && shown.contains(PlotQuantity::RockerAngle));
   m_limitNote->setText(note);
   m_limitNote->setVisible(!note.isEmpty() && !angles->isHidden());
   refreshCursor();
-  alignCharts();  // axis labels may have changed width
+  if (relayout) alignCharts();  // axis labels or legends may have changed width
 }
 
 QString PlotPanel::limitNote() const { return m_limitNote->isHidden() ? QString() : m_limitNote->text(); }

@@ -13,22 +13,6 @@
 #include <tuple>
 
 namespace linkwright::ui {
-namespace {
-
-QPointF nearestByX(const QList<QPointF>& points, qreal x) {
-  QPointF best = points.isEmpty() ? QPointF(x, 0.0) : points.front();
-  qreal bestDistance = std::numeric_limits<qreal>::infinity();
-  for (const QPointF& p : points) {
-    const qreal d = std::abs(p.x() - x);
-    if (d < bestDistance) {
-      bestDistance = d;
-      best = p;
-    }
-  }
-  return best;
-}
-
-}  // namespace
 
 QuantityChartView::QuantityChartView(QuantityKind kind, const QString& title, QWidget* parent)
     : QChartView(parent), m_kind(kind), m_xAxis(new QValueAxis), m_yAxis(new QValueAxis) {
@@ -40,8 +24,11 @@ QuantityChartView::QuantityChartView(QuantityKind kind, const QString& title, QW
   m_cursor = makeCrankCursor(chart, m_xAxis, m_yAxis);
   // A shorter plot labels fewer ticks; the data stay as they are. (A new range changes the
   // labels' width, not the plot's height, so this settles at once.)
+  // A new plot area also changes the curves' scale: they are drawn again if it matters.
   connect(chart, &QChart::plotAreaChanged, this, [this] {
     if (tickBudget() != m_tickBudget) applyValueRange();
+    else
+      for (Curve& curve : m_curves) curve.line.rescale();
   });
 }
 
@@ -69,26 +56,38 @@ void QuantityChartView::setCurves(const std::vector<PlotCurve>& curves) {
   m_cursor->raise();  // over the curves, as before they were replaced
 }
 
-void QuantityChartView::setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection,
+bool QuantityChartView::setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection,
                                 AngleUnit unit, const PlotXAxis& x, const QString& lengthUnit) {
+  // The axes first: the curves are simplified for the scale they set (segmented_line.h).
   m_values.clear();
-  for (Curve& curve : m_curves) {
-    const bool shown = selection.contains(curve.curve.quantity);
-    if (shown) buildSeriesRuns(sweep, curve.curve.quantity, unit, m_runs, x.source);
-    else m_runs.runs.clear();
-    for (const QList<QPointF>& run : m_runs.runs)
+  m_runs.resize(m_curves.size());
+  for (std::size_t i = 0; i < m_curves.size(); ++i) {
+    if (selection.contains(m_curves[i].curve.quantity))
+      buildSeriesRuns(sweep, m_curves[i].curve.quantity, unit, m_runs[i], x.source);
+    else m_runs[i].runs.clear();
+    for (const QList<QPointF>& run : m_runs[i].runs)
       for (const QPointF& p : run) m_values.push_back(p.y());
-    curve.line.setRuns(m_runs, shown);
   }
   // Spikes next to a toggle would squash every other value flat: they run off the chart
   // instead, and the hover read-out still gives their value.
   constexpr double kNone = std::numeric_limits<double>::infinity();
   std::tie(m_lo, m_hi) = m_values.empty() ? std::pair<double, double>{kNone, -kNone} : robustSpan(m_values);
-  applyValueRange();
-  m_yAxis->setTitleText(valueAxisTitle(m_kind, unit, lengthUnit));
+  m_tickBudget = tickBudget();
+  m_valueRange = niceValueRange(m_lo, m_hi, m_tickBudget);
+  applyAxisRange(m_yAxis, m_valueRange);
+  m_cursor->setYSpan(m_valueRange.min, m_valueRange.max);
+  if (const QString title = valueAxisTitle(m_kind, unit, lengthUnit); m_yAxis->titleText() != title)
+    m_yAxis->setTitleText(title);
   applyAxisRange(m_xAxis, x.range);
-  m_xAxis->setTickInterval(x.range.step);
-  m_xAxis->setTitleText(x.title);
+  if (m_xAxis->tickInterval() != x.range.step) m_xAxis->setTickInterval(x.range.step);
+  if (m_xAxis->titleText() != x.title) m_xAxis->setTitleText(x.title);
+  ChartLayoutInputs inputs{x.range, m_valueRange, x.title, m_yAxis->titleText(), {}};
+  for (std::size_t i = 0; i < m_curves.size(); ++i) {
+    const bool shown = selection.contains(m_curves[i].curve.quantity);
+    m_curves[i].line.setRuns(m_runs[i], shown);
+    inputs.legend.push_back(shown);
+  }
+  return inputs.replace(m_layoutInputs);
 }
 
 int QuantityChartView::tickBudget() const {
@@ -106,6 +105,7 @@ void QuantityChartView::applyValueRange() {
   m_valueRange = niceValueRange(m_lo, m_hi, m_tickBudget);
   applyAxisRange(m_yAxis, m_valueRange);
   m_cursor->setYSpan(m_valueRange.min, m_valueRange.max);
+  for (Curve& curve : m_curves) curve.line.rescale();
 }
 
 void QuantityChartView::resizeEvent(QResizeEvent* event) {
@@ -121,9 +121,18 @@ QList<QLineSeries*> QuantityChartView::segments(PlotQuantity quantity) const {
   return {};
 }
 
+QList<QPointF> QuantityChartView::samples(PlotQuantity quantity) const {
+  for (const Curve& curve : m_curves)
+    if (curve.curve.quantity == quantity) return curve.line.samples();
+  return {};
+}
+
 void QuantityChartView::onSegmentHovered(PlotQuantity quantity, const QLineSeries* segment, QPointF point,
                                          bool inside) {
-  emit curveHovered(quantity, nearestByX(segment->points(), point.x()), inside);
+  for (const Curve& curve : m_curves)
+    if (curve.curve.quantity == quantity)
+      if (const auto sample = curve.line.nearestSample(segment, point.x()))
+        emit curveHovered(quantity, *sample, inside);
 }
 
 }  // namespace linkwright::ui

@@ -5,6 +5,7 @@
 // and a cursor that moves without touching the data.
 
 #include "ui/plots/axis_range.h"
+#include "ui/plots/chart_layout_inputs.h"
 #include "ui/plots/plot_quantity.h"
 #include "ui/plots/plot_x_axis.h"
 #include "ui/plots/segmented_line.h"
@@ -42,7 +43,9 @@ public:
 
   /// Replaces the curves with the sweep's values of the selected quantities (the others are
   /// emptied and hidden), x on `x`'s axis, and resets both axes (x to `x`'s range and title).
-  void setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection, AngleUnit unit,
+  /// Returns whether what lays the chart out changed (an axis range or title, the legend):
+  /// then the plot areas need aligning again; on most frames of a drag they do not.
+  bool setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection, AngleUnit unit,
                const PlotXAxis& x, const QString& lengthUnit = QStringLiteral("mm"));
   /// Moves the cursor to `x` (plot units), or hides it. Touches no data series.
   void setCursorX(std::optional<double> x);
@@ -50,6 +53,9 @@ public:
   /// The line segments of `quantity` (empty for a quantity of another kind); the first one
   /// carries the legend entry.
   QList<QLineSeries*> segments(PlotQuantity quantity) const;
+  /// The samples `quantity`'s line stands for, in sweep order, gaps left out (the segments
+  /// draw only the vertices the screen needs of them); empty while it is not selected.
+  QList<QPointF> samples(PlotQuantity quantity) const;
 
 signals:
   /// The mouse entered (`inside`) or left `quantity`'s curve; `point` is the sample nearest
@@ -78,10 +84,11 @@ private:
   std::vector<Curve> m_curves;
   std::unique_ptr<VerticalMarker> m_cursor;
   AxisRange m_valueRange;
-  double m_lo = 0.0, m_hi = 0.0;  // the data's span that m_valueRange covers
-  int m_tickBudget = 0;           // the budget m_valueRange was made with
-  SeriesRuns m_runs;
-  std::vector<double> m_values;  // y values of one update, reused
+  double m_lo = 0.0, m_hi = 0.0;     // the data's span that m_valueRange covers
+  int m_tickBudget = 0;              // the budget m_valueRange was made with
+  ChartLayoutInputs m_layoutInputs;  // as of the last setData
+  std::vector<SeriesRuns> m_runs;    // each curve's points of one update, reused
+  std::vector<double> m_values;      // y values of one update, reused
 };
 
 }  // namespace linkwright::ui

@@ -3,10 +3,13 @@
 #include "ui/plots/series_visibility.h"
 
 #include <QChart>
+#include <QGraphicsLayout>
 #include <QLineSeries>
 #include <QPen>
 #include <QValueAxis>
 
+#include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace linkwright::ui {
@@ -36,13 +39,62 @@ QLineSeries* SegmentedLine::addSegment() {
 }
 
 void SegmentedLine::setRuns(const SeriesRuns& runs, bool shown) {
-  while (m_segments.size() < runs.runs.size()) addSegment();
+  // Qt Charts does not lay the chart out again when a legend marker is shown or hidden: the
+  // legend would keep its old size. (Any axis setter used to hide this by relaying out on
+  // every update, which a drag cannot afford.)
+  const bool legendChanges = shown != m_shown || m_runs.empty() != runs.empty();
+  m_runs = runs;
+  m_shown = shown;
+  draw();
+  if (legendChanges) m_chart->layout()->invalidate();
+}
+
+ScreenScale SegmentedLine::currentScale() const {
+  const QRectF area = m_chart->plotArea();
+  return {area.width() / (m_xAxis->max() - m_xAxis->min()), area.height() / (m_yAxis->max() - m_yAxis->min())};
+}
+
+void SegmentedLine::draw() {
+  const qsizetype runCount = m_runs.runs.size();
+  while (m_segments.size() < runCount) addSegment();
+  m_drawnScale = currentScale();
   for (qsizetype i = 0; i < m_segments.size(); ++i) {
     QLineSeries* segment = m_segments[i];
-    if (i < runs.runs.size()) segment->replace(runs.runs[i]);
-    else if (segment->count() > 0) segment->replace(QList<QPointF>{});
-    setSeriesShown(m_chart, segment, shown && (i == 0 || i < runs.runs.size()), i == 0);
+    if (i < runCount) {
+      simplifyForScreen(m_runs.runs[i], m_drawnScale, kCurveTolerancePx, m_vertices, m_scratch);
+      segment->replace(m_vertices);
+    } else if (segment->count() > 0) {
+      segment->replace(QList<QPointF>{});
+    }
+    setSeriesShown(m_chart, segment, m_shown && (i == 0 || i < runCount), i == 0);
   }
+}
+
+void SegmentedLine::rescale() {
+  // Within 5 % of the drawn scale the error stays within 1.05 × the tolerance: not worth a redraw.
+  constexpr double kRedrawRatio = 1.05;
+  const ScreenScale now = currentScale();
+  const auto differs = [](double a, double b) {
+    return !(a > 0.0 && b > 0.0) || std::max(a, b) > kRedrawRatio * std::min(a, b);
+  };
+  if (m_runs.empty() || !now.usable()) return;
+  if (differs(now.xPixelsPerUnit, m_drawnScale.xPixelsPerUnit) ||
+      differs(now.yPixelsPerUnit, m_drawnScale.yPixelsPerUnit))
+    draw();
+}
+
+QList<QPointF> SegmentedLine::samples() const {
+  QList<QPointF> all;
+  for (const QList<QPointF>& run : m_runs.runs) all += run;
+  return all;
+}
+
+std::optional<QPointF> SegmentedLine::nearestSample(const QLineSeries* segment, qreal x) const {
+  const qsizetype i = std::find(m_segments.begin(), m_segments.end(), segment) - m_segments.begin();
+  if (i >= m_runs.runs.size() || m_runs.runs[i].isEmpty()) return std::nullopt;
+  const QList<QPointF>& run = m_runs.runs[i];
+  return *std::min_element(run.begin(), run.end(),
+                           [x](QPointF a, QPointF b) { return std::abs(a.x() - x) < std::abs(b.x() - x); });
 }
 
 void SegmentedLine::removeFromChart() {

@@ -60,14 +60,14 @@ TEST_CASE("the force plots show the core's torque, joint magnitudes and polar lo
   const k::ForceSweep& f = *forces.cycleForces();
   const k::SweepResult& s = *forces.cycleSweep();
 
-  const QList<QPointF> torque = plotted(panel.torqueChart()->segments(0));
+  const QList<QPointF> torque = panel.torqueChart()->samples(0);
   REQUIRE(static_cast<std::size_t>(torque.size()) == okSamples(f));
   CHECK(torque.front().x() == k::radToDeg(s.inputAngle.front()));
   CHECK(torque.front().y() == f.driveTorque.front());
 
   REQUIRE(panel.joints().size() == f.bodies.revolutes.size());
   for (std::size_t i = 0; i < panel.joints().size(); ++i)
-    CHECK(static_cast<std::size_t>(plotted(panel.jointChart()->segments(i)).size()) == okSamples(f));
+    CHECK(static_cast<std::size_t>(panel.jointChart()->samples(i).size()) == okSamples(f));
 
   SECTION("the polar diagram has one point per Ok sample, on equal scales") {
     REQUIRE(panel.jointSelector()->count() == static_cast<int>(f.bodies.revolutes.size()));
@@ -111,7 +111,7 @@ TEST_CASE("on a time base the force plots run against time, or the input as the 
   ForcePlotPanel& panel = shown.panel;
   const k::SweepResult& s = *shown.forces.cycleSweep();
   REQUIRE(s.time.size() == s.size());
-  QList<QPointF> torque = plotted(panel.torqueChart()->segments(0));
+  QList<QPointF> torque = panel.torqueChart()->samples(0);
   REQUIRE_FALSE(torque.isEmpty());
   CHECK(torque.front().x() == s.time.front());
   CHECK(torque.back().x() == 0.5);  // the law's end time
@@ -119,7 +119,7 @@ TEST_CASE("on a time base the force plots run against time, or the input as the 
   doc.setTime(0.25);
   CHECK(panel.torqueChart()->cursorX() == 0.25);
   doc.setPlotAxis(PlotAxis::Input);
-  torque = plotted(panel.torqueChart()->segments(0));
+  torque = panel.torqueChart()->samples(0);
   CHECK(torque.back().x() == Approx(360.0).margin(1e-12));
   CHECK(panel.torqueChart()->xAxis()->titleText() == "crank angle [deg]");
 }
@@ -133,8 +133,8 @@ TEST_CASE("an arm's force chart shows its joint torques, an actuator's its force
   const k::ForceSweep& f = *shown.forces.cycleForces();
   REQUIRE(okSamples(f) > 0);
   CHECK(panel.torqueChart()->chart()->title() == "Joint torques");
-  const QList<QPointF> shoulder = plotted(panel.torqueChart()->segments(0));
-  const QList<QPointF> elbow = plotted(panel.torqueChart()->segments(1));
+  const QList<QPointF> shoulder = panel.torqueChart()->samples(0);
+  const QList<QPointF> elbow = panel.torqueChart()->samples(1);
   REQUIRE(static_cast<std::size_t>(shoulder.size()) == okSamples(f));
   CHECK(shoulder.front() == QPointF(0.0, f.jointTorque.front().x()));  // on the time axis
   CHECK(elbow.back().y() == f.jointTorque.back().y());
@@ -144,7 +144,7 @@ TEST_CASE("an arm's force chart shows its joint torques, an actuator's its force
   shown.doc.reset(boom);
   const k::ForceSweep& g = *shown.forces.cycleForces();
   CHECK(panel.torqueChart()->chart()->title() == "Drive force");
-  const QList<QPointF> axial = plotted(panel.torqueChart()->segments(0));
+  const QList<QPointF> axial = panel.torqueChart()->samples(0);
   REQUIRE(static_cast<std::size_t>(axial.size()) == okSamples(g));
   CHECK(axial.front().y() == g.driveAlong.front());
 }

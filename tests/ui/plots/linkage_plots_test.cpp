@@ -27,11 +27,7 @@ using k::io::ColumnQuantity;
 
 namespace {
 
-QList<QPointF> plotted(const PlotPanel& panel, PlotQuantity q) {
-  QList<QPointF> points;
-  for (const QLineSeries* segment : panel.chartView(quantityKind(q))->segments(q)) points += segment->points();
-  return points;
-}
+QList<QPointF> plotted(const PlotPanel& panel, PlotQuantity q) { return panel.chartView(quantityKind(q))->samples(q); }
 
 QStringList keys(const std::vector<PlotCurve>& curves) {
   QStringList out;

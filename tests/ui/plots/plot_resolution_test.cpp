@@ -22,9 +22,7 @@ using namespace linkwright::ui;
 namespace {
 
 qsizetype plottedCount(const PlotPanel& panel, PlotQuantity q) {
-  qsizetype n = 0;
-  for (const QLineSeries* segment : panel.chartView(quantityKind(q))->segments(q)) n += segment->count();
-  return n;
+  return panel.chartView(quantityKind(q))->samples(q).size();
 }
 
 int requestChanges(const QSignalSpy& spy) {
