@@ -2,6 +2,8 @@
 
 #include "kinematics/solve/pose_solver.h"
 
+#include <string>
+
 namespace linkwright::kinematics {
 namespace {
 
@@ -61,7 +63,8 @@ PoseForces ForceSweep::at(std::size_t j) const {
   return f;
 }
 
-Result<ForceSweep> sweepForces(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepResult& sweep) {
+Result<ForceSweep> sweepForces(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepResult& sweep,
+                               const std::atomic<bool>* cancel) {
   if (!sweep.request.accelerations)
     return Error{ErrorCode::InvalidValue, "request.accelerations",
                  "forces need a sweep with accelerations (request.accelerations was off): inertia forces are m·a"};
@@ -80,6 +83,8 @@ Result<ForceSweep> sweepForces(const Mechanism& mechanism, const LinkageDynamics
   PoseForces forces;
   solve.prepare(forces);
   for (std::size_t j = 0; j < sweep.size(); ++j) {
+    if (cancel != nullptr && cancel->load(std::memory_order_relaxed))
+      return Error{ErrorCode::Cancelled, "forces", "the force solve was cancelled at sample " + std::to_string(j)};
     if (!sweep.ok(j)) {
       out.status[j] = sweep.report[j].status;
       continue;

@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include <atomic>
 #include <vector>
 
 namespace linkwright::kinematics {
@@ -44,7 +45,9 @@ struct ForceSweep {
 /// Solves the forces at every sample of `sweep`, which must come from sweep(mechanism, …)
 /// with accelerations requested (an error otherwise, as for an invalid mechanism, dynamics
 /// or length unit: see InverseDynamics::create). Each sample's input (inputAngle) is the
-/// driver's coordinate a path drive's tangent is taken at.
-Result<ForceSweep> sweepForces(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepResult& sweep);
+/// driver's coordinate a path drive's tangent is taken at. If `cancel` is given and becomes
+/// true (another thread sets it), the solve stops at the next sample with ErrorCode::Cancelled.
+Result<ForceSweep> sweepForces(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepResult& sweep,
+                               const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace linkwright::kinematics

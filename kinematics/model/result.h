@@ -13,6 +13,7 @@ enum class ErrorCode {
   InvalidStructure,  ///< the mechanism's topology is malformed (bad id, wrong order)
   NotAssemblable,    ///< the linkage cannot be assembled at the requested input
   Singular,          ///< the position exists but velocities/accelerations are undefined
+  Cancelled,         ///< a long computation was stopped by its caller (a newer one replaced it)
 };
 
 /// A user-facing problem: which field is wrong and why, with the offending value.

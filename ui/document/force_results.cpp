@@ -2,6 +2,9 @@
 
 #include "ui/number_text.h"
 
+#include <QCoreApplication>
+#include <QtConcurrent>
+
 #include <algorithm>
 #include <cmath>
 
@@ -18,23 +21,19 @@ bool full(const Columns& columns, std::size_t count, std::size_t samples) {
   return std::all_of(columns.begin(), columns.end(), [&](const auto& c) { return c.size() == samples; });
 }
 
-double peakOf(const k::ForceSweep& f) {
-  double peak = 0.0;
-  for (std::size_t j = 0; j < f.size(); ++j) {
-    if (!f.ok(j)) continue;
-    for (const auto& column : f.revolute) peak = std::max(peak, column[j].norm());
-    for (const auto& column : f.normal) peak = std::max(peak, std::abs(column[j]));
-  }
-  return peak;
-}
-
 }  // namespace
 
 ForceResults::ForceResults(MechanismDocument* document, QObject* parent) : QObject(parent), m_document(document) {
   connect(document, &MechanismDocument::changed, this, &ForceResults::onDocumentChanged);
 }
 
-ForceResults::~ForceResults() = default;
+// A job still running holds only its own copies; it is told to stop and waited for, so no
+// thread outlives the object that started it.
+ForceResults::~ForceResults() {
+  if (!m_pending) return;
+  m_pending->cancel->store(true);
+  m_pending->job.waitForFinished();
+}
 
 void ForceResults::setEnabled(bool enabled) {
   if (enabled == m_enabled) return;
@@ -58,16 +57,12 @@ bool ForceResults::sweepSuffices(const k::Mechanism& m, const k::SweepResult& s)
          full(s.linkOmega, m.links.size(), n) && full(s.linkAlpha, m.links.size(), n);
 }
 
-const k::SweepResult* ForceResults::cycleSweep() const {
-  if (!m_cycle) return nullptr;
-  return m_ownSweep ? &*m_ownSweep : &m_document->sweep();
-}
-
 void ForceResults::onDocumentChanged(Changes what) {
   if (!m_enabled) return;
   if (what & (Changes(Change::Design) | Change::Request)) {
     solveCycle();
-    emit changed(true);
+    // While a worker solves the cycle, only the pose forces are new.
+    emit changed(!cyclePending());
   } else if (what & Change::Motion) {
     solvePose();
     emit changed(false);
@@ -75,17 +70,36 @@ void ForceResults::onDocumentChanged(Changes what) {
 }
 
 void ForceResults::clear(State state, const QString& message) {
+  cancelPending();
   m_state = state;
   m_message = message;
   m_solver.reset();
-  m_ownSweep.reset();
   m_cycle.reset();
-  m_singularSamples = 0;
-  m_peakJoint = 0.0;
   m_poseOk = false;
 }
 
+void ForceResults::cancelPending() {
+  if (!m_pending) return;
+  m_pending->cancel->store(true);  // its continuation sees this and drops the result
+  m_pending.reset();
+}
+
+void ForceResults::waitForCycle() {
+  if (!m_pending) return;
+  m_pending->job.waitForFinished();
+  finishPending();
+}
+
+void ForceResults::finishPending() {
+  if (!m_pending || !m_pending->job.isFinished()) return;
+  const Outcome outcome = m_pending->job.result();
+  m_pending.reset();
+  adopt(std::move(*outcome));
+  emit changed(true);
+}
+
 void ForceResults::solveCycle() {
+  cancelPending();
   const k::LinkageDynamics& dynamics = m_document->design().dynamics;
   if (dynamics.empty()) {
     clear(State::NoDynamics, tr("This design has no masses or loads: set them in Properties."));
@@ -97,27 +111,44 @@ void ForceResults::solveCycle() {
     clear(State::Failed, tr("No forces: %1").arg(QString::fromStdString(solver.error().message)));
     return;
   }
-  clear(State::Ok, {});
+  // The pose forces follow the document at once; the cycle may come later.
   m_solver.emplace(std::move(solver).value());
   m_solver->prepare(m_pose);
-  if (!sweepSuffices(mechanism, m_document->sweep()))
-    m_ownSweep = k::sweep(mechanism, m_document->displaySpec(), forcesRequest(m_document->request())).value();
-  const k::SweepResult& kinematic = m_ownSweep ? *m_ownSweep : m_document->sweep();
-  auto cycle = k::sweepForces(mechanism, dynamics, kinematic);
-  if (!cycle) {
-    clear(State::Failed, tr("No forces: %1").arg(QString::fromStdString(cycle.error().message)));
+  solvePose();
+  ForceCycleInput input{mechanism, dynamics, std::nullopt, m_document->displaySpec(),
+                        forcesRequest(m_document->request())};
+  if (sweepSuffices(mechanism, m_document->sweep())) input.sweep = m_document->sweep();
+  const bool inWorker =
+      m_threading == Threading::Worker || (m_threading == Threading::Adaptive && m_lastCycleMs > kWorkerAfterMs);
+  if (!inWorker) {
+    adopt(solveForceCycle(std::move(input)));
     return;
   }
-  m_cycle.emplace(std::move(cycle).value());
-  for (std::size_t j = 0; j < m_cycle->size(); ++j)
-    if (kinematic.ok(j) && !m_cycle->ok(j)) ++m_singularSamples;
-  m_peakJoint = peakOf(*m_cycle);
-  if (m_singularSamples > 0)
+  auto cancel = std::make_shared<std::atomic<bool>>(false);
+  auto job = QtConcurrent::run([input = std::move(input), cancel]() mutable {
+    return std::make_shared<k::Result<ForceCycle>>(solveForceCycle(std::move(input), cancel.get()));
+  });
+  // The watcher goes with its job: a cancelled one is deleted, and its signal with it.
+  auto watcher = std::make_unique<QFutureWatcher<Outcome>>();
+  connect(watcher.get(), &QFutureWatcherBase::finished, this, &ForceResults::finishPending);
+  watcher->setFuture(job);
+  m_pending = std::make_unique<PendingCycle>(PendingCycle{std::move(cancel), std::move(job), std::move(watcher)});
+}
+
+void ForceResults::adopt(k::Result<ForceCycle> outcome) {
+  if (!outcome) {
+    clear(State::Failed, tr("No forces: %1").arg(QString::fromStdString(outcome.error().message)));
+    return;
+  }
+  m_state = State::Ok;
+  m_cycle.emplace(std::move(outcome).value());
+  m_lastCycleMs = m_cycle->milliseconds;
+  m_message.clear();
+  if (m_cycle->singularSamples > 0)
     m_message =
         tr("Forces are not determined at %n sample(s) of the cycle (a toggle position or a redundant "
            "structure); the curves break there.",
-           nullptr, static_cast<int>(m_singularSamples));
-  solvePose();
+           nullptr, static_cast<int>(m_cycle->singularSamples));
 }
 
 void ForceResults::solvePose() {

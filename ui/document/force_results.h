@@ -9,16 +9,29 @@
 // request is forcesRequest(…); until it is, the forces are solved on a sweep of our own over
 // the same grid (displaySpec()), so they are right either way, at the cost of a second sweep.
 // A crank move (Change::Motion) re-solves the pose forces only.
+//
+// Threads: a cycle solve that took longer than kWorkerAfterMs the last time runs in a worker
+// thread (QtConcurrent), so a drag at Precise with forces never waits for it: the views keep
+// the last cycle (cyclePending() says a newer one is coming) and get changed(true) when it
+// lands. A newer document change cancels the older solve (sweepForces stops at its next
+// sample) and its result is dropped. Both paths run solveForceCycle (force_cycle.h) on a copy
+// of the document's data, so they give the same numbers. The pose forces stay synchronous:
+// one sample costs microseconds.
 
+#include "ui/document/force_cycle.h"
 #include "ui/document/mechanism_document.h"
 
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/dynamics/inverse_dynamics.h"
 #include "kinematics/solve/sweep.h"
 
+#include <QFuture>
+#include <QFutureWatcher>
 #include <QObject>
 #include <QString>
 
+#include <atomic>
+#include <memory>
 #include <optional>
 
 namespace linkwright::ui {
@@ -41,6 +54,16 @@ public:
   void setEnabled(bool enabled);
   bool isEnabled() const { return m_enabled; }
 
+  /// Where cycle solves run: in the GUI thread unless the last one took longer than
+  /// kWorkerAfterMs (Adaptive, the default), always in the GUI thread, or always in a worker.
+  enum class Threading { Adaptive, GuiThread, Worker };
+  void setThreading(Threading threading) { m_threading = threading; }
+  static constexpr double kWorkerAfterMs = 4.0;
+  /// A worker is solving a newer cycle; cycleForces() and cycleSweep() are the last result.
+  bool cyclePending() const { return m_pending != nullptr; }
+  /// Blocks until a pending cycle has landed (tests, export); no-op if none is pending.
+  void waitForCycle();
+
   /// `base` with what forces need added: velocities and accelerations of every point and link
   /// (Selection cleared). The document's request should be this while forces are enabled.
   static kinematics::SolveRequest forcesRequest(kinematics::SolveRequest base);
@@ -53,15 +76,16 @@ public:
   const QString& message() const { return m_message; }
 
   /// The forces over the cycle (null unless state() is Ok); sample j is cycleSweep()'s j.
-  const kinematics::ForceSweep* cycleForces() const { return m_cycle ? &*m_cycle : nullptr; }
-  /// The kinematic sweep cycleForces() was solved on: the document's, or our own over its grid.
-  const kinematics::SweepResult* cycleSweep() const;
+  const kinematics::ForceSweep* cycleForces() const { return m_cycle ? &m_cycle->forces : nullptr; }
+  /// The kinematic sweep cycleForces() was solved on: a copy of the document's, or our own
+  /// over its grid (null unless state() is Ok).
+  const kinematics::SweepResult* cycleSweep() const { return m_cycle ? &m_cycle->sweep : nullptr; }
   /// True when cycleSweep() is a sweep of our own (the document's request lacks accelerations).
-  bool usesOwnSweep() const { return m_ownSweep.has_value(); }
+  bool usesOwnSweep() const { return m_cycle && m_cycle->ownSweep; }
   /// Samples of the cycle whose forces are Singular (not determined) though the kinematics are Ok.
-  std::size_t singularSamples() const { return m_singularSamples; }
+  std::size_t singularSamples() const { return m_cycle ? m_cycle->singularSamples : 0; }
   /// Largest joint reaction over the cycle, N: |F| of revolute joints, |N| of prismatic ones.
-  double peakJointForce() const { return m_peakJoint; }
+  double peakJointForce() const { return m_cycle ? m_cycle->peakJointForce : 0.0; }
 
   /// The forces at the document's crank angle; null when not Ok or the pose is singular.
   const kinematics::PoseForces* poseForces() const { return m_poseOk ? &m_pose : nullptr; }
@@ -74,20 +98,33 @@ signals:
   void changed(bool cycle);
 
 private:
+  // A cycle solve in a worker: the flag that cancels it, and its result to come.
+  using Outcome = std::shared_ptr<kinematics::Result<ForceCycle>>;  // shared: no copy between threads
+  struct PendingCycle {
+    std::shared_ptr<std::atomic<bool>> cancel;
+    QFuture<Outcome> job;                              // runs in the pool
+    std::unique_ptr<QFutureWatcher<Outcome>> watcher;  // tells this thread it is done
+  };
+
   void onDocumentChanged(Changes what);
   void solveCycle();
   void solvePose();
   void clear(State state, const QString& message);
+  void cancelPending();
+  // Adopts the pending cycle once its job has finished.
+  void finishPending();
+  // Takes a cycle solve's outcome as the current result (sets state and message).
+  void adopt(kinematics::Result<ForceCycle> outcome);
 
   MechanismDocument* m_document;
   bool m_enabled = false;
   State m_state = State::Disabled;
   QString m_message;
   std::optional<kinematics::InverseDynamics> m_solver;
-  std::optional<kinematics::SweepResult> m_ownSweep;
-  std::optional<kinematics::ForceSweep> m_cycle;
-  std::size_t m_singularSamples = 0;
-  double m_peakJoint = 0.0;
+  std::optional<ForceCycle> m_cycle;
+  Threading m_threading = Threading::Adaptive;
+  double m_lastCycleMs = 0.0;  // wall time of the last cycle solve
+  std::unique_ptr<PendingCycle> m_pending;
   kinematics::PoseForces m_pose;
   bool m_poseOk = false;
 };

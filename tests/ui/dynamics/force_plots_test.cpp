@@ -43,6 +43,7 @@ struct ShownForces {
   ForcePlotPanel panel{&doc, &forces};
 
   explicit ShownForces(const k::Design& design) {
+    forces.setThreading(ForceResults::Threading::GuiThread);  // each change's cycle at once
     doc.reset(design);
     forces.setEnabled(true);
     panel.resize(900, 600);
