@@ -55,6 +55,13 @@ AxisRange niceValueRange(double lo, double hi, int maxTicks) {
   return r;
 }
 
+bool keepsRange(const AxisRange& shown, double lo, double hi) {
+  constexpr double kLeastFill = 0.5;
+  const double span = shown.max - shown.min;
+  return std::isfinite(lo) && std::isfinite(hi) && lo <= hi && span > 0.0 && lo >= shown.min && hi <= shown.max &&
+         hi - lo >= kLeastFill * span;
+}
+
 AxisRange crankAxisRange(double fromDeg, double toDeg, AngleUnit unit) {
   const double spanDeg = std::max(std::abs(toDeg - fromDeg), 1e-9);
   double stepDeg = 0.0;

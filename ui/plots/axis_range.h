@@ -32,6 +32,12 @@ int decimalsFor(double step);
 /// by 10 % of its value (±1 at zero); no data (non-finite or lo > hi) gives [0, 1].
 AxisRange niceValueRange(double lo, double hi, int maxTicks = 6);
 
+/// Whether a value axis showing `shown` may stay as it is for data spanning [lo, hi] while
+/// they keep changing (a drag): it still holds them and they fill at least half of it.
+/// Labels that stay put are easier to follow, and a chart whose axes stay put is not laid out
+/// again; the plots return to niceValueRange once the data settle.
+bool keepsRange(const AxisRange& shown, double lo, double hi);
+
 /// The span of `values` worth showing: their full range, unless a few samples spike far out
 /// (rates next to a toggle position grow without bound), in which case the span of the bulk
 /// (5th to 95th percentile) widened by half its width on each side. Reorders `values`.

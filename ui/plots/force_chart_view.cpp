@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 namespace linkwright::ui {
 
@@ -50,14 +51,11 @@ bool ForceChartView::setData(const std::vector<SeriesRuns>& runs, const QString&
   // Forces grow without bound next to a toggle: such spikes run off the chart rather than
   // squash every other value flat.
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  auto [lo, hi] = m_values.empty() ? std::pair<double, double>{kInf, -kInf} : robustSpan(m_values);
-  if (m_fromZero && !m_values.empty()) lo = std::min(lo, 0.0);
-  AxisRange y = niceValueRange(lo, hi);
-  if (m_fromZero && lo >= 0.0 && y.min < 0.0) {
-    // Magnitudes: the axis starts at 0, not at the margin below it.
-    y.min = 0.0;
-    y.tickCount = static_cast<int>(std::lround(y.max / y.step)) + 1;
-  }
+  std::tie(m_lo, m_hi) = m_values.empty() ? std::pair<double, double>{kInf, -kInf} : robustSpan(m_values);
+  if (m_fromZero && !m_values.empty()) m_lo = std::min(m_lo, 0.0);
+  // While the data change, the axis stays where it still serves (keepsRange).
+  if (!m_yShown || !keepsRange(*m_yShown, m_lo, m_hi)) m_yShown = fittedRange();
+  const AxisRange y = *m_yShown;
   applyAxisRange(m_yAxis, y);
   if (m_yAxis->titleText() != valueTitle) m_yAxis->setTitleText(valueTitle);
   applyAxisRange(m_xAxis, x.range);
@@ -71,6 +69,27 @@ bool ForceChartView::setData(const std::vector<SeriesRuns>& runs, const QString&
     inputs.legend.push_back(true);
   }
   return inputs.replace(m_layoutInputs);
+}
+
+AxisRange ForceChartView::fittedRange() const {
+  AxisRange y = niceValueRange(m_lo, m_hi);
+  if (m_fromZero && m_lo >= 0.0 && y.min < 0.0) {
+    // Magnitudes: the axis starts at 0, not at the margin below it.
+    y.min = 0.0;
+    y.tickCount = static_cast<int>(std::lround(y.max / y.step)) + 1;
+  }
+  return y;
+}
+
+bool ForceChartView::settleValueRange() {
+  const AxisRange fitted = fittedRange();
+  if (m_yShown == fitted) return false;
+  m_yShown = fitted;
+  applyAxisRange(m_yAxis, fitted);
+  m_cursor->setYSpan(fitted.min, fitted.max);
+  m_layoutInputs.y = fitted;
+  for (SegmentedLine& line : m_lines) line.rescale();
+  return true;
 }
 
 void ForceChartView::resizeEvent(QResizeEvent* event) {

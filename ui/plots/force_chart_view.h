@@ -42,6 +42,9 @@ public:
   /// unit) and resets the axes: x to `x`'s range and title, y around the values. Returns
   /// whether what lays the chart out changed (quantity_chart_view.h).
   bool setData(const std::vector<SeriesRuns>& runs, const QString& valueTitle, const PlotXAxis& x);
+  /// Fits the value axis to the data once they have settled (setData keeps it while it still
+  /// serves); returns whether it changed.
+  bool settleValueRange();
   /// Moves the cursor to `x` (plot units), or hides it. Touches no data series.
   void setCursorX(std::optional<double> x);
   std::optional<double> cursorX() const { return m_cursor->x(); }
@@ -66,8 +69,12 @@ private:
   QValueAxis* m_yAxis;
   std::vector<SegmentedLine> m_lines;
   std::unique_ptr<VerticalMarker> m_cursor;
-  std::vector<double> m_values;      // y values of one update, reused
-  ChartLayoutInputs m_layoutInputs;  // as of the last setData
+  std::vector<double> m_values;       // y values of one update, reused
+  ChartLayoutInputs m_layoutInputs;   // as of the last setData
+  double m_lo = 0.0, m_hi = 0.0;      // the data's span of the last setData
+  std::optional<AxisRange> m_yShown;  // the value axis shown
+
+  AxisRange fittedRange() const;  // the value axis fitted to [m_lo, m_hi]
 };
 
 }  // namespace linkwright::ui

@@ -6,6 +6,7 @@
 #include "ui/plots/axis_range.h"
 #include "ui/plots/force_chart_view.h"
 #include "ui/plots/plot_area_alignment.h"
+#include "ui/plots/plot_panel.h"
 #include "ui/plots/plot_x_axis.h"
 #include "ui/plots/polar_load_view.h"
 
@@ -32,6 +33,9 @@ ForcePlotPanel::ForcePlotPanel(MechanismDocument* document, ForceResults* forces
       m_selector(new QComboBox), m_polar(new PolarLoadView), m_charts(new QWidget(this)) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
+  m_settleTimer.setSingleShot(true);
+  m_settleTimer.setInterval(PlotPanel::kDataSettleMs);
+  connect(&m_settleTimer, &QTimer::timeout, this, &ForcePlotPanel::settleValueRanges);
   m_status->setWordWrap(true);
   m_status->setAlignment(Qt::AlignCenter);
   m_status->setObjectName(QStringLiteral("forceStatus"));
@@ -132,6 +136,12 @@ void ForcePlotPanel::refreshAll() {
   refreshPolar();
   refreshCursor();
   if (relayout) alignCharts();  // tick labels and the legend may have changed width
+  m_settleTimer.start();
+}
+
+void ForcePlotPanel::settleValueRanges() {
+  const bool torque = m_torque->settleValueRange();
+  if (m_joints->settleValueRange() || torque) alignCharts();
 }
 
 void ForcePlotPanel::alignCharts() {

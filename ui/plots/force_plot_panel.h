@@ -9,6 +9,7 @@
 #include "ui/plots/force_series.h"
 #include "ui/plots/plot_x_axis.h"
 
+#include <QTimer>
 #include <QWidget>
 
 #include <vector>
@@ -47,6 +48,7 @@ private:
   void refreshCursor();
   void refreshPolar();
   void alignCharts();
+  void settleValueRanges();
   std::optional<double> cursorX() const;
 
   MechanismDocument* m_document;
@@ -58,6 +60,7 @@ private:
   QComboBox* m_selector;
   PolarLoadView* m_polar;
   QWidget* m_charts;
+  QTimer m_settleTimer;  // the value axes fit the data once they stay put (PlotPanel's too)
   std::vector<ForceJoint> m_jointList;
   std::vector<SeriesRuns> m_runs;  // reused between updates
   PlotXAxis m_x;                   // of the last refreshAll

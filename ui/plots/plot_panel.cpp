@@ -50,6 +50,9 @@ PlotPanel::PlotPanel(MechanismDocument* document, QWidget* parent)
   m_widthTimer.setSingleShot(true);
   m_widthTimer.setInterval(kResizeSettleMs);
   connect(&m_widthTimer, &QTimer::timeout, this, &PlotPanel::reportPlotWidth);
+  m_settleTimer.setSingleShot(true);
+  m_settleTimer.setInterval(kDataSettleMs);
+  connect(&m_settleTimer, &QTimer::timeout, this, &PlotPanel::settleValueRanges);
   for (const QuantityKind kind : kKinds) {
     auto* view = new QuantityChartView(kind, titleOf(kind), this);
     // Small enough that six charts (a slider-crank) fit the window's height.
@@ -201,6 +204,17 @@ void PlotPanel::refreshData() {
   m_limitNote->setVisible(!note.isEmpty() && !angles->isHidden());
   refreshCursor();
   if (relayout) alignCharts();  // axis labels or legends may have changed width
+  m_settleTimer.start();
+}
+
+void PlotPanel::settleValueRanges() {
+  m_settleTimer.stop();
+  bool relayout = false;
+  for (QuantityChartView* view : m_views) relayout |= view->settleValueRange();
+  if (!relayout) return;
+  const AxisRange& angles = chartView(QuantityKind::Angle)->valueRange();
+  m_limits->setYSpan(angles.min, angles.max);
+  alignCharts();
 }
 
 QString PlotPanel::limitNote() const { return m_limitNote->isHidden() ? QString() : m_limitNote->text(); }

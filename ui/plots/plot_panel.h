@@ -80,6 +80,11 @@ public:
   /// for the canvas, at the last width.
   void reportPlotWidth();
   static constexpr int kResizeSettleMs = 150;
+  /// How long the data must stay put before the value axes fit them again (they stay where
+  /// they still serve while the data change: keepsRange in axis_range.h).
+  static constexpr int kDataSettleMs = 300;
+  /// Fits the value axes to the data now, instead of kDataSettleMs after the last change.
+  void settleValueRanges();
 
 signals:
   /// The user (or setSelection) changed which quantities are shown.
@@ -99,6 +104,7 @@ private:
   QualityBar* m_quality;
   QuantitySelector* m_selector;
   QTimer m_widthTimer;
+  QTimer m_settleTimer;
   std::vector<PlotCurve> m_curves;
   std::array<QuantityChartView*, kQuantityKindCount> m_views{};
   std::unique_ptr<LimitMarkers> m_limits;

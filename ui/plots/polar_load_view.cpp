@@ -2,6 +2,7 @@
 
 #include "ui/plots/force_chart_view.h"
 #include "ui/plots/plot_area_alignment.h"
+#include "ui/plots/segmented_line.h"
 #include "ui/plots/series_visibility.h"
 
 #include <QChart>
@@ -77,27 +78,39 @@ QLineSeries* PolarLoadView::addSegment() {
 void PolarLoadView::setLocus(const SeriesRuns& locus, const QString& title, const QColor& color) {
   chart()->setTitle(title);
   m_color = color;
+  m_locus = locus;
   while (m_segments.size() < locus.runs.size()) addSegment();
   m_xLo = m_xHi = m_yLo = m_yHi = 0.0;
-  for (qsizetype i = 0; i < m_segments.size(); ++i) {
-    QLineSeries* segment = m_segments[i];
-    segment->setPen(QPen(color, kCurveWidth));
-    if (i < locus.runs.size()) {
-      segment->replace(locus.runs[i]);
-      for (const QPointF& p : locus.runs[i]) {
-        m_xLo = std::min(m_xLo, p.x());
-        m_xHi = std::max(m_xHi, p.x());
-      }
-    } else if (segment->count() > 0) {
-      segment->replace(QList<QPointF>{});
+  for (const QList<QPointF>& run : locus.runs)
+    for (const QPointF& p : run) {
+      m_xLo = std::min(m_xLo, p.x());
+      m_xHi = std::max(m_xHi, p.x());
     }
-    setSeriesShown(chart(), segment, i < locus.runs.size(), false);
-  }
   if (!locus.empty()) {
     m_yLo = std::min(0.0, locus.minY);
     m_yHi = std::max(0.0, locus.maxY);
   }
-  equalizeScales();
+  for (qsizetype i = 0; i < m_segments.size(); ++i) {
+    m_segments[i]->setPen(QPen(color, kCurveWidth));
+    setSeriesShown(chart(), m_segments[i], i < locus.runs.size(), false);
+  }
+  equalizeScales();  // the axes first: the locus is simplified for their scale
+  drawLocus();
+}
+
+void PolarLoadView::drawLocus() {
+  const double area = chart()->plotArea().width();
+  const double span = m_xAxis->max() - m_xAxis->min();
+  m_drawnPixelsPerN = span > 0.0 ? area / span : 0.0;  // equal on both axes
+  const ScreenScale scale{m_drawnPixelsPerN, m_drawnPixelsPerN};
+  for (qsizetype i = 0; i < m_segments.size(); ++i) {
+    if (i < m_locus.runs.size()) {
+      simplifyForScreen(m_locus.runs[i], scale, SegmentedLine::kCurveTolerancePx, m_vertices, m_scratch);
+      m_segments[i]->replace(m_vertices);
+    } else if (m_segments[i]->count() > 0) {
+      m_segments[i]->replace(QList<QPointF>{});
+    }
+  }
 }
 
 void PolarLoadView::setCurrent(std::optional<QPointF> force) {
@@ -112,13 +125,6 @@ void PolarLoadView::setCurrent(std::optional<QPointF> force) {
   m_yLo = std::min(m_yLo, force->y());
   m_yHi = std::max(m_yHi, force->y());
   equalizeScales();
-}
-
-qsizetype PolarLoadView::pointCount() const {
-  qsizetype n = 0;
-  for (const QLineSeries* s : m_segments)
-    if (s->isVisible()) n += s->count();
-  return n;
 }
 
 void PolarLoadView::equalizeScales() {
@@ -139,15 +145,24 @@ void PolarLoadView::equalizeScales() {
   const double yHalf = 0.5 * perPixel * area.height();
   // One tick step on both axes, so the grid is square; at least a few ticks on the shorter.
   const double step = niceStep(2.0 * std::min(xHalf, yHalf) / 4.0);
+  // Only what changed: every axis setter lays the chart out again (crank_angle_chart.h).
+  const QString format = QStringLiteral("%.%1f").arg(decimalsFor(step));
   for (QValueAxis* axis : {m_xAxis, m_yAxis}) {
-    axis->setTickInterval(step);
-    axis->setLabelFormat(QStringLiteral("%.%1f").arg(decimalsFor(step)));
+    if (axis->tickInterval() != step) axis->setTickInterval(step);
+    if (axis->labelFormat() != format) axis->setLabelFormat(format);
   }
-  m_xAxis->setRange(xMid - xHalf, xMid + xHalf);
-  m_yAxis->setRange(yMid - yHalf, yMid + yHalf);
-  m_originX->replace(QList<QPointF>{{xMid - xHalf, 0.0}, {xMid + xHalf, 0.0}});
-  m_originY->replace(QList<QPointF>{{0.0, yMid - yHalf}, {0.0, yMid + yHalf}});
+  if (m_xAxis->min() != xMid - xHalf || m_xAxis->max() != xMid + xHalf) {
+    m_xAxis->setRange(xMid - xHalf, xMid + xHalf);
+    m_originX->replace(QList<QPointF>{{xMid - xHalf, 0.0}, {xMid + xHalf, 0.0}});
+  }
+  if (m_yAxis->min() != yMid - yHalf || m_yAxis->max() != yMid + yHalf) {
+    m_yAxis->setRange(yMid - yHalf, yMid + yHalf);
+    m_originY->replace(QList<QPointF>{{0.0, yMid - yHalf}, {0.0, yMid + yHalf}});
+  }
   m_equalizing = false;
+  // A new scale (a resize, a dot outside the locus) by more than 5 %: the locus is drawn again.
+  const double now = area.width() / (m_xAxis->max() - m_xAxis->min());
+  if (!m_locus.empty() && !(now <= 1.05 * m_drawnPixelsPerN && m_drawnPixelsPerN <= 1.05 * now)) drawLocus();
 }
 
 double PolarLoadView::xScale() const { return (m_xAxis->max() - m_xAxis->min()) / chart()->plotArea().width(); }

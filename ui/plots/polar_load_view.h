@@ -6,6 +6,7 @@
 
 #include "ui/plots/axis_range.h"
 #include "ui/plots/series_data.h"
+#include "ui/screen_simplify.h"
 
 #include <QChartView>
 #include <QColor>
@@ -34,8 +35,9 @@ public:
 
   /// The locus' segments (one per run of solved samples).
   QList<QLineSeries*> segments() const { return m_segments; }
-  /// Number of locus points over all segments.
-  qsizetype pointCount() const;
+  /// Number of locus points (solved samples) over all segments; the segments draw only the
+  /// vertices the screen needs of them (ui/screen_simplify.h).
+  qsizetype pointCount() const { return m_locus.pointCount(); }
   QScatterSeries* currentDot() const { return m_dot; }
   QValueAxis* xAxis() const { return m_xAxis; }
   QValueAxis* yAxis() const { return m_yAxis; }
@@ -46,6 +48,8 @@ public:
 private:
   QLineSeries* addSegment();
   void equalizeScales();
+  // The locus' segments, simplified for the axes' current scale.
+  void drawLocus();
 
   QValueAxis* m_xAxis;
   QValueAxis* m_yAxis;
@@ -57,6 +61,10 @@ private:
   // Data extent (N), origin included; the axes show it on equal scales.
   double m_xLo = -1.0, m_xHi = 1.0, m_yLo = -1.0, m_yHi = 1.0;
   bool m_equalizing = false;
+  SeriesRuns m_locus;              // every solved sample
+  double m_drawnPixelsPerN = 0.0;  // the scale m_locus was drawn for
+  SimplifyScratch m_scratch;
+  QList<QPointF> m_vertices;  // one run's simplified points, reused
 };
 
 }  // namespace linkwright::ui

@@ -72,8 +72,10 @@ bool QuantityChartView::setData(const kinematics::SweepResult& sweep, const Quan
   // instead, and the hover read-out still gives their value.
   constexpr double kNone = std::numeric_limits<double>::infinity();
   std::tie(m_lo, m_hi) = m_values.empty() ? std::pair<double, double>{kNone, -kNone} : robustSpan(m_values);
-  m_tickBudget = tickBudget();
-  m_valueRange = niceValueRange(m_lo, m_hi, m_tickBudget);
+  const int budget = tickBudget();
+  if (budget != m_tickBudget || !keepsRange(m_valueRange, m_lo, m_hi))
+    m_valueRange = niceValueRange(m_lo, m_hi, budget);
+  m_tickBudget = budget;
   applyAxisRange(m_yAxis, m_valueRange);
   m_cursor->setYSpan(m_valueRange.min, m_valueRange.max);
   if (const QString title = valueAxisTitle(m_kind, unit, lengthUnit); m_yAxis->titleText() != title)
@@ -88,6 +90,13 @@ bool QuantityChartView::setData(const kinematics::SweepResult& sweep, const Quan
     inputs.legend.push_back(shown);
   }
   return inputs.replace(m_layoutInputs);
+}
+
+bool QuantityChartView::settleValueRange() {
+  if (niceValueRange(m_lo, m_hi, m_tickBudget) == m_valueRange) return false;
+  applyValueRange();
+  m_layoutInputs.y = m_valueRange;
+  return true;
 }
 
 int QuantityChartView::tickBudget() const {

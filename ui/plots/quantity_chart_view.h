@@ -47,6 +47,10 @@ public:
   /// then the plot areas need aligning again; on most frames of a drag they do not.
   bool setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection, AngleUnit unit,
                const PlotXAxis& x, const QString& lengthUnit = QStringLiteral("mm"));
+  /// While the data change, setData keeps the value axis where it still serves (keepsRange);
+  /// this sets it to the data's own range once they have settled. Returns whether it changed
+  /// (then the plot areas need aligning again).
+  bool settleValueRange();
   /// Moves the cursor to `x` (plot units), or hides it. Touches no data series.
   void setCursorX(std::optional<double> x);
   std::optional<double> cursorX() const { return m_cursor->x(); }

@@ -106,3 +106,17 @@ TEST_CASE("wrapIntoRange moves an angle by whole turns into the grid", "[axis_ra
   CHECK(*wrapIntoRange(30.0, 10.0, 50.0) == Approx(30.0));
   CHECK_FALSE(wrapIntoRange(90.0, 10.0, 50.0).has_value());
 }
+
+TEST_CASE("keepsRange keeps an axis that still holds the data and is at least half filled", "[axis_range]") {
+  const AxisRange shown = niceValueRange(10.0, 90.0);  // [0, 100]
+  REQUIRE(shown.min == 0.0);
+  REQUIRE(shown.max == 100.0);
+  CHECK(keepsRange(shown, 10.0, 90.0));
+  CHECK(keepsRange(shown, 0.0, 50.0));        // exactly half
+  CHECK_FALSE(keepsRange(shown, 10.0, 45.0));  // less than half: fit the data again
+  CHECK_FALSE(keepsRange(shown, -1.0, 90.0));  // off the axis
+  CHECK_FALSE(keepsRange(shown, 10.0, 100.5));
+  CHECK_FALSE(keepsRange(shown, 90.0, 10.0));  // no data
+  CHECK_FALSE(keepsRange(shown, std::nan(""), 90.0));
+  CHECK_FALSE(keepsRange(AxisRange{5.0, 5.0}, 5.0, 5.0));  // an empty axis serves nothing
+}

@@ -11,6 +11,7 @@
 #include "ui/plots/quantity_selector.h"
 
 #include "kinematics/design/dyad_request.h"
+#include "kinematics/design/fourbar_dimensions.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
 
@@ -417,4 +418,29 @@ TEST_CASE("The panel renders offscreen with curves in their colours", "[plot_pan
   panel.setAngleUnit(AngleUnit::Radians);
   panel.resize(480, 900);
   CHECK(panel.grab().save(QStringLiteral("/tmp/linkwright_plots_radians_narrow.png")));
+}
+
+TEST_CASE("during a drag the value axes hold the data, and fit them once they settle", "[plot_panel]") {
+  MechanismDocument doc;
+  PlotPanel panel(&doc);
+  QuantityChartView* omega = panel.chartView(QuantityKind::Omega);
+  // Frames of a drag shortening the crank: whether an axis stays (keepsRange, tested in
+  // axis_range_test.cpp) or is fitted again, every plotted value lies on it.
+  for (int frame = 1; frame <= 8; ++frame) {
+    k::Design shorter = doc.design();
+    k::FourBarLengths lengths = doc.fourBar()->lengths;
+    lengths.crank -= 0.25;
+    shorter.mechanism = k::withFourBarLengths(shorter.mechanism, *doc.fourBar(), lengths);
+    REQUIRE_FALSE(doc.edit(shorter, "crank", MergeKey{ContinuousEdit::DragPoint, 1, 0}));
+    for (const QPointF& p : plotted(panel, PlotQuantity::RockerOmega)) {
+      CHECK(p.y() >= omega->yAxis()->min());
+      CHECK(p.y() <= omega->yAxis()->max());
+    }
+  }
+  // Settled: the range a panel opened on this design shows.
+  panel.settleValueRanges();
+  PlotPanel fresh(&doc);
+  CHECK(omega->valueRange() == fresh.chartView(QuantityKind::Omega)->valueRange());
+  CHECK(omega->yAxis()->min() == omega->valueRange().min);
+  CHECK(omega->yAxis()->max() == omega->valueRange().max);
 }
