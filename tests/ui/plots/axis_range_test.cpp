@@ -112,7 +112,7 @@ TEST_CASE("keepsRange keeps an axis that still holds the data and is at least ha
   REQUIRE(shown.min == 0.0);
   REQUIRE(shown.max == 100.0);
   CHECK(keepsRange(shown, 10.0, 90.0));
-  CHECK(keepsRange(shown, 0.0, 50.0));        // exactly half
+  CHECK(keepsRange(shown, 0.0, 50.0));         // exactly half
   CHECK_FALSE(keepsRange(shown, 10.0, 45.0));  // less than half: fit the data again
   CHECK_FALSE(keepsRange(shown, -1.0, 90.0));  // off the axis
   CHECK_FALSE(keepsRange(shown, 10.0, 100.5));
