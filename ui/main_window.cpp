@@ -131,6 +131,13 @@ QWidget* MainWindow::buildAnalysisTabs() {
   m_synthesis = new SynthesisPanel(m_document, m_canvas, this);
   m_tabs->addTab(m_synthesis, tr("Synthesis"));
   connect(m_tabs, &QTabWidget::currentChanged, this, &MainWindow::updateForcesNeeded);
+  // The plots follow the document only while their tab is shown.
+  const auto followTab = [this](int tab) {
+    m_plots->setOnScreen(tab == 0);
+    m_forcePlots->setOnScreen(tab == 1);
+  };
+  connect(m_tabs, &QTabWidget::currentChanged, this, followTab);
+  followTab(m_tabs->currentIndex());
   return m_tabs;
 }
 

@@ -92,7 +92,20 @@ void ForcePlotPanel::setAngleUnit(AngleUnit unit) {
 
 QString ForcePlotPanel::statusText() const { return m_status->text(); }
 
+void ForcePlotPanel::setOnScreen(bool onScreen) {
+  if (onScreen == m_onScreen) return;
+  m_onScreen = onScreen;
+  if (onScreen && m_stale) {
+    m_stale = false;
+    refreshAll();
+  }
+}
+
 void ForcePlotPanel::refreshAll() {
+  if (!m_onScreen) {
+    m_stale = true;
+    return;
+  }
   const k::ForceSweep* cycle = m_forces->cycleForces();
   const k::SweepResult* sweep = m_forces->cycleSweep();
   QString status = m_forces->message();
@@ -151,6 +164,10 @@ void ForcePlotPanel::alignCharts() {
 std::optional<double> ForcePlotPanel::cursorX() const { return ui::cursorX(*m_document, m_x, m_unit); }
 
 void ForcePlotPanel::refreshCursor() {
+  if (!m_onScreen) {
+    m_stale = true;
+    return;
+  }
   const std::optional<double> x = m_forces->cycleForces() != nullptr ? cursorX() : std::nullopt;
   m_torque->setCursorX(x);
   m_joints->setCursorX(x);

@@ -33,6 +33,9 @@ public:
 
   /// Unit of the crank-angle axis (when the plots show the input). Degrees by default.
   void setAngleUnit(AngleUnit unit);
+  /// Whether the panel is on screen (its tab chosen): off screen it re-plots nothing (the
+  /// canvas's force arrows may keep the forces solved) and catches up when shown. On by default.
+  void setOnScreen(bool onScreen);
 
   ForceChartView* torqueChart() const { return m_torque; }
   ForceChartView* jointChart() const { return m_joints; }
@@ -60,7 +63,10 @@ private:
   QComboBox* m_selector;
   PolarLoadView* m_polar;
   QWidget* m_charts;
-  QTimer m_settleTimer;  // the value axes fit the data once they stay put (PlotPanel's too)
+  QTimer m_settleTimer;
+  bool m_onScreen = true;
+  bool m_stale =
+      false;  // a change came while off screen: refreshAll when back  // the value axes fit the data once they stay put (PlotPanel's too)
   std::vector<ForceJoint> m_jointList;
   std::vector<SeriesRuns> m_runs;  // reused between updates
   PlotXAxis m_x;                   // of the last refreshAll

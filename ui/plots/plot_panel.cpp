@@ -127,6 +127,15 @@ void PlotPanel::onDocumentChanged(Changes what) {
   else if (what & Change::Motion) refreshCursor();
 }
 
+void PlotPanel::setOnScreen(bool onScreen) {
+  if (onScreen == m_onScreen) return;
+  m_onScreen = onScreen;
+  if (onScreen && m_stale) {
+    m_stale = false;
+    refreshData();
+  }
+}
+
 void PlotPanel::onSelectionChanged() {
   applySelection();
   emit selectionChanged();
@@ -170,6 +179,10 @@ void PlotPanel::applySelection() {
 }
 
 void PlotPanel::refreshData() {
+  if (!m_onScreen) {
+    m_stale = true;
+    return;
+  }
   const kinematics::Design& design = m_document->design();
   const QString lengthUnit = QString::fromStdString(m_document->lengthUnit());
   const kinematics::SweepResult& sweep = m_document->sweep();
@@ -229,6 +242,10 @@ void PlotPanel::alignCharts() {
 }
 
 void PlotPanel::refreshCursor() {
+  if (!m_onScreen) {
+    m_stale = true;
+    return;
+  }
   const std::optional<double> x = cursorX(*m_document, m_x, m_unit);
   for (QuantityChartView* view : m_views) view->setCursorX(x);
 }

@@ -85,6 +85,11 @@ public:
   static constexpr int kDataSettleMs = 300;
   /// Fits the value axes to the data now, instead of kDataSettleMs after the last change.
   void settleValueRanges();
+  /// Whether the charts are on screen (the main window says so when their tab is chosen). Off
+  /// screen, a document change re-plots nothing (the request the plots make still follows
+  /// the design); the charts catch up when they come back on screen. On by default.
+  void setOnScreen(bool onScreen);
+  bool isOnScreen() const { return m_onScreen; }
 
 signals:
   /// The user (or setSelection) changed which quantities are shown.
@@ -105,6 +110,8 @@ private:
   QuantitySelector* m_selector;
   QTimer m_widthTimer;
   QTimer m_settleTimer;
+  bool m_onScreen = true;
+  bool m_stale = false;  // a change came while off screen: refreshData when back
   std::vector<PlotCurve> m_curves;
   std::array<QuantityChartView*, kQuantityKindCount> m_views{};
   std::unique_ptr<LimitMarkers> m_limits;

@@ -14,6 +14,7 @@
 #include <QComboBox>
 #include <QLineSeries>
 #include <QScatterSeries>
+#include <QSignalSpy>
 #include <QValueAxis>
 
 #include <catch2/catch.hpp>
@@ -148,4 +149,23 @@ TEST_CASE("an arm's force chart shows its joint torques, an actuator's its force
   const QList<QPointF> axial = panel.torqueChart()->samples(0);
   REQUIRE(static_cast<std::size_t>(axial.size()) == okSamples(g));
   CHECK(axial.front().y() == g.driveAlong.front());
+}
+
+TEST_CASE("off screen the force plots follow no change, and catch up when shown again", "[forces][plots]") {
+  ShownForces shown(*k::designForExample("funsho-fourbar"));
+  ForcePlotPanel& panel = shown.panel;
+  const QList<QLineSeries*> torque = panel.torqueChart()->segments(0);
+  REQUIRE_FALSE(torque.isEmpty());
+  QSignalSpy replaced(torque.front(), &QXYSeries::pointsReplaced);
+  panel.setOnScreen(false);  // the Kinematics tab chosen, the force arrows still on
+  k::Design heavier = shown.doc.design();
+  heavier.dynamics.links.front().mass *= 2.0;
+  REQUIRE_FALSE(shown.doc.edit(heavier, "mass"));
+  CHECK(replaced.isEmpty());
+  panel.setOnScreen(true);
+  CHECK(replaced.count() == 1);
+  const k::ForceSweep& f = *shown.forces.cycleForces();
+  const QList<QPointF> now = panel.torqueChart()->samples(0);
+  REQUIRE(static_cast<std::size_t>(now.size()) == okSamples(f));
+  CHECK(now.back().y() == f.driveTorque.back());
 }

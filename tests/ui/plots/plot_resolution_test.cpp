@@ -7,6 +7,10 @@
 #include "ui/plots/quantity_chart_view.h"
 #include "ui/plots/quantity_selector.h"
 
+#include "kinematics/design/fourbar_dimensions.h"
+#include "kinematics/model/fourbar.h"
+#include "kinematics/model/units.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QLineSeries>
@@ -99,4 +103,29 @@ TEST_CASE("with every plot unticked only positions are swept", "[plot_panel][res
   const std::size_t samples = s.size();
   v.panel.reportPlotWidth();
   CHECK(v.document.sweep().size() == samples);  // ...so the last width stands
+}
+
+TEST_CASE("off screen the plots follow no change, and catch up when shown again", "[plot_panel][resolution]") {
+  MechanismDocument doc;
+  PlotPanel panel(&doc);
+  QList<QLineSeries*> rocker = panel.chartView(QuantityKind::Angle)->segments(PlotQuantity::RockerAngle);
+  REQUIRE_FALSE(rocker.isEmpty());
+  QSignalSpy replaced(rocker.front(), &QXYSeries::pointsReplaced);
+  panel.setOnScreen(false);
+  namespace k = linkwright::kinematics;
+  k::Design longer = doc.design();
+  k::FourBarLengths lengths = doc.fourBar()->lengths;
+  lengths.frame += 2.0;
+  longer.mechanism = k::withFourBarLengths(longer.mechanism, *doc.fourBar(), lengths);
+  REQUIRE_FALSE(doc.edit(longer, "frame"));
+  doc.setCrankAngle(1.0);
+  CHECK(replaced.isEmpty());  // nothing re-plotted for a tab nobody sees
+  const QList<QPointF> stale = panel.chartView(QuantityKind::Angle)->samples(PlotQuantity::RockerAngle);
+  panel.setOnScreen(true);
+  CHECK(replaced.count() == 1);
+  const QList<QPointF> now = panel.chartView(QuantityKind::Angle)->samples(PlotQuantity::RockerAngle);
+  CHECK(now != stale);
+  REQUIRE(now.size() == static_cast<qsizetype>(doc.sweep().size()));
+  CHECK(now.back().y() == k::radToDeg(doc.sweep().linkAngle[k::fourbar::kRocker.index].back()));
+  CHECK(panel.chartView(QuantityKind::Angle)->cursorX() == Approx(k::radToDeg(1.0)));
 }
