@@ -1,5 +1,6 @@
 #include "kinematics/synthesis/swing_crank_rocker.h"
 
+#include "kinematics/io/number_format.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/model/vec2.h"
 #include "kinematics/synthesis/defects.h"
@@ -12,6 +13,12 @@
 
 namespace linkwright::kinematics {
 namespace {
+
+// `x` (> 0) to three significant digits, rounded up or down.
+double threeDigits(double x, bool up) {
+  const double unit = std::pow(10.0, std::floor(std::log10(x)) - 2.0);
+  return (up ? std::ceil(x / unit) : std::floor(x / unit)) * unit;
+}
 
 // Grid for locating the crank-rocker ranges and for bracketing the best candidate; bisection
 // then pins each range's ends to round-off.
@@ -170,9 +177,19 @@ Result<CrankRockerCandidate> candidateAt(const SwingTarget& t, const Constructio
   c.foldedRockerAngle = wrapAngle(angleOf(g.c1 - g.o4));
   auto design = fourBarDesign(c.lengths, c.branch, t.lengthUnit);
   if (!design) {
+    // Every length scales with the one given: say which range of it builds this member.
+    const auto [shortest, longest] =
+        std::minmax({c.lengths.frame, c.lengths.crank, c.lengths.coupler, c.lengths.rocker});
+    // Rounded inwards, so that both ends do build.
+    const double from = threeDigits(t.length * kMinLength / shortest, true);
+    const double to = threeDigits(t.length * kMaxLength / longest, false);
+    const std::string given = t.scale == SwingScale::Rocker ? "rocker" : "frame";
     Error e = design.error();
-    e.field = "parameter";
+    e.field = "length";
     e.message = "the crank-rocker at parameter " + formatNumber(p) + " cannot be built: " + e.message;
+    if (from <= to)
+      e.message += "; it can with a " + given + " length between " + io::formatShort(from, 3) + " and " +
+                   io::formatShort(to, 3) + " " + t.lengthUnit;
     return e;
   }
   const FourBarCheck check = checkFourBar(

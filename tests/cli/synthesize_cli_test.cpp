@@ -457,3 +457,10 @@ TEST_CASE("--help synthesize lists every problem, option and default", "[cli][sy
       CHECK(r.out.find(text) != std::string::npos);
   }
 }
+
+TEST_CASE("synthesize swing past the length domain names --rocker and the range that works", "[cli][synthesize]") {
+  const test::CliRun r =
+      test::runCliCommand({"synthesize", "swing", "--swing", "60", "--time-ratio", "1.3", "--rocker", "1e9"});
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Contains("--rocker: ") && Catch::Contains("it can with a rocker length between"));
+}

@@ -209,3 +209,18 @@ TEST_CASE("A family parameter off the crank-rocker ranges is an error", "[synthe
   const ParameterRange& r = ranges->front();
   CHECK(crankRockerAt(target, 0.5 * (r.from + r.to)).ok());
 }
+
+TEST_CASE("A best crank-rocker past the length domain names the given length and the range that builds it",
+          "[synthesis][swing]") {
+  // Rocker 1e9 mm: the best member's frame is about 1.09e9, past kMaxLength.
+  const SwingTarget target{degToRad(60.0), 1.3, 1e9, SwingScale::Rocker, "mm"};
+  const auto s = synthesiseCrankRocker(target, 10, DefectBounds{});
+  REQUIRE_FALSE(s);
+  CHECK(s.error().field == "length");
+  CHECK_THAT(s.error().message, Catch::Matches(".*it can with a rocker length between .* and .* mm"));
+  // The upper end of that range does build: the same swing and time ratio, every length within.
+  const std::string& m = s.error().message;
+  const double upper = std::stod(m.substr(m.rfind(" and ") + 5));
+  CHECK(upper < 1e9);
+  CHECK(synthesiseCrankRocker({degToRad(60.0), 1.3, upper, SwingScale::Rocker, "mm"}, 10, DefectBounds{}));
+}
