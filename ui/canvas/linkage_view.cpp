@@ -97,8 +97,8 @@ void LinkageView::setPickMode(PickMode mode) {
 }
 
 void LinkageView::fitToView() {
-  const QRectF bounds = m_scene->contentBounds();
-  const double size = m_scene->linkageSize();
+  const QRectF bounds = fitBounds();
+  const double size = fitSize();
   const double w = std::max(bounds.width(), 1e-3 * size);
   const double h = std::max(bounds.height(), 1e-3 * size);
   const QSizeF area = viewport()->size();
@@ -113,6 +113,28 @@ void LinkageView::fitToView() {
   centerOn(bounds.center());
   m_scrollResidue = {};
   m_autoFit = true;
+}
+
+void LinkageView::setExtraRegion(const QRectF& region) {
+  const bool usable = region.isValid() && std::isfinite(region.width()) && std::isfinite(region.height());
+  m_extraRegion = usable ? region : QRectF();
+  if (m_extraRegion.isNull()) return;
+  if (!visibleRegion().contains(m_extraRegion)) fitToView();
+  else ensureSceneRect(false);
+}
+
+QRectF LinkageView::visibleRegion() const { return mapToScene(viewport()->rect()).boundingRect(); }
+
+QRectF LinkageView::fitBounds() const {
+  const QRectF drawing = m_scene->contentBounds();
+  return m_extraRegion.isNull() ? drawing : drawing.united(m_extraRegion);
+}
+
+double LinkageView::fitSize() const {
+  const double linkage = m_scene->linkageSize();
+  if (m_extraRegion.isNull()) return linkage;
+  const QRectF bounds = fitBounds();
+  return std::max({linkage, bounds.width(), bounds.height()});
 }
 
 void LinkageView::zoomBy(double factor) { zoomAbout(QRectF(viewport()->rect()).center(), factor); }
@@ -132,8 +154,8 @@ void LinkageView::onDocumentChanged(Changes what) {
 void LinkageView::ensureSceneRect(bool force) {
   // A scene rect far larger than the linkage lets the user pan anywhere; it is reset only
   // when the drawing nears its edge, as re-setting it re-centres the view.
-  const QRectF bounds = m_scene->contentBounds();
-  const double size = m_scene->linkageSize();
+  const QRectF bounds = fitBounds();
+  const double size = fitSize();
   const double reach = 0.1 * kSceneRectSizes * size;
   const QRectF current = sceneRect();
   if (!force && current.contains(bounds.adjusted(-reach, -reach, reach, reach)) &&
@@ -166,7 +188,7 @@ std::optional<DragHandle> LinkageView::handleAt(const QPointF& viewportPos) cons
 
 void LinkageView::zoomAbout(const QPointF& viewportPos, double factor) {
   if (!(factor > 0.0) || !std::isfinite(factor)) return;
-  const double size = m_scene->linkageSize();
+  const double size = fitSize();
   const double now = pixelsPerUnit();
   const double wanted = std::clamp(now * factor * size, kMinLinkagePixels, kMaxLinkagePixels) / size;
   m_autoFit = false;

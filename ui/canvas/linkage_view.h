@@ -12,7 +12,8 @@
 //
 // Fitting: the view fits the drawing when first shown, on resize until the user zooms or
 // pans, after fitToView(), and after a document reset (File ▸ New / Open / Examples, seen as
-// one Design|File change).
+// one Design|File change). A region shown beside the drawing (the synthesis preview) joins what
+// is fitted, and brings the view to it when it appears off screen.
 
 #include "ui/canvas/drag_handles.h"
 #include "ui/document/mechanism_document.h"
@@ -49,6 +50,13 @@ public:
   /// Paints the linkage without the grid into `target` (painter coordinates), y up, aspect
   /// ratio kept, centred: for image and SVG export.
   void renderLinkage(QPainter* painter, const QRectF& target) const;
+
+  /// A region (scene units) to keep on screen beside the drawing, such as a synthesised
+  /// candidate's preview; an empty rect clears it. It joins what fitToView() fits, and when it
+  /// is not wholly in view the view fits the drawing and the region together.
+  void setExtraRegion(const QRectF& region);
+  /// The part of the scene the viewport shows (scene units).
+  QRectF visibleRegion() const;
 
   /// What a left click does: drag and pan (None), or pick a point or a pose for the caller.
   enum class PickMode { None, Point, Pose };
@@ -95,11 +103,15 @@ private:
   void refuse(const QString& reason, const QPointF& viewportPos);
   void updateHover(const QPointF& viewportPos);
   void ensureSceneRect(bool force);
+  // What a fit shows: the drawing and the extra region; and its size, for the zoom limits.
+  QRectF fitBounds() const;
+  double fitSize() const;
   void finishPick(const QPointF& viewportPos);
 
   MechanismDocument* m_document;
   LinkageScene* m_scene;
   double m_presentationScale = 1.0;
+  QRectF m_extraRegion;  // scene units; null when none
   bool m_autoFit = true;
   Gesture m_gesture = Gesture::None;
   Qt::MouseButton m_gestureButton = Qt::NoButton;

@@ -369,11 +369,11 @@ void SynthesisPanel::updatePreview() {
     if (m_shown && problem() == SynthesisProblem::Path) {
       if (const auto request = m_pathForm->request()) {
         m_preview->setPreview({}, 0.0, {request->target.points, {}});
-        m_preview->setVisible(true);
+        showPreview(true);
         return;
       }
     }
-    m_preview->setVisible(false);
+    showPreview(false);
     return;
   }
   const SynthesisRow& chosen = shown->rows[*row];
@@ -381,7 +381,14 @@ void SynthesisPanel::updatePreview() {
   targets.points.insert(targets.points.end(), chosen.targets.points.begin(), chosen.targets.points.end());
   targets.poses.insert(targets.poses.end(), chosen.targets.poses.begin(), chosen.targets.poses.end());
   m_preview->setPreview(chosen.candidate.design.mechanism, chosen.previewInput, targets);
-  m_preview->setVisible(true);
+  showPreview(true);
+}
+
+// A candidate may lie far from the document's linkage (its own scale and pivots): the view
+// keeps the preview on screen, zooming out to it when it appears off screen.
+void SynthesisPanel::showPreview(bool visible) {
+  m_preview->setVisible(visible);
+  if (m_view) m_view->setExtraRegion(visible ? m_preview->sceneBoundingRect() : QRectF());
 }
 
 void SynthesisPanel::updateControls() {

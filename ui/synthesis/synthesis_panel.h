@@ -96,6 +96,7 @@ private:
   void setPicking(bool on);
   void stopPicking();
   void updatePreview();
+  void showPreview(bool visible);
   void updateControls();
   kinematics::DefectBounds bounds() const;
   ClosedForm* closedForm(SynthesisProblem problem) const;

@@ -18,6 +18,7 @@
 #include "kinematics/solve/pose_solver.h"
 #include "kinematics/synthesis/swing_crank_rocker.h"
 
+#include "tests/ui/canvas/canvas_test_support.h"
 #include "tests/ui/support/four_bar_design.h"
 
 #include <catch2/catch.hpp>
@@ -244,6 +245,25 @@ TEST_CASE("the preview draws the chosen candidate while the panel is shown", "[u
   CHECK(preview->isVisible());
   panel.hide();
   CHECK_FALSE(preview->isVisible());
+}
+
+TEST_CASE("a candidate off screen brings the view to it; one in view leaves the zoom alone", "[ui][synthesis]") {
+  ui::test::ShownView shown;
+  ui::SynthesisPanel panel(&shown.document, &shown.view);
+  shown.view.zoomBy(40.0);  // the user looks closely at one joint of the thesis four-bar
+  const QRectF before = shown.view.visibleRegion();
+  panel.show();  // the tab opens on the default crank-rocker problem, solved at once
+  ui::SynthesisPreviewItem* preview = panel.preview();
+  REQUIRE(preview->isVisible());
+  const QRectF candidate = preview->sceneBoundingRect();
+  CHECK_FALSE(before.contains(candidate));
+  CHECK(shown.view.visibleRegion().contains(candidate));
+  // Zoomed out by the user, the next candidate is in view already: nothing moves under them.
+  shown.view.zoomBy(0.25);
+  const QTransform chosen = shown.view.viewportTransform();
+  panel.candidates()->selectRow(1);
+  REQUIRE(shown.view.visibleRegion().contains(preview->sceneBoundingRect()));
+  CHECK(shown.view.viewportTransform() == chosen);
 }
 
 TEST_CASE("targets are kept in the document: typed ones as one undo step, saved ones shown again",
