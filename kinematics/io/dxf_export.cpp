@@ -4,6 +4,7 @@
 #include <dl_writer_ascii.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cstring>
 #include <filesystem>
 #include <memory>
@@ -12,6 +13,22 @@
 
 namespace linkwright::kinematics::io {
 namespace {
+
+// dxflib prints reals with "%.16f": within 5e-17, but with fewer than 17 significant digits
+// below 1 (1.2345678901234567e-5 keeps 12). This writer prints the shortest fixed-point text
+// that reads back as the same double (std::to_chars: whatever the value and the locale), with
+// a decimal point always; the rest of the file is dxflib's.
+class RoundTripWriter : public DL_WriterA {
+public:
+  using DL_WriterA::DL_WriterA;
+  void dxfReal(int gc, double value) const override {
+    char text[400];  // the longest fixed-point double, 1.8e308, has 309 digits
+    const auto [end, ec] = std::to_chars(text, text + sizeof text, value, std::chars_format::fixed);
+    std::string out(text, ec == std::errc{} ? end : text);
+    if (out.find('.') == std::string::npos) out += ".0";
+    dxfString(gc, out);
+  }
+};
 
 // Layer colours (AutoCAD colour index): GROUND white, the parts cycling red, yellow, green,
 // cyan, blue, magenta so neighbours differ.
@@ -79,9 +96,9 @@ Error outputError(const std::string& path, const std::string& why) {
 
 // Writes the whole file at `temp`; false if the stream failed at any point.
 bool writeFile(const LinkDrawing& drawing, const std::filesystem::path& temp) {
-  DL_Dxf dxf;
-  const std::unique_ptr<DL_WriterA> dw(dxf.out(temp.c_str(), DL_Codes::AC1015));
-  if (!dw || dw->openFailed()) return false;
+  DL_Dxf dxf;  // writes R2000 (AC1015), the version of the writer below
+  const auto dw = std::make_unique<RoundTripWriter>(temp.c_str(), DL_Codes::AC1015);
+  if (dw->openFailed()) return false;
   writeTables(dxf, *dw, drawing);
   dw->sectionEntities();
   for (const DrawingLayer& layer : drawing.layers) writeLayer(dxf, *dw, layer);

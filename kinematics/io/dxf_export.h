@@ -2,10 +2,10 @@
 // Writes a link drawing (link_drawing.h) as an AutoCAD R2000 (AC1015) ASCII DXF file with
 // dxflib, the DXF library behind QCAD, so LibreCAD, QCAD, FreeCAD and ezdxf read it: one layer
 // per part (GROUND first), outlines as closed LWPOLYLINEs with bulges, holes as CIRCLEs, the
-// ground pivots' crosses as LINEs. $INSUNITS names the length unit (dxfInsUnits). dxflib
-// prints coordinates with 16 decimals, so a coordinate of magnitude ≥ 1 reads back as the same
-// double and a smaller one to within 5e-17. Built as its own library (linkwright_dxf) so the
-// core stays free of dxflib; the CLI and the designer link it.
+// ground pivots' crosses as LINEs. $INSUNITS names the length unit (dxfInsUnits). Every real
+// is printed as the shortest decimal that reads back as the same double (dxflib's own
+// "%.16f" keeps fewer than 17 significant digits below 1). Built as its own library
+// (linkwright_dxf) so the core stays free of dxflib; the CLI and the designer link it.
 
 #include "kinematics/io/link_drawing.h"
 #include "kinematics/model/mechanism.h"

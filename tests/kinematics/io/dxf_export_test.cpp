@@ -1,7 +1,6 @@
 // Tests kinematics/io/dxf_export.h by reading its files back with dxflib's own reader: every
-// layer, hole, outline vertex and bulge comes back; coordinates of magnitude ≥ 1 come back as
-// the same double (17 significant digits survive dxflib's 16 decimals) and smaller ones to
-// 5e-17; $INSUNITS follows the unit; a file that cannot be written leaves nothing behind and
+// layer, hole, outline vertex and bulge comes back as the same double (17 significant digits,
+// large or small, which dxflib's own "%.16f" would not keep below 1); $INSUNITS follows the unit; a file that cannot be written leaves nothing behind and
 // an existing file untouched. (tests/cli/dxf_readback.py reads the CLI's files with ezdxf.)
 
 #include "kinematics/io/dxf_export.h"
@@ -83,7 +82,6 @@ TEST_CASE("a DXF file reads back with every layer, hole and outline", "[dxf_expo
     const auto& circles = r.circles.at(layer.name);
     REQUIRE(circles.size() == layer.holes.size());
     for (std::size_t i = 0; i < circles.size(); ++i) {
-      // Coordinates here are tens of mm: 16 decimals give the same double back.
       CHECK(circles[i].cx == layer.holes[i].centre.x());
       CHECK(circles[i].cy == layer.holes[i].centre.y());
       CHECK(circles[i].radius == layer.holes[i].diameter / 2.0);
@@ -96,7 +94,7 @@ TEST_CASE("a DXF file reads back with every layer, hole and outline", "[dxf_expo
       for (std::size_t v = 0; v < vertices.size(); ++v) {
         CHECK(vertices[v].x == layer.outlines[o][v].point.x());
         CHECK(vertices[v].y == layer.outlines[o][v].point.y());
-        CHECK(vertices[v].bulge == Approx(layer.outlines[o][v].bulge).margin(5e-17));
+        CHECK(vertices[v].bulge == layer.outlines[o][v].bulge);
       }
     }
   }
@@ -107,19 +105,13 @@ TEST_CASE("a DXF file reads back with every layer, hole and outline", "[dxf_expo
 TEST_CASE("coordinates keep 17 significant digits through a DXF file", "[dxf_export]") {
   const fs::path dir = scratchDir();
   const Eigen::Vector2d big(123456789.01234567, -98765.432109876543);
-  const Eigen::Vector2d small(0.012345678901234567, -3.3333333333333333e-5);
+  const Eigen::Vector2d small(0.012345678901234567, -3.3333333333333333e-5);  // "%.16f" loses these
   for (const Eigen::Vector2d& centre : {big, small}) {
     REQUIRE_FALSE(writeDxf(oneHole(centre, "m"), (dir / "p.dxf").string()).has_value());
     const ReadBack r = readBack(dir / "p.dxf");
     const DL_CircleData& c = r.circles.at("GROUND").at(0);
-    if (centre == big) {
-      CHECK(c.cx == centre.x());
-      CHECK(c.cy == centre.y());
-    } else {
-      // Below 1 the 16 decimals bound the error instead: half a unit in the 16th decimal.
-      CHECK(std::abs(c.cx - centre.x()) <= 5e-17);
-      CHECK(std::abs(c.cy - centre.y()) <= 5e-17);
-    }
+    CHECK(c.cx == centre.x());
+    CHECK(c.cy == centre.y());
     CHECK(r.insUnits == 6);  // m
   }
   fs::remove_all(dir);
