@@ -14,6 +14,8 @@ packages=(
   g++ cmake make             # toolchain (C++20, CMake >= 3.25)
   libeigen3-dev              # linear algebra for the kinematics core
   nlohmann-json3-dev         # the document reader's JSON parser
+  libdxflib-dev              # dxflib (QCAD's DXF library): the DXF drawings of the links
+  python3-ezdxf              # reads those drawings back in a test (tests/cli/dxf_readback.py)
   catch2                     # Catch2 2.13 test framework
   qt6-base-dev qt6-charts-dev qt6-svg-dev  # the GUI (Widgets, Concurrent, Charts, SVG export)
   libgl-dev                  # OpenGL headers that Qt6Gui's CMake package requires

@@ -28,6 +28,8 @@ const std::set<std::string>& optionsOf(Command command) {
                                          "--speed",   "--samples", "--step-time",  "--elbow",
                                          "--unit",    "-o",        "--output",     "--format"};
   static const std::set<std::string> centres{"--fourbar", "--example", "--unit", "--branch", "--at"};
+  static const std::set<std::string> dxf{"--fourbar", "--example", "--unit",  "--branch", "--coupler-point",
+                                         "--at",      "--hole",    "--width", "-o",       "--output"};
   static const std::set<std::string> accuracy{"--example", "-o", "--output", "--svg"};
   static const std::set<std::string> none{};
   switch (command) {
@@ -37,6 +39,7 @@ const std::set<std::string>& optionsOf(Command command) {
   case Command::Arm: return arm;
   case Command::Centres: return centres;
   case Command::Accuracy: return accuracy;
+  case Command::Dxf: return dxf;
   default: return none;
   }
 }
@@ -50,6 +53,7 @@ const char* commandName(Command command) {
   case Command::Arm: return "arm";
   case Command::Centres: return "centres";
   case Command::Accuracy: return "accuracy";
+  case Command::Dxf: return "dxf";
   default: return "linkwright-cli";
   }
 }
@@ -89,6 +93,8 @@ std::optional<Error> applyArmOrCentres(Invocation& inv, const std::string& optio
   else if (option == "--to-point") return point(inv.toPoint, option, value);
   else if (option == "--speed") return positive(inv.speed, option, value);
   else if (option == "--step-time") return positive(inv.stepTime, option, value);
+  else if (option == "--hole") return positive(inv.holeDiameter, option, value);
+  else if (option == "--width") return positive(inv.plateWidth, option, value);
   else if (option == "--elbow") {
     if (value == "up") inv.elbow = kinematics::Branch::Open;
     else if (value == "down") inv.elbow = kinematics::Branch::Crossed;
@@ -221,12 +227,23 @@ std::optional<Error> checkLaw(const Invocation& inv) {
   return std::nullopt;
 }
 
+// dxf draws one pose into one file.
+std::optional<Error> checkDxf(const Invocation& inv) {
+  if (inv.atDeg.size() > 1)
+    return usage("--at", "dxf draws one pose: --at takes one value (got " + std::to_string(inv.atDeg.size()) + ")");
+  if (!inv.outputFile) return usage("--output", "dxf needs -o FILE.dxf (where to write the drawing)");
+  return std::nullopt;
+}
+
 std::optional<Error> checkCombination(const Invocation& inv) {
   if (inv.command == Command::Arm) return checkArm(inv);
+  if (inv.command == Command::Dxf)
+    if (auto e = checkDxf(inv)) return e;
   if (inv.command == Command::Centres && inv.atDeg.empty())
     return usage("--at", "centres needs --at DEG (the crank angle, degrees; repeatable or DEG,DEG,...)");
   const bool needsMechanism = inv.command == Command::Analyze || inv.command == Command::Classify ||
-                              inv.command == Command::Extremes || inv.command == Command::Centres;
+                              inv.command == Command::Extremes || inv.command == Command::Centres ||
+                              inv.command == Command::Dxf;
   if (needsMechanism && !inv.fourBar && !inv.example && !inv.documentPath)
     return usage("--fourbar", std::string(commandName(inv.command)) +
                                   " needs FILE.json, --fourbar FRAME,CRANK,COUPLER,ROCKER or --example NAME");
@@ -247,7 +264,8 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   if (args.empty())
     return usage(
         "COMMAND",
-        "missing command (analyze, extremes, classify, arm, centres, accuracy, synthesize or examples; see --help)");
+        "missing command (analyze, extremes, classify, arm, centres, accuracy, dxf, synthesize or examples; see "
+        "--help)");
   const std::string& first = args[0];
   if (first == "--help" || first == "-h" || first == "help") {
     inv.command = Command::Help;
@@ -279,13 +297,14 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   else if (first == "arm") inv.command = Command::Arm;
   else if (first == "centres") inv.command = Command::Centres;
   else if (first == "accuracy") inv.command = Command::Accuracy;
+  else if (first == "dxf") inv.command = Command::Dxf;
   else if (!first.empty() && first[0] == '-')
     return usage(first, "unknown option '" + first + "' (see linkwright-cli --help)");
   else
     return usage(
         first,
         "unknown command '" + first +
-            "' (commands: analyze, extremes, classify, arm, centres, accuracy, synthesize, examples; see --help)");
+            "' (commands: analyze, extremes, classify, arm, centres, accuracy, dxf, synthesize, examples; see --help)");
   if (inv.command == Command::Arm) inv.lengthUnit = "m";  // the arm's seed (004) works in metres
 
   std::set<std::string> seen;
@@ -303,7 +322,8 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
     }
     // A bare argument names a document, for the commands that analyse a linkage.
     const bool takesDocument = inv.command == Command::Analyze || inv.command == Command::Extremes ||
-                               inv.command == Command::Classify || inv.command == Command::Centres;
+                               inv.command == Command::Classify || inv.command == Command::Centres ||
+                               inv.command == Command::Dxf;
     if (takesDocument && !option.empty() && option[0] != '-' && !inlineValue) {
       if (inv.documentPath)
         return usage(option, "only one document can be analysed at a time (got '" + *inv.documentPath + "' and '" +

@@ -18,7 +18,7 @@
 
 namespace linkwright::cli {
 
-enum class Command { Help, Version, Examples, Analyze, Classify, Extremes, Arm, Centres, Accuracy, Synthesize };
+enum class Command { Help, Version, Examples, Analyze, Classify, Extremes, Arm, Centres, Accuracy, Synthesize, Dxf };
 
 /// Everything the user asked for. Angles in degrees and speeds as typed: converted to SI by
 /// the commands, at the edge.
@@ -61,6 +61,9 @@ struct Invocation {
   std::vector<double> atDeg;
   std::optional<std::string> svgFile;         ///< accuracy --svg: where to draw the error plot
   std::optional<SynthesisRequest> synthesis;  ///< synthesize: the problem and its options
+  // dxf: the drawing's sizes (length unit; positive, finite), empty for the defaults.
+  std::optional<double> holeDiameter;
+  std::optional<double> plateWidth;
 };
 
 /// Parses the arguments after the program name.

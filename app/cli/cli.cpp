@@ -24,6 +24,8 @@ Commands:
              (four-bars, slider-cranks)
   accuracy   how far peaks read off N samples per turn are from the exact ones, and
              what each choice costs (CSV; optional SVG plot)
+  dxf        the links as a DXF drawing at true size: plate outlines, pivot holes,
+             one layer per link, the ground pivots (LibreCAD, QCAD, FreeCAD)
   synthesize a linkage from the motion wanted: rocker swing and time ratio, slider or
              shaper stroke, function generator, coupler poses, coupler path; lists
              the candidates with their defects and writes the chosen one as a document
@@ -119,6 +121,29 @@ Output: the six instant centres Iij of bodies 1 frame, 2 crank, 3 coupler (rod),
   (slider), as (x, y) in the length unit or "at infinity" with a direction; the velocity
   ratio ω4/ω2 (slider: v/ω2, length unit per rad) and the ideal mechanical advantage
   T4/T2 = ω2/ω4 (slider: F/T2 = ω2/v, per length unit), signed, infinite at a toggle.
+)";
+
+constexpr const char* kDxfOptions =
+    R"(Dxf options (with the mechanism options; any linkage; lengths in its length unit):
+  -o, --output FILE.dxf
+                      where to write the drawing (required; written whole or not at all)
+  --at DEG            the input the links are drawn at: crank angle in degrees CCW from
+                      +x, or a linear driver's position in the length unit (default:
+                      where the design starts: its grid's first input or its motion law's
+                      start; 0 for --fourbar)
+  --hole D            pivot hole diameter, > 0 and less than the shortest distance
+                      between two joints on one link (default a fifth of that
+                      distance, to two significant digits)
+  --width W           plate width, more than the hole diameter (default 2 × hole)
+  --coupler-point U,V a four-bar's coupler point (as for analyze): drilled too
+Output: a DXF R2000 file. Layer GROUND: each ground pivot as a hole with a centre
+  cross. One layer per moving link, named after it (a plate made of several links
+  takes its first link's name): the convex outline of circles of diameter W around
+  every joint on it (a stadium for two joints), a hole of diameter D at each joint,
+  and, on a slotted link, a slot D wide along it through the block's pin at this pose.
+  One layer per slider block: a W × 2W rectangle along its guide with the pin's hole.
+  $INSUNITS gives the unit (in 1, ft 2, mm 4, cm 5, m 6; other names 0, unitless).
+  Coordinates: x right, y up, as the analyze table at the same input.
 )";
 
 constexpr const char* kArmOptions =
@@ -229,7 +254,7 @@ constexpr const char* kExitCodes = R"(Exit codes:
   3  the linkage cannot be assembled over the requested range (rows that assemble are
      still written; the message gives the ranges that do not and the range that does);
      for arm: the tip path leaves the workspace (the message gives the exact times);
-     for centres: a requested crank angle cannot be assembled; for synthesize path: no
+     for centres and dxf: a requested input cannot be assembled; for synthesize path: no
      start found a four-bar that assembles at every target
 
 Examples:
@@ -237,6 +262,7 @@ Examples:
   linkwright-cli analyze --example funsho-fourbar --forces --step 30
   linkwright-cli arm --example seed-arm --format table
   linkwright-cli centres --example thesis-crank-rocker --at 0,90
+  linkwright-cli dxf --example thesis-crank-rocker --at 30 --hole 2 -o links.dxf
   linkwright-cli synthesize swing --swing 60 --time-ratio 1.3 --rocker 50 -o design.json
 )";
 
@@ -245,10 +271,11 @@ Examples:
 std::string helpText(const std::string& topic) {
   std::string text = kUsage;
   const bool sweeps = topic.empty() || topic == "analyze" || topic == "extremes";
-  if (sweeps || topic == "classify" || topic == "centres") text += kMechanismOptions;
+  if (sweeps || topic == "classify" || topic == "centres" || topic == "dxf") text += kMechanismOptions;
   if (sweeps) text += std::string("\n") + kAnalyzeOptions;
   if (topic.empty() || topic == "classify") text += std::string("\n") + kClassifyOptions;
   if (topic.empty() || topic == "centres") text += std::string("\n") + kCentresOptions;
+  if (topic.empty() || topic == "dxf") text += std::string("\n") + kDxfOptions;
   if (topic.empty() || topic == "arm") text += std::string(topic.empty() ? "\n" : "") + kArmOptions;
   if (topic.empty() || topic == "accuracy") text += std::string("\n") + kAccuracyOptions;
   if (topic.empty() || topic == "synthesize") text += std::string("\n") + kSynthesizeOptions;
@@ -265,11 +292,11 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   switch (inv.command) {
   case Command::Help:
     if (!inv.helpTopic.empty() && inv.helpTopic != "analyze" && inv.helpTopic != "classify" &&
-        inv.helpTopic != "extremes" && inv.helpTopic != "arm" && inv.helpTopic != "centres" &&
+        inv.helpTopic != "extremes" && inv.helpTopic != "arm" && inv.helpTopic != "centres" && inv.helpTopic != "dxf" &&
         inv.helpTopic != "accuracy" && inv.helpTopic != "synthesize" && inv.helpTopic != "examples" &&
         inv.helpTopic != "linkwright-cli") {
       err << "linkwright-cli: no help for '" << inv.helpTopic
-          << "' (commands: analyze, extremes, classify, arm, centres, accuracy, synthesize, examples)\n";
+          << "' (commands: analyze, extremes, classify, arm, centres, accuracy, dxf, synthesize, examples)\n";
       return toInt(ExitCode::BadInput);
     }
     out << helpText(inv.helpTopic == "linkwright-cli" || inv.helpTopic == "examples" ? "" : inv.helpTopic);
@@ -282,6 +309,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   case Command::Arm: return toInt(runArm(inv, out, err));
   case Command::Centres: return toInt(runCentres(inv, out, err));
   case Command::Accuracy: return toInt(runAccuracy(inv, out, err));
+  case Command::Dxf: return toInt(runDxf(inv, out, err));
   case Command::Synthesize: return toInt(runSynthesize(inv, out, err));
   }
   return toInt(ExitCode::BadInput);

@@ -2,8 +2,8 @@
 // The commands behind linkwright-cli: analyze (CSV table), extremes (refined extreme values),
 // classify (Grashof class, transmission angle, limit positions, assemblable range; four-bars),
 // arm (a two-link arm's joints along a straight tip path), centres (instant centres and
-// mechanical advantage at given crank angles), synthesize (linkages from the motion wanted:
-// kinematics/synthesis/) and examples (the built-ins).
+// mechanical advantage at given crank angles), dxf (the links as a DXF drawing), synthesize
+// (linkages from the motion wanted: kinematics/synthesis/) and examples (the built-ins).
 
 #include "app/cli/arguments.h"
 #include "app/cli/exit_codes.h"
@@ -24,6 +24,7 @@ ExitCode runExtremes(const Invocation& invocation, std::ostream& out, std::ostre
 ExitCode runArm(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runCentres(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runAccuracy(const Invocation& invocation, std::ostream& out, std::ostream& err);
+ExitCode runDxf(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runSynthesize(const Invocation& invocation, std::ostream& out, std::ostream& err);
 
 /// What an example brings besides the linkage: the driver's speed and the input grid.
