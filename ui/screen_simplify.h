@@ -27,6 +27,7 @@ struct ScreenScale {
 
 /// Working memory of simplifyForScreen, kept between calls so that a drag allocates nothing.
 struct SimplifyScratch {
+  std::vector<double> x, y;  // the points in pixels
   std::vector<char> keep;
   std::vector<std::pair<qsizetype, qsizetype>> spans;
 };
