@@ -1,10 +1,12 @@
 // The document's displayed sampling and the error it states (ui/document/quality_estimate.h,
 // MechanismDocument::qualityEstimate): the stated error is the core's own measurement at the
-// displayed N, motion never re-measures, a width that keeps the count keeps the sweep, and a
-// rocking crank says why there is no figure.
+// displayed N, motion never re-measures, a width that keeps the count keeps the sweep, a
+// rocking crank says why there is no figure, and the worker that measures it gives the same
+// figure as the GUI thread and drops a superseded measurement.
 
 #include "ui/document/quality_estimate.h"
 #include "ui/document/mechanism_document.h"
+#include "ui/document/quality_estimator.h"
 #include "ui/plots/quality_bar.h"
 
 #include "kinematics/analysis/sampling_accuracy.h"
@@ -16,6 +18,7 @@
 #include <catch2/catch.hpp>
 
 #include <QSignalSpy>
+#include <QTest>
 
 #include <cmath>
 
@@ -152,4 +155,44 @@ TEST_CASE("the quality's Newton tolerance reaches the sweep and the estimate", "
   doc.measureQualityNow();
   REQUIRE(doc.qualityEstimate().error.has_value());
   CHECK(*doc.qualityEstimate().error == coreError(doc));
+}
+
+TEST_CASE("the estimate measured in a worker equals the one measured in the GUI thread", "[ui][quality][worker]") {
+  MechanismDocument doc;
+  doc.reset(*k::designForExample("watt-ii"));
+  doc.setDisplayWidth(300.0);
+  QSignalSpy spy(&doc, &MechanismDocument::changed);
+  REQUIRE(doc.qualityEstimatePending());
+  // The settle timer starts the worker; the document stays pending until its result lands.
+  REQUIRE(spy.wait(20 * MechanismDocument::kEstimateSettleMs));
+  while (doc.qualityEstimatePending()) REQUIRE(spy.wait(20 * MechanismDocument::kEstimateSettleMs));
+  CHECK((spy.last().first().value<ui::Changes>() & ui::Change::Estimate));
+  REQUIRE(doc.qualityEstimate().error.has_value());
+  CHECK(*doc.qualityEstimate().error == coreError(doc));
+}
+
+TEST_CASE("a newer edit drops the estimate measured for the older design", "[ui][quality][worker]") {
+  ui::QualityEstimator estimator;
+  QSignalSpy measured(&estimator, &ui::QualityEstimator::measured);
+  const k::Mechanism older = k::designForExample("watt-ii")->mechanism;
+  const k::Mechanism newer = testing::fourBar({60.0, 25.0, 72.0, 45.0}).mechanism;
+  estimator.start({older, 1.0, 720, {}});
+  estimator.start({newer, 1.0, 360, {}});  // supersedes the first while it runs
+  REQUIRE(estimator.busy());
+  REQUIRE(measured.wait(20000));
+  // Exactly one result lands, the newer design's, and nothing is left running.
+  REQUIRE(measured.count() == 1);
+  CHECK_FALSE(estimator.busy());
+  const auto landed = measured.first().first().value<ui::QualityEstimate>();
+  CHECK(landed.samplesPerRevolution == 360);
+  const ui::QualityEstimate direct = ui::estimatePeakError(newer, 1.0, 360, {});
+  REQUIRE(landed.error.has_value());
+  REQUIRE(direct.error.has_value());
+  CHECK(*landed.error == *direct.error);
+
+  // Cancelled, a running measurement's result never lands.
+  estimator.start({older, 1.0, 720, {}});
+  estimator.cancel();
+  REQUIRE(QTest::qWaitFor([&] { return !estimator.busy(); }, 20000));
+  CHECK(measured.count() == 1);
 }

@@ -22,6 +22,7 @@ MechanismDocument::MechanismDocument(QObject* parent)
   m_estimateTimer.setSingleShot(true);
   m_estimateTimer.setInterval(kEstimateSettleMs);
   connect(&m_estimateTimer, &QTimer::timeout, this, &MechanismDocument::measureQuality);
+  connect(&m_estimator, &QualityEstimator::measured, this, &MechanismDocument::adoptEstimate);
   rebuild();
   connect(&m_undo, &QUndoStack::cleanChanged, this, [this] { emit changed(Change::File); });
 }
@@ -149,27 +150,56 @@ void MechanismDocument::setDisplayWidth(double pixels) {
 }
 
 void MechanismDocument::measureQualityNow() {
-  if (qualityEstimatePending()) measureQuality();
-}
-
-void MechanismDocument::measureQuality() {
+  if (!qualityEstimatePending()) return;
   m_estimateTimer.stop();
-  if (m_design.time) {
-    // The estimate reads peaks off a crank turning at one speed; a law's samples are evenly
-    // spaced in time, not in angle, so that measurement would not be this sampling's.
-    m_estimate = QualityEstimate{};
-    m_estimate.unavailable = tr("not measured on a time base");
-  } else if (k::inputKind(m_design.mechanism) != k::InputKind::Angle) {
-    m_estimate = QualityEstimate{};  // its cycle is a crank's turn
-    m_estimate.unavailable = tr("not measured for a linear input");
-  } else {
-    m_estimate = estimatePeakError(m_design.mechanism, m_displaySpec.omega,
-                                   samplesPerRevolution(m_displaySpec.samples, displaySpanDeg()), m_request.newton);
+  m_estimator.cancel();
+  if (auto unmeasured = unmeasuredEstimate()) m_estimate = std::move(*unmeasured);
+  else {
+    const QualityEstimator::Input in = estimateInput();
+    m_estimate = estimatePeakError(in.mechanism, in.omega, in.samplesPerRevolution, in.newton);
   }
   emit changed(Change::Estimate);
 }
 
-void MechanismDocument::scheduleEstimate() { m_estimateTimer.start(); }
+void MechanismDocument::measureQuality() {
+  if (auto unmeasured = unmeasuredEstimate()) {
+    m_estimator.cancel();
+    m_estimate = std::move(*unmeasured);
+    emit changed(Change::Estimate);
+    return;
+  }
+  m_estimator.start(estimateInput());  // measured() lands in adoptEstimate
+}
+
+std::optional<QualityEstimate> MechanismDocument::unmeasuredEstimate() const {
+  QualityEstimate none;
+  if (m_design.time) {
+    // The estimate reads peaks off a crank turning at one speed; a law's samples are evenly
+    // spaced in time, not in angle, so that measurement would not be this sampling's.
+    none.unavailable = tr("not measured on a time base");
+    return none;
+  }
+  if (k::inputKind(m_design.mechanism) != k::InputKind::Angle) {
+    none.unavailable = tr("not measured for a linear input");  // its cycle is a crank's turn
+    return none;
+  }
+  return std::nullopt;
+}
+
+QualityEstimator::Input MechanismDocument::estimateInput() const {
+  return {m_design.mechanism, m_displaySpec.omega, samplesPerRevolution(m_displaySpec.samples, displaySpanDeg()),
+          m_request.newton};
+}
+
+void MechanismDocument::adoptEstimate(const QualityEstimate& estimate) {
+  m_estimate = estimate;
+  emit changed(Change::Estimate);
+}
+
+void MechanismDocument::scheduleEstimate() {
+  m_estimator.cancel();  // measured for what is changing now
+  m_estimateTimer.start();
+}
 
 void MechanismDocument::reset(const k::Design& design, const QString& filePath) {
   m_undo.clear();

@@ -11,6 +11,7 @@
 
 #include "ui/document/edit_design_command.h"
 #include "ui/document/quality_estimate.h"
+#include "ui/document/quality_estimator.h"
 #include "ui/document/sampling_quality.h"
 
 #include "kinematics/design/design.h"
@@ -138,11 +139,12 @@ public:
 
   /// The peak error the displayed sampling buys on this design. Measured after the design, the
   /// sample count or the quality changes, once they have stayed put for kEstimateSettleMs (a
-  /// drag measures once, at its end), then announced with changed(Estimate); never during
-  /// crank motion. Until then it holds the previous measurement and qualityEstimatePending().
+  /// drag measures once, at its end), in a worker thread (quality_estimator.h), then announced
+  /// with changed(Estimate); never during crank motion. Until then it holds the previous
+  /// measurement and qualityEstimatePending().
   const QualityEstimate& qualityEstimate() const { return m_estimate; }
-  bool qualityEstimatePending() const { return m_estimateTimer.isActive(); }
-  /// Measures a pending estimate now (and announces it).
+  bool qualityEstimatePending() const { return m_estimateTimer.isActive() || m_estimator.busy(); }
+  /// Measures a pending estimate now, in this thread (and announces it): for exports and tests.
   void measureQualityNow();
   static constexpr int kEstimateSettleMs = 200;
 
@@ -170,6 +172,10 @@ private:
   double displaySpanDeg() const;
   void scheduleEstimate();
   void measureQuality();  // the timer's: it is no longer active when it fires
+  // The estimate when there is nothing to measure (a time base, a linear input), else none.
+  std::optional<QualityEstimate> unmeasuredEstimate() const;
+  QualityEstimator::Input estimateInput() const;
+  void adoptEstimate(const QualityEstimate& estimate);
   // The design's own grid, positions only: what validation and the analysis read.
   kinematics::SweepResult sweepGrid(const kinematics::Mechanism& mechanism, const kinematics::SweepSpec& spec) const;
   // The grid sweep validate() ran for `design`, if it is the last one validated.
@@ -196,6 +202,7 @@ private:
   double m_displayWidth = kDefaultDisplayWidth;
   QualityEstimate m_estimate;
   QTimer m_estimateTimer;
+  QualityEstimator m_estimator;
   kinematics::Pose m_pose;
   kinematics::PoseStatus m_poseStatus = kinematics::PoseStatus::Ok;
   kinematics::SolveRequest m_request{true, true};
