@@ -28,6 +28,9 @@ const std::set<std::string>& optionsOf(Command command) {
                                          "--speed",   "--samples", "--step-time",  "--elbow",
                                          "--unit",    "-o",        "--output",     "--format"};
   static const std::set<std::string> centres{"--fourbar", "--example", "--unit", "--branch", "--at"};
+  static const std::set<std::string> polygon{"--fourbar", "--example", "--unit",  "--branch", "--at",
+                                             "--rpm",     "--omega",   "--alpha", "--json"};
+  static const std::set<std::string> inversions{"--fourbar", "--example", "--unit", "--branch", "--json"};
   static const std::set<std::string> accuracy{"--example", "-o", "--output", "--svg"};
   static const std::set<std::string> none{};
   switch (command) {
@@ -36,6 +39,8 @@ const std::set<std::string>& optionsOf(Command command) {
   case Command::Extremes: return extremes;
   case Command::Arm: return arm;
   case Command::Centres: return centres;
+  case Command::Polygon: return polygon;
+  case Command::Inversions: return inversions;
   case Command::Accuracy: return accuracy;
   default: return none;
   }
@@ -49,6 +54,8 @@ const char* commandName(Command command) {
   case Command::Examples: return "examples";
   case Command::Arm: return "arm";
   case Command::Centres: return "centres";
+  case Command::Polygon: return "polygon";
+  case Command::Inversions: return "inversions";
   case Command::Accuracy: return "accuracy";
   default: return "linkwright-cli";
   }
@@ -223,10 +230,12 @@ std::optional<Error> checkLaw(const Invocation& inv) {
 
 std::optional<Error> checkCombination(const Invocation& inv) {
   if (inv.command == Command::Arm) return checkArm(inv);
-  if (inv.command == Command::Centres && inv.atDeg.empty())
-    return usage("--at", "centres needs --at DEG (the crank angle, degrees; repeatable or DEG,DEG,...)");
+  if ((inv.command == Command::Centres || inv.command == Command::Polygon) && inv.atDeg.empty())
+    return usage("--at", std::string(commandName(inv.command)) +
+                             " needs --at DEG (the crank angle, degrees; repeatable or DEG,DEG,...)");
   const bool needsMechanism = inv.command == Command::Analyze || inv.command == Command::Classify ||
-                              inv.command == Command::Extremes || inv.command == Command::Centres;
+                              inv.command == Command::Extremes || inv.command == Command::Centres ||
+                              inv.command == Command::Polygon || inv.command == Command::Inversions;
   if (needsMechanism && !inv.fourBar && !inv.example && !inv.documentPath)
     return usage("--fourbar", std::string(commandName(inv.command)) +
                                   " needs FILE.json, --fourbar FRAME,CRANK,COUPLER,ROCKER or --example NAME");
@@ -245,9 +254,9 @@ std::optional<Error> checkCombination(const Invocation& inv) {
 kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& args) {
   Invocation inv;
   if (args.empty())
-    return usage(
-        "COMMAND",
-        "missing command (analyze, extremes, classify, arm, centres, accuracy, synthesize or examples; see --help)");
+    return usage("COMMAND",
+                 "missing command (analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, "
+                 "synthesize or examples; see --help)");
   const std::string& first = args[0];
   if (first == "--help" || first == "-h" || first == "help") {
     inv.command = Command::Help;
@@ -278,14 +287,15 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   else if (first == "examples") inv.command = Command::Examples;
   else if (first == "arm") inv.command = Command::Arm;
   else if (first == "centres") inv.command = Command::Centres;
+  else if (first == "polygon") inv.command = Command::Polygon;
+  else if (first == "inversions") inv.command = Command::Inversions;
   else if (first == "accuracy") inv.command = Command::Accuracy;
   else if (!first.empty() && first[0] == '-')
     return usage(first, "unknown option '" + first + "' (see linkwright-cli --help)");
   else
-    return usage(
-        first,
-        "unknown command '" + first +
-            "' (commands: analyze, extremes, classify, arm, centres, accuracy, synthesize, examples; see --help)");
+    return usage(first, "unknown command '" + first +
+                            "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, "
+                            "synthesize, examples; see --help)");
   if (inv.command == Command::Arm) inv.lengthUnit = "m";  // the arm's seed (004) works in metres
 
   std::set<std::string> seen;
@@ -303,7 +313,8 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
     }
     // A bare argument names a document, for the commands that analyse a linkage.
     const bool takesDocument = inv.command == Command::Analyze || inv.command == Command::Extremes ||
-                               inv.command == Command::Classify || inv.command == Command::Centres;
+                               inv.command == Command::Classify || inv.command == Command::Centres ||
+                               inv.command == Command::Polygon || inv.command == Command::Inversions;
     if (takesDocument && !option.empty() && option[0] != '-' && !inlineValue) {
       if (inv.documentPath)
         return usage(option, "only one document can be analysed at a time (got '" + *inv.documentPath + "' and '" +

@@ -22,6 +22,10 @@ Commands:
              a straight line (CSV)
   centres    instant centres, velocity ratio and mechanical advantage at crank angles
              (four-bars, slider-cranks)
+  polygon    velocity and acceleration polygons at crank angles: each point's vector
+             equation and its arrows, tip to tail, against the solver's exact values
+  inversions a four-bar's (or slider-crank's) four inversions: the link grounded, the
+             link driven, the textbook class
   accuracy   how far peaks read off N samples per turn are from the exact ones, and
              what each choice costs (CSV; optional SVG plot)
   synthesize a linkage from the motion wanted: rocker swing and time ratio, slider or
@@ -119,6 +123,32 @@ Output: the six instant centres Iij of bodies 1 frame, 2 crank, 3 coupler (rod),
   (slider), as (x, y) in the length unit or "at infinity" with a direction; the velocity
   ratio ω4/ω2 (slider: v/ω2, length unit per rad) and the ideal mechanical advantage
   T4/T2 = ω2/ω4 (slider: F/T2 = ω2/v, per length unit), signed, infinite at a toggle.
+)";
+
+constexpr const char* kPolygonOptions =
+    R"(Polygon options (with the mechanism options; crank-driven linkages, see docs/classroom.md):
+  --at DEG[,DEG...]   crank angle(s), degrees CCW from the frame line, within ±1e6;
+                      repeatable
+  --rpm R | --omega W crank speed in rev/min or rad/s, CCW positive, |ω| ≤ 1e6 rad/s
+                      (default: the example's; 1 rad/s for --fourbar)
+  --alpha A           crank angular acceleration, rad/s², |α| ≤ 1e12 (default: the
+                      example's, else 0)
+  --json              machine-readable output
+Output, for the velocity polygon (length unit/s) and the acceleration polygon (length
+  unit/s²), pole o at (0, 0): each point's equation in solve order (V_C = V_B + V_CB, with
+  A^n normal, A^t tangential, A^c Coriolis, V_CC' the slide of C along a guide past C' the
+  guide's point under it), where each side of it ends and the solver's value it must end
+  on; then every arrow in drawing order: step, label, x, y, magnitude, angle (degrees CCW
+  from +x) and what it is. Exit code 3 at a crank angle that cannot be assembled or is a
+  toggle (rates, hence polygons, do not exist there).
+Inversions options (with the mechanism options; four-bars and slider-cranks):
+  --json              machine-readable output
+Output: for each link held fixed in turn, the link driven (adjacent to it), the lengths
+  as a four-bar (frame, crank, coupler, rocker), the class from Grashof's table
+  (crank-rocker, double-crank, double-rocker, change point, triple-rocker) and whether
+  the driven link turns fully; for a slider-crank: slider-crank, Whitworth or
+  crank-shaper, oscillating or rotating cylinder, fixed piston (an offset guide's
+  slotted inversions are named, not built).
 )";
 
 constexpr const char* kArmOptions =
@@ -229,7 +259,8 @@ constexpr const char* kExitCodes = R"(Exit codes:
   3  the linkage cannot be assembled over the requested range (rows that assemble are
      still written; the message gives the ranges that do not and the range that does);
      for arm: the tip path leaves the workspace (the message gives the exact times);
-     for centres: a requested crank angle cannot be assembled; for synthesize path: no
+     for centres: a requested crank angle cannot be assembled; for polygon: one cannot
+     be assembled or is a toggle; for synthesize path: no
      start found a four-bar that assembles at every target
 
 Examples:
@@ -237,6 +268,8 @@ Examples:
   linkwright-cli analyze --example funsho-fourbar --forces --step 30
   linkwright-cli arm --example seed-arm --format table
   linkwright-cli centres --example thesis-crank-rocker --at 0,90
+  linkwright-cli polygon --example thesis-crank-rocker --at 30
+  linkwright-cli inversions --fourbar 60,25,70,45
   linkwright-cli synthesize swing --swing 60 --time-ratio 1.3 --rocker 50 -o design.json
 )";
 
@@ -245,10 +278,12 @@ Examples:
 std::string helpText(const std::string& topic) {
   std::string text = kUsage;
   const bool sweeps = topic.empty() || topic == "analyze" || topic == "extremes";
-  if (sweeps || topic == "classify" || topic == "centres") text += kMechanismOptions;
+  if (sweeps || topic == "classify" || topic == "centres" || topic == "polygon" || topic == "inversions")
+    text += kMechanismOptions;
   if (sweeps) text += std::string("\n") + kAnalyzeOptions;
   if (topic.empty() || topic == "classify") text += std::string("\n") + kClassifyOptions;
   if (topic.empty() || topic == "centres") text += std::string("\n") + kCentresOptions;
+  if (topic.empty() || topic == "polygon" || topic == "inversions") text += std::string("\n") + kPolygonOptions;
   if (topic.empty() || topic == "arm") text += std::string(topic.empty() ? "\n" : "") + kArmOptions;
   if (topic.empty() || topic == "accuracy") text += std::string("\n") + kAccuracyOptions;
   if (topic.empty() || topic == "synthesize") text += std::string("\n") + kSynthesizeOptions;
@@ -266,10 +301,11 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   case Command::Help:
     if (!inv.helpTopic.empty() && inv.helpTopic != "analyze" && inv.helpTopic != "classify" &&
         inv.helpTopic != "extremes" && inv.helpTopic != "arm" && inv.helpTopic != "centres" &&
-        inv.helpTopic != "accuracy" && inv.helpTopic != "synthesize" && inv.helpTopic != "examples" &&
-        inv.helpTopic != "linkwright-cli") {
+        inv.helpTopic != "polygon" && inv.helpTopic != "inversions" && inv.helpTopic != "accuracy" &&
+        inv.helpTopic != "synthesize" && inv.helpTopic != "examples" && inv.helpTopic != "linkwright-cli") {
       err << "linkwright-cli: no help for '" << inv.helpTopic
-          << "' (commands: analyze, extremes, classify, arm, centres, accuracy, synthesize, examples)\n";
+          << "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, synthesize, "
+             "examples)\n";
       return toInt(ExitCode::BadInput);
     }
     out << helpText(inv.helpTopic == "linkwright-cli" || inv.helpTopic == "examples" ? "" : inv.helpTopic);
@@ -281,6 +317,8 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   case Command::Extremes: return toInt(runExtremes(inv, out, err));
   case Command::Arm: return toInt(runArm(inv, out, err));
   case Command::Centres: return toInt(runCentres(inv, out, err));
+  case Command::Polygon: return toInt(runPolygon(inv, out, err));
+  case Command::Inversions: return toInt(runInversions(inv, out, err));
   case Command::Accuracy: return toInt(runAccuracy(inv, out, err));
   case Command::Synthesize: return toInt(runSynthesize(inv, out, err));
   }
