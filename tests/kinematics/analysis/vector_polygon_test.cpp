@@ -11,11 +11,14 @@
 
 #include "kinematics/analysis/vector_polygon.h"
 #include "kinematics/design/examples.h"
+#include "kinematics/model/driver.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/shaper.h"
 #include "kinematics/model/slider_crank.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/vec2.h"
+#include "kinematics/solve/sweep.h"
+#include "tests/kinematics/dynamics/dynamics_cases.h"
 
 #include <catch2/catch.hpp>
 
@@ -211,4 +214,46 @@ TEST_CASE("a polygon at a toggle does not exist, and says why", "[vector_polygon
   const auto p = polygonsAt(m, {0.0, 1.0, 0.0});
   REQUIRE_FALSE(p);
   CHECK(p.error().code == ErrorCode::Singular);
+}
+
+TEST_CASE("a pin on a turning guide (PRP yoke): the slide and its Coriolis term in closed form", "[vector_polygon]") {
+  // C = (50, 50 tan θ) on the crank's line: s = |O2C| = 50 / cos θ, so ṡ = 50 sin θ / cos² θ · ω,
+  // and the Coriolis term is 2ω ṡ e⊥ with e along the crank.
+  const Mechanism m = linkwright::test::prpYoke();
+  const double deg = GENERATE(-50.0, -10.0, 25.0, 60.0);
+  CAPTURE(deg);
+  const double theta = degToRad(deg), omega = 3.0;
+  const auto p = polygonsAt(m, {theta, omega, kCrankAlpha});
+  REQUIRE(p);
+  checkSidesClose(p->velocity);
+  checkSidesClose(p->acceleration);
+  const Eigen::Vector2d e(std::cos(theta), std::sin(theta));
+  const double sDot = 50.0 * std::sin(theta) / (std::cos(theta) * std::cos(theta)) * omega;
+  const PolygonVector& slide = find(p->velocity, "V_CC'");
+  checkNear(slide.value(), sDot * e, 1e-9 * sizeOf(p->velocity));
+  checkNear(find(p->acceleration, "A^c_C").value(), 2.0 * omega * sDot * perp(e), 1e-9 * sizeOf(p->acceleration));
+  CHECK(p->velocity.equations[1].text == "V_C = V_C' + V_CC'");
+}
+
+TEST_CASE("every built-in example's polygons close on the solver", "[vector_polygon]") {
+  // Six-bars, Newton-solved triads (absolute arrows), a path-driven arm and an actuator-driven
+  // boom (its cylinder turns while it extends: a Coriolis term) included.
+  for (const Example& ex : examples()) {
+    CAPTURE(ex.name);
+    SweepSpec spec{degToRad(ex.fromDeg), degToRad(ex.toDeg), 7, ex.omega, kCrankAlpha};
+    if (ex.time) spec = SweepSpec{0.0, 0.0, 7, 0.0, 0.0, ex.time};
+    if (inputKind(ex.mechanism) != InputKind::Angle && !ex.time) continue;
+    const auto s = sweep(ex.mechanism, spec);
+    REQUIRE(s);
+    int drawn = 0;
+    for (std::size_t j = 0; j < s->size(); ++j) {
+      if (!s->ok(j)) continue;
+      const auto p = polygonsAt(ex.mechanism, sweepDriver(spec, j));
+      REQUIRE(p);
+      checkSidesClose(p->velocity);
+      checkSidesClose(p->acceleration);
+      ++drawn;
+    }
+    CHECK(drawn > 0);
+  }
 }
