@@ -30,6 +30,9 @@ const std::set<std::string>& optionsOf(Command command) {
   static const std::set<std::string> centres{"--fourbar", "--example", "--unit", "--branch", "--at"};
   static const std::set<std::string> dxf{"--fourbar", "--example", "--unit",  "--branch", "--coupler-point",
                                          "--at",      "--hole",    "--width", "-o",       "--output"};
+  static const std::set<std::string> polygon{"--fourbar", "--example", "--unit",  "--branch", "--at",
+                                             "--rpm",     "--omega",   "--alpha", "--json"};
+  static const std::set<std::string> inversions{"--fourbar", "--example", "--unit", "--branch", "--json"};
   static const std::set<std::string> accuracy{"--example", "-o", "--output", "--svg"};
   static const std::set<std::string> none{};
   switch (command) {
@@ -38,6 +41,8 @@ const std::set<std::string>& optionsOf(Command command) {
   case Command::Extremes: return extremes;
   case Command::Arm: return arm;
   case Command::Centres: return centres;
+  case Command::Polygon: return polygon;
+  case Command::Inversions: return inversions;
   case Command::Accuracy: return accuracy;
   case Command::Dxf: return dxf;
   default: return none;
@@ -52,6 +57,8 @@ const char* commandName(Command command) {
   case Command::Examples: return "examples";
   case Command::Arm: return "arm";
   case Command::Centres: return "centres";
+  case Command::Polygon: return "polygon";
+  case Command::Inversions: return "inversions";
   case Command::Accuracy: return "accuracy";
   case Command::Dxf: return "dxf";
   default: return "linkwright-cli";
@@ -239,10 +246,12 @@ std::optional<Error> checkCombination(const Invocation& inv) {
   if (inv.command == Command::Arm) return checkArm(inv);
   if (inv.command == Command::Dxf)
     if (auto e = checkDxf(inv)) return e;
-  if (inv.command == Command::Centres && inv.atDeg.empty())
-    return usage("--at", "centres needs --at DEG (the crank angle, degrees; repeatable or DEG,DEG,...)");
+  if ((inv.command == Command::Centres || inv.command == Command::Polygon) && inv.atDeg.empty())
+    return usage("--at", std::string(commandName(inv.command)) +
+                             " needs --at DEG (the crank angle, degrees; repeatable or DEG,DEG,...)");
   const bool needsMechanism = inv.command == Command::Analyze || inv.command == Command::Classify ||
                               inv.command == Command::Extremes || inv.command == Command::Centres ||
+                              inv.command == Command::Polygon || inv.command == Command::Inversions ||
                               inv.command == Command::Dxf;
   if (needsMechanism && !inv.fourBar && !inv.example && !inv.documentPath)
     return usage("--fourbar", std::string(commandName(inv.command)) +
@@ -262,10 +271,9 @@ std::optional<Error> checkCombination(const Invocation& inv) {
 kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& args) {
   Invocation inv;
   if (args.empty())
-    return usage(
-        "COMMAND",
-        "missing command (analyze, extremes, classify, arm, centres, accuracy, dxf, synthesize or examples; see "
-        "--help)");
+    return usage("COMMAND",
+                 "missing command (analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, "
+                 "synthesize or examples; see --help)");
   const std::string& first = args[0];
   if (first == "--help" || first == "-h" || first == "help") {
     inv.command = Command::Help;
@@ -296,15 +304,16 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   else if (first == "examples") inv.command = Command::Examples;
   else if (first == "arm") inv.command = Command::Arm;
   else if (first == "centres") inv.command = Command::Centres;
+  else if (first == "polygon") inv.command = Command::Polygon;
+  else if (first == "inversions") inv.command = Command::Inversions;
   else if (first == "accuracy") inv.command = Command::Accuracy;
   else if (first == "dxf") inv.command = Command::Dxf;
   else if (!first.empty() && first[0] == '-')
     return usage(first, "unknown option '" + first + "' (see linkwright-cli --help)");
   else
-    return usage(
-        first,
-        "unknown command '" + first +
-            "' (commands: analyze, extremes, classify, arm, centres, accuracy, dxf, synthesize, examples; see --help)");
+    return usage(first, "unknown command '" + first +
+                            "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, "
+                            "dxf, synthesize, examples; see --help)");
   if (inv.command == Command::Arm) inv.lengthUnit = "m";  // the arm's seed (004) works in metres
 
   std::set<std::string> seen;
@@ -323,6 +332,7 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
     // A bare argument names a document, for the commands that analyse a linkage.
     const bool takesDocument = inv.command == Command::Analyze || inv.command == Command::Extremes ||
                                inv.command == Command::Classify || inv.command == Command::Centres ||
+                               inv.command == Command::Polygon || inv.command == Command::Inversions ||
                                inv.command == Command::Dxf;
     if (takesDocument && !option.empty() && option[0] != '-' && !inlineValue) {
       if (inv.documentPath)

@@ -18,7 +18,21 @@
 
 namespace linkwright::cli {
 
-enum class Command { Help, Version, Examples, Analyze, Classify, Extremes, Arm, Centres, Accuracy, Synthesize, Dxf };
+enum class Command {
+  Help,
+  Version,
+  Examples,
+  Analyze,
+  Classify,
+  Extremes,
+  Arm,
+  Centres,
+  Polygon,
+  Inversions,
+  Accuracy,
+  Synthesize,
+  Dxf
+};
 
 /// Everything the user asked for. Angles in degrees and speeds as typed: converted to SI by
 /// the commands, at the edge.
@@ -57,7 +71,7 @@ struct Invocation {
   std::optional<double> speed;                   ///< length unit / s; positive, finite
   std::optional<double> stepTime;                ///< s; positive, finite
   std::optional<kinematics::Branch> elbow;       ///< up = Open, down = Crossed
-  // centres: crank angles in degrees, finite, in the order given (--at is repeatable).
+  // centres, polygon: crank angles in degrees, finite, in the order given (--at is repeatable).
   std::vector<double> atDeg;
   std::optional<std::string> svgFile;         ///< accuracy --svg: where to draw the error plot
   std::optional<SynthesisRequest> synthesis;  ///< synthesize: the problem and its options

@@ -22,6 +22,10 @@ Commands:
              a straight line (CSV)
   centres    instant centres, velocity ratio and mechanical advantage at crank angles
              (four-bars, slider-cranks)
+  polygon    velocity and acceleration polygons at crank angles: each point's vector
+             equation and its arrows, tip to tail, against the solver's exact values
+  inversions a four-bar's (or slider-crank's) four inversions: the link grounded, the
+             link driven, the textbook class
   accuracy   how far peaks read off N samples per turn are from the exact ones, and
              what each choice costs (CSV; optional SVG plot)
   dxf        the links as a DXF drawing at true size: plate outlines, pivot holes,
@@ -146,6 +150,32 @@ Output: a DXF R2000 file. Layer GROUND: each ground pivot as a hole with a centr
   Coordinates: x right, y up, as the analyze table at the same input.
 )";
 
+constexpr const char* kPolygonOptions =
+    R"(Polygon options (with the mechanism options; crank-driven linkages, see docs/classroom.md):
+  --at DEG[,DEG...]   crank angle(s), degrees CCW from the frame line, within ±1e6;
+                      repeatable
+  --rpm R | --omega W crank speed in rev/min or rad/s, CCW positive, |ω| ≤ 1e6 rad/s
+                      (default: the example's; 1 rad/s for --fourbar)
+  --alpha A           crank angular acceleration, rad/s², |α| ≤ 1e12 (default: the
+                      example's, else 0)
+  --json              machine-readable output
+Output, for the velocity polygon (length unit/s) and the acceleration polygon (length
+  unit/s²), pole o at (0, 0): each point's equation in solve order (V_C = V_B + V_CB, with
+  A^n normal, A^t tangential, A^c Coriolis, V_CC' the slide of C along a guide past C' the
+  guide's point under it), where each side of it ends and the solver's value it must end
+  on; then every arrow in drawing order: step, label, x, y, magnitude, angle (degrees CCW
+  from +x) and what it is. Exit code 3 at a crank angle that cannot be assembled or is a
+  toggle (rates, hence polygons, do not exist there).
+Inversions options (with the mechanism options; four-bars and slider-cranks):
+  --json              machine-readable output
+Output: for each link held fixed in turn, the link driven (adjacent to it), the lengths
+  as a four-bar (frame, crank, coupler, rocker), the class from Grashof's table
+  (crank-rocker, double-crank, double-rocker, change point, triple-rocker) and whether
+  the driven link turns fully; for a slider-crank: slider-crank, Whitworth or
+  crank-shaper, oscillating or rotating cylinder, fixed piston (an offset guide's
+  slotted inversions are named, not built).
+)";
+
 constexpr const char* kArmOptions =
     R"(Arm options (lengths in the length unit, default m; the shoulder is at the origin):
   --example seed-arm  seed 004's arm and path: --arm 0.3,0.2 --from-point 0.3,0
@@ -254,7 +284,8 @@ constexpr const char* kExitCodes = R"(Exit codes:
   3  the linkage cannot be assembled over the requested range (rows that assemble are
      still written; the message gives the ranges that do not and the range that does);
      for arm: the tip path leaves the workspace (the message gives the exact times);
-     for centres and dxf: a requested input cannot be assembled; for synthesize path: no
+     for centres and dxf: a requested input cannot be assembled; for polygon: a crank
+     angle cannot be assembled or is a toggle; for synthesize path: no
      start found a four-bar that assembles at every target
 
 Examples:
@@ -263,6 +294,8 @@ Examples:
   linkwright-cli arm --example seed-arm --format table
   linkwright-cli centres --example thesis-crank-rocker --at 0,90
   linkwright-cli dxf --example thesis-crank-rocker --at 30 --hole 2 -o links.dxf
+  linkwright-cli polygon --example thesis-crank-rocker --at 30
+  linkwright-cli inversions --fourbar 60,25,70,45
   linkwright-cli synthesize swing --swing 60 --time-ratio 1.3 --rocker 50 -o design.json
 )";
 
@@ -271,10 +304,13 @@ Examples:
 std::string helpText(const std::string& topic) {
   std::string text = kUsage;
   const bool sweeps = topic.empty() || topic == "analyze" || topic == "extremes";
-  if (sweeps || topic == "classify" || topic == "centres" || topic == "dxf") text += kMechanismOptions;
+  if (sweeps || topic == "classify" || topic == "centres" || topic == "polygon" || topic == "inversions" ||
+      topic == "dxf")
+    text += kMechanismOptions;
   if (sweeps) text += std::string("\n") + kAnalyzeOptions;
   if (topic.empty() || topic == "classify") text += std::string("\n") + kClassifyOptions;
   if (topic.empty() || topic == "centres") text += std::string("\n") + kCentresOptions;
+  if (topic.empty() || topic == "polygon" || topic == "inversions") text += std::string("\n") + kPolygonOptions;
   if (topic.empty() || topic == "dxf") text += std::string("\n") + kDxfOptions;
   if (topic.empty() || topic == "arm") text += std::string(topic.empty() ? "\n" : "") + kArmOptions;
   if (topic.empty() || topic == "accuracy") text += std::string("\n") + kAccuracyOptions;
@@ -292,11 +328,13 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   switch (inv.command) {
   case Command::Help:
     if (!inv.helpTopic.empty() && inv.helpTopic != "analyze" && inv.helpTopic != "classify" &&
-        inv.helpTopic != "extremes" && inv.helpTopic != "arm" && inv.helpTopic != "centres" && inv.helpTopic != "dxf" &&
+        inv.helpTopic != "extremes" && inv.helpTopic != "arm" && inv.helpTopic != "centres" &&
+        inv.helpTopic != "polygon" && inv.helpTopic != "inversions" && inv.helpTopic != "dxf" &&
         inv.helpTopic != "accuracy" && inv.helpTopic != "synthesize" && inv.helpTopic != "examples" &&
         inv.helpTopic != "linkwright-cli") {
       err << "linkwright-cli: no help for '" << inv.helpTopic
-          << "' (commands: analyze, extremes, classify, arm, centres, accuracy, dxf, synthesize, examples)\n";
+          << "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, "
+             "synthesize, examples)\n";
       return toInt(ExitCode::BadInput);
     }
     out << helpText(inv.helpTopic == "linkwright-cli" || inv.helpTopic == "examples" ? "" : inv.helpTopic);
@@ -308,6 +346,8 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   case Command::Extremes: return toInt(runExtremes(inv, out, err));
   case Command::Arm: return toInt(runArm(inv, out, err));
   case Command::Centres: return toInt(runCentres(inv, out, err));
+  case Command::Polygon: return toInt(runPolygon(inv, out, err));
+  case Command::Inversions: return toInt(runInversions(inv, out, err));
   case Command::Accuracy: return toInt(runAccuracy(inv, out, err));
   case Command::Dxf: return toInt(runDxf(inv, out, err));
   case Command::Synthesize: return toInt(runSynthesize(inv, out, err));

@@ -2,8 +2,10 @@
 // The commands behind linkwright-cli: analyze (CSV table), extremes (refined extreme values),
 // classify (Grashof class, transmission angle, limit positions, assemblable range; four-bars),
 // arm (a two-link arm's joints along a straight tip path), centres (instant centres and
-// mechanical advantage at given crank angles), dxf (the links as a DXF drawing), synthesize
-// (linkages from the motion wanted: kinematics/synthesis/) and examples (the built-ins).
+// mechanical advantage at given crank angles), polygon (velocity and acceleration polygons at
+// given crank angles), inversions (a four-bar's or slider-crank's inversions), dxf (the links
+// as a DXF drawing), synthesize (linkages from the motion wanted: kinematics/synthesis/) and
+// examples (the built-ins).
 
 #include "app/cli/arguments.h"
 #include "app/cli/exit_codes.h"
@@ -23,6 +25,8 @@ ExitCode runExamples(std::ostream& out);
 ExitCode runExtremes(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runArm(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runCentres(const Invocation& invocation, std::ostream& out, std::ostream& err);
+ExitCode runPolygon(const Invocation& invocation, std::ostream& out, std::ostream& err);
+ExitCode runInversions(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runAccuracy(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runDxf(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runSynthesize(const Invocation& invocation, std::ostream& out, std::ostream& err);

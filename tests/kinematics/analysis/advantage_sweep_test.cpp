@@ -1,0 +1,94 @@
+// The ratio columns against the two things they must agree with: the `centres` read-out at the
+// same angle (mechanicalAdvantage of instantCentres of a solved pose) and the solver's own
+// rates (ω4/ω2 from the sweep's link columns, v/ω2 for a slider). Samples that do not assemble
+// are Undefined, a toggle is Infinite, and no value is ever NaN or infinite.
+
+#include "kinematics/analysis/advantage_sweep.h"
+
+#include "kinematics/design/examples.h"
+#include "kinematics/model/fourbar.h"
+#include "kinematics/model/slider_crank.h"
+#include "kinematics/model/units.h"
+#include "kinematics/solve/pose_solver.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace linkwright::kinematics;
+
+namespace {
+
+SweepResult sweepOf(const Mechanism& m, std::size_t samples) {
+  const auto s = sweep(m, {0.0, 2.0 * kPi, samples, 2.5, 0.0});
+  REQUIRE(s);
+  return *s;
+}
+
+void checkFinite(const AdvantageSeries& series) {
+  for (std::size_t j = 0; j < series.velocityRatio.size(); ++j) {
+    CHECK(std::isfinite(series.velocityRatio[j].value));
+    CHECK(std::isfinite(series.advantage[j].value));
+    if (series.velocityRatio[j].kind != RatioKind::Finite) CHECK(series.velocityRatio[j].value == 0.0);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("four-bar ratios equal the centres read-out and the solver's ω4/ω2", "[advantage_sweep]") {
+  const Example ex = GENERATE(*findExample("thesis-crank-rocker"), *findExample("alvi-fourbar"));
+  CAPTURE(ex.name);
+  const SweepResult s = sweepOf(ex.mechanism, 73);
+  const auto series = advantageSeries(ex.mechanism, s);
+  REQUIRE(series);
+  CHECK(series->linkage == CentreLinkage::FourBar);
+  checkFinite(*series);
+  for (std::size_t j = 0; j < s.size(); ++j) {
+    CAPTURE(radToDeg(s.inputAngle[j]));
+    const auto pose = solvePose(ex.mechanism, {s.inputAngle[j], 0.0, 0.0}, SolveRequest{false, false});
+    REQUIRE(pose);
+    const MechanicalAdvantage ma = mechanicalAdvantage(instantCentres(ex.mechanism, *pose).value());
+    CHECK(series->velocityRatio[j] == ma.velocityRatio);
+    CHECK(series->advantage[j] == ma.advantage);
+    // The solver's rates: 1e-9 of the ratio's size (centres are exact line intersections).
+    REQUIRE(series->velocityRatio[j].kind == RatioKind::Finite);
+    const double solver = s.linkOmega[fourbar::kRocker.index][j] / s.linkOmega[fourbar::kCrank.index][j];
+    CHECK(std::abs(series->velocityRatio[j].value - solver) <= 1e-9 * std::max(1.0, std::abs(solver)));
+    CHECK(std::abs(series->advantage[j].value * solver - 1.0) <= 1e-9);
+  }
+}
+
+TEST_CASE("slider-crank ratios equal v/ω2 from the solver", "[advantage_sweep]") {
+  const Example ex = *findExample("ls3-engine");
+  const SweepResult s = sweepOf(ex.mechanism, 37);
+  const auto series = advantageSeries(ex.mechanism, s);
+  REQUIRE(series);
+  CHECK(series->linkage == CentreLinkage::SliderCrank);
+  checkFinite(*series);
+  for (std::size_t j = 0; j < s.size(); ++j) {
+    CAPTURE(radToDeg(s.inputAngle[j]));
+    const double v = s.velocity[slidercrank::kC.index][j].x() / 2.5;  // guide along +x, ω2 = 2.5 rad/s
+    const Ratio& r = series->velocityRatio[j];
+    REQUIRE(r.kind == RatioKind::Finite);
+    CHECK(std::abs(r.value - v) <= 1e-9 * kLs3Engine.crank);
+    // Dead centres (0° and 180°): the piston is at rest, the advantage infinite.
+    if (std::abs(std::sin(s.inputAngle[j])) < 1e-12) CHECK(series->advantage[j].kind == RatioKind::Infinite);
+  }
+}
+
+TEST_CASE("samples that do not assemble are undefined; a toggle is infinite", "[advantage_sweep]") {
+  // Non-Grashof: the crank of 60/40/50/45 cannot pass the frame line's far side.
+  const Mechanism m = makeFourBar({60.0, 40.0, 50.0, 45.0}, Branch::Open).value();
+  const SweepResult s = sweepOf(m, 181);
+  REQUIRE_FALSE(s.notAssembled.empty());
+  const auto series = advantageSeries(m, s);
+  REQUIRE(series);
+  checkFinite(*series);
+  for (std::size_t j = 0; j < s.size(); ++j)
+    if (!s.assembled(j)) CHECK(series->velocityRatio[j].kind == RatioKind::Undefined);
+  // Refused: not a four-bar or slider-crank.
+  const Example shaper = *findExample("shaper");
+  const auto refused = advantageSeries(shaper.mechanism, sweepOf(shaper.mechanism, 5));
+  REQUIRE_FALSE(refused);
+  CHECK(refused.error().code == ErrorCode::InvalidStructure);
+}
