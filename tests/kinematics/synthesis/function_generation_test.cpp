@@ -3,7 +3,8 @@
 // are the textbook's; the synthesised design, solved by the pose solver in the test, meets the
 // wanted output exactly at the precision points and its structural error equals the test's own
 // evaluation everywhere; the peak is a true maximum; least squares satisfies its normal
-// equations; defects and bad targets are reported.
+// equations; defects and bad targets are reported; a published three-position lecture problem
+// (Ohio State ME 3751, after Waldron & Kinzel) is reproduced, its printing slips explained.
 
 #include "kinematics/synthesis/function_generation.h"
 
@@ -173,4 +174,75 @@ TEST_CASE("Bad function targets are errors naming the field", "[synthesis][funct
   CHECK(fieldOf(good, {{2.0, 5.0, 11.0}}) == "points[2]");  // outside [x0, x1]
   CHECK(fieldOf(good, {{}, 2}) == "count");
   CHECK(fieldOf(good, {{}, 3, 1}) == "samples");
+}
+
+TEST_CASE("Published example: three rocker positions, Ohio State ME 3751 Lecture 12 (Waldron & Kinzel 3.2)",
+          "[synthesis][function][published]") {
+  // H.-J. Su, ME 3751 "Kinematics and mechanisms", Lecture 12 "Analytical synthesis of 4-bar
+  // with three rocker positions" (after Waldron & Kinzel, sec. 3.2), the lecture problem on
+  // slides 12-13 (the PDF in github.com/haijunsu-osu/rocker_synthesis_4bar):
+  // θ = 35.02°, 67.50°, 100.0° with φ = 91.21°, 101.79°, 117.19°, base link
+  // r1 = 4.5 in. Its z1, z2, z3 are our K3, K1, K2 (same equation, same signs). Printed:
+  // z = 5.150, 11.20, 5.321; R2 = 0.4018, R3 = 4.198, R4 = 0.8456 in.
+  // Those printed numbers are 0.07 % to 1.0 % off the exact solution of the slide's own angles.
+  // Its matrix is rounded to four places and has 0.1732 for −cos 100° = 0.17365; even that
+  // printed matrix solves to z = 5.186, 11.29, 5.364, so the printed z (and the lengths from
+  // them) carry a further slip of about 1 %, which the ill-conditioned system (det 0.0083)
+  // magnifies. We test the exact values, solved here by Eigen from the angles (not by the
+  // synthesis), to 1e-9, and the printed ones within 1.2 %, the size of that published error.
+  const double th[3] = {35.02, 67.5, 100.0}, ph[3] = {91.21, 101.79, 117.19};
+  Eigen::Matrix3d m;
+  Eigen::Vector3d rhs;
+  for (int j = 0; j < 3; ++j) {
+    m.row(j) << std::cos(degToRad(ph[j])), -std::cos(degToRad(th[j])), 1.0;
+    rhs(j) = std::cos(degToRad(th[j] - ph[j]));
+  }
+  const Eigen::Vector3d k = m.partialPivLu().solve(rhs);  // K1, K2, K3
+  // The CLI has no "these angle pairs" input, so the pairs are a function: φ is a quadratic in
+  // θ through the three points, φ = C·x² + const with x = θ + B/2C, generated as `square` with
+  // x at the three precision points (docs/synthesis.md gives the command).
+  const double f01 = (ph[1] - ph[0]) / (th[1] - th[0]), f12 = (ph[2] - ph[1]) / (th[2] - th[1]);
+  const double c2 = (f12 - f01) / (th[2] - th[0]), c1 = f01 - c2 * (th[0] + th[1]);
+  const double shift = c1 / (2.0 * c2);
+  const FunctionTarget t{[](double x) { return x * x; },
+                         th[0] + shift,
+                         th[2] + shift,
+                         degToRad(th[0]),
+                         degToRad(th[2] - th[0]),
+                         degToRad(ph[0]),
+                         degToRad(ph[2] - ph[0]),
+                         4.5,
+                         "in"};
+  const auto s = synthesiseFunction(t, {{th[0] + shift, th[1] + shift, th[2] + shift}});
+  REQUIRE(s.ok());
+  REQUIRE(s->precisionAngles.size() == 3);
+  for (int j = 0; j < 3; ++j) {
+    CHECK(s->precisionAngles[j].input == within(degToRad(th[j]), 1e-12));
+    CHECK(s->precisionAngles[j].output == within(degToRad(ph[j]), 1e-12));
+  }
+  CHECK(s->k.k1 == within(k(0), 1e-9 * k(0)));
+  CHECK(s->k.k2 == within(k(1), 1e-9 * k(1)));
+  CHECK(s->k.k3 == within(k(2), 1e-9 * k(2)));
+  const FourBarLengths& l = s->linkage.lengths;
+  CHECK_FALSE(s->linkage.crankReversed);
+  CHECK_FALSE(s->linkage.rockerReversed);
+  CHECK(l.frame == 4.5);
+  CHECK(l.crank == within(4.5 / k(0), 1e-9));
+  CHECK(l.rocker == within(4.5 / k(1), 1e-9));
+  CHECK(l.coupler * l.coupler ==
+        within(l.crank * l.crank + l.rocker * l.rocker + 4.5 * 4.5 - 2.0 * l.crank * l.rocker * k(2), 1e-9));
+  // The slide's printed numbers, within their 1.2 % published error.
+  CHECK(s->k.k3 == within(5.150, 0.012 * 5.150));
+  CHECK(s->k.k1 == within(11.20, 0.012 * 11.20));
+  CHECK(s->k.k2 == within(5.321, 0.012 * 5.321));
+  CHECK(l.crank == within(0.4018, 0.012 * 0.4018));
+  CHECK(l.coupler == within(4.198, 0.012 * 4.198));
+  CHECK(l.rocker == within(0.8456, 0.012 * 0.8456));
+  // The linkage, solved afresh by the pose solver, puts the rocker at each φ.
+  for (int j = 0; j < 3; ++j) {
+    CAPTURE(th[j]);
+    const auto pose = solvePose(s->candidate.design.mechanism, {degToRad(th[j]), 0.0, 0.0}, {false, false});
+    REQUIRE(pose.ok());
+    CHECK(angleDifference(pose->linkAngle[fourbar::kRocker.index], degToRad(ph[j])) == within(0.0, 1e-9));
+  }
 }

@@ -2,7 +2,8 @@
 // poses and two circle points, solved by the pose solver at the reported crank angles, puts
 // the coupler point on every pose and turns the coupler by the poses' angles, to 1e-9 of the
 // link lengths; the design is recognised as a four-bar with a tilted frame; defects and bad
-// poses are reported.
+// poses are reported; Norton's two-position Example 5-1, as an independent script solves it,
+// comes out to that script's digits.
 
 #include "kinematics/synthesis/motion_generation.h"
 
@@ -12,6 +13,7 @@
 
 #include "tests/support/approx.h"
 
+#include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -114,4 +116,53 @@ TEST_CASE("Bad poses and circle points are errors naming the field", "[synthesis
   const auto pole = synthesiseMotion2(turn, {{10.0, 0.0}, {0.0, 5.0}}, 5.0, 5.0);
   REQUIRE_FALSE(pole.ok());
   CHECK(pole.error().field == "circlePoints.a");
+}
+
+TEST_CASE("Published example: two positions, Norton Example 5-1 (as solved in orxshi/fourbar)",
+          "[synthesis][motion][published]") {
+  // R. L. Norton, "Design of Machinery", sec. 5.4 (two-position motion generation by analytical
+  // synthesis), Example 5-1, with its inputs as transcribed in github.com/orxshi/fourbar,
+  // fourbar2/syn_two_pos_motion_gen.py: P21 = 2.416 at 165.2°, coupler rotation α2 = 43.3°;
+  // free choices Z = 1.298 at 26.5°, S = 1.035 at 104.1° (the coupler point P seen from the
+  // moving pivots A and B at pose 1), crank rotation β2 = 38.4°, rocker rotation γ2 = 85.6°.
+  // The outputs are that repository's solution (fourbar2/RRR1_motion.py records it; the book's
+  // printed answers were not in the corpora): a = 2.4669035392921197, b = 1.47616572201359,
+  // c = 1.4856279407910054, d = 1.7007994988171315, frame O2O4 at 1.1066135686116216 rad,
+  // crank at 0.14254149630753243 rad from the frame at pose 1. Both solutions are exact in the
+  // same inputs, so the tolerance is round-off (1e-9).
+  // Linkwright's free choices are the circle points and the centre points' places on their
+  // bisectors. With P1 at the origin, A1 = −Z and B1 = −S; a crank that turns β carries A1 to
+  // A2 about the point of the bisector at (|A1A2| / 2) / tan(β / 2) from the chord's midpoint,
+  // to the left of A1→A2 for a positive turn.
+  const double alpha2 = degToRad(43.3), beta2 = degToRad(38.4), gamma2 = degToRad(85.6);
+  const Eigen::Vector2d z = 1.298 * Eigen::Vector2d(std::cos(degToRad(26.5)), std::sin(degToRad(26.5)));
+  const Eigen::Vector2d sv = 1.035 * Eigen::Vector2d(std::cos(degToRad(104.1)), std::sin(degToRad(104.1)));
+  const Eigen::Vector2d p2 = 2.416 * Eigen::Vector2d(std::cos(degToRad(165.2)), std::sin(degToRad(165.2)));
+  const std::vector<CouplerPose> poses{{{0.0, 0.0}, degToRad(26.5)}, {p2, degToRad(26.5) + alpha2}};
+  const Eigen::Rotation2Dd turn(alpha2);
+  const auto along = [&](const Eigen::Vector2d& first, double rotation) {
+    return 0.5 * (p2 + turn * first - first).norm() / std::tan(0.5 * rotation);
+  };
+  const auto s =
+      synthesiseMotion2(poses, {-z, -sv}, along(-z, beta2), along(-sv, gamma2), DefectBounds{}, {false, "in"});
+  REQUIRE(s.ok());
+  CHECK(s->lengths.crank == within(2.4669035392921197, 1e-9));
+  CHECK(s->lengths.coupler == within(1.47616572201359, 1e-9));
+  CHECK(s->lengths.rocker == within(1.4856279407910054, 1e-9));
+  CHECK(s->lengths.frame == within(1.7007994988171315, 1e-9));
+  const auto fourBar = asFourBar(s->candidate.design.mechanism);
+  REQUIRE(fourBar.has_value());
+  CHECK(fourBar->frameAngle == within(1.1066135686116216, 1e-9));
+  CHECK(angleDifference(s->crankAngles[0] - fourBar->frameAngle, 0.14254149630753243) == within(0.0, 1e-9));
+  // Checked by the pose solver: P on both poses, the coupler turned α2, and the crank and the
+  // rocker turned by the example's free choices β2 and γ2.
+  checkPassesThrough(*s, poses);
+  CHECK(angleDifference(s->crankAngles[1] - s->crankAngles[0], beta2) == within(0.0, 1e-12));
+  const Mechanism& m = s->candidate.design.mechanism;
+  const auto first = solvePose(m, {s->crankAngles[0], 0.0, 0.0}, {false, false});
+  const auto second = solvePose(m, {s->crankAngles[1], 0.0, 0.0}, {false, false});
+  REQUIRE(first.ok());
+  REQUIRE(second.ok());
+  const double rockerTurn = second->linkAngle[fourbar::kRocker.index] - first->linkAngle[fourbar::kRocker.index];
+  CHECK(angleDifference(rockerTurn, gamma2) == within(0.0, 1e-9));
 }

@@ -1,7 +1,7 @@
 // Tests kinematics/synthesis/stroke_shaper.h: the synthesised crank-shaper, analysed by the
 // existing quick-return analysis (quick_return.h, not the synthesis), has the target stroke
 // and time ratio to 1e-9, with the guide where asked; its worst link transmission bounds a
-// fine sweep's; bad targets name the field.
+// fine sweep's; bad targets name the field; Khurmi & Gupta's Example 5.2 comes out exactly.
 
 #include "kinematics/synthesis/stroke_shaper.h"
 
@@ -72,4 +72,36 @@ TEST_CASE("Bad shaper targets are errors naming the field", "[synthesis][shaper]
   REQUIRE_FALSE(s.ok());
   CHECK(s.error().field == field);
   CHECK(s.error().message.find(field) != std::string::npos);
+}
+
+TEST_CASE("Published example: Khurmi & Gupta's crank and slotted lever (Example 5.2)",
+          "[synthesis][shaper][published]") {
+  // R. S. Khurmi & J. K. Gupta, "Theory of Machines", ch. 5 "Simple Mechanisms", Example 5.2
+  // (p. 110), as its Python textbook-companion solution prints it (read in the copy in the
+  // Nemotron-CC-Math web crawl, huggingface.co/datasets/nvidia/Nemotron-CC-Math-v1; edition not
+  // stated there): fixed centres AC = 240 mm, driving
+  // crank CB1 = 120 mm, slotted bar AP1 = 450 mm, the line of stroke through the extreme
+  // positions of the bar's free end. Printed: time ratio of cutting to return stroke 2, stroke
+  // R1R2 = P1P2 = 450 mm. We give Linkwright that stroke, time ratio and crank and expect the
+  // book's frame and bar back; the book's numbers are exact (sin 30° = 120/240), so the
+  // tolerance is round-off. The connecting link P→R is not dimensioned in the example (any
+  // length gives the same stroke when the guide passes through P1 and P2): 150 mm here.
+  const double frame = 240.0, bar = 450.0, crank = 120.0, stroke = 450.0, timeRatio = 2.0;
+  // The book's guide: through the bar tip's extremes, which sit at O4 + bar·cos 30° above O4.
+  ShaperTarget target{stroke, timeRatio, crank, 150.0};
+  target.guideHeight = -frame + bar * std::cos(degToRad(30.0));
+  const auto s = synthesiseShaper(target);
+  REQUIRE(s.ok());
+  CHECK(s->geometry.rockerPivot.norm() == within(frame, 1e-12 * frame));
+  CHECK(s->geometry.rocker == within(bar, 1e-12 * bar));
+  CHECK(s->geometry.crank == crank);
+  // Checked by the existing quick-return analysis, not the synthesis: the book's time ratio,
+  // stroke and a bar swing of 2 × 30° (its inclination to the vertical at the extremes).
+  const auto structure = asQuickReturn(s->candidate.design.mechanism);
+  REQUIRE(structure.has_value());
+  const auto r = shaperQuickReturn(structure->geometry, structure->ramBranch);
+  REQUIRE(r.has_value());
+  CHECK(r->timeRatio == within(timeRatio, 1e-9));
+  CHECK(r->stroke == within(stroke, 1e-9 * stroke));
+  CHECK(r->rockerSwing == within(degToRad(60.0), 1e-9));
 }

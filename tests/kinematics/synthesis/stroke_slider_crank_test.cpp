@@ -1,7 +1,8 @@
 // Tests kinematics/synthesis/stroke_slider_crank.h: the synthesised slider-crank, solved by the
 // pose solver (not by the synthesis), has its slider at rest exactly twice a turn, the given
 // stroke between those ends and the given time ratio, to 1e-9; Q = 1 gives the in-line
-// slider-crank with the crank half the stroke; bad targets name the field.
+// slider-crank with the crank half the stroke; bad targets name the field; a published exam
+// problem's offset slider-crank (GATE 2025) comes back from its stroke and time ratio.
 
 #include "kinematics/synthesis/stroke_slider_crank.h"
 
@@ -137,4 +138,39 @@ TEST_CASE("Bad stroke targets are errors naming the field", "[synthesis][slider]
   REQUIRE_FALSE(s.ok());
   CHECK(s.error().field == field);
   CHECK_FALSE(s.error().message.empty());
+}
+
+TEST_CASE("Published example: the GATE 2025 offset slider-crank (crank 30, rod 50, offset 10 mm)",
+          "[synthesis][slider][published]") {
+  // GATE 2025 Mechanical Engineering, the offset slider-crank stroke question, in the worked
+  // solution at examprev.com/question/mechanical-engineering-gate-2025-question-60: crank
+  // r = 30 mm, rod l = 50 mm, offset e = 10 mm; the slider's ends at sqrt((r + l)² − e²) =
+  // sqrt(6300) = 79.37 mm and sqrt((l − r)² − e²) = sqrt(300) = 17.32 mm from the crank pivot's
+  // foot on the guide, stroke 62.05 ≈ 62 mm. This is the analysis direction: we give
+  // Linkwright the printed stroke (its exact form) with the rod, and the example's time ratio,
+  // which it does not print, from its dimensions: the crank turns 180° + α from end to end
+  // with α = asin(e / (l − r)) − asin(e / (l + r)) = 30° − 7.18°. The synthesis must give
+  // back the crank and offset exactly, and the printed ends to their two decimals.
+  const double r = 30.0, l = 50.0, e = 10.0;
+  const double stroke = std::sqrt(6300.0) - std::sqrt(300.0);
+  const double alpha = std::asin(e / (l - r)) - std::asin(e / (l + r));
+  const double timeRatio = (kPi + alpha) / (kPi - alpha);
+  const auto s = synthesiseSliderCrank({stroke, timeRatio, SliderChoice::Rod, l});
+  REQUIRE(s.ok());
+  CHECK(s->geometry.crank == within(r, 1e-9));
+  CHECK(s->geometry.offset == within(e, 1e-9));
+  CHECK(s->nearEnd == within(17.32, 0.005));
+  CHECK(s->farEnd == within(79.37, 0.005));
+  CHECK(s->farEnd - s->nearEnd == within(62.05, 0.005));
+  // The other free choice, the offset, gives the rod back.
+  const auto byOffset = synthesiseSliderCrank({stroke, timeRatio, SliderChoice::Offset, e});
+  REQUIRE(byOffset.ok());
+  CHECK(byOffset->geometry.crank == within(r, 1e-9));
+  CHECK(byOffset->geometry.rod == within(l, 1e-9));
+  // Checked by the pose solver, not the synthesis: the slider stops at the printed stroke
+  // (to its two decimals) and the crank arcs between the stops have the example's ratio.
+  const Ends ends = solvedEnds(s->candidate.design.mechanism);
+  REQUIRE(ends.crankAngles.size() == 2);
+  CHECK(ends.stroke == within(62.05, 0.005));
+  CHECK(ends.timeRatio == within(timeRatio, 1e-9));
 }
