@@ -26,6 +26,8 @@ std::string guiUsage() {
          "  --crank-angle DEG   crank angle to show, degrees (default 0)\n"
          "  --presentation      large fonts and lines, full screen\n"
          "  --forces            open on the Forces tab, with force arrows on the canvas\n"
+         "  --centres           draw the instant centres, Kennedy's lines and the centrodes\n"
+         "                      (four-bars and slider-cranks; View ▸ Instant centres)\n"
          "  --help, --version\n\n"
          "Exit codes: 0 success, 1 the screenshot could not be written, 2 bad usage or a file\n"
          "that cannot be opened (the message says why).\n";
@@ -39,10 +41,11 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
   const QCommandLineOption version("version", {});
   const QCommandLineOption presentation("presentation", {});
   const QCommandLineOption forces("forces", {});
+  const QCommandLineOption centres("centres", {});
   const QCommandLineOption example("example", {}, "NAME");
   const QCommandLineOption screenshot("screenshot", {}, "FILE");
   const QCommandLineOption crankAngle("crank-angle", {}, "DEG");
-  parser.addOptions({help, version, presentation, forces, example, screenshot, crankAngle});
+  parser.addOptions({help, version, presentation, forces, centres, example, screenshot, crankAngle});
   parser.addPositionalArgument("file", {});
   QStringList arguments{"linkwright"};
   for (const std::string& a : args) arguments << QString::fromStdString(a);
@@ -61,6 +64,7 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
   o.version = parser.isSet(version);
   o.presentation = parser.isSet(presentation);
   o.forces = parser.isSet(forces);
+  o.centres = parser.isSet(centres);
   if (parser.isSet(example)) {
     const std::string name = parser.value(example).toStdString();
     if (!kinematics::designForExample(name)) {

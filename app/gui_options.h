@@ -1,6 +1,6 @@
 #pragma once
 // The GUI's command line: linkwright [FILE] [--example NAME] [--screenshot FILE.png]
-// [--presentation] [--forces] [--crank-angle DEG] [--help] [--version].
+// [--presentation] [--forces] [--centres] [--crank-angle DEG] [--help] [--version].
 
 #include <optional>
 #include <string>
@@ -14,7 +14,8 @@ struct GuiOptions {
   std::optional<std::string> screenshot;  ///< render the window to this PNG and exit
   std::optional<double> crankAngleDeg;    ///< crank angle to show (default 0°)
   bool presentation = false;
-  bool forces = false;  ///< start on the Forces tab with force arrows shown
+  bool forces = false;   ///< start on the Forces tab with force arrows shown
+  bool centres = false;  ///< draw the instant centres and centrodes
   bool help = false;
   bool version = false;
 };

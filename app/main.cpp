@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
   if (options->crankAngleDeg) window.document()->setCrankAngle(k::degToRad(*options->crankAngleDeg));
   if (options->presentation) window.setPresentationMode(true);
   if (options->forces) window.showForces();
+  if (options->centres) window.setShowInstantCentres(true);
   if (options->screenshot) return takeScreenshot(window, QString::fromStdString(*options->screenshot));
   window.show();
   QTimer::singleShot(0, window.animator(), &linkwright::ui::CrankAnimator::play);

@@ -6,6 +6,7 @@
 #include "ui/canvas/canvas_style.h"
 #include "ui/canvas/drag_handles.h"
 #include "ui/canvas/feasible_range_item.h"
+#include "ui/canvas/instant_centres_item.h"
 #include "ui/canvas/label_item.h"
 #include "ui/canvas/mechanism_items.h"
 #include "ui/document/mechanism_document.h"
@@ -37,9 +38,12 @@ QString formatMagnitude(double value) {
 }  // namespace
 
 LinkageScene::LinkageScene(QObject* parent)
-    : QGraphicsScene(parent), m_range(new FeasibleRangeItem), m_message(new LabelItem) {
+    : QGraphicsScene(parent), m_range(new FeasibleRangeItem), m_centres(new InstantCentresItem),
+      m_message(new LabelItem) {
   setBackgroundBrush(Qt::white);
   addItem(m_range);
+  addItem(m_centres);
+  m_centres->setVisible(false);
   addItem(m_message);
   m_message->setBoxed(true);
   m_message->setMaximumWidth(kMessageWidthPx);
@@ -73,6 +77,7 @@ void LinkageScene::updateDesign(const MechanismDocument& document) {
   // Slideways and slotted bars reach a little past the points; a fit shows them whole.
   if (const QRectF extra = m_items->extraExtent(); !extra.isNull()) m_bounds = m_bounds.united(extra);
   computeArrowScales(document);
+  if (m_centres->isVisible()) m_centres->setCycle(m, document.sweep());
   const double margin = 0.1 * linkageSize();
   setSceneRect(m_bounds.adjusted(-margin, -margin, margin, margin));  // what an export shows
   updatePose(document);
@@ -150,6 +155,7 @@ void LinkageScene::computeArrowScales(const MechanismDocument& document) {
 
 void LinkageScene::updatePose(const MechanismDocument& document) {
   m_items->setPose(document.mechanism(), document.pose());
+  if (m_centres->isVisible()) m_centres->setPose(document.mechanism(), document.pose());
   updateArrows(document);
 }
 
@@ -177,6 +183,7 @@ void LinkageScene::setPresentationScale(double factor) {
   m_presentationScale = factor;
   if (m_items) m_items->setPresentationScale(factor);
   m_range->setPresentationScale(factor);
+  m_centres->setPresentationScale(factor);
   m_message->setScale(factor);
   for (auto* arrows : {&m_velocityArrows, &m_accelerationArrows})
     for (ArrowItem* arrow : *arrows)
@@ -193,6 +200,13 @@ void LinkageScene::setShowAccelerationArrows(bool show) {
   m_showAcceleration = show;
   for (ArrowItem* arrow : m_accelerationArrows)
     if (arrow != nullptr) arrow->setVisible(false);
+}
+
+void LinkageScene::setShowInstantCentres(bool show, const MechanismDocument& document) {
+  m_centres->setVisible(show);
+  if (!show) return;
+  m_centres->setCycle(document.mechanism(), document.sweep());
+  m_centres->setPose(document.mechanism(), document.pose());
 }
 
 std::optional<QPointF> LinkageScene::handlePosition(const DragHandle& handle) const {

@@ -26,6 +26,7 @@ namespace linkwright::ui {
 class ArrowItem;
 class CouplerPathItem;
 class FeasibleRangeItem;
+class InstantCentresItem;
 class LabelItem;
 class LinkItem;
 class MechanismDocument;
@@ -48,6 +49,9 @@ public:
   void setPresentationScale(double factor);
   void setShowVelocityArrows(bool show);
   void setShowAccelerationArrows(bool show);
+  /// The instant centres, Kennedy's lines and the centrodes (instant_centres_item.h), solved
+  /// from `document` now and on every change while shown.
+  void setShowInstantCentres(bool show, const MechanismDocument& document);
 
   /// Where the drawing lies (model units): every point over the cycle, the current pose and
   /// the crank's range arc. Set by updateDesign.
@@ -80,6 +84,7 @@ public:
   const SliderBlockItem* sliderBlock(kinematics::PointId joint) const;
   const SlidewayItem* slideway(kinematics::PointId joint) const;
   const FeasibleRangeItem* feasibleRangeItem() const { return m_range; }
+  const InstantCentresItem* instantCentresItem() const { return m_centres; }
   /// Arrows at every moving point; nullptr for ground pivots.
   const ArrowItem* velocityArrow(kinematics::PointId point) const;
   const ArrowItem* accelerationArrow(kinematics::PointId point) const;
@@ -98,6 +103,7 @@ private:
   std::unique_ptr<MechanismItems> m_items;
   std::vector<DragHandle> m_handles;
   FeasibleRangeItem* m_range;
+  InstantCentresItem* m_centres;
   std::vector<ArrowItem*> m_velocityArrows;  // per point; null for ground pivots
   std::vector<ArrowItem*> m_accelerationArrows;
   LabelItem* m_message;

@@ -64,6 +64,11 @@ void LinkageView::setShowAccelerationArrows(bool show) {
   m_scene->updatePose(*m_document);
 }
 
+void LinkageView::setShowInstantCentres(bool show) {
+  m_scene->setShowInstantCentres(show, *m_document);
+  viewport()->update();
+}
+
 void LinkageView::setPresentationScale(double factor) {
   if (!(factor > 0.0) || !std::isfinite(factor)) return;
   m_presentationScale = std::clamp(factor, 0.5, 4.0);

@@ -39,6 +39,8 @@ public:
   /// Arrows of v and a at every moving point, to a scale fixed per design; hidden at a toggle.
   void setShowVelocityArrows(bool show);
   void setShowAccelerationArrows(bool show);
+  /// Instant centres, Kennedy's lines and centrodes of a four-bar or slider-crank.
+  void setShowInstantCentres(bool show);
   /// 1 normal; about 2 for presentation (thicker links, bigger pins and labels).
   void setPresentationScale(double factor);
   double presentationScale() const { return m_presentationScale; }

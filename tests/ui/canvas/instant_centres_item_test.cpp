@@ -1,0 +1,79 @@
+// View ▸ Instant centres on the canvas (ui/canvas/instant_centres_item.h): what the item draws
+// is the core's instant centres at the document's pose (the `centres` command's numbers) and
+// follows the crank; its moving centrode, placed with the coupler, touches the fixed one at
+// I13 at every sample of the cycle; a linkage Kennedy's theorem does not close for shows the
+// core's reason and draws nothing; hidden, nothing is solved.
+
+#include "ui/canvas/instant_centres_item.h"
+
+#include "tests/ui/canvas/canvas_test_support.h"
+
+#include "kinematics/analysis/instant_centres.h"
+#include "kinematics/design/design.h"
+#include "kinematics/model/units.h"
+
+#include <catch2/catch.hpp>
+
+using namespace linkwright;
+namespace k = kinematics;
+
+namespace {
+
+const ui::InstantCentresItem& centresItem(ui::test::ShownView& v) { return *v.scene().instantCentresItem(); }
+
+}  // namespace
+
+TEST_CASE("the canvas's instant centres are the core's at the crank angle shown, and follow it",
+          "[ui][canvas][centres]") {
+  const std::string example =
+      GENERATE(std::string("thesis-crank-rocker"), std::string("alvi-fourbar"), std::string("ls3-engine"));
+  CAPTURE(example);
+  ui::test::ShownView v(*k::designForExample(example));
+  CHECK_FALSE(centresItem(v).isVisible());
+  CHECK_FALSE(centresItem(v).centres().has_value());  // hidden: nothing solved
+  v.view.setShowInstantCentres(true);
+  REQUIRE(centresItem(v).isVisible());
+  for (const double deg : {0.0, 37.0, 90.0, 215.0}) {
+    CAPTURE(deg);
+    v.document.setCrankAngle(k::degToRad(deg));
+    const auto expected = k::instantCentres(v.document.mechanism(), v.document.pose());
+    REQUIRE(expected);
+    REQUIRE(centresItem(v).centres().has_value());
+    CHECK(*centresItem(v).centres() == *expected);
+    CHECK(centresItem(v).reason().isEmpty());
+  }
+  // The moving centrode rolls on the fixed one: with the coupler where it is at each sample of
+  // the cycle, its point from that sample lies on the fixed centrode's point from that sample.
+  const k::Centrodes& curves = centresItem(v).centrodes();
+  REQUIRE_FALSE(curves.fixed.empty());
+  const k::SweepResult& sweep = v.document.sweep();
+  const double size = v.scene().linkageSize();
+  std::size_t run = 0, i = 0;
+  for (std::size_t j = 0; j < sweep.size() && run < curves.fixed.size(); ++j) {
+    if (!sweep.assembled(j)) continue;
+    k::Pose pose;
+    for (const auto& column : sweep.position) pose.position.push_back(column[j]);
+    const auto frame = k::couplerFrame(v.document.mechanism(), pose);
+    const auto centres = k::instantCentres(v.document.mechanism(), pose);
+    REQUIRE(frame);
+    REQUIRE(centres);
+    if (centres->i13.kind != k::CentreKind::Finite ||
+        (centres->i13.position - centres->i12.position).norm() > k::kCentrodeReach * centres->scale)
+      continue;
+    CHECK((frame->toWorld(curves.moving[run][i]) - curves.fixed[run][i]).norm() <= 1e-9 * size);
+    CHECK((curves.fixed[run][i] - centres->i13.position).norm() <= 1e-9 * size);
+    if (++i == curves.fixed[run].size()) {
+      ++run;
+      i = 0;
+    }
+  }
+}
+
+TEST_CASE("a six-bar's centres are not drawn: the canvas says why", "[ui][canvas][centres]") {
+  ui::test::ShownView v(*k::designForExample("watt-ii"));
+  v.view.setShowInstantCentres(true);
+  CHECK_FALSE(centresItem(v).centres().has_value());
+  CHECK(centresItem(v).centrodes().fixed.empty());
+  CHECK(centresItem(v).reason().contains(QStringLiteral("four-bar")));
+  v.view.grab();  // paints without a crash
+}
