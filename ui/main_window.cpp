@@ -8,6 +8,7 @@
 #include "ui/document/document_file.h"
 #include "ui/document/force_results.h"
 #include "ui/document/mechanism_document.h"
+#include "ui/export/dxf_options_dialog.h"
 #include "ui/export/view_image.h"
 #include "ui/message_banner.h"
 #include "ui/panels/analysis_panel.h"
@@ -24,6 +25,7 @@
 #include "kinematics/design/dyad_request.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/io/csv_writer.h"
+#include "kinematics/io/dxf_export.h"
 #include "kinematics/model/recognise.h"
 
 #include <QAction>
@@ -49,6 +51,12 @@
 namespace linkwright::ui {
 
 namespace k = kinematics;
+
+namespace {
+// Presentation mode: the window's text and every chart's text and lines grow by this much, a
+// size a lecture hall reads from the back.
+constexpr double kPresentationTextScale = 1.6;
+}  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), m_settings(std::make_unique<Settings>()), m_document(new MechanismDocument(this)),
@@ -171,6 +179,7 @@ void MainWindow::buildMenus() {
   QMenu* exportMenu = file->addMenu(tr("&Export"));
   exportMenu->addAction(tr("Table as &CSV…"), this, &MainWindow::exportCsvDialog);
   exportMenu->addAction(tr("&Image of the canvas or a plot…"), this, &MainWindow::exportImageDialog);
+  exportMenu->addAction(tr("&Links as DXF…"), this, &MainWindow::exportDxfDialog);
   file->addSeparator();
   file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -188,6 +197,11 @@ void MainWindow::buildMenus() {
   view->addAction(tr("&Fit to view"), QKeySequence(Qt::CTRL | Qt::Key_0), m_canvas, &LinkageView::fitToView);
   QAction* play = view->addAction(tr("&Play / pause"), m_animator, &CrankAnimator::togglePlay);
   play->setShortcut(Qt::Key_Space);
+  m_centresAction = view->addAction(tr("&Instant centres and centrodes"));
+  m_centresAction->setCheckable(true);
+  m_centresAction->setToolTip(
+      tr("Kennedy's instant centres of a four-bar or slider-crank, and its coupler's centrodes"));
+  connect(m_centresAction, &QAction::toggled, m_canvas, &LinkageView::setShowInstantCentres);
   QAction* velocity = view->addAction(tr("&Velocity arrows"));
   velocity->setCheckable(true);
   connect(velocity, &QAction::toggled, m_canvas, &LinkageView::setShowVelocityArrows);
@@ -326,6 +340,16 @@ bool MainWindow::exportCsv(const QString& path) {
   return true;
 }
 
+bool MainWindow::exportDxf(const QString& path, const k::io::DrawingOptions& options) {
+  if (auto why =
+          k::io::exportLinkDrawingDxf(m_document->mechanism(), m_document->pose(), options, path.toStdString())) {
+    showError(tr("DXF not written: %1").arg(QString::fromStdString(why->message)));
+    return false;
+  }
+  statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()), 3000);
+  return true;
+}
+
 bool MainWindow::exportCanvasImage(const QString& path) {
   if (auto why = saveViewImage(m_canvas, path, tr("Linkwright linkage"))) {
     showError(*why);
@@ -349,14 +373,18 @@ void MainWindow::settle() {
   m_document->measureQualityNow();
 }
 
+void MainWindow::setShowInstantCentres(bool show) { m_centresAction->setChecked(show); }
+
 void MainWindow::setPresentationMode(bool on) {
   if (on == m_presentation) return;
   m_presentation = on;
   QFont big = m_normalFont;
-  big.setPointSizeF(m_normalFont.pointSizeF() * 1.6);
+  big.setPointSizeF(m_normalFont.pointSizeF() * kPresentationTextScale);
   setFont(on ? big : m_normalFont);
   m_canvas->setPresentationScale(on ? 2.0 : 1.0);
   m_forceArrows->setPresentationScale(on ? 2.0 : 1.0);
+  m_plots->setPresentationScale(on ? kPresentationTextScale : 1.0);
+  m_forcePlots->setPresentationScale(on ? kPresentationTextScale : 1.0);
   // The class watches the linkage and the plots; Space, the arrows' menu and F11 still work.
   m_sidePanel->setVisible(!on);
   if (m_presentationAction->isChecked() != on) m_presentationAction->setChecked(on);
@@ -417,6 +445,22 @@ void MainWindow::exportCsvDialog() {
   if (path.isEmpty()) return;
   if (QFileInfo(path).suffix().isEmpty()) path += ".csv";
   exportCsv(path);
+}
+
+void MainWindow::exportDxfDialog() {
+  // The core's defaults for this linkage pre-fill the dialog (and say why there are none).
+  const auto drawing = k::io::linkDrawing(m_document->mechanism(), m_document->pose(), {});
+  if (!drawing) {
+    showError(tr("DXF not written: %1").arg(QString::fromStdString(drawing.error().message)));
+    return;
+  }
+  DxfOptionsDialog options(drawing->holeDiameter, drawing->plateWidth, QString::fromStdString(m_document->lengthUnit()),
+                           this);
+  if (options.exec() != QDialog::Accepted) return;
+  QString path = QFileDialog::getSaveFileName(this, tr("Export links as DXF"), QString(), tr("DXF drawings (*.dxf)"));
+  if (path.isEmpty()) return;
+  if (QFileInfo(path).suffix().isEmpty()) path += ".dxf";
+  exportDxf(path, options.options());
 }
 
 void MainWindow::exportImageDialog() {

@@ -6,6 +6,7 @@
 // twin (openFile, saveTo, exportCsv, ...) that the menus call and the tests use.
 
 #include "kinematics/design/design.h"
+#include "kinematics/io/link_drawing.h"
 
 #include <QMainWindow>
 
@@ -47,6 +48,7 @@ public:
   MechanismDocument* document() const { return m_document; }
   LinkageView* canvas() const { return m_canvas; }
   PlotPanel* plots() const { return m_plots; }
+  ForcePlotPanel* forcePlots() const { return m_forcePlots; }
   DimensionsPanel* dimensionsPanel() const { return m_dimensions; }
   DrivePanel* drivePanel() const { return m_drive; }
   MotionPanel* motionPanel() const { return m_motion; }
@@ -66,6 +68,9 @@ public:
   bool saveTo(const QString& path);
   /// Writes the design's full table, byte-identical to `linkwright-cli analyze`.
   bool exportCsv(const QString& path);
+  /// Writes the links as a DXF drawing at the current pose (kinematics/io/dxf_export.h); on a
+  /// refusal (a hole too large for a link, …) shows the core's reason and writes nothing.
+  bool exportDxf(const QString& path, const kinematics::io::DrawingOptions& options);
   /// Writes the canvas as PNG or SVG.
   bool exportCanvasImage(const QString& path);
   /// Writes plot `index` (0 angles, 1 ω, 2 α) as PNG or SVG.
@@ -73,6 +78,8 @@ public:
   /// Does now what waits for the window to settle: the plots report their width (the sweep
   /// follows it) and the document measures the quality estimate. For a screenshot or a test.
   void settle();
+  /// View ▸ Instant centres and centrodes, as if chosen from the menu.
+  void setShowInstantCentres(bool show);
   /// Large fonts and lines, full screen, side panels hidden: for the lecture hall.
   void setPresentationMode(bool on);
   bool presentationMode() const { return m_presentation; }
@@ -97,6 +104,7 @@ private:
   void open();
   void exportCsvDialog();
   void exportImageDialog();
+  void exportDxfDialog();
   bool maybeSave();
   void showError(const QString& message);
 
@@ -119,6 +127,7 @@ private:
   QAction* m_forceArrowsAction = nullptr;
   QWidget* m_sidePanel = nullptr;
   QMenu* m_recentMenu = nullptr;
+  QAction* m_centresAction = nullptr;
   QAction* m_presentationAction = nullptr;
   bool m_presentation = false;
   QFont m_normalFont;

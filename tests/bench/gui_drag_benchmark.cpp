@@ -212,7 +212,8 @@ int main(int argc, char** argv) {
   // the GUI thread must stay responsive meanwhile too.
   app.takeLongest();
   const auto settleStart = std::chrono::steady_clock::now();
-  QTest::qWaitFor([&] { return !doc->qualityEstimatePending(); }, 60000);
+  if (!QTest::qWaitFor([&] { return !doc->qualityEstimatePending(); }, 60000))
+    std::printf("the quality estimate did not land within 60 s\n");
   const double settleMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - settleStart).count();
   const double settleLongest = app.takeLongest();

@@ -1,6 +1,6 @@
 // The whole window, offscreen: CSV export equals the CLI's output byte for byte, save → open
 // reproduces the document, a corrupt file shows an error and changes nothing, examples load,
-// presentation mode scales up, and images export.
+// presentation mode scales up, images export, and the DXF export equals the CLI's.
 
 #include "ui/main_window.h"
 #include "ui/canvas/coupler_path_item.h"
@@ -11,6 +11,8 @@
 #include "ui/panels/analysis_panel.h"
 #include "ui/panels/dimensions_panel.h"
 #include "ui/panels/length_editor.h"
+#include "ui/plots/force_chart_view.h"
+#include "ui/plots/force_plot_panel.h"
 #include "ui/plots/plot_panel.h"
 #include "ui/plots/quality_bar.h"
 #include "ui/plots/quantity_chart_view.h"
@@ -20,6 +22,7 @@
 #include "app/cli/cli.h"
 #include "kinematics/design/design.h"
 #include "kinematics/design/examples.h"
+#include "kinematics/io/link_drawing.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
@@ -35,6 +38,7 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QImage>
+#include <QLegend>
 #include <QLineSeries>
 #include <QTemporaryDir>
 #include <QTest>
@@ -93,6 +97,33 @@ TEST_CASE("Export ▸ CSV is byte-identical to linkwright-cli analyze", "[ui][wi
   std::ostringstream out, err;
   REQUIRE(cli::runCli(cliArguments(d), out, err) == 0);
   CHECK(readAll(path).toStdString() == out.str());
+}
+
+TEST_CASE("Export ▸ Links as DXF is byte-identical to linkwright-cli dxf at the crank angle shown",
+          "[ui][window][dxf]") {
+  ui::MainWindow window;
+  const std::string example = GENERATE(std::string("thesis-crank-rocker"), std::string("ls3-engine"));
+  CAPTURE(example);
+  window.document()->reset(*kinematics::designForExample(example));
+  window.document()->setCrankAngle(kinematics::degToRad(37.5));
+  QTemporaryDir dir;
+  const QString gui = dir.filePath("gui.dxf"), cli = dir.filePath("cli.dxf");
+  kinematics::io::DrawingOptions options;
+  options.holeDiameter = 3.0;
+  options.plateWidth = 7.5;
+  REQUIRE(window.exportDxf(gui, options));
+  std::ostringstream out, err;
+  REQUIRE(cli::runCli(
+              {"dxf", "--example", example, "--at", "37.5", "--hole", "3", "--width", "7.5", "-o", cli.toStdString()},
+              out, err) == 0);
+  CHECK(readAll(gui) == readAll(cli));
+
+  // A hole larger than a link allows is refused with the core's reason: no file, the banner says why.
+  options.holeDiameter = 1e6;
+  const QString refused = dir.filePath("refused.dxf");
+  CHECK_FALSE(window.exportDxf(refused, options));
+  CHECK_FALSE(QFile::exists(refused));
+  CHECK(window.banner()->text().contains(QStringLiteral("hole")));
 }
 
 TEST_CASE("save then open in a new window reproduces the document", "[ui][window][file]") {
@@ -166,10 +197,29 @@ TEST_CASE("canvas and plots export as PNG and SVG", "[ui][window][export]") {
 TEST_CASE("presentation mode enlarges the fonts and can be left again", "[ui][window]") {
   ui::MainWindow window;
   const double normal = window.font().pointSizeF();
+  // Qt Charts takes its fonts from the chart theme, not the window: read them off the charts.
+  QChart* chart = window.plots()->chartView(ui::QuantityKind::Omega)->chart();
+  const auto axisFont = [&] { return chart->axes(Qt::Vertical).front()->labelsFont(); };
+  const auto size = [](const QFont& f) { return f.pixelSize() > 0 ? f.pixelSize() : f.pointSizeF(); };
+  const double title = size(chart->titleFont()), labels = size(axisFont()), legend = size(chart->legend()->font());
+  QList<QLineSeries*> curves =
+      window.plots()->chartView(ui::QuantityKind::Omega)->segments(ui::PlotQuantity::RockerOmega);
+  REQUIRE_FALSE(curves.isEmpty());
+  const double pen = curves.front()->pen().widthF();
+  QChart* force = window.forcePlots()->torqueChart()->chart();
+  const double forceTitle = size(force->titleFont());
   window.setPresentationMode(true);
   CHECK(window.font().pointSizeF() > normal * 1.5);
+  CHECK(size(chart->titleFont()) >= 1.5 * title);
+  CHECK(size(axisFont()) >= 1.5 * labels);
+  CHECK(size(chart->legend()->font()) >= 1.5 * legend);
+  CHECK(curves.front()->pen().widthF() >= 1.5 * pen);
+  CHECK(size(force->titleFont()) >= 1.5 * forceTitle);
   window.setPresentationMode(false);
   CHECK(window.font().pointSizeF() == normal);
+  CHECK(size(chart->titleFont()) == title);
+  CHECK(size(axisFont()) == labels);
+  CHECK(curves.front()->pen().widthF() == pen);
 }
 
 TEST_CASE("typing a length in the panel updates the badge and the plotted series as the core says", "[ui][window]") {

@@ -4,6 +4,7 @@
 #include "ui/document/force_results.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/plots/axis_range.h"
+#include "ui/plots/chart_scale.h"
 #include "ui/plots/force_chart_view.h"
 #include "ui/plots/plot_area_alignment.h"
 #include "ui/plots/plot_panel.h"
@@ -88,6 +89,11 @@ void ForcePlotPanel::setAngleUnit(AngleUnit unit) {
   if (unit == m_unit) return;
   m_unit = unit;
   refreshAll();
+}
+
+void ForcePlotPanel::setPresentationScale(double factor) {
+  for (QChart* chart : {m_torque->chart(), m_joints->chart(), m_polar->chart()}) setChartScale(chart, factor);
+  alignCharts();
 }
 
 QString ForcePlotPanel::statusText() const { return m_status->text(); }

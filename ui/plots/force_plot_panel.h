@@ -33,6 +33,8 @@ public:
 
   /// Unit of the crank-angle axis (when the plots show the input). Degrees by default.
   void setAngleUnit(AngleUnit unit);
+  /// Text and lines of the charts and the polar view at `factor` times their normal size.
+  void setPresentationScale(double factor);
   /// Whether the panel is on screen (its tab chosen): off screen it re-plots nothing (the
   /// canvas's force arrows may keep the forces solved) and catches up when shown. On by default.
   void setOnScreen(bool onScreen);

@@ -3,6 +3,7 @@
 #include "kinematics/solve/law_inverse.h"
 #include "ui/colors.h"
 #include "ui/plots/axis_range.h"
+#include "ui/plots/chart_scale.h"
 #include "ui/plots/series_visibility.h"
 
 #include "kinematics/model/fourbar.h"
@@ -86,7 +87,7 @@ LimitMarkers::LimitMarkers(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis)
 LimitMarkers::~LimitMarkers() = default;
 
 bool LimitMarkers::setPositions(const QList<QPointF>& points, bool showPoints) {
-  QPen dashed(kLimitLineColor, 1.0, Qt::DashLine);
+  QPen dashed(kLimitLineColor, scaledPenWidth(m_chart, 1.0), Qt::DashLine);
   while (m_lines.size() < static_cast<std::size_t>(points.size())) {
     const QString name = QStringLiteral("limit_line_%1").arg(m_lines.size());
     m_lines.push_back(std::make_unique<VerticalMarker>(m_chart, m_xAxis, m_yAxis, dashed, name));

@@ -1,6 +1,7 @@
 #include "ui/plots/plot_panel.h"
 
 #include "ui/plots/axis_range.h"
+#include "ui/plots/chart_scale.h"
 #include "ui/plots/hover_readout.h"
 #include "ui/plots/limit_markers.h"
 #include "ui/plots/plot_area_alignment.h"
@@ -228,6 +229,16 @@ void PlotPanel::settleValueRanges() {
   const AxisRange& angles = chartView(QuantityKind::Angle)->valueRange();
   m_limits->setYSpan(angles.min, angles.max);
   alignCharts();
+}
+
+void PlotPanel::setPresentationScale(double factor) {
+  for (QuantityChartView* view : m_views) setChartScale(view->chart(), factor);
+  // In front of a class the controls give their height to the charts: at the larger text the
+  // charts' axis titles would not fit beside short plots.
+  const bool presenting = factor > 1.0;
+  m_quality->setVisible(!presenting);
+  m_selector->setVisible(!presenting);
+  alignCharts();  // the axis labels' widths changed
 }
 
 QString PlotPanel::limitNote() const { return m_limitNote->isHidden() ? QString() : m_limitNote->text(); }

@@ -47,6 +47,9 @@ public:
   /// Unit of every angular quantity shown (x axis included). Degrees by default.
   void setAngleUnit(AngleUnit unit);
   AngleUnit angleUnit() const { return m_unit; }
+  /// Text and lines of every chart at `factor` times their normal size; above 1 (presentation
+  /// mode) the quality bar and the quantity selector are hidden so the charts get the room.
+  void setPresentationScale(double factor);
 
   /// The charts in display order (angles, ω, α, position, velocity, acceleration), for image
   /// export. A chart with nothing selected or nothing to show isHidden().

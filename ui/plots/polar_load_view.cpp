@@ -1,5 +1,6 @@
 #include "ui/plots/polar_load_view.h"
 
+#include "ui/plots/chart_scale.h"
 #include "ui/plots/force_chart_view.h"
 #include "ui/plots/plot_area_alignment.h"
 #include "ui/plots/segmented_line.h"
@@ -91,7 +92,7 @@ void PolarLoadView::setLocus(const SeriesRuns& locus, const QString& title, cons
     m_yHi = std::max(0.0, locus.maxY);
   }
   for (qsizetype i = 0; i < m_segments.size(); ++i) {
-    m_segments[i]->setPen(QPen(color, kCurveWidth));
+    m_segments[i]->setPen(QPen(color, scaledPenWidth(chart(), kCurveWidth)));
     setSeriesShown(chart(), m_segments[i], i < locus.runs.size(), false);
   }
   equalizeScales();  // the axes first: the locus is simplified for their scale

@@ -1,5 +1,6 @@
 #include "ui/plots/segmented_line.h"
 
+#include "ui/plots/chart_scale.h"
 #include "ui/plots/series_visibility.h"
 
 #include <QChart>
@@ -28,7 +29,7 @@ QLineSeries* SegmentedLine::addSegment() {
   auto* segment = new QLineSeries;
   segment->setObjectName(m_style.key);
   segment->setName(m_style.name);
-  segment->setPen(QPen(m_style.color, kCurveWidth));
+  segment->setPen(QPen(m_style.color, scaledPenWidth(m_chart, kCurveWidth)));
   m_chart->addSeries(segment);
   segment->attachAxis(m_xAxis);
   segment->attachAxis(m_yAxis);
