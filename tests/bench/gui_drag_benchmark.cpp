@@ -59,19 +59,27 @@ public:
       --m_depth;
       return handled;
     }
+    const auto type = event->type();
+    const char* className = receiver->metaObject()->className();
     const auto start = std::chrono::steady_clock::now();
     const bool handled = QApplication::notify(receiver, event);
-    m_longest = std::max(m_longest,
-                         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (ms > m_longest) {
+      m_longest = ms;
+      m_longestWhat = std::string(className) + " event " + std::to_string(static_cast<int>(type));
+    }
     --m_depth;
     return handled;
   }
   /// The longest event since the last call, ms.
   double takeLongest() { return std::exchange(m_longest, 0.0); }
+  /// What it was: the receiver's class and the event type (QEvent::Type).
+  const std::string& longestWhat() const { return m_longestWhat; }
 
 private:
   int m_depth = 0;
   double m_longest = 0.0;
+  std::string m_longestWhat;
 };
 
 // CPU time of the calling thread, ms.
@@ -196,11 +204,12 @@ int main(int argc, char** argv) {
     QApplication::processEvents();
     const auto t2 = std::chrono::steady_clock::now();
     cpu.push_back(threadCpuMs() - cpu0);
+    const std::string longestWhat = app.longestWhat();
     longest.push_back(app.takeLongest());
     if (options->trace)
-      std::printf("move %d: wall %.2f ms, GUI CPU %.2f ms, longest event %.2f ms, handling %.2f ms\n", i,
+      std::printf("move %d: wall %.2f ms, GUI CPU %.2f ms, longest event %.2f ms (%s), handling %.2f ms\n", i,
                   std::chrono::duration<double, std::milli>(t2 - t0).count(), cpu.back(), longest.back(),
-                  std::chrono::duration<double, std::milli>(t1 - t0).count());
+                  longestWhat.c_str(), std::chrono::duration<double, std::milli>(t1 - t0).count());
     window.repaint();  // worst case: every widget of the window painted again
     const auto t3 = std::chrono::steady_clock::now();
     solve.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
