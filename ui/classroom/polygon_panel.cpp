@@ -12,6 +12,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -22,6 +23,24 @@
 namespace linkwright::ui {
 
 namespace k = kinematics;
+
+namespace {
+
+// "A^n_CB" as A<sup>n</sup><sub>CB</sub>, as the textbook prints it.
+QString richEquation(QString text) {
+  text = text.toHtmlEscaped();
+  static const QRegularExpression term(R"(([AV])(?:\^(\w))?_([\w']+))");
+  return text.replace(term, R"(\1<sup>\2</sup><sub>\3</sub>)");
+}
+
+// Four significant digits, as read off a drawing with a ruler, without an exponent.
+QString readOffText(double value) {
+  if (value == 0.0 || !std::isfinite(value)) return numberText(value, 'f', 0);
+  const int decimals = std::clamp(3 - static_cast<int>(std::floor(std::log10(std::abs(value)))), 0, 6);
+  return numberText(value, 'f', decimals);
+}
+
+}  // namespace
 
 PolygonPanel::PolygonPanel(MechanismDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document), m_view(new PolygonView(this)), m_kindBox(new QComboBox(this)),
@@ -39,22 +58,27 @@ PolygonPanel::PolygonPanel(MechanismDocument* document, QWidget* parent)
   all->setObjectName("PolygonAll");
   reset->setObjectName("PolygonReset");
   m_stepButton->setToolTip(tr("Draw the next arrow, in the order a student draws them"));
-  auto* controls = new QHBoxLayout;
-  controls->addWidget(m_kindBox);
-  controls->addWidget(new QLabel(tr("Scale:"), this));
-  controls->addWidget(m_scaleBox, 1);
-  controls->addWidget(m_stepButton);
-  controls->addWidget(all);
-  controls->addWidget(reset);
+  m_scaleBox->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+  auto* choices = new QHBoxLayout;
+  choices->addWidget(m_kindBox);
+  choices->addWidget(new QLabel(tr("Scale:"), this));
+  choices->addWidget(m_scaleBox);
+  choices->addStretch();
+  auto* steps = new QHBoxLayout;
+  steps->addWidget(m_stepButton);
+  steps->addWidget(all);
+  steps->addWidget(reset);
+  steps->addWidget(m_stepText, 1);
 
   m_stepText->setWordWrap(true);
   m_equations->setWordWrap(true);
+  m_equations->setTextFormat(Qt::RichText);
   m_equations->setTextInteractionFlags(Qt::TextSelectableByMouse);
   m_table->setObjectName("PolygonTable");
   m_table->verticalHeader()->hide();
   m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
   m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  m_table->horizontalHeader()->setStretchLastSection(true);
+  m_table->horizontalHeader()->setSectionResizeMode(VectorColumn, QHeaderView::Stretch);
   auto* lower = new QWidget(this);
   auto* lowerLayout = new QVBoxLayout(lower);
   lowerLayout->setContentsMargins(0, 0, 0, 0);
@@ -68,8 +92,8 @@ PolygonPanel::PolygonPanel(MechanismDocument* document, QWidget* parent)
   splitter->setChildrenCollapsible(false);
   auto* contentLayout = new QVBoxLayout(m_content);
   contentLayout->setContentsMargins(0, 0, 0, 0);
-  contentLayout->addLayout(controls);
-  contentLayout->addWidget(m_stepText);
+  contentLayout->addLayout(choices);
+  contentLayout->addLayout(steps);
   contentLayout->addWidget(splitter, 1);
 
   m_reasonLabel->setObjectName("PolygonReason");
@@ -190,7 +214,7 @@ void PolygonPanel::addRow(const QString& stepText, const QString& vector, double
   cell(StepColumn, stepText, std::nullopt);
   cell(VectorColumn, vector, std::nullopt);
   cell(DrawnColumn, numberText(drawnCm, 'f', 2), drawnCm);
-  cell(ReadOffColumn, numberText(readOff, 'g', 4), readOff);
+  cell(ReadOffColumn, readOffText(readOff), readOff);
   cell(ExactColumn, numberText(magnitude, 'g', 7), magnitude);
 }
 
@@ -207,7 +231,10 @@ void PolygonPanel::fillTable() {
            QString::fromStdString(v.meaning));
   m_arrowRows = m_table->rowCount();
   const QString symbol = polygon.kind == k::PolygonKind::Velocity ? "V" : "A";
+  std::vector<k::PointId> checked;  // two equations may end on one point (a slotted link's block)
   for (const k::PolygonEquation& e : polygon.equations) {
+    if (std::find(checked.begin(), checked.end(), e.subject) != checked.end()) continue;
+    checked.push_back(e.subject);
     for (const k::PolygonImage& im : m_view->drawnImages()) {
       if (im.point != e.subject || im.coincident || im.label == "o") continue;
       const QString name = QString::fromStdString(im.label).toUpper();
@@ -222,8 +249,8 @@ void PolygonPanel::fillTable() {
     }
   }
   QStringList lines;
-  for (const k::PolygonEquation& e : polygon.equations) lines << QString::fromStdString(e.text);
-  m_equations->setText(lines.join('\n'));
+  for (const k::PolygonEquation& e : polygon.equations) lines << richEquation(QString::fromStdString(e.text));
+  m_equations->setText(lines.join("<br>"));
   const int total = static_cast<int>(polygon.vectors.size());
   const int shown = static_cast<int>(drawn.size());
   if (shown == total) m_stepText->setText(tr("All %1 arrows drawn. Step draws them again one at a time.").arg(total));

@@ -136,10 +136,10 @@ void PolygonView::drawArrow(QPainter& painter, const k::PolygonVector& v) const 
   const QPointF b = toPixels(v.to);
   const QPointF d = b - a;
   const double length = std::hypot(d.x(), d.y());
+  if (length < 0.5) return;  // a zero term (a crank at constant speed: A^t_B) has no arrow
   const QColor colour = polygonTermColor(v.term);
-  if (length < 0.5) return;  // a zero term (a crank at rest) has no arrow to draw
   const QPointF u = d / length;
-  const QPointF n(u.y(), -u.x());  // to the arrow's left on screen (y down)
+  const QPointF n(u.y(), -u.x());
   const double head = std::min(kHeadLength * ps, 0.45 * length);
   painter.setPen(QPen(colour, 2.0 * ps, Qt::SolidLine, Qt::RoundCap));
   painter.drawLine(a, b - u * head * 0.8);
@@ -151,26 +151,86 @@ void PolygonView::drawArrow(QPainter& painter, const k::PolygonVector& v) const 
   painter.setPen(Qt::NoPen);
   painter.setBrush(colour);
   painter.drawPath(tip);
-  const QPointF mid = (a + b) / 2.0;
-  drawVectorLabel(painter, QString::fromStdString(v.label), mid, n, kLabelGap * ps, colour);
 }
 
-void PolygonView::drawImages(QPainter& painter) const {
+double LabelLayout::cost(const QRectF& box) const {
+  const QRectF padded = box.adjusted(-2, -2, 2, 2);
+  if (!bounds.contains(padded)) return 1e6;
+  double cost = 0.0;
+  for (const QRectF& r : boxes)
+    if (r.intersects(padded)) cost += 100.0;
+  for (const QLineF& line : lines)
+    for (int i = 0; i <= 24; ++i)
+      if (padded.contains(line.pointAt(i / 24.0))) cost += 1.0;
+  return cost;
+}
+
+QRectF LabelLayout::place(const std::vector<QRectF>& candidates) {
+  QRectF best = candidates.front();
+  double bestCost = cost(best);
+  for (const QRectF& box : candidates) {
+    if (bestCost == 0.0) break;
+    const double c = cost(box);
+    if (c < bestCost) {
+      best = box;
+      bestCost = c;
+    }
+  }
+  boxes.push_back(best);
+  return best;
+}
+
+void PolygonView::drawImages(QPainter& painter, LabelLayout& layout) const {
   const double ps = m_presentationScale;
   const double r = 3.5 * ps;
-  QFont bold = painter.font();
-  bold.setBold(true);
-  painter.setFont(bold);
-  for (const k::PolygonImage& im : drawnImages()) {
+  const std::vector<k::PolygonImage> images = drawnImages();
+  for (const k::PolygonImage& im : images) {
     const QPointF p = toPixels(im.position);
     painter.setPen(QPen(Qt::black, 1.2 * ps));
     painter.setBrush(im.coincident ? QBrush(Qt::white) : QBrush(Qt::black));
     painter.drawEllipse(p, r, r);
+    layout.boxes.push_back(QRectF(p.x() - r, p.y() - r, 2 * r, 2 * r));
+  }
+  QFont bold = painter.font();
+  bold.setBold(true);
+  painter.setFont(bold);
+  const QFontMetricsF fm(bold);
+  painter.setPen(Qt::black);
+  for (const k::PolygonImage& im : images) {
+    const QPointF p = toPixels(im.position);
     const QString text = QString::fromStdString(im.label);
-    const QRectF box = painter.fontMetrics().boundingRect(text);
-    const QPointF at = p + QPointF(r + 2.0 * ps, -r - 2.0 * ps);
-    painter.setPen(Qt::black);
-    painter.drawText(QRectF(at.x(), at.y() - box.height(), box.width() + 4, box.height()), Qt::AlignLeft, text);
+    const QSizeF size(fm.horizontalAdvance(text) + 2.0, fm.height());
+    const double off = r + 1.0 * ps;
+    std::vector<QRectF> candidates;
+    for (const QPointF corner : {QPointF(1, -1), QPointF(-1, -1), QPointF(1, 1), QPointF(-1, 1)})
+      candidates.emplace_back(QPointF(p.x() + (corner.x() > 0 ? off : -off - size.width()),
+                                      p.y() + (corner.y() > 0 ? off : -off - size.height())),
+                              size);
+    painter.drawText(layout.place(candidates), Qt::AlignCenter, text);
+  }
+  painter.setFont(scaledFont());
+}
+
+// Each label beside its arrow where it hides no other label, image or line: at the middle
+// first, then further along, on either side.
+void PolygonView::drawVectorLabels(QPainter& painter, LabelLayout& layout) const {
+  const double gap = kLabelGap * m_presentationScale;
+  QFont larger = painter.font();
+  larger.setPointSizeF(larger.pointSizeF() * 1.15);
+  painter.setFont(larger);
+  for (const k::PolygonVector& v : drawnVectors()) {
+    const QPointF a = toPixels(v.from);
+    const QPointF d = toPixels(v.to) - a;
+    const double length = std::hypot(d.x(), d.y());
+    if (length < 0.5) continue;
+    const QPointF n(d.y() / length, -d.x() / length);
+    const QString label = QString::fromStdString(v.label);
+    std::vector<QRectF> candidates;
+    for (const double away : {gap, 3.0 * gap})
+      for (const double t : {0.5, 0.35, 0.65, 0.2, 0.8})
+        for (const double side : {1.0, -1.0})
+          candidates.push_back(vectorLabelRect(painter.font(), label, a + t * d, side * n, away));
+    drawVectorLabel(painter, label, layout.place(candidates), polygonTermColor(v.term));
   }
   painter.setFont(scaledFont());
 }
@@ -227,8 +287,14 @@ void PolygonView::paintEvent(QPaintEvent*) {
   const QFont f = scaledFont();
   painter.setFont(f);
   if (m_polygon.vectors.empty()) return;
-  for (const k::PolygonVector& v : drawnVectors()) drawArrow(painter, v);
-  drawImages(painter);
+  LabelLayout layout;
+  layout.bounds = QRectF(rect());
+  for (const k::PolygonVector& v : drawnVectors()) {
+    drawArrow(painter, v);
+    layout.lines.emplace_back(toPixels(v.from), toPixels(v.to));
+  }
+  drawImages(painter, layout);
+  drawVectorLabels(painter, layout);
   painter.setFont(f);
   drawScaleBar(painter);
   drawLegend(painter);

@@ -8,6 +8,8 @@
 
 #include "kinematics/analysis/vector_polygon.h"
 
+#include <QLineF>
+#include <QRectF>
 #include <QWidget>
 
 #include <climits>
@@ -19,6 +21,18 @@ namespace linkwright::ui {
 QColor polygonTermColor(kinematics::VectorTerm term);
 /// "absolute", "relative", "normal", "tangential", "sliding", "Coriolis".
 QString polygonTermName(kinematics::VectorTerm term);
+
+/// Where the labels of a drawing went, so that the next one goes where it hides nothing.
+struct LabelLayout {
+  QRectF bounds;              ///< labels stay inside (the widget)
+  std::vector<QRectF> boxes;  ///< labels and image dots placed so far
+  std::vector<QLineF> lines;  ///< the arrows
+  /// How much `box` hides: 100 a label or dot it overlaps, 1 a sample of a line under it,
+  /// 1e6 if it leaves the bounds; 0 when it hides nothing.
+  double cost(const QRectF& box) const;
+  /// The first candidate that hides nothing, else the one that hides least, recorded as taken.
+  QRectF place(const std::vector<QRectF>& candidates);
+};
 
 class PolygonView : public QWidget {
   Q_OBJECT
@@ -68,7 +82,8 @@ private:
   QFont scaledFont() const;
   QPointF toPixels(const Eigen::Vector2d& p) const;
   void drawArrow(QPainter& painter, const kinematics::PolygonVector& v) const;
-  void drawImages(QPainter& painter) const;
+  void drawImages(QPainter& painter, LabelLayout& layout) const;
+  void drawVectorLabels(QPainter& painter, LabelLayout& layout) const;
   void drawScaleBar(QPainter& painter) const;
   void drawLegend(QPainter& painter) const;
 

@@ -19,26 +19,38 @@ VectorLabelParts splitVectorLabel(const QString& label) {
   return parts;
 }
 
-void drawVectorLabel(QPainter& painter, const QString& label, QPointF anchor, QPointF normal, double gap,
-                     const QColor& colour) {
-  const VectorLabelParts parts = splitVectorLabel(label);
-  const QFont base = painter.font();
+namespace {
+QFont smallFont(const QFont& base) {
   QFont small = base;
   small.setPointSizeF(base.pointSizeF() * 0.72);
-  const QFontMetricsF fm(base);
-  const QFontMetricsF sm(small);
-  const double symbolWidth = fm.horizontalAdvance(parts.symbol);
-  const double width =
-      symbolWidth + std::max(sm.horizontalAdvance(parts.superscript), sm.horizontalAdvance(parts.subscript)) + 2.0;
+  return small;
+}
+}  // namespace
+
+QRectF vectorLabelRect(const QFont& font, const QString& label, QPointF anchor, QPointF normal, double gap) {
+  const VectorLabelParts parts = splitVectorLabel(label);
+  const QFontMetricsF fm(font);
+  const QFontMetricsF sm(smallFont(font));
+  const double width = fm.horizontalAdvance(parts.symbol) +
+                       std::max(sm.horizontalAdvance(parts.superscript), sm.horizontalAdvance(parts.subscript)) + 2.0;
   const double height = fm.height() + 0.5 * sm.height();
-  // The label's centre moves off the line until its box clears it.
+  // The centre moves off the line until the box clears it.
   const double clear = 0.5 * (width * std::abs(normal.x()) + height * std::abs(normal.y()));
   const QPointF centre = anchor + normal * (gap + clear);
-  const QRectF box(centre.x() - width / 2.0, centre.y() - height / 2.0, width, height);
+  return {centre.x() - width / 2.0, centre.y() - height / 2.0, width, height};
+}
+
+void drawVectorLabel(QPainter& painter, const QString& label, const QRectF& box, const QColor& colour) {
+  const VectorLabelParts parts = splitVectorLabel(label);
+  const QFont base = painter.font();
+  const QFont small = smallFont(base);
+  const QFontMetricsF fm(base);
+  const QFontMetricsF sm(small);
   painter.setPen(Qt::NoPen);
   painter.setBrush(QColor(255, 255, 255, 215));
   painter.drawRoundedRect(box.adjusted(-2, -1, 2, 1), 3, 3);
   painter.setPen(colour);
+  const double symbolWidth = fm.horizontalAdvance(parts.symbol);
   const double baseline = box.top() + fm.ascent() + 0.2 * sm.height();
   painter.drawText(QPointF(box.left(), baseline), parts.symbol);
   painter.setFont(small);

@@ -4,7 +4,9 @@
 // its normal points to, on a white ground so that lines under it do not hide it.
 
 #include <QColor>
+#include <QFont>
 #include <QPointF>
+#include <QRectF>
 #include <QString>
 
 class QPainter;
@@ -19,9 +21,11 @@ struct VectorLabelParts {
 };
 VectorLabelParts splitVectorLabel(const QString& label);
 
-/// Draws `label` next to `anchor`, moved `gap` pixels along the unit vector `normal` plus
-/// half its own extent that way, in `colour`, with the painter's font.
-void drawVectorLabel(QPainter& painter, const QString& label, QPointF anchor, QPointF normal, double gap,
-                     const QColor& colour);
+/// The box `label` takes with `font`, centred `gap` pixels plus half its own extent from
+/// `anchor` along the unit vector `normal`: beside an arrow, clear of its line.
+QRectF vectorLabelRect(const QFont& font, const QString& label, QPointF anchor, QPointF normal, double gap);
+
+/// Draws `label` in `box` (from vectorLabelRect) in `colour`, with the painter's font.
+void drawVectorLabel(QPainter& painter, const QString& label, const QRectF& box, const QColor& colour);
 
 }  // namespace linkwright::ui

@@ -75,11 +75,14 @@ void checkKind(PolygonPanel& panel, const MechanismDocument& doc, k::PolygonKind
     CHECK(std::abs(cellValue(table, row, PolygonPanel::DrawnColumn) * scale - magnitude) <= tol);
   }
   int checks = 0;
-  for (const k::PolygonEquation& e : exact.equations) {
-    const double solver = rates[e.subject.index].norm();
+  std::vector<k::PointId> subjects;  // an RPR dyad's block ends two equations: one row
+  for (const k::PolygonEquation& e : exact.equations)
+    if (std::find(subjects.begin(), subjects.end(), e.subject) == subjects.end()) subjects.push_back(e.subject);
+  for (const k::PointId subject : subjects) {
+    const double solver = rates[subject.index].norm();
     for (int row = panel.arrowRows(); row < table->rowCount(); ++row) {
       const QString vector = table->item(row, PolygonPanel::VectorColumn)->text();
-      if (!vector.endsWith("o" + QString::fromStdString(doc.mechanism().points[e.subject.index].name).toLower()))
+      if (!vector.endsWith("o" + QString::fromStdString(doc.mechanism().points[subject.index].name).toLower()))
         continue;
       CHECK(std::abs(cellValue(table, row, PolygonPanel::ReadOffColumn) - solver) <= tol);
       CHECK(std::abs(cellValue(table, row, PolygonPanel::ExactColumn) - solver) <= tol);
