@@ -70,31 +70,11 @@ PolygonPanel::PolygonPanel(MechanismDocument* document, QWidget* parent)
   steps->addWidget(reset);
   steps->addWidget(m_stepText, 1);
 
-  m_stepText->setWordWrap(true);
-  m_equations->setWordWrap(true);
-  m_equations->setTextFormat(Qt::RichText);
-  m_equations->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  m_table->setObjectName("PolygonTable");
-  m_table->verticalHeader()->hide();
-  m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-  m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  m_table->horizontalHeader()->setSectionResizeMode(VectorColumn, QHeaderView::Stretch);
-  auto* lower = new QWidget(this);
-  auto* lowerLayout = new QVBoxLayout(lower);
-  lowerLayout->setContentsMargins(0, 0, 0, 0);
-  lowerLayout->addWidget(m_equations);
-  lowerLayout->addWidget(m_table, 1);
-  auto* splitter = new QSplitter(Qt::Vertical, this);
-  splitter->addWidget(m_view);
-  splitter->addWidget(lower);
-  splitter->setStretchFactor(0, 3);
-  splitter->setStretchFactor(1, 2);
-  splitter->setChildrenCollapsible(false);
   auto* contentLayout = new QVBoxLayout(m_content);
   contentLayout->setContentsMargins(0, 0, 0, 0);
   contentLayout->addLayout(choices);
   contentLayout->addLayout(steps);
-  contentLayout->addWidget(splitter, 1);
+  contentLayout->addWidget(buildDrawingAndTable(), 1);
 
   m_reasonLabel->setObjectName("PolygonReason");
   m_reasonLabel->setWordWrap(true);
@@ -118,6 +98,31 @@ PolygonPanel::PolygonPanel(MechanismDocument* document, QWidget* parent)
     if (what & (Change::Design | Change::Motion)) refresh();
   });
   refresh();
+}
+
+// The drawing above; the equations and the table of lengths below.
+QWidget* PolygonPanel::buildDrawingAndTable() {
+  m_stepText->setWordWrap(true);
+  m_equations->setWordWrap(true);
+  m_equations->setTextFormat(Qt::RichText);
+  m_equations->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  m_table->setObjectName("PolygonTable");
+  m_table->verticalHeader()->hide();
+  m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  m_table->horizontalHeader()->setSectionResizeMode(VectorColumn, QHeaderView::Stretch);
+  auto* lower = new QWidget(this);
+  auto* lowerLayout = new QVBoxLayout(lower);
+  lowerLayout->setContentsMargins(0, 0, 0, 0);
+  lowerLayout->addWidget(m_equations);
+  lowerLayout->addWidget(m_table, 1);
+  auto* splitter = new QSplitter(Qt::Vertical, this);
+  splitter->addWidget(m_view);
+  splitter->addWidget(lower);
+  splitter->setStretchFactor(0, 3);
+  splitter->setStretchFactor(1, 2);
+  splitter->setChildrenCollapsible(false);
+  return splitter;
 }
 
 void PolygonPanel::setOnScreen(bool on) {

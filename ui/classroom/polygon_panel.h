@@ -57,6 +57,7 @@ public:
   int arrowRows() const { return m_arrowRows; }
 
 private:
+  QWidget* buildDrawingAndTable();
   void refresh();
   void showPolygon();
   void fillTable();

@@ -12,6 +12,8 @@
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
 
+#include "tests/ui/support/four_bar_design.h"
+
 #include <catch2/catch.hpp>
 
 #include <QPushButton>
@@ -158,6 +160,19 @@ TEST_CASE("a linkage not driven by a crank shows why there are no polygons", "[u
   doc.reset(*k::designForExample("thesis-crank-rocker"));
   CHECK(panel.polygons().has_value());
   CHECK(panel.reason().isEmpty());
+}
+
+TEST_CASE("at a toggle, where rates do not exist, the panel shows the core's reason", "[ui][classroom]") {
+  MechanismDocument doc;
+  doc.reset(linkwright::testing::fourBar({40.0, 30.0, 20.0, 25.0}));  // non-Grashof: it stops at toggles
+  PolygonPanel panel(&doc);
+  doc.setCrankAngle(doc.analysis().inputRange.ranges[0].to);
+  REQUIRE(doc.poseStatus() == k::PoseStatus::Singular);
+  CHECK_FALSE(panel.polygons().has_value());
+  const auto core = k::polygonsAt(doc.mechanism(), {doc.crankAngle(), doc.design().omega, doc.design().alpha});
+  REQUIRE_FALSE(static_cast<bool>(core));
+  CHECK(panel.reason().contains(QString::fromStdString(core.error().message)));
+  CHECK(panel.view()->drawnVectors().empty());
 }
 
 TEST_CASE("the main window's Polygons tab follows the crank while shown", "[ui][classroom]") {
