@@ -61,5 +61,9 @@ int main(int argc, char** argv) {
     for (int i = 0; i < 3; ++i) alone.step();
     save(alone, dir, QStringLiteral("polygon_%1_step3.png").arg(base));
   }
+  // The lecture hall: presentation mode, the shaper's acceleration polygon.
+  window.setPresentationMode(true);
+  panel->setKind(kinematics::PolygonKind::Acceleration);
+  save(window, dir, QStringLiteral("polygon_window_presentation.png"));
   return 0;
 }
