@@ -193,14 +193,22 @@ void PolygonPanel::fillScales() {
     scales.push_back(chosen);
     std::sort(scales.begin(), scales.end());
   }
-  const QSignalBlocker block(m_scaleBox);
-  m_scaleBox->clear();
-  m_scaleBox->addItem(tr("Fit: %1").arg(scaleText(m_view->fitScale(), unit)), 0.0);
+  QStringList texts{tr("Fit: %1").arg(scaleText(m_view->fitScale(), unit))};
+  int current = 0;
   for (const double s : scales) {
-    m_scaleBox->addItem(scaleText(s, unit), s);
-    if (s == chosen) m_scaleBox->setCurrentIndex(m_scaleBox->count() - 1);
+    texts << scaleText(s, unit);
+    if (s == chosen) current = static_cast<int>(texts.size()) - 1;
   }
-  if (chosen <= 0.0) m_scaleBox->setCurrentIndex(0);
+  // While the crank turns the list mostly stays the same: an open list is left alone then.
+  QStringList shown;
+  for (int i = 0; i < m_scaleBox->count(); ++i) shown << m_scaleBox->itemText(i);
+  const QSignalBlocker block(m_scaleBox);
+  if (shown != texts) {
+    m_scaleBox->clear();
+    m_scaleBox->addItem(texts.front(), 0.0);
+    for (std::size_t i = 0; i < scales.size(); ++i) m_scaleBox->addItem(texts[static_cast<int>(i) + 1], scales[i]);
+  }
+  m_scaleBox->setCurrentIndex(current);
 }
 
 void PolygonPanel::addRow(const QString& stepText, const QString& vector, double magnitude, const QString& tip) {

@@ -16,6 +16,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <QComboBox>
 #include <QPushButton>
 #include <QTabWidget>
 #include <QTableWidget>
@@ -146,6 +147,26 @@ TEST_CASE("Step draws the arrows one at a time in the order a student draws them
   CHECK(panel.view()->drawnVectors()[1] == panel.polygons()->acceleration.vectors[1]);
   panel.findChild<QPushButton*>("PolygonAll")->click();
   CHECK(panel.view()->drawnVectors().size() == all.size());
+}
+
+TEST_CASE("a chosen round scale stays while the crank turns; each polygon keeps its own", "[ui][classroom]") {
+  MechanismDocument doc;
+  doc.reset(*k::designForExample("thesis-crank-rocker"));
+  PolygonPanel panel(&doc);
+  auto* box = panel.findChild<QComboBox*>("PolygonScale");
+  REQUIRE(box->itemData(box->currentIndex()).toDouble() == 0.0);  // fit
+  CHECK(box->currentText().startsWith("Fit: 1 cm = "));
+  const double chosen = panel.view()->fitScale() * 5.0;  // a round scale times 5 is one too
+  panel.setChosenScale(chosen);
+  for (const double deg : {10.0, 120.0, 250.0}) {
+    doc.setCrankAngle(k::degToRad(deg));
+    CHECK(panel.view()->scale() == chosen);
+    CHECK(box->itemData(box->currentIndex()).toDouble() == chosen);
+  }
+  panel.setKind(k::PolygonKind::Acceleration);
+  CHECK(panel.view()->chosenScale() == 0.0);
+  panel.setKind(k::PolygonKind::Velocity);
+  CHECK(panel.view()->chosenScale() == chosen);
 }
 
 TEST_CASE("a linkage not driven by a crank shows why there are no polygons", "[ui][classroom]") {
