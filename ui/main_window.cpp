@@ -3,6 +3,7 @@
 #include "ui/animation/crank_animator.h"
 #include "ui/canvas/force_arrows_item.h"
 #include "ui/canvas/linkage_view.h"
+#include "ui/classroom/polygon_panel.h"
 #include "ui/dialogs/attach_dyad_dialog.h"
 #include "ui/document/design_templates.h"
 #include "ui/document/document_file.h"
@@ -138,11 +139,14 @@ QWidget* MainWindow::buildAnalysisTabs() {
   m_tabs->addTab(forces, tr("Forces"));
   m_synthesis = new SynthesisPanel(m_document, m_canvas, this);
   m_tabs->addTab(m_synthesis, tr("Synthesis"));
+  m_polygons = new PolygonPanel(m_document, this);
+  m_tabs->addTab(m_polygons, tr("Polygons"));
   connect(m_tabs, &QTabWidget::currentChanged, this, &MainWindow::updateForcesNeeded);
   // The plots follow the document only while their tab is shown.
   const auto followTab = [this](int tab) {
     m_plots->setOnScreen(tab == 0);
     m_forcePlots->setOnScreen(tab == 1);
+    m_polygons->setOnScreen(tab == 3);
   };
   connect(m_tabs, &QTabWidget::currentChanged, this, followTab);
   followTab(m_tabs->currentIndex());
@@ -160,6 +164,8 @@ void MainWindow::updateForcesNeeded() {
 }
 
 void MainWindow::showForcesTab() { m_tabs->setCurrentIndex(1); }
+
+void MainWindow::showPolygonsTab() { m_tabs->setCurrentIndex(3); }
 
 void MainWindow::showForces() {
   showForcesTab();
@@ -212,6 +218,8 @@ void MainWindow::buildMenus() {
   m_forceArrowsAction->setCheckable(true);
   connect(m_forceArrowsAction, &QAction::toggled, this, &MainWindow::updateForcesNeeded);
   view->addAction(tr("Forces and &masses"), QKeySequence(Qt::CTRL | Qt::Key_F), this, &MainWindow::showForcesTab);
+  view->addAction(tr("Velocity and acceleration &polygons"), QKeySequence(Qt::CTRL | Qt::Key_G), this,
+                  &MainWindow::showPolygonsTab);
   QMenu* units = view->addMenu(tr("Angle &unit in plots"));
   auto* group = new QActionGroup(this);
   QAction* degrees = units->addAction(tr("&Degrees"));
@@ -385,6 +393,7 @@ void MainWindow::setPresentationMode(bool on) {
   m_forceArrows->setPresentationScale(on ? 2.0 : 1.0);
   m_plots->setPresentationScale(on ? kPresentationTextScale : 1.0);
   m_forcePlots->setPresentationScale(on ? kPresentationTextScale : 1.0);
+  m_polygons->setPresentationScale(on ? kPresentationTextScale : 1.0);
   // The class watches the linkage and the plots; Space, the arrows' menu and F11 still work.
   m_sidePanel->setVisible(!on);
   if (m_presentationAction->isChecked() != on) m_presentationAction->setChecked(on);

@@ -36,6 +36,7 @@ class MechanismDocument;
 class MessageBanner;
 class MotionPanel;
 class PlotPanel;
+class PolygonPanel;
 class Settings;
 class SynthesisPanel;
 
@@ -54,6 +55,7 @@ public:
   MotionPanel* motionPanel() const { return m_motion; }
   AnalysisPanel* analysisPanel() const { return m_analysis; }
   SynthesisPanel* synthesisPanel() const { return m_synthesis; }
+  PolygonPanel* polygonPanel() const { return m_polygons; }
   CrankAnimator* animator() const { return m_animator; }
   MessageBanner* banner() const { return m_banner; }
 
@@ -97,6 +99,7 @@ private:
   QWidget* buildAnalysisTabs();
   void updateForcesNeeded();
   void showForcesTab();
+  void showPolygonsTab();
   void refreshRecentFiles();
   void refreshTitle();
   bool save();
@@ -123,6 +126,7 @@ private:
   ForcePlotPanel* m_forcePlots;
   ForceArrowsItem* m_forceArrows;  // owned by the canvas's scene
   SynthesisPanel* m_synthesis = nullptr;
+  PolygonPanel* m_polygons = nullptr;
   QTabWidget* m_tabs = nullptr;
   QAction* m_forceArrowsAction = nullptr;
   QWidget* m_sidePanel = nullptr;
