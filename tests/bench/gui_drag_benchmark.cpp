@@ -193,6 +193,7 @@ int main(int argc, char** argv) {
     // Wander a few pixels around the start, as a hand does, staying assemblable.
     const QPoint to = (start + QPointF(12.0 * std::sin(i * 0.1), 8.0 * std::cos(i * 0.13))).toPoint();
     app.takeLongest();
+    const long sweeps0 = doc->sweepsRun();
     const double cpu0 = threadCpuMs();
     const auto t0 = std::chrono::steady_clock::now();
     QTest::mouseMove(canvas->viewport(), to);
@@ -207,9 +208,10 @@ int main(int argc, char** argv) {
     const std::string longestWhat = app.longestWhat();
     longest.push_back(app.takeLongest());
     if (options->trace)
-      std::printf("move %d: wall %.2f ms, GUI CPU %.2f ms, longest event %.2f ms (%s), handling %.2f ms\n", i,
-                  std::chrono::duration<double, std::milli>(t2 - t0).count(), cpu.back(), longest.back(),
-                  longestWhat.c_str(), std::chrono::duration<double, std::milli>(t1 - t0).count());
+      std::printf("move %d: wall %.2f ms, GUI CPU %.2f ms, longest event %.2f ms (%s), handling %.2f ms, %ld sweeps\n",
+                  i, std::chrono::duration<double, std::milli>(t2 - t0).count(), cpu.back(), longest.back(),
+                  longestWhat.c_str(), std::chrono::duration<double, std::milli>(t1 - t0).count(),
+                  doc->sweepsRun() - sweeps0);
     window.repaint();  // worst case: every widget of the window painted again
     const auto t3 = std::chrono::steady_clock::now();
     solve.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
