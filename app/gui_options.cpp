@@ -10,6 +10,49 @@
 
 namespace linkwright::app {
 
+namespace {
+
+// A whole number in [low, high], or a message naming the option, the value and the range.
+std::optional<int> wholeNumber(const std::string& option, const std::string& text, int low, int high,
+                               std::string& error) {
+  int value = 0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc{} || ptr != text.data() + text.size() || value < low || value > high) {
+    error = option + ": must be a whole number from " + std::to_string(low) + " to " + std::to_string(high) +
+            " (got '" + text + "')";
+    return std::nullopt;
+  }
+  return value;
+}
+
+bool parseAnimationOptions(const QCommandLineParser& parser, const QCommandLineOption& animation,
+                           const QCommandLineOption& frames, const QCommandLineOption& frameDelay, GuiOptions& o,
+                           std::string& error) {
+  if (parser.isSet(animation)) o.animation = parser.value(animation).toStdString();
+  if ((parser.isSet(frames) || parser.isSet(frameDelay)) && !o.animation) {
+    error = "--frames and --frame-delay need --animation FILE";
+    return false;
+  }
+  if (o.animation && o.screenshot) {
+    error = "give --screenshot or --animation, not both";
+    return false;
+  }
+  // The same bounds as File ▸ Export ▸ Animation (ui/export/cycle_animation.h checks them again).
+  if (parser.isSet(frames)) {
+    const auto n = wholeNumber("--frames", parser.value(frames).toStdString(), 2, 720, error);
+    if (!n) return false;
+    o.frames = *n;
+  }
+  if (parser.isSet(frameDelay)) {
+    const auto ms = wholeNumber("--frame-delay", parser.value(frameDelay).toStdString(), 20, 5000, error);
+    if (!ms) return false;
+    o.frameDelayMs = *ms;
+  }
+  return true;
+}
+
+}  // namespace
+
 std::string guiUsage() {
   std::string names;
   for (const auto& e : kinematics::examples()) names += "\n                      " + e.name;
@@ -24,13 +67,19 @@ std::string guiUsage() {
          "\n"
          "  --screenshot FILE   render the window to FILE (PNG) and exit, without animating\n"
          "  --crank-angle DEG   crank angle to show, degrees (default 0)\n"
+         "  --animation FILE    write an animated GIF of the canvas over one cycle (one turn\n"
+         "                      from the crank angle shown; a crank that cannot turn fully\n"
+         "                      goes there and back; a time base from start to end), exit\n"
+         "  --frames N          frames per cycle of the animation, 2 to 720 (default 72)\n"
+         "  --frame-delay MS    time each frame shows, ms, 20 to 5000, rounded to 10 ms\n"
+         "                      (default 40: 25 frames per second)\n"
          "  --presentation      large fonts and lines, full screen\n"
          "  --forces            open on the Forces tab, with force arrows on the canvas\n"
          "  --centres           draw the instant centres, Kennedy's lines and the centrodes\n"
          "                      (four-bars and slider-cranks; View ▸ Instant centres)\n"
          "  --help, --version\n\n"
-         "Exit codes: 0 success, 1 the screenshot could not be written, 2 bad usage or a file\n"
-         "that cannot be opened (the message says why).\n";
+         "Exit codes: 0 success, 1 the screenshot or animation could not be written, 2 bad\n"
+         "usage or a file that cannot be opened (the message says why).\n";
 }
 
 std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, std::string& error) {
@@ -45,7 +94,11 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
   const QCommandLineOption example("example", {}, "NAME");
   const QCommandLineOption screenshot("screenshot", {}, "FILE");
   const QCommandLineOption crankAngle("crank-angle", {}, "DEG");
-  parser.addOptions({help, version, presentation, forces, centres, example, screenshot, crankAngle});
+  const QCommandLineOption animation("animation", {}, "FILE");
+  const QCommandLineOption frames("frames", {}, "N");
+  const QCommandLineOption frameDelay("frame-delay", {}, "MS");
+  parser.addOptions(
+      {help, version, presentation, forces, centres, example, screenshot, crankAngle, animation, frames, frameDelay});
   parser.addPositionalArgument("file", {});
   QStringList arguments{"linkwright"};
   for (const std::string& a : args) arguments << QString::fromStdString(a);
@@ -53,7 +106,7 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
     error = parser.errorText().toStdString() + " (see linkwright --help)";
     return std::nullopt;
   }
-  for (const auto& option : {example, screenshot, crankAngle})
+  for (const auto& option : {example, screenshot, crankAngle, animation, frames, frameDelay})
     if (parser.values(option).size() > 1) {
       error = "--" + option.names().front().toStdString() + " is given more than once";
       return std::nullopt;
@@ -85,6 +138,7 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
     }
     o.crankAngleDeg = deg;
   }
+  if (!parseAnimationOptions(parser, animation, frames, frameDelay, o, error)) return std::nullopt;
   const QStringList files = parser.positionalArguments();
   if (files.size() > 1) {
     error = "only one file can be opened (got '" + files[0].toStdString() + "' and '" + files[1].toStdString() + "')";

@@ -1,6 +1,6 @@
 #pragma once
 // The GUI's command line: linkwright [FILE] [--example NAME] [--screenshot FILE.png]
-// [--presentation] [--forces] [--centres] [--crank-angle DEG] [--help] [--version].
+// [--animation FILE.gif [--frames N] [--frame-delay MS]] [--presentation] [--forces] [--centres] [--crank-angle DEG] [--help] [--version].
 
 #include <optional>
 #include <string>
@@ -13,6 +13,9 @@ struct GuiOptions {
   std::optional<std::string> example;     ///< a built-in example to start on
   std::optional<std::string> screenshot;  ///< render the window to this PNG and exit
   std::optional<double> crankAngleDeg;    ///< crank angle to show (default 0°)
+  std::optional<std::string> animation;   ///< write an animated GIF of one cycle here and exit
+  int frames = 72;                        ///< --frames: frames per cycle of the animation, 2 to 720
+  int frameDelayMs = 40;                  ///< --frame-delay: ms per frame, 20 to 5000
   bool presentation = false;
   bool forces = false;   ///< start on the Forces tab with force arrows shown
   bool centres = false;  ///< draw the instant centres and centrodes

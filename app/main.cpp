@@ -3,6 +3,7 @@
 
 #include "ui/animation/crank_animator.h"
 #include "ui/document/mechanism_document.h"
+#include "ui/export/cycle_animation.h"
 #include "ui/main_window.h"
 #include "ui/message_banner.h"
 
@@ -26,6 +27,22 @@ int takeScreenshot(linkwright::ui::MainWindow& window, const QString& path) {
   for (int i = 0; i < 5; ++i) QApplication::processEvents();
   if (!window.grab().save(path, "PNG")) {
     std::cerr << "linkwright: cannot write the screenshot " << path.toStdString() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+// Like the screenshot: the window settles, then the canvas is rendered over one cycle.
+int writeAnimation(linkwright::ui::MainWindow& window, const linkwright::app::GuiOptions& options) {
+  window.show();
+  for (int i = 0; i < 5; ++i) QApplication::processEvents();
+  window.settle();
+  for (int i = 0; i < 5; ++i) QApplication::processEvents();
+  linkwright::ui::AnimationSettings settings;
+  settings.frames = options.frames;
+  settings.frameDelayMs = options.frameDelayMs;
+  if (!window.exportAnimation(QString::fromStdString(*options.animation), settings)) {
+    std::cerr << "linkwright: " << window.banner()->text().toStdString() << "\n";
     return 1;
   }
   return 0;
@@ -60,12 +77,13 @@ int main(int argc, char** argv) {
   if (options->example) window.newDocument(*k::designForExample(*options->example));
   if (options->file && !window.openFile(QString::fromStdString(*options->file))) {
     std::cerr << "linkwright: " << window.banner()->text().toStdString() << "\n";
-    if (options->screenshot) return 2;
+    if (options->screenshot || options->animation) return 2;
   }
   if (options->crankAngleDeg) window.document()->setCrankAngle(k::degToRad(*options->crankAngleDeg));
   if (options->presentation) window.setPresentationMode(true);
   if (options->forces) window.showForces();
   if (options->centres) window.setShowInstantCentres(true);
+  if (options->animation) return writeAnimation(window, *options);
   if (options->screenshot) return takeScreenshot(window, QString::fromStdString(*options->screenshot));
   window.show();
   QTimer::singleShot(0, window.animator(), &linkwright::ui::CrankAnimator::play);

@@ -16,6 +16,8 @@ packages=(
   nlohmann-json3-dev         # the document reader's JSON parser
   libdxflib-dev              # dxflib (QCAD's DXF library): the DXF drawings of the links
   python3-ezdxf              # reads those drawings back in a test (tests/cli/dxf_readback.py)
+  libgif-dev                 # giflib: File ▸ Export ▸ Animation's GIF encoder and colour
+                             # quantizer (ui/export/gif_writer.h); the tests read GIFs back with it
   catch2                     # Catch2 2.13 test framework
   qt6-base-dev qt6-charts-dev qt6-svg-dev  # the GUI (Widgets, Concurrent, Charts, SVG export)
   libgl-dev                  # OpenGL headers that Qt6Gui's CMake package requires

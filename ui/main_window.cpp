@@ -9,6 +9,8 @@
 #include "ui/document/document_file.h"
 #include "ui/document/force_results.h"
 #include "ui/document/mechanism_document.h"
+#include "ui/export/animation_dialog.h"
+#include "ui/export/cycle_animation.h"
 #include "ui/export/dxf_options_dialog.h"
 #include "ui/export/view_image.h"
 #include "ui/message_banner.h"
@@ -39,6 +41,7 @@
 #include <QKeySequence>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QProgressDialog>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSplitter>
@@ -186,6 +189,7 @@ void MainWindow::buildMenus() {
   exportMenu->addAction(tr("Table as &CSV…"), this, &MainWindow::exportCsvDialog);
   exportMenu->addAction(tr("&Image of the canvas or a plot…"), this, &MainWindow::exportImageDialog);
   exportMenu->addAction(tr("&Links as DXF…"), this, &MainWindow::exportDxfDialog);
+  exportMenu->addAction(tr("&Animation…"), this, &MainWindow::exportAnimationDialog);
   file->addSeparator();
   file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -358,6 +362,28 @@ bool MainWindow::exportDxf(const QString& path, const k::io::DrawingOptions& opt
   return true;
 }
 
+bool MainWindow::exportAnimation(const QString& path, const AnimationSettings& settings, bool showProgress) {
+  m_animator->pause();  // the export moves the crank itself, and puts it back
+  std::unique_ptr<QProgressDialog> progress;
+  if (showProgress) {
+    progress =
+        std::make_unique<QProgressDialog>(tr("Rendering the animation…"), tr("Cancel"), 0, settings.frames, this);
+    progress->setWindowModality(Qt::WindowModal);
+    progress->setMinimumDuration(500);
+  }
+  const auto report = [&progress](int done, int) {
+    if (!progress) return true;
+    progress->setValue(done);
+    return !progress->wasCanceled();
+  };
+  if (auto why = exportCycleAnimation(*m_document, *m_canvas, path, settings, report)) {
+    showError(*why);
+    return false;
+  }
+  statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()), 3000);
+  return true;
+}
+
 bool MainWindow::exportCanvasImage(const QString& path) {
   if (auto why = saveViewImage(m_canvas, path, tr("Linkwright linkage"))) {
     showError(*why);
@@ -470,6 +496,20 @@ void MainWindow::exportDxfDialog() {
   if (path.isEmpty()) return;
   if (QFileInfo(path).suffix().isEmpty()) path += ".dxf";
   exportDxf(path, options.options());
+}
+
+void MainWindow::exportAnimationDialog() {
+  m_animator->pause();
+  const CycleFrames cycle = cycleFrames(*m_document, AnimationSettings::kMinFrames);
+  const QString what = cycle.inTime    ? tr("the time base, from its start to its end")
+                       : cycle.rocking ? tr("the input's range, there and back (it cannot turn fully)")
+                                       : tr("one turn of the crank");
+  AnimationDialog dialog(m_canvas->viewport()->size(), what, this);
+  if (dialog.exec() != QDialog::Accepted) return;
+  QString path = QFileDialog::getSaveFileName(this, tr("Export animation"), QString(), tr("Animated GIF (*.gif)"));
+  if (path.isEmpty()) return;
+  if (QFileInfo(path).suffix().isEmpty()) path += ".gif";
+  exportAnimation(path, dialog.settings(), true);
 }
 
 void MainWindow::exportImageDialog() {

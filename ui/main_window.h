@@ -39,6 +39,7 @@ class PlotPanel;
 class PolygonPanel;
 class Settings;
 class SynthesisPanel;
+struct AnimationSettings;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -73,6 +74,10 @@ public:
   /// Writes the links as a DXF drawing at the current pose (kinematics/io/dxf_export.h); on a
   /// refusal (a hole too large for a link, …) shows the core's reason and writes nothing.
   bool exportDxf(const QString& path, const kinematics::io::DrawingOptions& options);
+  /// Writes an animated GIF of the canvas over one cycle (ui/export/cycle_animation.h) and
+  /// puts the crank back; `showProgress` offers a cancellable progress dialog. On failure
+  /// shows why in the banner and writes nothing.
+  bool exportAnimation(const QString& path, const AnimationSettings& settings, bool showProgress = false);
   /// Writes the canvas as PNG or SVG.
   bool exportCanvasImage(const QString& path);
   /// Writes plot `index` (0 angles, 1 ω, 2 α) as PNG or SVG.
@@ -108,6 +113,7 @@ private:
   void exportCsvDialog();
   void exportImageDialog();
   void exportDxfDialog();
+  void exportAnimationDialog();
   bool maybeSave();
   void showError(const QString& message);
 

@@ -43,6 +43,13 @@ TEST_CASE("the designer's options are read in both value forms", "[ui][options]"
   CHECK(file.options->file == "arm.linkwright");
   CHECK(file.options->crankAngleDeg == 90.0);
 
+  const auto animation = parse({"--animation=cycle.gif", "--frames", "36", "--frame-delay=60"});
+  REQUIRE(animation.options);
+  CHECK(animation.options->animation == "cycle.gif");
+  CHECK(animation.options->frames == 36);
+  CHECK(animation.options->frameDelayMs == 60);
+  CHECK(parse({"--animation", "a.gif"}).options->frames == 72);
+
   CHECK(parse({"-h"}).options->help);
   CHECK(parse({"--version"}).options->version);
   CHECK_FALSE(parse({}).options->help);
@@ -58,6 +65,12 @@ TEST_CASE("mistakes on the designer's command line name the option", "[ui][optio
       {{"--screenshot", "a.png", "--screenshot", "b.png"}, "--screenshot is given more than once"},
       {{"a.linkwright", "b.linkwright"}, "only one file can be opened (got 'a.linkwright' and 'b.linkwright')"},
       {{"a.linkwright", "--example", "shaper"}, "give a file or --example, not both"},
+      {{"--animation", "a.gif", "--frames", "1"}, "--frames: must be a whole number from 2 to 720 (got '1')"},
+      {{"--animation", "a.gif", "--frames", "36.5"}, "--frames: must be a whole number from 2 to 720 (got '36.5')"},
+      {{"--animation", "a.gif", "--frame-delay", "6000"},
+       "--frame-delay: must be a whole number from 20 to 5000 (got '6000')"},
+      {{"--frame-delay", "40"}, "--frames and --frame-delay need --animation FILE"},
+      {{"--animation", "a.gif", "--screenshot", "a.png"}, "give --screenshot or --animation, not both"},
   }));
   CAPTURE(args);
   const auto p = parse(args);
