@@ -51,7 +51,7 @@ AnimationDialog::AnimationDialog(const QSize& canvasSize, const QString& cycle, 
   size->addWidget(m_width);
   size->addWidget(new QLabel(QStringLiteral("×"), this));
   size->addWidget(m_height);
-  form->addRow(tr("Image &size"), size);
+  form->addRow(tr("Image size"), size);
   form->addRow(QString(), m_loop);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
   form->addRow(buttons);
