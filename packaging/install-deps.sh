@@ -16,6 +16,9 @@ packages=(
   nlohmann-json3-dev         # the document reader's JSON parser
   libdxflib-dev              # dxflib (QCAD's DXF library): the DXF drawings of the links
   python3-ezdxf              # reads those drawings back in a test (tests/cli/dxf_readback.py)
+  libcairo2-dev pkgconf      # cairo draws the lab-report PDF (kinematics/report/); pkg-config finds it
+  fonts-dejavu-core          # the report's font (DejaVu Sans: Greek letters, °, ²)
+  poppler-utils              # pdftotext and pdfinfo read the report back in tests/cli/report_cli_test.cpp
   catch2                     # Catch2 2.13 test framework
   qt6-base-dev qt6-charts-dev qt6-svg-dev  # the GUI (Widgets, Concurrent, Charts, SVG export)
   libgl-dev                  # OpenGL headers that Qt6Gui's CMake package requires

@@ -7,6 +7,7 @@
 
 #include "kinematics/design/design.h"
 #include "kinematics/io/link_drawing.h"
+#include "kinematics/report/report_pdf.h"
 
 #include <QMainWindow>
 
@@ -73,6 +74,10 @@ public:
   /// Writes the links as a DXF drawing at the current pose (kinematics/io/dxf_export.h); on a
   /// refusal (a hole too large for a link, …) shows the core's reason and writes nothing.
   bool exportDxf(const QString& path, const kinematics::io::DrawingOptions& options);
+  /// Writes the lab-report PDF (kinematics/report/, as `linkwright-cli report`): drawn at input
+  /// `at`, a table row every `step` (both in the input's display unit: degrees for a crank); on
+  /// a refusal shows the core's reason and writes nothing.
+  bool exportReport(const QString& path, double at, double step, kinematics::report::Paper paper);
   /// Writes the canvas as PNG or SVG.
   bool exportCanvasImage(const QString& path);
   /// Writes plot `index` (0 angles, 1 ω, 2 α) as PNG or SVG.
@@ -108,6 +113,7 @@ private:
   void exportCsvDialog();
   void exportImageDialog();
   void exportDxfDialog();
+  void exportReportDialog();
   bool maybeSave();
   void showError(const QString& message);
 
