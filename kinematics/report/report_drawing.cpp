@@ -138,7 +138,7 @@ void groundDimension(cairo_t* cr, const View& v, const Dimension& d, double plat
 }
 
 // The length written along the link, upright, on the side away from the linkage's centre.
-void dimension(cairo_t* cr, const View& v, const Dimension& d, const Eigen::Vector2d& centre) {
+void dimension(cairo_t* cr, const View& v, const Dimension& d, const Eigen::Vector2d& centre, double plateRadius) {
   const Eigen::Vector2d a(v.x(d.from.x()), v.y(d.from.y()));
   const Eigen::Vector2d b(v.x(d.to.x()), v.y(d.to.y()));
   double angle = std::atan2(b.y() - a.y(), b.x() - a.x());
@@ -153,7 +153,8 @@ void dimension(cairo_t* cr, const View& v, const Dimension& d, const Eigen::Vect
   cairo_translate(cr, mid.x(), mid.y());
   cairo_rotate(cr, angle);
   cairo_set_source_rgb(cr, 0.6, 0.1, 0.1);
-  showText(cr, -w / 2.0, outward ? 14.0 : -8.0, d.text);
+  // Just off the plate's edge, so the text crosses neither the plate nor a point's name.
+  showText(cr, -w / 2.0, outward ? plateRadius + 8.0 : -plateRadius - 2.5, d.text);
   cairo_restore(cr);
 }
 
@@ -173,7 +174,7 @@ void drawLinkage(PageCursor& page, const ReportDrawing& d, double height) {
   if (!d.pointLabels.empty()) centre /= static_cast<double>(d.pointLabels.size());
   for (const Dimension& dim : d.dimensions) {
     if (dim.ground) groundDimension(cr, v, dim, d.parts.plateWidth / 2.0 * v.scale);
-    else dimension(cr, v, dim, centre);
+    else dimension(cr, v, dim, centre, d.parts.plateWidth / 2.0 * v.scale);
   }
   setFont(cr, 8.0, true);
   cairo_set_source_rgb(cr, 0, 0, 0);
