@@ -19,6 +19,7 @@ struct View {
   double originX = 0.0, originY = 0.0;  ///< page point of the model's (minX, maxY)
   double minX = 0.0, maxY = 0.0;
   double usedHeight = 0.0;  ///< points, the drawing's and its frame dimension's
+  double bottom = 0.0;      ///< page y of the drawing's lowest part
   double x(double mx) const { return originX + (mx - minX) * scale; }
   double y(double my) const { return originY + (maxY - my) * scale; }
 };
@@ -48,6 +49,7 @@ View fit(const ReportDrawing& d, double left, double top, double width, double h
   v.maxY = y1;
   v.originX = left + (width - (x1 - x0) * v.scale) / 2.0;
   v.originY = top;
+  v.bottom = v.y(y0);
   return v;
 }
 
@@ -122,7 +124,8 @@ void groundSymbol(cairo_t* cr, double x, double y, double size) {
 
 // The frame: a dimension line with end ticks under the ground symbols, its length below it.
 void groundDimension(cairo_t* cr, const View& v, const Dimension& d, double plateRadius) {
-  const double y = std::max(v.y(d.from.y()), v.y(d.to.y())) + plateRadius + kFrameDrop;
+  // Under the pivots' ground symbols, and under every part when the linkage hangs below them.
+  const double y = std::max(std::max(v.y(d.from.y()), v.y(d.to.y())) + plateRadius + kFrameDrop, v.bottom + 12.0);
   const double a = v.x(d.from.x()), b = v.x(d.to.x());
   cairo_set_source_rgb(cr, 0.6, 0.1, 0.1);
   cairo_set_line_width(cr, 0.5);
