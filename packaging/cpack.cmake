@@ -70,9 +70,12 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION "science")
 set(CPACK_DEBIAN_PACKAGE_PRIORITY "optional")
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+# The lab report's font (θ, ω, α, μ, ²) is found by fontconfig at run time, unseen by shlibdeps;
+# libcairo2's fontconfig only needs some font, not this one.
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core")
 if(TARGET linkwright)
   # Qt loads its window-system plugins at run time, so shlibdeps cannot see them; libqt6gui6
   # only recommends them and the offscreen one alone cannot open a window.
-  set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins")
+  set(CPACK_DEBIAN_PACKAGE_DEPENDS "${CPACK_DEBIAN_PACKAGE_DEPENDS}, qt6-qpa-plugins")
 endif()
 include(CPack)

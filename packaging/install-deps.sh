@@ -18,6 +18,9 @@ packages=(
   python3-ezdxf              # reads those drawings back in a test (tests/cli/dxf_readback.py)
   libgif-dev                 # giflib: File ▸ Export ▸ Animation's GIF encoder and colour
                              # quantizer (ui/export/gif_writer.h); the tests read GIFs back with it
+  libcairo2-dev pkgconf      # cairo draws the lab-report PDF (kinematics/report/); pkg-config finds it
+  fonts-dejavu-core          # the report's font (DejaVu Sans: Greek letters, °, ²)
+  poppler-utils              # pdftotext and pdfinfo read the report back in tests/cli/report_cli_test.cpp
   catch2                     # Catch2 2.13 test framework
   qt6-base-dev qt6-charts-dev qt6-svg-dev  # the GUI (Widgets, Concurrent, Charts, SVG export)
   libgl-dev                  # OpenGL headers that Qt6Gui's CMake package requires

@@ -12,6 +12,7 @@
 #include "ui/export/animation_dialog.h"
 #include "ui/export/cycle_animation.h"
 #include "ui/export/dxf_options_dialog.h"
+#include "ui/export/report_options_dialog.h"
 #include "ui/export/view_image.h"
 #include "ui/message_banner.h"
 #include "ui/panels/analysis_panel.h"
@@ -29,12 +30,15 @@
 #include "kinematics/design/examples.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/dxf_export.h"
+#include "kinematics/model/driver.h"
 #include "kinematics/model/recognise.h"
+#include "kinematics/report/report_pdf.h"
 
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDateTime>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGraphicsView>
@@ -192,6 +196,9 @@ void MainWindow::buildMenus() {
   exportMenu->addAction(tr("&Animation…"), this, &MainWindow::exportAnimationDialog);
   file->addSeparator();
   file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+  QMenu* report = menuBar()->addMenu(tr("&Report"));
+  report->addAction(tr("&PDF…"), this, &MainWindow::exportReportDialog);
 
   QMenu* edit = menuBar()->addMenu(tr("&Edit"));
   QAction* undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
@@ -510,6 +517,43 @@ void MainWindow::exportAnimationDialog() {
   if (path.isEmpty()) return;
   if (QFileInfo(path).suffix().isEmpty()) path += ".gif";
   exportAnimation(path, dialog.settings(), true);
+}
+
+bool MainWindow::exportReport(const QString& path, double at, double step, k::report::Paper paper) {
+  const k::Design& design = m_document->design();
+  const k::Mechanism& m = design.mechanism;
+  k::report::ReportRequest request;
+  request.title =
+      m_document->filePath().isEmpty() ? design.kind : QFileInfo(m_document->filePath()).fileName().toStdString();
+  request.subtitle = design.kind;
+  request.date = QDateTime::currentDateTimeUtc().date().toString(Qt::ISODate).toStdString();
+  request.grid = k::designSweepSpec(design);
+  // A step is a difference of inputs: the display unit's scale without its origin.
+  request.tableStep = k::inputFromDisplay(m, step) - k::inputFromDisplay(m, 0.0);
+  request.drawAt = k::inputFromDisplay(m, at);
+  const auto content = k::report::buildReport(m, design.dynamics, request);
+  const std::optional<k::Error> why = content ? k::report::writeReportPdf(*content, paper, path.toStdString())
+                                              : std::optional<k::Error>(content.error());
+  if (why) {
+    showError(tr("Report not written: %1").arg(QString::fromStdString(why->message)));
+    return false;
+  }
+  statusBar()->showMessage(tr("Wrote %1").arg(QFileInfo(path).fileName()), 3000);
+  return true;
+}
+
+void MainWindow::exportReportDialog() {
+  const k::Design& design = m_document->design();
+  const k::Mechanism& m = design.mechanism;
+  const bool crank = k::inputKind(m) == k::InputKind::Angle;
+  ReportOptionsDialog options(k::inputDisplayValue(m, m_document->crankAngle()),
+                              crank ? 360.0 : design.toDeg - design.fromDeg, QString::fromStdString(k::inputUnit(m)),
+                              this);
+  if (options.exec() != QDialog::Accepted) return;
+  QString path = QFileDialog::getSaveFileName(this, tr("Lab report as PDF"), QString(), tr("PDF documents (*.pdf)"));
+  if (path.isEmpty()) return;
+  if (QFileInfo(path).suffix().isEmpty()) path += ".pdf";
+  exportReport(path, options.at(), options.step(), options.paper());
 }
 
 void MainWindow::exportImageDialog() {

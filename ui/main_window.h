@@ -7,6 +7,7 @@
 
 #include "kinematics/design/design.h"
 #include "kinematics/io/link_drawing.h"
+#include "kinematics/report/report_pdf.h"
 
 #include <QMainWindow>
 
@@ -78,6 +79,10 @@ public:
   /// puts the crank back; `showProgress` offers a cancellable progress dialog. On failure
   /// shows why in the banner and writes nothing.
   bool exportAnimation(const QString& path, const AnimationSettings& settings, bool showProgress = false);
+  /// Writes the lab-report PDF (kinematics/report/, as `linkwright-cli report`): drawn at input
+  /// `at`, a table row every `step` (both in the input's display unit: degrees for a crank); on
+  /// a refusal shows the core's reason and writes nothing.
+  bool exportReport(const QString& path, double at, double step, kinematics::report::Paper paper);
   /// Writes the canvas as PNG or SVG.
   bool exportCanvasImage(const QString& path);
   /// Writes plot `index` (0 angles, 1 ω, 2 α) as PNG or SVG.
@@ -114,6 +119,7 @@ private:
   void exportImageDialog();
   void exportDxfDialog();
   void exportAnimationDialog();
+  void exportReportDialog();
   bool maybeSave();
   void showError(const QString& message);
 

@@ -30,6 +30,8 @@ const std::set<std::string>& optionsOf(Command command) {
   static const std::set<std::string> centres{"--fourbar", "--example", "--unit", "--branch", "--at"};
   static const std::set<std::string> dxf{"--fourbar", "--example", "--unit",  "--branch", "--coupler-point",
                                          "--at",      "--hole",    "--width", "-o",       "--output"};
+  static const std::set<std::string> report{"--fourbar", "--example", "--unit",  "--branch", "--coupler-point",
+                                            "--at",      "--step",    "--paper", "-o",       "--output"};
   static const std::set<std::string> polygon{"--fourbar", "--example", "--unit",  "--branch", "--at",
                                              "--rpm",     "--omega",   "--alpha", "--json"};
   static const std::set<std::string> inversions{"--fourbar", "--example", "--unit", "--branch", "--json"};
@@ -45,6 +47,7 @@ const std::set<std::string>& optionsOf(Command command) {
   case Command::Inversions: return inversions;
   case Command::Accuracy: return accuracy;
   case Command::Dxf: return dxf;
+  case Command::Report: return report;
   default: return none;
   }
 }
@@ -61,6 +64,7 @@ const char* commandName(Command command) {
   case Command::Inversions: return "inversions";
   case Command::Accuracy: return "accuracy";
   case Command::Dxf: return "dxf";
+  case Command::Report: return "report";
   default: return "linkwright-cli";
   }
 }
@@ -183,6 +187,8 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
     if (value.empty()) return usage(option, option + " needs a file name");
     inv.lawTable = value;
     if (!inv.law) inv.law = "table";
+  } else if (option == "--paper") {
+    inv.paper = value;
   } else if (option == "--svg") {
     if (value.empty()) return usage(option, option + " needs a file name");
     inv.svgFile = value;
@@ -242,17 +248,27 @@ std::optional<Error> checkDxf(const Invocation& inv) {
   return std::nullopt;
 }
 
+// report draws one pose and writes one file.
+std::optional<Error> checkReport(const Invocation& inv) {
+  if (inv.atDeg.size() > 1)
+    return usage("--at", "report draws one pose: --at takes one value (got " + std::to_string(inv.atDeg.size()) + ")");
+  if (!inv.outputFile) return usage("--output", "report needs -o FILE.pdf (where to write the report)");
+  return std::nullopt;
+}
+
 std::optional<Error> checkCombination(const Invocation& inv) {
   if (inv.command == Command::Arm) return checkArm(inv);
   if (inv.command == Command::Dxf)
     if (auto e = checkDxf(inv)) return e;
+  if (inv.command == Command::Report)
+    if (auto e = checkReport(inv)) return e;
   if ((inv.command == Command::Centres || inv.command == Command::Polygon) && inv.atDeg.empty())
     return usage("--at", std::string(commandName(inv.command)) +
                              " needs --at DEG (the crank angle, degrees; repeatable or DEG,DEG,...)");
   const bool needsMechanism = inv.command == Command::Analyze || inv.command == Command::Classify ||
                               inv.command == Command::Extremes || inv.command == Command::Centres ||
                               inv.command == Command::Polygon || inv.command == Command::Inversions ||
-                              inv.command == Command::Dxf;
+                              inv.command == Command::Dxf || inv.command == Command::Report;
   if (needsMechanism && !inv.fourBar && !inv.example && !inv.documentPath)
     return usage("--fourbar", std::string(commandName(inv.command)) +
                                   " needs FILE.json, --fourbar FRAME,CRANK,COUPLER,ROCKER or --example NAME");
@@ -271,9 +287,10 @@ std::optional<Error> checkCombination(const Invocation& inv) {
 kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& args) {
   Invocation inv;
   if (args.empty())
-    return usage("COMMAND",
-                 "missing command (analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, "
-                 "synthesize or examples; see --help)");
+    return usage(
+        "COMMAND",
+        "missing command (analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, report, "
+        "synthesize or examples; see --help)");
   const std::string& first = args[0];
   if (first == "--help" || first == "-h" || first == "help") {
     inv.command = Command::Help;
@@ -308,6 +325,7 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   else if (first == "inversions") inv.command = Command::Inversions;
   else if (first == "accuracy") inv.command = Command::Accuracy;
   else if (first == "dxf") inv.command = Command::Dxf;
+  else if (first == "report") inv.command = Command::Report;
   else if (!first.empty() && first[0] == '-')
     return usage(first, "unknown option '" + first + "' (see linkwright-cli --help)");
   else
@@ -333,7 +351,7 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
     const bool takesDocument = inv.command == Command::Analyze || inv.command == Command::Extremes ||
                                inv.command == Command::Classify || inv.command == Command::Centres ||
                                inv.command == Command::Polygon || inv.command == Command::Inversions ||
-                               inv.command == Command::Dxf;
+                               inv.command == Command::Dxf || inv.command == Command::Report;
     if (takesDocument && !option.empty() && option[0] != '-' && !inlineValue) {
       if (inv.documentPath)
         return usage(option, "only one document can be analysed at a time (got '" + *inv.documentPath + "' and '" +

@@ -31,7 +31,8 @@ enum class Command {
   Inversions,
   Accuracy,
   Synthesize,
-  Dxf
+  Dxf,
+  Report
 };
 
 /// Everything the user asked for. Angles in degrees and speeds as typed: converted to SI by
@@ -78,6 +79,7 @@ struct Invocation {
   // dxf: the drawing's sizes (length unit; positive, finite), empty for the defaults.
   std::optional<double> holeDiameter;
   std::optional<double> plateWidth;
+  std::optional<std::string> paper;  ///< report --paper: a4 or letter (checked by the command)
 };
 
 /// Parses the arguments after the program name.

@@ -30,6 +30,8 @@ Commands:
              what each choice costs (CSV; optional SVG plot)
   dxf        the links as a DXF drawing at true size: plate outlines, pivot holes,
              one layer per link, the ground pivots (LibreCAD, QCAD, FreeCAD)
+  report     a lab-report PDF: drawing, Grashof/mobility analysis, a table every
+             30°, refined extremes, plots, forces (with masses)
   synthesize a linkage from the motion wanted: rocker swing and time ratio, slider or
              shaper stroke, function generator, coupler poses, coupler path; lists
              the candidates with their defects and writes the chosen one as a document
@@ -125,6 +127,23 @@ Output: the six instant centres Iij of bodies 1 frame, 2 crank, 3 coupler (rod),
   (slider), as (x, y) in the length unit or "at infinity" with a direction; the velocity
   ratio ω4/ω2 (slider: v/ω2, length unit per rad) and the ideal mechanical advantage
   T4/T2 = ω2/ω4 (slider: F/T2 = ω2/v, per length unit), signed, infinite at a toggle.
+)";
+
+constexpr const char* kReportOptions =
+    R"(Report options (with the mechanism options; any linkage on an input grid):
+  -o, --output FILE.pdf
+                      where to write the report (required; written whole or not at all)
+  --at DEG            the input drawn on page 1, degrees for a crank, else the length
+                      unit (default: the grid's start)
+  --step DEG          the table's step, more than 0 and at most 360 for a crank (at most
+                      the input's range for a linear driver); default 30, as the thesis
+  --paper a4|letter   paper size (default a4)
+Output: a PDF (vector drawing, selectable text, "page i of N"): page 1 the title, the
+  linkage at --at with its link lengths and ground pivots, the Grashof class and mobility
+  (as classify); then the table of link angles (deg), ω (rad/s) and α (rad/s²), the same
+  numbers as analyze's CSV at 4 decimals; the extremes refined between the grid's samples
+  (as extremes); the joint forces and driving torque when the linkage has masses (as
+  analyze --forces); the plots of θ, ω, α (and slider x, v, a) against the input.
 )";
 
 constexpr const char* kDxfOptions =
@@ -284,7 +303,7 @@ constexpr const char* kExitCodes = R"(Exit codes:
   3  the linkage cannot be assembled over the requested range (rows that assemble are
      still written; the message gives the ranges that do not and the range that does);
      for arm: the tip path leaves the workspace (the message gives the exact times);
-     for centres and dxf: a requested input cannot be assembled; for polygon: a crank
+     for centres, dxf and report: a requested input cannot be assembled; for polygon: a crank
      angle cannot be assembled or is a toggle; for synthesize path: no
      start found a four-bar that assembles at every target
 
@@ -294,6 +313,7 @@ Examples:
   linkwright-cli arm --example seed-arm --format table
   linkwright-cli centres --example thesis-crank-rocker --at 0,90
   linkwright-cli dxf --example thesis-crank-rocker --at 30 --hole 2 -o links.dxf
+  linkwright-cli report --example thesis-crank-rocker --step 30 -o report.pdf
   linkwright-cli polygon --example thesis-crank-rocker --at 30
   linkwright-cli inversions --fourbar 60,25,70,45
   linkwright-cli synthesize swing --swing 60 --time-ratio 1.3 --rocker 50 -o design.json
@@ -305,13 +325,14 @@ std::string helpText(const std::string& topic) {
   std::string text = kUsage;
   const bool sweeps = topic.empty() || topic == "analyze" || topic == "extremes";
   if (sweeps || topic == "classify" || topic == "centres" || topic == "polygon" || topic == "inversions" ||
-      topic == "dxf")
+      topic == "dxf" || topic == "report")
     text += kMechanismOptions;
   if (sweeps) text += std::string("\n") + kAnalyzeOptions;
   if (topic.empty() || topic == "classify") text += std::string("\n") + kClassifyOptions;
   if (topic.empty() || topic == "centres") text += std::string("\n") + kCentresOptions;
   if (topic.empty() || topic == "polygon" || topic == "inversions") text += std::string("\n") + kPolygonOptions;
   if (topic.empty() || topic == "dxf") text += std::string("\n") + kDxfOptions;
+  if (topic.empty() || topic == "report") text += std::string("\n") + kReportOptions;
   if (topic.empty() || topic == "arm") text += std::string(topic.empty() ? "\n" : "") + kArmOptions;
   if (topic.empty() || topic == "accuracy") text += std::string("\n") + kAccuracyOptions;
   if (topic.empty() || topic == "synthesize") text += std::string("\n") + kSynthesizeOptions;
@@ -330,10 +351,10 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     if (!inv.helpTopic.empty() && inv.helpTopic != "analyze" && inv.helpTopic != "classify" &&
         inv.helpTopic != "extremes" && inv.helpTopic != "arm" && inv.helpTopic != "centres" &&
         inv.helpTopic != "polygon" && inv.helpTopic != "inversions" && inv.helpTopic != "dxf" &&
-        inv.helpTopic != "accuracy" && inv.helpTopic != "synthesize" && inv.helpTopic != "examples" &&
-        inv.helpTopic != "linkwright-cli") {
+        inv.helpTopic != "report" && inv.helpTopic != "accuracy" && inv.helpTopic != "synthesize" &&
+        inv.helpTopic != "examples" && inv.helpTopic != "linkwright-cli") {
       err << "linkwright-cli: no help for '" << inv.helpTopic
-          << "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, "
+          << "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, report, "
              "synthesize, examples)\n";
       return toInt(ExitCode::BadInput);
     }
@@ -350,6 +371,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   case Command::Inversions: return toInt(runInversions(inv, out, err));
   case Command::Accuracy: return toInt(runAccuracy(inv, out, err));
   case Command::Dxf: return toInt(runDxf(inv, out, err));
+  case Command::Report: return toInt(runReport(inv, out, err));
   case Command::Synthesize: return toInt(runSynthesize(inv, out, err));
   }
   return toInt(ExitCode::BadInput);

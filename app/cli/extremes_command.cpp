@@ -1,6 +1,7 @@
 #include "app/cli/commands.h"
 
 #include "kinematics/analysis/extrema.h"
+#include "kinematics/io/column_extrema.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/io/sweep_columns.h"
 #include "kinematics/model/driver.h"
@@ -27,19 +28,6 @@ std::optional<k::Extrema> refineOver(const k::Mechanism& m, const k::SweepSpec& 
     if (mask[j]) values[j] = sampled(j);
   }
   return k::refineExtrema(m, spec, values, mask, quantity);
-}
-
-// One column's extremes; nullopt where the column has no value at all.
-std::optional<k::Extrema> columnExtrema(const k::Mechanism& m, const k::SweepSpec& spec, const k::SweepResult& r,
-                                        const k::io::SweepColumn& column) {
-  const auto valid = [&](std::size_t j) { return column.isRate() ? r.ok(j) : r.assembled(j); };
-  // The search's poses unwrap angles next to a value of the sweep's own continuous column.
-  double near = 0.0;
-  for (std::size_t j = 0; j < r.size(); ++j)
-    if (valid(j)) near = column.value(r, j);
-  return refineOver(
-      m, spec, r, valid, [&](std::size_t j) { return column.value(r, j); },
-      [&](const k::Pose& pose, double angle) { return column.valueOf(pose, angle, near); });
 }
 
 // Where an extremum is: the input (a crank's angle in degrees) on an input grid, the instant
@@ -91,7 +79,7 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
   for (const k::io::SweepColumn& column : k::io::sweepColumns(resolved->mechanism, result->request)) {
     if (column.quantity == k::io::ColumnQuantity::InputAngle || column.quantity == k::io::ColumnQuantity::InputLength)
       continue;
-    if (const auto e = columnExtrema(resolved->mechanism, *spec, *result, column))
+    if (const auto e = k::io::columnExtrema(resolved->mechanism, *spec, *result, column))
       printRow(out, resolved->mechanism, column.name, *e, timeBase);
   }
   // Speed and acceleration magnitudes of each moving point: what seed 003 reports.

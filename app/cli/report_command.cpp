@@ -1,0 +1,107 @@
+// `linkwright-cli report`: the lab-report PDF of a linkage (kinematics/report/): the drawing at
+// one input, the Grashof / mobility analysis, a table every --step degrees, the refined
+// extremes, the plots and, with masses, the forces. The content and the file come from the
+// core calls the designer's Report ▸ PDF makes, so both write the same report.
+
+#include "app/cli/commands.h"
+
+#include "kinematics/io/number_format.h"
+#include "kinematics/model/units.h"
+#include "kinematics/model/validate.h"
+#include "kinematics/report/report_pdf.h"
+#include "kinematics/report/report_sections.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <ostream>
+
+namespace linkwright::cli {
+namespace {
+
+namespace k = kinematics;
+
+// The thesis (seed 000) tabulates every 30°.
+constexpr double kDefaultStepDeg = 30.0;
+
+// Today in UTC, or SOURCE_DATE_EPOCH's day where it is set (reproducible files).
+std::string today() {
+  std::time_t now = std::time(nullptr);
+  if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH"))
+    if (const auto value = std::strtoll(epoch, nullptr, 10); value > 0) now = static_cast<std::time_t>(value);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[16];
+  std::strftime(text, sizeof text, "%Y-%m-%d", &utc);
+  return text;
+}
+
+// The grid the plots and extremes run on: the document's or example's own.
+k::SweepSpec gridOf(const GridDefaults& d) {
+  const double intervals = std::max(1.0, std::round((d.toDeg - d.fromDeg) / d.stepDeg));
+  k::SweepSpec spec;
+  spec.fromAngle = d.toInput(d.fromDeg);
+  spec.toAngle = d.toInput(d.toDeg);
+  spec.samples = static_cast<std::size_t>(intervals) + 1;
+  spec.omega = d.omega;
+  spec.alpha = d.alpha;
+  return spec;
+}
+
+// --step: more than 0 and at most a turn for a crank, at most the range for a linear driver.
+k::Result<double> tableStep(const Invocation& inv, const GridDefaults& d) {
+  const bool crank = d.input == k::InputKind::Angle;
+  const double span = crank ? 360.0 : d.toDeg - d.fromDeg;
+  const double step = inv.stepDeg.value_or(crank ? kDefaultStepDeg : span / 12.0);
+  if (!(std::isfinite(step) && step > 0.0 && step <= span))
+    return k::Error{k::ErrorCode::InvalidValue, "--step",
+                    "--step must be more than 0 and at most " + k::io::formatShort(span) +
+                        (crank ? " degrees" : " " + d.lengthUnit + " (the input's range)") + " (got " +
+                        k::formatNumber(step) + ")"};
+  return d.toInput(step);
+}
+
+}  // namespace
+
+ExitCode runReport(const Invocation& inv, std::ostream& out, std::ostream& err) {
+  const auto fail = [&](const k::Error& e, ExitCode code = ExitCode::BadInput) {
+    err << "linkwright-cli: " << e.message << "\n";
+    return code;
+  };
+  const auto paper = k::report::paperFromName(inv.paper.value_or("a4"));
+  if (!paper)
+    return fail({k::ErrorCode::InvalidValue, "--paper", "--paper must be a4 or letter (got '" + *inv.paper + "')"});
+  const auto resolved = resolveMechanism(inv);
+  if (!resolved) return fail(resolved.error());
+  const GridDefaults& d = resolved->defaults;
+  if (d.time)
+    return fail({k::ErrorCode::InvalidValue, "report",
+                 "report tabulates an input grid, and " + resolved->source +
+                     " follows a motion law in time (not supported yet: use analyze)"});
+  const auto step = tableStep(inv, d);
+  if (!step) return fail(step.error());
+  k::report::ReportRequest request;
+  request.title = inv.documentPath ? std::filesystem::path(*inv.documentPath).filename().string()
+                  : inv.example
+                      ? *inv.example
+                      : "Four-bar " + k::io::formatShort(inv.fourBar->frame) + ", " +
+                            k::io::formatShort(inv.fourBar->crank) + ", " + k::io::formatShort(inv.fourBar->coupler) +
+                            ", " + k::io::formatShort(inv.fourBar->rocker) + " " + inv.lengthUnit;
+  request.subtitle = resolved->description.empty() ? resolved->kind : resolved->description;
+  request.date = today();
+  request.grid = gridOf(d);
+  request.tableStep = *step;
+  request.drawAt = d.toInput(inv.atDeg.empty() ? d.fromDeg : inv.atDeg.front());
+  const auto content = k::report::buildReport(resolved->mechanism, resolved->dynamics, request);
+  if (!content)
+    return fail(content.error(), content.error().field == "--at" ? ExitCode::NotAssemblable : ExitCode::BadInput);
+  if (auto e = k::report::writeReportPdf(*content, *paper, *inv.outputFile)) return fail(*e, ExitCode::IoError);
+  out << "wrote " << *inv.outputFile << ": the lab report of " << resolved->source << " ("
+      << (*paper == k::report::Paper::A4 ? "A4" : "Letter") << "), a table row every "
+      << k::report::inputText(resolved->mechanism, *step, false) << "\n";
+  return ExitCode::Success;
+}
+
+}  // namespace linkwright::cli

@@ -1,0 +1,191 @@
+#include "kinematics/report/report_content.h"
+
+#include "kinematics/dynamics/force_sweep.h"
+#include "kinematics/io/column_extrema.h"
+#include "kinematics/io/force_columns.h"
+#include "kinematics/io/number_format.h"
+#include "kinematics/io/sweep_columns.h"
+#include "kinematics/model/driver.h"
+#include "kinematics/model/units.h"
+#include "kinematics/report/report_sections.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace linkwright::kinematics::report {
+namespace {
+
+using io::ColumnQuantity;
+using io::formatFixed;
+using io::SweepColumn;
+
+constexpr std::size_t kPlotSamples = 721;
+
+// A rate is "toggle" where the linkage has none, as analyze's text table writes it.
+std::string cellText(const SweepColumn& c, const SweepResult& r, std::size_t j, std::optional<double>& value) {
+  if (c.isRate() && !r.ok(j)) return "toggle";
+  value = c.value(r, j);
+  return formatFixed(*value, kTableDecimals);
+}
+
+ReportTable sweepTable(const Mechanism& m, const SweepResult& r, const std::vector<SweepColumn>& columns) {
+  ReportTable table;
+  for (const SweepColumn& c : columns) table.columns.push_back(columnHeading(m, c));
+  for (std::size_t j = 0; j < r.size(); ++j) {
+    if (!r.assembled(j)) continue;
+    std::vector<std::string>& cells = table.cells.emplace_back();
+    std::vector<std::optional<double>>& values = table.values.emplace_back();
+    for (const SweepColumn& c : columns) cells.push_back(cellText(c, r, j, values.emplace_back()));
+  }
+  return table;
+}
+
+ReportTable extremesTable(const Mechanism& m, const SweepSpec& spec, const SweepResult& r,
+                          const std::vector<SweepColumn>& columns) {
+  const std::string where = "at " + inputName(m);
+  const std::string whereUnit = inputUnit(m) == "°" ? "deg" : inputUnit(m);
+  ReportTable table;
+  table.columns = {{"quantity", ""}, {"minimum", ""}, {where, whereUnit}, {"maximum", ""}, {where, whereUnit}};
+  for (const SweepColumn& c : columns) {
+    if (c.quantity == ColumnQuantity::InputAngle || c.quantity == ColumnQuantity::InputLength) continue;
+    const auto e = io::columnExtrema(m, spec, r, c);
+    if (!e) continue;
+    const double minAt = inputDisplayValue(m, e->minimum.inputAngle);
+    const double maxAt = inputDisplayValue(m, e->maximum.inputAngle);
+    // As `extremes` prints them: nine significant digits, the input to four decimals.
+    table.cells.push_back({c.name, io::formatShort(e->minimum.value, 9), formatFixed(minAt, 4),
+                           io::formatShort(e->maximum.value, 9), formatFixed(maxAt, 4)});
+    table.values.push_back({std::nullopt, e->minimum.value, minAt, e->maximum.value, maxAt});
+  }
+  return table;
+}
+
+// The curve of `column` over the fine sweep, broken where it has no value.
+PlotCurve curveOf(const Mechanism& m, const SweepResult& r, const SweepColumn& c) {
+  PlotCurve curve{columnHeading(m, c).heading, {}};
+  bool open = false;
+  for (std::size_t j = 0; j < r.size(); ++j) {
+    const bool valid = c.isRate() ? r.ok(j) : r.assembled(j);
+    if (!valid || (j > 0 && r.lockedAfter(j - 1))) open = false;
+    if (!valid) continue;
+    if (!open) curve.segments.emplace_back();
+    open = true;
+    curve.segments.back().emplace_back(inputDisplayValue(m, r.inputAngle[j]), c.value(r, j));
+  }
+  return curve;
+}
+
+std::vector<ReportPlot> plotsOf(const Mechanism& m, const SweepResult& r, const std::vector<SweepColumn>& columns) {
+  const std::string unit = inputUnit(m) == "°" ? "deg" : inputUnit(m);
+  const std::string xTitle = inputName(m) + " (" + unit + ")";
+  std::vector<ReportPlot> plots;
+  for (const PlotKind& kind : plotKinds(m)) {
+    ReportPlot plot{kind.title, xTitle, kind.unit, {}};
+    for (const SweepColumn& c : columns)
+      if (std::find(kind.quantities.begin(), kind.quantities.end(), c.quantity) != kind.quantities.end())
+        plot.curves.push_back(curveOf(m, r, c));
+    if (!plot.curves.empty()) plots.push_back(std::move(plot));
+  }
+  return plots;
+}
+
+// "F_O2_N" → ("F_O2", "N"); "T_drive_Nm" → ("T_drive", "N·m").
+TableColumn forceHeading(const std::string& name) {
+  for (const auto& [suffix, unit] : {std::pair{"_Nm", "N·m"}, {"_N", "N"}})
+    if (name.ends_with(suffix)) return {name.substr(0, name.size() - std::string(suffix).size()), unit};
+  return {name, ""};
+}
+
+Result<ReportTable> forcesTable(const Mechanism& m, const LinkageDynamics& dynamics, const SweepResult& r,
+                                const SweepColumn& input) {
+  auto forces = sweepForces(m, dynamics, r);
+  if (!forces) return Error{forces.error().code, "dynamics", "the forces: " + forces.error().message};
+  std::vector<io::ForceColumn> columns;
+  for (io::ForceColumn& c : io::forceColumns(forces->bodies))
+    if (c.isSummary()) columns.push_back(std::move(c));
+  ReportTable table;
+  table.columns.push_back(columnHeading(m, input));
+  for (const io::ForceColumn& c : columns) table.columns.push_back(forceHeading(c.name));
+  for (std::size_t j = 0; j < r.size(); ++j) {
+    if (!r.assembled(j)) continue;
+    std::vector<std::string>& cells = table.cells.emplace_back();
+    std::vector<std::optional<double>>& values = table.values.emplace_back();
+    cells.push_back(cellText(input, r, j, values.emplace_back()));
+    for (const io::ForceColumn& c : columns) {
+      if (!forces->ok(j)) {
+        cells.push_back(r.ok(j) ? "singular" : "toggle");
+        values.emplace_back();
+        continue;
+      }
+      values.emplace_back(c.value(*forces, j));
+      cells.push_back(formatFixed(*values.back(), kTableDecimals));
+    }
+  }
+  return table;
+}
+
+// The table's grid: the plots' range every `step`, its last row where a whole step lands.
+SweepSpec tableSpec(const SweepSpec& grid, double step) {
+  SweepSpec spec = grid;
+  const double intervals = std::floor((grid.toAngle - grid.fromAngle) / step + 1e-9);
+  spec.samples = static_cast<std::size_t>(intervals) + 1;
+  spec.toAngle = grid.fromAngle + intervals * step;
+  return spec;
+}
+
+std::optional<Error> checkRequest(const Mechanism& m, const ReportRequest& request) {
+  if (request.grid.time)
+    return Error{ErrorCode::InvalidValue, "time",
+                 "a report tabulates a crank's input grid; this linkage's driver follows a motion law in time"};
+  if (auto e = checkSweepSpec(request.grid, inputKind(m))) return e;
+  const double span = request.grid.toAngle - request.grid.fromAngle;
+  if (!(std::isfinite(request.tableStep) && request.tableStep > 0.0 && request.tableStep <= std::max(span, 1e-300)))
+    return Error{ErrorCode::InvalidValue, "tableStep",
+                 "the table step must be positive and at most the range tabulated, " +
+                     io::formatShort(inputDisplayValue(m, request.grid.fromAngle + span) -
+                                     inputDisplayValue(m, request.grid.fromAngle)) +
+                     " (got " + io::formatShort(inputDisplayValue(m, request.tableStep)) + ")"};
+  return std::nullopt;
+}
+
+}  // namespace
+
+Result<ReportContent> buildReport(const Mechanism& m, const LinkageDynamics& dynamics, const ReportRequest& request) {
+  if (auto e = checkRequest(m, request)) return *e;
+  ReportContent report;
+  report.title = request.title;
+  report.subtitle = request.subtitle;
+  report.date = request.date;
+  auto drawing = reportDrawing(m, request.drawAt);
+  if (!drawing) return drawing.error();
+  report.drawing = std::move(*drawing);
+  const SweepSpec tSpec = tableSpec(request.grid, request.tableStep);
+  const auto table = sweep(m, tSpec);
+  const auto fine = sweep(m, request.grid);
+  // The plots need more than a coarse grid (the thesis example's is every 30°): at least 720
+  // steps, every half degree of a crank's turn.
+  SweepSpec plotSpec = request.grid;
+  plotSpec.samples = std::max<std::size_t>(plotSpec.samples, kPlotSamples);
+  const auto plotted = sweep(m, plotSpec);
+  if (!table) return table.error();
+  if (!fine) return fine.error();
+  if (!plotted) return plotted.error();
+  report.analysis = analysisLines(m, *plotted);
+  const std::vector<SweepColumn> columns = reportColumns(m, *table);
+  report.table = sweepTable(m, *table, columns);
+  report.tableCaption = gridCaption(m, tSpec, "every " + inputText(m, request.tableStep, false));
+  report.extremes = extremesTable(m, request.grid, *fine, columns);
+  report.extremesCaption =
+      gridCaption(m, request.grid, "refined between " + std::to_string(request.grid.samples) + " samples");
+  report.plots = plotsOf(m, *plotted, columns);
+  if (!dynamics.empty()) {
+    auto forces = forcesTable(m, dynamics, *table, columns.front());
+    if (!forces) return forces.error();
+    report.forces = std::move(*forces);
+    report.forcesCaption = "Joint force sizes, driving torque or force, shaking force (N, N·m), at the table's inputs";
+  }
+  report.notes = sweepNotes(m, *fine);
+  return report;
+}
+
+}  // namespace linkwright::kinematics::report

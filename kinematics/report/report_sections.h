@@ -1,0 +1,50 @@
+#pragma once
+// The pieces report_content.cpp assembles a report from: which sweep columns the report
+// tabulates and how their headings read, which plots it draws, the analysis lines (the core's
+// analyseDesign, as `linkwright-cli classify` prints it), the drawing at one input, and the
+// notes on toggles and inputs that do not assemble.
+
+#include "kinematics/io/sweep_columns.h"
+#include "kinematics/report/report_content.h"
+
+#include <string>
+#include <vector>
+
+namespace linkwright::kinematics::report {
+
+/// The heading of a sweep column: "rocker θ" in "deg", "C vx" in "mm/s".
+TableColumn columnHeading(const Mechanism& mechanism, const io::SweepColumn& column);
+
+/// The columns a report tabulates, in `analyze`'s CSV order: the input, each moving link's
+/// angle, ω and α but the driven crank's (they are the input), the transmission angles and,
+/// for slider pins (RRP points), their x, vx, ax (and y, vy, ay where the pin moves in y).
+std::vector<io::SweepColumn> reportColumns(const Mechanism& mechanism, const SweepResult& sweep);
+
+/// One plot: its title, its value unit and the column quantities it draws.
+struct PlotKind {
+  std::string title;
+  std::string unit;
+  std::vector<io::ColumnQuantity> quantities;
+};
+
+/// The report's plots in order: angles, ω, α, transmission angle, slider position, velocity
+/// and acceleration.
+std::vector<PlotKind> plotKinds(const Mechanism& mechanism);
+
+/// An input in the driver's display unit: "30°", "12.5 mm"; `named` prefixes the input's name.
+std::string inputText(const Mechanism& mechanism, double input, bool named = true);
+
+/// "Crank angle 0° to 360°, every 30°; crank 1 rad/s, 0 rad/s²" for the grid `spec`.
+std::string gridCaption(const Mechanism& mechanism, const SweepSpec& spec, const std::string& sampling);
+
+/// The Grashof / mobility analysis of `mechanism`, whose sweep over its grid is `gridSweep`.
+std::vector<InfoLine> analysisLines(const Mechanism& mechanism, const SweepResult& gridSweep);
+
+/// The linkage drawn at input `at` (the driver's coordinate) with its link lengths; fails,
+/// naming "--at", where it cannot be assembled.
+Result<ReportDrawing> reportDrawing(const Mechanism& mechanism, double at);
+
+/// Toggles, inputs that do not assemble and locks of `sweep`, one sentence each.
+std::vector<std::string> sweepNotes(const Mechanism& mechanism, const SweepResult& sweep);
+
+}  // namespace linkwright::kinematics::report

@@ -1,0 +1,226 @@
+// Tests `linkwright-cli report`: the PDF it writes holds the solver's numbers (read back with
+// poppler's pdftotext, a reader independent of the cairo that writes it), the page numbers and
+// the Grashof class; the forces section appears with masses and the slider columns for a
+// slider-crank; bad options are refused, naming the option, and nothing is written. The
+// content model (kinematics/report/report_content.h) is checked against the sweep directly.
+
+#include "tests/cli/run_cli.h"
+
+#include "kinematics/design/examples.h"
+#include "kinematics/dynamics/force_sweep.h"
+#include "kinematics/io/number_format.h"
+#include "kinematics/io/sweep_columns.h"
+#include "kinematics/model/units.h"
+#include "kinematics/report/report_content.h"
+
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <random>
+#include <sstream>
+
+using linkwright::test::runCliCommand;
+namespace k = linkwright::kinematics;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratchDir() {
+  std::random_device random;
+  const fs::path dir = fs::temp_directory_path() / ("linkwright-report-cli-" + std::to_string(random()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+// The standard output of a shell command (pdftotext, pdfinfo).
+std::string capture(const std::string& command) {
+  std::string text;
+  const std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+  REQUIRE(pipe);
+  std::array<char, 4096> buffer{};
+  while (const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe.get())) text.append(buffer.data(), n);
+  return text;
+}
+
+std::string pdfText(const fs::path& pdf) {
+  return capture(std::string(LINKWRIGHT_PDFTOTEXT) + " -layout '" + pdf.string() + "' -");
+}
+
+int pdfPages(const fs::path& pdf) {
+  const std::string info = capture(std::string(LINKWRIGHT_PDFINFO) + " '" + pdf.string() + "'");
+  const auto at = info.find("Pages:");
+  REQUIRE(at != std::string::npos);
+  return std::stoi(info.substr(at + 6));
+}
+
+// True if one line of `text` holds `cells` in this order, as separate words.
+bool hasRow(const std::string& text, const std::vector<std::string>& cells) {
+  std::istringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line)) {
+    std::istringstream words(line);
+    std::string word;
+    std::size_t next = 0;
+    while (next < cells.size() && words >> word)
+      if (word == cells[next]) ++next;
+    if (next == cells.size()) return true;
+  }
+  return false;
+}
+
+std::string fixed(double v) { return k::io::formatFixed(v, k::report::kTableDecimals); }
+
+// The thesis crank-rocker's sweep every 30° from the example's own speed: what the table shows.
+k::SweepResult thesisEvery30(const k::Example& e) {
+  const k::SweepSpec spec{0.0, 2.0 * k::kPi, 13, e.omega, e.alpha};
+  auto r = k::sweep(e.mechanism, spec);
+  REQUIRE(r.ok());
+  return std::move(*r);
+}
+
+std::size_t linkIndex(const k::Mechanism& m, const std::string& name) {
+  for (std::size_t i = 0; i < m.links.size(); ++i)
+    if (m.links[i].name == name) return i;
+  FAIL("no link " << name);
+  return 0;
+}
+
+}  // namespace
+
+TEST_CASE("report of the thesis crank-rocker holds the solver's table, pages and class", "[cli][report]") {
+  const fs::path dir = scratchDir();
+  const fs::path file = dir / "thesis.pdf";
+  const auto run = runCliCommand({"report", "--example", "thesis-crank-rocker", "-o", file.string()});
+  REQUIRE(run.code == 0);
+  CHECK_THAT(run.out, Catch::Contains("a table row every 30°"));
+  // Title, drawing and analysis; the table and the extremes; the four plots of θ, ω, α and μ.
+  const int pages = pdfPages(file);
+  CHECK(pages == 3);
+  const std::string text = pdfText(file);
+  for (int p = 1; p <= pages; ++p)
+    CHECK_THAT(text, Catch::Contains("page " + std::to_string(p) + " of " + std::to_string(pages)));
+  CHECK_THAT(text, Catch::Contains("crank-rocker (shortest link: crank, longest: coupler)"));
+  CHECK_THAT(text, Catch::Contains("M = 3(4 − 1) − 2·4 − 0 = 1"));
+  CHECK_THAT(text, Catch::Contains("crank 25 mm"));
+
+  const k::Example e = *k::findExample("thesis-crank-rocker");
+  const k::SweepResult r = thesisEvery30(e);
+  const std::size_t coupler = linkIndex(e.mechanism, "coupler"), rocker = linkIndex(e.mechanism, "rocker");
+  for (std::size_t j = 0; j < r.size(); ++j) {
+    INFO("crank angle " << 30 * j);
+    // θ3, ω3, α3, θ4, ω4, α4 in the table's order and format (analyze's columns, 4 decimals).
+    CHECK(hasRow(text, {fixed(30.0 * static_cast<double>(j)), fixed(k::radToDeg(r.linkAngle[coupler][j])),
+                        fixed(r.linkOmega[coupler][j]), fixed(r.linkAlpha[coupler][j]),
+                        fixed(k::radToDeg(r.linkAngle[rocker][j])), fixed(r.linkOmega[rocker][j]),
+                        fixed(r.linkAlpha[rocker][j])}));
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("report's content model holds the sweep's numbers and extremes' refined values", "[cli][report]") {
+  const k::Example e = *k::findExample("thesis-crank-rocker");
+  k::report::ReportRequest request;
+  request.title = "thesis";
+  request.grid = {0.0, 2.0 * k::kPi, 13, e.omega, e.alpha};  // the example's grid, every 30°
+  request.tableStep = k::degToRad(30.0);
+  const auto report = k::report::buildReport(e.mechanism, {}, request);
+  REQUIRE(report.ok());
+  const k::SweepResult r = thesisEvery30(e);
+  REQUIRE(report->table.values.size() == r.size());
+  const std::size_t rocker = linkIndex(e.mechanism, "rocker");
+  REQUIRE(report->table.columns[5].heading == "rocker ω");
+  for (std::size_t j = 0; j < r.size(); ++j) CHECK(*report->table.values[j][5] == r.linkOmega[rocker][j]);
+  // The extremes table prints what `extremes` prints for the same grid.
+  const auto extremes = runCliCommand({"extremes", "--example", "thesis-crank-rocker"});
+  REQUIRE(extremes.code == 0);
+  REQUIRE(report->extremes.cells.size() >= 6);
+  for (const auto& row : report->extremes.cells) CHECK(hasRow(extremes.out, row));
+}
+
+TEST_CASE("report shows the forces of a linkage with masses", "[cli][report]") {
+  const fs::path dir = scratchDir();
+  const fs::path file = dir / "funsho.pdf";
+  const auto run = runCliCommand({"report", "--example", "funsho-fourbar", "--step", "45", "-o", file.string()});
+  REQUIRE(run.code == 0);
+  const std::string text = pdfText(file);
+  CHECK_THAT(text, Catch::Contains("Forces"));
+  CHECK_THAT(text, Catch::Contains("T_drive"));
+  const k::Example e = *k::findExample("funsho-fourbar");
+  const k::SweepSpec spec{0.0, 2.0 * k::kPi, 9, e.omega, e.alpha};
+  const auto r = k::sweep(e.mechanism, spec);
+  REQUIRE(r.ok());
+  const auto forces = k::sweepForces(e.mechanism, e.dynamics, *r);
+  REQUIRE(forces.ok());
+  for (std::size_t j = 0; j < r->size(); ++j) {
+    INFO("crank angle " << 45 * j);
+    CHECK(hasRow(text, {fixed(45.0 * static_cast<double>(j)), fixed(forces->driveTorque[j])}));
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("report of a slider-crank tabulates the slider", "[cli][report]") {
+  const fs::path dir = scratchDir();
+  const fs::path file = dir / "engine.pdf";
+  const auto run = runCliCommand({"report", "--example", "ls3-engine", "--paper", "letter", "-o", file.string()});
+  REQUIRE(run.code == 0);
+  const std::string text = pdfText(file);
+  const k::Example e = *k::findExample("ls3-engine");
+  std::size_t slider = 0;
+  for (std::size_t i = 0; i < e.mechanism.points.size(); ++i)
+    if (std::holds_alternative<k::RrpPoint>(e.mechanism.points[i].definition)) slider = i;
+  const std::string name = e.mechanism.points[slider].name;
+  // (pdftotext joins "C x" into "Cx": the narrow space of a short heading.)
+  CHECK_THAT(text, Catch::Contains(name + " vx") && Catch::Contains(name + " ax"));
+  CHECK_THAT(text, Catch::Contains("Slider position"));
+  const k::SweepSpec spec{0.0, 2.0 * k::kPi, 13, e.omega, e.alpha};
+  const auto r = k::sweep(e.mechanism, spec);
+  REQUIRE(r.ok());
+  for (std::size_t j = 0; j < r->size(); ++j)
+    CHECK(hasRow(text, {fixed(30.0 * static_cast<double>(j)), fixed(r->position[slider][j].x()),
+                        fixed(r->velocity[slider][j].x()), fixed(r->acceleration[slider][j].x())}));
+  CHECK_THAT(capture(std::string(LINKWRIGHT_PDFINFO) + " '" + file.string() + "'"), Catch::Contains("612 x 792 pts"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("report refuses bad options, naming them, and writes nothing", "[cli][report][errors]") {
+  const fs::path dir = scratchDir();
+  const std::string file = (dir / "r.pdf").string();
+  struct Case {
+    std::vector<std::string> args;
+    int code;
+    std::string message;
+  };
+  const Case cases[] = {
+      {{"--step", "0", "-o", file}, 2, "--step must be more than 0 and at most 360 degrees (got 0)"},
+      {{"--step", "-30", "-o", file}, 2, "--step must be more than 0 and at most 360 degrees (got -30)"},
+      {{"--step", "400", "-o", file}, 2, "--step must be more than 0 and at most 360 degrees (got 400)"},
+      {{"--step", "nan", "-o", file}, 2, "--step must be more than 0 and at most 360 degrees (got nan)"},
+      {{"--paper", "foo", "-o", file}, 2, "--paper must be a4 or letter (got 'foo')"},
+      {{"--at", "10,20", "-o", file}, 2, "--at takes one value"},
+      {{}, 2, "report needs -o FILE.pdf"},
+      {{"-o", (dir / "missing" / "r.pdf").string()}, 1, "cannot write " + (dir / "missing" / "r.pdf").string()},
+  };
+  for (const Case& c : cases) {
+    std::vector<std::string> args{"report", "--example", "thesis-crank-rocker"};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    const auto run = runCliCommand(args);
+    INFO(run.err);
+    CHECK(run.code == c.code);
+    CHECK_THAT(run.err, Catch::Contains(c.message));
+    CHECK(fs::is_empty(dir));
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("report refuses an input the linkage cannot reach", "[cli][report][errors]") {
+  const fs::path dir = scratchDir();
+  // Frame 60, crank 40, coupler 30, rocker 25: at crank 180° B is 100 from O4, more than 30 + 25.
+  const auto run = runCliCommand({"report", "--fourbar", "60,40,30,25", "--at", "180", "-o", (dir / "r.pdf").string()});
+  CHECK(run.code == 3);
+  CHECK_THAT(run.err, Catch::Contains("cannot be assembled at crank angle 180°"));
+  CHECK(fs::is_empty(dir));
+  fs::remove_all(dir);
+}
