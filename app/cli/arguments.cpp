@@ -1,4 +1,5 @@
 #include "app/cli/arguments.h"
+#include "app/cli/compare_options.h"
 #include "app/cli/option_values.h"
 
 #include "kinematics/model/validate.h"
@@ -34,6 +35,9 @@ const std::set<std::string>& optionsOf(Command command) {
                                              "--rpm",     "--omega",   "--alpha", "--json"};
   static const std::set<std::string> inversions{"--fourbar", "--example", "--unit", "--branch", "--json"};
   static const std::set<std::string> accuracy{"--example", "-o", "--output", "--svg"};
+  static const std::set<std::string> compare{"--fourbar", "--example",   "--unit",  "--branch", "--coupler-point",
+                                             "--rpm",     "--omega",     "--alpha", "--from",   "--map",
+                                             "--offset",  "--tolerance", "--json"};
   static const std::set<std::string> none{};
   switch (command) {
   case Command::Analyze: return analyze;
@@ -45,6 +49,7 @@ const std::set<std::string>& optionsOf(Command command) {
   case Command::Inversions: return inversions;
   case Command::Accuracy: return accuracy;
   case Command::Dxf: return dxf;
+  case Command::Compare: return compare;
   default: return none;
   }
 }
@@ -61,6 +66,7 @@ const char* commandName(Command command) {
   case Command::Inversions: return "inversions";
   case Command::Accuracy: return "accuracy";
   case Command::Dxf: return "dxf";
+  case Command::Compare: return "compare";
   default: return "linkwright-cli";
   }
 }
@@ -183,6 +189,8 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
     if (value.empty()) return usage(option, option + " needs a file name");
     inv.lawTable = value;
     if (!inv.law) inv.law = "table";
+  } else if (option == "--map" || option == "--offset" || option == "--tolerance") {
+    return applyCompareOption(inv, option, value);
   } else if (option == "--svg") {
     if (value.empty()) return usage(option, option + " needs a file name");
     inv.svgFile = value;
@@ -246,13 +254,15 @@ std::optional<Error> checkCombination(const Invocation& inv) {
   if (inv.command == Command::Arm) return checkArm(inv);
   if (inv.command == Command::Dxf)
     if (auto e = checkDxf(inv)) return e;
+  if (inv.command == Command::Compare)
+    if (auto e = checkCompare(inv)) return e;
   if ((inv.command == Command::Centres || inv.command == Command::Polygon) && inv.atDeg.empty())
     return usage("--at", std::string(commandName(inv.command)) +
                              " needs --at DEG (the crank angle, degrees; repeatable or DEG,DEG,...)");
   const bool needsMechanism = inv.command == Command::Analyze || inv.command == Command::Classify ||
                               inv.command == Command::Extremes || inv.command == Command::Centres ||
                               inv.command == Command::Polygon || inv.command == Command::Inversions ||
-                              inv.command == Command::Dxf;
+                              inv.command == Command::Dxf || inv.command == Command::Compare;
   if (needsMechanism && !inv.fourBar && !inv.example && !inv.documentPath)
     return usage("--fourbar", std::string(commandName(inv.command)) +
                                   " needs FILE.json, --fourbar FRAME,CRANK,COUPLER,ROCKER or --example NAME");
@@ -273,7 +283,7 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   if (args.empty())
     return usage("COMMAND",
                  "missing command (analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, "
-                 "synthesize or examples; see --help)");
+                 "compare, synthesize or examples; see --help)");
   const std::string& first = args[0];
   if (first == "--help" || first == "-h" || first == "help") {
     inv.command = Command::Help;
@@ -308,12 +318,13 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   else if (first == "inversions") inv.command = Command::Inversions;
   else if (first == "accuracy") inv.command = Command::Accuracy;
   else if (first == "dxf") inv.command = Command::Dxf;
+  else if (first == "compare") inv.command = Command::Compare;
   else if (!first.empty() && first[0] == '-')
     return usage(first, "unknown option '" + first + "' (see linkwright-cli --help)");
   else
     return usage(first, "unknown command '" + first +
                             "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, "
-                            "dxf, synthesize, examples; see --help)");
+                            "dxf, compare, synthesize, examples; see --help)");
   if (inv.command == Command::Arm) inv.lengthUnit = "m";  // the arm's seed (004) works in metres
 
   std::set<std::string> seen;
@@ -328,6 +339,10 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
     if (const auto eq = option.find('='); option.rfind("--", 0) == 0 && eq != std::string::npos) {
       inlineValue = option.substr(eq + 1);
       option.resize(eq);
+    }
+    if (inv.command == Command::Compare && !option.empty() && option[0] != '-' && !inlineValue) {
+      if (auto e = takeCompareArgument(inv, option)) return *e;
+      continue;
     }
     // A bare argument names a document, for the commands that analyse a linkage.
     const bool takesDocument = inv.command == Command::Analyze || inv.command == Command::Extremes ||
