@@ -116,3 +116,22 @@ TEST_CASE("compare --help prints the --map syntax and the exit codes", "[cli][co
   CHECK_THAT(r.out, Catch::Contains("crank-angle[:deg|rad]"));
   CHECK_THAT(r.out, Catch::Contains("exit code is 0 whenever it"));
 }
+
+TEST_CASE("compare: analyze's own table agrees with the exact solution to round-off", "[cli][compare]") {
+  // analyze writes round-trip doubles, so only the solver's own round-off is left.
+  const CliRun table = runCliCommand({"analyze", "--example", "thesis-crank-rocker", "--step", "7.5"});
+  REQUIRE(table.code == 0);
+  const fs::path file = scratchFile(table.out);
+  const auto json = nlohmann::json::parse(
+      compare(file.string(),
+              "1=crank-angle,4=coupler_angle_deg,7=rocker_angle_deg,8=rocker_omega_rad_s,9=rocker_alpha_rad_s2",
+              {"--json"})
+          .out);
+  CHECK(json["offset"]["deg"].get<double>() == Approx(0.0).margin(1e-9));
+  for (const auto& column : json["columns"]) {
+    CAPTURE(column["quantity"]);
+    CHECK(column["compared"] == 49);
+    CHECK(std::abs(column["worst"].get<double>()) < 1e-9);
+  }
+  fs::remove(file);
+}
