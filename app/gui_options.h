@@ -1,6 +1,7 @@
 #pragma once
 // The GUI's command line: linkwright [FILE] [--example NAME] [--screenshot FILE.png]
-// [--presentation] [--forces] [--centres] [--crank-angle DEG] [--help] [--version].
+// [--presentation] [--forces] [--centres] [--crank-angle DEG] [--compare TABLE.csv
+// [--compare-map MAP]] [--help] [--version].
 
 #include <optional>
 #include <string>
@@ -13,6 +14,8 @@ struct GuiOptions {
   std::optional<std::string> example;     ///< a built-in example to start on
   std::optional<std::string> screenshot;  ///< render the window to this PNG and exit
   std::optional<double> crankAngleDeg;    ///< crank angle to show (default 0°)
+  std::optional<std::string> compare;     ///< a table from another tool: open File ▸ Compare… on it
+  std::optional<std::string> compareMap;  ///< its column mapping (linkwright-cli compare's --map), compared at once
   bool presentation = false;
   bool forces = false;   ///< start on the Forces tab with force arrows shown
   bool centres = false;  ///< draw the instant centres and centrodes

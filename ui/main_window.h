@@ -37,6 +37,7 @@ class MessageBanner;
 class MotionPanel;
 class PlotPanel;
 class PolygonPanel;
+class CompareDialog;
 class Settings;
 class SynthesisPanel;
 
@@ -73,6 +74,10 @@ public:
   /// Writes the links as a DXF drawing at the current pose (kinematics/io/dxf_export.h); on a
   /// refusal (a hole too large for a link, …) shows the core's reason and writes nothing.
   bool exportDxf(const QString& path, const kinematics::io::DrawingOptions& options);
+  /// File ▸ Compare… on `path`, a table from another tool: opens the comparison dialog on it
+  /// (not modal; it closes itself). On a file that cannot be read or holds no numbers, shows
+  /// why in the banner and returns nullptr.
+  CompareDialog* openCompareTable(const QString& path);
   /// Writes the canvas as PNG or SVG.
   bool exportCanvasImage(const QString& path);
   /// Writes plot `index` (0 angles, 1 ω, 2 α) as PNG or SVG.
@@ -108,6 +113,7 @@ private:
   void exportCsvDialog();
   void exportImageDialog();
   void exportDxfDialog();
+  void compareDialog();
   bool maybeSave();
   void showError(const QString& message);
 
