@@ -77,6 +77,10 @@ std::string guiUsage() {
          "  --forces            open on the Forces tab, with force arrows on the canvas\n"
          "  --centres           draw the instant centres, Kennedy's lines and the centrodes\n"
          "                      (four-bars and slider-cranks; View ▸ Instant centres)\n"
+         "  --compare TABLE     open File ▸ Compare… on TABLE, a table from another tool;\n"
+         "                      with --screenshot, the comparison is rendered instead\n"
+         "  --compare-map MAP   its column mapping, as linkwright-cli compare's --map; the\n"
+         "                      comparison runs at once\n"
          "  --help, --version\n\n"
          "Exit codes: 0 success, 1 the screenshot or animation could not be written, 2 bad\n"
          "usage or a file that cannot be opened (the message says why).\n";
@@ -97,8 +101,10 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
   const QCommandLineOption animation("animation", {}, "FILE");
   const QCommandLineOption frames("frames", {}, "N");
   const QCommandLineOption frameDelay("frame-delay", {}, "MS");
-  parser.addOptions(
-      {help, version, presentation, forces, centres, example, screenshot, crankAngle, animation, frames, frameDelay});
+  const QCommandLineOption compare("compare", {}, "TABLE");
+  const QCommandLineOption compareMap("compare-map", {}, "MAP");
+  parser.addOptions({help, version, presentation, forces, centres, example, screenshot, crankAngle, animation, frames,
+                     frameDelay, compare, compareMap});
   parser.addPositionalArgument("file", {});
   QStringList arguments{"linkwright"};
   for (const std::string& a : args) arguments << QString::fromStdString(a);
@@ -106,7 +112,7 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
     error = parser.errorText().toStdString() + " (see linkwright --help)";
     return std::nullopt;
   }
-  for (const auto& option : {example, screenshot, crankAngle, animation, frames, frameDelay})
+  for (const auto& option : {example, screenshot, crankAngle, animation, frames, frameDelay, compare, compareMap})
     if (parser.values(option).size() > 1) {
       error = "--" + option.names().front().toStdString() + " is given more than once";
       return std::nullopt;
@@ -125,6 +131,14 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
       return std::nullopt;
     }
     o.example = name;
+  }
+  if (parser.isSet(compare)) o.compare = parser.value(compare).toStdString();
+  if (parser.isSet(compareMap)) {
+    if (!o.compare) {
+      error = "--compare-map goes with --compare TABLE";
+      return std::nullopt;
+    }
+    o.compareMap = parser.value(compareMap).toStdString();
   }
   if (parser.isSet(screenshot)) o.screenshot = parser.value(screenshot).toStdString();
   if (parser.isSet(crankAngle)) {

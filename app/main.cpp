@@ -2,6 +2,8 @@
 #include "app/gui_options.h"
 
 #include "ui/animation/crank_animator.h"
+#include "ui/compare/column_map_editor.h"
+#include "ui/compare/compare_dialog.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/export/cycle_animation.h"
 #include "ui/main_window.h"
@@ -12,6 +14,7 @@
 
 #include <QApplication>
 #include <QIcon>
+#include <QLabel>
 #include <QTimer>
 
 #include <iostream>
@@ -46,6 +49,27 @@ int writeAnimation(linkwright::ui::MainWindow& window, const linkwright::app::Gu
     return 1;
   }
   return 0;
+}
+
+// --compare: File ▸ Compare… on the table, mapped and compared at once with --compare-map.
+// Returns the dialog, or nullptr (the reason on stderr) when the table or the map is refused.
+linkwright::ui::CompareDialog* openComparison(linkwright::ui::MainWindow& window,
+                                              const linkwright::app::GuiOptions& o) {
+  namespace kc = linkwright::kinematics::compare;
+  auto* dialog = window.openCompareTable(QString::fromStdString(*o.compare));
+  if (dialog == nullptr) {
+    std::cerr << "linkwright: " << window.banner()->text().toStdString() << "\n";
+    return nullptr;
+  }
+  if (!o.compareMap) return dialog;
+  const auto mapping = kc::parseColumnMap(*o.compareMap, window.document()->mechanism());
+  if (!mapping) {
+    std::cerr << "linkwright: " << mapping.error().message << "\n";
+    return nullptr;
+  }
+  dialog->mapEditor()->setMapping(*mapping);
+  if (!dialog->compare()) std::cerr << "linkwright: " << dialog->messageLabel()->text().toStdString() << "\n";
+  return dialog;
 }
 
 }  // namespace
@@ -84,6 +108,18 @@ int main(int argc, char** argv) {
   if (options->forces) window.showForces();
   if (options->centres) window.setShowInstantCentres(true);
   if (options->animation) return writeAnimation(window, *options);
+  if (options->compare) {
+    linkwright::ui::CompareDialog* dialog = openComparison(window, *options);
+    if (dialog == nullptr && options->screenshot) return 2;
+    if (dialog != nullptr && options->screenshot) {
+      for (int i = 0; i < 5; ++i) QApplication::processEvents();
+      if (!dialog->grab().save(QString::fromStdString(*options->screenshot), "PNG")) {
+        std::cerr << "linkwright: cannot write the screenshot " << *options->screenshot << "\n";
+        return 1;
+      }
+      return 0;
+    }
+  }
   if (options->screenshot) return takeScreenshot(window, QString::fromStdString(*options->screenshot));
   window.show();
   QTimer::singleShot(0, window.animator(), &linkwright::ui::CrankAnimator::play);

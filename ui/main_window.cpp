@@ -4,6 +4,7 @@
 #include "ui/canvas/force_arrows_item.h"
 #include "ui/canvas/linkage_view.h"
 #include "ui/classroom/polygon_panel.h"
+#include "ui/compare/compare_dialog.h"
 #include "ui/dialogs/attach_dyad_dialog.h"
 #include "ui/document/design_templates.h"
 #include "ui/document/document_file.h"
@@ -30,6 +31,7 @@
 #include "kinematics/design/examples.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/dxf_export.h"
+#include "kinematics/io/numeric_table_csv.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/recognise.h"
 #include "kinematics/report/report_pdf.h"
@@ -39,6 +41,7 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDateTime>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGraphicsView>
@@ -194,6 +197,7 @@ void MainWindow::buildMenus() {
   exportMenu->addAction(tr("&Image of the canvas or a plot…"), this, &MainWindow::exportImageDialog);
   exportMenu->addAction(tr("&Links as DXF…"), this, &MainWindow::exportDxfDialog);
   exportMenu->addAction(tr("&Animation…"), this, &MainWindow::exportAnimationDialog);
+  file->addAction(tr("Co&mpare…"), this, &MainWindow::compareDialog);
   file->addSeparator();
   file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -554,6 +558,31 @@ void MainWindow::exportReportDialog() {
   if (path.isEmpty()) return;
   if (QFileInfo(path).suffix().isEmpty()) path += ".pdf";
   exportReport(path, options.at(), options.step(), options.paper());
+}
+
+void MainWindow::compareDialog() {
+  const QString path = QFileDialog::getOpenFileName(this, tr("Compare with a table from another tool"), QString(),
+                                                    tr("Tables (*.csv *.txt *.tsv);;All files (*)"));
+  if (!path.isEmpty()) openCompareTable(path);
+}
+
+CompareDialog* MainWindow::openCompareTable(const QString& path) {
+  QFile file(path);
+  if (!file.open(QIODevice::ReadOnly)) {
+    showError(tr("%1 cannot be opened for reading").arg(QFileInfo(path).fileName()));
+    return nullptr;
+  }
+  const QByteArray bytes = file.readAll();
+  const auto table =
+      k::io::readNumericTable(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+  if (!table) {
+    showError(tr("%1: %2").arg(QFileInfo(path).fileName(), QString::fromStdString(table.error().message)));
+    return nullptr;
+  }
+  auto* dialog = new CompareDialog(m_document->design(), *table, path, this);
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  dialog->show();
+  return dialog;
 }
 
 void MainWindow::exportImageDialog() {

@@ -38,6 +38,7 @@ class MessageBanner;
 class MotionPanel;
 class PlotPanel;
 class PolygonPanel;
+class CompareDialog;
 class Settings;
 class SynthesisPanel;
 struct AnimationSettings;
@@ -83,6 +84,10 @@ public:
   /// `at`, a table row every `step` (both in the input's display unit: degrees for a crank); on
   /// a refusal shows the core's reason and writes nothing.
   bool exportReport(const QString& path, double at, double step, kinematics::report::Paper paper);
+  /// File ▸ Compare… on `path`, a table from another tool: opens the comparison dialog on it
+  /// (not modal; it closes itself). On a file that cannot be read or holds no numbers, shows
+  /// why in the banner and returns nullptr.
+  CompareDialog* openCompareTable(const QString& path);
   /// Writes the canvas as PNG or SVG.
   bool exportCanvasImage(const QString& path);
   /// Writes plot `index` (0 angles, 1 ω, 2 α) as PNG or SVG.
@@ -120,6 +125,7 @@ private:
   void exportDxfDialog();
   void exportAnimationDialog();
   void exportReportDialog();
+  void compareDialog();
   bool maybeSave();
   void showError(const QString& message);
 

@@ -1,4 +1,5 @@
 #include "app/cli/arguments.h"
+#include "app/cli/compare_options.h"
 #include "app/cli/option_values.h"
 
 #include "kinematics/model/validate.h"
@@ -36,6 +37,9 @@ const std::set<std::string>& optionsOf(Command command) {
                                              "--rpm",     "--omega",   "--alpha", "--json"};
   static const std::set<std::string> inversions{"--fourbar", "--example", "--unit", "--branch", "--json"};
   static const std::set<std::string> accuracy{"--example", "-o", "--output", "--svg"};
+  static const std::set<std::string> compare{"--fourbar", "--example",   "--unit",  "--branch", "--coupler-point",
+                                             "--rpm",     "--omega",     "--alpha", "--from",   "--map",
+                                             "--offset",  "--tolerance", "--json"};
   static const std::set<std::string> none{};
   switch (command) {
   case Command::Analyze: return analyze;
@@ -48,6 +52,7 @@ const std::set<std::string>& optionsOf(Command command) {
   case Command::Accuracy: return accuracy;
   case Command::Dxf: return dxf;
   case Command::Report: return report;
+  case Command::Compare: return compare;
   default: return none;
   }
 }
@@ -65,6 +70,7 @@ const char* commandName(Command command) {
   case Command::Accuracy: return "accuracy";
   case Command::Dxf: return "dxf";
   case Command::Report: return "report";
+  case Command::Compare: return "compare";
   default: return "linkwright-cli";
   }
 }
@@ -189,6 +195,8 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
     if (!inv.law) inv.law = "table";
   } else if (option == "--paper") {
     inv.paper = value;
+  } else if (option == "--map" || option == "--offset" || option == "--tolerance") {
+    return applyCompareOption(inv, option, value);
   } else if (option == "--svg") {
     if (value.empty()) return usage(option, option + " needs a file name");
     inv.svgFile = value;
@@ -262,13 +270,15 @@ std::optional<Error> checkCombination(const Invocation& inv) {
     if (auto e = checkDxf(inv)) return e;
   if (inv.command == Command::Report)
     if (auto e = checkReport(inv)) return e;
+  if (inv.command == Command::Compare)
+    if (auto e = checkCompare(inv)) return e;
   if ((inv.command == Command::Centres || inv.command == Command::Polygon) && inv.atDeg.empty())
     return usage("--at", std::string(commandName(inv.command)) +
                              " needs --at DEG (the crank angle, degrees; repeatable or DEG,DEG,...)");
-  const bool needsMechanism = inv.command == Command::Analyze || inv.command == Command::Classify ||
-                              inv.command == Command::Extremes || inv.command == Command::Centres ||
-                              inv.command == Command::Polygon || inv.command == Command::Inversions ||
-                              inv.command == Command::Dxf || inv.command == Command::Report;
+  const bool needsMechanism =
+      inv.command == Command::Analyze || inv.command == Command::Classify || inv.command == Command::Extremes ||
+      inv.command == Command::Centres || inv.command == Command::Polygon || inv.command == Command::Inversions ||
+      inv.command == Command::Dxf || inv.command == Command::Report || inv.command == Command::Compare;
   if (needsMechanism && !inv.fourBar && !inv.example && !inv.documentPath)
     return usage("--fourbar", std::string(commandName(inv.command)) +
                                   " needs FILE.json, --fourbar FRAME,CRANK,COUPLER,ROCKER or --example NAME");
@@ -287,10 +297,9 @@ std::optional<Error> checkCombination(const Invocation& inv) {
 kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& args) {
   Invocation inv;
   if (args.empty())
-    return usage(
-        "COMMAND",
-        "missing command (analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, report, "
-        "synthesize or examples; see --help)");
+    return usage("COMMAND",
+                 "missing command (analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, "
+                 "report, compare, synthesize or examples; see --help)");
   const std::string& first = args[0];
   if (first == "--help" || first == "-h" || first == "help") {
     inv.command = Command::Help;
@@ -326,12 +335,13 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   else if (first == "accuracy") inv.command = Command::Accuracy;
   else if (first == "dxf") inv.command = Command::Dxf;
   else if (first == "report") inv.command = Command::Report;
+  else if (first == "compare") inv.command = Command::Compare;
   else if (!first.empty() && first[0] == '-')
     return usage(first, "unknown option '" + first + "' (see linkwright-cli --help)");
   else
     return usage(first, "unknown command '" + first +
                             "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, "
-                            "dxf, synthesize, examples; see --help)");
+                            "dxf, compare, synthesize, examples; see --help)");
   if (inv.command == Command::Arm) inv.lengthUnit = "m";  // the arm's seed (004) works in metres
 
   std::set<std::string> seen;
@@ -346,6 +356,10 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
     if (const auto eq = option.find('='); option.rfind("--", 0) == 0 && eq != std::string::npos) {
       inlineValue = option.substr(eq + 1);
       option.resize(eq);
+    }
+    if (inv.command == Command::Compare && !option.empty() && option[0] != '-' && !inlineValue) {
+      if (auto e = takeCompareArgument(inv, option)) return *e;
+      continue;
     }
     // A bare argument names a document, for the commands that analyse a linkage.
     const bool takesDocument = inv.command == Command::Analyze || inv.command == Command::Extremes ||

@@ -5,6 +5,7 @@
 
 #include "app/cli/synthesize_options.h"
 
+#include "kinematics/compare/table_comparison.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/result.h"
@@ -32,7 +33,21 @@ enum class Command {
   Accuracy,
   Synthesize,
   Dxf,
-  Report
+  Report,
+  Compare
+};
+
+/// compare --offset: auto (fitted), none, or a value in degrees.
+struct CompareOffsetOption {
+  kinematics::compare::OffsetMode mode = kinematics::compare::OffsetMode::Auto;
+  double degrees = 0.0;
+};
+
+/// compare --tolerance PCT[,ABS]: percent of each column's span, and an absolute part in each
+/// column's unit (default: its rounding).
+struct CompareToleranceOption {
+  double percent = 0.25;
+  std::optional<double> absolute;
 };
 
 /// Everything the user asked for. Angles in degrees and speeds as typed: converted to SI by
@@ -80,6 +95,11 @@ struct Invocation {
   std::optional<double> holeDiameter;
   std::optional<double> plateWidth;
   std::optional<std::string> paper;  ///< report --paper: a4 or letter (checked by the command)
+  // compare: another tool's table (the bare argument after the document, or the only one).
+  std::optional<std::string> compareTable;
+  std::optional<std::string> compareMap;  ///< --map text (kinematics/compare/column_mapping.h)
+  std::optional<CompareOffsetOption> compareOffset;
+  std::optional<CompareToleranceOption> compareTolerance;
 };
 
 /// Parses the arguments after the program name.

@@ -32,6 +32,9 @@ Commands:
              one layer per link, the ground pivots (LibreCAD, QCAD, FreeCAD)
   report     a lab-report PDF: drawing, Grashof/mobility analysis, a table every
              30°, refined extremes, plots, forces (with masses)
+  compare    another tool's table (SolidWorks Motion, MATLAB, Excel, NX) against the
+             exact solution at its own crank angles or times: worst and rms deviation
+             per column, the rows beyond a tolerance flagged
   synthesize a linkage from the motion wanted: rocker swing and time ratio, slider or
              shaper stroke, function generator, coupler poses, coupler path; lists
              the candidates with their defects and writes the chosen one as a document
@@ -295,6 +298,48 @@ Output: each candidate's link lengths, error (function: degrees), Grashof class,
   listed and marked, never dropped. Then the chosen one's dimensions and figures.
 )";
 
+constexpr const char* kCompareOptions =
+    R"(Compare (linkwright-cli compare FILE.json|--example NAME|--fourbar ... TABLE.csv --map MAP;
+see docs/compare.md; with the mechanism options):
+  TABLE.csv           the other tool's table: delimiter ',', ';' or tab (with ';' or tab
+                      a decimal comma is read as a point); the lines before the first row
+                      of numbers are its header; lines starting with # are skipped
+  --map COLUMN=WHAT[:UNIT][:FLAG...],...
+                      what each column holds; COLUMN counts from 1. One column is the x:
+                        crank-angle[:deg|rad]  or  time[:s|ms|min]
+                      the others are analyze's column names without their unit:
+                        <link>_angle (deg|rad), <link>_omega (rad/s|deg/s|rpm),
+                        <link>_alpha (rad/s2|deg/s2), transmission_angle, crank_angle,
+                        <point>_x, _y (the length unit, or m|cm|mm|in|ft),
+                        <point>_vx, _vy (unit/s), <point>_ax, _ay (unit/s2)
+                      (a full name such as rocker_omega_rad_s brings its unit). Flags:
+                        abs  the tool writes magnitudes (SolidWorks' |ω|, |α|)
+                        neg  the tool's sign is the opposite of ours (CW positive)
+                        rev  an angle measured from the link's other end (ours + 180°,
+                             SolidWorks' "inner" rocker angle)
+                      e.g. --map 2=time:s,3=coupler_angle:deg,4=rocker_angle:deg:rev
+  --offset auto|none|DEG
+                      a constant crank-angle offset: rows are solved at their crank
+                      angle + offset. auto (default): the least-squares offset within
+                      ±5°, fitted to the position columns if any are mapped, else to all
+                      (each weighted by 1/span²); DEG: given, within ±5
+  --tolerance PCT[,ABS]
+                      a row is flagged when |deviation| > ABS + PCT % of the column's
+                      span (max − min of its exact values); default 0.25 %, and ABS
+                      each column's rounding (half a unit in its last printed digit)
+  --rpm R | --omega W, --alpha A
+                      the crank's speed at every row (default: the linkage's own)
+  --from DEG          the crank angle at t = 0 of a time table (default: the linkage's
+                      first grid angle)
+  --json              the comparison as JSON, every row included
+Output: the table, x, offset and tolerance used; per mapped column its worst deviation
+  (value − exact, signed; angles across the nearest turn) and where, the rms, the
+  tolerance and how many rows are flagged; then each flagged row: line, x, the crank
+  angle solved at, value, exact value, deviation. Deviations are in the column's unit.
+  Flagged rows are the comparison's answer, not an error: the exit code is 0 whenever it
+  ran, 2 for a bad table, mapping or option.
+)";
+
 constexpr const char* kExitCodes = R"(Exit codes:
   0  success
   1  the output file could not be written
@@ -314,6 +359,8 @@ Examples:
   linkwright-cli centres --example thesis-crank-rocker --at 0,90
   linkwright-cli dxf --example thesis-crank-rocker --at 30 --hole 2 -o links.dxf
   linkwright-cli report --example thesis-crank-rocker --step 30 -o report.pdf
+  linkwright-cli compare --example thesis-crank-rocker solidworks.csv \
+      --map 2=time:s,3=coupler_omega:deg/s:abs,4=rocker_omega:deg/s:abs
   linkwright-cli polygon --example thesis-crank-rocker --at 30
   linkwright-cli inversions --fourbar 60,25,70,45
   linkwright-cli synthesize swing --swing 60 --time-ratio 1.3 --rocker 50 -o design.json
@@ -325,7 +372,7 @@ std::string helpText(const std::string& topic) {
   std::string text = kUsage;
   const bool sweeps = topic.empty() || topic == "analyze" || topic == "extremes";
   if (sweeps || topic == "classify" || topic == "centres" || topic == "polygon" || topic == "inversions" ||
-      topic == "dxf" || topic == "report")
+      topic == "dxf" || topic == "report" || topic == "compare")
     text += kMechanismOptions;
   if (sweeps) text += std::string("\n") + kAnalyzeOptions;
   if (topic.empty() || topic == "classify") text += std::string("\n") + kClassifyOptions;
@@ -333,6 +380,7 @@ std::string helpText(const std::string& topic) {
   if (topic.empty() || topic == "polygon" || topic == "inversions") text += std::string("\n") + kPolygonOptions;
   if (topic.empty() || topic == "dxf") text += std::string("\n") + kDxfOptions;
   if (topic.empty() || topic == "report") text += std::string("\n") + kReportOptions;
+  if (topic.empty() || topic == "compare") text += std::string("\n") + kCompareOptions;
   if (topic.empty() || topic == "arm") text += std::string(topic.empty() ? "\n" : "") + kArmOptions;
   if (topic.empty() || topic == "accuracy") text += std::string("\n") + kAccuracyOptions;
   if (topic.empty() || topic == "synthesize") text += std::string("\n") + kSynthesizeOptions;
@@ -351,11 +399,11 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     if (!inv.helpTopic.empty() && inv.helpTopic != "analyze" && inv.helpTopic != "classify" &&
         inv.helpTopic != "extremes" && inv.helpTopic != "arm" && inv.helpTopic != "centres" &&
         inv.helpTopic != "polygon" && inv.helpTopic != "inversions" && inv.helpTopic != "dxf" &&
-        inv.helpTopic != "report" && inv.helpTopic != "accuracy" && inv.helpTopic != "synthesize" &&
-        inv.helpTopic != "examples" && inv.helpTopic != "linkwright-cli") {
+        inv.helpTopic != "report" && inv.helpTopic != "compare" && inv.helpTopic != "accuracy" &&
+        inv.helpTopic != "synthesize" && inv.helpTopic != "examples" && inv.helpTopic != "linkwright-cli") {
       err << "linkwright-cli: no help for '" << inv.helpTopic
           << "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, report, "
-             "synthesize, examples)\n";
+             "compare, synthesize, examples)\n";
       return toInt(ExitCode::BadInput);
     }
     out << helpText(inv.helpTopic == "linkwright-cli" || inv.helpTopic == "examples" ? "" : inv.helpTopic);
@@ -372,6 +420,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   case Command::Accuracy: return toInt(runAccuracy(inv, out, err));
   case Command::Dxf: return toInt(runDxf(inv, out, err));
   case Command::Report: return toInt(runReport(inv, out, err));
+  case Command::Compare: return toInt(runCompare(inv, out, err));
   case Command::Synthesize: return toInt(runSynthesize(inv, out, err));
   }
   return toInt(ExitCode::BadInput);

@@ -4,7 +4,8 @@
 // arm (a two-link arm's joints along a straight tip path), centres (instant centres and
 // mechanical advantage at given crank angles), polygon (velocity and acceleration polygons at
 // given crank angles), inversions (a four-bar's or slider-crank's inversions), dxf (the links
-// as a DXF drawing), report (the lab-report PDF), synthesize (linkages from the motion wanted: kinematics/synthesis/) and
+// as a DXF drawing), report (the lab-report PDF), compare (another tool's table against the
+// exact solution), synthesize (linkages from the motion wanted: kinematics/synthesis/) and
 // examples (the built-ins).
 
 #include "app/cli/arguments.h"
@@ -30,6 +31,7 @@ ExitCode runInversions(const Invocation& invocation, std::ostream& out, std::ost
 ExitCode runAccuracy(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runDxf(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runReport(const Invocation& invocation, std::ostream& out, std::ostream& err);
+ExitCode runCompare(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runSynthesize(const Invocation& invocation, std::ostream& out, std::ostream& err);
 
 /// What an example brings besides the linkage: the driver's speed and the input grid.

@@ -1,0 +1,101 @@
+// `linkwright-cli compare`: another tool's table (SolidWorks Motion, MATLAB, Excel, NX) against
+// the exact solution at the table's own inputs (kinematics/compare/table_comparison.h). Prints
+// each mapped column's worst and rms deviation and the rows beyond the tolerance. Flagged rows
+// are the comparison's result, not a failure: the exit code is 0 whenever the comparison ran,
+// 2 when the table, the mapping or an option is wrong.
+
+#include "app/cli/commands.h"
+#include "app/cli/compare_report.h"
+#include "app/cli/option_values.h"
+
+#include "kinematics/compare/table_comparison.h"
+#include "kinematics/io/numeric_table_csv.h"
+#include "kinematics/model/units.h"
+#include "kinematics/model/validate.h"
+
+#include <cmath>
+#include <fstream>
+#include <ostream>
+#include <sstream>
+
+namespace linkwright::cli {
+namespace {
+
+namespace k = kinematics;
+namespace kc = kinematics::compare;
+
+k::Result<k::io::NumericTable> readTableFile(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) return k::Error{k::ErrorCode::InvalidValue, path, path + ": cannot be opened for reading"};
+  std::stringstream text;
+  text << file.rdbuf();
+  auto table = k::io::readNumericTable(text.str());
+  if (!table) return k::Error{table.error().code, path, path + ": " + table.error().message};
+  return table;
+}
+
+// The drive at the table's inputs: the linkage's own speed, or --rpm / --omega, --alpha, --from.
+k::Result<kc::CompareDrive> driveFor(const Invocation& inv, const GridDefaults& d) {
+  kc::CompareDrive drive;
+  drive.omega = inv.rpm ? k::rpmToRadPerSec(*inv.rpm) : inv.omega.value_or(d.omega);
+  drive.alpha = inv.alpha.value_or(d.alpha);
+  drive.startAngle = d.toInput(inv.fromDeg.value_or(d.fromDeg));
+  if (d.time) {
+    if (inv.rpm || inv.omega || inv.alpha || inv.fromDeg)
+      return usage(inv.rpm     ? "--rpm"
+                   : inv.omega ? "--omega"
+                   : inv.alpha ? "--alpha"
+                               : "--from",
+                   "this linkage's driver follows a motion law in time; its speed cannot be replaced here");
+    drive.law = d.time->law;
+  }
+  for (const auto& [value, option] : {std::pair{drive.omega, "--omega"}, {drive.alpha, "--alpha"}})
+    if (!std::isfinite(value) || std::abs(value) > 1e6)
+      return usage(option,
+                   std::string(option) + " must be finite and within ±1e6 (got " + k::formatNumber(value) + ")");
+  return drive;
+}
+
+kc::CompareOptions optionsFor(const Invocation& inv) {
+  kc::CompareOptions options;
+  if (inv.compareOffset) {
+    options.offset = inv.compareOffset->mode;
+    options.offsetDeg = inv.compareOffset->degrees;
+  }
+  if (inv.compareTolerance) {
+    options.relativeTolerance = inv.compareTolerance->percent / 100.0;
+    options.absoluteTolerance = inv.compareTolerance->absolute;
+  }
+  return options;
+}
+
+}  // namespace
+
+ExitCode runCompare(const Invocation& inv, std::ostream& out, std::ostream& err) {
+  const auto fail = [&err](const std::string& message) {
+    err << "linkwright-cli: " << message << "\n";
+    return ExitCode::BadInput;
+  };
+  const auto resolved = resolveMechanism(inv);
+  if (!resolved) return fail(resolved.error().message);
+  const auto table = readTableFile(*inv.compareTable);
+  if (!table) return fail(table.error().message);
+  const auto mapping = kc::parseColumnMap(*inv.compareMap, resolved->mechanism);
+  if (!mapping) return fail(mapping.error().message);
+  if (auto e = kc::checkColumnMapping(*mapping, *table)) return fail("--map: " + e->message);
+  const auto drive = driveFor(inv, resolved->defaults);
+  if (!drive) return fail(drive.error().message);
+  const kc::CompareOptions options = optionsFor(inv);
+  const auto comparison = kc::compareTable(resolved->mechanism, *drive, *table, *mapping, options);
+  if (!comparison) {
+    const k::Error& e = comparison.error();
+    const std::string option = e.field == "offset" ? "--offset: " : e.field == "tolerance" ? "--tolerance: " : "";
+    return fail(option + e.message);
+  }
+  const CompareContext context{*inv.compareTable, resolved->source, *table, *drive, options, *mapping};
+  if (inv.json) writeComparisonJson(out, context, *comparison);
+  else writeComparisonText(out, context, *comparison);
+  return ExitCode::Success;
+}
+
+}  // namespace linkwright::cli

@@ -1,0 +1,169 @@
+#include "app/cli/compare_report.h"
+
+#include "kinematics/io/number_format.h"
+#include "kinematics/model/units.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <ostream>
+#include <vector>
+
+namespace linkwright::cli {
+namespace {
+
+namespace k = kinematics;
+namespace kc = kinematics::compare;
+using k::io::formatShort;
+
+using Rows = std::vector<std::vector<std::string>>;
+
+// Left-aligned columns two spaces apart, each line indented by `indent`.
+void writeAligned(std::ostream& out, const Rows& rows, const std::string& indent = "") {
+  std::vector<std::size_t> width;
+  const auto length = [](const std::string& s) {  // UTF-8 code points, for "°" and "²"
+    return static_cast<std::size_t>(std::count_if(s.begin(), s.end(), [](char c) { return (c & 0xC0) != 0x80; }));
+  };
+  for (const auto& row : rows)
+    for (std::size_t i = 0; i < row.size(); ++i) {
+      if (width.size() <= i) width.push_back(0);
+      width[i] = std::max(width[i], length(row[i]));
+    }
+  for (const auto& row : rows) {
+    std::string line = indent;
+    for (std::size_t i = 0; i < row.size(); ++i)
+      line += row[i] + (i + 1 < row.size() ? std::string(width[i] - length(row[i]) + 2, ' ') : "");
+    out << line << "\n";
+  }
+}
+
+std::string delimiterName(const k::io::NumericTable& t) {
+  const std::string d = t.delimiter == '\t'  ? "tab-separated"
+                        : t.delimiter == ';' ? "';'-separated"
+                                             : "comma-separated";
+  return d + (t.decimalComma ? ", decimal comma" : "");
+}
+
+std::string headerOf(const k::io::NumericTable& t, std::size_t column) {
+  std::string label = t.labels[column];
+  if (label.size() > 28) label = label.substr(0, 25) + "...";
+  return label.empty() ? "-" : label;
+}
+
+std::string xDescription(const CompareContext& c, const kc::Comparison& cmp) {
+  const kc::AxisColumn& axis = cmp.axis;
+  std::string text = "column " + std::to_string(axis.column + 1) + " (" + headerOf(c.table, axis.column) + "), ";
+  if (axis.kind == kc::AxisKind::CrankAngle)
+    return text + "the crank angle in " + axis.unit.name + "; the crank at " +
+           formatShort(k::radPerSecToRpm(c.drive.omega)) + " rpm";
+  text += "the time in " + axis.unit.name;
+  if (c.drive.law) return text + "; the crank follows the linkage's motion law";
+  return text + "; the crank at " + formatShort(k::radPerSecToRpm(c.drive.omega)) + " rpm from " +
+         formatShort(k::radToDeg(c.drive.startAngle)) + "° at t = 0";
+}
+
+std::string solvedAt(double offsetDeg) {
+  return std::string("rows solved at their crank angle ") + (offsetDeg < 0.0 ? "- " : "+ ") +
+         formatShort(std::abs(offsetDeg), 4) + "°";
+}
+
+std::string offsetDescription(const CompareContext& c, const kc::Comparison& cmp) {
+  const std::string value = formatShort(cmp.offsetDeg, 4) + "°";
+  switch (cmp.offsetMode) {
+  case kc::OffsetMode::None: return "none (rows solved at the crank angle they state)";
+  case kc::OffsetMode::Given: return value + " (given): " + solvedAt(cmp.offsetDeg);
+  case kc::OffsetMode::Auto: break;
+  }
+  std::string text = value + " (least squares within ±" + formatShort(c.options.offsetBoundDeg) + "°, fitted to " +
+                     (cmp.offsetFromPositions ? "the position columns" : "all columns") +
+                     "): " + solvedAt(cmp.offsetDeg);
+  if (cmp.offsetAtBound) text += "\n        at the bound: the table may be shifted further, or mapped wrong";
+  return text;
+}
+
+void writeFlagged(std::ostream& out, const kc::Comparison& cmp) {
+  for (const kc::ColumnComparison& column : cmp.columns) {
+    if (column.flagged == 0) continue;
+    out << "\ncolumn " << column.mapped.column + 1 << ", " << column.mapped.describe() << ": " << column.flagged
+        << " of " << column.compared << " rows beyond ±" << formatShort(column.tolerance, 3) << "\n";
+    Rows rows{{"line", "x", "crank (deg)", "value", "exact", "deviation"}};
+    for (const kc::RowComparison& row : column.rows) {
+      if (!row.flagged) continue;
+      rows.push_back({std::to_string(row.line), formatShort(row.x), formatShort(row.inputDeg, 7),
+                      formatShort(row.value), row.exact ? formatShort(*row.exact, 6) : "none",
+                      row.exact ? formatShort(row.deviation, 4) : row.note});
+    }
+    writeAligned(out, rows, "  ");
+  }
+}
+
+}  // namespace
+
+void writeComparisonText(std::ostream& out, const CompareContext& c, const kc::Comparison& cmp) {
+  out << "table:     " << c.tablePath << ", " << c.table.rows.size() << " rows, " << delimiterName(c.table) << "\n"
+      << "exact:     " << c.source << "\n"
+      << "x:         " << xDescription(c, cmp) << "\n"
+      << "offset:    " << offsetDescription(c, cmp) << "\n"
+      << "tolerance: "
+      << (c.options.absoluteTolerance ? formatShort(*c.options.absoluteTolerance)
+                                      : std::string("each column's rounding"))
+      << " + " << formatShort(c.options.relativeTolerance * 100.0) << " % of its span (max - min of the exact values)\n"
+      << "map:       " << kc::formatColumnMap(c.mapping) << "\n\n";
+  Rows rows{{"column", "header", "compared with", "rows", "worst", "at x", "rms", "tolerance", "flagged"}};
+  for (const kc::ColumnComparison& column : cmp.columns)
+    rows.push_back({std::to_string(column.mapped.column + 1), headerOf(c.table, column.mapped.column),
+                    column.mapped.describe(), std::to_string(column.compared), formatShort(column.worst, 4),
+                    formatShort(column.worstX), formatShort(column.rms, 4), formatShort(column.tolerance, 3),
+                    std::to_string(column.flagged)});
+  writeAligned(out, rows);
+  const std::size_t flagged = cmp.flaggedRows();
+  if (flagged == 0) out << "\nevery row agrees within the tolerance\n";
+  else writeFlagged(out, cmp);
+}
+
+void writeComparisonJson(std::ostream& out, const CompareContext& c, const kc::Comparison& cmp) {
+  using nlohmann::json;
+  const auto number = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+  json columns = json::array();
+  for (const kc::ColumnComparison& column : cmp.columns) {
+    json rows = json::array();
+    for (const kc::RowComparison& row : column.rows)
+      rows.push_back({{"line", row.line},
+                      {"x", number(row.x)},
+                      {"crank_angle_deg", number(row.inputDeg)},
+                      {"value", number(row.value)},
+                      {"exact", row.exact ? number(*row.exact) : json(nullptr)},
+                      {"deviation", row.exact ? number(row.deviation) : json(nullptr)},
+                      {"flagged", row.flagged},
+                      {"note", row.note}});
+    columns.push_back({{"column", column.mapped.column + 1},
+                       {"header", c.table.labels[column.mapped.column]},
+                       {"quantity", column.mapped.quantity.key},
+                       {"unit", column.mapped.unit.name},
+                       {"negated", column.mapped.negated},
+                       {"magnitude", column.mapped.magnitude},
+                       {"reversed", column.mapped.reversed},
+                       {"span", number(column.span)},
+                       {"tolerance", number(column.tolerance)},
+                       {"worst", number(column.worst)},
+                       {"worst_at_x", number(column.worstX)},
+                       {"rms", number(column.rms)},
+                       {"compared", column.compared},
+                       {"flagged", column.flagged},
+                       {"rows", std::move(rows)}});
+  }
+  const char* mode = cmp.offsetMode == kc::OffsetMode::Auto   ? "auto"
+                     : cmp.offsetMode == kc::OffsetMode::None ? "none"
+                                                              : "given";
+  const json doc{{"table", c.tablePath},
+                 {"rows", c.table.rows.size()},
+                 {"map", kc::formatColumnMap(c.mapping)},
+                 {"offset", {{"mode", mode}, {"deg", number(cmp.offsetDeg)}, {"at_bound", cmp.offsetAtBound}}},
+                 {"tolerance_percent_of_span", number(c.options.relativeTolerance * 100.0)},
+                 {"flagged_rows", cmp.flaggedRows()},
+                 {"columns", std::move(columns)}};
+  out << doc.dump(2) << "\n";
+}
+
+}  // namespace linkwright::cli

@@ -1,0 +1,32 @@
+#pragma once
+// `linkwright-cli compare`'s output: what was compared (the table, its layout, the x column,
+// the drive, the offset and the tolerance), a line per mapped column (worst and rms deviation,
+// tolerance, how many rows are flagged), then the flagged rows of each column; or the same as
+// JSON with every row.
+
+#include "kinematics/compare/table_comparison.h"
+
+#include <iosfwd>
+#include <string>
+
+namespace linkwright::cli {
+
+/// What the report says besides the comparison itself.
+struct CompareContext {
+  const std::string& tablePath;
+  const std::string& source;  ///< "the example NAME", "FILE"
+  const kinematics::io::NumericTable& table;
+  const kinematics::compare::CompareDrive& drive;
+  const kinematics::compare::CompareOptions& options;
+  const kinematics::compare::ColumnMapping& mapping;
+};
+
+/// The comparison as aligned text for a terminal.
+void writeComparisonText(std::ostream& out, const CompareContext& context,
+                         const kinematics::compare::Comparison& comparison);
+
+/// The comparison as JSON: the settings, each column's summary and all its rows.
+void writeComparisonJson(std::ostream& out, const CompareContext& context,
+                         const kinematics::compare::Comparison& comparison);
+
+}  // namespace linkwright::cli
