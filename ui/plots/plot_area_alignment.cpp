@@ -8,7 +8,9 @@
 
 namespace linkwright::ui {
 
-void alignPlotAreas(const QList<QChart*>& charts) {
+void alignPlotAreas(const QList<QChart*>& charts) { alignPlotAreas(charts, charts); }
+
+void alignPlotAreas(const QList<QChart*>& charts, const QList<QChart*>& changed) {
   if (charts.isEmpty()) return;
   // The plot area's left edge is the left margin plus the y axis' labels and title; its right
   // edge the width less the right margin and the legend. So each chart's natural insets (with
@@ -23,9 +25,11 @@ void alignPlotAreas(const QList<QChart*>& charts) {
   };
   QList<Insets> natural;
   for (QChart* chart : charts) {
-    // Afresh: Qt Charts does not invalidate its layout for every change that moves the plot
-    // area (a legend marker shown), and the callers align only when something changed.
-    chart->layout()->invalidate();
+    // Afresh where something changed: Qt Charts does not invalidate its layout for every
+    // change that moves the plot area (a legend marker shown). An unchanged chart's layout is
+    // still valid (or pending after a resize), so activating it costs nothing or what the next
+    // paint needs anyway.
+    if (changed.contains(chart)) chart->layout()->invalidate();
     chart->layout()->activate();
     const QRectF area = chart->plotArea();
     const QMargins extra = chart->margins() - kBaseChartMargins;

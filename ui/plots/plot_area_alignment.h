@@ -14,7 +14,11 @@ namespace linkwright::ui {
 /// Margins every chart gets before alignment adds to them.
 inline const QMargins kBaseChartMargins(2, 2, 2, 2);
 
-/// Aligns the plot areas of `charts` (equal widths, one above the other) horizontally.
+/// Aligns the plot areas of `charts` (equal widths, one above the other) horizontally, each
+/// chart laid out afresh.
 void alignPlotAreas(const QList<QChart*>& charts);
+/// The same when only the charts in `changed` have new axes, titles or legend entries since
+/// the last alignment: the others keep their layout, and only their margins may change.
+void alignPlotAreas(const QList<QChart*>& charts, const QList<QChart*>& changed);
 
 }  // namespace linkwright::ui

@@ -62,7 +62,9 @@ PlotPanel::PlotPanel(MechanismDocument* document, QWidget* parent)
       if (const PlotCurve* c = curve(q))
         m_readout->showPoint(*c, p, m_unit, QString::fromStdString(m_document->lengthUnit()), inside, m_x);
     });
-    connect(view, &QuantityChartView::resized, this, &PlotPanel::alignCharts);
+    // One layout pass resizes the views one after another: each lays out only itself again,
+    // the others keep their layouts, so aligning after every resize does not grow as n².
+    connect(view, &QuantityChartView::resized, this, [this, view] { alignCharts({view}); });
     m_views[static_cast<std::size_t>(kind)] = view;
     layout->addWidget(view, 1);
   }
@@ -190,12 +192,12 @@ void PlotPanel::refreshData() {
   const QuantitySelection shown = selection();
   m_x = plotXAxis(design, sweep, m_document->plotAxis(), m_unit);
   const PlotXAxis& x = m_x;
-  bool relayout = false;
+  QList<QuantityChartView*> changed;  // their axes or legends: laid out again
   for (QuantityChartView* view : m_views) {
     const bool visible = shown.any(view->kind(), m_curves);
-    relayout |= visible == view->isHidden();
+    const bool appears = visible == view->isHidden();
     view->setVisible(visible);
-    relayout |= view->setData(sweep, shown, m_unit, x, lengthUnit);
+    if (view->setData(sweep, shown, m_unit, x, lengthUnit) || appears) changed.append(view);
   }
   QuantityChartView* angles = chartView(QuantityKind::Angle);
   m_limits->setYSpan(angles->valueRange().min, angles->valueRange().max);
@@ -212,23 +214,25 @@ void PlotPanel::refreshData() {
     note = tr("Rocker limit positions are not marked: the crank passes them more than %1 times in this time span.")
                .arg(kMostLimitMarkers);
   }
-  relayout |=
-      m_limits->setPositions(points, m_document->fourBar().has_value() && shown.contains(PlotQuantity::RockerAngle));
+  if (m_limits->setPositions(points, m_document->fourBar().has_value() && shown.contains(PlotQuantity::RockerAngle)) &&
+      !changed.contains(angles))
+    changed.append(angles);
   m_limitNote->setText(note);
   m_limitNote->setVisible(!note.isEmpty() && !angles->isHidden());
   refreshCursor();
-  if (relayout) alignCharts();  // axis labels or legends may have changed width
+  if (!changed.isEmpty()) alignCharts(changed);  // axis labels or legends may have changed width
   m_settleTimer.start();
 }
 
 void PlotPanel::settleValueRanges() {
   m_settleTimer.stop();
-  bool relayout = false;
-  for (QuantityChartView* view : m_views) relayout |= view->settleValueRange();
-  if (!relayout) return;
+  QList<QuantityChartView*> changed;
+  for (QuantityChartView* view : m_views)
+    if (view->settleValueRange()) changed.append(view);
+  if (changed.isEmpty()) return;
   const AxisRange& angles = chartView(QuantityKind::Angle)->valueRange();
   m_limits->setYSpan(angles.min, angles.max);
-  alignCharts();
+  alignCharts(changed);
 }
 
 void PlotPanel::setPresentationScale(double factor) {
@@ -243,11 +247,17 @@ void PlotPanel::setPresentationScale(double factor) {
 
 QString PlotPanel::limitNote() const { return m_limitNote->isHidden() ? QString() : m_limitNote->text(); }
 
-void PlotPanel::alignCharts() {
+void PlotPanel::alignCharts() { alignCharts({m_views.begin(), m_views.end()}); }
+
+void PlotPanel::alignCharts(const QList<QuantityChartView*>& changed) {
   QList<QChart*> shown;
-  for (QuantityChartView* view : m_views)
-    if (!view->isHidden()) shown.append(view->chart());
-  alignPlotAreas(shown);
+  QList<QChart*> relaid;
+  for (QuantityChartView* view : m_views) {
+    if (view->isHidden()) continue;
+    shown.append(view->chart());
+    if (changed.contains(view)) relaid.append(view->chart());
+  }
+  alignPlotAreas(shown, relaid);
   // A resize, or new axis labels or legend entries, may have changed the plot area's width.
   if (!shown.isEmpty()) m_widthTimer.start();
 }

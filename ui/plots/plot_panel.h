@@ -105,6 +105,8 @@ private:
   void refreshCurves();
   void refreshData();
   void refreshCursor();
+  /// Aligns the shown charts' plot areas; `changed` (default: all) are laid out afresh.
+  void alignCharts(const QList<QuantityChartView*>& changed);
   void alignCharts();
 
   MechanismDocument* m_document;

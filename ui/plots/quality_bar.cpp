@@ -6,6 +6,8 @@
 #include "kinematics/model/units.h"
 
 #include <QComboBox>
+#include <QEvent>
+#include <QFontMetrics>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QSignalBlocker>
@@ -61,6 +63,7 @@ QualityBar::QualityBar(MechanismDocument* document, QWidget* parent)
   m_error->setObjectName(QStringLiteral("qualityError"));
   // A rocking crank's reason is a sentence: it wraps rather than widening the plots.
   m_error->setWordWrap(true);
+  reserveErrorLines();
   figures->addWidget(m_cost);
   figures->addWidget(m_error);
   row->addLayout(figures, 1);
@@ -76,6 +79,17 @@ QualityBar::QualityBar(MechanismDocument* document, QWidget* parent)
   });
   refreshCost();
   refreshError();
+}
+
+void QualityBar::reserveErrorLines() {
+  // Two lines, whether the figure or the sentence shows: the bar keeps its height when a drag
+  // crosses into a rocking crank, so the charts below are neither resized nor laid out again.
+  m_error->setMinimumHeight(2 * QFontMetrics(m_error->font()).lineSpacing());
+}
+
+void QualityBar::changeEvent(QEvent* event) {
+  QWidget::changeEvent(event);
+  if (event->type() == QEvent::FontChange) reserveErrorLines();
 }
 
 QString QualityBar::costText() const { return m_cost->text(); }

@@ -31,7 +31,11 @@ signals:
   /// The user picked a quality (the document has it already).
   void qualityChosen(linkwright::ui::SamplingQuality quality);
 
+protected:
+  void changeEvent(QEvent* event) override;
+
 private:
+  void reserveErrorLines();
   void refreshCost();
   void refreshError();
 
