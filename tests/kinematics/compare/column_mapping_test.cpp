@@ -29,7 +29,7 @@ TEST_CASE("the quantities are analyze's columns without their units", "[compare]
     CHECK(std::find(keys.begin(), keys.end(), key) != keys.end());
 }
 
-TEST_CASE("--map text is read, with units, flags and implied units, and written back", "[compare][mapping]") {
+TEST_CASE("A --map text is read, with units, flags and implied units, and written back", "[compare][mapping]") {
   const auto mapping = parseColumnMap(
       "2=time:s, 3=coupler_angle:deg,4=rocker_angle:rad:rev;5=rocker_omega:deg/s:abs,6=rocker_alpha_rad_s2:neg",
       thesis());
