@@ -7,6 +7,11 @@
 #                                              which is this source tree
 #   packaging/fresh-root.sh remove ROOT        delete ROOT
 #
+# With LINKWRIGHT_COMPILER_CACHE=DIR (a host folder), run also mounts DIR in the root and sets
+# CMake's compiler launcher to ccache (which the root must have), so CI compiles only what changed
+# since its last run. ccache keys each object on the preprocessed source and the compiler's own
+# bytes, so a header the root lacks still fails the build, and linking is never cached.
+#
 # Every mount (/proc, /dev/pts, the source tree, the apt download cache) is made inside a private mount
 # namespace that dies with the command, so none outlives it on any exit path and the host's
 # /dev and /proc are never touched: the root's /dev holds its own device nodes. remove refuses
@@ -20,6 +25,7 @@ root=$(realpath -m "$2")
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
 # Downloaded .deb files are kept here between runs, so a second run does not fetch Qt again.
 apt_cache=${LINKWRIGHT_APT_CACHE:-/var/cache/linkwright/apt-archives}
+compiler_cache=${LINKWRIGHT_COMPILER_CACHE:-}
 
 [[ $(id -u) -eq 0 ]] || { echo "fresh-root: needs root (chroot and mounts)" >&2; exit 2; }
 [[ "$root" != / && "$root" != "$source_dir"* ]] || { echo "fresh-root: refusing root $root" >&2; exit 2; }
@@ -60,19 +66,29 @@ case "$action" in
     [[ $# -eq 3 ]] || usage
     [[ -x "$root/usr/bin/apt-get" ]] || { echo "fresh-root: $root is not a root made by create" >&2; exit 2; }
     mkdir -p "$apt_cache/partial"
+    [[ -z "$compiler_cache" ]] || mkdir -p "$compiler_cache"
     # unshare gives a private mount namespace (propagation private): these mounts are
     # invisible to the host and vanish when the command ends, however it ends.
     unshare --mount --fork -- bash -euc '
-      root=$1 src=$2 cache=$3 command=$4
+      root=$1 src=$2 cache=$3 compiler_cache=$4 command=$5
       mount -t proc proc "$root/proc"
       # A pty instance of its own, for apt and dpkg logs.
       mount -t devpts -o newinstance,ptmxmode=0666 devpts "$root/dev/pts"
       mount --bind "$src" "$root/src"
       mount --bind "$cache" "$root/var/cache/apt/archives"
+      launcher=()
+      if [[ -n "$compiler_cache" ]]; then
+        mkdir -p "$root/var/cache/ccache"
+        mount --bind "$compiler_cache" "$root/var/cache/ccache"
+        # CMake (3.17 and later) takes the launcher from the environment, so the commands run
+        # in the root, the README'"'"'s among them, stay verbatim.
+        launcher=(CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache
+          CCACHE_DIR=/var/cache/ccache CCACHE_COMPILERCHECK=content CCACHE_MAXSIZE=8G)
+      fi
       exec chroot "$root" /usr/bin/env -i HOME=/root LANG=C.UTF-8 TERM=dumb CI="${CI:-}" \
-        PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
+        PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin "${launcher[@]}" \
         DEBIAN_FRONTEND=noninteractive /bin/bash -euo pipefail -c "cd /src && $command"
-    ' fresh-root "$root" "$source_dir" "$apt_cache" "$3"
+    ' fresh-root "$root" "$source_dir" "$apt_cache" "$compiler_cache" "$3"
     ;;
   remove)
     remove_root
