@@ -77,10 +77,10 @@ std::string guiUsage() {
          "  --forces            open on the Forces tab, with force arrows on the canvas\n"
          "  --centres           draw the instant centres, Kennedy's lines and the centrodes\n"
          "                      (four-bars and slider-cranks; View ▸ Instant centres)\n"
-         "  --compare TABLE     open File ▸ Compare… on TABLE, a table from another tool;\n"
-         "                      with --screenshot, the comparison is rendered instead\n"
+         "  --compare TABLE     open File ▸ Compare… on TABLE, a table from another tool\n"
          "  --compare-map MAP   its column mapping, as linkwright-cli compare's --map; the\n"
-         "                      comparison runs at once\n"
+         "                      comparison runs at once and its rows are drawn on the plots\n"
+         "                      (and in the --screenshot)\n"
          "  --help, --version\n\n"
          "Exit codes: 0 success, 1 the screenshot or animation could not be written, 2 bad\n"
          "usage or a file that cannot be opened (the message says why).\n";

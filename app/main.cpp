@@ -51,7 +51,8 @@ int writeAnimation(linkwright::ui::MainWindow& window, const linkwright::app::Gu
   return 0;
 }
 
-// --compare: File ▸ Compare… on the table, mapped and compared at once with --compare-map.
+// --compare: File ▸ Compare… on the table, mapped and compared at once with --compare-map (and
+// so drawn on the plots).
 // Returns the dialog, or nullptr (the reason on stderr) when the table or the map is refused.
 linkwright::ui::CompareDialog* openComparison(linkwright::ui::MainWindow& window,
                                               const linkwright::app::GuiOptions& o) {
@@ -108,18 +109,8 @@ int main(int argc, char** argv) {
   if (options->forces) window.showForces();
   if (options->centres) window.setShowInstantCentres(true);
   if (options->animation) return writeAnimation(window, *options);
-  if (options->compare) {
-    linkwright::ui::CompareDialog* dialog = openComparison(window, *options);
-    if (dialog == nullptr && options->screenshot) return 2;
-    if (dialog != nullptr && options->screenshot) {
-      for (int i = 0; i < 5; ++i) QApplication::processEvents();
-      if (!dialog->grab().save(QString::fromStdString(*options->screenshot), "PNG")) {
-        std::cerr << "linkwright: cannot write the screenshot " << *options->screenshot << "\n";
-        return 1;
-      }
-      return 0;
-    }
-  }
+  // With --screenshot, the designer is rendered with the table's rows on its plots.
+  if (options->compare && openComparison(window, *options) == nullptr && options->screenshot) return 2;
   if (options->screenshot) return takeScreenshot(window, QString::fromStdString(*options->screenshot));
   window.show();
   QTimer::singleShot(0, window.animator(), &linkwright::ui::CrankAnimator::play);

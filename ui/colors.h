@@ -68,6 +68,11 @@ inline constexpr QColor kGridLabelColor{150, 150, 150};
 inline constexpr QColor kCrankCursorColor{0xc0, 0x20, 0x20};
 inline constexpr QColor kLimitLineColor{0x55, 0x55, 0x55};
 inline constexpr QColor kLimitPointColor{0, 0, 0};
+// Another tool's rows over the plots (File ▸ Compare…): hollow in the curve's colour where they
+// agree, filled red where they are beyond the tolerance, as the dialog's rows are highlighted.
+inline constexpr QColor kComparedRowFillColor{255, 255, 255};
+inline constexpr QColor kFlaggedRowColor{0xd1, 0x34, 0x38};
+inline constexpr QColor kFlaggedRowBackground{255, 205, 200};
 
 // The panels and the message banner.
 inline constexpr QColor kGrashofCrankBadgeColor{0x1b, 0x7f, 0x3b};   ///< the crank turns fully

@@ -311,6 +311,7 @@ void MainWindow::openAttachDyadDialog() {
 
 void MainWindow::newDocument(const k::Design& design) {
   m_animator->pause();
+  m_plots->clearComparison();  // another tool's rows belong to the linkage they were compared with
   m_document->reset(design);
   m_canvas->fitToView();
   m_banner->hide();
@@ -328,6 +329,7 @@ bool MainWindow::openFile(const QString& path) {
     return false;
   }
   m_animator->pause();
+  m_plots->clearComparison();
   m_document->reset(design, QFileInfo(path).absoluteFilePath());
   m_canvas->fitToView();
   m_settings->addRecentFile(path);
@@ -523,7 +525,8 @@ void MainWindow::exportAnimationDialog() {
   exportAnimation(path, dialog.settings(), true);
 }
 
-bool MainWindow::exportReport(const QString& path, double at, double step, k::report::Paper paper) {
+bool MainWindow::exportReport(const QString& path, double at, double step, k::report::Paper paper,
+                              k::report::RateUnit rates) {
   const k::Design& design = m_document->design();
   const k::Mechanism& m = design.mechanism;
   k::report::ReportRequest request;
@@ -535,6 +538,7 @@ bool MainWindow::exportReport(const QString& path, double at, double step, k::re
   // A step is a difference of inputs: the display unit's scale without its origin.
   request.tableStep = k::inputFromDisplay(m, step) - k::inputFromDisplay(m, 0.0);
   request.drawAt = k::inputFromDisplay(m, at);
+  request.rates = rates;
   const auto content = k::report::buildReport(m, design.dynamics, request);
   const std::optional<k::Error> why = content ? k::report::writeReportPdf(*content, paper, path.toStdString())
                                               : std::optional<k::Error>(content.error());
@@ -553,11 +557,14 @@ void MainWindow::exportReportDialog() {
   ReportOptionsDialog options(k::inputDisplayValue(m, m_document->crankAngle()),
                               crank ? 360.0 : design.toDeg - design.fromDeg, QString::fromStdString(k::inputUnit(m)),
                               this);
+  // The rates in the unit the plots show them in.
+  options.setRates(m_plots->angleUnit() == AngleUnit::Degrees ? k::report::RateUnit::Degrees
+                                                              : k::report::RateUnit::Radians);
   if (options.exec() != QDialog::Accepted) return;
   QString path = QFileDialog::getSaveFileName(this, tr("Lab report as PDF"), QString(), tr("PDF documents (*.pdf)"));
   if (path.isEmpty()) return;
   if (QFileInfo(path).suffix().isEmpty()) path += ".pdf";
-  exportReport(path, options.at(), options.step(), options.paper());
+  exportReport(path, options.at(), options.step(), options.paper(), options.rates());
 }
 
 void MainWindow::compareDialog() {
@@ -581,6 +588,11 @@ CompareDialog* MainWindow::openCompareTable(const QString& path) {
   }
   auto* dialog = new CompareDialog(m_document->design(), *table, path, this);
   dialog->setAttribute(Qt::WA_DeleteOnClose);
+  connect(dialog, &CompareDialog::plotOverlayChanged, this,
+          [this, name = QFileInfo(path).completeBaseName()](const std::optional<k::compare::Comparison>& c) {
+            if (c) m_plots->setComparison(*c, name);
+            else m_plots->clearComparison();
+          });
   dialog->show();
   return dialog;
 }

@@ -95,6 +95,7 @@ struct Invocation {
   std::optional<double> holeDiameter;
   std::optional<double> plateWidth;
   std::optional<std::string> paper;  ///< report --paper: a4 or letter (checked by the command)
+  std::optional<std::string> rates;  ///< report --rates: rad or deg (checked by the command)
   // compare: another tool's table (the bare argument after the document, or the only one).
   std::optional<std::string> compareTable;
   std::optional<std::string> compareMap;  ///< --map text (kinematics/compare/column_mapping.h)

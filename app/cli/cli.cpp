@@ -141,10 +141,12 @@ constexpr const char* kReportOptions =
   --step DEG          the table's step, more than 0 and at most 360 for a crank (at most
                       the input's range for a linear driver); default 30, as the thesis
   --paper a4|letter   paper size (default a4)
+  --rates rad|deg     ω and α in rad/s and rad/s² (default, as the thesis and analyze) or
+                      in deg/s and deg/s² (as SolidWorks Motion)
 Output: a PDF (vector drawing, selectable text, "page i of N"): page 1 the title, the
   linkage at --at with its link lengths and ground pivots, the Grashof class and mobility
-  (as classify); then the table of link angles (deg), ω (rad/s) and α (rad/s²), the same
-  numbers as analyze's CSV at 4 decimals; the extremes refined between the grid's samples
+  (as classify); then the table of link angles (deg), ω and α (--rates), the same
+  numbers as analyze's CSV at 4 decimals (ω, α times 180/π with --rates deg); the extremes refined between the grid's samples
   (as extremes); the joint forces and driving torque when the linkage has masses (as
   analyze --forces); the plots of θ, ω, α (and slider x, v, a) against the input.
 )";

@@ -73,6 +73,10 @@ ExitCode runReport(const Invocation& inv, std::ostream& out, std::ostream& err) 
   const auto paper = k::report::paperFromName(inv.paper.value_or("a4"));
   if (!paper)
     return fail({k::ErrorCode::InvalidValue, "--paper", "--paper must be a4 or letter (got '" + *inv.paper + "')"});
+  const std::string rates = inv.rates.value_or("rad");
+  if (rates != "rad" && rates != "deg")
+    return fail({k::ErrorCode::InvalidValue, "--rates",
+                 "--rates must be rad (rad/s, rad/s²) or deg (deg/s, deg/s²) (got '" + rates + "')"});
   const auto resolved = resolveMechanism(inv);
   if (!resolved) return fail(resolved.error());
   const GridDefaults& d = resolved->defaults;
@@ -94,6 +98,7 @@ ExitCode runReport(const Invocation& inv, std::ostream& out, std::ostream& err) 
   request.grid = gridOf(d);
   request.tableStep = *step;
   request.drawAt = d.toInput(inv.atDeg.empty() ? d.fromDeg : inv.atDeg.front());
+  request.rates = rates == "deg" ? k::report::RateUnit::Degrees : k::report::RateUnit::Radians;
   const auto content = k::report::buildReport(resolved->mechanism, resolved->dynamics, request);
   if (!content)
     return fail(content.error(), content.error().field == "--at" ? ExitCode::NotAssemblable : ExitCode::BadInput);

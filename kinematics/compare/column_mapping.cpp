@@ -1,6 +1,9 @@
 #include "kinematics/compare/column_mapping.h"
 
+#include "kinematics/io/number_format.h"
+
 #include <charconv>
+#include <cmath>
 
 namespace linkwright::kinematics::compare {
 namespace {
@@ -16,6 +19,22 @@ std::vector<std::string> split(const std::string& text, const std::string& separ
     else if (c != ' ') parts.back() += c;
   }
   return parts;
+}
+
+// A value no linkage reaches (1e308 degrees) means a wrong mapping or unit: it would compare
+// to nothing meaningful, and an angle would even "agree" modulo a turn.
+std::optional<Error> checkMagnitudes(const io::NumericTable& table, std::size_t column, Dimension dimension,
+                                     const UnitChoice& unit) {
+  const double largest = largestMagnitude(dimension) / std::abs(unit.factor);
+  for (const io::NumericRow& row : table.rows) {
+    const std::optional<double>& value = row.cells[column];
+    if (value && !(std::abs(*value) <= largest))
+      return mapError("map", columnName(column) + " holds " + io::formatShort(*value) + " " + unit.name + " on line " +
+                                 std::to_string(row.line) + ", beyond the ±" + io::formatShort(largest, 3) + " " +
+                                 unit.name + " any " + dimensionName(dimension) +
+                                 " of a linkage stays within: is it mapped to the right quantity and unit?");
+  }
+  return std::nullopt;
 }
 
 std::string quantityList(const Mechanism& m) {
@@ -119,6 +138,10 @@ std::optional<Error> checkColumnMapping(const ColumnMapping& mapping, const io::
     if (!row.cells[mapping.axis->column])
       return mapError("map", "the x column (" + columnName(mapping.axis->column) + ") is empty on line " +
                                  std::to_string(row.line) + "; every row needs its crank angle or time");
+  const Dimension axisDimension = mapping.axis->kind == AxisKind::CrankAngle ? Dimension::Angle : Dimension::Time;
+  if (auto e = checkMagnitudes(table, mapping.axis->column, axisDimension, mapping.axis->unit)) return e;
+  for (const MappedColumn& mapped : mapping.columns)
+    if (auto e = checkMagnitudes(table, mapped.column, mapped.quantity.dimension, mapped.unit)) return e;
   return std::nullopt;
 }
 

@@ -1,5 +1,7 @@
 #include "kinematics/compare/compare_quantity.h"
 
+#include "kinematics/model/validate.h"
+
 #include "kinematics/model/units.h"
 
 namespace linkwright::kinematics::compare {
@@ -99,6 +101,20 @@ std::string unitList(Dimension dimension, const std::string& lengthUnit) {
   std::string list;
   for (const UnitChoice& unit : unitsFor(dimension, lengthUnit)) list += (list.empty() ? "" : ", ") + unit.name;
   return list;
+}
+
+double largestMagnitude(Dimension dimension) {
+  constexpr double lever = kMaxLengthRatio;
+  switch (dimension) {
+  case Dimension::Angle: return kMaxAngleDeg;
+  case Dimension::AngularRate: return kMaxOmega * lever;
+  case Dimension::AngularAcceleration: return kMaxAlpha * lever * lever;
+  case Dimension::Length: return kMaxLength;
+  case Dimension::Velocity: return kMaxLength * kMaxOmega;
+  case Dimension::Acceleration: return kMaxLength * kMaxAlpha;
+  case Dimension::Time: return 1e9;
+  }
+  return kMaxLength;
 }
 
 const char* dimensionName(Dimension dimension) {

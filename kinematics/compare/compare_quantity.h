@@ -52,6 +52,13 @@ std::optional<UnitChoice> findUnit(Dimension dimension, const std::string& lengt
 /// The accepted unit names joined for a message: "deg, rad".
 std::string unitList(Dimension dimension, const std::string& lengthUnit);
 
+/// The largest magnitude a column of `dimension` may hold, in the sweep column's unit (degrees
+/// for angles, seconds for times): what model/validate.h lets a linkage reach, with a lever ratio
+/// of up to its kMaxLengthRatio: ±1e6° (kMaxAngleDeg), 1e12 rad/s, 1e24 rad/s², 1e9 in the length
+/// unit (kMaxLength) and 1e15, 1e21 per s and s²; 1e9 s. A value beyond it is a wrong mapping or
+/// unit, not a measurement.
+double largestMagnitude(Dimension dimension);
+
 /// "angle", "angular velocity", …: for messages.
 const char* dimensionName(Dimension dimension);
 

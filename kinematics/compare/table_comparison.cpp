@@ -21,6 +21,7 @@ constexpr double kUnsolvedPenalty = 1e6;
 // The exact values of every mapped column at every row, for one offset.
 struct Evaluation {
   std::vector<std::vector<std::optional<double>>> exact;  // [column][row], the file's form
+  std::vector<std::vector<double>> swept;                 // [column][row], the sweep column's form
   std::vector<std::string> notes;                         // [row]: why rates or the pose are missing
   std::vector<double> inputDeg;                           // [row]
 };
@@ -38,9 +39,9 @@ DriverState driverAt(const CompareDrive& d, const AxisColumn& axis, double x, do
 
 bool isAngle(const MappedColumn& c) { return c.quantity.dimension == Dimension::Angle && !c.magnitude; }
 
-// The exact value as the column states it: its unit, its end of the link, its sign, |·|.
-double fileForm(const MappedColumn& c, const Pose& pose, double input) {
-  double e = c.quantity.column.valueOf(pose, input);
+// The exact value `e` (as the sweep column states it) as the file's column states it: its
+// unit, its end of the link, its sign, |·|.
+double fileForm(const MappedColumn& c, double e) {
   if (c.reversed) e += 180.0;
   if (c.negated) e = -e;
   if (c.magnitude) e = std::abs(e);
@@ -58,6 +59,7 @@ Evaluation evaluate(const Mechanism& m, const CompareDrive& drive, const io::Num
   Evaluation ev;
   const std::size_t rows = table.rows.size();
   ev.exact.assign(mapping.columns.size(), std::vector<std::optional<double>>(rows));
+  ev.swept.assign(mapping.columns.size(), std::vector<double>(rows, 0.0));
   ev.notes.assign(rows, std::string());
   ev.inputDeg.assign(rows, 0.0);
   const bool angle = inputKind(m) == InputKind::Angle;
@@ -72,7 +74,8 @@ Evaluation evaluate(const Mechanism& m, const CompareDrive& drive, const io::Num
     for (std::size_t c = 0; c < mapping.columns.size(); ++c) {
       const MappedColumn& col = mapping.columns[c];
       if (report.status == PoseStatus::Singular && col.quantity.column.isRate()) continue;
-      ev.exact[c][r] = fileForm(col, pose, state.position);
+      ev.swept[c][r] = col.quantity.column.valueOf(pose, state.position);
+      ev.exact[c][r] = fileForm(col, ev.swept[c][r]);
     }
   }
   return ev;
@@ -198,6 +201,22 @@ std::optional<Error> checkOptions(const Mechanism& m, const CompareDrive& drive,
   return std::nullopt;
 }
 
+// The file's `value` as the solver states the quantity (radians for an angle, the sweep
+// column's unit otherwise, our sign, from the link's first joint); `swept` is the exact value
+// as the sweep column states it, whose sign a magnitude takes, or empty.
+double restate(const MappedColumn& c, double value, double deviation, std::optional<double> swept) {
+  const double toSolver = c.quantity.dimension == Dimension::Angle ? degToRad(1.0) : 1.0;
+  if (swept) {
+    // The deviation carried over to our sign keeps an angle on the exact value's turn.
+    const double sign = c.magnitude ? (*swept < 0.0 ? -1.0 : 1.0) : (c.negated ? -1.0 : 1.0);
+    return (*swept + sign * deviation * c.unit.factor) * toSolver;
+  }
+  double v = value * c.unit.factor;
+  if (c.negated) v = -v;
+  if (c.reversed) v -= 180.0;
+  return v * toSolver;
+}
+
 ColumnComparison compareColumn(const MappedColumn& col, const io::NumericTable& table, const Evaluation& ev,
                                std::size_t c, const AxisColumn& axis, const CompareOptions& o) {
   ColumnComparison out;
@@ -220,12 +239,14 @@ ColumnComparison compareColumn(const MappedColumn& col, const io::NumericTable& 
       rc.deviation = deviationOf(col, rc.value, *ev.exact[c][r]);
       rc.exact = rc.value - rc.deviation;
       rc.flagged = std::abs(rc.deviation) > out.tolerance;
+      rc.restated = restate(col, rc.value, rc.deviation, ev.swept[c][r]);
       squares += rc.deviation * rc.deviation;
       ++withExact;
       if (std::abs(rc.deviation) > std::abs(out.worst)) out.worst = rc.deviation, out.worstX = rc.x;
     } else {
       rc.flagged = true;
       rc.note = ev.notes[r];
+      rc.restated = restate(col, rc.value, 0.0, std::nullopt);
     }
     out.flagged += rc.flagged ? 1 : 0;
     out.rows.push_back(std::move(rc));

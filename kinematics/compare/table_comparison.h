@@ -68,7 +68,12 @@ struct RowComparison {
   std::optional<double> exact;  ///< the exact value as the file states it (unit, sign, |·|); empty where none exists
   double deviation = 0.0;       ///< value − exact (angles: the nearest turn); 0 without an exact value
   bool flagged = false;         ///< beyond the tolerance, or no exact value
-  std::string note;             ///< why there is no exact value (cannot be assembled, a toggle)
+  /// The file's value as the solver states the quantity, to draw over the exact curve: radians
+  /// for an angle (rad/s, rad/s² and the length unit as the sweep columns), our sign, from the
+  /// link's first joint, an angle on the exact value's turn, and a magnitude with the exact
+  /// value's sign (its own where there is none).
+  double restated = 0.0;
+  std::string note;  ///< why there is no exact value (cannot be assembled, a toggle)
 };
 
 /// One mapped column's deviations.

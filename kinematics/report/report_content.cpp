@@ -22,26 +22,28 @@ using io::SweepColumn;
 constexpr std::size_t kPlotSamples = 721;
 
 // A rate is "toggle" where the linkage has none, as analyze's text table writes it.
-std::string cellText(const SweepColumn& c, const SweepResult& r, std::size_t j, std::optional<double>& value) {
+std::string cellText(const SweepColumn& c, const SweepResult& r, std::size_t j, RateUnit rates,
+                     std::optional<double>& value) {
   if (c.isRate() && !r.ok(j)) return "toggle";
-  value = c.value(r, j);
+  value = c.value(r, j) * rateScale(c, rates);
   return formatFixed(*value, kTableDecimals);
 }
 
-ReportTable sweepTable(const Mechanism& m, const SweepResult& r, const std::vector<SweepColumn>& columns) {
+ReportTable sweepTable(const Mechanism& m, const SweepResult& r, const std::vector<SweepColumn>& columns,
+                       RateUnit rates) {
   ReportTable table;
-  for (const SweepColumn& c : columns) table.columns.push_back(columnHeading(m, c));
+  for (const SweepColumn& c : columns) table.columns.push_back(columnHeading(m, c, rates));
   for (std::size_t j = 0; j < r.size(); ++j) {
     if (!r.assembled(j)) continue;
     std::vector<std::string>& cells = table.cells.emplace_back();
     std::vector<std::optional<double>>& values = table.values.emplace_back();
-    for (const SweepColumn& c : columns) cells.push_back(cellText(c, r, j, values.emplace_back()));
+    for (const SweepColumn& c : columns) cells.push_back(cellText(c, r, j, rates, values.emplace_back()));
   }
   return table;
 }
 
 ReportTable extremesTable(const Mechanism& m, const SweepSpec& spec, const SweepResult& r,
-                          const std::vector<SweepColumn>& columns) {
+                          const std::vector<SweepColumn>& columns, RateUnit rates) {
   const std::string where = "at " + inputName(m);
   const std::string whereUnit = inputUnit(m) == "°" ? "deg" : inputUnit(m);
   ReportTable table;
@@ -52,17 +54,20 @@ ReportTable extremesTable(const Mechanism& m, const SweepSpec& spec, const Sweep
     if (!e) continue;
     const double minAt = inputDisplayValue(m, e->minimum.inputAngle);
     const double maxAt = inputDisplayValue(m, e->maximum.inputAngle);
+    const double scale = rateScale(c, rates);
+    const double lo = e->minimum.value * scale, hi = e->maximum.value * scale;
     // As `extremes` prints them: nine significant digits, the input to four decimals.
-    table.cells.push_back({c.name, io::formatShort(e->minimum.value, 9), formatFixed(minAt, 4),
-                           io::formatShort(e->maximum.value, 9), formatFixed(maxAt, 4)});
-    table.values.push_back({std::nullopt, e->minimum.value, minAt, e->maximum.value, maxAt});
+    table.cells.push_back({columnName(c, rates), io::formatShort(lo, 9), formatFixed(minAt, 4), io::formatShort(hi, 9),
+                           formatFixed(maxAt, 4)});
+    table.values.push_back({std::nullopt, lo, minAt, hi, maxAt});
   }
   return table;
 }
 
 // The curve of `column` over the fine sweep, broken where it has no value.
-PlotCurve curveOf(const Mechanism& m, const SweepResult& r, const SweepColumn& c) {
-  PlotCurve curve{columnHeading(m, c).heading, {}};
+PlotCurve curveOf(const Mechanism& m, const SweepResult& r, const SweepColumn& c, RateUnit rates) {
+  PlotCurve curve{columnHeading(m, c, rates).heading, {}};
+  const double scale = rateScale(c, rates);
   bool open = false;
   for (std::size_t j = 0; j < r.size(); ++j) {
     const bool valid = c.isRate() ? r.ok(j) : r.assembled(j);
@@ -70,20 +75,21 @@ PlotCurve curveOf(const Mechanism& m, const SweepResult& r, const SweepColumn& c
     if (!valid) continue;
     if (!open) curve.segments.emplace_back();
     open = true;
-    curve.segments.back().emplace_back(inputDisplayValue(m, r.inputAngle[j]), c.value(r, j));
+    curve.segments.back().emplace_back(inputDisplayValue(m, r.inputAngle[j]), c.value(r, j) * scale);
   }
   return curve;
 }
 
-std::vector<ReportPlot> plotsOf(const Mechanism& m, const SweepResult& r, const std::vector<SweepColumn>& columns) {
+std::vector<ReportPlot> plotsOf(const Mechanism& m, const SweepResult& r, const std::vector<SweepColumn>& columns,
+                                RateUnit rates) {
   const std::string unit = inputUnit(m) == "°" ? "deg" : inputUnit(m);
   const std::string xTitle = inputName(m) + " (" + unit + ")";
   std::vector<ReportPlot> plots;
-  for (const PlotKind& kind : plotKinds(m)) {
+  for (const PlotKind& kind : plotKinds(m, rates)) {
     ReportPlot plot{kind.title, xTitle, kind.unit, {}};
     for (const SweepColumn& c : columns)
       if (std::find(kind.quantities.begin(), kind.quantities.end(), c.quantity) != kind.quantities.end())
-        plot.curves.push_back(curveOf(m, r, c));
+        plot.curves.push_back(curveOf(m, r, c, rates));
     if (!plot.curves.empty()) plots.push_back(std::move(plot));
   }
   return plots;
@@ -110,7 +116,7 @@ Result<ReportTable> forcesTable(const Mechanism& m, const LinkageDynamics& dynam
     if (!r.assembled(j)) continue;
     std::vector<std::string>& cells = table.cells.emplace_back();
     std::vector<std::optional<double>>& values = table.values.emplace_back();
-    cells.push_back(cellText(input, r, j, values.emplace_back()));
+    cells.push_back(cellText(input, r, j, RateUnit::Radians, values.emplace_back()));
     for (const io::ForceColumn& c : columns) {
       if (!forces->ok(j)) {
         cells.push_back(r.ok(j) ? "singular" : "toggle");
@@ -172,12 +178,12 @@ Result<ReportContent> buildReport(const Mechanism& m, const LinkageDynamics& dyn
   if (!plotted) return plotted.error();
   report.analysis = analysisLines(m, *plotted);
   const std::vector<SweepColumn> columns = reportColumns(m, *table);
-  report.table = sweepTable(m, *table, columns);
-  report.tableCaption = gridCaption(m, tSpec, "every " + inputText(m, request.tableStep, false));
-  report.extremes = extremesTable(m, request.grid, *fine, columns);
-  report.extremesCaption =
-      gridCaption(m, request.grid, "refined between " + std::to_string(request.grid.samples) + " samples");
-  report.plots = plotsOf(m, *plotted, columns);
+  report.table = sweepTable(m, *table, columns, request.rates);
+  report.tableCaption = gridCaption(m, tSpec, "every " + inputText(m, request.tableStep, false), request.rates);
+  report.extremes = extremesTable(m, request.grid, *fine, columns, request.rates);
+  report.extremesCaption = gridCaption(
+      m, request.grid, "refined between " + std::to_string(request.grid.samples) + " samples", request.rates);
+  report.plots = plotsOf(m, *plotted, columns, request.rates);
   if (!dynamics.empty()) {
     auto forces = forcesTable(m, dynamics, *table, columns.front());
     if (!forces) return forces.error();

@@ -27,6 +27,12 @@ namespace linkwright::kinematics::report {
 /// Digits after the point in the report's tables (as `analyze --format table`).
 inline constexpr int kTableDecimals = 4;
 
+/// The unit of the link ω and α columns and plots.
+enum class RateUnit {
+  Radians,  ///< rad/s, rad/s²: the thesis's and `analyze`'s
+  Degrees,  ///< deg/s, deg/s²: SolidWorks Motion's, and the designer's plots in degrees
+};
+
 /// What to report on and how.
 struct ReportRequest {
   std::string title;     ///< the heading: the document's file name or the example's name
@@ -39,6 +45,7 @@ struct ReportRequest {
   /// linear driver), > 0; the table runs from grid.fromAngle to grid.toAngle.
   double tableStep = 0.0;
   double drawAt = 0.0;  ///< the drawn pose's input, in the driver's coordinate
+  RateUnit rates = RateUnit::Radians;
 };
 
 /// A column of a report table: its heading and its unit ("rocker θ", "deg").

@@ -61,15 +61,16 @@ void fourBarLines(const DesignAnalysis& a, const std::string& u, std::vector<Inf
 
 }  // namespace
 
-TableColumn columnHeading(const Mechanism& m, const io::SweepColumn& c) {
+TableColumn columnHeading(const Mechanism& m, const io::SweepColumn& c, RateUnit rates) {
   const std::string& u = m.lengthUnit;
+  const std::string angular = rates == RateUnit::Degrees ? "deg" : "rad";
   switch (c.quantity) {
   case ColumnQuantity::Time: return {"time", "s"};
   case ColumnQuantity::InputAngle: return {inputName(m), "deg"};
   case ColumnQuantity::InputLength: return {inputName(m), u};
   case ColumnQuantity::LinkAngle: return {linkName(m, c.index) + " θ", "deg"};
-  case ColumnQuantity::LinkOmega: return {linkName(m, c.index) + " ω", "rad/s"};
-  case ColumnQuantity::LinkAlpha: return {linkName(m, c.index) + " α", "rad/s²"};
+  case ColumnQuantity::LinkOmega: return {linkName(m, c.index) + " ω", angular + "/s"};
+  case ColumnQuantity::LinkAlpha: return {linkName(m, c.index) + " α", angular + "/s²"};
   case ColumnQuantity::TransmissionAngle: return {"μ at " + pointName(m, c.index), "deg"};
   case ColumnQuantity::PointX: return {pointName(m, c.index) + " x", u};
   case ColumnQuantity::PointY: return {pointName(m, c.index) + " y", u};
@@ -79,6 +80,18 @@ TableColumn columnHeading(const Mechanism& m, const io::SweepColumn& c) {
   case ColumnQuantity::PointAy: return {pointName(m, c.index) + " ay", u + "/s²"};
   }
   return {c.name, ""};
+}
+
+double rateScale(const io::SweepColumn& c, RateUnit rates) {
+  const bool linkRate = c.quantity == ColumnQuantity::LinkOmega || c.quantity == ColumnQuantity::LinkAlpha;
+  return linkRate && rates == RateUnit::Degrees ? radToDeg(1.0) : 1.0;
+}
+
+std::string columnName(const io::SweepColumn& c, RateUnit rates) {
+  // analyze's names end in _rad_s or _rad_s2 for a link's ω and α.
+  if (rateScale(c, rates) == 1.0) return c.name;
+  const std::size_t at = c.name.rfind("_rad_s");
+  return at == std::string::npos ? c.name : c.name.substr(0, at) + "_deg_s" + c.name.substr(at + 6);
 }
 
 std::vector<io::SweepColumn> reportColumns(const Mechanism& m, const SweepResult& r) {
@@ -97,11 +110,12 @@ std::vector<io::SweepColumn> reportColumns(const Mechanism& m, const SweepResult
   return columns;
 }
 
-std::vector<PlotKind> plotKinds(const Mechanism& m) {
+std::vector<PlotKind> plotKinds(const Mechanism& m, RateUnit rates) {
   const std::string& u = m.lengthUnit;
+  const std::string angular = rates == RateUnit::Degrees ? "deg" : "rad";
   return {{"Link angles θ", "deg", {ColumnQuantity::LinkAngle}},
-          {"Angular velocities ω", "rad/s", {ColumnQuantity::LinkOmega}},
-          {"Angular accelerations α", "rad/s²", {ColumnQuantity::LinkAlpha}},
+          {"Angular velocities ω", angular + "/s", {ColumnQuantity::LinkOmega}},
+          {"Angular accelerations α", angular + "/s²", {ColumnQuantity::LinkAlpha}},
           {"Transmission angle μ", "deg", {ColumnQuantity::TransmissionAngle}},
           {"Slider position", u, {ColumnQuantity::PointX, ColumnQuantity::PointY}},
           {"Slider velocity", u + "/s", {ColumnQuantity::PointVx, ColumnQuantity::PointVy}},
@@ -114,14 +128,16 @@ std::string inputText(const Mechanism& m, double input, bool named) {
   return named ? inputName(m) + " " + value : value;
 }
 
-std::string gridCaption(const Mechanism& m, const SweepSpec& spec, const std::string& sampling) {
+std::string gridCaption(const Mechanism& m, const SweepSpec& spec, const std::string& sampling, RateUnit rates) {
   std::string name = inputName(m);
   if (!name.empty()) name[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(name[0])));
   const bool crank = inputKind(m) == InputKind::Angle;
-  const std::string rate = crank ? "rad/s" : m.lengthUnit + "/s";
+  const bool degrees = crank && rates == RateUnit::Degrees;
+  const std::string rate = !crank ? m.lengthUnit + "/s" : degrees ? "deg/s" : "rad/s";
+  const double scale = degrees ? radToDeg(1.0) : 1.0;
   return name + " " + inputText(m, spec.fromAngle, false) + " to " + inputText(m, spec.toAngle, false) + ", " +
-         sampling + "; " + (crank ? "crank " : "driver ") + formatShort(spec.omega) + " " + rate + ", " +
-         formatShort(spec.alpha) + " " + rate + "²";
+         sampling + "; " + (crank ? "crank " : "driver ") + formatShort(spec.omega * scale) + " " + rate + ", " +
+         formatShort(spec.alpha * scale) + " " + rate + "²";
 }
 
 std::vector<InfoLine> analysisLines(const Mechanism& m, const SweepResult& gridSweep) {

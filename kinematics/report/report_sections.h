@@ -12,8 +12,17 @@
 
 namespace linkwright::kinematics::report {
 
-/// The heading of a sweep column: "rocker θ" in "deg", "C vx" in "mm/s".
-TableColumn columnHeading(const Mechanism& mechanism, const io::SweepColumn& column);
+/// The heading of a sweep column: "rocker θ" in "deg", "C vx" in "mm/s", "rocker ω" in "rad/s"
+/// or "deg/s" as `rates` says.
+TableColumn columnHeading(const Mechanism& mechanism, const io::SweepColumn& column,
+                          RateUnit rates = RateUnit::Radians);
+
+/// What a value of `column` (in the sweep column's unit) is multiplied by to be in `rates`:
+/// 180/π for a link's ω and α in degrees, else 1.
+double rateScale(const io::SweepColumn& column, RateUnit rates);
+
+/// The sweep column's name with its rate unit as `rates` says: "rocker_omega_deg_s".
+std::string columnName(const io::SweepColumn& column, RateUnit rates);
 
 /// The columns a report tabulates, in `analyze`'s CSV order: the input, each moving link's
 /// angle, ω and α but the driven crank's (they are the input), the transmission angles and,
@@ -27,15 +36,17 @@ struct PlotKind {
   std::vector<io::ColumnQuantity> quantities;
 };
 
-/// The report's plots in order: angles, ω, α, transmission angle, slider position, velocity
-/// and acceleration.
-std::vector<PlotKind> plotKinds(const Mechanism& mechanism);
+/// The report's plots in order: angles, ω, α (in `rates`), transmission angle, slider
+/// position, velocity and acceleration.
+std::vector<PlotKind> plotKinds(const Mechanism& mechanism, RateUnit rates = RateUnit::Radians);
 
 /// An input in the driver's display unit: "30°", "12.5 mm"; `named` prefixes the input's name.
 std::string inputText(const Mechanism& mechanism, double input, bool named = true);
 
-/// "Crank angle 0° to 360°, every 30°; crank 1 rad/s, 0 rad/s²" for the grid `spec`.
-std::string gridCaption(const Mechanism& mechanism, const SweepSpec& spec, const std::string& sampling);
+/// "Crank angle 0° to 360°, every 30°; crank 1 rad/s, 0 rad/s²" for the grid `spec`, a crank's
+/// speed in `rates`.
+std::string gridCaption(const Mechanism& mechanism, const SweepSpec& spec, const std::string& sampling,
+                        RateUnit rates = RateUnit::Radians);
 
 /// The Grashof / mobility analysis of `mechanism`, whose sweep over its grid is `gridSweep`.
 std::vector<InfoLine> analysisLines(const Mechanism& mechanism, const SweepResult& gridSweep);

@@ -140,6 +140,55 @@ TEST_CASE("report's content model holds the sweep's numbers and extremes' refine
   for (const auto& row : report->extremes.cells) CHECK(hasRow(extremes.out, row));
 }
 
+TEST_CASE("report --rates deg gives ω and α in deg/s and deg/s², the table, extremes and plots alike",
+          "[cli][report]") {
+  const fs::path dir = scratchDir();
+  const fs::path file = dir / "thesis-deg.pdf";
+  REQUIRE(runCliCommand({"report", "--example", "thesis-crank-rocker", "--rates", "deg", "-o", file.string()}).code ==
+          0);
+  const std::string text = pdfText(file);
+  CHECK_THAT(text, Catch::Contains("deg/s²"));
+  CHECK_THAT(text, !Catch::Contains("rad/s²"));
+  const k::Example e = *k::findExample("thesis-crank-rocker");
+  const k::SweepResult r = thesisEvery30(e);
+  const std::size_t coupler = linkIndex(e.mechanism, "coupler"), rocker = linkIndex(e.mechanism, "rocker");
+  for (std::size_t j = 0; j < r.size(); ++j) {
+    INFO("crank angle " << 30 * j);
+    const auto deg = [](double v) { return fixed(k::radToDeg(v)); };
+    CHECK(hasRow(text, {fixed(30.0 * static_cast<double>(j)), deg(r.linkAngle[coupler][j]),
+                        deg(r.linkOmega[coupler][j]), deg(r.linkAlpha[coupler][j]), deg(r.linkAngle[rocker][j]),
+                        deg(r.linkOmega[rocker][j]), deg(r.linkAlpha[rocker][j])}));
+  }
+  // The content model: the rates' extremes and curves are the radians' times 180/π, renamed.
+  k::report::ReportRequest request;
+  request.grid = {0.0, 2.0 * k::kPi, 13, e.omega, e.alpha};
+  request.tableStep = k::degToRad(30.0);
+  const auto radians = k::report::buildReport(e.mechanism, {}, request);
+  request.rates = k::report::RateUnit::Degrees;
+  const auto degrees = k::report::buildReport(e.mechanism, {}, request);
+  REQUIRE(radians.ok());
+  REQUIRE(degrees.ok());
+  CHECK(degrees->table.columns[5].unit == "deg/s");
+  CHECK(degrees->table.columns[4].unit == "deg");  // angles stay in degrees
+  REQUIRE(degrees->extremes.cells.size() == radians->extremes.cells.size());
+  int rates = 0;
+  for (std::size_t i = 0; i < degrees->extremes.cells.size(); ++i) {
+    const std::string& name = radians->extremes.cells[i][0];
+    const bool rate = name.find("_rad_s") != std::string::npos;
+    const double scale = rate ? k::radToDeg(1.0) : 1.0;
+    CHECK(*degrees->extremes.values[i][1] == Approx(*radians->extremes.values[i][1] * scale).epsilon(1e-15));
+    CHECK(*degrees->extremes.values[i][3] == Approx(*radians->extremes.values[i][3] * scale).epsilon(1e-15));
+    if (rate) CHECK(degrees->extremes.cells[i][0].find("_deg_s") != std::string::npos);
+    rates += rate;
+  }
+  CHECK(rates == 4);  // ω3, α3, ω4, α4
+  REQUIRE(degrees->plots.size() == radians->plots.size());
+  CHECK(degrees->plots[1].yTitle == "deg/s");
+  CHECK(degrees->plots[1].curves[0].segments[0][7].y() ==
+        Approx(radians->plots[1].curves[0].segments[0][7].y() * k::radToDeg(1.0)).epsilon(1e-15));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("report shows the forces of a linkage with masses", "[cli][report]") {
   const fs::path dir = scratchDir();
   const fs::path file = dir / "funsho.pdf";
@@ -199,6 +248,7 @@ TEST_CASE("report refuses bad options, naming them, and writes nothing", "[cli][
       {{"--step", "400", "-o", file}, 2, "--step must be more than 0 and at most 360 degrees (got 400)"},
       {{"--step", "nan", "-o", file}, 2, "--step must be more than 0 and at most 360 degrees (got nan)"},
       {{"--paper", "foo", "-o", file}, 2, "--paper must be a4 or letter (got 'foo')"},
+      {{"--rates", "rpm", "-o", file}, 2, "--rates must be rad (rad/s, rad/s²) or deg (deg/s, deg/s²) (got 'rpm')"},
       {{"--at", "10,20", "-o", file}, 2, "--at takes one value"},
       {{}, 2, "report needs -o FILE.pdf"},
       {{"-o", (dir / "missing" / "r.pdf").string()}, 1, "cannot write " + (dir / "missing" / "r.pdf").string()},

@@ -1,9 +1,12 @@
 #include "ui/compare/compare_dialog.h"
 
+#include "ui/colors.h"
+
 #include "ui/compare/column_map_editor.h"
 
 #include "kinematics/io/number_format.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
@@ -43,7 +46,7 @@ void setRow(QTableWidget* table, int row, const QStringList& cells, bool flagged
   for (int c = 0; c < cells.size(); ++c) {
     auto* item = new QTableWidgetItem(cells[c]);
     if (c > 0) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    if (flagged) item->setBackground(QColor(255, 205, 200));
+    if (flagged) item->setBackground(kFlaggedRowBackground);
     table->setItem(row, c, item);
   }
 }
@@ -65,7 +68,8 @@ CompareDialog::CompareDialog(const k::Design& design, const k::io::NumericTable&
       m_summary(resultTable({tr("Column"), tr("Compared with"), tr("Rows"), tr("Worst"), tr("At x"), tr("RMS"),
                              tr("Tolerance"), tr("Flagged")},
                             this)),
-      m_rows(resultTable({tr("Line"), tr("x"), tr("Crank (°)"), tr("Value"), tr("Exact"), tr("Deviation")}, this)) {
+      m_rows(resultTable({tr("Line"), tr("x"), tr("Crank (°)"), tr("Value"), tr("Exact"), tr("Deviation")}, this)),
+      m_drawOnPlots(new QCheckBox(tr("&Draw the rows on the plots"), this)) {
   setWindowTitle(tr("Compare with %1").arg(QFileInfo(path).fileName()));
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(new QLabel(tr("%1: %2 rows, %3 columns, %4. Map the x column (crank angle or time) and the columns "
@@ -113,9 +117,18 @@ CompareDialog::CompareDialog(const k::Design& design, const k::io::NumericTable&
   splitter->addWidget(m_rows);
   layout->addWidget(splitter, 3);
   connect(m_summary, &QTableWidget::currentCellChanged, this, [this](int row) { showRows(row); });
+  m_drawOnPlots->setChecked(true);
+  m_drawOnPlots->setToolTip(
+      tr("Each row as a marker over its quantity's curve, filled red where it is beyond the "
+         "tolerance; it stays after this dialog closes, until unticked or another linkage "
+         "is opened."));
+  connect(m_drawOnPlots, &QCheckBox::toggled, this, &CompareDialog::emitPlotOverlay);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
-  layout->addWidget(buttons);
+  auto* bottom = new QHBoxLayout;
+  bottom->addWidget(m_drawOnPlots);
+  bottom->addWidget(buttons);
+  layout->addLayout(bottom);
   resize(900, 760);
 }
 
@@ -142,7 +155,12 @@ bool CompareDialog::compare() {
   m_message->hide();
   m_comparison = *result;
   showSummary();
+  emitPlotOverlay();
   return true;
+}
+
+void CompareDialog::emitPlotOverlay() {
+  emit plotOverlayChanged(m_drawOnPlots->isChecked() ? m_comparison : std::nullopt);
 }
 
 void CompareDialog::showSummary() {

@@ -3,7 +3,8 @@
 // the document's exact solution. The user maps the columns (ColumnMapEditor), chooses the
 // crank-angle offset (automatic least squares, none, or a value) and the tolerance, and
 // Compare shows each column's worst and rms deviation and, for the column selected, every row
-// with the ones beyond the tolerance highlighted. Every number is the core's
+// with the ones beyond the tolerance highlighted; "Draw the rows on the plots" puts the table's
+// rows over the designer's curves (PlotPanel::setComparison). Every number is the core's
 // (kinematics/compare/table_comparison.h); a mapping the core refuses shows its sentence and
 // leaves the last comparison as it was.
 
@@ -14,6 +15,7 @@
 
 #include <optional>
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
@@ -44,11 +46,18 @@ public:
   QTableWidget* summaryTable() const { return m_summary; }
   QTableWidget* rowsTable() const { return m_rows; }
   QLabel* messageLabel() const { return m_message; }
+  QCheckBox* drawOnPlotsBox() const { return m_drawOnPlots; }
+
+signals:
+  /// What the plots should draw: the last comparison while "Draw the rows on the plots" is
+  /// ticked, else nothing. Emitted after each comparison and when the box is toggled.
+  void plotOverlayChanged(const std::optional<kinematics::compare::Comparison>& comparison);
 
 private:
   kinematics::compare::CompareOptions options() const;
   void showSummary();
   void showRows(int column);
+  void emitPlotOverlay();
 
   kinematics::Design m_design;
   kinematics::io::NumericTable m_table;
@@ -60,6 +69,7 @@ private:
   QLabel* m_result;
   QTableWidget* m_summary;
   QTableWidget* m_rows;
+  QCheckBox* m_drawOnPlots;
   std::optional<kinematics::compare::Comparison> m_comparison;
 };
 

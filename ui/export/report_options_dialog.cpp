@@ -11,7 +11,8 @@
 namespace linkwright::ui {
 
 ReportOptionsDialog::ReportOptionsDialog(double at, double maxStep, const QString& unit, QWidget* parent)
-    : QDialog(parent), m_at(new QDoubleSpinBox(this)), m_step(new QDoubleSpinBox(this)), m_paper(new QComboBox(this)) {
+    : QDialog(parent), m_at(new QDoubleSpinBox(this)), m_step(new QDoubleSpinBox(this)), m_paper(new QComboBox(this)),
+      m_rates(new QComboBox(this)) {
   setWindowTitle(tr("Lab report as PDF"));
   const QString suffix = unit == QStringLiteral("°") ? unit : QStringLiteral(" ") + unit;
   m_at->setDecimals(4);
@@ -25,6 +26,8 @@ ReportOptionsDialog::ReportOptionsDialog(double at, double maxStep, const QStrin
   m_step->setValue(std::min(unit == QStringLiteral("°") ? 30.0 : maxStep / 12.0, maxStep));
   m_paper->addItem(tr("A4"), static_cast<int>(kinematics::report::Paper::A4));
   m_paper->addItem(tr("Letter"), static_cast<int>(kinematics::report::Paper::Letter));
+  m_rates->addItem(tr("rad/s, rad/s²"), static_cast<int>(kinematics::report::RateUnit::Radians));
+  m_rates->addItem(tr("deg/s, deg/s²"), static_cast<int>(kinematics::report::RateUnit::Degrees));
   auto* form = new QFormLayout(this);
   auto* intro = new QLabel(tr("The linkage drawn with its link lengths, the Grashof and mobility analysis, a table of "
                               "the link angles, ω and α, the extremes, the plots and, with masses, the forces: the "
@@ -34,6 +37,7 @@ ReportOptionsDialog::ReportOptionsDialog(double at, double maxStep, const QStrin
   form->addRow(intro);
   form->addRow(tr("&Draw at"), m_at);
   form->addRow(tr("Table &step"), m_step);
+  form->addRow(tr("ω and α &in"), m_rates);
   form->addRow(tr("&Paper"), m_paper);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
   form->addRow(buttons);
@@ -46,6 +50,14 @@ double ReportOptionsDialog::step() const { return m_step->value(); }
 
 kinematics::report::Paper ReportOptionsDialog::paper() const {
   return static_cast<kinematics::report::Paper>(m_paper->currentData().toInt());
+}
+
+kinematics::report::RateUnit ReportOptionsDialog::rates() const {
+  return static_cast<kinematics::report::RateUnit>(m_rates->currentData().toInt());
+}
+
+void ReportOptionsDialog::setRates(kinematics::report::RateUnit rates) {
+  m_rates->setCurrentIndex(m_rates->findData(static_cast<int>(rates)));
 }
 
 }  // namespace linkwright::ui

@@ -4,6 +4,7 @@
 #include <QChart>
 #include <QLegend>
 #include <QPen>
+#include <QScatterSeries>
 #include <QXYSeries>
 
 #include <algorithm>
@@ -18,6 +19,7 @@ constexpr const char* kBaseTitleFont = "linkwrightBaseTitleFont";
 constexpr const char* kBaseLegendFont = "linkwrightBaseLegendFont";
 constexpr const char* kBaseLabelsFont = "linkwrightBaseLabelsFont";
 constexpr const char* kBasePenWidth = "linkwrightBasePenWidth";
+constexpr const char* kBaseMarkerSize = "linkwrightBaseMarkerSize";
 
 // The font `object` had at scale 1, stored under `key` the first time; `current` until then.
 QFont baseFont(QObject* object, const char* key, const QFont& current) {
@@ -65,6 +67,15 @@ void setChartScale(QChart* chart, double factor) {
     QPen pen = xy->pen();
     pen.setWidthF(base.toDouble() * factor);
     xy->setPen(pen);
+    // Markers (another tool's rows) grow with the lines.
+    if (auto* scatter = qobject_cast<QScatterSeries*>(xy)) {
+      QVariant size = scatter->property(kBaseMarkerSize);
+      if (!size.isValid()) {
+        size = scatter->markerSize() / before;
+        scatter->setProperty(kBaseMarkerSize, size);
+      }
+      scatter->setMarkerSize(size.toDouble() * factor);
+    }
   }
   chart->setProperty(kScale, factor);
 }

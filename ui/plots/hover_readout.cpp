@@ -36,12 +36,15 @@ HoverReadout::HoverReadout(QWidget* parent) : QLabel(parent) {
 
 void HoverReadout::showPoint(const PlotCurve& curve, QPointF point, AngleUnit unit, const QString& lengthUnit,
                              bool inside, const PlotXAxis& x) {
+  showText(inside ? readoutText(curve, point, unit, lengthUnit, x) : QString(), inside);
+}
+
+void HoverReadout::showText(const QString& text, bool inside) {
   if (!inside) {
     clearPoint();
     QToolTip::hideText();
     return;
   }
-  const QString text = readoutText(curve, point, unit, lengthUnit, x);
   setText(text);
   QToolTip::showText(QCursor::pos(), text, this);
 }

@@ -27,6 +27,8 @@ public:
   /// Shows the read-out of `curve` at `point`, or the idle hint if `inside` is false.
   void showPoint(const PlotCurve& curve, QPointF point, AngleUnit unit, const QString& lengthUnit, bool inside,
                  const PlotXAxis& x = {});
+  /// Shows `text` (another tool's row under the mouse), or the idle hint if `inside` is false.
+  void showText(const QString& text, bool inside);
   /// Back to the idle hint.
   void clearPoint();
 };

@@ -62,6 +62,7 @@ PlotPanel::PlotPanel(MechanismDocument* document, QWidget* parent)
       if (const PlotCurve* c = curve(q))
         m_readout->showPoint(*c, p, m_unit, QString::fromStdString(m_document->lengthUnit()), inside, m_x);
     });
+    connect(view, &QuantityChartView::overlayHovered, m_readout, &HoverReadout::showText);
     // One layout pass resizes the views one after another: each lays out only itself again,
     // the others keep their layouts, so aligning after every resize does not grow as n².
     connect(view, &QuantityChartView::resized, this, [this, view] { alignCharts({view}); });
@@ -95,6 +96,21 @@ void PlotPanel::setAngleUnit(AngleUnit unit) {
   if (unit == m_unit) return;
   m_unit = unit;
   m_readout->clearPoint();
+  m_overlayStale = true;  // placed anew in the new unit
+  refreshData();
+}
+
+void PlotPanel::setComparison(const kinematics::compare::Comparison& comparison, const QString& source) {
+  m_comparison = comparison;
+  m_comparisonSource = source;
+  m_overlayStale = true;
+  refreshData();
+}
+
+void PlotPanel::clearComparison() {
+  if (!m_comparison) return;
+  m_comparison.reset();
+  m_overlayStale = true;
   refreshData();
 }
 
@@ -150,6 +166,7 @@ void PlotPanel::refreshCurves() {
   // Another kind of linkage starts from its own defaults; renamed links keep the user's ticks.
   const QuantitySelection selection = selectionAfter(m_curves, m_selector->selection(), curves);
   m_curves = std::move(curves);
+  m_overlayStale = true;  // the compared columns' curves may have new names or be gone
   m_selector->setCurves(m_curves, selection);
   for (QuantityChartView* view : m_views) view->setCurves(m_curves);
   if (m_limits) m_limits->raise();  // last in the angle chart's legend, as "rocker limit" reads best
@@ -190,13 +207,22 @@ void PlotPanel::refreshData() {
   const QString lengthUnit = QString::fromStdString(m_document->lengthUnit());
   const kinematics::SweepResult& sweep = m_document->sweep();
   const QuantitySelection shown = selection();
+  const PlotXAxis before = m_x;
   m_x = plotXAxis(design, sweep, m_document->plotAxis(), m_unit);
   const PlotXAxis& x = m_x;
+  // The rows stay where they are while a drag changes the curves: placed anew only when the
+  // x axis or the units change.
+  if (m_overlayStale || x.source != before.source || x.range != before.range) {
+    m_overlay = m_comparison ? overlayCurves(*m_comparison, m_comparisonSource, m_curves, x, m_unit)
+                             : std::vector<OverlayCurve>{};
+    m_overlayStale = false;
+  }
   QList<QuantityChartView*> changed;  // their axes or legends: laid out again
   for (QuantityChartView* view : m_views) {
     const bool visible = shown.any(view->kind(), m_curves);
     const bool appears = visible == view->isHidden();
     view->setVisible(visible);
+    view->setOverlay(m_overlay);
     if (view->setData(sweep, shown, m_unit, x, lengthUnit) || appears) changed.append(view);
   }
   QuantityChartView* angles = chartView(QuantityKind::Angle);

@@ -8,10 +8,13 @@
 // design or request changes; a crank move only moves the cursor on each chart. Hovering a
 // curve reads its value out; a four-bar's rocker limit positions are marked on the angle chart
 // (on a time base at each instant the crank passes them, or not at all, with a note saying why).
+// A comparison with another tool's table (File ▸ Compare…) draws its rows over the curves until
+// it is cleared or another document comes.
 // The plots also decide the displayed sweep's resolution: its samples follow the plot area's
 // width (times the quality the bar above the charts sets), reported once a resize settles.
 
 #include "ui/plots/angle_unit.h"
+#include "ui/plots/compare_overlay.h"
 #include "ui/plots/plot_quantity.h"
 #include "ui/plots/plot_x_axis.h"
 
@@ -23,6 +26,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QChartView;
@@ -94,6 +98,12 @@ public:
   void setOnScreen(bool onScreen);
   bool isOnScreen() const { return m_onScreen; }
 
+  /// Draws `comparison`'s rows (of the table named `source`) over the curves of their
+  /// quantities, replacing any drawn before; they stay as they are while the linkage changes.
+  void setComparison(const kinematics::compare::Comparison& comparison, const QString& source);
+  void clearComparison();
+  bool hasComparison() const { return m_comparison.has_value(); }
+
 signals:
   /// The user (or setSelection) changed which quantities are shown.
   void selectionChanged();
@@ -123,6 +133,10 @@ private:
   QLabel* m_limitNote;
   HoverReadout* m_readout;
   PlotXAxis m_x;  // what the charts show on x since the last refreshData
+  std::optional<kinematics::compare::Comparison> m_comparison;
+  QString m_comparisonSource;
+  std::vector<OverlayCurve> m_overlay;  // m_comparison on m_x in m_unit
+  bool m_overlayStale = false;          // m_overlay is to be placed anew
 };
 
 }  // namespace linkwright::ui

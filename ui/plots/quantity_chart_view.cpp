@@ -1,10 +1,15 @@
 #include "ui/plots/quantity_chart_view.h"
 
+#include "ui/colors.h"
+#include "ui/plots/chart_scale.h"
 #include "ui/plots/crank_angle_chart.h"
+#include "ui/plots/series_visibility.h"
 
 #include <QChart>
 #include <QFontMetricsF>
+#include <QGraphicsLayout>
 #include <QLineSeries>
+#include <QScatterSeries>
 #include <QValueAxis>
 
 #include <algorithm>
@@ -68,6 +73,10 @@ bool QuantityChartView::setData(const kinematics::SweepResult& sweep, const Quan
     for (const QList<QPointF>& run : m_runs[i].runs)
       for (const QPointF& p : run) m_values.push_back(p.y());
   }
+  // Another tool's rows are on the value axis too: a wrong column shows how wrong it is.
+  for (const Markers& m : m_markers)
+    if (selection.contains(m.overlay.quantity))
+      for (const QPointF& p : m.overlay.points) m_values.push_back(p.y());
   // Spikes next to a toggle would squash every other value flat: they run off the chart
   // instead, and the hover read-out still gives their value.
   constexpr double kNone = std::numeric_limits<double>::infinity();
@@ -89,7 +98,71 @@ bool QuantityChartView::setData(const kinematics::SweepResult& sweep, const Quan
     m_curves[i].line.setRuns(m_runs[i], shown);
     inputs.legend.push_back(shown);
   }
+  // One legend entry names the table for all its columns on this chart: the markers' outline
+  // colour already says which curve each belongs to.
+  bool listed = false;
+  for (const Markers& m : m_markers) {
+    const bool shown = selection.contains(m.overlay.quantity);
+    const bool inLegend = shown && !listed;
+    listed = listed || inLegend;
+    if (shown != m.series->isVisible()) chart()->layout()->invalidate();  // see SegmentedLine::setRuns
+    setSeriesShown(chart(), m.series, shown, inLegend);
+    inputs.legend.push_back(inLegend);
+  }
   return inputs.replace(m_layoutInputs);
+}
+
+void QuantityChartView::setOverlay(const std::vector<OverlayCurve>& overlay) {
+  std::vector<const OverlayCurve*> mine;
+  for (const OverlayCurve& o : overlay)
+    if (quantityKind(o.quantity) == m_kind) mine.push_back(&o);
+  const bool same = mine.size() == m_markers.size() &&
+                    std::equal(mine.begin(), mine.end(), m_markers.begin(),
+                               [](const OverlayCurve* a, const Markers& b) { return *a == b.overlay; });
+  if (same) return;
+  for (const Markers& m : m_markers) {
+    chart()->removeSeries(m.series);
+    delete m.series;
+  }
+  m_markers.clear();
+  for (const OverlayCurve* o : mine) {
+    auto* series = new QScatterSeries;
+    series->setName(o->name);
+    series->setObjectName(QStringLiteral("compared_rows"));
+    series->setMarkerShape(QScatterSeries::MarkerShapeCircle);
+    series->setMarkerSize(9.0 * chartScale(chart()));
+    QColor color = kLabelColor;
+    for (const Curve& curve : m_curves)
+      if (curve.curve.quantity == o->quantity) color = curve.curve.color;
+    series->setColor(kComparedRowFillColor);
+    series->setPen(QPen(color, scaledPenWidth(chart(), 1.5)));
+    series->replace(o->points);
+    chart()->addSeries(series);
+    series->attachAxis(m_xAxis);
+    series->attachAxis(m_yAxis);
+    for (int i = 0; i < static_cast<int>(o->flagged.size()); ++i)
+      if (o->flagged[i]) series->setPointConfiguration(i, QXYSeries::PointConfiguration::Color, kFlaggedRowColor);
+    setSeriesShown(chart(), series, false, false);  // until setData knows the selection
+    const QList<QPointF> points = o->points;
+    const QList<QString> texts = o->descriptions;
+    connect(series, &QXYSeries::hovered, this, [this, points, texts](const QPointF& p, bool inside) {
+      // The marker under the mouse: the row nearest in plot units, x first.
+      qsizetype best = -1;
+      for (qsizetype i = 0; i < points.size(); ++i)
+        if (best < 0 || std::abs(points[i].x() - p.x()) + std::abs(points[i].y() - p.y()) <
+                            std::abs(points[best].x() - p.x()) + std::abs(points[best].y() - p.y()))
+          best = i;
+      if (best >= 0) emit overlayHovered(texts[best], inside);
+    });
+    m_markers.push_back({*o, series});
+  }
+  m_cursor->raise();
+}
+
+QScatterSeries* QuantityChartView::overlaySeries(PlotQuantity quantity) const {
+  for (const Markers& m : m_markers)
+    if (m.overlay.quantity == quantity) return m.series;
+  return nullptr;
 }
 
 bool QuantityChartView::settleValueRange() {

@@ -2,10 +2,12 @@
 // One chart of one kind of quantity (angles, ω, α, slider positions, velocities or
 // accelerations) against time or crank angle (plot_x_axis.h): a line per selected quantity,
 // split into segments where the sweep has no value, explicit value axes with rounded ranges,
-// and a cursor that moves without touching the data.
+// a cursor that moves without touching the data, and another tool's rows as markers over the
+// lines (compare_overlay.h).
 
 #include "ui/plots/axis_range.h"
 #include "ui/plots/chart_layout_inputs.h"
+#include "ui/plots/compare_overlay.h"
 #include "ui/plots/plot_quantity.h"
 #include "ui/plots/plot_x_axis.h"
 #include "ui/plots/segmented_line.h"
@@ -21,6 +23,7 @@
 #include <vector>
 
 class QLineSeries;
+class QScatterSeries;
 class QValueAxis;
 
 namespace linkwright::ui {
@@ -47,6 +50,12 @@ public:
   /// then the plot areas need aligning again; on most frames of a drag they do not.
   bool setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection, AngleUnit unit,
                const PlotXAxis& x, const QString& lengthUnit = QStringLiteral("mm"));
+  /// Another tool's rows over the curves of this chart's kind (the others are ignored), each
+  /// shown while its quantity is selected; the value axis covers them too. Takes effect at
+  /// the next setData. Nothing changes when `overlay` is what is shown already.
+  void setOverlay(const std::vector<OverlayCurve>& overlay);
+  /// The markers of `quantity`'s compared column, or null.
+  QScatterSeries* overlaySeries(PlotQuantity quantity) const;
   /// While the data change, setData keeps the value axis where it still serves (keepsRange);
   /// this sets it to the data's own range once they have settled. Returns whether it changed
   /// (then the plot areas need aligning again).
@@ -65,6 +74,8 @@ signals:
   /// The mouse entered (`inside`) or left `quantity`'s curve; `point` is the sample nearest
   /// the mouse, in plot units.
   void curveHovered(linkwright::ui::PlotQuantity quantity, QPointF point, bool inside);
+  /// The mouse entered (`inside`) or left an overlay marker; `text` says which row it is.
+  void overlayHovered(const QString& text, bool inside);
   /// The view was resized (and its chart with it).
   void resized();
 
@@ -76,6 +87,10 @@ private:
     PlotCurve curve;
     SegmentedLine line;
   };
+  struct Markers {
+    OverlayCurve overlay;
+    QScatterSeries* series;  // owned by the chart
+  };
 
   void onSegmentHovered(PlotQuantity quantity, const QLineSeries* segment, QPointF point, bool inside);
   // The value axis over the data's span, with no more ticks than the plot's height can label.
@@ -86,6 +101,7 @@ private:
   QValueAxis* m_xAxis;
   QValueAxis* m_yAxis;
   std::vector<Curve> m_curves;
+  std::vector<Markers> m_markers;
   std::unique_ptr<VerticalMarker> m_cursor;
   AxisRange m_valueRange;
   double m_lo = 0.0, m_hi = 0.0;     // the data's span that m_valueRange covers

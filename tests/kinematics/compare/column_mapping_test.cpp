@@ -100,3 +100,33 @@ TEST_CASE("a mapping that does not fit its table is refused naming the column", 
   REQUIRE(emptyX);
   CHECK_THAT(emptyX->message, Catch::Contains("empty on line 3"));
 }
+
+TEST_CASE("a value no linkage reaches is refused naming the column, line, value and bound", "[compare][mapping]") {
+  const Mechanism m = thesis();
+  const auto check = [&](const std::string& csv, const std::string& map) {
+    return checkColumnMapping(*parseColumnMap(map, m), *io::readNumericTable(csv));
+  };
+  // 1e308 degrees would even "agree" with any angle modulo a turn.
+  const auto angle = check("x,a\n0,10\n30,1e308\n", "1=crank-angle,2=rocker_angle:deg");
+  REQUIRE(angle);
+  CHECK(angle->field == "map");
+  CHECK_THAT(angle->message, Catch::Contains("column 2") && Catch::Contains("1e+308 deg") &&
+                                 Catch::Contains("line 3") && Catch::Contains("±1e+06 deg"));
+  // The bound follows the column's unit: 1e6° is 17453 rad.
+  CHECK(check("x,a\n0,17000\n", "1=crank-angle,2=rocker_angle:rad") == std::nullopt);
+  const auto radians = check("x,a\n0,18000\n", "1=crank-angle,2=rocker_angle:rad");
+  REQUIRE(radians);
+  CHECK_THAT(radians->message, Catch::Contains("±1.75e+04 rad"));
+  // The x column too, and every dimension: a rate, a length.
+  const auto x = check("x,a\n-1e7,10\n", "1=crank-angle,2=rocker_angle");
+  REQUIRE(x);
+  CHECK_THAT(x->message, Catch::Contains("column 1") && Catch::Contains("angle"));
+  const auto time = check("t,a\n2e9,10\n", "1=time,2=rocker_angle");
+  REQUIRE(time);
+  CHECK_THAT(time->message, Catch::Contains("time"));
+  const auto rate = check("x,w\n0,1e13\n", "1=crank-angle,2=rocker_omega:rad/s");
+  REQUIRE(rate);
+  CHECK_THAT(rate->message, Catch::Contains("angular velocity"));
+  // Large but possible: a rocker ω of 1e5 rad/s near a toggle, an angle unwrapped over 1000 turns.
+  CHECK(check("x,w,a\n0,1e5,360000\n", "1=crank-angle,2=rocker_omega:rad/s,3=coupler_angle") == std::nullopt);
+}

@@ -11,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -130,6 +131,37 @@ TEST_CASE("each row is the exact pose at the row's own crank angle, offset inclu
   const auto pose = solvePose(thesis().mechanism, {degToRad(row.inputDeg), rpmToRadPerSec(10.0), 0.0});
   REQUIRE(pose);
   CHECK(*row.exact == Approx(std::abs(radToDeg(pose->linkOmega[2]))).epsilon(1e-12));
+}
+
+TEST_CASE("restated values are the file's in the solver's units and sign, for the plots' overlay", "[compare]") {
+  // SolidWorks' |ω| in deg/s: restated in rad/s with the exact ω's sign, so an agreeing row
+  // lies on the exact curve; the deviation is the file's, carried over.
+  const Comparison omega = compareFile("thesis_solidworks_fig42_velocities.tsv", kSolidWorksOmega);
+  bool negative = false;
+  for (const ColumnComparison& column : omega.columns) {
+    const std::size_t link = column.mapped.quantity.column.index;
+    for (const RowComparison& row : column.rows) {
+      const auto pose = solvePose(thesis().mechanism, {degToRad(row.inputDeg), rpmToRadPerSec(10.0), 0.0});
+      REQUIRE(pose);
+      const double exact = pose->linkOmega[link];
+      negative = negative || exact < 0.0;
+      CAPTURE(row.line, row.value, exact);
+      CHECK(row.restated == Approx(std::copysign(degToRad(row.value), exact)).epsilon(1e-12));
+      const double sign = exact < 0.0 ? -1.0 : 1.0;
+      CHECK(row.restated - exact == Approx(sign * degToRad(row.deviation)).margin(1e-12));
+    }
+  }
+  CHECK(negative);  // the sign really is restored, not only kept
+  // The rocker angle measured from C (rev): 180° taken off, in radians, on the exact turn.
+  const Comparison angles = compareFile("thesis_solidworks_fig41_angles.tsv", kSolidWorksAngles);
+  const ColumnComparison& rocker = angles.columns[1];
+  for (const RowComparison& row : rocker.rows) {
+    const auto pose = solvePose(thesis().mechanism, {degToRad(row.inputDeg), rpmToRadPerSec(10.0), 0.0});
+    REQUIRE(pose);
+    const double exact = pose->linkAngle[rocker.mapped.quantity.column.index];
+    CHECK(std::abs(std::remainder(row.restated - exact, 2.0 * kPi)) < degToRad(0.05));
+    CHECK(std::abs(std::remainder(row.restated - degToRad(row.value - 180.0), 2.0 * kPi)) < 1e-12);
+  }
 }
 
 TEST_CASE("tolerances and offsets out of range are refused naming the field", "[compare]") {
