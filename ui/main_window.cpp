@@ -535,9 +535,10 @@ bool MainWindow::exportReport(const QString& path, double at, double step, k::re
   request.subtitle = design.kind;
   request.date = QDateTime::currentDateTimeUtc().date().toString(Qt::ISODate).toStdString();
   request.grid = k::designSweepSpec(design);
-  // A step is a difference of inputs: the display unit's scale without its origin.
-  request.tableStep = k::inputFromDisplay(m, step) - k::inputFromDisplay(m, 0.0);
-  request.drawAt = k::inputFromDisplay(m, at);
+  // On a time base both are seconds. Else a step is a difference of inputs: the display unit's
+  // scale without its origin.
+  request.tableStep = design.time ? step : k::inputFromDisplay(m, step) - k::inputFromDisplay(m, 0.0);
+  request.drawAt = design.time ? at : k::inputFromDisplay(m, at);
   request.rates = rates;
   const auto content = k::report::buildReport(m, design.dynamics, request);
   const std::optional<k::Error> why = content ? k::report::writeReportPdf(*content, paper, path.toStdString())
@@ -554,9 +555,12 @@ void MainWindow::exportReportDialog() {
   const k::Design& design = m_document->design();
   const k::Mechanism& m = design.mechanism;
   const bool crank = k::inputKind(m) == k::InputKind::Angle;
-  ReportOptionsDialog options(k::inputDisplayValue(m, m_document->crankAngle()),
-                              crank ? 360.0 : design.toDeg - design.fromDeg, QString::fromStdString(k::inputUnit(m)),
-                              this);
+  // On a time base the pose drawn and the table's step are times.
+  const auto& time = design.time;
+  const double at = time ? m_document->time() : k::inputDisplayValue(m, m_document->crankAngle());
+  const double maxStep = time ? time->toTime - time->fromTime : crank ? 360.0 : design.toDeg - design.fromDeg;
+  const QString unit = time ? QStringLiteral("s") : QString::fromStdString(k::inputUnit(m));
+  ReportOptionsDialog options(at, maxStep, unit, this);
   // The rates in the unit the plots show them in.
   options.setRates(m_plots->angleUnit() == AngleUnit::Degrees ? k::report::RateUnit::Degrees
                                                               : k::report::RateUnit::Radians);

@@ -81,8 +81,8 @@ public:
   /// shows why in the banner and writes nothing.
   bool exportAnimation(const QString& path, const AnimationSettings& settings, bool showProgress = false);
   /// Writes the lab-report PDF (kinematics/report/, as `linkwright-cli report`): drawn at input
-  /// `at`, a table row every `step` (both in the input's display unit: degrees for a crank); on
-  /// a refusal shows the core's reason and writes nothing.
+  /// `at`, a table row every `step` (both in the input's display unit: degrees for a crank, or
+  /// seconds on a time base); on a refusal shows the core's reason and writes nothing.
   bool exportReport(const QString& path, double at, double step, kinematics::report::Paper paper,
                     kinematics::report::RateUnit rates = kinematics::report::RateUnit::Radians);
   /// File ▸ Compare… on `path`, a table from another tool: opens the comparison dialog on it

@@ -133,13 +133,14 @@ Output: the six instant centres Iij of bodies 1 frame, 2 crank, 3 coupler (rod),
 )";
 
 constexpr const char* kReportOptions =
-    R"(Report options (with the mechanism options; any linkage on an input grid):
+    R"(Report options (with the mechanism options; on the input grid, or on the time base):
   -o, --output FILE.pdf
                       where to write the report (required; written whole or not at all)
   --at DEG            the input drawn on page 1, degrees for a crank, else the length
-                      unit (default: the grid's start)
+                      unit (default: the grid's start); on a time base a time in s
   --step DEG          the table's step, more than 0 and at most 360 for a crank (at most
-                      the input's range for a linear driver); default 30, as the thesis
+                      the input's range for a linear driver); default 30, as the thesis;
+                      on a time base seconds, at most the time span (default a twelfth)
   --paper a4|letter   paper size (default a4)
   --rates rad|deg     ω and α in rad/s and rad/s² (default, as the thesis and analyze) or
                       in deg/s and deg/s² (as SolidWorks Motion)

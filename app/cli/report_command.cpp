@@ -1,5 +1,6 @@
 // `linkwright-cli report`: the lab-report PDF of a linkage (kinematics/report/): the drawing at
-// one input, the Grashof / mobility analysis, a table every --step degrees, the refined
+// one input, the Grashof / mobility analysis, a table every --step degrees (seconds on a time
+// base), the refined
 // extremes, the plots and, with masses, the forces. The content and the file come from the
 // core calls the designer's Report ▸ PDF makes, so both write the same report.
 
@@ -38,8 +39,14 @@ std::string today() {
   return text;
 }
 
-// The grid the plots and extremes run on: the document's or example's own.
+// The grid the plots and extremes run on: the document's or example's own, or its time base.
 k::SweepSpec gridOf(const GridDefaults& d) {
+  if (d.time) {
+    k::SweepSpec spec;
+    spec.time = d.time;
+    spec.samples = static_cast<std::size_t>(std::max(2LL, d.timeSamples));
+    return spec;
+  }
   const double intervals = std::max(1.0, std::round((d.toDeg - d.fromDeg) / d.stepDeg));
   k::SweepSpec spec;
   spec.fromAngle = d.toInput(d.fromDeg);
@@ -50,8 +57,21 @@ k::SweepSpec gridOf(const GridDefaults& d) {
   return spec;
 }
 
+// --step on a time base: seconds, more than 0 and at most the time span; a twelfth of it by
+// default (13 rows, as 30° gives over a turn).
+k::Result<double> timeStep(const Invocation& inv, const k::TimeBase& time) {
+  const double span = time.toTime - time.fromTime;
+  const double step = inv.stepDeg.value_or(span / 12.0);
+  if (!(std::isfinite(step) && step > 0.0 && step <= span))
+    return k::Error{k::ErrorCode::InvalidValue, "--step",
+                    "--step must be more than 0 and at most " + k::io::formatShort(span) +
+                        " s (the time span) on a time base (got " + k::formatNumber(step) + ")"};
+  return step;
+}
+
 // --step: more than 0 and at most a turn for a crank, at most the range for a linear driver.
 k::Result<double> tableStep(const Invocation& inv, const GridDefaults& d) {
+  if (d.time) return timeStep(inv, *d.time);
   const bool crank = d.input == k::InputKind::Angle;
   const double span = crank ? 360.0 : d.toDeg - d.fromDeg;
   const double step = inv.stepDeg.value_or(crank ? kDefaultStepDeg : span / 12.0);
@@ -80,10 +100,6 @@ ExitCode runReport(const Invocation& inv, std::ostream& out, std::ostream& err) 
   const auto resolved = resolveMechanism(inv);
   if (!resolved) return fail(resolved.error());
   const GridDefaults& d = resolved->defaults;
-  if (d.time)
-    return fail({k::ErrorCode::InvalidValue, "report",
-                 "report tabulates an input grid, and " + resolved->source +
-                     " follows a motion law in time (not supported yet: use analyze)"});
   const auto step = tableStep(inv, d);
   if (!step) return fail(step.error());
   k::report::ReportRequest request;
@@ -97,7 +113,9 @@ ExitCode runReport(const Invocation& inv, std::ostream& out, std::ostream& err) 
   request.date = today();
   request.grid = gridOf(d);
   request.tableStep = *step;
-  request.drawAt = d.toInput(inv.atDeg.empty() ? d.fromDeg : inv.atDeg.front());
+  // On a time base --at is a time (s), as --step is.
+  request.drawAt = d.time ? (inv.atDeg.empty() ? d.time->fromTime : inv.atDeg.front())
+                          : d.toInput(inv.atDeg.empty() ? d.fromDeg : inv.atDeg.front());
   request.rates = rates == "deg" ? k::report::RateUnit::Degrees : k::report::RateUnit::Radians;
   const auto content = k::report::buildReport(resolved->mechanism, resolved->dynamics, request);
   if (!content)
@@ -105,7 +123,7 @@ ExitCode runReport(const Invocation& inv, std::ostream& out, std::ostream& err) 
   if (auto e = k::report::writeReportPdf(*content, *paper, *inv.outputFile)) return fail(*e, ExitCode::IoError);
   out << "wrote " << *inv.outputFile << ": the lab report of " << resolved->source << " ("
       << (*paper == k::report::Paper::A4 ? "A4" : "Letter") << "), a table row every "
-      << k::report::inputText(resolved->mechanism, *step, false) << "\n";
+      << (d.time ? k::io::formatShort(*step) + " s" : k::report::inputText(resolved->mechanism, *step, false)) << "\n";
   return ExitCode::Success;
 }
 

@@ -8,6 +8,7 @@
 #include "kinematics/model/driver.h"
 #include "kinematics/model/units.h"
 #include "kinematics/report/report_sections.h"
+#include "kinematics/solve/motion_law.h"
 
 #include <algorithm>
 #include <cmath>
@@ -44,21 +45,26 @@ ReportTable sweepTable(const Mechanism& m, const SweepResult& r, const std::vect
 
 ReportTable extremesTable(const Mechanism& m, const SweepSpec& spec, const SweepResult& r,
                           const std::vector<SweepColumn>& columns, RateUnit rates) {
-  const std::string where = "at " + inputName(m);
-  const std::string whereUnit = inputUnit(m) == "°" ? "deg" : inputUnit(m);
+  const bool timeBase = spec.time.has_value();
+  const std::string where = timeBase ? "at time" : "at " + inputName(m);
+  const std::string whereUnit = timeBase ? "s" : inputUnit(m) == "°" ? "deg" : inputUnit(m);
   ReportTable table;
   table.columns = {{"quantity", ""}, {"minimum", ""}, {where, whereUnit}, {"maximum", ""}, {where, whereUnit}};
   for (const SweepColumn& c : columns) {
-    if (c.quantity == ColumnQuantity::InputAngle || c.quantity == ColumnQuantity::InputLength) continue;
+    if (c.quantity == ColumnQuantity::InputAngle || c.quantity == ColumnQuantity::InputLength ||
+        c.quantity == ColumnQuantity::Time)
+      continue;
     const auto e = io::columnExtrema(m, spec, r, c);
     if (!e) continue;
-    const double minAt = inputDisplayValue(m, e->minimum.inputAngle);
-    const double maxAt = inputDisplayValue(m, e->maximum.inputAngle);
+    const auto at = [&](const Extremum& x) { return timeBase ? x.time : inputDisplayValue(m, x.inputAngle); };
+    const double minAt = at(e->minimum), maxAt = at(e->maximum);
     const double scale = rateScale(c, rates);
     const double lo = e->minimum.value * scale, hi = e->maximum.value * scale;
-    // As `extremes` prints them: nine significant digits, the input to four decimals.
-    table.cells.push_back({columnName(c, rates), io::formatShort(lo, 9), formatFixed(minAt, 4), io::formatShort(hi, 9),
-                           formatFixed(maxAt, 4)});
+    // As `extremes` prints them: nine significant digits, the input to four decimals, a time
+    // to six.
+    const int decimals = timeBase ? 6 : 4;
+    table.cells.push_back({columnName(c, rates), io::formatShort(lo, 9), formatFixed(minAt, decimals),
+                           io::formatShort(hi, 9), formatFixed(maxAt, decimals)});
     table.values.push_back({std::nullopt, lo, minAt, hi, maxAt});
   }
   return table;
@@ -75,7 +81,8 @@ PlotCurve curveOf(const Mechanism& m, const SweepResult& r, const SweepColumn& c
     if (!valid) continue;
     if (!open) curve.segments.emplace_back();
     open = true;
-    curve.segments.back().emplace_back(inputDisplayValue(m, r.inputAngle[j]), c.value(r, j) * scale);
+    const double x = r.time.empty() ? inputDisplayValue(m, r.inputAngle[j]) : r.time[j];
+    curve.segments.back().emplace_back(x, c.value(r, j) * scale);
   }
   return curve;
 }
@@ -83,7 +90,7 @@ PlotCurve curveOf(const Mechanism& m, const SweepResult& r, const SweepColumn& c
 std::vector<ReportPlot> plotsOf(const Mechanism& m, const SweepResult& r, const std::vector<SweepColumn>& columns,
                                 RateUnit rates) {
   const std::string unit = inputUnit(m) == "°" ? "deg" : inputUnit(m);
-  const std::string xTitle = inputName(m) + " (" + unit + ")";
+  const std::string xTitle = r.time.empty() ? inputName(m) + " (" + unit + ")" : "time (s)";
   std::vector<ReportPlot> plots;
   for (const PlotKind& kind : plotKinds(m, rates)) {
     ReportPlot plot{kind.title, xTitle, kind.unit, {}};
@@ -130,21 +137,35 @@ Result<ReportTable> forcesTable(const Mechanism& m, const LinkageDynamics& dynam
   return table;
 }
 
+// The span the table runs over: the grid's inputs, or its time base's times.
+double spanOf(const SweepSpec& grid) {
+  return grid.time ? grid.time->toTime - grid.time->fromTime : grid.toAngle - grid.fromAngle;
+}
+
 // The table's grid: the plots' range every `step`, its last row where a whole step lands.
 SweepSpec tableSpec(const SweepSpec& grid, double step) {
   SweepSpec spec = grid;
-  const double intervals = std::floor((grid.toAngle - grid.fromAngle) / step + 1e-9);
+  const double intervals = std::floor(spanOf(grid) / step + 1e-9);
   spec.samples = static_cast<std::size_t>(intervals) + 1;
-  spec.toAngle = grid.fromAngle + intervals * step;
+  if (spec.time) spec.time->toTime = grid.time->fromTime + intervals * step;
+  else spec.toAngle = grid.fromAngle + intervals * step;
   return spec;
 }
 
 std::optional<Error> checkRequest(const Mechanism& m, const ReportRequest& request) {
-  if (request.grid.time)
-    return Error{ErrorCode::InvalidValue, "time",
-                 "a report tabulates a crank's input grid; this linkage's driver follows a motion law in time"};
   if (auto e = checkSweepSpec(request.grid, inputKind(m))) return e;
-  const double span = request.grid.toAngle - request.grid.fromAngle;
+  const double span = spanOf(request.grid);
+  if (const auto& time = request.grid.time) {
+    if (!(std::isfinite(request.tableStep) && request.tableStep > 0.0 && request.tableStep <= std::max(span, 1e-300)))
+      return Error{ErrorCode::InvalidValue, "tableStep",
+                   "the table step must be positive and at most the time span tabulated, " + io::formatShort(span) +
+                       " s (got " + io::formatShort(request.tableStep) + " s)"};
+    if (!(request.drawAt >= time->fromTime && request.drawAt <= time->toTime))
+      return Error{ErrorCode::InvalidValue, "time",
+                   "the drawn time (--at) must be within the time span, " + io::formatShort(time->fromTime) + " to " +
+                       io::formatShort(time->toTime) + " s (got " + io::formatShort(request.drawAt) + " s)"};
+    return std::nullopt;
+  }
   if (!(std::isfinite(request.tableStep) && request.tableStep > 0.0 && request.tableStep <= std::max(span, 1e-300)))
     return Error{ErrorCode::InvalidValue, "tableStep",
                  "the table step must be positive and at most the range tabulated, " +
@@ -162,7 +183,10 @@ Result<ReportContent> buildReport(const Mechanism& m, const LinkageDynamics& dyn
   report.title = request.title;
   report.subtitle = request.subtitle;
   report.date = request.date;
-  auto drawing = reportDrawing(m, request.drawAt);
+  // On a time base the drawn pose is the law's at the time asked for.
+  const double drawnInput =
+      request.grid.time ? motionAt(request.grid.time->law, request.drawAt).position : request.drawAt;
+  auto drawing = reportDrawing(m, drawnInput);
   if (!drawing) return drawing.error();
   report.drawing = std::move(*drawing);
   const SweepSpec tSpec = tableSpec(request.grid, request.tableStep);
@@ -179,10 +203,13 @@ Result<ReportContent> buildReport(const Mechanism& m, const LinkageDynamics& dyn
   report.analysis = analysisLines(m, *plotted);
   const std::vector<SweepColumn> columns = reportColumns(m, *table);
   report.table = sweepTable(m, *table, columns, request.rates);
-  report.tableCaption = gridCaption(m, tSpec, "every " + inputText(m, request.tableStep, false), request.rates);
+  report.tableCaption = tSpec.time
+                            ? timeCaption(m, tSpec, "every " + io::formatShort(request.tableStep) + " s")
+                            : gridCaption(m, tSpec, "every " + inputText(m, request.tableStep, false), request.rates);
   report.extremes = extremesTable(m, request.grid, *fine, columns, request.rates);
-  report.extremesCaption = gridCaption(
-      m, request.grid, "refined between " + std::to_string(request.grid.samples) + " samples", request.rates);
+  const std::string refined = "refined between " + std::to_string(request.grid.samples) + " samples";
+  report.extremesCaption =
+      request.grid.time ? timeCaption(m, request.grid, refined) : gridCaption(m, request.grid, refined, request.rates);
   report.plots = plotsOf(m, *plotted, columns, request.rates);
   if (!dynamics.empty()) {
     auto forces = forcesTable(m, dynamics, *table, columns.front());

@@ -2,7 +2,8 @@
 // What a lab report says, as plain values built from core calls: the drawing of the linkage at
 // one input with its link lengths, the Grashof / mobility analysis (design_analysis.h, as
 // `linkwright-cli classify` prints it), a table of the link angles, ω and α every N degrees
-// (sweep_columns.h, the columns and numbers of `analyze`), the refined extremes
+// (every N seconds on a time base; sweep_columns.h, the columns and numbers of `analyze`), the
+// refined extremes
 // (io/column_extrema.h, as `extremes`), the curves of the plots and, when the linkage has masses
 // and loads, the joint forces and driving torque (force_sweep.h, as `analyze --forces`).
 // Nothing here draws: report_pdf.h lays this out on pages, so a test can check the numbers
@@ -38,13 +39,17 @@ struct ReportRequest {
   std::string title;     ///< the heading: the document's file name or the example's name
   std::string subtitle;  ///< what it is (the example's description); may be empty
   std::string date;      ///< as printed, e.g. "2026-11-26"
-  /// The plots' and extremes' sweep (the document's grid: its range, step, ω and α). An input
-  /// grid: a time base (a motion law) is refused.
+  /// The plots' and extremes' sweep (the document's grid: its range, step, ω and α), or its
+  /// time base (a motion law in time): then the table has a time column and the plots and
+  /// extremes are against time.
   SweepSpec grid;
   /// The table's step in the driver's coordinate (rad for a crank, the length unit for a
-  /// linear driver), > 0; the table runs from grid.fromAngle to grid.toAngle.
+  /// linear driver), or in seconds on a time base, > 0; the table runs from the grid's start
+  /// to its end.
   double tableStep = 0.0;
-  double drawAt = 0.0;  ///< the drawn pose's input, in the driver's coordinate
+  /// The drawn pose's input, in the driver's coordinate; on a time base its time (s), within
+  /// the time span.
+  double drawAt = 0.0;
   RateUnit rates = RateUnit::Radians;
 };
 

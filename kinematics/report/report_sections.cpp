@@ -96,10 +96,12 @@ std::string columnName(const io::SweepColumn& c, RateUnit rates) {
 
 std::vector<io::SweepColumn> reportColumns(const Mechanism& m, const SweepResult& r) {
   std::vector<io::SweepColumn> columns;
-  for (io::SweepColumn& c : io::sweepColumns(m, r.request)) {
+  const bool timeBase = !r.time.empty();
+  for (io::SweepColumn& c : io::sweepColumns(m, r.request, timeBase)) {
     const bool linkRate = c.quantity == ColumnQuantity::LinkOmega || c.quantity == ColumnQuantity::LinkAlpha;
-    if (linkRate && io::isDrivenCrankLink(m, LinkId{c.index})) continue;
-    bool keep = c.quantity <= ColumnQuantity::TransmissionAngle && c.quantity != ColumnQuantity::Time;
+    // On a grid the crank's ω and α are the grid's constants; on a time base the law's.
+    if (linkRate && !timeBase && io::isDrivenCrankLink(m, LinkId{c.index})) continue;
+    bool keep = c.quantity <= ColumnQuantity::TransmissionAngle;
     if (c.quantity > ColumnQuantity::TransmissionAngle && isSliderPin(m, c.index)) {
       const bool inY = c.quantity == ColumnQuantity::PointY || c.quantity == ColumnQuantity::PointVy ||
                        c.quantity == ColumnQuantity::PointAy;
@@ -138,6 +140,12 @@ std::string gridCaption(const Mechanism& m, const SweepSpec& spec, const std::st
   return name + " " + inputText(m, spec.fromAngle, false) + " to " + inputText(m, spec.toAngle, false) + ", " +
          sampling + "; " + (crank ? "crank " : "driver ") + formatShort(spec.omega * scale) + " " + rate + ", " +
          formatShort(spec.alpha * scale) + " " + rate + "²";
+}
+
+std::string timeCaption(const Mechanism& m, const SweepSpec& spec, const std::string& sampling) {
+  const bool crank = inputKind(m) == InputKind::Angle;
+  return "Time " + formatShort(spec.time->fromTime) + " s to " + formatShort(spec.time->toTime) + " s, " + sampling +
+         "; the " + (crank ? "crank" : "driver") + " follows its motion law";
 }
 
 std::vector<InfoLine> analysisLines(const Mechanism& m, const SweepResult& gridSweep) {

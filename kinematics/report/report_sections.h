@@ -24,8 +24,9 @@ double rateScale(const io::SweepColumn& column, RateUnit rates);
 /// The sweep column's name with its rate unit as `rates` says: "rocker_omega_deg_s".
 std::string columnName(const io::SweepColumn& column, RateUnit rates);
 
-/// The columns a report tabulates, in `analyze`'s CSV order: the input, each moving link's
-/// angle, ω and α but the driven crank's (they are the input), the transmission angles and,
+/// The columns a report tabulates, in `analyze`'s CSV order: the time on a time base, the
+/// input, each moving link's angle, ω and α but the driven crank's angle (the input) and, on
+/// a grid, its ω and α (the grid's constants), the transmission angles and,
 /// for slider pins (RRP points), their x, vx, ax (and y, vy, ay where the pin moves in y).
 std::vector<io::SweepColumn> reportColumns(const Mechanism& mechanism, const SweepResult& sweep);
 
@@ -47,6 +48,9 @@ std::string inputText(const Mechanism& mechanism, double input, bool named = tru
 /// speed in `rates`.
 std::string gridCaption(const Mechanism& mechanism, const SweepSpec& spec, const std::string& sampling,
                         RateUnit rates = RateUnit::Radians);
+
+/// "Time 0 s to 2 s, every 0.1 s; the crank follows its motion law" for the time base `spec`.
+std::string timeCaption(const Mechanism& mechanism, const SweepSpec& spec, const std::string& sampling);
 
 /// The Grashof / mobility analysis of `mechanism`, whose sweep over its grid is `gridSweep`.
 std::vector<InfoLine> analysisLines(const Mechanism& mechanism, const SweepResult& gridSweep);

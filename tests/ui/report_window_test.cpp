@@ -15,6 +15,8 @@
 #include <QTemporaryDir>
 
 #include <sstream>
+#include <string>
+#include <vector>
 
 using namespace linkwright;
 
@@ -37,22 +39,44 @@ QString pageText(const QString& pdf, int page) {
   return lines.join(QLatin1Char('\n'));
 }
 
+// The designer's report of `example` drawn at `at` every `step`, and the CLI's with `options`,
+// written into `dir` as gui.pdf and cli.pdf.
+void writeBoth(ui::MainWindow& window, const QTemporaryDir& dir, const std::string& example, double at, double step,
+               std::vector<std::string> options) {
+  window.document()->reset(*kinematics::designForExample(example));
+  REQUIRE(window.exportReport(dir.filePath("gui.pdf"), at, step, kinematics::report::Paper::A4));
+  std::vector<std::string> args{"report", "--example", example, "-o", dir.filePath("cli.pdf").toStdString()};
+  args.insert(args.end(), options.begin(), options.end());
+  std::ostringstream out, err;
+  REQUIRE(cli::runCli(args, out, err) == 0);
+}
+
 }  // namespace
 
 TEST_CASE("Report ▸ PDF writes the table linkwright-cli report writes", "[ui][window][report]") {
   ui::MainWindow window;
-  window.document()->reset(*kinematics::designForExample("thesis-crank-rocker"));
   QTemporaryDir dir;
-  const QString gui = dir.filePath("gui.pdf"), cli = dir.filePath("cli.pdf");
-  REQUIRE(window.exportReport(gui, 0.0, 30.0, kinematics::report::Paper::A4));
-  std::ostringstream out, err;
-  REQUIRE(cli::runCli({"report", "--example", "thesis-crank-rocker", "-o", cli.toStdString()}, out, err) == 0);
-  const QString table = pageText(gui, 2);
+  writeBoth(window, dir, "thesis-crank-rocker", 0.0, 30.0, {});
+  const QString table = pageText(dir.filePath("gui.pdf"), 2);
   CHECK(table.contains(QStringLiteral("rocker ω")));
-  CHECK(table == pageText(cli, 2));
+  CHECK(table == pageText(dir.filePath("cli.pdf"), 2));
 
   const QString refused = dir.filePath("refused.pdf");
   CHECK_FALSE(window.exportReport(refused, 0.0, 0.0, kinematics::report::Paper::A4));
   CHECK_FALSE(QFile::exists(refused));
   CHECK(window.banner()->text().contains(QStringLiteral("step")));
+}
+
+TEST_CASE("Report ▸ PDF of a document on a time base tabulates in seconds, as the CLI", "[ui][window][report]") {
+  ui::MainWindow window;
+  QTemporaryDir dir;
+  // Drawn at 2 s, a row every 0.5 s: the times the CLI's --at and --step take on a time base.
+  writeBoth(window, dir, "excavator-boom", 2.0, 0.5, {"--at", "2", "--step", "0.5"});
+  // The table; not the extremes: the boom's smallest angle is at the law's flat start, where
+  // the refined time (about 1e-5 s) depends on the samples it is refined between.
+  const auto tableOf = [](const QString& page) { return page.left(page.indexOf(QStringLiteral("Extremes"))); };
+  const QString table = tableOf(pageText(dir.filePath("gui.pdf"), 2));
+  CHECK(table.contains(QStringLiteral("every 0.5 s")));
+  CHECK(table.contains(QStringLiteral("2.0000")));
+  CHECK(table == tableOf(pageText(dir.filePath("cli.pdf"), 2)));
 }

@@ -16,7 +16,8 @@ namespace linkwright::ui {
 class ReportOptionsDialog : public QDialog {
   Q_OBJECT
 public:
-  /// `at` and `maxStep` in the input's display unit `unit` ("°" or the length unit).
+  /// `at` and `maxStep` in the input's display unit `unit` ("°" or the length unit), or in
+  /// seconds ("s") on a time base.
   ReportOptionsDialog(double at, double maxStep, const QString& unit, QWidget* parent = nullptr);
 
   double at() const;    ///< the drawn input, display unit
