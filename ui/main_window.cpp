@@ -526,7 +526,7 @@ void MainWindow::exportAnimationDialog() {
 }
 
 bool MainWindow::exportReport(const QString& path, double at, double step, k::report::Paper paper,
-                              k::report::RateUnit rates) {
+                              const k::report::ReportUnits& units) {
   const k::Design& design = m_document->design();
   const k::Mechanism& m = design.mechanism;
   k::report::ReportRequest request;
@@ -539,7 +539,7 @@ bool MainWindow::exportReport(const QString& path, double at, double step, k::re
   // scale without its origin.
   request.tableStep = design.time ? step : k::inputFromDisplay(m, step) - k::inputFromDisplay(m, 0.0);
   request.drawAt = design.time ? at : k::inputFromDisplay(m, at);
-  request.rates = rates;
+  request.units = units;
   const auto content = k::report::buildReport(m, design.dynamics, request);
   const std::optional<k::Error> why = content ? k::report::writeReportPdf(*content, paper, path.toStdString())
                                               : std::optional<k::Error>(content.error());
@@ -561,14 +561,15 @@ void MainWindow::exportReportDialog() {
   const double maxStep = time ? time->toTime - time->fromTime : crank ? 360.0 : design.toDeg - design.fromDeg;
   const QString unit = time ? QStringLiteral("s") : QString::fromStdString(k::inputUnit(m));
   ReportOptionsDialog options(at, maxStep, unit, this);
-  // The rates in the unit the plots show them in.
-  options.setRates(m_plots->angleUnit() == AngleUnit::Degrees ? k::report::RateUnit::Degrees
-                                                              : k::report::RateUnit::Radians);
+  // Angles, ω and α in the unit the plots show them in.
+  const bool radians = m_plots->angleUnit() == AngleUnit::Radians;
+  options.setUnits({radians ? k::report::AngleUnit::Radians : k::report::AngleUnit::Degrees,
+                    radians ? k::report::RateUnit::Radians : k::report::RateUnit::Degrees});
   if (options.exec() != QDialog::Accepted) return;
   QString path = QFileDialog::getSaveFileName(this, tr("Lab report as PDF"), QString(), tr("PDF documents (*.pdf)"));
   if (path.isEmpty()) return;
   if (QFileInfo(path).suffix().isEmpty()) path += ".pdf";
-  exportReport(path, options.at(), options.step(), options.paper(), options.rates());
+  exportReport(path, options.at(), options.step(), options.paper(), options.units());
 }
 
 void MainWindow::compareDialog() {

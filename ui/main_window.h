@@ -84,7 +84,7 @@ public:
   /// `at`, a table row every `step` (both in the input's display unit: degrees for a crank, or
   /// seconds on a time base); on a refusal shows the core's reason and writes nothing.
   bool exportReport(const QString& path, double at, double step, kinematics::report::Paper paper,
-                    kinematics::report::RateUnit rates = kinematics::report::RateUnit::Radians);
+                    const kinematics::report::ReportUnits& units = {});
   /// File ▸ Compare… on `path`, a table from another tool: opens the comparison dialog on it
   /// (not modal; it closes itself). On a file that cannot be read or holds no numbers, shows
   /// why in the banner and returns nullptr.

@@ -31,8 +31,9 @@ const std::set<std::string>& optionsOf(Command command) {
   static const std::set<std::string> centres{"--fourbar", "--example", "--unit", "--branch", "--at"};
   static const std::set<std::string> dxf{"--fourbar", "--example", "--unit",  "--branch", "--coupler-point",
                                          "--at",      "--hole",    "--width", "-o",       "--output"};
-  static const std::set<std::string> report{"--fourbar", "--example", "--unit",  "--branch", "--coupler-point", "--at",
-                                            "--step",    "--paper",   "--rates", "-o",       "--output"};
+  static const std::set<std::string> report{"--fourbar",       "--example", "--unit", "--branch",
+                                            "--coupler-point", "--at",      "--step", "--paper",
+                                            "--rates",         "--angles",  "-o",     "--output"};
   static const std::set<std::string> polygon{"--fourbar", "--example", "--unit",  "--branch", "--at",
                                              "--rpm",     "--omega",   "--alpha", "--json"};
   static const std::set<std::string> inversions{"--fourbar", "--example", "--unit", "--branch", "--json"};
@@ -197,6 +198,8 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
     inv.paper = value;
   } else if (option == "--rates") {
     inv.rates = value;
+  } else if (option == "--angles") {
+    inv.angles = value;
   } else if (option == "--map" || option == "--offset" || option == "--tolerance") {
     return applyCompareOption(inv, option, value);
   } else if (option == "--svg") {

@@ -94,8 +94,9 @@ struct Invocation {
   // dxf: the drawing's sizes (length unit; positive, finite), empty for the defaults.
   std::optional<double> holeDiameter;
   std::optional<double> plateWidth;
-  std::optional<std::string> paper;  ///< report --paper: a4 or letter (checked by the command)
-  std::optional<std::string> rates;  ///< report --rates: rad or deg (checked by the command)
+  std::optional<std::string> paper;   ///< report --paper: a4 or letter (checked by the command)
+  std::optional<std::string> rates;   ///< report --rates: rad or deg (checked by the command)
+  std::optional<std::string> angles;  ///< report --angles: deg or rad (checked by the command)
   // compare: another tool's table (the bare argument after the document, or the only one).
   std::optional<std::string> compareTable;
   std::optional<std::string> compareMap;  ///< --map text (kinematics/compare/column_mapping.h)

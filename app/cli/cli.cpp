@@ -144,10 +144,13 @@ constexpr const char* kReportOptions =
   --paper a4|letter   paper size (default a4)
   --rates rad|deg     ω and α in rad/s and rad/s² (default, as the thesis and analyze) or
                       in deg/s and deg/s² (as SolidWorks Motion)
+  --angles deg|rad    link and transmission angles in degrees (default) or radians; the
+                      input (the table's first column) stays in degrees
 Output: a PDF (vector drawing, selectable text, "page i of N"): page 1 the title, the
   linkage at --at with its link lengths and ground pivots, the Grashof class and mobility
-  (as classify); then the table of link angles (deg), ω and α (--rates), the same
-  numbers as analyze's CSV at 4 decimals (ω, α times 180/π with --rates deg); the extremes refined between the grid's samples
+  (as classify); then the table of link angles (--angles), ω and α (--rates), the same
+  numbers as analyze's CSV at 4 decimals (ω, α times 180/π with --rates deg, angles
+  times π/180 with --angles rad); the extremes refined between the grid's samples
   (as extremes); the joint forces and driving torque when the linkage has masses (as
   analyze --forces); the plots of θ, ω, α (and slider x, v, a) against the input.
 )";

@@ -93,10 +93,12 @@ ExitCode runReport(const Invocation& inv, std::ostream& out, std::ostream& err) 
   const auto paper = k::report::paperFromName(inv.paper.value_or("a4"));
   if (!paper)
     return fail({k::ErrorCode::InvalidValue, "--paper", "--paper must be a4 or letter (got '" + *inv.paper + "')"});
-  const std::string rates = inv.rates.value_or("rad");
+  const std::string rates = inv.rates.value_or("rad"), angles = inv.angles.value_or("deg");
   if (rates != "rad" && rates != "deg")
     return fail({k::ErrorCode::InvalidValue, "--rates",
                  "--rates must be rad (rad/s, rad/s²) or deg (deg/s, deg/s²) (got '" + rates + "')"});
+  if (angles != "deg" && angles != "rad")
+    return fail({k::ErrorCode::InvalidValue, "--angles", "--angles must be deg or rad (got '" + angles + "')"});
   const auto resolved = resolveMechanism(inv);
   if (!resolved) return fail(resolved.error());
   const GridDefaults& d = resolved->defaults;
@@ -116,7 +118,8 @@ ExitCode runReport(const Invocation& inv, std::ostream& out, std::ostream& err) 
   // On a time base --at is a time (s), as --step is.
   request.drawAt = d.time ? (inv.atDeg.empty() ? d.time->fromTime : inv.atDeg.front())
                           : d.toInput(inv.atDeg.empty() ? d.fromDeg : inv.atDeg.front());
-  request.rates = rates == "deg" ? k::report::RateUnit::Degrees : k::report::RateUnit::Radians;
+  request.units.rates = rates == "deg" ? k::report::RateUnit::Degrees : k::report::RateUnit::Radians;
+  request.units.angles = angles == "rad" ? k::report::AngleUnit::Radians : k::report::AngleUnit::Degrees;
   const auto content = k::report::buildReport(resolved->mechanism, resolved->dynamics, request);
   if (!content)
     return fail(content.error(), content.error().field == "--at" ? ExitCode::NotAssemblable : ExitCode::BadInput);

@@ -23,28 +23,28 @@ using io::SweepColumn;
 constexpr std::size_t kPlotSamples = 721;
 
 // A rate is "toggle" where the linkage has none, as analyze's text table writes it.
-std::string cellText(const SweepColumn& c, const SweepResult& r, std::size_t j, RateUnit rates,
+std::string cellText(const SweepColumn& c, const SweepResult& r, std::size_t j, const ReportUnits& units,
                      std::optional<double>& value) {
   if (c.isRate() && !r.ok(j)) return "toggle";
-  value = c.value(r, j) * rateScale(c, rates);
+  value = c.value(r, j) * unitScale(c, units);
   return formatFixed(*value, kTableDecimals);
 }
 
 ReportTable sweepTable(const Mechanism& m, const SweepResult& r, const std::vector<SweepColumn>& columns,
-                       RateUnit rates) {
+                       const ReportUnits& units) {
   ReportTable table;
-  for (const SweepColumn& c : columns) table.columns.push_back(columnHeading(m, c, rates));
+  for (const SweepColumn& c : columns) table.columns.push_back(columnHeading(m, c, units));
   for (std::size_t j = 0; j < r.size(); ++j) {
     if (!r.assembled(j)) continue;
     std::vector<std::string>& cells = table.cells.emplace_back();
     std::vector<std::optional<double>>& values = table.values.emplace_back();
-    for (const SweepColumn& c : columns) cells.push_back(cellText(c, r, j, rates, values.emplace_back()));
+    for (const SweepColumn& c : columns) cells.push_back(cellText(c, r, j, units, values.emplace_back()));
   }
   return table;
 }
 
 ReportTable extremesTable(const Mechanism& m, const SweepSpec& spec, const SweepResult& r,
-                          const std::vector<SweepColumn>& columns, RateUnit rates) {
+                          const std::vector<SweepColumn>& columns, const ReportUnits& units) {
   const bool timeBase = spec.time.has_value();
   const std::string where = timeBase ? "at time" : "at " + inputName(m);
   const std::string whereUnit = timeBase ? "s" : inputUnit(m) == "°" ? "deg" : inputUnit(m);
@@ -58,12 +58,12 @@ ReportTable extremesTable(const Mechanism& m, const SweepSpec& spec, const Sweep
     if (!e) continue;
     const auto at = [&](const Extremum& x) { return timeBase ? x.time : inputDisplayValue(m, x.inputAngle); };
     const double minAt = at(e->minimum), maxAt = at(e->maximum);
-    const double scale = rateScale(c, rates);
+    const double scale = unitScale(c, units);
     const double lo = e->minimum.value * scale, hi = e->maximum.value * scale;
     // As `extremes` prints them: nine significant digits, the input to four decimals, a time
     // to six.
     const int decimals = timeBase ? 6 : 4;
-    table.cells.push_back({columnName(c, rates), io::formatShort(lo, 9), formatFixed(minAt, decimals),
+    table.cells.push_back({columnName(c, units), io::formatShort(lo, 9), formatFixed(minAt, decimals),
                            io::formatShort(hi, 9), formatFixed(maxAt, decimals)});
     table.values.push_back({std::nullopt, lo, minAt, hi, maxAt});
   }
@@ -71,9 +71,9 @@ ReportTable extremesTable(const Mechanism& m, const SweepSpec& spec, const Sweep
 }
 
 // The curve of `column` over the fine sweep, broken where it has no value.
-PlotCurve curveOf(const Mechanism& m, const SweepResult& r, const SweepColumn& c, RateUnit rates) {
-  PlotCurve curve{columnHeading(m, c, rates).heading, {}};
-  const double scale = rateScale(c, rates);
+PlotCurve curveOf(const Mechanism& m, const SweepResult& r, const SweepColumn& c, const ReportUnits& units) {
+  PlotCurve curve{columnHeading(m, c, units).heading, {}};
+  const double scale = unitScale(c, units);
   bool open = false;
   for (std::size_t j = 0; j < r.size(); ++j) {
     const bool valid = c.isRate() ? r.ok(j) : r.assembled(j);
@@ -88,15 +88,15 @@ PlotCurve curveOf(const Mechanism& m, const SweepResult& r, const SweepColumn& c
 }
 
 std::vector<ReportPlot> plotsOf(const Mechanism& m, const SweepResult& r, const std::vector<SweepColumn>& columns,
-                                RateUnit rates) {
+                                const ReportUnits& units) {
   const std::string unit = inputUnit(m) == "°" ? "deg" : inputUnit(m);
   const std::string xTitle = r.time.empty() ? inputName(m) + " (" + unit + ")" : "time (s)";
   std::vector<ReportPlot> plots;
-  for (const PlotKind& kind : plotKinds(m, rates)) {
+  for (const PlotKind& kind : plotKinds(m, units)) {
     ReportPlot plot{kind.title, xTitle, kind.unit, {}};
     for (const SweepColumn& c : columns)
       if (std::find(kind.quantities.begin(), kind.quantities.end(), c.quantity) != kind.quantities.end())
-        plot.curves.push_back(curveOf(m, r, c, rates));
+        plot.curves.push_back(curveOf(m, r, c, units));
     if (!plot.curves.empty()) plots.push_back(std::move(plot));
   }
   return plots;
@@ -123,7 +123,7 @@ Result<ReportTable> forcesTable(const Mechanism& m, const LinkageDynamics& dynam
     if (!r.assembled(j)) continue;
     std::vector<std::string>& cells = table.cells.emplace_back();
     std::vector<std::optional<double>>& values = table.values.emplace_back();
-    cells.push_back(cellText(input, r, j, RateUnit::Radians, values.emplace_back()));
+    cells.push_back(cellText(input, r, j, ReportUnits{}, values.emplace_back()));
     for (const io::ForceColumn& c : columns) {
       if (!forces->ok(j)) {
         cells.push_back(r.ok(j) ? "singular" : "toggle");
@@ -202,15 +202,15 @@ Result<ReportContent> buildReport(const Mechanism& m, const LinkageDynamics& dyn
   if (!plotted) return plotted.error();
   report.analysis = analysisLines(m, *plotted);
   const std::vector<SweepColumn> columns = reportColumns(m, *table);
-  report.table = sweepTable(m, *table, columns, request.rates);
-  report.tableCaption = tSpec.time
-                            ? timeCaption(m, tSpec, "every " + io::formatShort(request.tableStep) + " s")
-                            : gridCaption(m, tSpec, "every " + inputText(m, request.tableStep, false), request.rates);
-  report.extremes = extremesTable(m, request.grid, *fine, columns, request.rates);
+  report.table = sweepTable(m, *table, columns, request.units);
+  report.tableCaption =
+      tSpec.time ? timeCaption(m, tSpec, "every " + io::formatShort(request.tableStep) + " s")
+                 : gridCaption(m, tSpec, "every " + inputText(m, request.tableStep, false), request.units.rates);
+  report.extremes = extremesTable(m, request.grid, *fine, columns, request.units);
   const std::string refined = "refined between " + std::to_string(request.grid.samples) + " samples";
-  report.extremesCaption =
-      request.grid.time ? timeCaption(m, request.grid, refined) : gridCaption(m, request.grid, refined, request.rates);
-  report.plots = plotsOf(m, *plotted, columns, request.rates);
+  report.extremesCaption = request.grid.time ? timeCaption(m, request.grid, refined)
+                                             : gridCaption(m, request.grid, refined, request.units.rates);
+  report.plots = plotsOf(m, *plotted, columns, request.units);
   if (!dynamics.empty()) {
     auto forces = forcesTable(m, dynamics, *table, columns.front());
     if (!forces) return forces.error();

@@ -34,6 +34,16 @@ enum class RateUnit {
   Degrees,  ///< deg/s, deg/s²: SolidWorks Motion's, and the designer's plots in degrees
 };
 
+/// The unit of the link and transmission angles (the input, the table's x, stays in degrees).
+enum class AngleUnit { Degrees, Radians };
+
+/// The units the link angles, ω and α are tabulated and plotted in.
+struct ReportUnits {
+  AngleUnit angles = AngleUnit::Degrees;  ///< deg (the thesis's, analyze's) or rad
+  RateUnit rates = RateUnit::Radians;     ///< rad/s, rad/s² (the thesis's) or deg/s, deg/s² (SolidWorks')
+  bool operator==(const ReportUnits&) const = default;
+};
+
 /// What to report on and how.
 struct ReportRequest {
   std::string title;     ///< the heading: the document's file name or the example's name
@@ -50,7 +60,7 @@ struct ReportRequest {
   /// The drawn pose's input, in the driver's coordinate; on a time base its time (s), within
   /// the time span.
   double drawAt = 0.0;
-  RateUnit rates = RateUnit::Radians;
+  ReportUnits units;
 };
 
 /// A column of a report table: its heading and its unit ("rocker θ", "deg").

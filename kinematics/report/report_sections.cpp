@@ -61,17 +61,18 @@ void fourBarLines(const DesignAnalysis& a, const std::string& u, std::vector<Inf
 
 }  // namespace
 
-TableColumn columnHeading(const Mechanism& m, const io::SweepColumn& c, RateUnit rates) {
+TableColumn columnHeading(const Mechanism& m, const io::SweepColumn& c, const ReportUnits& units) {
   const std::string& u = m.lengthUnit;
-  const std::string angular = rates == RateUnit::Degrees ? "deg" : "rad";
+  const std::string angular = units.rates == RateUnit::Degrees ? "deg" : "rad";
+  const std::string angle = units.angles == AngleUnit::Radians ? "rad" : "deg";
   switch (c.quantity) {
   case ColumnQuantity::Time: return {"time", "s"};
   case ColumnQuantity::InputAngle: return {inputName(m), "deg"};
   case ColumnQuantity::InputLength: return {inputName(m), u};
-  case ColumnQuantity::LinkAngle: return {linkName(m, c.index) + " θ", "deg"};
+  case ColumnQuantity::LinkAngle: return {linkName(m, c.index) + " θ", angle};
   case ColumnQuantity::LinkOmega: return {linkName(m, c.index) + " ω", angular + "/s"};
   case ColumnQuantity::LinkAlpha: return {linkName(m, c.index) + " α", angular + "/s²"};
-  case ColumnQuantity::TransmissionAngle: return {"μ at " + pointName(m, c.index), "deg"};
+  case ColumnQuantity::TransmissionAngle: return {"μ at " + pointName(m, c.index), angle};
   case ColumnQuantity::PointX: return {pointName(m, c.index) + " x", u};
   case ColumnQuantity::PointY: return {pointName(m, c.index) + " y", u};
   case ColumnQuantity::PointVx: return {pointName(m, c.index) + " vx", u + "/s"};
@@ -82,16 +83,21 @@ TableColumn columnHeading(const Mechanism& m, const io::SweepColumn& c, RateUnit
   return {c.name, ""};
 }
 
-double rateScale(const io::SweepColumn& c, RateUnit rates) {
+double unitScale(const io::SweepColumn& c, const ReportUnits& units) {
   const bool linkRate = c.quantity == ColumnQuantity::LinkOmega || c.quantity == ColumnQuantity::LinkAlpha;
-  return linkRate && rates == RateUnit::Degrees ? radToDeg(1.0) : 1.0;
+  const bool angle = c.quantity == ColumnQuantity::LinkAngle || c.quantity == ColumnQuantity::TransmissionAngle;
+  if (linkRate && units.rates == RateUnit::Degrees) return radToDeg(1.0);
+  if (angle && units.angles == AngleUnit::Radians) return degToRad(1.0);
+  return 1.0;
 }
 
-std::string columnName(const io::SweepColumn& c, RateUnit rates) {
-  // analyze's names end in _rad_s or _rad_s2 for a link's ω and α.
-  if (rateScale(c, rates) == 1.0) return c.name;
-  const std::size_t at = c.name.rfind("_rad_s");
-  return at == std::string::npos ? c.name : c.name.substr(0, at) + "_deg_s" + c.name.substr(at + 6);
+std::string columnName(const io::SweepColumn& c, const ReportUnits& units) {
+  if (unitScale(c, units) == 1.0) return c.name;
+  // analyze's names end in _rad_s or _rad_s2 for a link's ω and α, in _deg for an angle.
+  if (const std::size_t at = c.name.rfind("_rad_s"); at != std::string::npos)
+    return c.name.substr(0, at) + "_deg_s" + c.name.substr(at + 6);
+  if (c.name.ends_with("_deg")) return c.name.substr(0, c.name.size() - 4) + "_rad";
+  return c.name;
 }
 
 std::vector<io::SweepColumn> reportColumns(const Mechanism& m, const SweepResult& r) {
@@ -112,13 +118,14 @@ std::vector<io::SweepColumn> reportColumns(const Mechanism& m, const SweepResult
   return columns;
 }
 
-std::vector<PlotKind> plotKinds(const Mechanism& m, RateUnit rates) {
+std::vector<PlotKind> plotKinds(const Mechanism& m, const ReportUnits& units) {
   const std::string& u = m.lengthUnit;
-  const std::string angular = rates == RateUnit::Degrees ? "deg" : "rad";
-  return {{"Link angles θ", "deg", {ColumnQuantity::LinkAngle}},
+  const std::string angular = units.rates == RateUnit::Degrees ? "deg" : "rad";
+  const std::string angle = units.angles == AngleUnit::Radians ? "rad" : "deg";
+  return {{"Link angles θ", angle, {ColumnQuantity::LinkAngle}},
           {"Angular velocities ω", angular + "/s", {ColumnQuantity::LinkOmega}},
           {"Angular accelerations α", angular + "/s²", {ColumnQuantity::LinkAlpha}},
-          {"Transmission angle μ", "deg", {ColumnQuantity::TransmissionAngle}},
+          {"Transmission angle μ", angle, {ColumnQuantity::TransmissionAngle}},
           {"Slider position", u, {ColumnQuantity::PointX, ColumnQuantity::PointY}},
           {"Slider velocity", u + "/s", {ColumnQuantity::PointVx, ColumnQuantity::PointVy}},
           {"Slider acceleration", u + "/s²", {ColumnQuantity::PointAx, ColumnQuantity::PointAy}}};

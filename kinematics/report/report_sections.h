@@ -12,17 +12,18 @@
 
 namespace linkwright::kinematics::report {
 
-/// The heading of a sweep column: "rocker θ" in "deg", "C vx" in "mm/s", "rocker ω" in "rad/s"
-/// or "deg/s" as `rates` says.
-TableColumn columnHeading(const Mechanism& mechanism, const io::SweepColumn& column,
-                          RateUnit rates = RateUnit::Radians);
+/// The heading of a sweep column: "rocker θ" in "deg" or "rad", "C vx" in "mm/s", "rocker ω" in
+/// "rad/s" or "deg/s", as `units` says.
+TableColumn columnHeading(const Mechanism& mechanism, const io::SweepColumn& column, const ReportUnits& units = {});
 
-/// What a value of `column` (in the sweep column's unit) is multiplied by to be in `rates`:
-/// 180/π for a link's ω and α in degrees, else 1.
-double rateScale(const io::SweepColumn& column, RateUnit rates);
+/// What a value of `column` (in the sweep column's unit) is multiplied by to be in `units`:
+/// 180/π for a link's ω and α in degrees, π/180 for a link or transmission angle in radians,
+/// else 1.
+double unitScale(const io::SweepColumn& column, const ReportUnits& units);
 
-/// The sweep column's name with its rate unit as `rates` says: "rocker_omega_deg_s".
-std::string columnName(const io::SweepColumn& column, RateUnit rates);
+/// The sweep column's name with its unit as `units` says: "rocker_omega_deg_s",
+/// "rocker_angle_rad".
+std::string columnName(const io::SweepColumn& column, const ReportUnits& units);
 
 /// The columns a report tabulates, in `analyze`'s CSV order: the time on a time base, the
 /// input, each moving link's angle, ω and α but the driven crank's angle (the input) and, on
@@ -37,9 +38,9 @@ struct PlotKind {
   std::vector<io::ColumnQuantity> quantities;
 };
 
-/// The report's plots in order: angles, ω, α (in `rates`), transmission angle, slider
+/// The report's plots in order: angles, ω, α (in `units`), transmission angle, slider
 /// position, velocity and acceleration.
-std::vector<PlotKind> plotKinds(const Mechanism& mechanism, RateUnit rates = RateUnit::Radians);
+std::vector<PlotKind> plotKinds(const Mechanism& mechanism, const ReportUnits& units = {});
 
 /// An input in the driver's display unit: "30°", "12.5 mm"; `named` prefixes the input's name.
 std::string inputText(const Mechanism& mechanism, double input, bool named = true);

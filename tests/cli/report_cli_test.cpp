@@ -165,7 +165,7 @@ TEST_CASE("report --rates deg gives ω and α in deg/s and deg/s², the table, e
   request.grid = {0.0, 2.0 * k::kPi, 13, e.omega, e.alpha};
   request.tableStep = k::degToRad(30.0);
   const auto radians = k::report::buildReport(e.mechanism, {}, request);
-  request.rates = k::report::RateUnit::Degrees;
+  request.units.rates = k::report::RateUnit::Degrees;
   const auto degrees = k::report::buildReport(e.mechanism, {}, request);
   REQUIRE(radians.ok());
   REQUIRE(degrees.ok());
@@ -183,6 +183,20 @@ TEST_CASE("report --rates deg gives ω and α in deg/s and deg/s², the table, e
     rates += rate;
   }
   CHECK(rates == 4);  // ω3, α3, ω4, α4
+  // --angles rad: the link and transmission angles in radians, the input still in degrees.
+  request.units = {k::report::AngleUnit::Radians, k::report::RateUnit::Radians};
+  const auto inRadians = k::report::buildReport(e.mechanism, {}, request);
+  REQUIRE(inRadians.ok());
+  CHECK(inRadians->table.columns[0].unit == "deg");
+  CHECK(inRadians->table.columns[4].unit == "rad");
+  CHECK(inRadians->table.columns[5].unit == "rad/s");
+  for (std::size_t j = 0; j < radians->table.values.size(); ++j) {
+    CHECK(*inRadians->table.values[j][0] == *radians->table.values[j][0]);
+    CHECK(*inRadians->table.values[j][4] == Approx(k::degToRad(*radians->table.values[j][4])).epsilon(1e-15));
+    CHECK(*inRadians->table.values[j][5] == *radians->table.values[j][5]);
+  }
+  CHECK(inRadians->extremes.cells[0][0].ends_with("_angle_rad"));
+  CHECK(inRadians->plots[0].yTitle == "rad");
   REQUIRE(degrees->plots.size() == radians->plots.size());
   CHECK(degrees->plots[1].yTitle == "deg/s");
   CHECK(degrees->plots[1].curves[0].segments[0][7].y() ==
@@ -316,6 +330,7 @@ TEST_CASE("report refuses bad options, naming them, and writes nothing", "[cli][
       {{"--step", "nan", "-o", file}, 2, "--step must be more than 0 and at most 360 degrees (got nan)"},
       {{"--paper", "foo", "-o", file}, 2, "--paper must be a4 or letter (got 'foo')"},
       {{"--rates", "rpm", "-o", file}, 2, "--rates must be rad (rad/s, rad/s²) or deg (deg/s, deg/s²) (got 'rpm')"},
+      {{"--angles", "grad", "-o", file}, 2, "--angles must be deg or rad (got 'grad')"},
       {{"--at", "10,20", "-o", file}, 2, "--at takes one value"},
       {{}, 2, "report needs -o FILE.pdf"},
       {{"-o", (dir / "missing" / "r.pdf").string()}, 1, "cannot write " + (dir / "missing" / "r.pdf").string()},

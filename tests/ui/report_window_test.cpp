@@ -2,6 +2,7 @@
 // calls), read back with pdftotext; a step the core refuses writes nothing and says why.
 
 #include "ui/document/mechanism_document.h"
+#include "ui/export/report_options_dialog.h"
 #include "ui/main_window.h"
 #include "ui/message_banner.h"
 
@@ -10,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <QComboBox>
 #include <QFile>
 #include <QProcess>
 #include <QTemporaryDir>
@@ -39,12 +41,12 @@ QString pageText(const QString& pdf, int page) {
   return lines.join(QLatin1Char('\n'));
 }
 
-// The designer's report of `example` drawn at `at` every `step`, and the CLI's with `options`,
-// written into `dir` as gui.pdf and cli.pdf.
+// The designer's report of `example` drawn at `at` every `step` in `units`, and the CLI's with
+// `options`, written into `dir` as gui.pdf and cli.pdf.
 void writeBoth(ui::MainWindow& window, const QTemporaryDir& dir, const std::string& example, double at, double step,
-               std::vector<std::string> options) {
+               std::vector<std::string> options, const kinematics::report::ReportUnits& units = {}) {
   window.document()->reset(*kinematics::designForExample(example));
-  REQUIRE(window.exportReport(dir.filePath("gui.pdf"), at, step, kinematics::report::Paper::A4));
+  REQUIRE(window.exportReport(dir.filePath("gui.pdf"), at, step, kinematics::report::Paper::A4, units));
   std::vector<std::string> args{"report", "--example", example, "-o", dir.filePath("cli.pdf").toStdString()};
   args.insert(args.end(), options.begin(), options.end());
   std::ostringstream out, err;
@@ -79,4 +81,23 @@ TEST_CASE("Report ▸ PDF of a document on a time base tabulates in seconds, as 
   CHECK(table.contains(QStringLiteral("every 0.5 s")));
   CHECK(table.contains(QStringLiteral("2.0000")));
   CHECK(table == tableOf(pageText(dir.filePath("cli.pdf"), 2)));
+}
+
+TEST_CASE("Report ▸ PDF offers the three unit conventions, and radians reach the table", "[ui][window][report]") {
+  namespace kr = kinematics::report;
+  ui::ReportOptionsDialog dialog(0.0, 360.0, QStringLiteral("°"));
+  REQUIRE(dialog.unitsBox()->count() == 3);
+  for (const kr::ReportUnits units : {kr::ReportUnits{kr::AngleUnit::Degrees, kr::RateUnit::Radians},
+                                      kr::ReportUnits{kr::AngleUnit::Degrees, kr::RateUnit::Degrees},
+                                      kr::ReportUnits{kr::AngleUnit::Radians, kr::RateUnit::Radians}}) {
+    dialog.setUnits(units);
+    CHECK(dialog.units() == units);
+  }
+  ui::MainWindow window;
+  QTemporaryDir dir;
+  writeBoth(window, dir, "thesis-crank-rocker", 0.0, 30.0, {"--angles", "rad"},
+            {kr::AngleUnit::Radians, kr::RateUnit::Radians});
+  const QString table = pageText(dir.filePath("gui.pdf"), 2);
+  CHECK(table.contains(QStringLiteral("(rad)")));
+  CHECK(table == pageText(dir.filePath("cli.pdf"), 2));
 }

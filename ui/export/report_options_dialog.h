@@ -1,7 +1,7 @@
 #pragma once
 // Report ▸ PDF…: asks where the linkage is drawn (the input, pre-filled with where it is now),
 // the table's step (default 30°, as the thesis; more than 0 and at most a turn, or the input's
-// range for a linear driver), the unit of ω and α and the paper. The report itself is the core's
+// range for a linear driver), the units of the angles, ω and α and the paper. The report itself is the core's
 // (kinematics/report/), the one `linkwright-cli report` writes.
 
 #include "kinematics/report/report_pdf.h"
@@ -23,19 +23,19 @@ public:
   double at() const;    ///< the drawn input, display unit
   double step() const;  ///< the table's step, display unit
   kinematics::report::Paper paper() const;
-  kinematics::report::RateUnit rates() const;
-  void setRates(kinematics::report::RateUnit rates);
+  kinematics::report::ReportUnits units() const;
+  void setUnits(const kinematics::report::ReportUnits& units);
 
   QDoubleSpinBox* atBox() const { return m_at; }
   QDoubleSpinBox* stepBox() const { return m_step; }
   QComboBox* paperBox() const { return m_paper; }
-  QComboBox* ratesBox() const { return m_rates; }
+  QComboBox* unitsBox() const { return m_units; }
 
 private:
   QDoubleSpinBox* m_at;
   QDoubleSpinBox* m_step;
   QComboBox* m_paper;
-  QComboBox* m_rates;
+  QComboBox* m_units;
 };
 
 }  // namespace linkwright::ui
