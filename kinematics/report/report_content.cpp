@@ -155,6 +155,15 @@ SweepSpec tableSpec(const SweepSpec& grid, double step) {
 std::optional<Error> checkRequest(const Mechanism& m, const ReportRequest& request) {
   if (auto e = checkSweepSpec(request.grid, inputKind(m))) return e;
   const double span = spanOf(request.grid);
+  if (request.tableStep > 0.0 && std::floor(span / request.tableStep + 1e-9) + 1.0 > kMaxTableRows) {
+    const bool time = request.grid.time.has_value();
+    const auto shown = [&](double v) {
+      return time ? io::formatShort(v) + " s" : io::formatShort(inputDisplayValue(m, v) - inputDisplayValue(m, 0.0));
+    };
+    return Error{ErrorCode::InvalidValue, "tableStep",
+                 "the table step " + shown(request.tableStep) + " gives more than " + io::formatShort(kMaxTableRows) +
+                     " rows; a report's step must be at least " + shown(span / (kMaxTableRows - 1.0))};
+  }
   if (const auto& time = request.grid.time) {
     if (!(std::isfinite(request.tableStep) && request.tableStep > 0.0 && request.tableStep <= std::max(span, 1e-300)))
       return Error{ErrorCode::InvalidValue, "tableStep",

@@ -27,6 +27,9 @@ namespace linkwright::kinematics::report {
 
 /// Digits after the point in the report's tables (as `analyze --format table`).
 inline constexpr int kTableDecimals = 4;
+/// The most rows a report's table may have (about 200 pages): a smaller step is refused, not
+/// printed over thousands of pages.
+inline constexpr double kMaxTableRows = 10000;
 
 /// The unit of the link ω and α columns and plots.
 enum class RateUnit {

@@ -331,6 +331,8 @@ TEST_CASE("report refuses bad options, naming them, and writes nothing", "[cli][
       {{"--paper", "foo", "-o", file}, 2, "--paper must be a4 or letter (got 'foo')"},
       {{"--rates", "rpm", "-o", file}, 2, "--rates must be rad (rad/s, rad/s²) or deg (deg/s, deg/s²) (got 'rpm')"},
       {{"--angles", "grad", "-o", file}, 2, "--angles must be deg or rad (got 'grad')"},
+      {{"--step", "1e-9", "-o", file}, 2, "the table step 1e-09 gives more than 10000 rows"},
+      {{"--step", "0.001", "-o", file}, 2, "a report's step must be at least 0.0360036"},
       {{"--at", "10,20", "-o", file}, 2, "--at takes one value"},
       {{}, 2, "report needs -o FILE.pdf"},
       {{"-o", (dir / "missing" / "r.pdf").string()}, 1, "cannot write " + (dir / "missing" / "r.pdf").string()},
