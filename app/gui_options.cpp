@@ -73,6 +73,10 @@ std::string guiUsage() {
          "  --frames N          frames per cycle of the animation, 2 to 720 (default 72)\n"
          "  --frame-delay MS    time each frame shows, ms, 20 to 5000, rounded to 10 ms\n"
          "                      (default 40: 25 frames per second)\n"
+         "  --plots KEY,...     plot exactly these quantities, named by the keys of the\n"
+         "                      plots' checkboxes: rocker_angle, transmission_angle,\n"
+         "                      rocker_omega, C_x, velocity_ratio, mechanical_advantage…\n"
+         "                      (a key the linkage does not have is refused, listing its keys)\n"
          "  --presentation      large fonts and lines, full screen\n"
          "  --forces            open on the Forces tab, with force arrows on the canvas\n"
          "  --centres           draw the instant centres, Kennedy's lines and the centrodes\n"
@@ -103,8 +107,9 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
   const QCommandLineOption frameDelay("frame-delay", {}, "MS");
   const QCommandLineOption compare("compare", {}, "TABLE");
   const QCommandLineOption compareMap("compare-map", {}, "MAP");
+  const QCommandLineOption plots("plots", {}, "KEYS");
   parser.addOptions({help, version, presentation, forces, centres, example, screenshot, crankAngle, animation, frames,
-                     frameDelay, compare, compareMap});
+                     frameDelay, compare, compareMap, plots});
   parser.addPositionalArgument("file", {});
   QStringList arguments{"linkwright"};
   for (const std::string& a : args) arguments << QString::fromStdString(a);
@@ -112,7 +117,8 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
     error = parser.errorText().toStdString() + " (see linkwright --help)";
     return std::nullopt;
   }
-  for (const auto& option : {example, screenshot, crankAngle, animation, frames, frameDelay, compare, compareMap})
+  for (const auto& option :
+       {example, screenshot, crankAngle, animation, frames, frameDelay, compare, compareMap, plots})
     if (parser.values(option).size() > 1) {
       error = "--" + option.names().front().toStdString() + " is given more than once";
       return std::nullopt;
@@ -139,6 +145,13 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
       return std::nullopt;
     }
     o.compareMap = parser.value(compareMap).toStdString();
+  }
+  if (parser.isSet(plots)) {
+    o.plots = parser.value(plots).toStdString();
+    if (o.plots->empty()) {
+      error = "--plots: give at least one key (see --help)";
+      return std::nullopt;
+    }
   }
   if (parser.isSet(screenshot)) o.screenshot = parser.value(screenshot).toStdString();
   if (parser.isSet(crankAngle)) {

@@ -1,7 +1,7 @@
 #pragma once
 // The GUI's command line: linkwright [FILE] [--example NAME] [--screenshot FILE.png]
 // [--animation FILE.gif [--frames N] [--frame-delay MS]] [--presentation] [--forces] [--centres]
-// [--crank-angle DEG] [--compare TABLE.csv [--compare-map MAP]] [--help] [--version].
+// [--crank-angle DEG] [--plots KEY,…] [--compare TABLE.csv [--compare-map MAP]] [--help] [--version].
 
 #include <optional>
 #include <string>
@@ -19,6 +19,7 @@ struct GuiOptions {
   int frameDelayMs = 40;                  ///< --frame-delay: ms per frame, 20 to 5000
   std::optional<std::string> compare;     ///< a table from another tool: open File ▸ Compare… on it
   std::optional<std::string> compareMap;  ///< its column mapping (linkwright-cli compare's --map), compared at once
+  std::optional<std::string> plots;       ///< --plots: the keys of the quantities to plot, comma-separated
   bool presentation = false;
   bool forces = false;   ///< start on the Forces tab with force arrows shown
   bool centres = false;  ///< draw the instant centres and centrodes

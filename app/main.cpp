@@ -8,6 +8,7 @@
 #include "ui/export/cycle_animation.h"
 #include "ui/main_window.h"
 #include "ui/message_banner.h"
+#include "ui/plots/plot_panel.h"
 
 #include "kinematics/design/design.h"
 #include "kinematics/model/units.h"
@@ -73,6 +74,23 @@ linkwright::ui::CompareDialog* openComparison(linkwright::ui::MainWindow& window
   return dialog;
 }
 
+// Ticks exactly the quantities named in `keys`, or says which key the linkage lacks.
+bool selectPlots(linkwright::ui::MainWindow& window, const std::string& keys) {
+  linkwright::ui::PlotPanel* plots = window.plots();
+  QString unknown;
+  const auto selection =
+      linkwright::ui::selectionOfKeys(plots->curves(), QString::fromStdString(keys).split(QLatin1Char(',')), unknown);
+  if (!selection) {
+    QStringList known;
+    for (const auto& curve : plots->curves()) known << curve.key;
+    std::cerr << "linkwright: --plots: this linkage has no quantity '" << unknown.toStdString()
+              << "' (it has: " << known.join(QStringLiteral(", ")).toStdString() << ")\n";
+    return false;
+  }
+  plots->setSelection(*selection);
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -108,6 +126,7 @@ int main(int argc, char** argv) {
   if (options->presentation) window.setPresentationMode(true);
   if (options->forces) window.showForces();
   if (options->centres) window.setShowInstantCentres(true);
+  if (options->plots && !selectPlots(window, *options->plots)) return 2;
   if (options->animation) return writeAnimation(window, *options);
   // With --screenshot, the designer is rendered with the table's rows on its plots.
   if (options->compare && openComparison(window, *options) == nullptr && options->screenshot) return 2;

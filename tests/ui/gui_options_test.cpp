@@ -50,6 +50,9 @@ TEST_CASE("the designer's options are read in both value forms", "[ui][options]"
   CHECK(animation.options->frameDelayMs == 60);
   CHECK(parse({"--animation", "a.gif"}).options->frames == 72);
 
+  CHECK(parse({"--plots=rocker_angle,velocity_ratio"}).options->plots == "rocker_angle,velocity_ratio");
+  CHECK_FALSE(parse({}).options->plots);
+
   CHECK(parse({"-h"}).options->help);
   CHECK(parse({"--version"}).options->version);
   CHECK_FALSE(parse({}).options->help);
@@ -71,6 +74,7 @@ TEST_CASE("mistakes on the designer's command line name the option", "[ui][optio
        "--frame-delay: must be a whole number from 20 to 5000 (got '6000')"},
       {{"--frame-delay", "40"}, "--frames and --frame-delay need --animation FILE"},
       {{"--animation", "a.gif", "--screenshot", "a.png"}, "give --screenshot or --animation, not both"},
+      {{"--plots="}, "--plots: give at least one key"},
   }));
   CAPTURE(args);
   const auto p = parse(args);

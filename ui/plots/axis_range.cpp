@@ -92,7 +92,7 @@ std::optional<double> wrapIntoRange(double angleDeg, double fromDeg, double toDe
   return std::nullopt;
 }
 
-std::pair<double, double> robustSpan(std::vector<double>& values) {
+std::pair<double, double> robustSpan(std::vector<double>& values, double tail) {
   if (values.empty()) return {0.0, 0.0};
   // Two selections and a scan, not a sort: this runs on every frame of a drag.
   const auto at = [&](double q) {
@@ -100,8 +100,8 @@ std::pair<double, double> robustSpan(std::vector<double>& values) {
     std::nth_element(values.begin(), nth, values.end());
     return *nth;
   };
-  const double lo = at(0.05);
-  const double hi = at(0.95);
+  const double lo = at(tail);
+  const double hi = at(1.0 - tail);
   const auto [least, most] = std::minmax_element(values.begin(), values.end());
   const double margin = 0.5 * (hi - lo);
   return {std::max(*least, lo - margin), std::min(*most, hi + margin)};

@@ -40,8 +40,9 @@ bool keepsRange(const AxisRange& shown, double lo, double hi);
 
 /// The span of `values` worth showing: their full range, unless a few samples spike far out
 /// (rates next to a toggle position grow without bound), in which case the span of the bulk
-/// (5th to 95th percentile) widened by half its width on each side. Reorders `values`.
-std::pair<double, double> robustSpan(std::vector<double>& values);
+/// (by default the 5th to 95th percentile: `tail` left out at each end) widened by half its
+/// width on each side. Reorders `values`.
+std::pair<double, double> robustSpan(std::vector<double>& values, double tail = 0.05);
 
 /// The crank axis: exactly the grid [fromDeg, toDeg] in `unit`, ticks anchored at 0 every
 /// `step` (15°, 30°, 45°, 90°, ... or a nice step in rad), about 8 intervals at most.

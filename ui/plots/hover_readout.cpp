@@ -22,9 +22,10 @@ QString readoutText(const PlotCurve& curve, QPointF point, AngleUnit unit, const
   const QuantityKind kind = quantityKind(curve.quantity);
   // Degrees read best with the degree sign right after the number, as in "at crank 90.0°".
   const bool degreeSign = unit == AngleUnit::Degrees;
-  const QString value = kind == QuantityKind::Angle && degreeSign
-                            ? formatReadoutNumber(point.y()) + QStringLiteral("°")
-                            : formatReadoutNumber(point.y()) + QLatin1Char(' ') + quantityUnit(kind, unit, lengthUnit);
+  const QString valueUnit = quantityUnit(curve.quantity, unit, lengthUnit);  // none for a four-bar's ratios
+  const QString value = kind == QuantityKind::Angle && degreeSign ? formatReadoutNumber(point.y()) + QStringLiteral("°")
+                        : valueUnit.isEmpty()                     ? formatReadoutNumber(point.y())
+                                              : formatReadoutNumber(point.y()) + QLatin1Char(' ') + valueUnit;
   return HoverReadout::tr("%1 = %2 at %3").arg(curve.name, value, xReadoutText(point.x(), x, unit));
 }
 

@@ -10,6 +10,8 @@
 #include "ui/plots/quantity_chart_view.h"
 #include "ui/plots/quantity_selector.h"
 
+#include "kinematics/analysis/advantage_sweep.h"
+
 #include <QChart>
 #include <QGraphicsLayout>
 #include <QLabel>
@@ -21,9 +23,9 @@
 namespace linkwright::ui {
 namespace {
 
-constexpr std::array<QuantityKind, kQuantityKindCount> kKinds{QuantityKind::Angle,    QuantityKind::Omega,
-                                                              QuantityKind::Alpha,    QuantityKind::Position,
-                                                              QuantityKind::Velocity, QuantityKind::Acceleration};
+constexpr std::array<QuantityKind, kQuantityKindCount> kKinds{
+    QuantityKind::Angle,    QuantityKind::Omega,        QuantityKind::Alpha,         QuantityKind::Position,
+    QuantityKind::Velocity, QuantityKind::Acceleration, QuantityKind::VelocityRatio, QuantityKind::Advantage};
 
 QString titleOf(QuantityKind kind) {
   switch (kind) {
@@ -33,6 +35,8 @@ QString titleOf(QuantityKind kind) {
   case QuantityKind::Position: return PlotPanel::tr("Slider positions");
   case QuantityKind::Velocity: return PlotPanel::tr("Slider velocities");
   case QuantityKind::Acceleration: return PlotPanel::tr("Slider accelerations");
+  case QuantityKind::VelocityRatio: return PlotPanel::tr("Velocity ratio");
+  case QuantityKind::Advantage: return PlotPanel::tr("Mechanical advantage");
   }
   return {};
 }
@@ -76,6 +80,10 @@ PlotPanel::PlotPanel(MechanismDocument* document, QWidget* parent)
   layout->addWidget(m_readout);
   QuantityChartView* angles = chartView(QuantityKind::Angle);
   m_limits = std::make_unique<LimitMarkers>(angles->chart(), angles->xAxis(), angles->yAxis());
+  QuantityChartView* ratio = chartView(QuantityKind::VelocityRatio);
+  m_ratioLimits = std::make_unique<LimitMarkers>(ratio->chart(), ratio->xAxis(), ratio->yAxis());
+  QuantityChartView* advantage = chartView(QuantityKind::Advantage);
+  m_advantageLimits = std::make_unique<LimitMarkers>(advantage->chart(), advantage->xAxis(), advantage->yAxis());
 
   connect(m_selector, &QuantitySelector::selectionChanged, this, &PlotPanel::onSelectionChanged);
   connect(m_document, &MechanismDocument::changed, this, &PlotPanel::onDocumentChanged);
@@ -170,6 +178,7 @@ void PlotPanel::refreshCurves() {
   m_selector->setCurves(m_curves, selection);
   for (QuantityChartView* view : m_views) view->setCurves(m_curves);
   if (m_limits) m_limits->raise();  // last in the angle chart's legend, as "rocker limit" reads best
+  if (m_ratioLimits) m_ratioLimits->raise();
   m_readout->clearPoint();
 }
 
@@ -217,16 +226,31 @@ void PlotPanel::refreshData() {
                              : std::vector<OverlayCurve>{};
     m_overlayStale = false;
   }
+  // The ratios come from the instant centres of every sample: only while a ratio is shown.
+  std::optional<kinematics::AdvantageSeries> ratios;
+  if (shown.any(QuantityKind::VelocityRatio, m_curves) || shown.any(QuantityKind::Advantage, m_curves))
+    if (auto r = kinematics::advantageSeries(m_document->mechanism(), sweep)) ratios = std::move(*r);
   QList<QuantityChartView*> changed;  // their axes or legends: laid out again
   for (QuantityChartView* view : m_views) {
     const bool visible = shown.any(view->kind(), m_curves);
     const bool appears = visible == view->isHidden();
     view->setVisible(visible);
     view->setOverlay(m_overlay);
-    if (view->setData(sweep, shown, m_unit, x, lengthUnit) || appears) changed.append(view);
+    if (view->setData(sweep, shown, m_unit, x, lengthUnit, ratios ? &*ratios : nullptr) || appears)
+      changed.append(view);
   }
+  const QString note = placeLimitMarkers(shown, changed);
   QuantityChartView* angles = chartView(QuantityKind::Angle);
-  m_limits->setYSpan(angles->valueRange().min, angles->valueRange().max);
+  m_limitNote->setText(note);
+  m_limitNote->setVisible(!note.isEmpty() && !angles->isHidden());
+  refreshCursor();
+  if (!changed.isEmpty()) alignCharts(changed);  // axis labels or legends may have changed width
+  m_settleTimer.start();
+}
+
+QString PlotPanel::placeLimitMarkers(const QuantitySelection& shown, QList<QuantityChartView*>& changed) {
+  const kinematics::Design& design = m_document->design();
+  const kinematics::SweepResult& sweep = m_document->sweep();
   // Limit positions are a four-bar's (empty otherwise), on its rocker's curve; on a time base
   // wherever the law passes them, unless that is too often to read.
   const kinematics::LimitReport& limits = m_document->analysis().limits;
@@ -234,20 +258,26 @@ void PlotPanel::refreshData() {
   QString note;
   if (!design.time) {
     points = limitMarkerPoints(limits, sweep, design.fromDeg, design.toDeg, m_unit);
-  } else if (auto inTime = limitMarkerPointsInTime(limits, sweep, *design.time, x.source.axis, m_unit)) {
+  } else if (auto inTime = limitMarkerPointsInTime(limits, sweep, *design.time, m_x.source.axis, m_unit)) {
     points = *inTime;
   } else {
     note = tr("Rocker limit positions are not marked: the crank passes them more than %1 times in this time span.")
                .arg(kMostLimitMarkers);
   }
-  if (m_limits->setPositions(points, m_document->fourBar().has_value() && shown.contains(PlotQuantity::RockerAngle)) &&
-      !changed.contains(angles))
-    changed.append(angles);
-  m_limitNote->setText(note);
-  m_limitNote->setVisible(!note.isEmpty() && !angles->isHidden());
-  refreshCursor();
-  if (!changed.isEmpty()) alignCharts(changed);  // axis labels or legends may have changed width
-  m_settleTimer.start();
+  const bool fourBar = m_document->fourBar().has_value();
+  const auto place = [&](LimitMarkers& markers, QuantityKind kind, const QList<QPointF>& at, bool labelled) {
+    QuantityChartView* view = chartView(kind);
+    markers.setYSpan(view->valueRange().min, view->valueRange().max);
+    if (markers.setPositions(at, labelled) && !changed.contains(view)) changed.append(view);
+  };
+  place(*m_limits, QuantityKind::Angle, points, fourBar && shown.contains(PlotQuantity::RockerAngle));
+  // At a limit the rocker is at rest: the velocity ratio is zero (labelled on its curve) and
+  // the advantage infinite (the line its two branches run up against).
+  QList<QPointF> onZero = points;
+  for (QPointF& p : onZero) p.setY(0.0);
+  place(*m_ratioLimits, QuantityKind::VelocityRatio, onZero, fourBar);
+  place(*m_advantageLimits, QuantityKind::Advantage, points, false);
+  return note;
 }
 
 void PlotPanel::settleValueRanges() {
@@ -256,8 +286,13 @@ void PlotPanel::settleValueRanges() {
   for (QuantityChartView* view : m_views)
     if (view->settleValueRange()) changed.append(view);
   if (changed.isEmpty()) return;
-  const AxisRange& angles = chartView(QuantityKind::Angle)->valueRange();
-  m_limits->setYSpan(angles.min, angles.max);
+  const auto span = [this](LimitMarkers& markers, QuantityKind kind) {
+    const AxisRange& range = chartView(kind)->valueRange();
+    markers.setYSpan(range.min, range.max);
+  };
+  span(*m_limits, QuantityKind::Angle);
+  span(*m_ratioLimits, QuantityKind::VelocityRatio);
+  span(*m_advantageLimits, QuantityKind::Advantage);
   alignCharts(changed);
 }
 

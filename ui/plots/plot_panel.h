@@ -2,11 +2,13 @@
 // The live plots against time or crank angle (the document's plotAxis(), plot_x_axis.h), one
 // chart per kind, stacked so they read together: link
 // and transmission angles, link ω, link α, and for linkages with sliders their positions,
-// velocities and accelerations. The quantities come from the mechanism (plot_quantity.h); a
+// velocities and accelerations, and for a four-bar or slider-crank its velocity ratio and
+// mechanical advantage (asked for by ticking them). The quantities come from the mechanism (plot_quantity.h); a
 // row of checkboxes picks them, and the document is asked to compute only what is shown. Charts
 // with nothing to show are hidden. Curves are re-read from the document's sweep when the
 // design or request changes; a crank move only moves the cursor on each chart. Hovering a
 // curve reads its value out; a four-bar's rocker limit positions are marked on the angle chart
+// and the ratio charts
 // (on a time base at each instant the crank passes them, or not at all, with a note saying why).
 // A comparison with another tool's table (File ▸ Compare…) draws its rows over the curves until
 // it is cleared or another document comes.
@@ -55,7 +57,8 @@ public:
   /// mode) the quality bar and the quantity selector are hidden so the charts get the room.
   void setPresentationScale(double factor);
 
-  /// The charts in display order (angles, ω, α, position, velocity, acceleration), for image
+  /// The charts in display order (angles, ω, α, position, velocity, acceleration, velocity
+  /// ratio, advantage), for image
   /// export. A chart with nothing selected or nothing to show isHidden().
   QList<QChartView*> chartViews() const;
   /// The same views as plain QGraphicsViews, so code outside ui/plots can export them
@@ -74,6 +77,9 @@ public:
   /// The chart for one kind of quantity.
   QuantityChartView* chartView(QuantityKind kind) const;
   LimitMarkers* limitMarkers() const { return m_limits.get(); }
+  /// The limit positions on the ratio charts: labelled at zero velocity ratio, lines on the advantage.
+  LimitMarkers* velocityRatioLimitMarkers() const { return m_ratioLimits.get(); }
+  LimitMarkers* advantageLimitMarkers() const { return m_advantageLimits.get(); }
   /// Why limit positions the analysis has are not marked; empty when they are (or there are none).
   QString limitNote() const;
   HoverReadout* hoverReadout() const { return m_readout; }
@@ -115,6 +121,10 @@ private:
   void refreshCurves();
   void refreshData();
   void refreshCursor();
+  /// Marks the four-bar's limit positions on the angle and ratio charts of refreshData's x
+  /// axis; adds the charts whose legend changed to `changed`. Returns why they are not marked,
+  /// or nothing.
+  QString placeLimitMarkers(const QuantitySelection& shown, QList<QuantityChartView*>& changed);
   /// Aligns the shown charts' plot areas; `changed` (default: all) are laid out afresh.
   void alignCharts(const QList<QuantityChartView*>& changed);
   void alignCharts();
@@ -129,7 +139,9 @@ private:
   bool m_stale = false;  // a change came while off screen: refreshData when back
   std::vector<PlotCurve> m_curves;
   std::array<QuantityChartView*, kQuantityKindCount> m_views{};
-  std::unique_ptr<LimitMarkers> m_limits;
+  std::unique_ptr<LimitMarkers> m_limits;           // on the angle chart
+  std::unique_ptr<LimitMarkers> m_ratioLimits;      // the same on the velocity-ratio chart
+  std::unique_ptr<LimitMarkers> m_advantageLimits;  // and on the advantage chart
   QLabel* m_limitNote;
   HoverReadout* m_readout;
   PlotXAxis m_x;  // what the charts show on x since the last refreshData

@@ -54,6 +54,22 @@ void addLinkCurves(std::vector<PlotCurve>& out, const k::Mechanism& m, ColumnQua
   }
 }
 
+// A four-bar's or slider-crank's ratios, in its output's colour (the rocker's, the slider's).
+void addRatioCurves(std::vector<PlotCurve>& out, const k::Mechanism& m, const k::Pose& pose) {
+  const auto centres = k::instantCentres(m, pose);
+  if (!centres && centres.error().code == k::ErrorCode::InvalidStructure) return;  // no such ratios
+  const bool slider = centres ? centres->linkage == k::CentreLinkage::SliderCrank
+                              : std::any_of(m.points.begin(), m.points.end(), [](const k::Point& p) {
+                                  return std::holds_alternative<k::RrpPoint>(p.definition);
+                                });
+  const k::CentreLinkage linkage = slider ? k::CentreLinkage::SliderCrank : k::CentreLinkage::FourBar;
+  const QColor color = slider ? sliderColor(0) : linkColor(k::fourbar::kRocker.index);
+  out.push_back({PlotQuantity::ofRatio(RatioQuantity::VelocityRatio, linkage), QStringLiteral("velocity_ratio"),
+                 slider ? Text::tr("ratio v/ω2") : Text::tr("ratio ω4/ω2"), color});
+  out.push_back({PlotQuantity::ofRatio(RatioQuantity::Advantage, linkage), QStringLiteral("mechanical_advantage"),
+                 slider ? Text::tr("advantage F/T2") : Text::tr("advantage T4/T2"), color});
+}
+
 }  // namespace
 
 const PlotQuantity PlotQuantity::CouplerAngle{ColumnQuantity::LinkAngle, k::fourbar::kCoupler.index};
@@ -64,7 +80,14 @@ const PlotQuantity PlotQuantity::RockerOmega{ColumnQuantity::LinkOmega, k::fourb
 const PlotQuantity PlotQuantity::CouplerAlpha{ColumnQuantity::LinkAlpha, k::fourbar::kCoupler.index};
 const PlotQuantity PlotQuantity::RockerAlpha{ColumnQuantity::LinkAlpha, k::fourbar::kRocker.index};
 
-QuantityKind quantityKind(PlotQuantity q) { return kindOf(q.column); }
+QuantityKind quantityKind(PlotQuantity q) {
+  switch (q.ratio) {
+  case RatioQuantity::None: break;
+  case RatioQuantity::VelocityRatio: return QuantityKind::VelocityRatio;
+  case RatioQuantity::Advantage: return QuantityKind::Advantage;
+  }
+  return kindOf(q.column);
+}
 
 std::vector<PlotCurve> plotCurves(const k::Mechanism& m, const k::Pose& pose) {
   std::vector<PlotCurve> out;
@@ -107,6 +130,7 @@ std::vector<PlotCurve> plotCurves(const k::Mechanism& m, const k::Pose& pose) {
                    point + " a" + axis,
                    color});
   }
+  addRatioCurves(out, m, pose);
   // Checkbox and legend order: by chart.
   std::stable_sort(out.begin(), out.end(), [](const PlotCurve& a, const PlotCurve& b) {
     return quantityKind(a.quantity) < quantityKind(b.quantity);
@@ -129,8 +153,17 @@ QString quantityUnit(QuantityKind kind, AngleUnit unit, const QString& lengthUni
   case QuantityKind::Position: return lengthUnit;
   case QuantityKind::Velocity: return lengthUnit + QStringLiteral("/s");
   case QuantityKind::Acceleration: return lengthUnit + QStringLiteral("/s²");
+  case QuantityKind::VelocityRatio:
+  case QuantityKind::Advantage: return {};
   }
   return angle;
+}
+
+QString quantityUnit(PlotQuantity q, AngleUnit unit, const QString& lengthUnit) {
+  if (q.ratio == RatioQuantity::None || q.linkage == k::CentreLinkage::FourBar)
+    return quantityUnit(quantityKind(q), unit, lengthUnit);
+  return q.ratio == RatioQuantity::VelocityRatio ? lengthUnit + QStringLiteral("/rad")
+                                                 : QStringLiteral("1/") + lengthUnit;
 }
 
 QString valueAxisTitle(QuantityKind kind, AngleUnit unit, const QString& lengthUnit) {
@@ -142,8 +175,18 @@ QString valueAxisTitle(QuantityKind kind, AngleUnit unit, const QString& lengthU
   case QuantityKind::Position: return Text::tr("position [%1]").arg(u);
   case QuantityKind::Velocity: return Text::tr("v [%1]").arg(u);
   case QuantityKind::Acceleration: return Text::tr("a [%1]").arg(u);
+  case QuantityKind::VelocityRatio: return QStringLiteral("ω4/ω2");
+  case QuantityKind::Advantage: return QStringLiteral("T4/T2");
   }
   return u;
+}
+
+QString valueAxisTitle(PlotQuantity q, AngleUnit unit, const QString& lengthUnit) {
+  if (q.ratio == RatioQuantity::None || q.linkage == k::CentreLinkage::FourBar)
+    return valueAxisTitle(quantityKind(q), unit, lengthUnit);
+  const QString u = quantityUnit(q, unit, lengthUnit);
+  return q.ratio == RatioQuantity::VelocityRatio ? QStringLiteral("v/ω2 [%1]").arg(u)
+                                                 : QStringLiteral("F/T2 [%1]").arg(u);
 }
 
 bool QuantitySelection::contains(PlotQuantity q) const {
@@ -168,6 +211,8 @@ bool QuantitySelection::any(QuantityKind kind, const std::vector<PlotCurve>& cur
 
 QuantitySelection defaultSelection(const std::vector<PlotCurve>& curves) {
   QuantitySelection s;
+  for (const PlotCurve& c : curves)
+    if (c.quantity.ratio != RatioQuantity::None) s.set(c.quantity, false);
   const bool sliders = std::any_of(curves.begin(), curves.end(), [](const PlotCurve& c) {
     return quantityKind(c.quantity) == QuantityKind::Position;
   });
@@ -185,6 +230,18 @@ QuantitySelection selectionAfter(const std::vector<PlotCurve>& before, const Qua
       std::equal(before.begin(), before.end(), after.begin(), after.end(),
                  [](const PlotCurve& x, const PlotCurve& y) { return x.quantity == y.quantity; });
   return sameQuantities ? current : defaultSelection(after);
+}
+
+std::optional<QuantitySelection> selectionOfKeys(const std::vector<PlotCurve>& curves, const QStringList& keys,
+                                                 QString& unknown) {
+  for (const QString& key : keys)
+    if (std::none_of(curves.begin(), curves.end(), [&](const PlotCurve& c) { return c.key == key; })) {
+      unknown = key;
+      return std::nullopt;
+    }
+  QuantitySelection s;
+  for (const PlotCurve& c : curves) s.set(c.quantity, keys.contains(c.key));
+  return s;
 }
 
 k::SolveRequest requestFor(const QuantitySelection& s, const std::vector<PlotCurve>& curves) {

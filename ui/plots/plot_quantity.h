@@ -1,14 +1,17 @@
 #pragma once
 // The quantities the plots can show for the current mechanism, read off its structure the way
 // the CSV columns are (kinematics/io/sweep_columns.h): the angle, ω and α of every moving link
-// but the driven crank, the transmission angle at every dyad joint that has one, and each
-// slider's position, velocity and acceleration along the axis its ground guide mostly runs.
+// but the driven crank, the transmission angle at every dyad joint that has one, each
+// slider's position, velocity and acceleration along the axis its ground guide mostly runs,
+// and for a four-bar or a slider-crank its velocity ratio and mechanical advantage (from the
+// instant centres at each sample: kinematics/analysis/advantage_sweep.h).
 // Each has a kind (which chart it goes on), a key, a name, a colour (the link's, as on the
 // canvas), and the SolveRequest a selection of them needs follows from their kinds. One
 // table, so the checkboxes, the legends, the read-outs and the request all agree.
 
 #include "ui/plots/angle_unit.h"
 
+#include "kinematics/analysis/instant_centres.h"
 #include "kinematics/io/sweep_columns.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/solve/pose.h"
@@ -16,25 +19,40 @@
 #include <QColor>
 #include <QString>
 
+#include <QStringList>
+
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace linkwright::ui {
 
 /// What a quantity is; one chart per kind, in this order.
-enum class QuantityKind { Angle, Omega, Alpha, Position, Velocity, Acceleration };
-inline constexpr int kQuantityKindCount = 6;
+enum class QuantityKind { Angle, Omega, Alpha, Position, Velocity, Acceleration, VelocityRatio, Advantage };
+inline constexpr int kQuantityKindCount = 8;
 
-/// Angle, ω and α are shown in the angle unit; the other kinds in the length unit.
+/// Angle, ω and α are shown in the angle unit; slider kinds in the length unit; ratios in the core's.
 constexpr bool isAngular(QuantityKind kind) {
   return kind == QuantityKind::Angle || kind == QuantityKind::Omega || kind == QuantityKind::Alpha;
 }
 
-/// One plottable quantity: a sweep column of a link or a point (its `index`).
+/// A ratio of output to input motion the instant centres give (instant_centres.h): a
+/// four-bar's ω4/ω2 and T4/T2 (dimensionless), a slider-crank's v/ω2 (length unit per rad) and
+/// F/T2 (1 / length unit).
+enum class RatioQuantity { None, VelocityRatio, Advantage };
+
+/// One plottable quantity: a sweep column of a link or a point (its `index`), or a ratio.
 struct PlotQuantity {
   kinematics::io::ColumnQuantity column = kinematics::io::ColumnQuantity::LinkAngle;
   std::size_t index = 0;
+  /// Not None: this ratio of the linkage `linkage` (then `column` and `index` are unused).
+  RatioQuantity ratio = RatioQuantity::None;
+  kinematics::CentreLinkage linkage = kinematics::CentreLinkage::FourBar;
   bool operator==(const PlotQuantity&) const = default;
+
+  static PlotQuantity ofRatio(RatioQuantity ratio, kinematics::CentreLinkage linkage) {
+    return {kinematics::io::ColumnQuantity::InputAngle, 0, ratio, linkage};
+  }
 
   /// A four-bar's quantities (the ids of kinematics/model/fourbar.h).
   static const PlotQuantity CouplerAngle;
@@ -63,10 +81,17 @@ std::vector<PlotCurve> plotCurves(const kinematics::Mechanism& mechanism, const 
 /// The curve of `quantity` in `curves`, or null.
 const PlotCurve* findCurve(const std::vector<PlotCurve>& curves, PlotQuantity quantity);
 
-/// Unit of a kind's values: "deg", "rad/s", "deg/s²", "mm", "mm/s", "mm/s²".
+/// Unit of a kind's values: "deg", "rad/s", "deg/s²", "mm", "mm/s", "mm/s²"; for the ratio
+/// kinds a four-bar's (none).
 QString quantityUnit(QuantityKind kind, AngleUnit unit, const QString& lengthUnit = QStringLiteral("mm"));
+/// Unit of a quantity's values: its kind's, but a ratio's is the core's whatever the angle
+/// unit: none for a four-bar's, "mm/rad" or "1/mm" for a slider-crank's.
+QString quantityUnit(PlotQuantity quantity, AngleUnit unit, const QString& lengthUnit = QStringLiteral("mm"));
 /// The y-axis title of a chart: "angle [deg]", "ω [rad/s]", "position [mm]", ...
 QString valueAxisTitle(QuantityKind kind, AngleUnit unit, const QString& lengthUnit = QStringLiteral("mm"));
+/// The y-axis title of a chart showing `quantity` (a ratio chart shows one linkage's): its
+/// kind's, or the ratio's symbol: "ω4/ω2", "T4/T2", "v/ω2 [mm/rad]", "F/T2 [1/mm]".
+QString valueAxisTitle(PlotQuantity quantity, AngleUnit unit, const QString& lengthUnit = QStringLiteral("mm"));
 /// (The x axis's title is plot_x_axis.h's: the time or the input.)
 
 /// Which quantities are shown: all but those the user unticked. A quantity the mechanism
@@ -87,8 +112,9 @@ private:
   std::vector<PlotQuantity> m_hidden;  // in the order they were unticked
 };
 
-/// What a new mechanism shows first: everything, except that with sliders the links' ω and α
-/// start unticked, so the slider's three charts and the angles fit the window.
+/// What a new mechanism shows first: everything but the ratios (asked for by name), except
+/// that with sliders the links' ω and α also start unticked, so the slider's three charts and
+/// the angles fit the window.
 QuantitySelection defaultSelection(const std::vector<PlotCurve>& curves);
 
 /// The selection once the curves change from `before` to `after`: the user's ticks while the
@@ -96,8 +122,14 @@ QuantitySelection defaultSelection(const std::vector<PlotCurve>& curves);
 QuantitySelection selectionAfter(const std::vector<PlotCurve>& before, const QuantitySelection& current,
                                  const std::vector<PlotCurve>& after);
 
+/// The selection showing exactly the curves whose keys are in `keys` (the command line's
+/// --plots); nullopt if a key is not one of `curves`', which `unknown` then names.
+std::optional<QuantitySelection> selectionOfKeys(const std::vector<PlotCurve>& curves, const QStringList& keys,
+                                                 QString& unknown);
+
 /// What the sweep must compute for `selection` of `curves`: velocities only if an ω or a
 /// velocity is shown; accelerations (which imply velocities) only if an α or an acceleration is.
+/// (The ratios need positions only: the instant centres come from the pose.)
 kinematics::SolveRequest requestFor(const QuantitySelection& selection, const std::vector<PlotCurve>& curves);
 
 }  // namespace linkwright::ui

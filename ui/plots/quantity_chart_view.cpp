@@ -62,13 +62,14 @@ void QuantityChartView::setCurves(const std::vector<PlotCurve>& curves) {
 }
 
 bool QuantityChartView::setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection,
-                                AngleUnit unit, const PlotXAxis& x, const QString& lengthUnit) {
+                                AngleUnit unit, const PlotXAxis& x, const QString& lengthUnit,
+                                const kinematics::AdvantageSeries* ratios) {
   // The axes first: the curves are simplified for the scale they set (segmented_line.h).
   m_values.clear();
   m_runs.resize(m_curves.size());
   for (std::size_t i = 0; i < m_curves.size(); ++i) {
     if (selection.contains(m_curves[i].curve.quantity))
-      buildSeriesRuns(sweep, m_curves[i].curve.quantity, unit, m_runs[i], x.source);
+      buildSeriesRuns(sweep, m_curves[i].curve.quantity, unit, m_runs[i], x.source, ratios);
     else m_runs[i].runs.clear();
     for (const QList<QPointF>& run : m_runs[i].runs)
       for (const QPointF& p : run) m_values.push_back(p.y());
@@ -80,15 +81,20 @@ bool QuantityChartView::setData(const kinematics::SweepResult& sweep, const Quan
   // Spikes next to a toggle would squash every other value flat: they run off the chart
   // instead, and the hover read-out still gives their value.
   constexpr double kNone = std::numeric_limits<double>::infinity();
-  std::tie(m_lo, m_hi) = m_values.empty() ? std::pair<double, double>{kNone, -kNone} : robustSpan(m_values);
+  // The advantage runs to ±∞ at every limit, on both sides: its tails are wider, and what a
+  // reader wants is the usable band between them.
+  const double tail = m_kind == QuantityKind::Advantage ? 0.15 : 0.05;
+  std::tie(m_lo, m_hi) = m_values.empty() ? std::pair<double, double>{kNone, -kNone} : robustSpan(m_values, tail);
   const int budget = tickBudget();
   if (budget != m_tickBudget || !keepsRange(m_valueRange, m_lo, m_hi))
     m_valueRange = niceValueRange(m_lo, m_hi, budget);
   m_tickBudget = budget;
   applyAxisRange(m_yAxis, m_valueRange);
   m_cursor->setYSpan(m_valueRange.min, m_valueRange.max);
-  if (const QString title = valueAxisTitle(m_kind, unit, lengthUnit); m_yAxis->titleText() != title)
-    m_yAxis->setTitleText(title);
+  // A ratio's title depends on the linkage its curves are of.
+  const QString title = m_curves.empty() ? valueAxisTitle(m_kind, unit, lengthUnit)
+                                         : valueAxisTitle(m_curves.front().curve.quantity, unit, lengthUnit);
+  if (m_yAxis->titleText() != title) m_yAxis->setTitleText(title);
   applyAxisRange(m_xAxis, x.range);
   if (m_xAxis->tickInterval() != x.range.step) m_xAxis->setTickInterval(x.range.step);
   if (m_xAxis->titleText() != x.title) m_xAxis->setTitleText(x.title);

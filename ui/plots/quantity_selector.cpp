@@ -7,8 +7,6 @@
 #include <QLabel>
 #include <QPixmap>
 
-#include <optional>
-
 namespace linkwright::ui {
 namespace {
 
@@ -20,6 +18,8 @@ QString groupLabel(QuantityKind kind) {
   case QuantityKind::Position: return QuantitySelector::tr("Position:");
   case QuantityKind::Velocity: return QuantitySelector::tr("v:");
   case QuantityKind::Acceleration: return QuantitySelector::tr("a:");
+  case QuantityKind::VelocityRatio:
+  case QuantityKind::Advantage: return QuantitySelector::tr("Ratios:");
   }
   return {};
 }
@@ -37,7 +37,7 @@ void QuantitySelector::setCurves(const std::vector<PlotCurve>& curves, const Qua
   m_boxes.clear();
   m_curves = curves;
   m_selection = selection;
-  std::optional<QuantityKind> groupKind;
+  QString group;  // the label of the group being filled; the ratios' two charts share one
   for (std::size_t i = 0; i < curves.size(); ++i) {
     const PlotCurve& curve = curves[i];
     // A chart's label stays on one line with its first box; the other boxes wrap one by one,
@@ -46,9 +46,9 @@ void QuantitySelector::setCurves(const std::vector<PlotCurve>& curves, const Qua
     auto* row = new QHBoxLayout(item);
     row->setContentsMargins(0, 0, 0, 0);
     row->setSpacing(4);
-    if (quantityKind(curve.quantity) != groupKind) {
-      groupKind = quantityKind(curve.quantity);
-      row->addWidget(new QLabel(groupLabel(*groupKind), item));
+    if (const QString label = groupLabel(quantityKind(curve.quantity)); label != group) {
+      group = label;
+      row->addWidget(new QLabel(label, item));
     }
     m_flow->addWidget(item);
     m_groups.push_back(item);

@@ -13,7 +13,14 @@ using k::io::ColumnQuantity;
 // not compute its column.
 class Column {
 public:
-  Column(const k::SweepResult& s, PlotQuantity q, AngleUnit unit) : m_q(q), m_unit(unit) {
+  Column(const k::SweepResult& s, PlotQuantity q, AngleUnit unit, const k::AdvantageSeries* ratios)
+      : m_q(q), m_unit(unit) {
+    if (q.ratio != RatioQuantity::None) {
+      if (ratios == nullptr) return;
+      const auto& column = q.ratio == RatioQuantity::VelocityRatio ? ratios->velocityRatio : ratios->advantage;
+      if (column.size() == s.size()) m_ratio = &column;
+      return;
+    }
     const auto pick = [&s](const auto& columns, std::size_t index) {
       const bool present = index < columns.size() && columns[index].size() == s.size();
       return present ? &columns[index] : nullptr;
@@ -35,9 +42,12 @@ public:
     }
   }
 
-  bool present() const { return m_scalar != nullptr || m_vector != nullptr; }
+  bool present() const { return m_scalar != nullptr || m_vector != nullptr || m_ratio != nullptr; }
+  /// False where a ratio is infinite or undefined.
+  bool finite(std::size_t j) const { return m_ratio == nullptr || (*m_ratio)[j].kind == k::RatioKind::Finite; }
 
   double at(std::size_t j) const {
+    if (m_ratio != nullptr) return (*m_ratio)[j].value;  // the core's unit, whatever the angle unit
     if (m_scalar != nullptr) return toAngleUnit((*m_scalar)[j], m_unit);
     const bool x = m_q.column == ColumnQuantity::PointX || m_q.column == ColumnQuantity::PointVx ||
                    m_q.column == ColumnQuantity::PointAx;
@@ -49,12 +59,15 @@ private:
   AngleUnit m_unit;
   const std::vector<double>* m_scalar = nullptr;           // angles, rad
   const std::vector<Eigen::Vector2d>* m_vector = nullptr;  // points, length unit
+  const std::vector<k::Ratio>* m_ratio = nullptr;
 };
 
-// Positions exist wherever assembled; rates only where the sample is ok.
+// Positions (and the ratios they give) exist wherever assembled; rates only where the sample is ok.
 bool sampleCarries(const k::SweepResult& s, PlotQuantity q, std::size_t j) {
   const QuantityKind kind = quantityKind(q);
-  return kind == QuantityKind::Angle || kind == QuantityKind::Position ? s.assembled(j) : s.ok(j);
+  const bool positional =
+      kind == QuantityKind::Angle || kind == QuantityKind::Position || q.ratio != RatioQuantity::None;
+  return positional ? s.assembled(j) : s.ok(j);
 }
 
 }  // namespace
@@ -65,26 +78,37 @@ qsizetype SeriesRuns::pointCount() const {
   return n;
 }
 
-bool hasValue(const k::SweepResult& s, PlotQuantity q, std::size_t j) {
-  return Column(s, q, AngleUnit::Radians).present() && sampleCarries(s, q, j);
+bool hasValue(const k::SweepResult& s, PlotQuantity q, std::size_t j, const k::AdvantageSeries* ratios) {
+  const Column column(s, q, AngleUnit::Radians, ratios);
+  return column.present() && sampleCarries(s, q, j) && column.finite(j);
 }
 
-void buildSeriesRuns(const k::SweepResult& s, PlotQuantity q, AngleUnit unit, SeriesRuns& out, const XSource& x) {
-  const Column values(s, q, unit);
+void buildSeriesRuns(const k::SweepResult& s, PlotQuantity q, AngleUnit unit, SeriesRuns& out, const XSource& x,
+                     const k::AdvantageSeries* ratios) {
+  const Column values(s, q, unit, ratios);
   qsizetype runCount = 0;
   out.minY = 0.0;
   out.maxY = 0.0;
   bool first = true;
   std::size_t j = 0;
   // The last guard: a value that is still not finite is left out like a missing one.
-  const auto plottable = [&](std::size_t k) { return sampleCarries(s, q, k) && std::isfinite(values.at(k)); };
+  const auto plottable = [&](std::size_t k) {
+    return sampleCarries(s, q, k) && values.finite(k) && std::isfinite(values.at(k));
+  };
+  // Within an assembled stretch the advantage changes sign only through infinity (the output
+  // at rest between two samples): it would pass zero only where the crank cannot drive, which
+  // ends the crank's range and so the stretch. The line is broken there, not drawn across.
+  const bool breaksAtSignChange = q.ratio == RatioQuantity::Advantage;
+  const auto continues = [&](std::size_t k) {
+    return plottable(k) && !(breaksAtSignChange && std::signbit(values.at(k)) != std::signbit(values.at(k - 1)));
+  };
   while (values.present() && j < s.size()) {
     if (!plottable(j)) {
       ++j;
       continue;
     }
-    std::size_t end = j;
-    while (end < s.size() && plottable(end)) ++end;
+    std::size_t end = j + 1;
+    while (end < s.size() && continues(end)) ++end;
     if (runCount == out.runs.size()) out.runs.emplace_back();
     QList<QPointF>& run = out.runs[runCount++];
     run.clear();

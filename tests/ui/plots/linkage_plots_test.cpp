@@ -41,14 +41,15 @@ TEST_CASE("a slider-crank plots its rod and its piston's stroke, velocity and ac
   MechanismDocument doc;
   doc.reset(*k::designForExample("ls3-engine"));
   PlotPanel panel(&doc);
-  CHECK(keys(panel.curves()) ==
-        QStringList{"rod_angle", "transmission_angle", "rod_omega", "rod_alpha", "C_x", "C_vx", "C_ax"});
+  CHECK(keys(panel.curves()) == QStringList{"rod_angle", "transmission_angle", "rod_omega", "rod_alpha", "C_x", "C_vx",
+                                            "C_ax", "velocity_ratio", "mechanical_advantage"});
   // With a slider, its three charts and the angles show first; the rod's ω and α are a tick away.
   for (const auto kind :
        {QuantityKind::Angle, QuantityKind::Position, QuantityKind::Velocity, QuantityKind::Acceleration})
     CHECK_FALSE(panel.chartView(kind)->isHidden());
   CHECK(panel.chartView(QuantityKind::Omega)->isHidden());
   CHECK(panel.chartView(QuantityKind::Alpha)->isHidden());
+  CHECK(panel.chartView(QuantityKind::VelocityRatio)->isHidden());   // the ratios are asked for by name
   CHECK((doc.request().velocities && doc.request().accelerations));  // the piston's acceleration needs them
 
   const k::SweepResult& s = doc.sweep();
@@ -89,7 +90,7 @@ TEST_CASE("a six-bar plots links 3 to 6 and both transmission angles; back to a 
   CHECK(panel.limitMarkers()->lineXs().isEmpty());
 
   doc.reset(linkwright::testing::fourBar());
-  CHECK(keys(panel.curves()).size() == 7);
+  CHECK(keys(panel.curves()).size() == 9);  // its seven and the two ratios
   CHECK(panel.limitMarkers()->lineXs().size() == 2);
   CHECK_FALSE(panel.chartView(QuantityKind::Alpha)->isHidden());
 }

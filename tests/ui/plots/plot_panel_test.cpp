@@ -93,8 +93,10 @@ TEST_CASE("After construction the series hold the document's sweep", "[plot_pane
   CHECK(angles->xAxis()->titleText() == QStringLiteral("crank angle [deg]"));
   CHECK(angles->yAxis()->titleText() == QStringLiteral("angle [deg]"));
   CHECK(panel.chartView(QuantityKind::Omega)->yAxis()->titleText() == QStringLiteral("ω [deg/s]"));
-  CHECK(panel.chartViews().size() == 6);  // a four-bar has no slider: its three charts are hidden
-  for (const auto kind : {QuantityKind::Position, QuantityKind::Velocity, QuantityKind::Acceleration})
+  CHECK(panel.chartViews().size() == 8);  // a four-bar has no slider: its three charts are hidden
+  // (and the ratios' two, until asked for)
+  for (const auto kind : {QuantityKind::Position, QuantityKind::Velocity, QuantityKind::Acceleration,
+                          QuantityKind::VelocityRatio, QuantityKind::Advantage})
     CHECK(panel.chartView(kind)->isHidden());
   CHECK(panel.chartTitle(1) == QStringLiteral("Angular velocities"));
   CHECK(panel.chartViews()[1]->chart()->title() == panel.chartTitle(1));
@@ -209,6 +211,7 @@ TEST_CASE("A non-Grashof linkage plots nothing outside its assemblable range", "
   REQUIRE(assembled > 0);
   REQUIRE(assembled < static_cast<qsizetype>(s.size()));  // there is a gap to get right
 
+  for (const PlotQuantity q : fourBarQuantities()) tick(panel, q, true);  // the ratios too
   for (const PlotQuantity q : fourBarQuantities()) {
     CAPTURE(fourBarCurve(q).key);
     const QList<QLineSeries*> segments = panel.chartView(quantityKind(q))->segments(q);
