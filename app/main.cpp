@@ -23,12 +23,20 @@
 namespace {
 
 // Shows the window, lets layout and first paint settle, saves it as a PNG and quits.
-int takeScreenshot(linkwright::ui::MainWindow& window, const QString& path) {
+// Shows the window and lets it settle as the event loop would before the first frame.
+void showSettled(linkwright::ui::MainWindow& window) {
   window.show();
   for (int i = 0; i < 5; ++i) QApplication::processEvents();
   // The plots' width and the quality estimate wait for the window to settle; not here.
   window.settle();
   for (int i = 0; i < 5; ++i) QApplication::processEvents();
+  // Outside exec() nothing deletes what deleteLater() was asked to: Qt Charts' items of series
+  // taken off a chart (a new linkage's curves) would still be drawn where they last were.
+  QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+}
+
+int takeScreenshot(linkwright::ui::MainWindow& window, const QString& path) {
+  showSettled(window);
   if (!window.grab().save(path, "PNG")) {
     std::cerr << "linkwright: cannot write the screenshot " << path.toStdString() << "\n";
     return 1;
@@ -38,10 +46,7 @@ int takeScreenshot(linkwright::ui::MainWindow& window, const QString& path) {
 
 // Like the screenshot: the window settles, then the canvas is rendered over one cycle.
 int writeAnimation(linkwright::ui::MainWindow& window, const linkwright::app::GuiOptions& options) {
-  window.show();
-  for (int i = 0; i < 5; ++i) QApplication::processEvents();
-  window.settle();
-  for (int i = 0; i < 5; ++i) QApplication::processEvents();
+  showSettled(window);
   linkwright::ui::AnimationSettings settings;
   settings.frames = options.frames;
   settings.frameDelayMs = options.frameDelayMs;

@@ -13,6 +13,7 @@
 #include "ui/panels/length_editor.h"
 #include "ui/plots/force_chart_view.h"
 #include "ui/plots/force_plot_panel.h"
+#include "ui/plots/limit_markers.h"
 #include "ui/plots/plot_panel.h"
 #include "ui/plots/quality_bar.h"
 #include "ui/plots/quantity_chart_view.h"
@@ -40,8 +41,10 @@
 #include <QImage>
 #include <QLegend>
 #include <QLineSeries>
+#include <QScatterSeries>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QValueAxis>
 
 #include <sstream>
 
@@ -220,6 +223,30 @@ TEST_CASE("presentation mode enlarges the fonts and can be left again", "[ui][wi
   CHECK(size(chart->titleFont()) == title);
   CHECK(size(axisFont()) == labels);
   CHECK(curves.front()->pen().widthF() == pen);
+}
+
+TEST_CASE("presentation mode opens on every example, and only the bottom chart names the x axis", "[ui][window]") {
+  // A linkage without limit positions (a slider-crank) once crashed here: Qt Charts re-laid out
+  // a hidden, emptied scatter series (the limit points) against its stale points.
+  namespace k = kinematics;
+  for (const k::Example& example : k::examples()) {
+    CAPTURE(example.name);
+    ui::MainWindow window;
+    window.newDocument(*k::designForExample(example.name));
+    window.setPresentationMode(true);
+    QList<ui::QuantityChartView*> shown;
+    for (const auto kind : {ui::QuantityKind::Angle, ui::QuantityKind::Omega, ui::QuantityKind::Alpha,
+                            ui::QuantityKind::Position, ui::QuantityKind::Velocity, ui::QuantityKind::Acceleration,
+                            ui::QuantityKind::VelocityRatio, ui::QuantityKind::Advantage})
+      if (!window.plots()->chartView(kind)->isHidden()) shown.append(window.plots()->chartView(kind));
+    REQUIRE_FALSE(shown.isEmpty());
+    for (ui::QuantityChartView* view : shown) CHECK(view->xAxis()->isTitleVisible() == (view == shown.back()));
+    // The limit points a slider-crank has none of stay hidden, out of the legend.
+    const QScatterSeries* limits = window.plots()->limitMarkers()->points();
+    CHECK(limits->isVisible() == (limits->count() > 0));
+    window.setPresentationMode(false);
+    for (ui::QuantityChartView* view : shown) CHECK(view->xAxis()->isTitleVisible());
+  }
 }
 
 TEST_CASE("typing a length in the panel updates the badge and the plotted series as the core says", "[ui][window]") {

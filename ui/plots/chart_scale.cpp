@@ -64,6 +64,10 @@ void setChartScale(QChart* chart, double factor) {
       base = xy->pen().widthF() / before;
       xy->setProperty(kBasePenWidth, base);
     }
+    // Qt Charts 6.4 crashes laying out an emptied scatter series (the limit points of a linkage
+    // that has none) for a new pen or marker size (XYChart::offGridStatusVector). Such a series
+    // takes its size from chartScale when it gets points again (LimitMarkers::setPositions).
+    if (xy->count() == 0 && qobject_cast<QScatterSeries*>(xy) != nullptr) continue;
     QPen pen = xy->pen();
     pen.setWidthF(base.toDouble() * factor);
     xy->setPen(pen);

@@ -18,6 +18,8 @@
 namespace linkwright::ui {
 namespace {
 
+constexpr double kMarkerSize = 8.0;  // the points', px at scale 1
+
 namespace k = kinematics;
 
 // The core reports the rocker angle in (−π, π]; the sweep's is unwrapped and may be whole
@@ -72,7 +74,7 @@ LimitMarkers::LimitMarkers(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis)
     : m_chart(chart), m_xAxis(xAxis), m_yAxis(yAxis), m_points(new QScatterSeries) {
   m_points->setObjectName(QStringLiteral("limit_points"));
   m_points->setName(tr("rocker limit"));
-  m_points->setMarkerSize(8.0);
+  m_points->setMarkerSize(kMarkerSize);
   m_points->setColor(kLimitPointColor);
   m_points->setBorderColor(Qt::white);
   m_points->setPointLabelsFormat(tr("limit"));
@@ -100,6 +102,8 @@ bool LimitMarkers::setPositions(const QList<QPointF>& points, bool showPoints) {
   const bool pointsShown = showPoints && !points.isEmpty();
   const bool legendChanges = pointsShown != m_points->isVisible();
   m_points->replace(pointsShown ? points : QList<QPointF>{});
+  // setChartScale passes over it while it is empty: it takes the chart's scale here.
+  if (pointsShown) m_points->setMarkerSize(kMarkerSize * chartScale(m_chart));
   setSeriesShown(m_chart, m_points, pointsShown, true);
   return legendChanges;
 }

@@ -16,6 +16,7 @@
 #include <QGraphicsLayout>
 #include <QLabel>
 #include <QVBoxLayout>
+#include <QValueAxis>
 
 #include <algorithm>
 #include <cmath>
@@ -26,6 +27,11 @@ namespace {
 constexpr std::array<QuantityKind, kQuantityKindCount> kKinds{
     QuantityKind::Angle,    QuantityKind::Omega,        QuantityKind::Alpha,         QuantityKind::Position,
     QuantityKind::Velocity, QuantityKind::Acceleration, QuantityKind::VelocityRatio, QuantityKind::Advantage};
+
+// Shares of the panel's height: the chart that names the x axis when presenting gets a little
+// more, for that title's line.
+constexpr int kChartStretch = 6;
+constexpr int kTitledChartStretch = 7;
 
 QString titleOf(QuantityKind kind) {
   switch (kind) {
@@ -71,7 +77,7 @@ PlotPanel::PlotPanel(MechanismDocument* document, QWidget* parent)
     // the others keep their layouts, so aligning after every resize does not grow as n².
     connect(view, &QuantityChartView::resized, this, [this, view] { alignCharts({view}); });
     m_views[static_cast<std::size_t>(kind)] = view;
-    layout->addWidget(view, 1);
+    layout->addWidget(view, kChartStretch);
   }
   m_limitNote->setObjectName(QStringLiteral("limit_note"));
   m_limitNote->setWordWrap(true);
@@ -239,6 +245,8 @@ void PlotPanel::refreshData() {
     if (view->setData(sweep, shown, m_unit, x, lengthUnit, ratios ? &*ratios : nullptr) || appears)
       changed.append(view);
   }
+  for (QuantityChartView* view : showXTitles())
+    if (!changed.contains(view)) changed.append(view);
   const QString note = placeLimitMarkers(shown, changed);
   QuantityChartView* angles = chartView(QuantityKind::Angle);
   m_limitNote->setText(note);
@@ -300,10 +308,31 @@ void PlotPanel::setPresentationScale(double factor) {
   for (QuantityChartView* view : m_views) setChartScale(view->chart(), factor);
   // In front of a class the controls give their height to the charts: at the larger text the
   // charts' axis titles would not fit beside short plots.
-  const bool presenting = factor > 1.0;
-  m_quality->setVisible(!presenting);
-  m_selector->setVisible(!presenting);
+  m_presenting = factor > 1.0;
+  m_quality->setVisible(!m_presenting);
+  m_selector->setVisible(!m_presenting);
+  m_readout->setVisible(!m_presenting);  // its hint line too: a hover shows the value's tooltip
+  showXTitles();
   alignCharts();  // the axis labels' widths changed
+}
+
+QList<QuantityChartView*> PlotPanel::showXTitles() {
+  // The charts share one x axis: in front of a class only the bottom one names it, and the
+  // height the others save goes to their plots, so the larger value-axis titles fit beside them.
+  QuantityChartView* bottom = nullptr;
+  for (QuantityChartView* view : m_views)
+    if (!view->isHidden()) bottom = view;
+  QList<QuantityChartView*> changed;
+  auto* box = static_cast<QVBoxLayout*>(layout());
+  for (QuantityChartView* view : m_views) {
+    const bool shown = !m_presenting || view == bottom;
+    // The bottom chart is that title taller, so its plot is as high as the others'.
+    box->setStretchFactor(view, shown && m_presenting ? kTitledChartStretch : kChartStretch);
+    if (view->xAxis()->isTitleVisible() == shown) continue;
+    view->xAxis()->setTitleVisible(shown);
+    changed.append(view);
+  }
+  return changed;
 }
 
 QString PlotPanel::limitNote() const { return m_limitNote->isHidden() ? QString() : m_limitNote->text(); }

@@ -54,7 +54,8 @@ public:
   void setAngleUnit(AngleUnit unit);
   AngleUnit angleUnit() const { return m_unit; }
   /// Text and lines of every chart at `factor` times their normal size; above 1 (presentation
-  /// mode) the quality bar and the quantity selector are hidden so the charts get the room.
+  /// mode) the quality bar and the quantity selector are hidden and only the bottom chart
+  /// names the shared x axis, so the charts get the room.
   void setPresentationScale(double factor);
 
   /// The charts in display order (angles, ω, α, position, velocity, acceleration, velocity
@@ -121,6 +122,9 @@ private:
   void refreshCurves();
   void refreshData();
   void refreshCursor();
+  /// Shows the x axis's title on every chart, or when presenting on the bottom one only.
+  /// Returns the charts whose title appeared or went (they need laying out again).
+  QList<QuantityChartView*> showXTitles();
   /// Marks the four-bar's limit positions on the angle and ratio charts of refreshData's x
   /// axis; adds the charts whose legend changed to `changed`. Returns why they are not marked,
   /// or nothing.
@@ -136,7 +140,8 @@ private:
   QTimer m_widthTimer;
   QTimer m_settleTimer;
   bool m_onScreen = true;
-  bool m_stale = false;  // a change came while off screen: refreshData when back
+  bool m_presenting = false;  // setPresentationScale above 1
+  bool m_stale = false;       // a change came while off screen: refreshData when back
   std::vector<PlotCurve> m_curves;
   std::array<QuantityChartView*, kQuantityKindCount> m_views{};
   std::unique_ptr<LimitMarkers> m_limits;           // on the angle chart
