@@ -64,18 +64,25 @@ void setChartScale(QChart* chart, double factor) {
       base = xy->pen().widthF() / before;
       xy->setProperty(kBasePenWidth, base);
     }
-    QPen pen = xy->pen();
-    pen.setWidthF(base.toDouble() * factor);
-    xy->setPen(pen);
-    // Markers (another tool's rows) grow with the lines.
-    if (auto* scatter = qobject_cast<QScatterSeries*>(xy)) {
-      QVariant size = scatter->property(kBaseMarkerSize);
+    auto* scatter = qobject_cast<QScatterSeries*>(xy);
+    QVariant size;
+    if (scatter != nullptr) {
+      size = scatter->property(kBaseMarkerSize);
       if (!size.isValid()) {
         size = scatter->markerSize() / before;
         scatter->setProperty(kBaseMarkerSize, size);
       }
-      scatter->setMarkerSize(size.toDouble() * factor);
+      // An empty scatter series emptied while hidden (a four-bar's limit markers once a
+      // slider-crank is loaded) keeps the points it was last drawn with, and Qt Charts 6.4 then
+      // reads past its points when the pen changes (XYChart::offGridStatusVector): a crash.
+      // Such a series is left at its size; it draws nothing.
+      if (scatter->count() == 0) continue;
     }
+    QPen pen = xy->pen();
+    pen.setWidthF(base.toDouble() * factor);
+    xy->setPen(pen);
+    // Markers (another tool's rows) grow with the lines.
+    if (scatter != nullptr) scatter->setMarkerSize(size.toDouble() * factor);
   }
   chart->setProperty(kScale, factor);
 }
