@@ -74,6 +74,8 @@ std::string guiUsage() {
          "  --frame-delay MS    time each frame shows, ms, 20 to 5000, rounded to 10 ms\n"
          "                      (default 40: 25 frames per second)\n"
          "  --presentation      large fonts and lines, full screen\n"
+         "  --high-contrast     black on white, darker link colours, thicker grid axes (a\n"
+         "                      projector; View ▸ High contrast, F12)\n"
          "  --forces            open on the Forces tab, with force arrows on the canvas\n"
          "  --centres           draw the instant centres, Kennedy's lines and the centrodes\n"
          "                      (four-bars and slider-cranks; View ▸ Instant centres)\n"
@@ -93,6 +95,7 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
   const QCommandLineOption help({"h", "help"}, {});
   const QCommandLineOption version("version", {});
   const QCommandLineOption presentation("presentation", {});
+  const QCommandLineOption highContrast("high-contrast", {});
   const QCommandLineOption forces("forces", {});
   const QCommandLineOption centres("centres", {});
   const QCommandLineOption example("example", {}, "NAME");
@@ -103,8 +106,8 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
   const QCommandLineOption frameDelay("frame-delay", {}, "MS");
   const QCommandLineOption compare("compare", {}, "TABLE");
   const QCommandLineOption compareMap("compare-map", {}, "MAP");
-  parser.addOptions({help, version, presentation, forces, centres, example, screenshot, crankAngle, animation, frames,
-                     frameDelay, compare, compareMap});
+  parser.addOptions({help, version, presentation, highContrast, forces, centres, example, screenshot, crankAngle,
+                     animation, frames, frameDelay, compare, compareMap});
   parser.addPositionalArgument("file", {});
   QStringList arguments{"linkwright"};
   for (const std::string& a : args) arguments << QString::fromStdString(a);
@@ -122,6 +125,7 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
   o.help = parser.isSet(help);
   o.version = parser.isSet(version);
   o.presentation = parser.isSet(presentation);
+  o.highContrast = parser.isSet(highContrast);
   o.forces = parser.isSet(forces);
   o.centres = parser.isSet(centres);
   if (parser.isSet(example)) {

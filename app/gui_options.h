@@ -1,6 +1,7 @@
 #pragma once
 // The GUI's command line: linkwright [FILE] [--example NAME] [--screenshot FILE.png]
-// [--animation FILE.gif [--frames N] [--frame-delay MS]] [--presentation] [--forces] [--centres]
+// [--animation FILE.gif [--frames N] [--frame-delay MS]] [--presentation] [--high-contrast]
+// [--forces] [--centres]
 // [--crank-angle DEG] [--compare TABLE.csv [--compare-map MAP]] [--help] [--version].
 
 #include <optional>
@@ -20,8 +21,9 @@ struct GuiOptions {
   std::optional<std::string> compare;     ///< a table from another tool: open File ▸ Compare… on it
   std::optional<std::string> compareMap;  ///< its column mapping (linkwright-cli compare's --map), compared at once
   bool presentation = false;
-  bool forces = false;   ///< start on the Forces tab with force arrows shown
-  bool centres = false;  ///< draw the instant centres and centrodes
+  bool highContrast = false;  ///< start in View ▸ High contrast
+  bool forces = false;        ///< start on the Forces tab with force arrows shown
+  bool centres = false;       ///< draw the instant centres and centrodes
   bool help = false;
   bool version = false;
 };

@@ -4,6 +4,7 @@
 #include "ui/canvas/force_arrows_item.h"
 #include "ui/canvas/linkage_view.h"
 #include "ui/classroom/polygon_panel.h"
+#include "ui/colors.h"
 #include "ui/compare/compare_dialog.h"
 #include "ui/dialogs/attach_dyad_dialog.h"
 #include "ui/document/design_templates.h"
@@ -253,6 +254,11 @@ void MainWindow::buildMenus() {
   m_presentationAction->setCheckable(true);
   m_presentationAction->setShortcut(Qt::Key_F11);
   connect(m_presentationAction, &QAction::toggled, this, &MainWindow::setPresentationMode);
+  // One key away in front of a class; presentation mode does not impose it.
+  m_highContrastAction = view->addAction(tr("&High contrast"));
+  m_highContrastAction->setCheckable(true);
+  m_highContrastAction->setShortcut(Qt::Key_F12);
+  connect(m_highContrastAction, &QAction::toggled, this, &MainWindow::setHighContrast);
 
   buildExamplesMenu(menuBar()->addMenu(tr("E&xamples")));
 
@@ -439,6 +445,17 @@ void MainWindow::setPresentationMode(bool on) {
   on ? showFullScreen() : showNormal();
   m_canvas->fitToView();
 }
+
+void MainWindow::setHighContrast(bool on) {
+  if (on == highContrast()) return;
+  setTheme(on ? Theme::HighContrast : Theme::Normal);
+  if (m_highContrastAction->isChecked() != on) m_highContrastAction->setChecked(on);
+  m_canvas->refreshColors();
+  m_plots->refreshColors();
+  m_forcePlots->refreshColors();
+}
+
+bool MainWindow::highContrast() const { return theme() == Theme::HighContrast; }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
   if (!maybeSave()) {

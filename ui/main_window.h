@@ -101,6 +101,10 @@ public:
   /// Large fonts and lines, full screen, side panels hidden: for the lecture hall.
   void setPresentationMode(bool on);
   bool presentationMode() const { return m_presentation; }
+  /// View ▸ High contrast (--high-contrast): black on white, darker link colours, thicker grid
+  /// axes (ui/colors.h); the canvas and every chart are drawn again in it.
+  void setHighContrast(bool on);
+  bool highContrast() const;
   /// Shows the Forces tab and the canvas's force arrows (linkwright --forces).
   void showForces();
 
@@ -152,6 +156,7 @@ private:
   QMenu* m_recentMenu = nullptr;
   QAction* m_centresAction = nullptr;
   QAction* m_presentationAction = nullptr;
+  QAction* m_highContrastAction = nullptr;
   bool m_presentation = false;
   QFont m_normalFont;
 };

@@ -54,6 +54,8 @@ public:
   /// Text and lines of every chart at `factor` times their normal size; above 1 (presentation
   /// mode) the quality bar and the quantity selector are hidden so the charts get the room.
   void setPresentationScale(double factor);
+  /// Draws the charts and their curves in the current theme's colours (ui/colors.h).
+  void refreshColors();
 
   /// The charts in display order (angles, ω, α, position, velocity, acceleration), for image
   /// export. A chart with nothing selected or nothing to show isHidden().
