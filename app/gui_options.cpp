@@ -73,7 +73,7 @@ std::string guiUsage() {
          "  --frames N          frames per cycle of the animation, 2 to 720 (default 72)\n"
          "  --frame-delay MS    time each frame shows, ms, 20 to 5000, rounded to 10 ms\n"
          "                      (default 40: 25 frames per second)\n"
-         "  --presentation      large fonts and lines, full screen\n"
+         "  --presentation      large fonts and lines, full screen, the big read-out\n"
          "  --high-contrast     black on white, darker link colours, thicker grid axes (a\n"
          "                      projector; View ▸ High contrast, F12)\n"
          "  --forces            open on the Forces tab, with force arrows on the canvas\n"

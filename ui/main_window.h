@@ -25,6 +25,7 @@ struct DyadRequest;
 namespace linkwright::ui {
 
 class AnalysisPanel;
+class BigReadout;
 class CrankAnimator;
 class DimensionsPanel;
 class DrivePanel;
@@ -105,6 +106,10 @@ public:
   /// axes (ui/colors.h); the canvas and every chart are drawn again in it.
   void setHighContrast(bool on);
   bool highContrast() const;
+  /// View ▸ Big read-out: the input and the main outputs in large type above the canvas and
+  /// the plots (ui/classroom/big_readout.h). Presentation mode shows it while it lasts.
+  void setShowBigReadout(bool show);
+  BigReadout* bigReadout() const { return m_bigReadout; }
   /// Shows the Forces tab and the canvas's force arrows (linkwright --forces).
   void showForces();
 
@@ -157,6 +162,9 @@ private:
   QAction* m_centresAction = nullptr;
   QAction* m_presentationAction = nullptr;
   QAction* m_highContrastAction = nullptr;
+  QAction* m_bigReadoutAction = nullptr;
+  BigReadout* m_bigReadout = nullptr;
+  bool m_bigReadoutBeforePresentation = false;  // the toggle's state, put back on leaving
   bool m_presentation = false;
   QFont m_normalFont;
 };

@@ -1,10 +1,12 @@
-// View ▸ High contrast (ui/colors.h): every high-contrast colour a link, slider or transmission
-// angle is drawn in reads on white at WCAG's 4.5:1; switching recolours the canvas's links, the
-// plots' curves and the charts' frame, and back.
+// View ▸ High contrast (ui/colors.h) and the big read-out in the window: every high-contrast
+// colour a link, slider or transmission angle is drawn in reads on white at WCAG's 4.5:1;
+// switching recolours the canvas's links, the plots' curves and the charts' frame, and back;
+// presentation mode brings the read-out and takes it away again.
 
 #include "ui/canvas/link_item.h"
 #include "ui/canvas/linkage_scene.h"
 #include "ui/canvas/linkage_view.h"
+#include "ui/classroom/big_readout.h"
 #include "ui/colors.h"
 #include "ui/main_window.h"
 #include "ui/plots/plot_panel.h"
@@ -94,4 +96,18 @@ TEST_CASE("high contrast recolours the canvas's links and the plots' curves, and
   CHECK(sceneOf(window).linkItem(fourbar::kRocker)->pen().color() == normal.links[fourbar::kRocker.index]);
   CHECK(curveColour(window, PlotQuantity::RockerAngle) == normal.links[fourbar::kRocker.index]);
   CHECK(chart->axes(Qt::Vertical).front()->labelsBrush() == ownLabels);
+}
+
+TEST_CASE("presentation mode brings the big read-out and leaving takes it away", "[ui][window][readout]") {
+  MainWindow window;
+  CHECK(window.bigReadout()->isHidden());
+  window.setPresentationMode(true);
+  CHECK_FALSE(window.bigReadout()->isHidden());
+  // Larger than the window's text, itself enlarged for the class (and shrunk only to fit).
+  CHECK(window.bigReadout()->font().pointSizeF() > window.font().pointSizeF());
+  CHECK_FALSE(window.highContrast());  // presentation does not impose it
+  window.setPresentationMode(false);
+  CHECK(window.bigReadout()->isHidden());
+  window.setShowBigReadout(true);
+  CHECK_FALSE(window.bigReadout()->isHidden());
 }
