@@ -20,6 +20,14 @@ using namespace linkwright::ui;
 namespace k = linkwright::kinematics;
 namespace fourbar = linkwright::kinematics::fourbar;
 
+// Catch prints QStrings as text.
+namespace Catch {
+template <>
+struct StringMaker<QString> {
+  static std::string convert(const QString& s) { return '"' + s.toStdString() + '"'; }
+};
+}  // namespace Catch
+
 namespace {
 
 // The expected text, written independently of the read-out's formatting: fixed decimals and a
@@ -56,7 +64,7 @@ TEST_CASE("the big read-out gives the pose's values at each crank angle it moves
     const auto& e = readout.entries();
     CHECK(e[0].value == degrees(deg));
     CHECK(e[1].value == degrees(theta4));
-    CHECK(e[2].value == fixed(p.linkOmega[fourbar::kRocker.index], 2) + " rad/s");
+    CHECK(e[2].value == fixed(k::radToDeg(p.linkOmega[fourbar::kRocker.index]), 1) + " deg/s");  // the plots' default
     CHECK(e[3].value == degrees(k::radToDeg(p.transmissionAngle[fourbar::kC.index])));
     CHECK(
         readout.text() ==
