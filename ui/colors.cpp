@@ -80,7 +80,7 @@ const Palette kHighContrast{
     .gridAxisWidthPx = 2.0,
     .gridLabel = QColor{0, 0, 0},
     .chart = ChartColors{QColor{255, 255, 255}, QColor{0, 0, 0}, QColor{0, 0, 0}, QColor{190, 190, 190}},
-    .crankCursor = QColor{0xb0, 0x00, 0x20},
+    .crankCursor = QColor{0xc0, 0x20, 0x20},  // as Normal: the charts keep the cursor they were made with
     .limitLine = QColor{0x30, 0x30, 0x30},
     .limitPoint = QColor{0, 0, 0},
     .comparedRowFill = QColor{255, 255, 255},
