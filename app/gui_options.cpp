@@ -77,7 +77,9 @@ std::string guiUsage() {
          "                      plots' checkboxes: rocker_angle, transmission_angle,\n"
          "                      rocker_omega, C_x, velocity_ratio, mechanical_advantage…\n"
          "                      (a key the linkage does not have is refused, listing its keys)\n"
-         "  --presentation      large fonts and lines, full screen\n"
+         "  --presentation      large fonts and lines, full screen, the big read-out\n"
+         "  --high-contrast     black on white, darker link colours, thicker grid axes (a\n"
+         "                      projector; View ▸ High contrast, F12)\n"
          "  --forces            open on the Forces tab, with force arrows on the canvas\n"
          "  --centres           draw the instant centres, Kennedy's lines and the centrodes\n"
          "                      (four-bars and slider-cranks; View ▸ Instant centres)\n"
@@ -97,6 +99,7 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
   const QCommandLineOption help({"h", "help"}, {});
   const QCommandLineOption version("version", {});
   const QCommandLineOption presentation("presentation", {});
+  const QCommandLineOption highContrast("high-contrast", {});
   const QCommandLineOption forces("forces", {});
   const QCommandLineOption centres("centres", {});
   const QCommandLineOption example("example", {}, "NAME");
@@ -108,8 +111,8 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
   const QCommandLineOption compare("compare", {}, "TABLE");
   const QCommandLineOption compareMap("compare-map", {}, "MAP");
   const QCommandLineOption plots("plots", {}, "KEYS");
-  parser.addOptions({help, version, presentation, forces, centres, example, screenshot, crankAngle, animation, frames,
-                     frameDelay, compare, compareMap, plots});
+  parser.addOptions({help, version, presentation, highContrast, forces, centres, example, screenshot, crankAngle,
+                     animation, frames, frameDelay, compare, compareMap, plots});
   parser.addPositionalArgument("file", {});
   QStringList arguments{"linkwright"};
   for (const std::string& a : args) arguments << QString::fromStdString(a);
@@ -128,6 +131,7 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
   o.help = parser.isSet(help);
   o.version = parser.isSet(version);
   o.presentation = parser.isSet(presentation);
+  o.highContrast = parser.isSet(highContrast);
   o.forces = parser.isSet(forces);
   o.centres = parser.isSet(centres);
   if (parser.isSet(example)) {

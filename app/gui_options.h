@@ -1,7 +1,8 @@
 #pragma once
 // The GUI's command line: linkwright [FILE] [--example NAME] [--screenshot FILE.png]
-// [--animation FILE.gif [--frames N] [--frame-delay MS]] [--presentation] [--forces] [--centres]
-// [--crank-angle DEG] [--plots KEY,…] [--compare TABLE.csv [--compare-map MAP]] [--help] [--version].
+// [--animation FILE.gif [--frames N] [--frame-delay MS]] [--presentation] [--high-contrast]
+// [--forces] [--centres] [--crank-angle DEG] [--plots KEY,…] [--compare TABLE.csv [--compare-map MAP]]
+// [--help] [--version].
 
 #include <optional>
 #include <string>
@@ -21,8 +22,9 @@ struct GuiOptions {
   std::optional<std::string> compareMap;  ///< its column mapping (linkwright-cli compare's --map), compared at once
   std::optional<std::string> plots;       ///< --plots: the keys of the quantities to plot, comma-separated
   bool presentation = false;
-  bool forces = false;   ///< start on the Forces tab with force arrows shown
-  bool centres = false;  ///< draw the instant centres and centrodes
+  bool highContrast = false;  ///< start in View ▸ High contrast
+  bool forces = false;        ///< start on the Forces tab with force arrows shown
+  bool centres = false;       ///< draw the instant centres and centrodes
   bool help = false;
   bool version = false;
 };

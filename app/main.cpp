@@ -129,6 +129,7 @@ int main(int argc, char** argv) {
   }
   if (options->crankAngleDeg) window.document()->setCrankAngle(k::degToRad(*options->crankAngleDeg));
   if (options->presentation) window.setPresentationMode(true);
+  if (options->highContrast) window.setHighContrast(true);
   if (options->forces) window.showForces();
   if (options->centres) window.setShowInstantCentres(true);
   if (options->plots && !selectPlots(window, *options->plots)) return 2;

@@ -1,86 +1,112 @@
 #pragma once
-// Every colour the designer draws with, in one table. Links, sliders and transmission angles
-// have one colour each, shared by the canvas and the plots so that a link is the same colour
-// in the drawing and on every chart: link 0 is the crank (orange), 1 the coupler (blue), 2 the
-// rocker (green), as in a four-bar; further links (six-bars, quick returns) take the colours
-// after them. Joint-force curves take a palette distinct from the links'.
+// Every colour the designer draws with, in one table per theme. Links, sliders and transmission
+// angles have one colour each, shared by the canvas and the plots so that a link is the same
+// colour in the drawing and on every chart: link 0 is the crank (orange), 1 the coupler (blue),
+// 2 the rocker (green), as in a four-bar; further links (six-bars, quick returns) take the
+// colours after them. Joint-force curves take a palette distinct from the links'.
+//
+// Two themes: Normal, and HighContrast for a projector (View ▸ High contrast, --high-contrast):
+// black text and white backgrounds on the canvas and the charts, link colours after the
+// Okabe–Ito palette darkened until each has a contrast ratio of at least 4.5:1 against white
+// (WCAG 2) and the first three (crank, coupler, rocker) differ in lightness as well as hue, so
+// they stay apart for colour-blind viewers; thicker grid axes, opaque label boxes.
+//
+// The theme is one process-wide setting, like QApplication::palette(): a look, not model state.
+// MainWindow::setHighContrast sets it and then has the canvas and the charts redraw and take
+// their colours anew; everything else reads colors() when it draws.
 
 #include <QColor>
 
 #include <array>
 #include <cstddef>
+#include <optional>
 
 namespace linkwright::ui {
 
-inline constexpr std::array<QColor, 8> kLinkPalette{
-    QColor{230, 85, 13},  QColor{49, 130, 189}, QColor{49, 163, 84}, QColor{166, 118, 29},
-    QColor{23, 150, 170}, QColor{188, 80, 144}, QColor{90, 90, 160}, QColor{120, 120, 40},
+enum class Theme { Normal, HighContrast };
+
+/// A chart's frame and text; the Normal theme keeps Qt Charts' own (chart_palette.h).
+struct ChartColors {
+  QColor background;
+  QColor text;      ///< title, axis labels and titles, legend
+  QColor axisLine;  ///< the axes' own lines
+  QColor grid;
 };
 
+struct Palette {
+  // Shared by the canvas and the plots.
+  std::array<QColor, 8> links;
+  std::array<QColor, 3> sliders;
+  std::array<QColor, 3> transmissions;
+  std::array<QColor, 8> jointForces;
+
+  // The canvas.
+  QColor canvasBackground;
+  QColor couplerPoint;
+  int bodyFillAlpha;
+  QColor frame;
+  QColor pinOutline;
+  QColor pinFill;
+  QColor groundFill;
+  QColor hot;
+  QColor velocity;
+  QColor acceleration;
+  QColor feasible;
+  QColor infeasible;
+  QColor infeasibleFill;
+  QColor label;
+  QColor labelBox;
+  QColor refusal;
+  QColor grid;
+  QColor gridAxis;
+  double gridAxisWidthPx;  ///< the grid's x = 0 and y = 0 lines, at presentation scale 1
+  QColor gridLabel;
+
+  // The plots.
+  std::optional<ChartColors> chart;  ///< nullopt: Qt Charts' light theme as it comes
+  QColor crankCursor;
+  QColor limitLine;
+  QColor limitPoint;
+  // Another tool's rows over the plots (File ▸ Compare…): hollow in the curve's colour where
+  // they agree, filled red where they are beyond the tolerance, as the dialog's rows are
+  // highlighted.
+  QColor comparedRowFill;
+  QColor flaggedRow;
+  QColor flaggedRowBackground;
+
+  // The panels and the message banner.
+  QColor grashofCrankBadge;   ///< the crank turns fully
+  QColor grashofRockerBadge;  ///< it does not
+  QColor linkageBadge;
+  QColor errorBanner;
+  QColor errorBannerBorder;
+  QColor infoBanner;
+  QColor infoBannerBorder;
+};
+
+/// The table of `theme`.
+const Palette& paletteOf(Theme theme);
+/// The theme drawn with now (Normal at start).
+Theme theme();
+/// Switches the theme; the caller has the views redraw (MainWindow::setHighContrast).
+void setTheme(Theme theme);
+/// The current theme's table.
+inline const Palette& colors() { return paletteOf(theme()); }
+
 /// The colour of moving link `index` (Mechanism::links order).
-inline QColor linkColor(std::size_t index) { return kLinkPalette[index % kLinkPalette.size()]; }
+inline QColor linkColor(std::size_t index) { return colors().links[index % colors().links.size()]; }
 
 /// The colour of a slider's block and of its position curves (`ordinal`: 0 for the first slider).
-inline QColor sliderColor(std::size_t ordinal) {
-  static constexpr std::array<QColor, 3> palette{QColor{117, 107, 177}, QColor{214, 39, 40}, QColor{60, 60, 60}};
-  return palette[ordinal % palette.size()];
-}
+inline QColor sliderColor(std::size_t ordinal) { return colors().sliders[ordinal % colors().sliders.size()]; }
 
 /// The colour of the transmission angle at the `ordinal`-th dyad joint that has one.
 inline QColor transmissionColor(std::size_t ordinal) {
-  static constexpr std::array<QColor, 3> palette{QColor{140, 86, 75}, QColor{110, 110, 110}, QColor{200, 140, 60}};
-  return palette[ordinal % palette.size()];
+  return colors().transmissions[ordinal % colors().transmissions.size()];
 }
 
 /// The colour of the `ordinal`-th joint's force curves.
 inline QColor jointForceColor(std::size_t ordinal) {
-  static constexpr std::array<QColor, 8> palette{
-      QColor{31, 119, 180}, QColor{214, 39, 40},  QColor{44, 160, 44}, QColor{148, 103, 189},
-      QColor{255, 127, 14}, QColor{23, 190, 207}, QColor{140, 86, 75}, QColor{127, 127, 127},
-  };
-  return palette[ordinal % palette.size()];
+  return colors().jointForces[ordinal % colors().jointForces.size()];
 }
-
-// The canvas.
-inline constexpr QColor kCrankColor = kLinkPalette[0];
-inline constexpr QColor kCouplerColor = kLinkPalette[1];
-inline constexpr QColor kRockerColor = kLinkPalette[2];
-inline constexpr QColor kCouplerPointColor{117, 107, 177};
-inline constexpr int kBodyFillAlpha = 45;
-inline constexpr QColor kFrameColor{90, 90, 90};
-inline constexpr QColor kPinOutlineColor{40, 40, 40};
-inline constexpr QColor kPinFillColor{255, 255, 255};
-inline constexpr QColor kGroundFillColor{225, 225, 225};
-inline constexpr QColor kHotColor{255, 200, 0, 110};
-inline constexpr QColor kVelocityColor{197, 27, 125};
-inline constexpr QColor kAccelerationColor{0, 128, 128};
-inline constexpr QColor kFeasibleColor{140, 200, 90, 130};
-inline constexpr QColor kInfeasibleColor{150, 150, 150};
-inline constexpr QColor kInfeasibleFillColor{150, 150, 150, 40};
-inline constexpr QColor kLabelColor{50, 50, 50};
-inline constexpr QColor kLabelBoxColor{255, 255, 255, 235};
-inline constexpr QColor kRefusalColor{190, 20, 20};
-inline constexpr QColor kGridColor{232, 232, 232};
-inline constexpr QColor kGridAxisColor{200, 200, 200};
-inline constexpr QColor kGridLabelColor{150, 150, 150};
-
-// The plots.
-inline constexpr QColor kCrankCursorColor{0xc0, 0x20, 0x20};
-inline constexpr QColor kLimitLineColor{0x55, 0x55, 0x55};
-inline constexpr QColor kLimitPointColor{0, 0, 0};
-// Another tool's rows over the plots (File ▸ Compare…): hollow in the curve's colour where they
-// agree, filled red where they are beyond the tolerance, as the dialog's rows are highlighted.
-inline constexpr QColor kComparedRowFillColor{255, 255, 255};
-inline constexpr QColor kFlaggedRowColor{0xd1, 0x34, 0x38};
-inline constexpr QColor kFlaggedRowBackground{255, 205, 200};
-
-// The panels and the message banner.
-inline constexpr QColor kGrashofCrankBadgeColor{0x1b, 0x7f, 0x3b};   ///< the crank turns fully
-inline constexpr QColor kGrashofRockerBadgeColor{0xa1, 0x5c, 0x00};  ///< it does not
-inline constexpr QColor kLinkageBadgeColor{0x3b, 0x5b, 0x92};
-inline constexpr QColor kErrorBannerColor{0xfd, 0xe7, 0xe9};
-inline constexpr QColor kErrorBannerBorderColor{0xd1, 0x34, 0x38};
-inline constexpr QColor kInfoBannerColor{0xe7, 0xf0, 0xfd};
-inline constexpr QColor kInfoBannerBorderColor{0x2b, 0x6c, 0xb0};
 
 }  // namespace linkwright::ui

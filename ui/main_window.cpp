@@ -3,7 +3,9 @@
 #include "ui/animation/crank_animator.h"
 #include "ui/canvas/force_arrows_item.h"
 #include "ui/canvas/linkage_view.h"
+#include "ui/classroom/big_readout.h"
 #include "ui/classroom/polygon_panel.h"
+#include "ui/colors.h"
 #include "ui/compare/compare_dialog.h"
 #include "ui/dialogs/attach_dyad_dialog.h"
 #include "ui/document/design_templates.h"
@@ -110,6 +112,9 @@ MainWindow::MainWindow(QWidget* parent)
   auto* layout = new QVBoxLayout(central);
   layout->setContentsMargins(4, 4, 4, 4);
   layout->addWidget(m_banner);
+  m_bigReadout = new BigReadout(m_document, this);
+  m_bigReadout->hide();
+  layout->addWidget(m_bigReadout);
   layout->addWidget(splitter, 1);
   setCentralWidget(central);
 
@@ -119,6 +124,7 @@ MainWindow::MainWindow(QWidget* parent)
   connect(m_forces, &ForceResults::changed, this, [this] { m_forceArrows->setForces(*m_document, *m_forces); });
   m_plots->setAngleUnit(m_settings->anglesInRadians() ? AngleUnit::Radians : AngleUnit::Degrees);
   m_forcePlots->setAngleUnit(m_settings->anglesInRadians() ? AngleUnit::Radians : AngleUnit::Degrees);
+  m_bigReadout->setAngleUnit(m_plots->angleUnit());
   m_document->setQuality(m_settings->samplingQuality());
   connect(m_plots->qualityBar(), &QualityBar::qualityChosen, this,
           [this](SamplingQuality quality) { m_settings->setSamplingQuality(quality); });
@@ -248,11 +254,21 @@ void MainWindow::buildMenus() {
     m_settings->setAnglesInRadians(on);
     m_plots->setAngleUnit(on ? AngleUnit::Radians : AngleUnit::Degrees);
     m_forcePlots->setAngleUnit(on ? AngleUnit::Radians : AngleUnit::Degrees);
+    m_bigReadout->setAngleUnit(on ? AngleUnit::Radians : AngleUnit::Degrees);
   });
   m_presentationAction = view->addAction(tr("Pr&esentation mode"));
   m_presentationAction->setCheckable(true);
   m_presentationAction->setShortcut(Qt::Key_F11);
   connect(m_presentationAction, &QAction::toggled, this, &MainWindow::setPresentationMode);
+  // One key away in front of a class; presentation mode does not impose it.
+  m_highContrastAction = view->addAction(tr("&High contrast"));
+  m_highContrastAction->setCheckable(true);
+  m_highContrastAction->setShortcut(Qt::Key_F12);
+  connect(m_highContrastAction, &QAction::toggled, this, &MainWindow::setHighContrast);
+  m_bigReadoutAction = view->addAction(tr("&Big read-out"));
+  m_bigReadoutAction->setCheckable(true);
+  m_bigReadoutAction->setShortcut(Qt::Key_F9);
+  connect(m_bigReadoutAction, &QAction::toggled, m_bigReadout, &QWidget::setVisible);
 
   buildExamplesMenu(menuBar()->addMenu(tr("E&xamples")));
 
@@ -433,12 +449,30 @@ void MainWindow::setPresentationMode(bool on) {
   m_plots->setPresentationScale(on ? kPresentationTextScale : 1.0);
   m_forcePlots->setPresentationScale(on ? kPresentationTextScale : 1.0);
   m_polygons->setPresentationScale(on ? kPresentationTextScale : 1.0);
+  m_bigReadout->setPresentationScale(on ? kPresentationTextScale : 1.0);
+  // The read-out comes with presentation mode, and goes as it was before.
+  if (on) m_bigReadoutBeforePresentation = m_bigReadoutAction->isChecked();
+  m_bigReadoutAction->setChecked(on || m_bigReadoutBeforePresentation);
   // The class watches the linkage and the plots; Space, the arrows' menu and F11 still work.
   m_sidePanel->setVisible(!on);
   if (m_presentationAction->isChecked() != on) m_presentationAction->setChecked(on);
   on ? showFullScreen() : showNormal();
   m_canvas->fitToView();
 }
+
+void MainWindow::setHighContrast(bool on) {
+  if (on == highContrast()) return;
+  setTheme(on ? Theme::HighContrast : Theme::Normal);
+  if (m_highContrastAction->isChecked() != on) m_highContrastAction->setChecked(on);
+  m_canvas->refreshColors();
+  m_plots->refreshColors();
+  m_forcePlots->refreshColors();
+  m_bigReadout->refreshColors();
+}
+
+bool MainWindow::highContrast() const { return theme() == Theme::HighContrast; }
+
+void MainWindow::setShowBigReadout(bool show) { m_bigReadoutAction->setChecked(show); }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
   if (!maybeSave()) {

@@ -25,6 +25,7 @@ struct DyadRequest;
 namespace linkwright::ui {
 
 class AnalysisPanel;
+class BigReadout;
 class CrankAnimator;
 class DimensionsPanel;
 class DrivePanel;
@@ -101,6 +102,14 @@ public:
   /// Large fonts and lines, full screen, side panels hidden: for the lecture hall.
   void setPresentationMode(bool on);
   bool presentationMode() const { return m_presentation; }
+  /// View ▸ High contrast (--high-contrast): black on white, darker link colours, thicker grid
+  /// axes (ui/colors.h); the canvas and every chart are drawn again in it.
+  void setHighContrast(bool on);
+  bool highContrast() const;
+  /// View ▸ Big read-out: the input and the main outputs in large type above the canvas and
+  /// the plots (ui/classroom/big_readout.h). Presentation mode shows it while it lasts.
+  void setShowBigReadout(bool show);
+  BigReadout* bigReadout() const { return m_bigReadout; }
   /// Shows the Forces tab and the canvas's force arrows (linkwright --forces).
   void showForces();
 
@@ -152,6 +161,10 @@ private:
   QMenu* m_recentMenu = nullptr;
   QAction* m_centresAction = nullptr;
   QAction* m_presentationAction = nullptr;
+  QAction* m_highContrastAction = nullptr;
+  QAction* m_bigReadoutAction = nullptr;
+  BigReadout* m_bigReadout = nullptr;
+  bool m_bigReadoutBeforePresentation = false;  // the toggle's state, put back on leaving
   bool m_presentation = false;
   QFont m_normalFont;
 };

@@ -26,8 +26,8 @@ MessageBanner::MessageBanner(QWidget* parent) : QFrame(parent), m_text(new QLabe
 void MessageBanner::showMessage(const QString& text, Kind kind) {
   const bool error = kind == Kind::Error;
   setStyleSheet(QString("linkwright--ui--MessageBanner { background: %1; border: 1px solid %2; border-radius: 4px; }")
-                    .arg((error ? kErrorBannerColor : kInfoBannerColor).name(),
-                         (error ? kErrorBannerBorderColor : kInfoBannerBorderColor).name()));
+                    .arg((error ? colors().errorBanner : colors().infoBanner).name(),
+                         (error ? colors().errorBannerBorder : colors().infoBannerBorder).name()));
   m_text->setText(text);
   show();
 }

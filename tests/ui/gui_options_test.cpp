@@ -27,16 +27,18 @@ Parsed parse(const std::vector<std::string>& args) {
 
 TEST_CASE("the designer's options are read in both value forms", "[ui][options]") {
   const auto p = parse({"--example=shaper", "--screenshot", "shot.png", "--crank-angle", "-30.5", "--presentation",
-                        "--forces", "--centres"});
+                        "--high-contrast", "--forces", "--centres"});
   REQUIRE(p.options);
   CHECK(p.options->example == "shaper");
   CHECK(p.options->screenshot == "shot.png");
   CHECK(p.options->crankAngleDeg == -30.5);
   CHECK(p.options->presentation);
+  CHECK(p.options->highContrast);
   CHECK(p.options->forces);
   CHECK(p.options->centres);
   CHECK_FALSE(p.options->file);
   CHECK_FALSE(parse({"--example=shaper"}).options->centres);
+  CHECK_FALSE(parse({"--example=shaper"}).options->highContrast);
 
   const auto file = parse({"arm.linkwright", "--crank-angle=90"});
   REQUIRE(file.options);

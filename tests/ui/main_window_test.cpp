@@ -249,6 +249,20 @@ TEST_CASE("presentation mode opens on every example, and only the bottom chart n
   }
 }
 
+TEST_CASE("presentation mode scales a slider-crank's charts after a four-bar's", "[ui][window]") {
+  // The four-bar's limit markers, emptied while hidden, used to crash Qt Charts when scaled.
+  ui::MainWindow window;
+  window.newDocument(*kinematics::designForExample("ls3-engine"));
+  QChart* chart = window.plots()->chartView(ui::QuantityKind::Position)->chart();
+  const auto size = [](const QFont& f) { return f.pixelSize() > 0 ? f.pixelSize() : f.pointSizeF(); };
+  const double title = size(chart->titleFont());
+  REQUIRE(title > 0.0);
+  window.setPresentationMode(true);
+  CHECK(size(chart->titleFont()) >= 1.5 * title);
+  window.setPresentationMode(false);
+  CHECK(size(chart->titleFont()) == title);
+}
+
 TEST_CASE("typing a length in the panel updates the badge and the plotted series as the core says", "[ui][window]") {
   ui::MainWindow window;
   auto* frame = window.dimensionsPanel()->lengthEditor(0)->findChild<QDoubleSpinBox*>();

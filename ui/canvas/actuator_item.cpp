@@ -53,8 +53,8 @@ void ActuatorItem::setPresentationScale(double factor) {
 }
 
 void ActuatorItem::applyPens() {
-  m_barrelOutline->setPen(cosmetic(kPinOutlineColor, kBarrelWidthPx * m_scale));
-  m_barrelFill->setPen(cosmetic(kGroundFillColor, (kBarrelWidthPx - 2.0 * kBarrelWallPx) * m_scale));
+  m_barrelOutline->setPen(cosmetic(colors().pinOutline, kBarrelWidthPx * m_scale));
+  m_barrelFill->setPen(cosmetic(colors().groundFill, (kBarrelWidthPx - 2.0 * kBarrelWallPx) * m_scale));
   m_rod->setPen(cosmetic(kRodColor, kRodWidthPx * m_scale));
 }
 

@@ -17,7 +17,7 @@ constexpr double kPathTolerancePx = 0.2;
 }  // namespace
 
 CouplerPathItem::CouplerPathItem(QGraphicsItem* parent) : QGraphicsPathItem(parent) {
-  QPen pen(kCouplerPointColor, canvas::kPathWidthPx, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin);
+  QPen pen(colors().couplerPoint, canvas::kPathWidthPx, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin);
   pen.setCosmetic(true);
   setPen(pen);
   setBrush(Qt::NoBrush);

@@ -87,7 +87,7 @@ void DrivenPathItem::setPresentationScale(double factor) {
 }
 
 void DrivenPathItem::applyPens() {
-  setPen(cosmetic(kFrameColor, kGuideWidthPx * m_scale, Qt::DashDotLine));
+  setPen(cosmetic(colors().frame, kGuideWidthPx * m_scale, Qt::DashDotLine));
   m_unreachable->setPen(cosmetic(kUnreachableColor, kUnreachableWidthPx * m_scale, Qt::SolidLine));
   QFont font;
   font.setPointSizeF(canvas::kLabelPointSize * m_scale);

@@ -65,7 +65,7 @@ QString degrees(double angle) { return numberText(k::radToDeg(angle), 'f', 1) + 
 
 FeasibleRangeItem::FeasibleRangeItem(QGraphicsItem* parent) : QGraphicsItem(parent), m_label(new LabelItem(this)) {
   setZValue(canvas::z::kRange);
-  m_label->setColor(kInfeasibleColor.darker(170));
+  m_label->setColor(colors().infeasible.darker(170));
   m_label->setBoxed(true);
   m_label->setPlacement(QPointF(0.0, 0.0), Qt::AlignHCenter | Qt::AlignVCenter);
 }
@@ -128,21 +128,21 @@ QRectF FeasibleRangeItem::boundingRect() const { return m_bounds; }
 void FeasibleRangeItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) {
   painter->setRenderHint(QPainter::Antialiasing);
   painter->setPen(Qt::NoPen);
-  painter->setBrush(kInfeasibleFillColor);
+  painter->setBrush(colors().infeasibleFill);
   painter->drawPath(m_infeasibleSectors);
-  painter->setBrush(QBrush(kInfeasibleColor, Qt::BDiagPattern));  // cosmetic pattern
+  painter->setBrush(QBrush(colors().infeasible, Qt::BDiagPattern));  // cosmetic pattern
   painter->drawPath(m_infeasibleSectors);
   painter->setBrush(Qt::NoBrush);
 
-  QPen rays(kInfeasibleColor, 1.0 * m_scale, Qt::DashLine);
+  QPen rays(colors().infeasible, 1.0 * m_scale, Qt::DashLine);
   rays.setCosmetic(true);
   painter->setPen(rays);
   painter->drawPath(m_limitRays);
-  QPen outline(kInfeasibleColor, 1.5 * m_scale, Qt::DotLine);
+  QPen outline(colors().infeasible, 1.5 * m_scale, Qt::DotLine);
   outline.setCosmetic(true);
   painter->setPen(outline);
   painter->drawPath(m_infeasibleArcs);
-  QPen arc(kFeasibleColor, canvas::kRangeArcWidthPx * m_scale, Qt::SolidLine, Qt::FlatCap);
+  QPen arc(colors().feasible, canvas::kRangeArcWidthPx * m_scale, Qt::SolidLine, Qt::FlatCap);
   arc.setCosmetic(true);
   painter->setPen(arc);
   painter->drawPath(m_feasibleArcs);

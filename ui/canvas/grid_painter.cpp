@@ -33,9 +33,9 @@ QString formatGridValue(double value, double spacing) {
 namespace {
 
 void drawLines(QPainter* painter, const QRectF& exposed, double spacing) {
-  QPen minor(kGridColor, 1.0);
+  QPen minor(colors().grid, 1.0);
   minor.setCosmetic(true);
-  QPen axis(kGridAxisColor, 1.0);
+  QPen axis(colors().gridAxis, colors().gridAxisWidthPx);
   axis.setCosmetic(true);
   const double x0 = std::ceil(exposed.left() / spacing);
   const double y0 = std::ceil(exposed.top() / spacing);
@@ -59,7 +59,7 @@ void drawLabels(QPainter* painter, const QRectF& visible, double spacing, const 
   QFont font = painter->font();
   font.setPointSizeF(8.0 * textScale);
   painter->setFont(font);
-  painter->setPen(kGridLabelColor);
+  painter->setPen(colors().gridLabel);
   const QFontMetricsF metrics(font);
   const double margin = 3.0 * textScale;
   const double baseline = device.bottom() - margin - metrics.descent();

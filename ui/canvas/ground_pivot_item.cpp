@@ -37,22 +37,22 @@ void GroundPivotItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, 
   painter->setRenderHint(QPainter::Antialiasing);
   if (m_hot) {
     painter->setPen(Qt::NoPen);
-    painter->setBrush(kHotColor);
+    painter->setBrush(colors().hot);
     painter->drawEllipse(QPointF(0, 0), canvas::kHotRadiusPx, canvas::kHotRadiusPx);
   }
-  QPen pen(kPinOutlineColor, canvas::kOutlineWidthPx);
+  QPen pen(colors().pinOutline, canvas::kOutlineWidthPx);
   pen.setJoinStyle(Qt::RoundJoin);
   painter->setPen(pen);
-  painter->setBrush(kGroundFillColor);
+  painter->setBrush(colors().groundFill);
   const QPointF triangle[] = {{0.0, 0.0}, {-kHalfBase * 0.75, kHeight}, {kHalfBase * 0.75, kHeight}};
   painter->drawPolygon(triangle, 3);
   painter->drawLine(QPointF(-kHalfBase - 3.0, kHeight), QPointF(kHalfBase + 3.0, kHeight));
-  QPen hatch(kPinOutlineColor, 1.0);
+  QPen hatch(colors().pinOutline, 1.0);
   painter->setPen(hatch);
   for (double x = -kHalfBase; x <= kHalfBase + 3.0; x += kHatchStep)
     painter->drawLine(QPointF(x, kHeight), QPointF(x - kHatchDepth, kHeight + kHatchDepth));
   painter->setPen(pen);
-  painter->setBrush(kPinFillColor);
+  painter->setBrush(colors().pinFill);
   painter->drawEllipse(QPointF(0, 0), canvas::kPinRadiusPx, canvas::kPinRadiusPx);
 }
 

@@ -27,16 +27,16 @@ void JointHandleItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, 
   painter->setRenderHint(QPainter::Antialiasing);
   if (m_hot) {
     painter->setPen(Qt::NoPen);
-    painter->setBrush(kHotColor);
+    painter->setBrush(colors().hot);
     painter->drawEllipse(QPointF(0, 0), canvas::kHotRadiusPx, canvas::kHotRadiusPx);
   }
   if (m_style == Style::Pin) {
-    painter->setPen(QPen(kPinOutlineColor, canvas::kOutlineWidthPx));
-    painter->setBrush(kPinFillColor);
+    painter->setPen(QPen(colors().pinOutline, canvas::kOutlineWidthPx));
+    painter->setBrush(colors().pinFill);
     painter->drawEllipse(QPointF(0, 0), canvas::kPinRadiusPx, canvas::kPinRadiusPx);
   } else if (m_style == Style::Vertex) {
-    painter->setPen(QPen(kPinOutlineColor, canvas::kOutlineWidthPx));
-    painter->setBrush(kGroundFillColor);
+    painter->setPen(QPen(colors().pinOutline, canvas::kOutlineWidthPx));
+    painter->setBrush(colors().groundFill);
     const double half = canvas::kDotRadiusPx;
     painter->drawRect(QRectF(-half, -half, 2.0 * half, 2.0 * half));
   } else {

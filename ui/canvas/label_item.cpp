@@ -13,7 +13,7 @@ namespace {
 constexpr double kBoxPaddingPx = 3.0;
 }
 
-LabelItem::LabelItem(QGraphicsItem* parent) : QGraphicsItem(parent), m_color(kLabelColor) {
+LabelItem::LabelItem(QGraphicsItem* parent) : QGraphicsItem(parent) {
   setFlag(ItemIgnoresTransformations);
   m_font.setPointSizeF(canvas::kLabelPointSize);
   setZValue(canvas::z::kLabels);
@@ -80,13 +80,14 @@ QRectF LabelItem::boundingRect() const {
 void LabelItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) {
   if (m_text.isEmpty()) return;
   const QRectF rect = textRect();
+  const QColor color = m_color.value_or(colors().label);
   if (m_boxed) {
-    painter->setPen(QPen(m_color, 1.0));
-    painter->setBrush(kLabelBoxColor);
+    painter->setPen(QPen(color, 1.0));
+    painter->setBrush(colors().labelBox);
     painter->drawRoundedRect(rect.adjusted(-kBoxPaddingPx, -kBoxPaddingPx, kBoxPaddingPx, kBoxPaddingPx), 3.0, 3.0);
   }
   painter->setFont(m_font);
-  painter->setPen(m_color);
+  painter->setPen(color);
   painter->drawText(rect, Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, m_text);
 }
 

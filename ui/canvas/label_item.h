@@ -7,6 +7,8 @@
 #include <QGraphicsItem>
 #include <QString>
 
+#include <optional>
+
 namespace linkwright::ui {
 
 class LabelItem : public QGraphicsItem {
@@ -15,6 +17,7 @@ public:
 
   void setText(const QString& text);
   QString text() const { return m_text; }
+  /// The text's colour; until set, the theme's label colour (colors().label) when drawn.
   void setColor(const QColor& color);
   /// Draws a white rounded box behind the text (for messages over the drawing).
   void setBoxed(bool boxed);
@@ -34,7 +37,7 @@ private:
   QRectF textRect() const;
 
   QString m_text;
-  QColor m_color;
+  std::optional<QColor> m_color;  // nullopt: the theme's
   QFont m_font;
   bool m_boxed = false;
   double m_maximumWidth = 0.0;

@@ -40,14 +40,14 @@ QString formatMagnitude(double value) {
 LinkageScene::LinkageScene(QObject* parent)
     : QGraphicsScene(parent), m_range(new FeasibleRangeItem), m_centres(new InstantCentresItem),
       m_message(new LabelItem) {
-  setBackgroundBrush(Qt::white);
+  setBackgroundBrush(colors().canvasBackground);
   addItem(m_range);
   addItem(m_centres);
   m_centres->setVisible(false);
   addItem(m_message);
   m_message->setBoxed(true);
   m_message->setMaximumWidth(kMessageWidthPx);
-  m_message->setColor(kRefusalColor);
+  m_message->setColor(colors().refusal);
   m_message->setPlacement(QPointF(14.0, 14.0), Qt::AlignLeft | Qt::AlignTop);
   m_message->setZValue(canvas::z::kMessage);
   m_message->setVisible(false);
@@ -90,8 +90,8 @@ void LinkageScene::rebuildArrows(std::size_t points) {
   m_accelerationArrows.assign(points, nullptr);
   for (std::size_t i = 0; i < points; ++i) {
     if (m_items->plan().ground[i]) continue;
-    m_velocityArrows[i] = new ArrowItem(kVelocityColor);
-    m_accelerationArrows[i] = new ArrowItem(kAccelerationColor);
+    m_velocityArrows[i] = new ArrowItem(colors().velocity);
+    m_accelerationArrows[i] = new ArrowItem(colors().acceleration);
     for (ArrowItem* arrow : {m_velocityArrows[i], m_accelerationArrows[i]}) {
       addItem(arrow);
       arrow->setVisible(false);
@@ -188,6 +188,14 @@ void LinkageScene::setPresentationScale(double factor) {
   for (auto* arrows : {&m_velocityArrows, &m_accelerationArrows})
     for (ArrowItem* arrow : *arrows)
       if (arrow != nullptr) arrow->setPresentationScale(factor);
+}
+
+void LinkageScene::refreshColors(const MechanismDocument& document) {
+  setBackgroundBrush(colors().canvasBackground);
+  m_message->setColor(colors().refusal);
+  m_items.reset();  // bars, plates, blocks, slideways and arrows were given their colours when made
+  updateDesign(document);
+  update();
 }
 
 void LinkageScene::setShowVelocityArrows(bool show) {

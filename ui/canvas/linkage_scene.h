@@ -47,6 +47,9 @@ public:
   void updatePose(const MechanismDocument& document);
 
   void setPresentationScale(double factor);
+  /// Takes the current theme's colours (ui/colors.h): the items that keep a colour are made
+  /// anew from `document`, the rest are drawn again.
+  void refreshColors(const MechanismDocument& document);
   void setShowVelocityArrows(bool show);
   void setShowAccelerationArrows(bool show);
   /// The instant centres, Kennedy's lines and the centrodes (instant_centres_item.h), solved

@@ -77,6 +77,11 @@ void LinkageView::setPresentationScale(double factor) {
   viewport()->update();
 }
 
+void LinkageView::refreshColors() {
+  m_scene->refreshColors(*m_document);
+  viewport()->update();
+}
+
 double LinkageView::pixelsPerUnit() const { return std::abs(transform().m11()); }
 
 double LinkageView::gridSpacing() const { return ui::gridSpacing(pixelsPerUnit()); }
@@ -215,7 +220,7 @@ void LinkageView::scrollByPixels(const QPointF& delta) {
 }
 
 void LinkageView::drawBackground(QPainter* painter, const QRectF& rect) {
-  painter->fillRect(rect, Qt::white);
+  painter->fillRect(rect, colors().canvasBackground);
   const QRectF visible = viewportTransform().inverted().mapRect(QRectF(viewport()->rect()));
   paintGrid(painter, rect, visible, QString::fromStdString(m_document->lengthUnit()), m_presentationScale);
 }
@@ -224,7 +229,7 @@ void LinkageView::drawForeground(QPainter* painter, const QRectF& rect) {
   QGraphicsView::drawForeground(painter, rect);
   if (m_gesture != Gesture::Pick || m_pickMode != PickMode::Pose) return;
   // The direction being dragged, as a rubber band from the pressed point.
-  QPen pen(kLabelColor, 1.5 * m_presentationScale, Qt::DashLine);
+  QPen pen(colors().label, 1.5 * m_presentationScale, Qt::DashLine);
   pen.setCosmetic(true);
   painter->setPen(pen);
   painter->drawLine(sceneAt(m_pickStart), sceneAt(m_lastPointer));

@@ -44,6 +44,8 @@ public:
   /// 1 normal; about 2 for presentation (thicker links, bigger pins and labels).
   void setPresentationScale(double factor);
   double presentationScale() const { return m_presentationScale; }
+  /// Draws again in the current theme's colours (ui/colors.h), grid and background included.
+  void refreshColors();
 
   /// Screen pixels per model length unit at the current zoom.
   double pixelsPerUnit() const;

@@ -79,7 +79,7 @@ MechanismItems::MechanismItems(QGraphicsScene* scene, const k::Mechanism& m, Dra
   for (const BodyShape& body : m_plan.bodies) {
     auto* plate = add(new QGraphicsPolygonItem);
     QColor fill = linkColor(body.link.index);
-    fill.setAlpha(kBodyFillAlpha);
+    fill.setAlpha(colors().bodyFillAlpha);
     plate->setBrush(fill);
     plate->setPen(cosmeticPen(linkColor(body.link.index), kPlateSideFraction * canvas::kLinkWidthPx));
     plate->setZValue(canvas::z::kCouplerTriangle);
@@ -88,11 +88,11 @@ MechanismItems::MechanismItems(QGraphicsScene* scene, const k::Mechanism& m, Dra
   for (const SlotShape& slot : m_plan.slottedLinks) {
     m_slots.push_back(add(new SlottedLinkItem(linkColor(slot.link.index))));
     // The block is a body of its own (the dyad's middle link): neutral, so it reads on the bar.
-    m_slotBlocks.push_back(add(new SliderBlockItem(kFrameColor, kSlotBlockLengthPx, kSlotBlockHeightPx)));
+    m_slotBlocks.push_back(add(new SliderBlockItem(colors().frame, kSlotBlockLengthPx, kSlotBlockHeightPx)));
   }
   for (const SliderShape& slider : m_plan.sliders) {
     const k::Guide& guide = sliderGuide(m, slider);
-    const QColor guideColor = guide.link ? linkColor(guide.link->index) : kFrameColor;
+    const QColor guideColor = guide.link ? linkColor(guide.link->index) : colors().frame;
     m_slideways.push_back(add(new SlidewayItem(slider.onGround, kBlockHeightPx + 2.0, guideColor)));
     m_blocks.push_back(add(new SliderBlockItem(sliderColor(slider.ordinal), kBlockLengthPx, kBlockHeightPx)));
   }
@@ -100,12 +100,12 @@ MechanismItems::MechanismItems(QGraphicsScene* scene, const k::Mechanism& m, Dra
   m_slotReach.assign(m_plan.slottedLinks.size(), 0.0);
   for (std::size_t i = 0; i < m_plan.frameLines.size(); ++i) {
     auto* line = add(new QGraphicsLineItem);
-    line->setPen(cosmeticPen(kFrameColor, canvas::kFrameWidthPx, Qt::DashLine));
+    line->setPen(cosmeticPen(colors().frame, canvas::kFrameWidthPx, Qt::DashLine));
     line->setZValue(canvas::z::kFrame);
     m_frameLines.push_back(line);
   }
   for (std::size_t i = 0; i < m_plan.constraintBars.size(); ++i)
-    m_constraintBars.push_back(add(new LinkItem(kFrameColor)));
+    m_constraintBars.push_back(add(new LinkItem(colors().frame)));
   for (std::size_t i = 0; i < m_plan.drivenPaths.size(); ++i) {
     m_drivenPaths.push_back(add(new DrivenPathItem));
     m_vertexHandles.emplace_back();
@@ -121,7 +121,7 @@ MechanismItems::MechanismItems(QGraphicsScene* scene, const k::Mechanism& m, Dra
   for (std::size_t i = 0; i < points; ++i) {
     if (m_plan.ground[i]) m_grounds[i] = add(new GroundPivotItem);
     else if (m_plan.attached[i])
-      m_joints[i] = add(new JointHandleItem(JointHandleItem::Style::Dot, kCouplerPointColor));
+      m_joints[i] = add(new JointHandleItem(JointHandleItem::Style::Dot, colors().couplerPoint));
     else m_joints[i] = add(new JointHandleItem(JointHandleItem::Style::Pin));
     m_labels[i] = add(new LabelItem);
     m_labels[i]->setText(pointDisplayName(m.points[i].name));
@@ -400,7 +400,7 @@ void MechanismItems::setPresentationScale(double factor) {
   for (CouplerPathItem* p : m_paths)
     if (p != nullptr) p->setPresentationScale(factor);
   for (QGraphicsLineItem* line : m_frameLines)
-    line->setPen(cosmeticPen(kFrameColor, canvas::kFrameWidthPx * factor, Qt::DashLine));
+    line->setPen(cosmeticPen(colors().frame, canvas::kFrameWidthPx * factor, Qt::DashLine));
   for (std::size_t b = 0; b < m_bodies.size(); ++b)
     m_bodies[b]->setPen(
         cosmeticPen(linkColor(m_plan.bodies[b].link.index), kPlateSideFraction * canvas::kLinkWidthPx * factor));

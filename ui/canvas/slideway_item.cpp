@@ -45,10 +45,10 @@ void SlidewayItem::setPresentationScale(double factor) {
 void SlidewayItem::applyPens() {
   const double inside = m_clearance * m_scale;
   const double walls = inside + 2.0 * kWallPx * m_scale;
-  m_hatch->setPen(cosmetic(QBrush(kPinOutlineColor, Qt::BDiagPattern), walls + 2.0 * kHatchPx * m_scale));
-  m_walls->setPen(cosmetic(kPinOutlineColor, walls));
+  m_hatch->setPen(cosmetic(QBrush(colors().pinOutline, Qt::BDiagPattern), walls + 2.0 * kHatchPx * m_scale));
+  m_walls->setPen(cosmetic(colors().pinOutline, walls));
   m_inside->setPen(cosmetic(Qt::white, inside));
-  if (m_onGround) m_axis->setPen(cosmetic(kFrameColor, 1.0 * m_scale, Qt::DashDotLine));
+  if (m_onGround) m_axis->setPen(cosmetic(colors().frame, 1.0 * m_scale, Qt::DashDotLine));
   else m_axis->setPen(cosmetic(m_color, 2.0 * m_scale, Qt::DashLine));
 }
 

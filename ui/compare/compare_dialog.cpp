@@ -46,7 +46,7 @@ void setRow(QTableWidget* table, int row, const QStringList& cells, bool flagged
   for (int c = 0; c < cells.size(); ++c) {
     auto* item = new QTableWidgetItem(cells[c]);
     if (c > 0) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    if (flagged) item->setBackground(kFlaggedRowBackground);
+    if (flagged) item->setBackground(colors().flaggedRowBackground);
     table->setItem(row, c, item);
   }
 }

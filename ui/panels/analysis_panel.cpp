@@ -125,7 +125,7 @@ void AnalysisPanel::refreshFourBar() {
   const QString unit = QString::fromStdString(m_document->lengthUnit());
   const k::GrashofReport& g = *a.grashof;
   // Green for a Grashof linkage whose crank turns, amber for the rest.
-  m_badge->setText(badge(g.inputFullyRotates ? kGrashofCrankBadgeColor : kGrashofRockerBadgeColor,
+  m_badge->setText(badge(g.inputFullyRotates ? colors().grashofCrankBadge : colors().grashofRockerBadge,
                          className(g.category),
                          tr("shortest: %1").arg(QString::fromUtf8(k::toString(g.shortest).data()))));
   const QString relation = g.category == k::GrashofClass::ChangePoint ? "=" : (g.sPlusL < g.pPlusQ ? "<" : ">");
@@ -151,7 +151,7 @@ void AnalysisPanel::refreshFourBar() {
 void AnalysisPanel::refreshLinkage() {
   const k::DesignAnalysis& a = m_document->analysis();
   const QString unit = QString::fromStdString(m_document->lengthUnit());
-  m_badge->setText(badge(kLinkageBadgeColor, kindDisplayName(m_document->design()),
+  m_badge->setText(badge(colors().linkageBadge, kindDisplayName(m_document->design()),
                          tr("%1 points, %2 moving links")
                              .arg(m_document->mechanism().points.size())
                              .arg(m_document->mechanism().links.size())));

@@ -60,7 +60,7 @@ DynamicsPanel::DynamicsPanel(MechanismDocument* document, QWidget* parent)
       m_extraLoads(new QLabel) {
   auto* layout = new QVBoxLayout(this);
   m_refusal->setWordWrap(true);
-  m_refusal->setStyleSheet(QStringLiteral("color: %1").arg(kRefusalColor.name()));
+  m_refusal->setStyleSheet(QStringLiteral("color: %1").arg(colors().refusal.name()));
   m_refusal->setVisible(false);
   layout->addWidget(m_refusal);
 

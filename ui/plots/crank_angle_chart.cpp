@@ -26,7 +26,8 @@ QChart* makeCrankAngleChart(const QString& title, QValueAxis* xAxis, QValueAxis*
 }
 
 std::unique_ptr<VerticalMarker> makeCrankCursor(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis) {
-  return std::make_unique<VerticalMarker>(chart, xAxis, yAxis, QPen(kCrankCursorColor, 1.5), QStringLiteral("cursor"));
+  return std::make_unique<VerticalMarker>(chart, xAxis, yAxis, QPen(colors().crankCursor, 1.5),
+                                          QStringLiteral("cursor"));
 }
 
 void applyAxisRange(QValueAxis* axis, const AxisRange& range) {

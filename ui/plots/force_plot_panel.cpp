@@ -4,6 +4,7 @@
 #include "ui/document/force_results.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/plots/axis_range.h"
+#include "ui/plots/chart_colors.h"
 #include "ui/plots/chart_scale.h"
 #include "ui/plots/force_chart_view.h"
 #include "ui/plots/plot_area_alignment.h"
@@ -96,6 +97,11 @@ void ForcePlotPanel::setPresentationScale(double factor) {
   alignCharts();
 }
 
+void ForcePlotPanel::refreshColors() {
+  for (QChart* chart : {m_torque->chart(), m_joints->chart(), m_polar->chart()}) applyChartColors(chart);
+  refreshAll();
+}
+
 QString ForcePlotPanel::statusText() const { return m_status->text(); }
 
 void ForcePlotPanel::setOnScreen(bool onScreen) {
@@ -126,7 +132,7 @@ void ForcePlotPanel::refreshAll() {
   const DriveChart drive = driveChart(cycle->bodies);
   std::vector<ForceChartView::Curve> driveCurves;
   for (std::size_t i = 0; i < drive.curves.size(); ++i)
-    driveCurves.push_back({QStringLiteral("drive_%1").arg(i), drive.curves[i], i == 0 ? kCrankColor : kCouplerColor});
+    driveCurves.push_back({QStringLiteral("drive_%1").arg(i), drive.curves[i], i == 0 ? linkColor(0) : linkColor(1)});
   m_torque->setCurves(driveCurves);
   if (m_torque->chart()->title() != drive.title) m_torque->chart()->setTitle(drive.title);
   m_runs.resize(drive.curves.size());

@@ -35,6 +35,8 @@ public:
   void setAngleUnit(AngleUnit unit);
   /// Text and lines of the charts and the polar view at `factor` times their normal size.
   void setPresentationScale(double factor);
+  /// Draws the charts and their curves in the current theme's colours (ui/colors.h).
+  void refreshColors();
   /// Whether the panel is on screen (its tab chosen): off screen it re-plots nothing (the
   /// canvas's force arrows may keep the forces solved) and catches up when shown. On by default.
   void setOnScreen(bool onScreen);

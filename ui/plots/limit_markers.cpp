@@ -75,7 +75,7 @@ LimitMarkers::LimitMarkers(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis)
   m_points->setObjectName(QStringLiteral("limit_points"));
   m_points->setName(tr("rocker limit"));
   m_points->setMarkerSize(kMarkerSize);
-  m_points->setColor(kLimitPointColor);
+  m_points->setColor(colors().limitPoint);
   m_points->setBorderColor(Qt::white);
   m_points->setPointLabelsFormat(tr("limit"));
   m_points->setPointLabelsVisible(true);
@@ -89,7 +89,7 @@ LimitMarkers::LimitMarkers(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis)
 LimitMarkers::~LimitMarkers() = default;
 
 bool LimitMarkers::setPositions(const QList<QPointF>& points, bool showPoints) {
-  QPen dashed(kLimitLineColor, scaledPenWidth(m_chart, 1.0), Qt::DashLine);
+  QPen dashed(colors().limitLine, scaledPenWidth(m_chart, 1.0), Qt::DashLine);
   while (m_lines.size() < static_cast<std::size_t>(points.size())) {
     const QString name = QStringLiteral("limit_line_%1").arg(m_lines.size());
     m_lines.push_back(std::make_unique<VerticalMarker>(m_chart, m_xAxis, m_yAxis, dashed, name));

@@ -1,6 +1,7 @@
 #include "ui/plots/plot_panel.h"
 
 #include "ui/plots/axis_range.h"
+#include "ui/plots/chart_colors.h"
 #include "ui/plots/chart_scale.h"
 #include "ui/plots/hover_readout.h"
 #include "ui/plots/limit_markers.h"
@@ -333,6 +334,12 @@ QList<QuantityChartView*> PlotPanel::showXTitles() {
     changed.append(view);
   }
   return changed;
+}
+
+void PlotPanel::refreshColors() {
+  for (QuantityChartView* view : m_views) applyChartColors(view->chart());
+  refreshCurves();  // the curves are the links' colours: new series in the new ones
+  refreshData();
 }
 
 QString PlotPanel::limitNote() const { return m_limitNote->isHidden() ? QString() : m_limitNote->text(); }

@@ -57,6 +57,8 @@ public:
   /// mode) the quality bar and the quantity selector are hidden and only the bottom chart
   /// names the shared x axis, so the charts get the room.
   void setPresentationScale(double factor);
+  /// Draws the charts and their curves in the current theme's colours (ui/colors.h).
+  void refreshColors();
 
   /// The charts in display order (angles, ω, α, position, velocity, acceleration, velocity
   /// ratio, advantage), for image

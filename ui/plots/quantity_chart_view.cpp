@@ -137,17 +137,17 @@ void QuantityChartView::setOverlay(const std::vector<OverlayCurve>& overlay) {
     series->setObjectName(QStringLiteral("compared_rows"));
     series->setMarkerShape(QScatterSeries::MarkerShapeCircle);
     series->setMarkerSize(9.0 * chartScale(chart()));
-    QColor color = kLabelColor;
+    QColor color = colors().label;
     for (const Curve& curve : m_curves)
       if (curve.curve.quantity == o->quantity) color = curve.curve.color;
-    series->setColor(kComparedRowFillColor);
+    series->setColor(colors().comparedRowFill);
     series->setPen(QPen(color, scaledPenWidth(chart(), 1.5)));
     series->replace(o->points);
     chart()->addSeries(series);
     series->attachAxis(m_xAxis);
     series->attachAxis(m_yAxis);
     for (int i = 0; i < static_cast<int>(o->flagged.size()); ++i)
-      if (o->flagged[i]) series->setPointConfiguration(i, QXYSeries::PointConfiguration::Color, kFlaggedRowColor);
+      if (o->flagged[i]) series->setPointConfiguration(i, QXYSeries::PointConfiguration::Color, colors().flaggedRow);
     setSeriesShown(chart(), series, false, false);  // until setData knows the selection
     const QList<QPointF> points = o->points;
     const QList<QString> texts = o->descriptions;

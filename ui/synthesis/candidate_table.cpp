@@ -14,9 +14,6 @@ namespace k = kinematics;
 
 namespace {
 
-// The colour the panels already warn with (a crank that cannot turn fully).
-constexpr QColor kDefectColor = kGrashofRockerBadgeColor;
-
 QTableWidgetItem* cell(const QString& text, Qt::Alignment alignment = Qt::AlignRight | Qt::AlignVCenter) {
   auto* item = new QTableWidgetItem(text);
   item->setFlags(Qt::ItemIsSelectable | Qt::ItemIsEnabled);
@@ -75,7 +72,8 @@ void CandidateTable::showOutcome(const SynthesisOutcome& outcome) {
       const QString tip = marked ? reasons.join(QLatin1Char('\n')) : tr("No defect found");
       for (int col = 0; col < kColumnCount; ++col) {
         item(r, col)->setToolTip(tip);
-        if (marked) item(r, col)->setForeground(kDefectColor);
+        // The colour the panels already warn with (a crank that cannot turn fully).
+        if (marked) item(r, col)->setForeground(colors().grashofRockerBadge);
         item(r, col)->setData(Qt::UserRole, marked);
       }
     }

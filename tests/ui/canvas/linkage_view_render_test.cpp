@@ -80,15 +80,15 @@ TEST_CASE("the view renders the linkage with its grid", "[canvas][render]") {
   REQUIRE_FALSE(image.isNull());
   CHECK(image.save("/tmp/linkwright_canvas_default.png"));
   // Every link is visible: a 6 px bar gives hundreds of pixels of its colour.
-  CHECK(countNear(image, ui::kCrankColor) > 100);
-  CHECK(countNear(image, ui::kCouplerColor) > 100);
-  CHECK(countNear(image, ui::kRockerColor) > 100);
-  CHECK(longestLine(image, ui::kGridColor) > image.width() / 2);
+  CHECK(countNear(image, ui::linkColor(0)) > 100);
+  CHECK(countNear(image, ui::linkColor(1)) > 100);
+  CHECK(countNear(image, ui::linkColor(2)) > 100);
+  CHECK(longestLine(image, ui::colors().grid) > image.width() / 2);
   // The crank is drawn where the view maps it: its midpoint has the crank's colour.
   const QPoint middle = v.pixelOf((v.point(fourbar::kO2) + v.point(fourbar::kB)) / 2.0);
   const QColor atMiddle = image.pixelColor(middle);
-  CHECK(std::abs(atMiddle.red() - ui::kCrankColor.red()) < 24);
-  CHECK(std::abs(atMiddle.blue() - ui::kCrankColor.blue()) < 24);
+  CHECK(std::abs(atMiddle.red() - ui::linkColor(0).red()) < 24);
+  CHECK(std::abs(atMiddle.blue() - ui::linkColor(0).blue()) < 24);
 }
 
 TEST_CASE("a non-Grashof linkage shows its unreachable crank angles", "[canvas][render]") {
@@ -97,17 +97,17 @@ TEST_CASE("a non-Grashof linkage shows its unreachable crank angles", "[canvas][
   ShownView v(design);
   const QImage image = grabView(v);
   CHECK(image.save("/tmp/linkwright_canvas_nongrashof.png"));
-  CHECK(countNear(image, overWhite(ui::kFeasibleColor)) > 500);
-  CHECK(countNear(image, ui::kCouplerPointColor) > 50);
+  CHECK(countNear(image, overWhite(ui::colors().feasible)) > 500);
+  CHECK(countNear(image, ui::colors().couplerPoint) > 50);
 }
 
 TEST_CASE("presentation mode renders bigger", "[canvas][render]") {
   ShownView v;
-  const int normal = countNear(grabView(v), ui::kCouplerColor);
+  const int normal = countNear(grabView(v), ui::linkColor(1));
   v.view.setPresentationScale(2.0);
   const QImage big = grabView(v);
   CHECK(big.save("/tmp/linkwright_canvas_presentation.png"));
-  CHECK(countNear(big, ui::kCouplerColor) > 3 * normal / 2);
+  CHECK(countNear(big, ui::linkColor(1)) > 3 * normal / 2);
 }
 
 TEST_CASE("the export draws the scene upright, without the grid", "[canvas][render]") {
@@ -119,13 +119,13 @@ TEST_CASE("the export draws the scene upright, without the grid", "[canvas][rend
   v.view.renderLinkage(&painter, QRectF(0, 0, 900, 700));
   painter.end();
   CHECK(image.save("/tmp/linkwright_canvas_export.png"));
-  CHECK(countNear(image, ui::kCouplerColor) > 100);
-  CHECK(longestLine(image, ui::kGridColor) < image.width() / 4);
+  CHECK(countNear(image, ui::linkColor(1)) > 100);
+  CHECK(longestLine(image, ui::colors().grid) < image.width() / 4);
   // y up: C (above the frame line) is in the upper part of the picture, the frame line lower.
   int couplerRows = 0, couplerRowSum = 0;
   for (int y = 0; y < image.height(); ++y)
     for (int x = 0; x < image.width(); ++x)
-      if (image.pixelColor(x, y) == ui::kCouplerColor) {
+      if (image.pixelColor(x, y) == ui::linkColor(1)) {
         ++couplerRows;
         couplerRowSum += y;
       }
@@ -147,20 +147,20 @@ TEST_CASE("a refused drag shows its reason next to the cursor", "[canvas][render
   const QRectF message = item->deviceTransform(v.view.viewportTransform()).mapRect(item->boundingRect());
   QTest::mouseRelease(v.viewport(), Qt::LeftButton, Qt::NoModifier, far);
   CHECK(image.save("/tmp/linkwright_canvas_refused.png"));
-  CHECK(countNear(image, ui::kRefusalColor) > 30);
+  CHECK(countNear(image, ui::colors().refusal) > 30);
   CHECK(QRectF(v.viewport()->rect()).contains(message));
-  CHECK(countNear(grabView(v), ui::kRefusalColor) == 0);
+  CHECK(countNear(grabView(v), ui::colors().refusal) == 0);
 }
 
 TEST_CASE("zoomed in, pins and links keep their pixel size", "[canvas][render]") {
   ShownView v;
-  const int normal = countNear(grabView(v), ui::kPinOutlineColor);
+  const int normal = countNear(grabView(v), ui::colors().pinOutline);
   v.wheel(v.pixelOf(v.point(fourbar::kB)), 20);  // 38 times closer
   const QImage image = grabView(v);
   CHECK(image.save("/tmp/linkwright_canvas_zoomed.png"));
   // Fewer pins are in view, but none has grown: outline pixels do not multiply.
-  CHECK(countNear(image, ui::kPinOutlineColor) <= normal);
-  CHECK(countNear(image, ui::kCrankColor) > 100);
+  CHECK(countNear(image, ui::colors().pinOutline) <= normal);
+  CHECK(countNear(image, ui::linkColor(0)) > 100);
 }
 
 TEST_CASE("QGraphicsView::render, as the image export uses it, draws the labels too", "[canvas][render]") {
@@ -176,9 +176,9 @@ TEST_CASE("QGraphicsView::render, as the image export uses it, draws the labels 
   v.view.render(&painter, QRectF(), v.viewport()->rect());
   painter.end();
   CHECK(rendered.save("/tmp/linkwright_canvas_render_metres.png"));
-  const int labelsShown = countNear(shown, ui::kLabelColor);
+  const int labelsShown = countNear(shown, ui::colors().label);
   REQUIRE(labelsShown > 20);
-  CHECK(countNear(rendered, ui::kLabelColor) >= labelsShown * 9 / 10);
-  CHECK(countNear(rendered, ui::kVelocityColor.darker(120)) >=
-        countNear(shown, ui::kVelocityColor.darker(120)) * 9 / 10);
+  CHECK(countNear(rendered, ui::colors().label) >= labelsShown * 9 / 10);
+  CHECK(countNear(rendered, ui::colors().velocity.darker(120)) >=
+        countNear(shown, ui::colors().velocity.darker(120)) * 9 / 10);
 }

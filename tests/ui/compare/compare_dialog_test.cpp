@@ -128,7 +128,7 @@ TEST_CASE("the compared rows are drawn over the plots, the α4 typo rows in red,
     CHECK(alpha->at(i).x() <= alphaChart->xAxis()->max());
     CHECK(alpha->at(i).y() == Approx(k::radToDeg(row.restated)).margin(1e-9));  // deg/s², as the chart
     const auto config = alpha->pointConfiguration(i);
-    const bool filledRed = config.value(QXYSeries::PointConfiguration::Color).value<QColor>() == kFlaggedRowColor;
+    const bool filledRed = config.value(QXYSeries::PointConfiguration::Color).value<QColor>() == colors().flaggedRow;
     CHECK(filledRed == row.flagged);
     red += filledRed;
   }
