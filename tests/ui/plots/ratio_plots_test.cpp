@@ -189,7 +189,8 @@ TEST_CASE("a four-bar's ratio reads out with no unit", "[hover_readout][ratios]"
         QStringLiteral("ratio ω4/ω2 = -0.500 at crank 90.0°"));
 }
 
-TEST_CASE("the plot keys of --plots select exactly their curves, and an unknown key is named", "[plot_panel][ratios][options]") {
+TEST_CASE("the plot keys of --plots select exactly their curves, and an unknown key is named",
+          "[plot_panel][ratios][options]") {
   const auto& curves = test::fourBarCurves();
   QString unknown;
   const auto selection = selectionOfKeys(curves, {"rocker_angle", "mechanical_advantage"}, unknown);
