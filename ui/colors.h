@@ -62,6 +62,14 @@ struct Palette {
   double gridAxisWidthPx;  ///< the grid's x = 0 and y = 0 lines, at presentation scale 1
   QColor gridLabel;
 
+  // The classroom: instant centres on the canvas, the polygons' arrows by kind of term.
+  QColor centre;          ///< the centres, their labels and the fixed centrode
+  QColor kennedyLine;     ///< the lines through three centres
+  QColor movingCentrode;  ///< the coupler's centrode, carried with it
+  /// Per kinematics::VectorTerm, in its order: absolute, relative, normal, tangential,
+  /// sliding, Coriolis.
+  std::array<QColor, 6> polygonTerms;
+
   // The plots.
   std::optional<ChartColors> chart;  ///< nullopt: Qt Charts' light theme as it comes
   QColor crankCursor;

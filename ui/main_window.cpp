@@ -5,6 +5,7 @@
 #include "ui/canvas/linkage_view.h"
 #include "ui/classroom/big_readout.h"
 #include "ui/classroom/polygon_panel.h"
+#include "ui/classroom/polygon_view.h"
 #include "ui/colors.h"
 #include "ui/compare/compare_dialog.h"
 #include "ui/dialogs/attach_dyad_dialog.h"
@@ -468,6 +469,7 @@ void MainWindow::setHighContrast(bool on) {
   m_plots->refreshColors();
   m_forcePlots->refreshColors();
   m_bigReadout->refreshColors();
+  m_polygons->view()->update();  // it reads colors() as it paints
 }
 
 bool MainWindow::highContrast() const { return theme() == Theme::HighContrast; }

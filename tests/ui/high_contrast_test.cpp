@@ -7,6 +7,7 @@
 #include "ui/canvas/linkage_scene.h"
 #include "ui/canvas/linkage_view.h"
 #include "ui/classroom/big_readout.h"
+#include "ui/classroom/polygon_view.h"
 #include "ui/colors.h"
 #include "ui/main_window.h"
 #include "ui/plots/plot_panel.h"
@@ -55,7 +56,8 @@ QColor curveColour(const MainWindow& window, PlotQuantity quantity) {
 
 }  // namespace
 
-TEST_CASE("every high-contrast link, slider and transmission colour reads on white at 4.5:1", "[ui][colors]") {
+TEST_CASE("every high-contrast link, slider, transmission and classroom colour reads on white at 4.5:1",
+          "[ui][colors]") {
   const Palette& hc = paletteOf(Theme::HighContrast);
   for (const QColor& c : hc.links) {
     CAPTURE(c.name());
@@ -63,6 +65,15 @@ TEST_CASE("every high-contrast link, slider and transmission colour reads on whi
   }
   for (const QColor& c : hc.sliders) CHECK(contrastOnWhite(c) >= 4.5);
   for (const QColor& c : hc.transmissions) CHECK(contrastOnWhite(c) >= 4.5);
+  // The classroom's drawings too: the polygons' arrows and the instant centres.
+  for (const QColor& c : hc.polygonTerms) CHECK(contrastOnWhite(c) >= 4.5);
+  for (const QColor& c : {hc.centre, hc.kennedyLine, hc.movingCentrode}) CHECK(contrastOnWhite(c) >= 4.5);
+  CHECK(contrastOnWhite(paletteOf(Theme::Normal).movingCentrode) < 4.5);  // why they change
+  NormalThemeAfter restore;
+  setTheme(Theme::HighContrast);
+  CHECK(polygonTermColor(linkwright::kinematics::VectorTerm::Coriolis) == hc.polygonTerms[5]);
+  setTheme(Theme::Normal);
+  CHECK(polygonTermColor(linkwright::kinematics::VectorTerm::Coriolis) == paletteOf(Theme::Normal).polygonTerms[5]);
   CHECK(contrastOnWhite(hc.label) == Approx(21.0));  // black on white
   // The formula itself: the normal crank orange is the lighter one, under the threshold.
   CHECK(contrastOnWhite(paletteOf(Theme::Normal).links[0]) < 4.5);

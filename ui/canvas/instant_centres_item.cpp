@@ -1,5 +1,7 @@
 #include "ui/canvas/instant_centres_item.h"
 
+#include "ui/colors.h"
+
 #include "ui/canvas/canvas_style.h"
 #include "ui/geometry.h"
 
@@ -18,9 +20,6 @@ namespace k = kinematics;
 
 namespace {
 
-constexpr QColor kCentreColor{0, 121, 107};
-constexpr QColor kKennedyColor{110, 110, 110};
-constexpr QColor kMovingCentrodeColor{216, 108, 0};
 constexpr double kCentreDotPx = 3.5;
 constexpr double kFarArrowPx = 48.0;
 
@@ -52,7 +51,7 @@ bool near(const k::InstantCentre& centre, const k::InstantCentres& all) {
 void drawLabel(QPainter* painter, const QPointF& corner, const QString& text) {
   const QFontMetricsF metrics(painter->font());
   const QRectF box(corner - QPointF(metrics.horizontalAdvance(text) + 4.0, metrics.height()), corner);
-  painter->fillRect(box, QColor(255, 255, 255, 215));
+  painter->fillRect(box, colors().labelBox);
   painter->drawText(box, Qt::AlignCenter, text);
 }
 
@@ -123,14 +122,14 @@ void InstantCentresItem::paint(QPainter* painter, const QStyleOptionGraphicsItem
   painter->setBrush(Qt::NoBrush);
 
   // The centrodes first, under everything: fixed solid, moving dashed on the coupler.
-  painter->setPen(QPen(kCentreColor, 1.5 * m_scale));
+  painter->setPen(QPen(colors().centre, 1.5 * m_scale));
   for (const auto& run : m_centrodes.fixed) {
     QPolygonF line;
     for (const Eigen::Vector2d& p : run) line << px(p);
     painter->drawPolyline(line);
   }
   if (m_frame) {
-    painter->setPen(QPen(kMovingCentrodeColor, 1.5 * m_scale, Qt::DashLine));
+    painter->setPen(QPen(colors().movingCentrode, 1.5 * m_scale, Qt::DashLine));
     for (const auto& run : m_centrodes.moving) {
       QPolygonF line;
       for (const Eigen::Vector2d& p : run) line << px(m_frame->toWorld(p));
@@ -144,7 +143,7 @@ void InstantCentresItem::paint(QPainter* painter, const QStyleOptionGraphicsItem
   const k::InstantCentres& c = *m_centres;
 
   // Kennedy's lines: each holds three centres; drawn across the finite ones it holds.
-  painter->setPen(QPen(kKennedyColor, 1.0 * m_scale, Qt::DashLine));
+  painter->setPen(QPen(colors().kennedyLine, 1.0 * m_scale, Qt::DashLine));
   const std::array<std::array<const k::InstantCentre*, 3>, 4> lines{
       {{&c.i12, &c.i23, &c.i13}, {&c.i14, &c.i34, &c.i13}, {&c.i12, &c.i14, &c.i24}, {&c.i23, &c.i34, &c.i24}}};
   for (const auto& line : lines) {
@@ -169,10 +168,10 @@ void InstantCentresItem::paint(QPainter* painter, const QStyleOptionGraphicsItem
   painter->setFont(font);
   const double dot = kCentreDotPx * m_scale;
   for (const NamedCentre& n : named(c)) {
-    painter->setPen(QPen(kCentreColor, 1.5 * m_scale));
+    painter->setPen(QPen(colors().centre, 1.5 * m_scale));
     if (near(*n.centre, c)) {
       const QPointF at = px(n.centre->position);
-      painter->setBrush(kCentreColor);
+      painter->setBrush(colors().centre);
       painter->drawEllipse(at, dot, dot);
       painter->setBrush(Qt::NoBrush);
       drawLabel(painter, at - QPointF(dot + 2.0, dot + 2.0), n.label);

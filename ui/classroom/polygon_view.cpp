@@ -1,5 +1,7 @@
 #include "ui/classroom/polygon_view.h"
 
+#include "ui/colors.h"
+
 #include "ui/classroom/polygon_scale.h"
 #include "ui/classroom/vector_label.h"
 
@@ -34,15 +36,9 @@ bool near(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const k::VectorPol
 }  // namespace
 
 QColor polygonTermColor(k::VectorTerm term) {
-  switch (term) {
-  case k::VectorTerm::Absolute: return {40, 40, 40};
-  case k::VectorTerm::Relative: return {49, 130, 189};
-  case k::VectorTerm::Normal: return {230, 85, 13};
-  case k::VectorTerm::Tangential: return {49, 163, 84};
-  case k::VectorTerm::Sliding: return {117, 107, 177};
-  case k::VectorTerm::Coriolis: return {214, 39, 40};
-  }
-  return {40, 40, 40};
+  const auto index = static_cast<std::size_t>(term);
+  const auto& terms = colors().polygonTerms;
+  return index < terms.size() ? terms[index] : colors().label;
 }
 
 QString polygonTermName(k::VectorTerm term) {

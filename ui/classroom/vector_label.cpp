@@ -1,5 +1,7 @@
 #include "ui/classroom/vector_label.h"
 
+#include "ui/colors.h"
+
 #include <QFontMetricsF>
 #include <QPainter>
 
@@ -47,7 +49,7 @@ void drawVectorLabel(QPainter& painter, const QString& label, const QRectF& box,
   const QFontMetricsF fm(base);
   const QFontMetricsF sm(small);
   painter.setPen(Qt::NoPen);
-  painter.setBrush(QColor(255, 255, 255, 215));
+  painter.setBrush(colors().labelBox);
   painter.drawRoundedRect(box.adjusted(-2, -1, 2, 1), 3, 3);
   painter.setPen(colour);
   const double symbolWidth = fm.horizontalAdvance(parts.symbol);
