@@ -13,6 +13,7 @@
 #include "kinematics/design/point_drag.h"
 #include "kinematics/model/ids.h"
 
+#include <QColor>
 #include <QGraphicsScene>
 
 #include <memory>
@@ -47,6 +48,10 @@ public:
   void updatePose(const MechanismDocument& document);
 
   void setPresentationScale(double factor);
+  /// Per link (Mechanism::links order), the colour to draw it in: the inversions keep a physical
+  /// link's colour whatever link is grounded. Empty (the default): linkColor(index). Takes
+  /// effect at the next updateDesign.
+  void setLinkColors(std::vector<QColor> colors);
   void setShowVelocityArrows(bool show);
   void setShowAccelerationArrows(bool show);
   /// The instant centres, Kennedy's lines and the centrodes (instant_centres_item.h), solved
@@ -101,6 +106,8 @@ private:
   std::optional<std::size_t> sliderIndex(kinematics::PointId joint) const;
 
   std::unique_ptr<MechanismItems> m_items;
+  std::vector<QColor> m_linkColors;
+  bool m_colorsChanged = false;
   std::vector<DragHandle> m_handles;
   FeasibleRangeItem* m_range;
   InstantCentresItem* m_centres;

@@ -70,29 +70,34 @@ Item* MechanismItems::add(Item* item) {
   return item;
 }
 
-MechanismItems::MechanismItems(QGraphicsScene* scene, const k::Mechanism& m, DrawingPlan plan)
-    : m_scene(scene), m_plan(std::move(plan)) {
+QColor MechanismItems::colorOf(std::size_t link) const {
+  return link < m_linkColors.size() ? m_linkColors[link] : linkColor(link);
+}
+
+MechanismItems::MechanismItems(QGraphicsScene* scene, const k::Mechanism& m, DrawingPlan plan,
+                               std::vector<QColor> linkColors)
+    : m_scene(scene), m_linkColors(std::move(linkColors)), m_plan(std::move(plan)) {
   const std::size_t points = m.points.size();
   m_links.assign(m.links.size(), nullptr);
   for (std::size_t l = 0; l < m.links.size(); ++l)
-    if (m_plan.barLinks[l]) m_links[l] = add(new LinkItem(linkColor(l)));
+    if (m_plan.barLinks[l]) m_links[l] = add(new LinkItem(colorOf(l)));
   for (const BodyShape& body : m_plan.bodies) {
     auto* plate = add(new QGraphicsPolygonItem);
-    QColor fill = linkColor(body.link.index);
+    QColor fill = colorOf(body.link.index);
     fill.setAlpha(kBodyFillAlpha);
     plate->setBrush(fill);
-    plate->setPen(cosmeticPen(linkColor(body.link.index), kPlateSideFraction * canvas::kLinkWidthPx));
+    plate->setPen(cosmeticPen(colorOf(body.link.index), kPlateSideFraction * canvas::kLinkWidthPx));
     plate->setZValue(canvas::z::kCouplerTriangle);
     m_bodies.push_back(plate);
   }
   for (const SlotShape& slot : m_plan.slottedLinks) {
-    m_slots.push_back(add(new SlottedLinkItem(linkColor(slot.link.index))));
+    m_slots.push_back(add(new SlottedLinkItem(colorOf(slot.link.index))));
     // The block is a body of its own (the dyad's middle link): neutral, so it reads on the bar.
     m_slotBlocks.push_back(add(new SliderBlockItem(kFrameColor, kSlotBlockLengthPx, kSlotBlockHeightPx)));
   }
   for (const SliderShape& slider : m_plan.sliders) {
     const k::Guide& guide = sliderGuide(m, slider);
-    const QColor guideColor = guide.link ? linkColor(guide.link->index) : kFrameColor;
+    const QColor guideColor = guide.link ? colorOf(guide.link->index) : kFrameColor;
     m_slideways.push_back(add(new SlidewayItem(slider.onGround, kBlockHeightPx + 2.0, guideColor)));
     m_blocks.push_back(add(new SliderBlockItem(sliderColor(slider.ordinal), kBlockLengthPx, kBlockHeightPx)));
   }
@@ -403,7 +408,7 @@ void MechanismItems::setPresentationScale(double factor) {
     line->setPen(cosmeticPen(kFrameColor, canvas::kFrameWidthPx * factor, Qt::DashLine));
   for (std::size_t b = 0; b < m_bodies.size(); ++b)
     m_bodies[b]->setPen(
-        cosmeticPen(linkColor(m_plan.bodies[b].link.index), kPlateSideFraction * canvas::kLinkWidthPx * factor));
+        cosmeticPen(colorOf(m_plan.bodies[b].link.index), kPlateSideFraction * canvas::kLinkWidthPx * factor));
   const auto scaleAll = [factor](const auto& items) {
     for (QGraphicsItem* item : items)
       if (item != nullptr) item->setScale(factor);
