@@ -66,6 +66,9 @@ std::string guiUsage() {
          names +
          "\n"
          "  --screenshot FILE   render the window to FILE (PNG) and exit, without animating\n"
+         "  --inversions-screenshot FILE\n"
+         "                      render View ▸ Inversions… (a four-bar's or slider-crank's four\n"
+         "                      inversions side by side) to FILE (PNG) and exit\n"
          "  --crank-angle DEG   crank angle to show, degrees (default 0)\n"
          "  --animation FILE    write an animated GIF of the canvas over one cycle (one turn\n"
          "                      from the crank angle shown; a crank that cannot turn fully\n"
@@ -97,14 +100,15 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
   const QCommandLineOption centres("centres", {});
   const QCommandLineOption example("example", {}, "NAME");
   const QCommandLineOption screenshot("screenshot", {}, "FILE");
+  const QCommandLineOption inversionsScreenshot("inversions-screenshot", {}, "FILE");
   const QCommandLineOption crankAngle("crank-angle", {}, "DEG");
   const QCommandLineOption animation("animation", {}, "FILE");
   const QCommandLineOption frames("frames", {}, "N");
   const QCommandLineOption frameDelay("frame-delay", {}, "MS");
   const QCommandLineOption compare("compare", {}, "TABLE");
   const QCommandLineOption compareMap("compare-map", {}, "MAP");
-  parser.addOptions({help, version, presentation, forces, centres, example, screenshot, crankAngle, animation, frames,
-                     frameDelay, compare, compareMap});
+  parser.addOptions({help, version, presentation, forces, centres, example, screenshot, inversionsScreenshot,
+                     crankAngle, animation, frames, frameDelay, compare, compareMap});
   parser.addPositionalArgument("file", {});
   QStringList arguments{"linkwright"};
   for (const std::string& a : args) arguments << QString::fromStdString(a);
@@ -112,7 +116,8 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
     error = parser.errorText().toStdString() + " (see linkwright --help)";
     return std::nullopt;
   }
-  for (const auto& option : {example, screenshot, crankAngle, animation, frames, frameDelay, compare, compareMap})
+  for (const auto& option :
+       {example, screenshot, inversionsScreenshot, crankAngle, animation, frames, frameDelay, compare, compareMap})
     if (parser.values(option).size() > 1) {
       error = "--" + option.names().front().toStdString() + " is given more than once";
       return std::nullopt;
@@ -141,6 +146,13 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
     o.compareMap = parser.value(compareMap).toStdString();
   }
   if (parser.isSet(screenshot)) o.screenshot = parser.value(screenshot).toStdString();
+  if (parser.isSet(inversionsScreenshot)) {
+    if (o.screenshot) {
+      error = "give --screenshot or --inversions-screenshot, not both";
+      return std::nullopt;
+    }
+    o.inversionsScreenshot = parser.value(inversionsScreenshot).toStdString();
+  }
   if (parser.isSet(crankAngle)) {
     // std::from_chars, not QString::toDouble: '.' is the decimal point whatever the locale.
     const std::string text = parser.value(crankAngle).toStdString();
@@ -153,6 +165,10 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
     o.crankAngleDeg = deg;
   }
   if (!parseAnimationOptions(parser, animation, frames, frameDelay, o, error)) return std::nullopt;
+  if (o.animation && o.inversionsScreenshot) {
+    error = "give --animation or --inversions-screenshot, not both";
+    return std::nullopt;
+  }
   const QStringList files = parser.positionalArguments();
   if (files.size() > 1) {
     error = "only one file can be opened (got '" + files[0].toStdString() + "' and '" + files[1].toStdString() + "')";

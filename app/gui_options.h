@@ -1,7 +1,7 @@
 #pragma once
 // The GUI's command line: linkwright [FILE] [--example NAME] [--screenshot FILE.png]
 // [--animation FILE.gif [--frames N] [--frame-delay MS]] [--presentation] [--forces] [--centres]
-// [--crank-angle DEG] [--compare TABLE.csv [--compare-map MAP]] [--help] [--version].
+// [--inversions-screenshot FILE.png] [--crank-angle DEG] [--compare TABLE.csv [--compare-map MAP]] [--help] [--version].
 
 #include <optional>
 #include <string>
@@ -13,6 +13,8 @@ struct GuiOptions {
   std::optional<std::string> file;        ///< a document to open
   std::optional<std::string> example;     ///< a built-in example to start on
   std::optional<std::string> screenshot;  ///< render the window to this PNG and exit
+  /// render View ▸ Inversions… of the linkage to this PNG and exit
+  std::optional<std::string> inversionsScreenshot;
   std::optional<double> crankAngleDeg;    ///< crank angle to show (default 0°)
   std::optional<std::string> animation;   ///< write an animated GIF of one cycle here and exit
   int frames = 72;                        ///< --frames: frames per cycle of the animation, 2 to 720

@@ -50,6 +50,11 @@ TEST_CASE("the designer's options are read in both value forms", "[ui][options]"
   CHECK(animation.options->frameDelayMs == 60);
   CHECK(parse({"--animation", "a.gif"}).options->frames == 72);
 
+  const auto inversions = parse({"--example", "slider-crank", "--inversions-screenshot=inv.png"});
+  REQUIRE(inversions.options);
+  CHECK(inversions.options->inversionsScreenshot == "inv.png");
+  CHECK_FALSE(inversions.options->screenshot);
+
   CHECK(parse({"-h"}).options->help);
   CHECK(parse({"--version"}).options->version);
   CHECK_FALSE(parse({}).options->help);
@@ -71,6 +76,10 @@ TEST_CASE("mistakes on the designer's command line name the option", "[ui][optio
        "--frame-delay: must be a whole number from 20 to 5000 (got '6000')"},
       {{"--frame-delay", "40"}, "--frames and --frame-delay need --animation FILE"},
       {{"--animation", "a.gif", "--screenshot", "a.png"}, "give --screenshot or --animation, not both"},
+      {{"--inversions-screenshot", "i.png", "--screenshot", "a.png"},
+       "give --screenshot or --inversions-screenshot, not both"},
+      {{"--inversions-screenshot", "i.png", "--animation", "a.gif"},
+       "give --animation or --inversions-screenshot, not both"},
   }));
   CAPTURE(args);
   const auto p = parse(args);
