@@ -180,6 +180,8 @@ void LinkageScene::updateArrows(const MechanismDocument& document) {
   }
 }
 
+void LinkageScene::setRangeLabelShown(bool shown) { m_range->setLabelShown(shown); }
+
 void LinkageScene::setLinkColors(std::vector<QColor> colors) {
   m_colorsChanged = colors != m_linkColors;
   m_linkColors = std::move(colors);

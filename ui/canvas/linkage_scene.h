@@ -52,6 +52,8 @@ public:
   /// link's colour whatever link is grounded. Empty (the default): linkColor(index). Takes
   /// effect at the next updateDesign.
   void setLinkColors(std::vector<QColor> colors);
+  /// Whether the crank's range is stated in words beside its arc (by default).
+  void setRangeLabelShown(bool shown);
   void setShowVelocityArrows(bool show);
   void setShowAccelerationArrows(bool show);
   /// The instant centres, Kennedy's lines and the centrodes (instant_centres_item.h), solved

@@ -177,6 +177,9 @@ LabelItem* MechanismItems::label(k::PointId p) const { return p.index < m_labels
 void MechanismItems::setDesign(const k::Mechanism& m, const k::SweepResult& sweep, const k::Pose& pose,
                                double linkageSize, const std::optional<k::TimeBase>& time) {
   m_margin = 0.06 * linkageSize;
+  // The same plan may come with other point names (an inversion renames its joints).
+  for (std::size_t i = 0; i < m_labels.size() && i < m.points.size(); ++i)
+    if (m_labels[i] != nullptr) m_labels[i]->setText(pointDisplayName(m.points[i].name));
   setDrivenDesign(m, sweep, pose, time);
   for (std::size_t i = 0; i < m_paths.size(); ++i)
     if (m_paths[i] != nullptr) m_paths[i]->setFromSweep(sweep, k::PointId{i});

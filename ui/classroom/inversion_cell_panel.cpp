@@ -1,6 +1,8 @@
 #include "ui/classroom/inversion_cell_panel.h"
 
 #include "ui/animation/crank_animator.h"
+#include "ui/canvas/feasible_range_item.h"
+#include "ui/canvas/linkage_scene.h"
 #include "ui/canvas/linkage_view.h"
 #include "ui/document/mechanism_document.h"
 
@@ -34,9 +36,12 @@ InversionCellPanel::InversionCellPanel(QWidget* parent)
   m_detail->setObjectName("InversionDetail");
   m_note->setObjectName("InversionNote");
   m_note->setWordWrap(true);
+  m_detail->setWordWrap(true);
   m_note->setAlignment(Qt::AlignCenter);
   m_note->setMargin(12);
   m_view->setReadOnly(true);
+  // A cell is small: the crank's reach goes in the line above the drawing, not across it.
+  static_cast<LinkageScene*>(m_view->linkageScene())->setRangeLabelShown(false);
   m_view->setMinimumSize(kMinimumDrawingWidthPx, kMinimumDrawingHeightPx);
   m_stack->addWidget(m_view);
   m_stack->addWidget(m_note);
@@ -76,6 +81,8 @@ void InversionCellPanel::setCell(const InversionCell& cell) {
   else if (!range.fullRotation && !range.ranges.empty())  // a rocking crank starts mid-swing
     m_document->setCrankAngle(0.5 * (range.ranges.front().from + range.ranges.front().to));
   m_hasLinkage = true;
+  const FeasibleRangeItem* reach = static_cast<LinkageScene*>(m_view->linkageScene())->feasibleRangeItem();
+  if (reach->isVisible()) m_detail->setText(cell.detail + QStringLiteral("; ") + reach->labelText());
   m_note->clear();
   m_stack->setCurrentWidget(m_view);
 }

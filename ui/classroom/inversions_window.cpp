@@ -33,8 +33,9 @@ InversionsWindow::InversionsWindow(MechanismDocument* source, QWidget* parent)
   buttons->addWidget(m_play);
   buttons->addWidget(m_step);
   buttons->addStretch();
-  auto* hint = new QLabel(tr("The grounded link is drawn as the dashed frame; every moving link keeps its colour "
-                             "in all four (the original frame, when it moves, in brown)."),
+  auto* hint = new QLabel(tr("Each cell holds a different link fixed; the fixed link is drawn grey, as the frame. "
+                             "Every moving link keeps its colour in all four: crank orange, coupler (rod) blue, "
+                             "rocker green, and the original frame, once it moves, brown."),
                           this);
   hint->setWordWrap(true);
   auto* layout = new QVBoxLayout(this);
