@@ -50,7 +50,7 @@ TEST_CASE("the designer's options are read in both value forms", "[ui][options]"
   CHECK(animation.options->frameDelayMs == 60);
   CHECK(parse({"--animation", "a.gif"}).options->frames == 72);
 
-  const auto inversions = parse({"--example", "slider-crank", "--inversions-screenshot=inv.png"});
+  const auto inversions = parse({"--example", "ls3-engine", "--inversions-screenshot=inv.png"});
   REQUIRE(inversions.options);
   CHECK(inversions.options->inversionsScreenshot == "inv.png");
   CHECK_FALSE(inversions.options->screenshot);
