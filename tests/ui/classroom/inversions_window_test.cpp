@@ -5,6 +5,7 @@
 // action; an offset slider-crank shows the core's note where an inversion cannot be built.
 #include "ui/classroom/inversions_window.h"
 #include "ui/animation/crank_animator.h"
+#include "ui/canvas/feasible_range_item.h"
 #include "ui/canvas/link_item.h"
 #include "ui/canvas/linkage_scene.h"
 #include "ui/canvas/linkage_view.h"
@@ -156,6 +157,11 @@ TEST_CASE("a double-rocker inversion rocks between the ends of its range", "[cla
   const k::InputRange& range = rocker->analysis().inputRange;
   REQUIRE_FALSE(range.fullRotation);
   REQUIRE_FALSE(range.ranges.empty());
+  // Its reach is stated above the drawing, not across it; a crank that turns fully has none.
+  const auto* scene = static_cast<const LinkageScene*>(inversions->cell(3)->view()->linkageScene());
+  CHECK(inversions->cell(3)->detail().contains(scene->feasibleRangeItem()->labelText()));
+  CHECK(inversions->cell(3)->detail().contains("can reach"));
+  CHECK_FALSE(inversions->cell(0)->detail().contains("can reach"));
   // Twelve 30° steps would take a turning crank round once; this one must stay in its range
   // and turn back at least once.
   bool turnedBack = false;
