@@ -66,7 +66,9 @@ void InversionCellPanel::setCell(const InversionCell& cell) {
   if (!cell.design || refused) {
     m_animator->pause();
     m_hasLinkage = false;
-    m_note->setText(refused ? *refused : cell.note);
+    QString why = refused ? *refused : cell.note;
+    if (!why.endsWith('.')) why += '.';
+    m_note->setText(tr("Not drawn: %1").arg(why));
     m_stack->setCurrentWidget(m_note);
     return;
   }

@@ -259,7 +259,7 @@ TEST_CASE("an offset slider-crank shows the core's note where an inversion canno
       CHECK(cell->document()->mechanism().points.size() == inv.mechanism->points.size());
       CHECK(cell->note().isEmpty());
     } else {
-      CHECK(cell->note().toStdString() == inv.note);
+      CHECK(cell->note().contains(QString::fromStdString(inv.note)));
       CHECK(cell->note().contains("offset 12"));
     }
   }
