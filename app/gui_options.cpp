@@ -66,6 +66,9 @@ std::string guiUsage() {
          names +
          "\n"
          "  --screenshot FILE   render the window to FILE (PNG) and exit, without animating\n"
+         "  --inversions-screenshot FILE\n"
+         "                      render View ▸ Inversions… (a four-bar's or slider-crank's four\n"
+         "                      inversions side by side) to FILE (PNG) and exit\n"
          "  --crank-angle DEG   crank angle to show, degrees (default 0)\n"
          "  --animation FILE    write an animated GIF of the canvas over one cycle (one turn\n"
          "                      from the crank angle shown; a crank that cannot turn fully\n"
@@ -104,6 +107,7 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
   const QCommandLineOption centres("centres", {});
   const QCommandLineOption example("example", {}, "NAME");
   const QCommandLineOption screenshot("screenshot", {}, "FILE");
+  const QCommandLineOption inversionsScreenshot("inversions-screenshot", {}, "FILE");
   const QCommandLineOption crankAngle("crank-angle", {}, "DEG");
   const QCommandLineOption animation("animation", {}, "FILE");
   const QCommandLineOption frames("frames", {}, "N");
@@ -111,8 +115,8 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
   const QCommandLineOption compare("compare", {}, "TABLE");
   const QCommandLineOption compareMap("compare-map", {}, "MAP");
   const QCommandLineOption plots("plots", {}, "KEYS");
-  parser.addOptions({help, version, presentation, highContrast, forces, centres, example, screenshot, crankAngle,
-                     animation, frames, frameDelay, compare, compareMap, plots});
+  parser.addOptions({help, version, presentation, highContrast, forces, centres, example, screenshot,
+                     inversionsScreenshot, crankAngle, animation, frames, frameDelay, compare, compareMap, plots});
   parser.addPositionalArgument("file", {});
   QStringList arguments{"linkwright"};
   for (const std::string& a : args) arguments << QString::fromStdString(a);
@@ -120,8 +124,8 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
     error = parser.errorText().toStdString() + " (see linkwright --help)";
     return std::nullopt;
   }
-  for (const auto& option :
-       {example, screenshot, crankAngle, animation, frames, frameDelay, compare, compareMap, plots})
+  for (const auto& option : {example, screenshot, inversionsScreenshot, crankAngle, animation, frames, frameDelay,
+                             compare, compareMap, plots})
     if (parser.values(option).size() > 1) {
       error = "--" + option.names().front().toStdString() + " is given more than once";
       return std::nullopt;
@@ -158,6 +162,13 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
     }
   }
   if (parser.isSet(screenshot)) o.screenshot = parser.value(screenshot).toStdString();
+  if (parser.isSet(inversionsScreenshot)) {
+    if (o.screenshot) {
+      error = "give --screenshot or --inversions-screenshot, not both";
+      return std::nullopt;
+    }
+    o.inversionsScreenshot = parser.value(inversionsScreenshot).toStdString();
+  }
   if (parser.isSet(crankAngle)) {
     // std::from_chars, not QString::toDouble: '.' is the decimal point whatever the locale.
     const std::string text = parser.value(crankAngle).toStdString();
@@ -170,6 +181,10 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
     o.crankAngleDeg = deg;
   }
   if (!parseAnimationOptions(parser, animation, frames, frameDelay, o, error)) return std::nullopt;
+  if (o.animation && o.inversionsScreenshot) {
+    error = "give --animation or --inversions-screenshot, not both";
+    return std::nullopt;
+  }
   const QStringList files = parser.positionalArguments();
   if (files.size() > 1) {
     error = "only one file can be opened (got '" + files[0].toStdString() + "' and '" + files[1].toStdString() + "')";

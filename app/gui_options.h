@@ -1,8 +1,8 @@
 #pragma once
 // The GUI's command line: linkwright [FILE] [--example NAME] [--screenshot FILE.png]
-// [--animation FILE.gif [--frames N] [--frame-delay MS]] [--presentation] [--high-contrast]
-// [--forces] [--centres] [--crank-angle DEG] [--plots KEY,…] [--compare TABLE.csv [--compare-map MAP]]
-// [--help] [--version].
+// [--animation FILE.gif [--frames N] [--frame-delay MS]] [--inversions-screenshot FILE.png]
+// [--presentation] [--high-contrast] [--forces] [--centres] [--crank-angle DEG] [--plots KEY,…]
+// [--compare TABLE.csv [--compare-map MAP]] [--help] [--version].
 
 #include <optional>
 #include <string>
@@ -14,6 +14,8 @@ struct GuiOptions {
   std::optional<std::string> file;        ///< a document to open
   std::optional<std::string> example;     ///< a built-in example to start on
   std::optional<std::string> screenshot;  ///< render the window to this PNG and exit
+  /// render View ▸ Inversions… of the linkage to this PNG and exit
+  std::optional<std::string> inversionsScreenshot;
   std::optional<double> crankAngleDeg;    ///< crank angle to show (default 0°)
   std::optional<std::string> animation;   ///< write an animated GIF of one cycle here and exit
   int frames = 72;                        ///< --frames: frames per cycle of the animation, 2 to 720

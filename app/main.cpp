@@ -2,6 +2,8 @@
 #include "app/gui_options.h"
 
 #include "ui/animation/crank_animator.h"
+#include "ui/classroom/inversion_cells.h"
+#include "ui/classroom/inversions_window.h"
 #include "ui/compare/column_map_editor.h"
 #include "ui/compare/compare_dialog.h"
 #include "ui/document/mechanism_document.h"
@@ -38,6 +40,24 @@ void showSettled(linkwright::ui::MainWindow& window) {
 int takeScreenshot(linkwright::ui::MainWindow& window, const QString& path) {
   showSettled(window);
   if (!window.grab().save(path, "PNG")) {
+    std::cerr << "linkwright: cannot write the screenshot " << path.toStdString() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+// View ▸ Inversions… of the linkage, its cranks a step (30°) on from where they start, so that
+// no crank lies along the frame line.
+int takeInversionsScreenshot(linkwright::ui::MainWindow& window, const QString& path) {
+  if (const auto why = linkwright::ui::inversionsUnavailable(window.document()->design())) {
+    std::cerr << "linkwright: --inversions-screenshot: " << why->toStdString() << "\n";
+    return 2;
+  }
+  linkwright::ui::InversionsWindow* inversions = window.showInversions();
+  for (int i = 0; i < 5; ++i) QApplication::processEvents();
+  inversions->step();
+  for (int i = 0; i < 5; ++i) QApplication::processEvents();
+  if (!inversions->grab().save(path, "PNG")) {
     std::cerr << "linkwright: cannot write the screenshot " << path.toStdString() << "\n";
     return 1;
   }
@@ -125,7 +145,7 @@ int main(int argc, char** argv) {
   if (options->example) window.newDocument(*k::designForExample(*options->example));
   if (options->file && !window.openFile(QString::fromStdString(*options->file))) {
     std::cerr << "linkwright: " << window.banner()->text().toStdString() << "\n";
-    if (options->screenshot || options->animation) return 2;
+    if (options->screenshot || options->animation || options->inversionsScreenshot) return 2;
   }
   if (options->crankAngleDeg) window.document()->setCrankAngle(k::degToRad(*options->crankAngleDeg));
   if (options->presentation) window.setPresentationMode(true);
@@ -134,6 +154,8 @@ int main(int argc, char** argv) {
   if (options->centres) window.setShowInstantCentres(true);
   if (options->plots && !selectPlots(window, *options->plots)) return 2;
   if (options->animation) return writeAnimation(window, *options);
+  if (options->inversionsScreenshot)
+    return takeInversionsScreenshot(window, QString::fromStdString(*options->inversionsScreenshot));
   // With --screenshot, the designer is rendered with the table's rows on its plots.
   if (options->compare && openComparison(window, *options) == nullptr && options->screenshot) return 2;
   if (options->screenshot) return takeScreenshot(window, QString::fromStdString(*options->screenshot));

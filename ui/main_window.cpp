@@ -4,6 +4,8 @@
 #include "ui/canvas/force_arrows_item.h"
 #include "ui/canvas/linkage_view.h"
 #include "ui/classroom/big_readout.h"
+#include "ui/classroom/inversion_cells.h"
+#include "ui/classroom/inversions_window.h"
 #include "ui/classroom/polygon_panel.h"
 #include "ui/classroom/polygon_view.h"
 #include "ui/colors.h"
@@ -191,6 +193,15 @@ void MainWindow::showForces() {
 
 MainWindow::~MainWindow() = default;
 
+InversionsWindow* MainWindow::showInversions() {
+  if (inversionsUnavailable(m_document->design())) return nullptr;
+  if (m_inversions == nullptr) m_inversions = new InversionsWindow(m_document, this);
+  m_inversions->show();
+  m_inversions->raise();
+  m_inversions->activateWindow();
+  return m_inversions;
+}
+
 void MainWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
   buildNewMenu(file->addMenu(tr("&New")));
@@ -242,6 +253,18 @@ void MainWindow::buildMenus() {
   view->addAction(tr("Forces and &masses"), QKeySequence(Qt::CTRL | Qt::Key_F), this, &MainWindow::showForcesTab);
   view->addAction(tr("Velocity and acceleration &polygons"), QKeySequence(Qt::CTRL | Qt::Key_G), this,
                   &MainWindow::showPolygonsTab);
+  view->setToolTipsVisible(true);  // why Inversions… is disabled
+  m_inversionsAction = view->addAction(tr("I&nversions…"), this, &MainWindow::showInversions);
+  const auto followLinkage = [this] {
+    const std::optional<QString> why = inversionsUnavailable(m_document->design());
+    m_inversionsAction->setEnabled(!why);
+    m_inversionsAction->setToolTip(
+        why.value_or(tr("The linkage with each link grounded in turn, animated side by side")));
+  };
+  connect(m_document, &MechanismDocument::changed, this, [followLinkage](Changes what) {
+    if (what & Change::Design) followLinkage();
+  });
+  followLinkage();
   QMenu* units = view->addMenu(tr("Angle &unit in plots"));
   auto* group = new QActionGroup(this);
   QAction* degrees = units->addAction(tr("&Degrees"));

@@ -40,6 +40,7 @@ class MotionPanel;
 class PlotPanel;
 class PolygonPanel;
 class CompareDialog;
+class InversionsWindow;
 class Settings;
 class SynthesisPanel;
 struct AnimationSettings;
@@ -97,6 +98,11 @@ public:
   /// Does now what waits for the window to settle: the plots report their width (the sweep
   /// follows it) and the document measures the quality estimate. For a screenshot or a test.
   void settle();
+  /// View ▸ Inversions…: shows (and raises) the window of the linkage's four inversions, made
+  /// once and kept; nullptr, changing nothing, when the linkage is neither a four-bar nor a
+  /// slider-crank (the action is disabled then, its tooltip saying why).
+  InversionsWindow* showInversions();
+  QAction* inversionsAction() const { return m_inversionsAction; }
   /// View ▸ Instant centres and centrodes, as if chosen from the menu.
   void setShowInstantCentres(bool show);
   /// Large fonts and lines, full screen, side panels hidden: for the lecture hall.
@@ -165,6 +171,8 @@ private:
   QAction* m_bigReadoutAction = nullptr;
   BigReadout* m_bigReadout = nullptr;
   bool m_bigReadoutBeforePresentation = false;  // the toggle's state, put back on leaving
+  QAction* m_inversionsAction = nullptr;
+  InversionsWindow* m_inversions = nullptr;
   bool m_presentation = false;
   QFont m_normalFont;
 };

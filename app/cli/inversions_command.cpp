@@ -8,9 +8,7 @@
 #include "kinematics/io/json.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/recognise.h"
-#include "kinematics/model/vec2.h"
 
-#include <cmath>
 #include <optional>
 #include <ostream>
 
@@ -57,17 +55,6 @@ ExitCode fourBar(const k::FourBarStructure& f, const std::string& unit, bool jso
   return ExitCode::Success;
 }
 
-// The slider-crank's dimensions read back from its points: crank |O2B|, rod, and the guide's
-// signed distance from O2 (its normal component, guide direction taken as +x).
-std::optional<k::SliderCrankGeometry> geometryOf(const k::Mechanism& m, const k::SliderCrankStructure& s) {
-  const auto& crank = std::get<k::CrankPoint>(m.points[s.b.index].definition);
-  const auto& slider = std::get<k::RrpPoint>(m.points[s.c.index].definition);
-  const auto* o2 = std::get_if<k::GroundPoint>(&m.points[s.o2.index].definition);
-  if (!o2) return std::nullopt;  // a crank on a moving pivot: not the textbook slider-crank
-  const Eigen::Vector2d u(std::cos(s.guideAngle), std::sin(s.guideAngle));
-  return k::SliderCrankGeometry{crank.length, slider.length, k::cross(u, slider.guide.point - o2->position), false};
-}
-
 ExitCode sliderCrank(const k::SliderCrankGeometry& g, const std::string& unit, bool json, std::ostream& out,
                      std::ostream& err) {
   const auto inversions = k::sliderCrankInversions(g, unit);
@@ -110,7 +97,7 @@ ExitCode runInversions(const Invocation& inv, std::ostream& out, std::ostream& e
   const k::Mechanism& m = resolved->mechanism;
   if (const auto f = k::asFourBar(m, k::PointsOnLinks::AnyLink)) return fourBar(*f, m.lengthUnit, inv.json, out, err);
   if (const auto s = k::asSliderCrank(m, k::PointsOnLinks::AnyLink))
-    if (const auto g = geometryOf(m, *s)) return sliderCrank(*g, m.lengthUnit, inv.json, out, err);
+    if (const auto g = k::sliderCrankGeometry(m, *s)) return sliderCrank(*g, m.lengthUnit, inv.json, out, err);
   err << "linkwright-cli: inversions needs a four-bar or a slider-crank (" << resolved->source << " is "
       << (resolved->kind.empty() ? "neither" : "a " + resolved->kind) << ")\n";
   return ExitCode::BadInput;

@@ -2,6 +2,7 @@
 
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/vec2.h"
 
 #include <array>
 #include <cmath>
@@ -110,6 +111,15 @@ std::string_view toString(SliderCrankLink link) {
   case SliderCrankLink::Slider: return "slider";
   }
   return "unknown";
+}
+
+std::optional<SliderCrankGeometry> sliderCrankGeometry(const Mechanism& m, const SliderCrankStructure& s) {
+  const auto& crank = std::get<CrankPoint>(m.points[s.b.index].definition);
+  const auto& slider = std::get<RrpPoint>(m.points[s.c.index].definition);
+  const auto* o2 = std::get_if<GroundPoint>(&m.points[s.o2.index].definition);
+  if (!o2) return std::nullopt;
+  const Eigen::Vector2d u(std::cos(s.guideAngle), std::sin(s.guideAngle));
+  return SliderCrankGeometry{crank.length, slider.length, cross(u, slider.guide.point - o2->position), false};
 }
 
 Result<std::vector<SliderCrankInversion>> sliderCrankInversions(const SliderCrankGeometry& g, const std::string& unit) {

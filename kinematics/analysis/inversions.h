@@ -28,6 +28,7 @@
 #include "kinematics/analysis/grashof.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/mechanism.h"
+#include "kinematics/model/recognise.h"
 #include "kinematics/model/result.h"
 #include "kinematics/model/slider_crank.h"
 
@@ -81,6 +82,13 @@ struct SliderCrankInversion {
 
 /// "frame (guide)", "crank", "rod", "slider".
 std::string_view toString(SliderCrankLink link);
+
+/// A recognised slider-crank's dimensions read back from its points (asSliderCrank): crank
+/// |O2B|, rod, and the guide's signed distance from O2, the guide's direction taken as +x (so
+/// `reversed` is false). nullopt when the crank turns about a moving pivot: not the textbook
+/// slider-crank.
+std::optional<SliderCrankGeometry> sliderCrankGeometry(const Mechanism& mechanism,
+                                                       const SliderCrankStructure& structure);
 
 /// The four inversions of `geometry` (its `reversed` flag mirrors the first only). Errors as
 /// checkSliderCrank.

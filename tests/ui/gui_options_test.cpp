@@ -54,6 +54,10 @@ TEST_CASE("the designer's options are read in both value forms", "[ui][options]"
 
   CHECK(parse({"--plots=rocker_angle,velocity_ratio"}).options->plots == "rocker_angle,velocity_ratio");
   CHECK_FALSE(parse({}).options->plots);
+  const auto inversions = parse({"--example", "ls3-engine", "--inversions-screenshot=inv.png"});
+  REQUIRE(inversions.options);
+  CHECK(inversions.options->inversionsScreenshot == "inv.png");
+  CHECK_FALSE(inversions.options->screenshot);
 
   CHECK(parse({"-h"}).options->help);
   CHECK(parse({"--version"}).options->version);
@@ -77,6 +81,10 @@ TEST_CASE("mistakes on the designer's command line name the option", "[ui][optio
       {{"--frame-delay", "40"}, "--frames and --frame-delay need --animation FILE"},
       {{"--animation", "a.gif", "--screenshot", "a.png"}, "give --screenshot or --animation, not both"},
       {{"--plots="}, "--plots: give at least one key"},
+      {{"--inversions-screenshot", "i.png", "--screenshot", "a.png"},
+       "give --screenshot or --inversions-screenshot, not both"},
+      {{"--inversions-screenshot", "i.png", "--animation", "a.gif"},
+       "give --animation or --inversions-screenshot, not both"},
   }));
   CAPTURE(args);
   const auto p = parse(args);

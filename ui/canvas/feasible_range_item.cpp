@@ -123,6 +123,8 @@ void FeasibleRangeItem::setPresentationScale(double factor) {
 
 QString FeasibleRangeItem::labelText() const { return m_label->text(); }
 
+void FeasibleRangeItem::setLabelShown(bool shown) { m_label->setVisible(shown); }
+
 QRectF FeasibleRangeItem::boundingRect() const { return m_bounds; }
 
 void FeasibleRangeItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) {

@@ -27,6 +27,8 @@ public:
   void setPresentationScale(double factor);
   /// The sentence shown next to the arc.
   QString labelText() const;
+  /// Whether the sentence is drawn (by default); a small view shows it elsewhere instead.
+  void setLabelShown(bool shown);
 
   QRectF boundingRect() const override;
   void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;

@@ -59,9 +59,10 @@ LinkageScene::~LinkageScene() = default;
 void LinkageScene::updateDesign(const MechanismDocument& document) {
   const k::Mechanism& m = document.mechanism();
   DrawingPlan plan = planDrawing(m);
-  if (!m_items || m_items->plan() != plan) {
+  if (!m_items || m_items->plan() != plan || m_colorsChanged) {
     m_items.reset();
-    m_items = std::make_unique<MechanismItems>(this, m, std::move(plan));
+    m_items = std::make_unique<MechanismItems>(this, m, std::move(plan), m_linkColors);
+    m_colorsChanged = false;
     m_items->setPresentationScale(m_presentationScale);
     m_handles = dragHandles(m_items->plan(), m);
     rebuildArrows(m.points.size());
@@ -177,6 +178,13 @@ void LinkageScene::updateArrows(const MechanismDocument& document) {
     place(m_velocityArrows[p], p, m_showVelocity, m_velocityScale, pose.velocity, tr("/s"));
     place(m_accelerationArrows[p], p, m_showAcceleration, m_accelerationScale, pose.acceleration, tr("/s\u00B2"));
   }
+}
+
+void LinkageScene::setRangeLabelShown(bool shown) { m_range->setLabelShown(shown); }
+
+void LinkageScene::setLinkColors(std::vector<QColor> colors) {
+  m_colorsChanged = colors != m_linkColors;
+  m_linkColors = std::move(colors);
 }
 
 void LinkageScene::setPresentationScale(double factor) {

@@ -13,6 +13,7 @@
 #include "kinematics/design/point_drag.h"
 #include "kinematics/model/ids.h"
 
+#include <QColor>
 #include <QGraphicsScene>
 
 #include <memory>
@@ -50,6 +51,12 @@ public:
   /// Takes the current theme's colours (ui/colors.h): the items that keep a colour are made
   /// anew from `document`, the rest are drawn again.
   void refreshColors(const MechanismDocument& document);
+  /// Per link (Mechanism::links order), the colour to draw it in: the inversions keep a physical
+  /// link's colour whatever link is grounded. Empty (the default): linkColor(index). Takes
+  /// effect at the next updateDesign.
+  void setLinkColors(std::vector<QColor> colors);
+  /// Whether the crank's range is stated in words beside its arc (by default).
+  void setRangeLabelShown(bool shown);
   void setShowVelocityArrows(bool show);
   void setShowAccelerationArrows(bool show);
   /// The instant centres, Kennedy's lines and the centrodes (instant_centres_item.h), solved
@@ -104,6 +111,8 @@ private:
   std::optional<std::size_t> sliderIndex(kinematics::PointId joint) const;
 
   std::unique_ptr<MechanismItems> m_items;
+  std::vector<QColor> m_linkColors;
+  bool m_colorsChanged = false;
   std::vector<DragHandle> m_handles;
   FeasibleRangeItem* m_range;
   InstantCentresItem* m_centres;

@@ -69,6 +69,20 @@ void LinkageView::setShowInstantCentres(bool show) {
   viewport()->update();
 }
 
+void LinkageView::setReadOnly(bool readOnly) {
+  m_readOnly = readOnly;
+  if (readOnly && m_hover) {
+    m_hover.reset();
+    m_scene->setHotHandle(std::nullopt);
+  }
+}
+
+void LinkageView::setLinkColors(std::vector<QColor> colors) {
+  m_scene->setLinkColors(std::move(colors));
+  m_scene->updateDesign(*m_document);
+  viewport()->update();
+}
+
 void LinkageView::setPresentationScale(double factor) {
   if (!(factor > 0.0) || !std::isfinite(factor)) return;
   m_presentationScale = std::clamp(factor, 0.5, 4.0);
@@ -182,6 +196,7 @@ QPointF LinkageView::sceneAt(const QPointF& viewportPos) const {
 }
 
 std::optional<DragHandle> LinkageView::handleAt(const QPointF& viewportPos) const {
+  if (m_readOnly) return std::nullopt;
   std::optional<DragHandle> best;
   double bestDistance = canvas::kPickRadiusPx * m_presentationScale;
   for (const DragHandle& handle : m_scene->handles()) {

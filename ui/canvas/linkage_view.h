@@ -20,9 +20,11 @@
 
 #include "kinematics/model/ids.h"
 
+#include <QColor>
 #include <QGraphicsView>
 
 #include <optional>
+#include <vector>
 
 namespace linkwright::ui {
 
@@ -46,6 +48,13 @@ public:
   double presentationScale() const { return m_presentationScale; }
   /// Draws again in the current theme's colours (ui/colors.h), grid and background included.
   void refreshColors();
+
+  /// Read-only: no handle is offered, so nothing can be dragged (a left drag pans); zoom and
+  /// pan still work. For views of a document the user does not edit (the inversions).
+  void setReadOnly(bool readOnly);
+  bool isReadOnly() const { return m_readOnly; }
+  /// Per link, the colour to draw it in (LinkageScene::setLinkColors); redraws at once.
+  void setLinkColors(std::vector<QColor> colors);
 
   /// Screen pixels per model length unit at the current zoom.
   double pixelsPerUnit() const;
@@ -115,6 +124,7 @@ private:
   MechanismDocument* m_document;
   LinkageScene* m_scene;
   double m_presentationScale = 1.0;
+  bool m_readOnly = false;
   QRectF m_extraRegion;  // scene units; null when none
   bool m_autoFit = true;
   Gesture m_gesture = Gesture::None;

@@ -70,29 +70,34 @@ Item* MechanismItems::add(Item* item) {
   return item;
 }
 
-MechanismItems::MechanismItems(QGraphicsScene* scene, const k::Mechanism& m, DrawingPlan plan)
-    : m_scene(scene), m_plan(std::move(plan)) {
+QColor MechanismItems::colorOf(std::size_t link) const {
+  return link < m_linkColors.size() ? m_linkColors[link] : linkColor(link);
+}
+
+MechanismItems::MechanismItems(QGraphicsScene* scene, const k::Mechanism& m, DrawingPlan plan,
+                               std::vector<QColor> linkColors)
+    : m_scene(scene), m_linkColors(std::move(linkColors)), m_plan(std::move(plan)) {
   const std::size_t points = m.points.size();
   m_links.assign(m.links.size(), nullptr);
   for (std::size_t l = 0; l < m.links.size(); ++l)
-    if (m_plan.barLinks[l]) m_links[l] = add(new LinkItem(linkColor(l)));
+    if (m_plan.barLinks[l]) m_links[l] = add(new LinkItem(colorOf(l)));
   for (const BodyShape& body : m_plan.bodies) {
     auto* plate = add(new QGraphicsPolygonItem);
-    QColor fill = linkColor(body.link.index);
+    QColor fill = colorOf(body.link.index);
     fill.setAlpha(colors().bodyFillAlpha);
     plate->setBrush(fill);
-    plate->setPen(cosmeticPen(linkColor(body.link.index), kPlateSideFraction * canvas::kLinkWidthPx));
+    plate->setPen(cosmeticPen(colorOf(body.link.index), kPlateSideFraction * canvas::kLinkWidthPx));
     plate->setZValue(canvas::z::kCouplerTriangle);
     m_bodies.push_back(plate);
   }
   for (const SlotShape& slot : m_plan.slottedLinks) {
-    m_slots.push_back(add(new SlottedLinkItem(linkColor(slot.link.index))));
+    m_slots.push_back(add(new SlottedLinkItem(colorOf(slot.link.index))));
     // The block is a body of its own (the dyad's middle link): neutral, so it reads on the bar.
     m_slotBlocks.push_back(add(new SliderBlockItem(colors().frame, kSlotBlockLengthPx, kSlotBlockHeightPx)));
   }
   for (const SliderShape& slider : m_plan.sliders) {
     const k::Guide& guide = sliderGuide(m, slider);
-    const QColor guideColor = guide.link ? linkColor(guide.link->index) : colors().frame;
+    const QColor guideColor = guide.link ? colorOf(guide.link->index) : colors().frame;
     m_slideways.push_back(add(new SlidewayItem(slider.onGround, kBlockHeightPx + 2.0, guideColor)));
     m_blocks.push_back(add(new SliderBlockItem(sliderColor(slider.ordinal), kBlockLengthPx, kBlockHeightPx)));
   }
@@ -172,6 +177,9 @@ LabelItem* MechanismItems::label(k::PointId p) const { return p.index < m_labels
 void MechanismItems::setDesign(const k::Mechanism& m, const k::SweepResult& sweep, const k::Pose& pose,
                                double linkageSize, const std::optional<k::TimeBase>& time) {
   m_margin = 0.06 * linkageSize;
+  // The same plan may come with other point names (an inversion renames its joints).
+  for (std::size_t i = 0; i < m_labels.size() && i < m.points.size(); ++i)
+    if (m_labels[i] != nullptr) m_labels[i]->setText(pointDisplayName(m.points[i].name));
   setDrivenDesign(m, sweep, pose, time);
   for (std::size_t i = 0; i < m_paths.size(); ++i)
     if (m_paths[i] != nullptr) m_paths[i]->setFromSweep(sweep, k::PointId{i});
@@ -403,7 +411,7 @@ void MechanismItems::setPresentationScale(double factor) {
     line->setPen(cosmeticPen(colors().frame, canvas::kFrameWidthPx * factor, Qt::DashLine));
   for (std::size_t b = 0; b < m_bodies.size(); ++b)
     m_bodies[b]->setPen(
-        cosmeticPen(linkColor(m_plan.bodies[b].link.index), kPlateSideFraction * canvas::kLinkWidthPx * factor));
+        cosmeticPen(colorOf(m_plan.bodies[b].link.index), kPlateSideFraction * canvas::kLinkWidthPx * factor));
   const auto scaleAll = [factor](const auto& items) {
     for (QGraphicsItem* item : items)
       if (item != nullptr) item->setScale(factor);

@@ -14,6 +14,7 @@
 #include "kinematics/solve/pose.h"
 #include "kinematics/solve/sweep.h"
 
+#include <QColor>
 #include <QLineF>
 #include <QPointF>
 #include <QRectF>
@@ -42,8 +43,10 @@ class WorkspaceItem;
 
 class MechanismItems {
 public:
-  /// Adds the items for `plan` (of `mechanism`) to `scene`, which owns them.
-  MechanismItems(QGraphicsScene* scene, const kinematics::Mechanism& mechanism, DrawingPlan plan);
+  /// Adds the items for `plan` (of `mechanism`) to `scene`, which owns them. `linkColors`: per
+  /// link, the colour to draw it in; a link it does not cover takes linkColor(index).
+  MechanismItems(QGraphicsScene* scene, const kinematics::Mechanism& mechanism, DrawingPlan plan,
+                 std::vector<QColor> linkColors = {});
   /// Removes and deletes the items.
   ~MechanismItems();
   MechanismItems(const MechanismItems&) = delete;
@@ -86,6 +89,7 @@ public:
   WorkspaceItem* workspace(std::size_t index) const { return m_workspaces[index]; }
 
 private:
+  QColor colorOf(std::size_t link) const;
   template <typename Item>
   Item* add(Item* item);
   void placeSliders(const kinematics::Mechanism& mechanism, const kinematics::Pose& pose);
@@ -96,6 +100,7 @@ private:
   double barLength(std::size_t slot, double tipDistance) const;  // slotted bar, pivot to far end
 
   QGraphicsScene* m_scene;
+  std::vector<QColor> m_linkColors;
   DrawingPlan m_plan;
   std::vector<QGraphicsItem*> m_owned;
   std::vector<LinkItem*> m_links;                              // per link; null for slotted links

@@ -159,3 +159,21 @@ TEST_CASE("an offset slider-crank: the slotted inversions are named, not built",
   REQUIRE_FALSE(bad);
   CHECK(bad.error().field == "rod");
 }
+
+TEST_CASE("a slider-crank's dimensions read back from its points, offset and reversed", "[inversions]") {
+  for (const SliderCrankGeometry g :
+       {SliderCrankGeometry{46.0, 150.0, 12.0, false}, SliderCrankGeometry{46.0, 150.0, -20.0, false},
+        SliderCrankGeometry{30.0, 90.0, 10.0, true}}) {
+    const auto m = makeSliderCrank(g);
+    REQUIRE(m);
+    const auto s = asSliderCrank(*m);
+    REQUIRE(s);
+    const auto back = sliderCrankGeometry(*m, *s);
+    REQUIRE(back);
+    CHECK(back->crank == Approx(g.crank));
+    CHECK(back->rod == Approx(g.rod));
+    // Read in the guide's own direction: a reversed guide (along −x) sees the offset mirrored.
+    CHECK(back->offset == Approx(g.reversed ? -g.offset : g.offset));
+    CHECK_FALSE(back->reversed);
+  }
+}
