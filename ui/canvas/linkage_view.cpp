@@ -126,7 +126,8 @@ void LinkageView::fitToView() {
   const double w = std::max(bounds.width(), 1e-3 * size);
   const double h = std::max(bounds.height(), 1e-3 * size);
   const QSizeF area = viewport()->size();
-  const double margin = kFitMarginPx * m_presentationScale;
+  // Presentation mode's larger pins want a larger margin, but not most of a narrow canvas.
+  const double margin = std::min(kFitMarginPx * m_presentationScale, 0.15 * std::min(area.width(), area.height()));
   const double availableW = std::max(area.width() - 2.0 * margin, 0.3 * area.width());
   const double availableH = std::max(area.height() - 2.0 * margin, 0.3 * area.height());
   double k = std::min(availableW / w, availableH / h);

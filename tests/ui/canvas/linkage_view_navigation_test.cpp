@@ -71,3 +71,16 @@ TEST_CASE("a document reset fits the new design, whatever its size", "[canvas][n
     CHECK(insideViewport(v, v.point(fourbar::kO4)));
   }
 }
+
+TEST_CASE("in presentation mode a narrow canvas still gives the drawing most of its width", "[canvas][navigation]") {
+  // At presentation scale the margin for the larger pins is 80 px a side: on a 240 px wide
+  // canvas (an 800 px window beside its charts) that left the linkage 80 px.
+  ShownView v;
+  v.view.setPresentationScale(2.0);
+  v.view.resize(240, 700);
+  QCoreApplication::processEvents();
+  v.view.fitToView();
+  const QRect onScreen = v.view.mapFromScene(v.scene().contentBounds()).boundingRect();
+  CHECK(onScreen.width() >= 0.6 * v.view.viewport()->width());
+  CHECK(v.view.viewport()->rect().contains(onScreen));
+}
