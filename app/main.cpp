@@ -24,7 +24,6 @@
 
 namespace {
 
-// Shows the window, lets layout and first paint settle, saves it as a PNG and quits.
 // Shows the window and lets it settle as the event loop would before the first frame.
 void showSettled(linkwright::ui::MainWindow& window) {
   window.show();
@@ -37,6 +36,7 @@ void showSettled(linkwright::ui::MainWindow& window) {
   QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
 }
 
+// Shows the window, lets layout and first paint settle, saves it as a PNG and quits.
 int takeScreenshot(linkwright::ui::MainWindow& window, const QString& path) {
   showSettled(window);
   if (!window.grab().save(path, "PNG")) {
