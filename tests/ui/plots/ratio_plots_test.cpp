@@ -202,3 +202,26 @@ TEST_CASE("the plot keys of --plots select exactly their curves, and an unknown 
   CHECK_FALSE(selectionOfKeys(curves, {"rocker_angle", "C_x"}, unknown));
   CHECK(unknown == QStringLiteral("C_x"));  // a four-bar has no slider
 }
+
+TEST_CASE("extreme four-bars plot finite ratios or none, never NaN or infinity", "[plot_panel][ratios][errors]") {
+  int plottedDesigns = 0;
+  for (const k::FourBarLengths& lengths :
+       {k::FourBarLengths{1e-6, 1e9, 1e9, 1e9}, k::FourBarLengths{1e3, 1e-3, 1e3, 1e3},
+        k::FourBarLengths{50.0, 20.0, 50.0, 20.0} /* a parallelogram: a change point */}) {
+    CAPTURE(lengths.frame, lengths.crank, lengths.coupler, lengths.rocker);
+    MechanismDocument doc;
+    const auto design = k::fourBarDesign(lengths, k::Branch::Open, "mm");
+    if (!design) continue;  // refused by the core: nothing to plot
+    ++plottedDesigns;
+    doc.reset(*design);
+    PlotPanel panel(&doc);
+    showRatios(panel, kFourBarRatio, kFourBarAdvantage);
+    for (const PlotQuantity q : {kFourBarRatio, kFourBarAdvantage})
+      for (const QPointF& p : plotted(panel, q)) CHECK((std::isfinite(p.x()) && std::isfinite(p.y())));
+    for (const auto kind : {QuantityKind::VelocityRatio, QuantityKind::Advantage}) {
+      const QValueAxis* axis = panel.chartView(kind)->yAxis();
+      CHECK((std::isfinite(axis->min()) && std::isfinite(axis->max())));
+    }
+  }
+  CHECK(plottedDesigns == 3);  // the core accepts all three: the loop is not empty
+}
