@@ -49,6 +49,7 @@ void QuantityChartView::setCurves(const std::vector<PlotCurve>& curves) {
   if (same) return;
   for (Curve& curve : m_curves) curve.line.removeFromChart();
   m_curves.clear();
+  removeMarkers();  // outlined in the curves' colours (a theme switch): the next setOverlay remakes them
   m_curves.reserve(mine.size());
   for (const PlotCurve& c : mine) {
     const PlotQuantity q = c.quantity;
@@ -126,11 +127,7 @@ void QuantityChartView::setOverlay(const std::vector<OverlayCurve>& overlay) {
                     std::equal(mine.begin(), mine.end(), m_markers.begin(),
                                [](const OverlayCurve* a, const Markers& b) { return *a == b.overlay; });
   if (same) return;
-  for (const Markers& m : m_markers) {
-    chart()->removeSeries(m.series);
-    delete m.series;
-  }
-  m_markers.clear();
+  removeMarkers();
   for (const OverlayCurve* o : mine) {
     auto* series = new QScatterSeries;
     series->setName(o->name);
@@ -163,6 +160,14 @@ void QuantityChartView::setOverlay(const std::vector<OverlayCurve>& overlay) {
     m_markers.push_back({*o, series});
   }
   m_cursor->raise();
+}
+
+void QuantityChartView::removeMarkers() {
+  for (const Markers& m : m_markers) {
+    chart()->removeSeries(m.series);
+    delete m.series;
+  }
+  m_markers.clear();
 }
 
 QScatterSeries* QuantityChartView::overlaySeries(PlotQuantity quantity) const {

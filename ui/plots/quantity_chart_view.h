@@ -94,6 +94,7 @@ private:
     QScatterSeries* series;  // owned by the chart
   };
 
+  void removeMarkers();
   void onSegmentHovered(PlotQuantity quantity, const QLineSeries* segment, QPointF point, bool inside);
   // The value axis over the data's span, with no more ticks than the plot's height can label.
   void applyValueRange();

@@ -176,6 +176,16 @@ TEST_CASE("the compared rows are drawn over the plots, the α4 typo rows in red,
   CHECK(alpha->at(3).x() == Approx(k::degToRad(alphaColumn.rows[3].inputDeg)).margin(1e-12));
   CHECK(alpha->at(3).y() == Approx(alphaColumn.rows[3].restated).margin(1e-12));
 
+  // The markers are outlined in their curve's colour, in the theme drawn with.
+  window.setHighContrast(true);
+  const QScatterSeries* outlined = plots->chartView(QuantityKind::Angle)->overlaySeries(PlotQuantity::RockerAngle);
+  REQUIRE(outlined != nullptr);
+  CHECK(outlined->pen().color() == paletteOf(Theme::HighContrast).links[k::fourbar::kRocker.index]);
+  window.setHighContrast(false);
+  outlined = plots->chartView(QuantityKind::Angle)->overlaySeries(PlotQuantity::RockerAngle);
+  REQUIRE(outlined != nullptr);
+  CHECK(outlined->pen().color() == paletteOf(Theme::Normal).links[k::fourbar::kRocker.index]);
+
   // Unticked, they go; ticked, they come back; another linkage clears them.
   dialog->drawOnPlotsBox()->setChecked(false);
   CHECK_FALSE(plots->hasComparison());
