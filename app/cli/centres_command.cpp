@@ -1,9 +1,11 @@
-// `linkwright-cli centres`: the six instant centres of a four-bar or slider-crank at the crank
-// angles asked for, with the velocity ratio and the ideal mechanical advantage they give
-// (kinematics/analysis/instant_centres.h). Text for reading; every number comes from the core.
+// `linkwright-cli centres`: every instant centre of a linkage at the crank angles asked for,
+// each with the pin, slide or Kennedy lines that locate it, and the velocity ratio and the
+// ideal mechanical advantage they give (kinematics/analysis/instant_centres.h). Text for
+// reading; every number comes from the core.
 
 #include "app/cli/commands.h"
 
+#include "kinematics/analysis/advantage_sweep.h"
 #include "kinematics/analysis/instant_centres.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/units.h"
@@ -20,15 +22,6 @@ namespace k = kinematics;
 using k::io::formatShort;
 
 constexpr int kDigits = 9;  // significant digits: ample for a drawing, short enough to read
-
-struct BodyNames {
-  const char* names[5];  // 1-based: frame, crank, coupler/rod, rocker/slider
-};
-
-BodyNames bodiesOf(k::CentreLinkage linkage) {
-  if (linkage == k::CentreLinkage::FourBar) return {{"", "frame", "crank", "coupler", "rocker"}};
-  return {{"", "frame", "crank", "rod", "slider"}};
-}
 
 // Pads to `width` characters (UTF-8 code points: "°" is one character, two bytes).
 std::string padded(const std::string& text, std::size_t width) {
@@ -50,16 +43,35 @@ std::string centreText(const k::InstantCentre& c, double scale, const std::strin
   case k::CentreKind::AtInfinity:
     return "at infinity, direction " + formatShort(k::radToDeg(std::atan2(c.direction.y(), c.direction.x()))) + "°";
   case k::CentreKind::Indeterminate: return "indeterminate";
+  case k::CentreKind::Unresolved: return "not located";
   }
   return {};
 }
 
-// What a centre is, or why it is where it is.
-std::string centreNote(const k::InstantCentre& c, int i, int j, const BodyNames& b, const char* pin) {
-  const std::string pair = std::string(b.names[i]) + " and " + b.names[j];
-  if (c.kind == k::CentreKind::AtInfinity) return pair + " have no relative rotation";
-  if (c.kind == k::CentreKind::Indeterminate) return "Kennedy's lines coincide: all joints in one line";
-  return pin ? std::string("pin ") + pin : std::string();
+std::string pairName(std::size_t i, std::size_t j) {
+  if (i > j) std::swap(i, j);
+  return "I" + std::to_string(i) + (i > 9 || j > 9 ? "," : "") + std::to_string(j);
+}
+
+// The Kennedy line through Iik and Ijk.
+std::string lineName(std::size_t i, std::size_t j, std::size_t k) { return pairName(i, k) + "–" + pairName(j, k); }
+
+// What a centre is, or how Kennedy's lines locate it.
+std::string centreNote(const k::InstantCentres& c, std::size_t i, std::size_t j) {
+  const k::InstantCentre& centre = c.centre(i, j);
+  const k::CentreOrigin& o = c.origin(i, j);
+  const std::string pair = c.bodies[i - 1] + " and " + c.bodies[j - 1];
+  switch (o.rule) {
+  case k::CentreRule::Pin: return "pin " + o.joint;
+  case k::CentreRule::Slide: return "slide at " + o.joint + ": " + pair + " have no relative rotation";
+  case k::CentreRule::None: return "unresolved: Kennedy's theorem does not reach it";
+  case k::CentreRule::Kennedy: break;
+  }
+  const std::string lines = lineName(i, j, o.via[0]) + " and " + lineName(i, j, o.via[1]);
+  if (centre.kind == k::CentreKind::Indeterminate)
+    return "Kennedy's lines " + lines + " coincide: all joints in one line";
+  if (centre.kind == k::CentreKind::AtInfinity) return pair + " have no relative rotation (" + lines + " parallel)";
+  return "on " + lines;
 }
 
 std::string ratioText(const k::Ratio& r, const std::string& unit) {
@@ -69,54 +81,51 @@ std::string ratioText(const k::Ratio& r, const std::string& unit) {
 }
 
 // Why a ratio is zero, infinite or undefined at this pose; empty when it is not.
-std::string toggleNote(const k::MechanicalAdvantage& ma, k::CentreLinkage linkage) {
-  const bool fourBar = linkage == k::CentreLinkage::FourBar;
-  if (ma.velocityRatio.kind == k::RatioKind::Undefined) return "all joints lie in one line: the ratios are undefined";
+std::string toggleNote(const k::InstantCentres& c, const k::MechanicalAdvantage& ma) {
+  const std::size_t a = c.ratio.input, b = c.ratio.output;
+  const std::string iab = pairName(a, b);
+  if (ma.velocityRatio.kind == k::RatioKind::Undefined) return iab + " is not located: the ratios are undefined";
   if (ma.velocityRatio.kind == k::RatioKind::Infinite)
-    return fourBar ? "coupler and rocker in line: the crank cannot drive the linkage here"
-                   : "rod normal to the guide: the crank cannot drive the slider here";
+    return (c.ratio.outputSlides ? iab + " at infinity" : iab + " on the output's pivot " + pairName(1, b)) +
+           ": the crank cannot drive the output here";
   if (ma.advantage.kind == k::RatioKind::Infinite)
-    return fourBar ? "toggle: crank and coupler in line, the rocker is momentarily at rest (a limit position)"
-                   : "dead centre: crank and rod in line, the slider is momentarily at rest";
+    return iab + " on the crank's pivot " + pairName(1, a) +
+           ": the output is momentarily at rest (a limit position, or a slider's dead centre)";
   return {};
 }
 
 void printPose(std::ostream& out, const k::InstantCentres& c, const std::string& unit) {
-  const BodyNames b = bodiesOf(c.linkage);
-  const bool fourBar = c.linkage == k::CentreLinkage::FourBar;
-  const struct {
-    const char* name;
-    const k::InstantCentre* centre;
-    int i, j;
-    const char* pin;
-  } rows[] = {
-      {"I12", &c.i12, 1, 2, "O2"}, {"I13", &c.i13, 1, 3, nullptr}, {"I14", &c.i14, 1, 4, fourBar ? "O4" : nullptr},
-      {"I23", &c.i23, 2, 3, "B"},  {"I24", &c.i24, 2, 4, nullptr}, {"I34", &c.i34, 3, 4, "C"}};
-  for (const auto& row : rows) {
-    std::string note = centreNote(*row.centre, row.i, row.j, b, row.pin);
-    if (!fourBar && row.centre == &c.i14) note = "the slider translates along the guide";
-    const std::string text = centreText(*row.centre, c.scale, unit);
-    out << "  " << row.name << "  " << (note.empty() ? text : padded(text, 42) + "  " + note) << "\n";
-  }
+  for (std::size_t i = 1; i <= c.bodyCount(); ++i)
+    for (std::size_t j = i + 1; j <= c.bodyCount(); ++j) {
+      const std::string text = centreText(c.centre(i, j), c.scale, unit);
+      out << "  " << padded(pairName(i, j), 3) << "  " << padded(text, 42) << "  " << centreNote(c, i, j) << "\n";
+    }
+  if (!c.ratio.exists()) return;
   const k::MechanicalAdvantage ma = k::mechanicalAdvantage(c);
-  if (fourBar) {
-    out << "  velocity ratio        ω4/ω2 = " << ratioText(ma.velocityRatio, "") << "\n";
-    out << "  mechanical advantage  T4/T2 = ω2/ω4 = " << ratioText(ma.advantage, "") << "\n";
+  const std::string a = std::to_string(c.ratio.input), b = std::to_string(c.ratio.output);
+  if (!c.ratio.outputSlides) {
+    out << "  velocity ratio        ω" << b << "/ω" << a << " = " << ratioText(ma.velocityRatio, "") << "\n";
+    out << "  mechanical advantage  T" << b << "/T" << a << " = ω" << a << "/ω" << b << " = "
+        << ratioText(ma.advantage, "") << "\n";
   } else {
-    out << "  velocity ratio        v/ω2 = " << ratioText(ma.velocityRatio, " " + unit + "/rad") << "\n";
-    out << "  mechanical advantage  F/T2 = ω2/v = " << ratioText(ma.advantage, " 1/" + unit) << "\n";
+    out << "  velocity ratio        v/ω" << a << " = " << ratioText(ma.velocityRatio, " " + unit + "/rad") << "\n";
+    out << "  mechanical advantage  F/T" << a << " = ω" << a << "/v = " << ratioText(ma.advantage, " 1/" + unit)
+        << "\n";
   }
-  if (const std::string note = toggleNote(ma, c.linkage); !note.empty()) out << "  note: " << note << "\n";
+  if (const std::string note = toggleNote(c, ma); !note.empty()) out << "  note: " << note << "\n";
 }
 
-void printHeader(std::ostream& out, const k::InstantCentres& c, const std::string& unit) {
-  const BodyNames b = bodiesOf(c.linkage);
-  out << "instant centres of the " << (c.linkage == k::CentreLinkage::FourBar ? "four-bar" : "slider-crank")
-      << ": bodies 1 " << b.names[1] << ", 2 " << b.names[2] << ", 3 " << b.names[3] << ", 4 " << b.names[4]
-      << "; lengths in " << unit << ", directions CCW from +x\n";
-  if (c.linkage == k::CentreLinkage::SliderCrank)
-    out << "slider velocity v and force F along the guide, direction "
-        << formatShort(k::radToDeg(std::atan2(c.guideDirection.y(), c.guideDirection.x()))) << "°\n";
+void printHeader(std::ostream& out, const k::Mechanism& m, const k::InstantCentres& c) {
+  out << "instant centres: bodies";
+  for (std::size_t b = 1; b <= c.bodyCount(); ++b) out << (b == 1 ? " " : ", ") << b << " " << c.bodies[b - 1];
+  out << "; lengths in " << m.lengthUnit << ", directions CCW from +x\n";
+  if (const auto why = k::ratioUnavailable(m)) {
+    out << "ratios: none (" << why->message << ")\n";
+    return;
+  }
+  if (c.ratio.outputSlides)
+    out << "output " << c.bodies[c.ratio.output - 1] << ": velocity v and force F along its guide, direction "
+        << formatShort(k::radToDeg(std::atan2(c.outputDirection.y(), c.outputDirection.x()))) << "°\n";
   out << "ratios: ω = angular velocity (rad/s, CCW positive); mechanical advantage ideal (no friction, no inertia), "
          "negative when the output turns against the input\n";
 }
@@ -145,7 +154,7 @@ ExitCode runCentres(const Invocation& inv, std::ostream& out, std::ostream& err)
       err << "linkwright-cli: " << centres.error().message << "\n";
       return ExitCode::BadInput;
     }
-    if (!headerDone) printHeader(out, *centres, m.lengthUnit);
+    if (!headerDone) printHeader(out, m, *centres);
     headerDone = true;
     out << "\ncrank angle " << formatShort(deg) << "°\n";
     printPose(out, *centres, m.lengthUnit);

@@ -20,8 +20,8 @@ Commands:
              (four-bars), quick return (shapers), mobility and assembly (any linkage)
   arm        a two-link arm's joint angles, rates and accelerations as its tip follows
              a straight line (CSV)
-  centres    instant centres, velocity ratio and mechanical advantage at crank angles
-             (four-bars, slider-cranks)
+  centres    instant centres (Kennedy's circle diagram), velocity ratio and mechanical
+             advantage at crank angles (four-bars, slider-cranks, shapers, six-bars)
   polygon    velocity and acceleration polygons at crank angles: each point's vector
              equation and its arrows, tip to tail, against the solver's exact values
   inversions a four-bar's (or slider-crank's) four inversions: the link grounded, the
@@ -124,12 +124,16 @@ constexpr const char* kClassifyOptions = R"(Classify options:
 )";
 
 constexpr const char* kCentresOptions =
-    R"(Centres options (with the mechanism options; four-bars and the slider-crank example):
+    R"(Centres options (with the mechanism options; any linkage):
   --at DEG[,DEG...]   crank angle(s), degrees CCW from the frame line; repeatable
-Output: the six instant centres Iij of bodies 1 frame, 2 crank, 3 coupler (rod), 4 rocker
-  (slider), as (x, y) in the length unit or "at infinity" with a direction; the velocity
-  ratio ω4/ω2 (slider: v/ω2, length unit per rad) and the ideal mechanical advantage
-  T4/T2 = ω2/ω4 (slider: F/T2 = ω2/v, per length unit), signed, infinite at a toggle.
+Output: every instant centre Iij of the linkage's bodies, numbered 1 frame, 2 crank, then
+  in the order the linkage reaches them (a four-bar: 3 coupler, 4 rocker; a slider-crank:
+  3 rod, 4 slider), as (x, y) in the length unit or "at infinity" with a direction, each
+  with the pin, slide or Kennedy lines that locate it ("not located" where Kennedy's
+  theorem does not reach); for a crank and an output b jointed to the frame, the velocity
+  ratio ωb/ω2 (sliding output: v/ω2, length unit per rad) and the ideal mechanical
+  advantage Tb/T2 = ω2/ωb (sliding: F/T2 = ω2/v, per length unit), signed, infinite at a
+  toggle.
 )";
 
 constexpr const char* kReportOptions =

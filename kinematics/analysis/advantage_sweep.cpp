@@ -1,10 +1,32 @@
 #include "kinematics/analysis/advantage_sweep.h"
 
+#include "kinematics/analysis/centre_model.h"
 #include "kinematics/solve/pose_solver.h"
 
 namespace linkwright::kinematics {
+namespace {
+
+Result<CentreModel> ratioModel(const Mechanism& m) {
+  auto model = centreModel(m);
+  if (!model || model->ratio.exists()) return model;
+  const std::string missing = model->ratio.input == 0 ? "it is not driven by a crank turning about a frame pin"
+                                                      : "no other body is jointed to the frame";
+  return Error{
+      ErrorCode::InvalidStructure, "mechanism",
+      "the velocity ratio and mechanical advantage compare a crank with an output jointed to the frame: " + missing};
+}
+
+}  // namespace
+
+std::optional<Error> ratioUnavailable(const Mechanism& m) {
+  const auto model = ratioModel(m);
+  if (!model) return model.error();
+  return std::nullopt;
+}
 
 Result<AdvantageSeries> advantageSeries(const Mechanism& m, const SweepResult& sweep) {
+  const auto model = ratioModel(m);
+  if (!model) return model.error();
   const std::size_t n = sweep.size();
   if (sweep.position.size() != m.points.size())
     return Error{ErrorCode::InvalidStructure, "sweep",
@@ -17,25 +39,15 @@ Result<AdvantageSeries> advantageSeries(const Mechanism& m, const SweepResult& s
   Pose pose;
   preparePose(m, pose);
   AdvantageSeries out;
+  out.bodies = model->ratio;
   out.velocityRatio.resize(n, Ratio{RatioKind::Undefined, 0.0});
   out.advantage.resize(n, Ratio{RatioKind::Undefined, 0.0});
-  bool kindKnown = false;
   for (std::size_t j = 0; j < n; ++j) {
     if (!sweep.assembled(j)) continue;
     for (std::size_t i = 0; i < m.points.size(); ++i) pose.position[i] = sweep.position[i][j];
-    const auto centres = instantCentres(m, pose);
-    if (!centres) return centres.error();
-    out.linkage = centres->linkage;
-    kindKnown = true;
-    const MechanicalAdvantage ma = mechanicalAdvantage(*centres);
+    const MechanicalAdvantage ma = mechanicalAdvantage(instantCentres(m, *model, pose));
     out.velocityRatio[j] = ma.velocityRatio;
     out.advantage[j] = ma.advantage;
-  }
-  if (!kindKnown) {
-    // Nothing assembled: still say what the mechanism is, or refuse it as instantCentres does.
-    const auto centres = instantCentres(m, pose);
-    if (!centres && centres.error().code == ErrorCode::InvalidStructure) return centres.error();
-    if (centres) out.linkage = centres->linkage;
   }
   return out;
 }

@@ -1,7 +1,6 @@
 #include "kinematics/analysis/centrodes.h"
 
-#include "kinematics/analysis/instant_centres.h"
-#include "kinematics/model/recognise.h"
+#include "kinematics/analysis/centre_model.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,22 +10,13 @@ namespace linkwright::kinematics {
 
 namespace {
 
-// The coupler's joints B and C, from whichever structure the mechanism has.
-struct CouplerJoints {
-  PointId b, c;
-};
-
-Result<CouplerJoints> couplerJoints(const Mechanism& mechanism) {
-  if (const auto fourBar = asFourBar(mechanism, PointsOnLinks::AnyLink)) return CouplerJoints{fourBar->b, fourBar->c};
-  if (const auto slider = asSliderCrank(mechanism, PointsOnLinks::AnyLink)) return CouplerJoints{slider->b, slider->c};
-  return Error{ErrorCode::InvalidStructure, "mechanism",
-               "centrodes are drawn for a four-bar or a slider-crank only (Kennedy's theorem locates their "
-               "coupler's centre)"};
-}
-
-CouplerFrame frameAt(const CouplerJoints& joints, const Pose& pose) {
-  const Eigen::Vector2d b = pose.position[joints.b.index], c = pose.position[joints.c.index];
-  return CouplerFrame{b, std::atan2(c.y() - b.y(), c.x() - b.x())};
+Result<CentreModel> floatingBodyModel(const Mechanism& mechanism) {
+  auto model = centreModel(mechanism);
+  if (model && model->centrodeBody == 0)
+    return Error{ErrorCode::InvalidStructure, "mechanism",
+                 "centrodes are traced for a body not jointed to the frame (a coupler): every body of this linkage "
+                 "is jointed to it"};
+  return model;
 }
 
 }  // namespace
@@ -42,21 +32,27 @@ Eigen::Vector2d CouplerFrame::toLocal(const Eigen::Vector2d& world) const {
   return {c * d.x() + s * d.y(), -s * d.x() + c * d.y()};
 }
 
+CouplerFrame couplerFrame(const CentreModel& model, const Pose& pose) {
+  const Eigen::Vector2d b = pose.position[model.centrodeFirst.index], c = pose.position[model.centrodeSecond.index];
+  return CouplerFrame{b, std::atan2(c.y() - b.y(), c.x() - b.x())};
+}
+
 Result<CouplerFrame> couplerFrame(const Mechanism& mechanism, const Pose& pose) {
-  const auto joints = couplerJoints(mechanism);
-  if (!joints) return joints.error();
-  return frameAt(*joints, pose);
+  const auto model = floatingBodyModel(mechanism);
+  if (!model) return model.error();
+  return couplerFrame(*model, pose);
 }
 
 Result<Centrodes> centrodes(const Mechanism& mechanism, const SweepResult& sweep) {
-  const auto joints = couplerJoints(mechanism);
-  if (!joints) return joints.error();
+  const auto model = floatingBodyModel(mechanism);
+  if (!model) return model.error();
   const bool complete = sweep.position.size() == mechanism.points.size() &&
                         std::all_of(sweep.position.begin(), sweep.position.end(),
                                     [&](const auto& column) { return column.size() >= sweep.size(); });
   if (!complete)
     return Error{ErrorCode::InvalidValue, "sweep", "centrodes need every point's position at every sample"};
   Centrodes out;
+  out.body = model->centrodeBody;
   bool inRun = false;
   Pose pose;  // positions only: the centres need nothing else
   pose.position.resize(mechanism.points.size());
@@ -64,12 +60,10 @@ Result<Centrodes> centrodes(const Mechanism& mechanism, const SweepResult& sweep
     std::optional<Eigen::Vector2d> centre;
     if (sweep.assembled(j)) {
       for (std::size_t i = 0; i < pose.position.size(); ++i) pose.position[i] = sweep.position[i][j];
-      const auto centres = instantCentres(mechanism, pose);
-      if (!centres) return centres.error();
-      const InstantCentre& i13 = centres->i13;
-      if (i13.kind == CentreKind::Finite &&
-          (i13.position - centres->i12.position).norm() <= kCentrodeReach * centres->scale)
-        centre = i13.position;
+      const InstantCentres centres = instantCentres(mechanism, *model, pose);
+      const InstantCentre& i1k = centres.centre(1, out.body);
+      if (i1k.kind == CentreKind::Finite && (i1k.position - centres.anchor).norm() <= kCentrodeReach * centres.scale)
+        centre = i1k.position;
     }
     if (!centre) {
       inRun = false;
@@ -81,7 +75,7 @@ Result<Centrodes> centrodes(const Mechanism& mechanism, const SweepResult& sweep
       inRun = true;
     }
     out.fixed.back().push_back(*centre);
-    out.moving.back().push_back(frameAt(*joints, pose).toLocal(*centre));
+    out.moving.back().push_back(couplerFrame(*model, pose).toLocal(*centre));
   }
   return out;
 }

@@ -1,12 +1,15 @@
 #pragma once
-// The centrodes of a four-bar's coupler (a slider-crank's rod): the path of its instant centre
-// I13 relative to the frame over a sweep, traced in the frame (the fixed centrode) and in the
-// coupler's own frame (the moving centrode). The moving centrode rolls on the fixed one without
-// slipping, touching it at I13 (Norton §6.5; Uicker, Pennock & Shigley §3.20). Each centre is
-// instant_centres.h's at the sample; where I13 is at infinity or indeterminate (the coupler
-// translates for an instant, or every joint is in line), or farther than kCentrodeReach
-// linkage sizes from the crank pivot, the curves break: they run off towards infinity there.
+// The centrodes of a linkage's first floating body (centre_model.h: a four-bar's coupler, a
+// slider-crank's rod, a shaper's link), body k: the path of its instant centre I1k relative to
+// the frame over a sweep, traced in the frame (the fixed centrode) and in the body's own frame
+// (the moving centrode). The moving centrode rolls on the fixed one without slipping, touching
+// it at I1k (Norton §6.5; Uicker, Pennock & Shigley §3.20). Each centre is instant_centres.h's
+// at the sample; where I1k is at infinity, indeterminate or unresolved (the body translates for
+// an instant, every joint is in line, or Kennedy's theorem does not reach it), or farther than
+// kCentrodeReach linkage sizes from the anchor (the crank pivot), the curves break: they run off
+// towards infinity there.
 
+#include "kinematics/analysis/centre_model.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/model/result.h"
 #include "kinematics/solve/sweep.h"
@@ -22,11 +25,12 @@ namespace linkwright::kinematics {
 /// dwarf the linkage.
 inline constexpr double kCentrodeReach = 10.0;
 
-/// A point fixed on the coupler, in the coupler's frame: origin at its first joint B, x along
-/// B→C, y 90° CCW from x (length unit).
+/// The frame of the body whose centrodes are traced: origin at its first link's first point
+/// (a four-bar coupler's B), x towards that link's second point (C), y 90° CCW from x (length
+/// unit).
 struct CouplerFrame {
-  Eigen::Vector2d b = Eigen::Vector2d::Zero();  ///< B in the frame of the mechanism
-  double angle = 0.0;                           ///< direction of B→C, rad CCW from +x
+  Eigen::Vector2d b = Eigen::Vector2d::Zero();  ///< the origin in the frame of the mechanism
+  double angle = 0.0;                           ///< direction of its x axis, rad CCW from +x
 
   /// `local` (coupler frame) in the frame of the mechanism.
   Eigen::Vector2d toWorld(const Eigen::Vector2d& local) const;
@@ -34,15 +38,19 @@ struct CouplerFrame {
   Eigen::Vector2d toLocal(const Eigen::Vector2d& world) const;
 };
 
-/// Both centrodes as runs of consecutive samples where I13 is finite and within reach.
+/// Both centrodes as runs of consecutive samples where I1k is finite and within reach.
 struct Centrodes {
-  std::vector<std::vector<Eigen::Vector2d>> fixed;   ///< frame of the mechanism (length unit)
+  std::size_t body = 0;                             ///< k, the body's number (instant_centres.h); 0 when there are none
+  std::vector<std::vector<Eigen::Vector2d>> fixed;  ///< frame of the mechanism (length unit)
   std::vector<std::vector<Eigen::Vector2d>> moving;  ///< coupler frame (length unit), run for run
 };
 
-/// The coupler frame of `mechanism` (a four-bar or a slider-crank, as instantCentres takes)
-/// at `pose`. InvalidStructure otherwise.
+/// The frame of `mechanism`'s first floating body at `pose`. InvalidStructure if every body is
+/// jointed to the frame, or as centreModel.
 Result<CouplerFrame> couplerFrame(const Mechanism& mechanism, const Pose& pose);
+
+/// The frame of `model`'s centrode body (centrodeBody ≠ 0) at a pose of its mechanism.
+CouplerFrame couplerFrame(const CentreModel& model, const Pose& pose);
 
 /// The centrodes over the assembled samples of `sweep` (positions are enough). Errors as
 /// instantCentres.

@@ -7,7 +7,9 @@
 #include "tests/support/file_size_limit.h"
 
 #include "kinematics/analysis/two_link_arm.h"
+#include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
+#include "kinematics/model/shaper.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/vec2.h"
 #include "kinematics/solve/pose_solver.h"
@@ -533,8 +535,6 @@ TEST_CASE("arm and centres: bad options exit 2 naming the option", "[cli][arm][c
       {Args{"centres", "--example", "thesis-crank-rocker", "--at", "10,x"}, "--at: 'x' is not a number"},
       {Args{"centres", "--fourbar", "60,25,-70,45", "--at", "10"},
        "--fourbar: coupler length must be positive and finite (got -70)"},
-      {Args{"centres", "--example", "shaper", "--at", "10"},
-       "instant centres are computed for four-bars and slider-cranks only"},
   }));
   CAPTURE(args);
   const Run r = run(args);
@@ -571,6 +571,26 @@ TEST_CASE("centres prints the six centres and a velocity ratio equal to the solv
   // I24 is where the coupler line meets the frame line (y = 0).
   CHECK_THAT(r.out, Catch::Contains("I24  (-86.6177525, 0) mm"));
   for (const char* name : {"I13", "I14", "I34"}) CHECK_THAT(r.out, Catch::Contains(name));
+}
+
+TEST_CASE("centres of a shaper: fifteen centres, the ram's v/ω2 equal to the solver's", "[cli][centres]") {
+  const Run r = run({"centres", "--example", "shaper", "--at", "30"});
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.out, Catch::Contains("bodies 1 frame, 2 crank, 3 block B, 4 rocker, 5 link, 6 slider R"));
+  CHECK_THAT(r.out, Catch::Contains("I16  at infinity, direction 90°"));  // the ram slides along x
+  CHECK_THAT(r.out, Catch::Contains("slide at B: block B and rocker have no relative rotation"));
+  CHECK_THAT(r.out, Catch::Contains("I13  (-252.099462, -145.549692) mm"));
+  CHECK_THAT(r.out, Catch::Contains("on I12–I23 and I14–I34"));  // the lines that locate it
+  CHECK(r.out.find("not located") == std::string::npos);
+  const auto example = kinematics::findExample("shaper");
+  const auto pose = kinematics::solvePose(example->mechanism, {kinematics::degToRad(30), 1.0, 0.0});
+  REQUIRE(pose.ok());
+  CHECK(numberAfter(r.out, "v/ω2 = ") == Approx(pose->velocity[kinematics::shaper::kRam.index].x()).epsilon(1e-8));
+  // A two-link arm has two freedoms: one centre stays unresolved, and there is no crank.
+  const Run arm = run({"centres", "--example", "seed-arm", "--at", "0.1"});
+  REQUIRE(arm.code == 0);
+  CHECK_THAT(arm.out, Catch::Contains("not located"));
+  CHECK_THAT(arm.out, Catch::Contains("ratios: none"));
 }
 
 TEST_CASE("centres: points at infinity, toggles and angles that do not assemble", "[cli][centres]") {

@@ -92,6 +92,8 @@ std::optional<std::string> checkDocument(std::string_view bytes, const std::stri
   if (code == 2) return std::nullopt;
   if (auto finding = checkRun({"analyze", scratchPath, "--samples", "13", "--forces"}, bytes)) return finding;
   if (auto finding = checkRun({"classify", scratchPath}, bytes)) return finding;
+  // Kennedy's circle diagram on whatever bodies the document's linkage has.
+  if (auto finding = checkRun({"centres", scratchPath, "--at", "0,100,230"}, bytes)) return finding;
   return std::nullopt;
 }
 

@@ -16,7 +16,7 @@
 namespace linkwright::fuzz {
 
 /// A document's bytes as linkwright-cli sees them: written to `scratchPath`, then analyze and
-/// analyze --forces over a 13-sample grid, and classify. Returns what went wrong, or nothing.
+/// analyze --forces over a 13-sample grid, classify, and centres at three inputs. Returns what went wrong, or nothing.
 /// (extremes, whose refinement costs ten times more, is left to the arguments fuzzer and the
 /// soak, so that the loader runs fast enough to be fuzzed for 10^7 inputs.)
 std::optional<std::string> checkDocument(std::string_view bytes, const std::string& scratchPath);

@@ -9,10 +9,12 @@
 #include <QFontMetricsF>
 #include <QPainter>
 #include <QPainterPath>
+#include <QStringList>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
+#include <optional>
+#include <vector>
 
 namespace linkwright::ui {
 
@@ -23,34 +25,43 @@ namespace {
 constexpr double kCentreDotPx = 3.5;
 constexpr double kFarArrowPx = 48.0;
 
-// One centre with its label and, for drawing it as an arrow, the finite centre it leaves from
-// (on the Kennedy line that locates it).
-struct NamedCentre {
-  const k::InstantCentre* centre;
-  const k::InstantCentre* anchor;
-  QString label;
-};
-
-std::array<NamedCentre, 6> named(const k::InstantCentres& c) {
-  return {{{&c.i12, &c.i12, QStringLiteral("I₁₂")},
-           {&c.i23, &c.i12, QStringLiteral("I₂₃")},
-           {&c.i34, &c.i23, QStringLiteral("I₃₄")},
-           {&c.i14, &c.i12, QStringLiteral("I₁₄")},
-           {&c.i13, &c.i23, QStringLiteral("I₁₃")},
-           {&c.i24, &c.i12, QStringLiteral("I₂₄")}}};
+// "₁₂", or "₁,₁₀" once a body number has two digits.
+QString subscript(std::size_t i, std::size_t j) {
+  const auto digits = [](std::size_t n) {
+    QString out;
+    for (const QChar c : QString::number(n)) out += QChar(0x2080 + c.digitValue());
+    return out;
+  };
+  return digits(i) + (i > 9 || j > 9 ? QStringLiteral(",") : QString()) + digits(j);
 }
+
+QString label(std::size_t i, std::size_t j) { return QStringLiteral("I") + subscript(i, j); }
 
 // A finite centre near enough to draw as a point (far ones run off the drawing).
 bool near(const k::InstantCentre& centre, const k::InstantCentres& all) {
-  return centre.kind == k::CentreKind::Finite &&
-         (centre.position - all.i12.position).norm() <= k::kCentrodeReach * all.scale;
+  return centre.kind == k::CentreKind::Finite && (centre.position - all.anchor).norm() <= k::kCentrodeReach * all.scale;
+}
+
+// Where an arrow to Iij (at infinity, or too far to draw) leaves from: the block's pin for a
+// slide, else a near centre on a Kennedy line that located it.
+std::optional<Eigen::Vector2d> arrowFoot(const k::InstantCentres& c, std::size_t i, std::size_t j) {
+  const k::CentreOrigin& o = c.origin(i, j);
+  if (o.rule == k::CentreRule::Slide) return o.pin;
+  if (o.rule != k::CentreRule::Kennedy) return std::nullopt;
+  for (const std::size_t via : o.via)
+    for (const std::size_t end : {i, j})
+      if (near(c.centre(end, via), c)) return c.centre(end, via).position;
+  return std::nullopt;
 }
 
 // A label on a white box, its bottom-right corner at `corner` (pixels): upper left of a
 // centre, where the point names (upper right) and ground hatching (below) are not.
+// A label near the view's edge is moved in, so a centre at the edge still reads.
 void drawLabel(QPainter* painter, const QPointF& corner, const QString& text) {
   const QFontMetricsF metrics(painter->font());
-  const QRectF box(corner - QPointF(metrics.horizontalAdvance(text) + 4.0, metrics.height()), corner);
+  QRectF box(corner - QPointF(metrics.horizontalAdvance(text) + 4.0, metrics.height()), corner);
+  const QRectF view = painter->viewport();
+  box.translate(std::max(0.0, view.left() - box.left()), std::max(0.0, view.top() - box.top()));
   painter->fillRect(box, colors().labelBox);
   painter->drawText(box, Qt::AlignCenter, text);
 }
@@ -73,16 +84,37 @@ void InstantCentresItem::setCycle(const k::Mechanism& mechanism, const k::SweepR
   updateBounds();
 }
 
+const k::Result<k::CentreModel>& InstantCentresItem::modelOf(const k::Mechanism& mechanism) {
+  if (!m_model || m_modelMechanism != mechanism) {
+    m_model = k::centreModel(mechanism);
+    m_modelMechanism = mechanism;
+  }
+  return *m_model;
+}
+
 void InstantCentresItem::setPose(const k::Mechanism& mechanism, const k::Pose& pose) {
-  const auto centres = k::instantCentres(mechanism, pose);
-  const auto frame = k::couplerFrame(mechanism, pose);
   m_centres.reset();
   m_frame.reset();
   m_reason.clear();
-  if (!centres) m_reason = QString::fromStdString(centres.error().message);
-  else m_centres = *centres;
-  if (frame) m_frame = *frame;
+  const auto& model = modelOf(mechanism);
+  if (!model) m_reason = QString::fromStdString(model.error().message);
+  else if (pose.position.size() == mechanism.points.size() &&
+           std::all_of(pose.position.begin(), pose.position.end(), [](const auto& p) { return p.allFinite(); })) {
+    m_centres = k::instantCentres(mechanism, *model, pose);
+    if (model->centrodeBody != 0) m_frame = k::couplerFrame(*model, pose);
+  }
   updateBounds();
+}
+
+QString InstantCentresItem::unresolvedNote() const {
+  if (!m_centres) return {};
+  QStringList names;
+  for (std::size_t i = 1; i <= m_centres->bodyCount(); ++i)
+    for (std::size_t j = i + 1; j <= m_centres->bodyCount(); ++j)
+      if (m_centres->centre(i, j).kind == k::CentreKind::Unresolved) names << label(i, j);
+  if (names.isEmpty()) return {};
+  return QObject::tr("%1: Kennedy's theorem does not reach %2")
+      .arg(names.join(QStringLiteral(", ")), names.size() == 1 ? QObject::tr("it") : QObject::tr("them"));
 }
 
 void InstantCentresItem::setPresentationScale(double factor) {
@@ -97,8 +129,8 @@ void InstantCentresItem::updateBounds() {
     box = box.isNull() ? QRectF(q, QSizeF(0.0, 0.0)) : box.united(QRectF(q, QSizeF(0.0, 0.0)));
   };
   if (m_centres)
-    for (const NamedCentre& c : named(*m_centres))
-      if (near(*c.centre, *m_centres)) include(c.centre->position);
+    for (const k::InstantCentre& c : m_centres->centres)
+      if (near(c, *m_centres)) include(c.position);
   for (const auto& run : m_centrodes.fixed)
     for (const Eigen::Vector2d& p : run) include(p);
   if (m_frame)
@@ -142,24 +174,25 @@ void InstantCentresItem::paint(QPainter* painter, const QStyleOptionGraphicsItem
   }
   const k::InstantCentres& c = *m_centres;
 
-  // Kennedy's lines: each holds three centres; drawn across the finite ones it holds.
+  // Kennedy's lines: the two that located each secondary centre, drawn across the finite
+  // centres each holds.
   painter->setPen(QPen(colors().kennedyLine, 1.0 * m_scale, Qt::DashLine));
-  const std::array<std::array<const k::InstantCentre*, 3>, 4> lines{
-      {{&c.i12, &c.i23, &c.i13}, {&c.i14, &c.i34, &c.i13}, {&c.i12, &c.i14, &c.i24}, {&c.i23, &c.i34, &c.i24}}};
-  for (const auto& line : lines) {
-    std::vector<QPointF> points;
-    for (const k::InstantCentre* centre : line)
-      if (near(*centre, c)) points.push_back(px(centre->position));
-    double longest = 0.0;
-    QLineF span;
-    for (std::size_t i = 0; i < points.size(); ++i)
-      for (std::size_t j = i + 1; j < points.size(); ++j)
-        if (QLineF(points[i], points[j]).length() > longest) {
-          longest = QLineF(points[i], points[j]).length();
-          span = QLineF(points[i], points[j]);
-        }
-    if (longest > 0.0) painter->drawLine(span);
-  }
+  const std::size_t n = c.bodyCount();
+  for (std::size_t i = 1; i <= n; ++i)
+    for (std::size_t j = i + 1; j <= n; ++j) {
+      const k::CentreOrigin& o = c.origin(i, j);
+      if (o.rule != k::CentreRule::Kennedy || c.centre(i, j).kind == k::CentreKind::Indeterminate) continue;
+      for (const std::size_t via : o.via) {
+        std::vector<QPointF> points;
+        for (const k::InstantCentre* centre : {&c.centre(i, via), &c.centre(j, via), &c.centre(i, j)})
+          if (near(*centre, c)) points.push_back(px(centre->position));
+        QLineF span;
+        for (std::size_t a = 0; a < points.size(); ++a)
+          for (std::size_t b = a + 1; b < points.size(); ++b)
+            if (QLineF(points[a], points[b]).length() > span.length()) span = QLineF(points[a], points[b]);
+        if (span.length() > 0.0) painter->drawLine(span);
+      }
+    }
 
   // The centres: a dot and a label, or an arrow towards one at infinity (or too far to draw).
   QFont font = painter->font();
@@ -167,27 +200,34 @@ void InstantCentresItem::paint(QPainter* painter, const QStyleOptionGraphicsItem
   font.setBold(true);
   painter->setFont(font);
   const double dot = kCentreDotPx * m_scale;
-  for (const NamedCentre& n : named(c)) {
-    painter->setPen(QPen(colors().centre, 1.5 * m_scale));
-    if (near(*n.centre, c)) {
-      const QPointF at = px(n.centre->position);
-      painter->setBrush(colors().centre);
-      painter->drawEllipse(at, dot, dot);
-      painter->setBrush(Qt::NoBrush);
-      drawLabel(painter, at - QPointF(dot + 2.0, dot + 2.0), n.label);
-      continue;
+  for (std::size_t i = 1; i <= n; ++i)
+    for (std::size_t j = i + 1; j <= n; ++j) {
+      const k::InstantCentre& centre = c.centre(i, j);
+      painter->setPen(QPen(colors().centre, 1.5 * m_scale));
+      if (near(centre, c)) {
+        const QPointF at = px(centre.position);
+        painter->setBrush(colors().centre);
+        painter->drawEllipse(at, dot, dot);
+        painter->setBrush(Qt::NoBrush);
+        drawLabel(painter, at - QPointF(dot + 2.0, dot + 2.0), label(i, j));
+        continue;
+      }
+      const auto foot = arrowFoot(c, i, j);
+      if (!foot || (centre.kind != k::CentreKind::Finite && centre.kind != k::CentreKind::AtInfinity)) continue;
+      const Eigen::Vector2d direction =
+          centre.kind == k::CentreKind::AtInfinity ? centre.direction : Eigen::Vector2d(centre.position - *foot);
+      const QPointF from = px(*foot);
+      QPointF unit = px(*foot + direction) - from;
+      const double length = std::hypot(unit.x(), unit.y());
+      if (!(length > 0.0) || !std::isfinite(length)) continue;
+      unit /= length;
+      drawArrow(painter, from, unit, kFarArrowPx * m_scale, 8.0 * m_scale);
+      drawLabel(painter, from + unit * (kFarArrowPx + 4.0) * m_scale, label(i, j) + QStringLiteral(" ∞"));
     }
-    if (n.centre->kind == k::CentreKind::Indeterminate || !near(*n.anchor, c)) continue;
-    const Eigen::Vector2d direction = n.centre->kind == k::CentreKind::AtInfinity
-                                          ? n.centre->direction
-                                          : Eigen::Vector2d(n.centre->position - n.anchor->position);
-    const QPointF from = px(n.anchor->position);
-    QPointF unit = px(n.anchor->position + direction) - from;
-    const double length = std::hypot(unit.x(), unit.y());
-    if (!(length > 0.0) || !std::isfinite(length)) continue;
-    unit /= length;
-    drawArrow(painter, from, unit, kFarArrowPx * m_scale, 8.0 * m_scale);
-    drawLabel(painter, from + unit * (kFarArrowPx + 4.0) * m_scale, n.label + QStringLiteral(" ∞"));
+  // What Kennedy's theorem leaves open, under the frame's pin the drawing measures from.
+  if (const QString note = unresolvedNote(); !note.isEmpty()) {
+    const QFontMetricsF metrics(painter->font());
+    drawLabel(painter, px(c.anchor) + QPointF(metrics.horizontalAdvance(note) / 2.0, 3.0 * metrics.height()), note);
   }
   painter->restore();
 }

@@ -1,13 +1,15 @@
 #pragma once
-// Instant centres on the canvas (View ▸ Instant centres): the six centres I₁₂…I₃₄ of a four-bar
-// or a slider-crank at the current pose, labelled, with the four Kennedy lines that locate
-// I₁₃ and I₂₄ (three centres of any three bodies lie on one line); a centre at infinity, or
-// too far to draw, as an arrow along its direction; and the coupler's centrodes over the cycle:
-// the fixed one in the frame, the moving one carried by the coupler, touching at I₁₃. Every
-// position comes from the core (instant_centres.h, centrodes.h); this item only draws, in
-// screen pixels, so marks and text keep their size at any zoom. A linkage whose centres the
-// core does not locate shows nothing and says why (reason()).
+// Instant centres on the canvas (View ▸ Instant centres): every centre Iij of the linkage at
+// the current pose (six for a four-bar, fifteen for a six-bar), labelled, with the two Kennedy
+// lines that located each secondary one (three centres of any three bodies lie on one line); a
+// centre at infinity, or too far to draw, as an arrow along its direction; a note naming the
+// centres Kennedy's theorem does not reach; and the centrodes of the first floating body (a
+// coupler) over the cycle: the fixed one in the frame, the moving one carried by the body,
+// touching at I1k. Every position comes from the core (instant_centres.h, centrodes.h); this
+// item only draws, in screen pixels, so marks and text keep their size at any zoom. A linkage
+// whose bodies the core cannot find shows nothing and says why (reason()).
 
+#include "kinematics/analysis/centre_model.h"
 #include "kinematics/analysis/centrodes.h"
 #include "kinematics/analysis/instant_centres.h"
 #include "kinematics/model/mechanism.h"
@@ -38,12 +40,20 @@ public:
   const std::optional<kinematics::CouplerFrame>& couplerFrame() const { return m_frame; }
   /// Why nothing is drawn: the core's sentence; empty when the centres are shown.
   const QString& reason() const { return m_reason; }
+  /// The centres Kennedy's theorem leaves unresolved at this pose, named ("I₁₅, I₃₆ …"); empty
+  /// when it resolves every one.
+  QString unresolvedNote() const;
 
   QRectF boundingRect() const override;
   void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
 
 private:
   void updateBounds();
+  /// The centre model of `mechanism`, rebuilt only when the mechanism changes (not per drag).
+  const kinematics::Result<kinematics::CentreModel>& modelOf(const kinematics::Mechanism& mechanism);
+
+  std::optional<kinematics::Mechanism> m_modelMechanism;
+  std::optional<kinematics::Result<kinematics::CentreModel>> m_model;
 
   std::optional<kinematics::InstantCentres> m_centres;
   kinematics::Centrodes m_centrodes;

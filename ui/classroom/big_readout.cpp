@@ -4,6 +4,7 @@
 #include "ui/plots/axis_range.h"
 #include "ui/plots/plot_quantity.h"
 
+#include "kinematics/analysis/centre_model.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/units.h"
 
@@ -30,17 +31,15 @@ constexpr double kSmallestPointSize = 10.0;
 // Angles nearest 180°: (0°, 360°], as a textbook gives a rocker's angle.
 constexpr double kAngleCentreDeg = 180.0;
 
-// The textbook number of moving link `index`: the frame is link 1, the crank link 2, ...
-QString linkNumber(std::size_t index) { return QString::number(index + 2); }
-
 bool isGround(const k::Mechanism& m, k::PointId p) {
   return std::holds_alternative<k::GroundPoint>(m.points[p.index].definition);
 }
 
-QString inputSymbol(const k::Mechanism& m) {
+// `numbers`: each link's textbook number (centre_model.h): the frame is body 1, the crank 2, ...
+QString inputSymbol(const k::Mechanism& m, const std::vector<std::size_t>& numbers) {
   if (k::inputKind(m) == k::InputKind::Angle) {
     for (std::size_t l = 0; l < m.links.size(); ++l)
-      if (k::io::isDrivenCrankLink(m, k::LinkId{l})) return QStringLiteral("θ") + linkNumber(l);
+      if (k::io::isDrivenCrankLink(m, k::LinkId{l})) return QStringLiteral("θ") + QString::number(numbers[l]);
     return QStringLiteral("θ");
   }
   const auto driver = k::driverPoint(m);
@@ -121,10 +120,12 @@ std::vector<ReadoutQuantity> readoutQuantities(const MechanismDocument& d) {
   const k::Mechanism& m = d.mechanism();
   std::vector<ReadoutQuantity> out;
   if (d.onTimeBase()) out.push_back({Kind::Time, {}, QStringLiteral("t")});
-  out.push_back({Kind::Input, {}, inputSymbol(m)});
+  const std::vector<std::size_t> numbers = k::linkNumbers(m);
+  out.push_back({Kind::Input, {}, inputSymbol(m, numbers)});
   if (const auto l = outputLink(m)) {
-    out.push_back({Kind::Angle, {{}, ColumnQuantity::LinkAngle, *l}, QStringLiteral("θ") + linkNumber(*l)});
-    out.push_back({Kind::AngularRate, {{}, ColumnQuantity::LinkOmega, *l}, QStringLiteral("ω") + linkNumber(*l)});
+    const QString number = QString::number(numbers[*l]);
+    out.push_back({Kind::Angle, {{}, ColumnQuantity::LinkAngle, *l}, QStringLiteral("θ") + number});
+    out.push_back({Kind::AngularRate, {{}, ColumnQuantity::LinkOmega, *l}, QStringLiteral("ω") + number});
   }
   // The plots' quantities: a ground slider's coordinate along its guide, and μ.
   const std::vector<PlotCurve> curves = plotCurves(m, d.pose());

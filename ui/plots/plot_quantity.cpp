@@ -2,6 +2,7 @@
 
 #include "ui/colors.h"
 
+#include "kinematics/analysis/centre_model.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/solve/guide_line.h"
 
@@ -41,33 +42,34 @@ QuantityKind kindOf(ColumnQuantity c) {
   return QuantityKind::Angle;
 }
 
-// The textbook number of moving link `index`: the frame is link 1, the crank link 2, ...
-int linkNumber(std::size_t index) { return static_cast<int>(index) + 2; }
-
-void addLinkCurves(std::vector<PlotCurve>& out, const k::Mechanism& m, ColumnQuantity column, const QString& symbol,
-                   const QString& suffix) {
+// `numbers`: each link's textbook number, as the instant centres number bodies.
+void addLinkCurves(std::vector<PlotCurve>& out, const k::Mechanism& m, const std::vector<std::size_t>& numbers,
+                   ColumnQuantity column, const QString& symbol, const QString& suffix) {
   for (std::size_t l = 0; l < m.links.size(); ++l) {
     if (k::io::isDrivenCrankLink(m, k::LinkId{l})) continue;  // the driver's own, constant or the input
     const QString name = QString::fromStdString(m.links[l].name);
     out.push_back(
-        {{column, l}, name + suffix, QStringLiteral("%1 %2%3").arg(name, symbol).arg(linkNumber(l)), linkColor(l)});
+        {{column, l}, name + suffix, QStringLiteral("%1 %2%3").arg(name, symbol).arg(numbers[l]), linkColor(l)});
   }
 }
 
-// A four-bar's or slider-crank's ratios, in its output's colour (the rocker's, the slider's).
-void addRatioCurves(std::vector<PlotCurve>& out, const k::Mechanism& m, const k::Pose& pose) {
-  const auto centres = k::instantCentres(m, pose);
-  if (!centres && centres.error().code == k::ErrorCode::InvalidStructure) return;  // no such ratios
-  const bool slider = centres ? centres->linkage == k::CentreLinkage::SliderCrank
-                              : std::any_of(m.points.begin(), m.points.end(), [](const k::Point& p) {
-                                  return std::holds_alternative<k::RrpPoint>(p.definition);
-                                });
-  const k::CentreLinkage linkage = slider ? k::CentreLinkage::SliderCrank : k::CentreLinkage::FourBar;
-  const QColor color = slider ? sliderColor(0) : linkColor(k::fourbar::kRocker.index);
-  out.push_back({PlotQuantity::ofRatio(RatioQuantity::VelocityRatio, linkage), QStringLiteral("velocity_ratio"),
-                 slider ? Text::tr("ratio v/ω2") : Text::tr("ratio ω4/ω2"), color});
-  out.push_back({PlotQuantity::ofRatio(RatioQuantity::Advantage, linkage), QStringLiteral("mechanical_advantage"),
-                 slider ? Text::tr("advantage F/T2") : Text::tr("advantage T4/T2"), color});
+// A crank-driven linkage's ratios (centre_model.h: its input and output bodies), in the
+// output's colour (the rocker's, the slider's).
+void addRatioCurves(std::vector<PlotCurve>& out, const k::Mechanism& m, const k::Result<k::CentreModel>& model) {
+  if (!model || !model->ratio.exists()) return;  // no such ratios
+  const k::RatioBodies bodies = model->ratio;
+  QColor color = linkColor(model->outputLink ? model->outputLink->index : 0);
+  if (model->outputGuide) {
+    const std::size_t slider = model->outputGuide->slider.point.index;
+    color = sliderColor(static_cast<std::size_t>(
+        std::count_if(m.points.begin(), m.points.begin() + static_cast<std::ptrdiff_t>(slider),
+                      [](const k::Point& p) { return std::holds_alternative<k::RrpPoint>(p.definition); })));
+  }
+  const PlotQuantity ratio = PlotQuantity::ofRatio(RatioQuantity::VelocityRatio, bodies);
+  const PlotQuantity advantage = PlotQuantity::ofRatio(RatioQuantity::Advantage, bodies);
+  out.push_back({ratio, QStringLiteral("velocity_ratio"), Text::tr("ratio %1").arg(ratioSymbol(ratio)), color});
+  out.push_back(
+      {advantage, QStringLiteral("mechanical_advantage"), Text::tr("advantage %1").arg(ratioSymbol(advantage)), color});
 }
 
 }  // namespace
@@ -91,7 +93,9 @@ QuantityKind quantityKind(PlotQuantity q) {
 
 std::vector<PlotCurve> plotCurves(const k::Mechanism& m, const k::Pose& pose) {
   std::vector<PlotCurve> out;
-  addLinkCurves(out, m, ColumnQuantity::LinkAngle, QStringLiteral("θ"), QStringLiteral("_angle"));
+  const auto model = k::centreModel(m);  // bodies found once: link numbers and ratios
+  const std::vector<std::size_t> numbers = model ? model->linkNumbers : k::linkNumbers(m);
+  addLinkCurves(out, m, numbers, ColumnQuantity::LinkAngle, QStringLiteral("θ"), QStringLiteral("_angle"));
   std::vector<std::size_t> dyads;  // the joints with a transmission angle
   for (std::size_t i = 0; i < m.points.size(); ++i)
     if (std::holds_alternative<k::RrrPoint>(m.points[i].definition) ||
@@ -105,8 +109,8 @@ std::vector<PlotCurve> plotCurves(const k::Mechanism& m, const k::Pose& pose) {
                    one ? Text::tr("transmission μ") : Text::tr("μ at %1").arg(point),
                    transmissionColor(d)});
   }
-  addLinkCurves(out, m, ColumnQuantity::LinkOmega, QStringLiteral("ω"), QStringLiteral("_omega"));
-  addLinkCurves(out, m, ColumnQuantity::LinkAlpha, QStringLiteral("α"), QStringLiteral("_alpha"));
+  addLinkCurves(out, m, numbers, ColumnQuantity::LinkOmega, QStringLiteral("ω"), QStringLiteral("_omega"));
+  addLinkCurves(out, m, numbers, ColumnQuantity::LinkAlpha, QStringLiteral("α"), QStringLiteral("_alpha"));
   // A slider on a ground guide: the coordinate its guide mostly runs along (a piston's x).
   std::size_t sliders = 0;
   for (std::size_t i = 0; i < m.points.size(); ++i) {
@@ -130,7 +134,7 @@ std::vector<PlotCurve> plotCurves(const k::Mechanism& m, const k::Pose& pose) {
                    point + " a" + axis,
                    color});
   }
-  addRatioCurves(out, m, pose);
+  addRatioCurves(out, m, model);
   // Checkbox and legend order: by chart.
   std::stable_sort(out.begin(), out.end(), [](const PlotCurve& a, const PlotCurve& b) {
     return quantityKind(a.quantity) < quantityKind(b.quantity);
@@ -159,9 +163,17 @@ QString quantityUnit(QuantityKind kind, AngleUnit unit, const QString& lengthUni
   return angle;
 }
 
+QString ratioSymbol(PlotQuantity q) {
+  const std::size_t a = q.bodies.input, b = q.bodies.output;
+  if (q.ratio == RatioQuantity::VelocityRatio)
+    return q.bodies.outputSlides ? QStringLiteral("v/ω%1").arg(a) : QStringLiteral("ω%1/ω%2").arg(b).arg(a);
+  if (q.ratio == RatioQuantity::Advantage)
+    return q.bodies.outputSlides ? QStringLiteral("F/T%1").arg(a) : QStringLiteral("T%1/T%2").arg(b).arg(a);
+  return {};
+}
+
 QString quantityUnit(PlotQuantity q, AngleUnit unit, const QString& lengthUnit) {
-  if (q.ratio == RatioQuantity::None || q.linkage == k::CentreLinkage::FourBar)
-    return quantityUnit(quantityKind(q), unit, lengthUnit);
+  if (q.ratio == RatioQuantity::None || !q.bodies.outputSlides) return quantityUnit(quantityKind(q), unit, lengthUnit);
   return q.ratio == RatioQuantity::VelocityRatio ? lengthUnit + QStringLiteral("/rad")
                                                  : QStringLiteral("1/") + lengthUnit;
 }
@@ -182,11 +194,9 @@ QString valueAxisTitle(QuantityKind kind, AngleUnit unit, const QString& lengthU
 }
 
 QString valueAxisTitle(PlotQuantity q, AngleUnit unit, const QString& lengthUnit) {
-  if (q.ratio == RatioQuantity::None || q.linkage == k::CentreLinkage::FourBar)
-    return valueAxisTitle(quantityKind(q), unit, lengthUnit);
-  const QString u = quantityUnit(q, unit, lengthUnit);
-  return q.ratio == RatioQuantity::VelocityRatio ? QStringLiteral("v/ω2 [%1]").arg(u)
-                                                 : QStringLiteral("F/T2 [%1]").arg(u);
+  if (q.ratio == RatioQuantity::None) return valueAxisTitle(quantityKind(q), unit, lengthUnit);
+  if (!q.bodies.outputSlides) return ratioSymbol(q);
+  return QStringLiteral("%1 [%2]").arg(ratioSymbol(q), quantityUnit(q, unit, lengthUnit));
 }
 
 bool QuantitySelection::contains(PlotQuantity q) const {

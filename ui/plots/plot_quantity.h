@@ -36,22 +36,23 @@ constexpr bool isAngular(QuantityKind kind) {
   return kind == QuantityKind::Angle || kind == QuantityKind::Omega || kind == QuantityKind::Alpha;
 }
 
-/// A ratio of output to input motion the instant centres give (instant_centres.h): a
-/// four-bar's ω4/ω2 and T4/T2 (dimensionless), a slider-crank's v/ω2 (length unit per rad) and
-/// F/T2 (1 / length unit).
+/// A ratio of output to input motion the instant centres give (instant_centres.h): for a
+/// turning output b, ωb/ω2 and Tb/T2 (dimensionless, a four-bar's ω4/ω2 and T4/T2); for a
+/// sliding one, v/ω2 (length unit per rad) and F/T2 (1 / length unit).
 enum class RatioQuantity { None, VelocityRatio, Advantage };
 
 /// One plottable quantity: a sweep column of a link or a point (its `index`), or a ratio.
 struct PlotQuantity {
   kinematics::io::ColumnQuantity column = kinematics::io::ColumnQuantity::LinkAngle;
   std::size_t index = 0;
-  /// Not None: this ratio of the linkage `linkage` (then `column` and `index` are unused).
+  /// Not None: this ratio between the `bodies` of the linkage (then `column` and `index` are
+  /// unused).
   RatioQuantity ratio = RatioQuantity::None;
-  kinematics::CentreLinkage linkage = kinematics::CentreLinkage::FourBar;
+  kinematics::RatioBodies bodies;
   bool operator==(const PlotQuantity&) const = default;
 
-  static PlotQuantity ofRatio(RatioQuantity ratio, kinematics::CentreLinkage linkage) {
-    return {kinematics::io::ColumnQuantity::InputAngle, 0, ratio, linkage};
+  static PlotQuantity ofRatio(RatioQuantity ratio, kinematics::RatioBodies bodies) {
+    return {kinematics::io::ColumnQuantity::InputAngle, 0, ratio, bodies};
   }
 
   /// A four-bar's quantities (the ids of kinematics/model/fourbar.h).
@@ -83,6 +84,10 @@ const PlotCurve* findCurve(const std::vector<PlotCurve>& curves, PlotQuantity qu
 
 /// Unit of a kind's values: "deg", "rad/s", "deg/s²", "mm", "mm/s", "mm/s²"; for the ratio
 /// kinds a four-bar's (none).
+/// A ratio's symbol with its bodies' numbers: "ω4/ω2", "T6/T2", "v/ω2", "F/T2"; empty for
+/// a sweep column.
+QString ratioSymbol(PlotQuantity quantity);
+
 QString quantityUnit(QuantityKind kind, AngleUnit unit, const QString& lengthUnit = QStringLiteral("mm"));
 /// Unit of a quantity's values: its kind's, but a ratio's is the core's whatever the angle
 /// unit: none for a four-bar's, "mm/rad" or "1/mm" for a slider-crank's.

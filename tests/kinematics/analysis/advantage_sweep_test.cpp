@@ -1,12 +1,14 @@
 // The ratio columns against the two things they must agree with: the `centres` read-out at the
 // same angle (mechanicalAdvantage of instantCentres of a solved pose) and the solver's own
-// rates (ω4/ω2 from the sweep's link columns, v/ω2 for a slider). Samples that do not assemble
-// are Undefined, a toggle is Infinite, and no value is ever NaN or infinite.
+// rates (ω4/ω2 from the sweep's link columns, v/ω2 for a slider, the same for a shaper's ram
+// and a Watt II's second rocker). Samples that do not assemble are Undefined, a toggle is
+// Infinite, no value is ever NaN or infinite, and a linkage without a crank is refused.
 
 #include "kinematics/analysis/advantage_sweep.h"
 
 #include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
+#include "kinematics/model/shaper.h"
 #include "kinematics/model/slider_crank.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
@@ -41,7 +43,7 @@ TEST_CASE("four-bar ratios equal the centres read-out and the solver's ω4/ω2",
   const SweepResult s = sweepOf(ex.mechanism, 73);
   const auto series = advantageSeries(ex.mechanism, s);
   REQUIRE(series);
-  CHECK(series->linkage == CentreLinkage::FourBar);
+  CHECK(series->bodies == RatioBodies{2, 4, false});
   checkFinite(*series);
   for (std::size_t j = 0; j < s.size(); ++j) {
     CAPTURE(radToDeg(s.inputAngle[j]));
@@ -63,7 +65,7 @@ TEST_CASE("slider-crank ratios equal v/ω2 from the solver", "[advantage_sweep]"
   const SweepResult s = sweepOf(ex.mechanism, 37);
   const auto series = advantageSeries(ex.mechanism, s);
   REQUIRE(series);
-  CHECK(series->linkage == CentreLinkage::SliderCrank);
+  CHECK(series->bodies == RatioBodies{2, 4, true});
   checkFinite(*series);
   for (std::size_t j = 0; j < s.size(); ++j) {
     CAPTURE(radToDeg(s.inputAngle[j]));
@@ -86,9 +88,36 @@ TEST_CASE("samples that do not assemble are undefined; a toggle is infinite", "[
   checkFinite(*series);
   for (std::size_t j = 0; j < s.size(); ++j)
     if (!s.assembled(j)) CHECK(series->velocityRatio[j].kind == RatioKind::Undefined);
-  // Refused: not a four-bar or slider-crank.
-  const Example shaper = *findExample("shaper");
-  const auto refused = advantageSeries(shaper.mechanism, sweepOf(shaper.mechanism, 5));
+  // Refused, naming why: a boom driven by a cylinder has no crank to compare with.
+  const Mechanism boom = findExample("excavator-boom")->mechanism;
+  const auto refused = advantageSeries(boom, sweep(boom, {1.2, 1.9, 5, 0.1, 0.0}).value());
   REQUIRE_FALSE(refused);
   CHECK(refused.error().code == ErrorCode::InvalidStructure);
+  CHECK(refused.error().message.find("not driven by a crank turning about a frame pin") != std::string::npos);
+  CHECK(ratioUnavailable(boom).has_value());
+  CHECK_FALSE(ratioUnavailable(findExample("shaper")->mechanism).has_value());
+}
+
+TEST_CASE("a shaper's ratios are its ram's v/ω2, a Watt II's its second rocker's ω6/ω2", "[advantage_sweep]") {
+  const Mechanism shaper = findExample("shaper")->mechanism;
+  const SweepResult s = sweepOf(shaper, 73);
+  const auto ram = advantageSeries(shaper, s);
+  REQUIRE(ram);
+  CHECK(ram->bodies == RatioBodies{2, 6, true});
+  checkFinite(*ram);
+  for (std::size_t j = 0; j < s.size(); ++j) {
+    REQUIRE(ram->velocityRatio[j].kind == RatioKind::Finite);
+    // The ram's guide runs along +x; ω2 = 2.5 rad/s.
+    CHECK(ram->velocityRatio[j].value == Approx(s.velocity[shaper::kRam.index][j].x() / 2.5).margin(1e-9 * 400));
+  }
+  const Mechanism watt = findExample("watt-ii")->mechanism;
+  const SweepResult w = sweepOf(watt, 73);
+  const auto rocker = advantageSeries(watt, w);
+  REQUIRE(rocker);
+  CHECK(rocker->bodies == RatioBodies{2, 6, false});
+  checkFinite(*rocker);
+  const std::size_t last = watt.links.size() - 1;  // link6, the output rocker about O6
+  for (std::size_t j = 0; j < w.size(); ++j)
+    if (rocker->velocityRatio[j].kind == RatioKind::Finite)
+      CHECK(rocker->velocityRatio[j].value == Approx(w.linkOmega[last][j] / 2.5).margin(1e-9));
 }

@@ -1,15 +1,17 @@
 // The centrodes checked against the solver's exact rates, not against the centres they are
 // made of: at every sample the coupler's point at I13 is at rest (v_B + ω3 ẑ×(I13 − B) = 0),
 // the moving centrode placed with the coupler touches the fixed one there, and the two roll
-// without slipping (equal arc lengths). A parallelogram's coupler only translates: no
-// centrode; a six-bar has no Kennedy closure here: refused with the reason.
+// without slipping (equal arc lengths); the same for a shaper's link. A parallelogram's
+// coupler only translates: no centrode; a linkage with no floating body is refused.
 
 #include "kinematics/analysis/centrodes.h"
 #include "kinematics/design/design.h"
 #include "kinematics/model/fourbar.h"
+#include "kinematics/model/shaper.h"
 #include "kinematics/model/slider_crank.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/vec2.h"
+#include "kinematics/solve/pose_solver.h"
 
 #include <catch2/catch.hpp>
 
@@ -99,10 +101,19 @@ TEST_CASE("a parallelogram's coupler translates: its centre is at infinity, no c
   CHECK(parallelograms == 1);
 }
 
-TEST_CASE("centrodes of a six-bar are refused with the reason", "[centrodes]") {
-  const Mechanism m = designForExample("watt-ii")->mechanism;
+TEST_CASE("a shaper's centrodes are its link's (body 5), and follow the solver", "[centrodes]") {
+  const Mechanism m = designForExample("shaper")->mechanism;
   const auto curves = centrodes(m, turn(m));
-  REQUIRE_FALSE(curves);
-  CHECK(curves.error().code == ErrorCode::InvalidStructure);
-  CHECK(curves.error().message.find("four-bar or a slider-crank") != std::string::npos);
+  REQUIRE(curves);
+  CHECK(curves->body == 5);  // 1 frame, 2 crank, 3 block, 4 rocker, 5 link, 6 ram
+  checkAgainstSolver(m, shaper::kD, shaper::kRam, shaper::kLink, 400.0);
+}
+
+TEST_CASE("a linkage whose every body is jointed to the frame has no centrodes: refused with the reason",
+          "[centrodes]") {
+  const Mechanism m = designForExample("excavator-boom")->mechanism;
+  const auto frame = couplerFrame(m, solvePose(m, {1.5, 0.0, 0.0}, SolveRequest{false, false}).value());
+  REQUIRE_FALSE(frame);
+  CHECK(frame.error().code == ErrorCode::InvalidStructure);
+  CHECK(frame.error().message.find("every body of this linkage is jointed to it") != std::string::npos);
 }

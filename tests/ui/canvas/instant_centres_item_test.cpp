@@ -1,8 +1,8 @@
 // View ▸ Instant centres on the canvas (ui/canvas/instant_centres_item.h): what the item draws
 // is the core's instant centres at the document's pose (the `centres` command's numbers) and
 // follows the crank; its moving centrode, placed with the coupler, touches the fixed one at
-// I13 at every sample of the cycle; a linkage Kennedy's theorem does not close for shows the
-// core's reason and draws nothing; hidden, nothing is solved.
+// I13 at every sample of the cycle; a six-bar's and a shaper's fifteen centres are all drawn;
+// centres Kennedy's theorem does not reach are named; hidden, nothing is solved.
 
 #include "ui/canvas/instant_centres_item.h"
 
@@ -57,11 +57,11 @@ TEST_CASE("the canvas's instant centres are the core's at the crank angle shown,
     const auto centres = k::instantCentres(v.document.mechanism(), pose);
     REQUIRE(frame);
     REQUIRE(centres);
-    if (centres->i13.kind != k::CentreKind::Finite ||
-        (centres->i13.position - centres->i12.position).norm() > k::kCentrodeReach * centres->scale)
+    if (centres->centre(1, 3).kind != k::CentreKind::Finite ||
+        (centres->centre(1, 3).position - centres->anchor).norm() > k::kCentrodeReach * centres->scale)
       continue;
     CHECK((frame->toWorld(curves.moving[run][i]) - curves.fixed[run][i]).norm() <= 1e-9 * size);
-    CHECK((curves.fixed[run][i] - centres->i13.position).norm() <= 1e-9 * size);
+    CHECK((curves.fixed[run][i] - centres->centre(1, 3).position).norm() <= 1e-9 * size);
     if (++i == curves.fixed[run].size()) {
       ++run;
       i = 0;
@@ -69,11 +69,29 @@ TEST_CASE("the canvas's instant centres are the core's at the crank angle shown,
   }
 }
 
-TEST_CASE("a six-bar's centres are not drawn: the canvas says why", "[ui][canvas][centres]") {
-  ui::test::ShownView v(*k::designForExample("watt-ii"));
+TEST_CASE("a six-bar's and a shaper's fifteen centres are drawn, every one located", "[ui][canvas][centres]") {
+  for (const char* example : {"watt-ii", "shaper"}) {
+    CAPTURE(example);
+    ui::test::ShownView v(*k::designForExample(example));
+    v.view.setShowInstantCentres(true);
+    v.document.setCrankAngle(k::degToRad(40.0));
+    const auto expected = k::instantCentres(v.document.mechanism(), v.document.pose());
+    REQUIRE(expected);
+    REQUIRE(centresItem(v).centres().has_value());
+    CHECK(*centresItem(v).centres() == *expected);
+    CHECK(centresItem(v).centres()->centres.size() == 15);
+    CHECK(centresItem(v).unresolvedNote().isEmpty());
+    CHECK_FALSE(centresItem(v).centrodes().fixed.empty());  // the coupler's (Watt), the link's (shaper)
+    v.view.grab();                                          // paints without a crash
+  }
+}
+
+TEST_CASE("centres Kennedy's theorem does not reach are named on the canvas", "[ui][canvas][centres]") {
+  ui::test::ShownView v(*k::designForExample("seed-arm"));  // two freedoms: the frame–forearm centre I13 is free
   v.view.setShowInstantCentres(true);
-  CHECK_FALSE(centresItem(v).centres().has_value());
+  REQUIRE(centresItem(v).centres().has_value());
+  CHECK(centresItem(v).reason().isEmpty());
+  CHECK(centresItem(v).unresolvedNote() == QStringLiteral("I₁₃: Kennedy's theorem does not reach it"));
   CHECK(centresItem(v).centrodes().fixed.empty());
-  CHECK(centresItem(v).reason().contains(QStringLiteral("four-bar")));
-  v.view.grab();  // paints without a crash
+  v.view.grab();
 }

@@ -1,5 +1,6 @@
 // Tests the velocity-ratio and mechanical-advantage charts of ui/plots/plot_panel.h offscreen:
-// they are offered for four-bars and slider-cranks only and shown when ticked; their values,
+// they are offered for crank-driven linkages (four-bars, slider-crank, shaper, six-bars) and
+// shown when ticked; their values,
 // from the instant centres of each sample, equal the velocity solver's ω4/ω2 (or v/ω2) and
 // its inverse; the advantage breaks at the rocker limits instead of joining +∞ to −∞; the
 // limits are marked on both charts; the axes and the read-out carry the ratios' units.
@@ -36,10 +37,10 @@ namespace k = linkwright::kinematics;
 
 namespace {
 
-const PlotQuantity kFourBarRatio = PlotQuantity::ofRatio(RatioQuantity::VelocityRatio, k::CentreLinkage::FourBar);
-const PlotQuantity kFourBarAdvantage = PlotQuantity::ofRatio(RatioQuantity::Advantage, k::CentreLinkage::FourBar);
-const PlotQuantity kSliderRatio = PlotQuantity::ofRatio(RatioQuantity::VelocityRatio, k::CentreLinkage::SliderCrank);
-const PlotQuantity kSliderAdvantage = PlotQuantity::ofRatio(RatioQuantity::Advantage, k::CentreLinkage::SliderCrank);
+const PlotQuantity kFourBarRatio = PlotQuantity::ofRatio(RatioQuantity::VelocityRatio, k::RatioBodies{2, 4, false});
+const PlotQuantity kFourBarAdvantage = PlotQuantity::ofRatio(RatioQuantity::Advantage, k::RatioBodies{2, 4, false});
+const PlotQuantity kSliderRatio = PlotQuantity::ofRatio(RatioQuantity::VelocityRatio, k::RatioBodies{2, 4, true});
+const PlotQuantity kSliderAdvantage = PlotQuantity::ofRatio(RatioQuantity::Advantage, k::RatioBodies{2, 4, true});
 
 void showRatios(PlotPanel& panel, PlotQuantity ratio, PlotQuantity advantage) {
   REQUIRE(panel.selector()->checkBox(ratio) != nullptr);
@@ -74,9 +75,20 @@ TEST_CASE("the ratios are offered for four-bars and slider-cranks, unticked at f
   doc.reset(*k::designForExample("ls3-engine"));
   CHECK(panel.curve(kSliderRatio) != nullptr);
   CHECK(panel.curve(kFourBarRatio) == nullptr);
-  doc.reset(*k::designForExample("watt-ii"));  // no instant centres by Kennedy alone: no ratios
+  // A Watt II's output is its second rocker, body 6; a shaper's its ram.
+  doc.reset(*k::designForExample("watt-ii"));
+  const PlotQuantity wattRatio = PlotQuantity::ofRatio(RatioQuantity::VelocityRatio, k::RatioBodies{2, 6, false});
+  REQUIRE(panel.curve(wattRatio) != nullptr);
+  CHECK(panel.curve(wattRatio)->name == QStringLiteral("ratio ω6/ω2"));
   CHECK(panel.curve(kFourBarRatio) == nullptr);
-  CHECK(panel.curve(kSliderRatio) == nullptr);
+  doc.reset(*k::designForExample("shaper"));
+  const PlotQuantity ramAdvantage = PlotQuantity::ofRatio(RatioQuantity::Advantage, k::RatioBodies{2, 6, true});
+  REQUIRE(panel.curve(ramAdvantage) != nullptr);
+  CHECK(panel.curve(ramAdvantage)->name == QStringLiteral("advantage F/T2"));
+  CHECK(valueAxisTitle(ramAdvantage, AngleUnit::Degrees, QStringLiteral("mm")) == QStringLiteral("F/T2 [1/mm]"));
+  doc.reset(*k::designForExample("excavator-boom"));  // a cylinder drives it: no crank, no ratios
+  CHECK(panel.curve(ramAdvantage) == nullptr);
+  CHECK(panel.curve(wattRatio) == nullptr);
 }
 
 TEST_CASE("a four-bar's plotted velocity ratio is the solver's ω4/ω2, its advantage the inverse",
