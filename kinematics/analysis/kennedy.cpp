@@ -89,7 +89,8 @@ std::optional<Located> locate(const InstantCentres& c, std::size_t i, std::size_
 }  // namespace
 
 InstantCentre centreAtInfinity(const Eigen::Vector2d& d) {
-  if (!d.allFinite() || !(d.norm() > 0.0)) return {CentreKind::Indeterminate, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
+  if (!d.allFinite() || !(d.norm() > 0.0))
+    return {CentreKind::Indeterminate, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
   const Eigen::Vector2d unit = d.normalized();
   const bool canonical = unit.x() > 0.0 || (unit.x() == 0.0 && unit.y() > 0.0);
   return {CentreKind::AtInfinity, Eigen::Vector2d::Zero(), canonical ? unit : Eigen::Vector2d(-unit)};
