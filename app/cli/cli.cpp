@@ -126,9 +126,9 @@ constexpr const char* kClassifyOptions = R"(Classify options:
 constexpr const char* kCentresOptions =
     R"(Centres options (with the mechanism options; any linkage):
   --at DEG[,DEG...]   crank angle(s), degrees CCW from the frame line; repeatable
-Output: every instant centre Iij of the linkage's bodies, numbered 1 frame, 2 crank, then
-  in the order the linkage reaches them (a four-bar: 3 coupler, 4 rocker; a slider-crank:
-  3 rod, 4 slider), as (x, y) in the length unit or "at infinity" with a direction, each
+Output: every instant centre Iij of the linkage's bodies, numbered 1 frame, then in the
+  order they are defined, each followed by the slider blocks pinned to it (a four-bar:
+  2 crank, 3 coupler, 4 rocker; a shaper: 2 crank, 3 block, 4 rocker, 5 link, 6 ram), as (x, y) in the length unit or "at infinity" with a direction, each
   with the pin, slide or Kennedy lines that locate it ("not located" where Kennedy's
   theorem does not reach); for a crank and an output b jointed to the frame, the velocity
   ratio ωb/ω2 (sliding output: v/ω2, length unit per rad) and the ideal mechanical

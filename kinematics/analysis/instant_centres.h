@@ -2,9 +2,9 @@
 // Instant centres of velocity of any planar linkage at one solved pose, by Kennedy's circle
 // diagram (Norton §6.4, Myszka §6.8, Uicker, Pennock & Shigley §3.15), and the velocity ratio
 // and ideal mechanical advantage they give. Bodies are numbered as the texts number them
-// (centre_model.h): 1 the frame, 2 the crank, then in the order the linkage reaches them, so a
-// four-bar is 1 frame, 2 crank, 3 coupler, 4 rocker and a slider-crank 1 frame, 2 crank, 3 rod,
-// 4 slider.
+// (centre_model.h): 1 the frame, then the rigid bodies in the order they are defined, each
+// followed by the slider blocks pinned to it, so a four-bar is 1 frame, 2 crank, 3 coupler,
+// 4 rocker and a slider-crank 1 frame, 2 crank, 3 rod, 4 slider.
 //
 //   Primary centres. Two bodies pinned together turn about the pin: Iij is the pin. A block
 //   sliding on a body turns with it, so their centre is the point at infinity normal to the
