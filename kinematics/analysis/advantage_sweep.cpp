@@ -42,10 +42,12 @@ Result<AdvantageSeries> advantageSeries(const Mechanism& m, const SweepResult& s
   out.bodies = model->ratio;
   out.velocityRatio.resize(n, Ratio{RatioKind::Undefined, 0.0});
   out.advantage.resize(n, Ratio{RatioKind::Undefined, 0.0});
+  InstantCentres centres;  // reused: one allocation for the sweep, not one per sample
   for (std::size_t j = 0; j < n; ++j) {
     if (!sweep.assembled(j)) continue;
     for (std::size_t i = 0; i < m.points.size(); ++i) pose.position[i] = sweep.position[i][j];
-    const MechanicalAdvantage ma = mechanicalAdvantage(instantCentres(m, *model, pose));
+    instantCentresInto(m, *model, pose, centres);
+    const MechanicalAdvantage ma = mechanicalAdvantage(centres);
     out.velocityRatio[j] = ma.velocityRatio;
     out.advantage[j] = ma.advantage;
   }

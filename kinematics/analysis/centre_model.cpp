@@ -123,12 +123,19 @@ Result<CentreModel> centreModel(const Mechanism& m) {
 }
 
 InstantCentres instantCentres(const Mechanism& m, const CentreModel& model, const Pose& pose) {
-  const auto at = [&pose](PointId p) -> const Eigen::Vector2d& { return pose.position[p.index]; };
   InstantCentres c;
-  c.bodies = model.bodies;
+  instantCentresInto(m, model, pose, c);
+  return c;
+}
+
+void instantCentresInto(const Mechanism& m, const CentreModel& model, const Pose& pose, InstantCentres& c) {
+  const auto at = [&pose](PointId p) -> const Eigen::Vector2d& { return pose.position[p.index]; };
+  if (c.bodies != model.bodies) c.bodies = model.bodies;
   const std::size_t n = c.bodyCount();
-  c.centres.resize(n * (n - 1) / 2);
-  c.origins.resize(c.centres.size());
+  c.centres.assign(n * (n - 1) / 2, InstantCentre{});
+  c.origins.assign(c.centres.size(), CentreOrigin{});
+  c.scale = 0.0;
+  c.anchor = c.outputDirection = Eigen::Vector2d::Zero();
   for (const auto& joints : model.bodyJoints)
     for (std::size_t a = 0; a < joints.size(); ++a)
       for (std::size_t b = a + 1; b < joints.size(); ++b)
@@ -143,7 +150,6 @@ InstantCentres instantCentres(const Mechanism& m, const CentreModel& model, cons
   if (model.outputGuide) c.outputDirection = prismaticDirection(m, *model.outputGuide, pose);
   if (model.anchor) c.anchor = at(*model.anchor);
   completeByKennedy(c);
-  return c;
 }
 
 std::vector<std::size_t> linkNumbers(const Mechanism& m) {

@@ -65,4 +65,7 @@ std::vector<std::size_t> linkNumbers(const Mechanism& mechanism);
 /// The centres at a pose of the mechanism `model` was made from (kennedy.h completes them).
 InstantCentres instantCentres(const Mechanism& mechanism, const CentreModel& model, const Pose& pose);
 
+/// The same into `out`, reusing its memory: what a sweep calls at every sample.
+void instantCentresInto(const Mechanism& mechanism, const CentreModel& model, const Pose& pose, InstantCentres& out);
+
 }  // namespace linkwright::kinematics

@@ -54,13 +54,14 @@ Result<Centrodes> centrodes(const Mechanism& mechanism, const SweepResult& sweep
   Centrodes out;
   out.body = model->centrodeBody;
   bool inRun = false;
-  Pose pose;  // positions only: the centres need nothing else
+  InstantCentres centres;  // reused from sample to sample
+  Pose pose;               // positions only: the centres need nothing else
   pose.position.resize(mechanism.points.size());
   for (std::size_t j = 0; j < sweep.size(); ++j) {
     std::optional<Eigen::Vector2d> centre;
     if (sweep.assembled(j)) {
       for (std::size_t i = 0; i < pose.position.size(); ++i) pose.position[i] = sweep.position[i][j];
-      const InstantCentres centres = instantCentres(mechanism, *model, pose);
+      instantCentresInto(mechanism, *model, pose, centres);
       const InstantCentre& i1k = centres.centre(1, out.body);
       if (i1k.kind == CentreKind::Finite && (i1k.position - centres.anchor).norm() <= kCentrodeReach * centres.scale)
         centre = i1k.position;

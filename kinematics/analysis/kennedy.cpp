@@ -59,8 +59,9 @@ struct Located {
 
 // The best meeting of the lines reaching Iij, if two lines do: the widest crossing; else
 // parallel lines' point at infinity; else (all coincide) Indeterminate.
-std::optional<Located> locate(const InstantCentres& c, std::size_t i, std::size_t j) {
-  std::vector<Line> lines;
+// `lines` is scratch space, kept between calls so a sweep does not allocate per centre.
+std::optional<Located> locate(const InstantCentres& c, std::size_t i, std::size_t j, std::vector<Line>& lines) {
+  lines.clear();
   for (std::size_t k = 1; k <= c.bodyCount(); ++k) {
     if (k == i || k == j) continue;
     const InstantCentre& ik = c.centre(i, k);
@@ -98,14 +99,18 @@ InstantCentre centreAtInfinity(const Eigen::Vector2d& d) {
 
 void completeByKennedy(InstantCentres& c) {
   const std::size_t n = c.bodyCount();
-  std::vector<Located> undecided;  // the last pass's degenerate meetings
+  std::vector<Located> found, undecided;  // this pass's meetings, and its degenerate ones
+  std::vector<Line> lines;
+  found.reserve(c.centres.size());
+  undecided.reserve(c.centres.size());
+  lines.reserve(n);
   for (;;) {
-    std::vector<Located> found;
+    found.clear();
     undecided.clear();
     for (std::size_t i = 1; i <= n; ++i)
       for (std::size_t j = i + 1; j <= n; ++j) {
         if (c.centre(i, j).kind != CentreKind::Unresolved) continue;
-        if (auto at = locate(c, i, j)) (known(at->centre) ? found : undecided).push_back(*at);
+        if (auto at = locate(c, i, j, lines)) (known(at->centre) ? found : undecided).push_back(*at);
       }
     if (found.empty()) break;
     for (const Located& l : found) {

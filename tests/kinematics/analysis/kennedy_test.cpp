@@ -107,6 +107,22 @@ TEST_CASE("every centre of every crank-driven example is located and moves as th
   CHECK(poses >= 6);
 }
 
+TEST_CASE("centres solved into reused memory equal fresh ones, across poses and linkages",
+          "[analysis][centres][kennedy]") {
+  InstantCentres reused;  // as a sweep reuses it: a six-bar's fifteen centres, then a four-bar's six
+  for (const char* name : {"watt-ii", "shaper", "thesis-crank-rocker", "ls3-engine"}) {
+    CAPTURE(name);
+    const Mechanism m = findExample(name)->mechanism;
+    const CentreModel model = centreModel(m).value();
+    for (const double deg : {15.0, 200.0}) {
+      const auto pose = solvePose(m, {degToRad(deg), 0.0, 0.0}, SolveRequest{false, false});
+      REQUIRE(pose);
+      instantCentresInto(m, model, *pose, reused);
+      CHECK(reused == instantCentres(m, model, *pose));
+    }
+  }
+}
+
 TEST_CASE("bodies are numbered as the texts number them, and named", "[analysis][centres][kennedy]") {
   const auto names = [](const char* example) { return centreModel(findExample(example)->mechanism).value().bodies; };
   CHECK(names("thesis-crank-rocker") == std::vector<std::string>{"frame", "crank", "coupler", "rocker"});
