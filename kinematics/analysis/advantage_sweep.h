@@ -33,6 +33,21 @@ struct AdvantageSeries {
 /// sweep without every point's positions.
 Result<AdvantageSeries> advantageSeries(const Mechanism& mechanism, const SweepResult& sweep);
 
+/// Where the output comes to rest between two samples (a rocker's limit, a slider's dead
+/// centre, a ram's reversal): the velocity ratio is Finite at samples `sample` and
+/// `sample` + 1 and passes through zero between them, at `fraction` ∈ [0, 1) of the way by
+/// linear interpolation, as a plot reads it.
+struct OutputRest {
+  std::size_t sample = 0;
+  double fraction = 0.0;
+  bool operator==(const OutputRest&) const = default;
+};
+
+/// The rests of `series` in sample order. A sign change through a pole (the ratio running off
+/// to ±∞ where the crank cannot drive) is not a rest: the ratio's size grows towards a pole
+/// and shrinks after it, while towards a zero it shrinks and grows after it.
+std::vector<OutputRest> outputRests(const AdvantageSeries& series);
+
 /// Why `mechanism` has no velocity ratio, or nothing when it has one.
 std::optional<Error> ratioUnavailable(const Mechanism& mechanism);
 

@@ -70,6 +70,10 @@ std::optional<QList<QPointF>> limitMarkerPointsInTime(const k::LimitReport& limi
   return points;
 }
 
+void LimitMarkers::setName(const QString& name) {
+  if (m_points->name() != name) m_points->setName(name);
+}
+
 LimitMarkers::LimitMarkers(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis)
     : m_chart(chart), m_xAxis(xAxis), m_yAxis(yAxis), m_points(new QScatterSeries) {
   m_points->setObjectName(QStringLiteral("limit_points"));

@@ -58,6 +58,8 @@ public:
   /// A line at each point's x; the labelled points themselves only if `showPoints` (the
   /// rocker curve is shown). Returns whether their legend entry appeared or went.
   bool setPositions(const QList<QPointF>& points, bool showPoints);
+  /// The points' name in the legend ("rocker limit" at first).
+  void setName(const QString& name);
   /// The y extent of the lines (the value axis range).
   void setYSpan(double lo, double hi);
   /// Puts the markers back on top of the chart's series and legend (after curves were added).

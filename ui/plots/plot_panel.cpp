@@ -248,7 +248,7 @@ void PlotPanel::refreshData() {
   }
   for (QuantityChartView* view : showXTitles())
     if (!changed.contains(view)) changed.append(view);
-  const QString note = placeLimitMarkers(shown, changed);
+  const QString note = placeLimitMarkers(shown, ratios ? &*ratios : nullptr, changed);
   QuantityChartView* angles = chartView(QuantityKind::Angle);
   m_limitNote->setText(note);
   m_limitNote->setVisible(!note.isEmpty() && !angles->isHidden());
@@ -257,7 +257,8 @@ void PlotPanel::refreshData() {
   m_settleTimer.start();
 }
 
-QString PlotPanel::placeLimitMarkers(const QuantitySelection& shown, QList<QuantityChartView*>& changed) {
+QString PlotPanel::placeLimitMarkers(const QuantitySelection& shown, const kinematics::AdvantageSeries* ratios,
+                                     QList<QuantityChartView*>& changed) {
   const kinematics::Design& design = m_document->design();
   const kinematics::SweepResult& sweep = m_document->sweep();
   // Limit positions are a four-bar's (empty otherwise), on its rocker's curve; on a time base
@@ -281,11 +282,22 @@ QString PlotPanel::placeLimitMarkers(const QuantitySelection& shown, QList<Quant
   };
   place(*m_limits, QuantityKind::Angle, points, fourBar && shown.contains(PlotQuantity::RockerAngle));
   // At a limit the rocker is at rest: the velocity ratio is zero (labelled on its curve) and
-  // the advantage infinite (the line its two branches run up against).
+  // the advantage infinite (the line its two branches run up against). Another linkage's
+  // output (a slider, a ram, a six-bar's last rocker) rests where its ratio series passes
+  // through zero.
   QList<QPointF> onZero = points;
+  if (!fourBar && ratios != nullptr) {
+    onZero.clear();
+    for (const kinematics::OutputRest& rest : kinematics::outputRests(*ratios)) {
+      const double x0 = sampleX(sweep, rest.sample, m_x.source, m_unit);
+      const double x1 = rest.fraction > 0.0 ? sampleX(sweep, rest.sample + 1, m_x.source, m_unit) : x0;
+      onZero.append(QPointF(x0 + rest.fraction * (x1 - x0), 0.0));
+    }
+  }
   for (QPointF& p : onZero) p.setY(0.0);
-  place(*m_ratioLimits, QuantityKind::VelocityRatio, onZero, fourBar);
-  place(*m_advantageLimits, QuantityKind::Advantage, points, false);
+  m_ratioLimits->setName(fourBar ? tr("rocker limit") : tr("output at rest"));
+  place(*m_ratioLimits, QuantityKind::VelocityRatio, onZero, true);
+  place(*m_advantageLimits, QuantityKind::Advantage, onZero, false);
   return note;
 }
 

@@ -36,6 +36,10 @@ class QLabel;
 
 class QGraphicsView;
 
+namespace linkwright::kinematics {
+struct AdvantageSeries;
+}
+
 namespace linkwright::ui {
 
 class HoverReadout;
@@ -130,7 +134,8 @@ private:
   /// Marks the four-bar's limit positions on the angle and ratio charts of refreshData's x
   /// axis; adds the charts whose legend changed to `changed`. Returns why they are not marked,
   /// or nothing.
-  QString placeLimitMarkers(const QuantitySelection& shown, QList<QuantityChartView*>& changed);
+  QString placeLimitMarkers(const QuantitySelection& shown, const kinematics::AdvantageSeries* ratios,
+                            QList<QuantityChartView*>& changed);
   /// Aligns the shown charts' plot areas; `changed` (default: all) are laid out afresh.
   void alignCharts(const QList<QuantityChartView*>& changed);
   void alignCharts();

@@ -6,8 +6,10 @@
 
 #include "kinematics/analysis/advantage_sweep.h"
 
+#include "kinematics/analysis/quick_return.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
+#include "kinematics/model/recognise.h"
 #include "kinematics/model/shaper.h"
 #include "kinematics/model/slider_crank.h"
 #include "kinematics/model/units.h"
@@ -120,4 +122,33 @@ TEST_CASE("a shaper's ratios are its ram's v/ω2, a Watt II's its second rocker'
   for (std::size_t j = 0; j < w.size(); ++j)
     if (rocker->velocityRatio[j].kind == RatioKind::Finite)
       CHECK(rocker->velocityRatio[j].value == Approx(w.linkOmega[last][j] / 2.5).margin(1e-9));
+}
+
+TEST_CASE("the output comes to rest where its ratio passes through zero, not through a pole", "[advantage_sweep]") {
+  // The LS3 (no offset) at its dead centres, 0° and 180°, which the grid holds exactly.
+  const Mechanism ls3 = findExample("ls3-engine")->mechanism;
+  const auto piston = advantageSeries(ls3, sweepOf(ls3, 73));
+  REQUIRE(piston);
+  CHECK(outputRests(*piston) == std::vector<OutputRest>{{0, 0.0}, {36, 0.0}, {72, 0.0}});
+  // The shaper's ram reverses at the quick return's limits (the rocker's, crank ⟂ slot), read
+  // off a 0.5° grid by linear interpolation.
+  const auto example = findExample("shaper");
+  const SweepResult s = sweepOf(example->mechanism, 721);
+  const auto ram = advantageSeries(example->mechanism, s);
+  REQUIRE(ram);
+  const auto exact = shaperQuickReturn(asQuickReturn(example->mechanism)->geometry);
+  REQUIRE(exact);
+  const std::vector<OutputRest> rests = outputRests(*ram);
+  REQUIRE(rests.size() == 2);
+  std::vector<double> atDeg;
+  for (const OutputRest& r : rests)
+    atDeg.push_back(
+        radToDeg(s.inputAngle[r.sample] + r.fraction * (s.inputAngle[r.sample + 1] - s.inputAngle[r.sample])));
+  CHECK(atDeg[0] == Approx(radToDeg(exact->firstLimitCrankAngle)).margin(0.01));
+  CHECK(atDeg[1] == Approx(radToDeg(exact->secondLimitCrankAngle)).margin(0.01));
+  // Through zero the steps are smooth; through a pole the jump dwarfs its neighbours'.
+  AdvantageSeries made;
+  for (const double v : {0.3, 0.2, 0.1, -0.1, -0.2, 40.0, 400.0, -400.0, -40.0})
+    made.velocityRatio.push_back({RatioKind::Finite, v});
+  CHECK(outputRests(made) == std::vector<OutputRest>{{2, 0.5}});
 }

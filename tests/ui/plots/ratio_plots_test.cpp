@@ -14,8 +14,10 @@
 #include "ui/plots/quantity_chart_view.h"
 #include "ui/plots/quantity_selector.h"
 
+#include "kinematics/analysis/quick_return.h"
 #include "kinematics/design/design.h"
 #include "kinematics/model/fourbar.h"
+#include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 
 #include <QCheckBox>
@@ -186,14 +188,35 @@ TEST_CASE("a slider-crank's ratios are v/ω2 and F/T2, in its length unit", "[pl
     const std::size_t j = sampleAt(s, p.x());
     CHECK(closeRelative(p.y() * along * s.velocity[slider][j].x() / s.linkOmega[crank][j], 1.0, 1e-9));
   }
-  // Dead centres: the advantage breaks at both, with no limit line (the limits are a four-bar's).
+  // Dead centres, 0° and 180° (and 360°): the piston is at rest, the advantage breaks there,
+  // and both ratio charts mark them, the rest labelled on the velocity ratio's zero.
   CHECK(panel.chartView(QuantityKind::Advantage)->segments(kSliderAdvantage).size() >= 2);
-  CHECK(panel.advantageLimitMarkers()->lineXs().isEmpty());
+  CHECK(panel.advantageLimitMarkers()->lineXs() == QList<double>{0.0, 180.0, 360.0});
+  CHECK(panel.velocityRatioLimitMarkers()->lineXs() == QList<double>{0.0, 180.0, 360.0});
+  CHECK(panel.velocityRatioLimitMarkers()->points()->name() == QStringLiteral("output at rest"));
+  CHECK(panel.limitMarkers()->lineXs().isEmpty());  // the angle chart's limits are a rocker's
   CHECK(panel.chartView(QuantityKind::VelocityRatio)->yAxis()->titleText() == QStringLiteral("v/ω2 [mm/rad]"));
   CHECK(panel.chartView(QuantityKind::Advantage)->yAxis()->titleText() == QStringLiteral("F/T2 [1/mm]"));
   // The read-out gives the ratio's own unit whatever the plots' angle unit.
   CHECK(readoutText(*panel.curve(kSliderAdvantage), {90.0, 0.025}, AngleUnit::Degrees, QStringLiteral("mm")) ==
         QStringLiteral("advantage F/T2 = 0.0250 1/mm at crank 90.0°"));
+}
+
+TEST_CASE("a shaper's ram rests where its velocity ratio passes through zero, marked on both charts",
+          "[plot_panel][ratios]") {
+  MechanismDocument doc;
+  doc.reset(*k::designForExample("shaper"));
+  PlotPanel panel(&doc);
+  const PlotQuantity ratio = PlotQuantity::ofRatio(RatioQuantity::VelocityRatio, k::RatioBodies{2, 6, true});
+  const PlotQuantity advantage = PlotQuantity::ofRatio(RatioQuantity::Advantage, k::RatioBodies{2, 6, true});
+  showRatios(panel, ratio, advantage);
+  const auto quick = k::shaperQuickReturn(k::asQuickReturn(doc.mechanism())->geometry);
+  REQUIRE(quick);
+  const QList<double> xs = panel.velocityRatioLimitMarkers()->lineXs();
+  REQUIRE(xs.size() == 2);
+  CHECK(xs[0] == Approx(k::radToDeg(quick->firstLimitCrankAngle)).margin(0.05));  // read off a 0.5° grid
+  CHECK(xs[1] == Approx(k::radToDeg(quick->secondLimitCrankAngle)).margin(0.05));
+  CHECK(panel.advantageLimitMarkers()->lineXs() == xs);
 }
 
 TEST_CASE("a four-bar's ratio reads out with no unit", "[hover_readout][ratios]") {
