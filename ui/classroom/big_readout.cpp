@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
 
 namespace linkwright::ui {
 
@@ -178,6 +179,14 @@ void BigReadout::setPresentationScale(double factor) {
   fitFont();
 }
 
+void BigReadout::showEvent(QShowEvent* event) {
+  QLabel::showEvent(event);
+  if (!std::exchange(m_stale, false)) return;
+  m_quantities = readoutQuantities(*m_document);
+  refresh();
+  fitFont();
+}
+
 void BigReadout::resizeEvent(QResizeEvent* event) {
   QLabel::resizeEvent(event);
   fitFont();
@@ -202,6 +211,11 @@ void BigReadout::refreshColors() {
 }
 
 void BigReadout::onDocumentChanged(Changes what) {
+  // Off screen (the default) it only notes that it is behind; showEvent catches up.
+  if (!isVisible()) {
+    m_stale = true;
+    return;
+  }
   if (what & Change::Design) m_quantities = readoutQuantities(*m_document);
   if (what & (Changes(Change::Design) | Change::Motion | Change::Request)) refresh();
   if (what & Change::Design) fitFont();  // other quantities, another length of text

@@ -60,6 +60,7 @@ public:
 
 protected:
   void resizeEvent(QResizeEvent* event) override;
+  void showEvent(QShowEvent* event) override;
 
 private:
   void onDocumentChanged(Changes what);
@@ -71,6 +72,7 @@ private:
   AngleUnit m_unit = AngleUnit::Degrees;
   std::vector<ReadoutQuantity> m_quantities;
   std::vector<ReadoutEntry> m_entries;
+  bool m_stale = false;       // the document changed while it was off screen
   double m_pointSize = 18.0;  // the type's full size
 };
 

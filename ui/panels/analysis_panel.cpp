@@ -2,6 +2,7 @@
 
 #include "ui/colors.h"
 #include "ui/number_text.h"
+#include "ui/readout_label.h"
 
 #include "ui/document/design_templates.h"
 #include "ui/document/mechanism_document.h"
@@ -57,10 +58,11 @@ QString rangesText(const k::Mechanism& m, const std::vector<k::AngleRange>& rang
 }  // namespace
 
 AnalysisPanel::AnalysisPanel(MechanismDocument* document, QWidget* parent)
-    : QWidget(parent), m_document(document), m_badge(new QLabel(this)), m_sums(new QLabel(this)),
-      m_mobility(new QLabel(this)), m_range(new QLabel(this)), m_transmissionNow(new QLabel(this)),
-      m_transmissionRange(new QLabel(this)), m_limits(new QLabel(this)), m_timeRatio(new QLabel(this)),
-      m_stroke(new QLabel(this)), m_notAssembled(new QLabel(this)), m_warning(new QLabel(this)) {
+    : QWidget(parent), m_document(document), m_badge(new QLabel(this)), m_sums(new ReadoutLabel(this)),
+      m_mobility(new QLabel(this)), m_range(new ReadoutLabel(this)), m_transmissionNow(new ReadoutLabel(this)),
+      m_transmissionRange(new ReadoutLabel(this)), m_limits(new ReadoutLabel(this)),
+      m_timeRatio(new ReadoutLabel(this)), m_stroke(new ReadoutLabel(this)), m_notAssembled(new ReadoutLabel(this)),
+      m_warning(new QLabel(this)) {
   auto* layout = new QVBoxLayout(this);
   auto* box = new QGroupBox(tr("Analysis"), this);
   m_form = new QFormLayout(box);
@@ -75,9 +77,6 @@ AnalysisPanel::AnalysisPanel(MechanismDocument* document, QWidget* parent)
   m_form->addRow(tr("Time ratio"), m_timeRatio);
   m_form->addRow(tr("Ram stroke"), m_stroke);
   m_form->addRow(tr("Not assembled"), m_notAssembled);
-  for (QLabel* l :
-       {m_sums, m_range, m_transmissionNow, m_transmissionRange, m_limits, m_timeRatio, m_stroke, m_notAssembled})
-    l->setWordWrap(true);
   m_warning->setWordWrap(true);
   m_warning->setStyleSheet("color: #a15c00;");
   m_form->addRow(m_warning);
@@ -115,7 +114,7 @@ void AnalysisPanel::refreshDesign() {
     m_range->setText(rangesText(linkage, a.inputRange.ranges) + (crank ? tr(" (rocks between the ends)") : QString()));
   // A four-bar's rows for any linkage that is one, however it was built or stored.
   const bool fourBar = a.grashof.has_value();
-  for (QLabel* row : {m_sums, m_transmissionRange, m_limits}) m_form->setRowVisible(row, fourBar);
+  for (QWidget* row : {m_sums, m_transmissionRange, m_limits}) m_form->setRowVisible(row, fourBar);
   if (fourBar) refreshFourBar();
   else refreshLinkage();
 }

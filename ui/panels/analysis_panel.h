@@ -14,6 +14,7 @@ class QLabel;
 namespace linkwright::ui {
 
 class MechanismDocument;
+class ReadoutLabel;
 
 class AnalysisPanel : public QWidget {
   Q_OBJECT
@@ -36,15 +37,15 @@ private:
   MechanismDocument* m_document;
   QFormLayout* m_form;
   QLabel* m_badge;
-  QLabel* m_sums;
+  ReadoutLabel* m_sums;
   QLabel* m_mobility;
-  QLabel* m_range;
-  QLabel* m_transmissionNow;
-  QLabel* m_transmissionRange;
-  QLabel* m_limits;
-  QLabel* m_timeRatio;
-  QLabel* m_stroke;
-  QLabel* m_notAssembled;
+  ReadoutLabel* m_range;
+  ReadoutLabel* m_transmissionNow;
+  ReadoutLabel* m_transmissionRange;
+  ReadoutLabel* m_limits;
+  ReadoutLabel* m_timeRatio;
+  ReadoutLabel* m_stroke;
+  ReadoutLabel* m_notAssembled;
   QLabel* m_warning;
 };
 

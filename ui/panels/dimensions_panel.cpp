@@ -4,6 +4,7 @@
 #include "ui/document/edit_design_command.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/panels/fourbar_lengths_editor.h"
+#include "ui/quiet_update.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -120,7 +121,7 @@ void DimensionsPanel::refresh() {
   const k::Mechanism& m = m_document->mechanism();
   if (dimensionFields(m) != m_fields || m_editors.empty()) rebuild();
   m_refreshing = true;
-  for (std::size_t i = 0; i < m_fields.size(); ++i) m_editors[i]->setValue(fieldValue(m, m_fields[i]));
+  for (std::size_t i = 0; i < m_fields.size(); ++i) setValueQuietly(m_editors[i], fieldValue(m, m_fields[i]));
   for (const auto& [p, box] : m_branches) box->setCurrentIndex(*branchOf(m.points[p.index]) == k::Branch::Open ? 0 : 1);
   m_refreshing = false;
 }

@@ -4,6 +4,7 @@
 #include "ui/number_text.h"
 #include "ui/panels/law_table_file.h"
 #include "ui/plots/plot_x_axis.h"
+#include "ui/quiet_update.h"
 #include "ui/settings.h"
 
 #include "kinematics/design/redrive.h"
@@ -254,9 +255,11 @@ void DrivePanel::refresh() {
   m_refreshing = true;
   const k::Design& d = m_document->design();
   const Drive drive = driveOf(d);
-  m_driver->clear();
+  QStringList drivers;
   for (const k::DriverChoice& choice : k::driverChoices(d.mechanism))
-    m_driver->addItem(QString::fromStdString(choice.description));
+    drivers << QString::fromStdString(choice.description);
+  setComboItems(m_driver, drivers);
+  m_driver->setCurrentIndex(0);  // the first choice is the joint that drives now
   m_driver->setEnabled(m_driver->count() > 1);
   m_driver->setToolTip(m_driver->count() > 1
                            ? tr("Drive the linkage from another joint: the joint next to the driver takes the input, "
@@ -284,12 +287,12 @@ void DrivePanel::refresh() {
   const auto suffix = [](const QString& unit) {
     return unit == QStringLiteral("°") ? unit : QStringLiteral(" ") + unit;
   };
-  fieldBox(Field::Speed)->setSuffix(suffix(speedUnit()));
-  fieldBox(Field::Acceleration)
-      ->setSuffix(crank ? tr(" rad/s²") : suffix(QString::fromStdString(m_document->lengthUnit()) + tr("/s²")));
-  for (const Field f : {Field::Start, Field::Rise}) fieldBox(f)->setSuffix(suffix(positionUnit()));
+  setSuffixQuietly(fieldBox(Field::Speed), suffix(speedUnit()));
+  setSuffixQuietly(fieldBox(Field::Acceleration),
+                   crank ? tr(" rad/s²") : suffix(QString::fromStdString(m_document->lengthUnit()) + tr("/s²")));
+  for (const Field f : {Field::Start, Field::Rise}) setSuffixQuietly(fieldBox(f), suffix(positionUnit()));
   const auto show = [this](Field f, std::optional<double> value) {
-    if (value) fieldBox(f)->setValue(*value);
+    if (value) setValueQuietly(fieldBox(f), *value);
   };
   if (d.time) {
     const k::MotionLaw& law = d.time->law;
@@ -315,7 +318,7 @@ void DrivePanel::refresh() {
     show(Field::Speed, speedToShown(d.omega));
     show(Field::Acceleration, d.alpha);
   }
-  m_samples->setValue(static_cast<int>(std::min<std::size_t>(d.samples, 1'000'000'000)));
+  setValueQuietly(m_samples, static_cast<int>(std::min<std::size_t>(d.samples, 1'000'000'000)));
 
   // The time axis needs a time base; without one the plots run against the input.
   if (auto* model = qobject_cast<QStandardItemModel*>(m_axis->model())) {

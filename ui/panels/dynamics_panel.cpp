@@ -3,6 +3,7 @@
 #include "ui/colors.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/panels/mass_table.h"
+#include "ui/quiet_update.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -134,8 +135,8 @@ void DynamicsPanel::refreshTables() {
   const k::Mechanism& m = m_document->mechanism();
   const k::LinkageDynamics& d = m_document->design().dynamics;
   const QString unit = QString::fromStdString(m_document->lengthUnit());
-  m_links->setHorizontalHeaderItem(2, new QTableWidgetItem(tr("Centre along\n[%1]").arg(unit)));
-  m_links->setHorizontalHeaderItem(3, new QTableWidgetItem(tr("Centre across\n[%1]").arg(unit)));
+  m_links->setHeaderText(2, tr("Centre along\n[%1]").arg(unit));
+  m_links->setHeaderText(3, tr("Centre across\n[%1]").arg(unit));
   QStringList names;
   std::vector<std::vector<MassTable::Cell>> cells;
   const QString midpoint = tr("midpoint");
@@ -181,24 +182,23 @@ void DynamicsPanel::refreshLoads() {
   const QSignalBlocker b1(m_gravity), b2(m_g), b3(m_torqueLink), b4(m_torque), b5(m_forceTarget), b6(m_forceX),
       b7(m_forceY);
   m_gravity->setChecked(loads.gravity.has_value());
-  m_g->setValue(loads.gravity ? loads.gravity->norm() : k::kStandardGravity);
+  setValueQuietly(m_g, loads.gravity ? loads.gravity->norm() : k::kStandardGravity);
   m_g->setEnabled(loads.gravity.has_value());
 
-  m_torqueLink->clear();
-  m_torqueLink->addItem(tr("(none)"));
-  for (const k::Link& link : m.links) m_torqueLink->addItem(QString::fromStdString(link.name));
+  QStringList torqueLinks{tr("(none)")};
+  for (const k::Link& link : m.links) torqueLinks << QString::fromStdString(link.name);
+  setComboItems(m_torqueLink, torqueLinks);
   const k::LinkTorque* torque = loads.torques.empty() ? nullptr : &loads.torques.front();
   m_torqueLink->setCurrentIndex(torque ? std::max(0, m_torqueLink->findText(QString::fromStdString(torque->link))) : 0);
-  m_torque->setValue(torque ? torque->torque : 0.0);
+  setValueQuietly(m_torque, torque ? torque->torque : 0.0);
   m_torque->setEnabled(torque != nullptr);
 
   m_targets.clear();
-  m_forceTarget->clear();
-  m_forceTarget->addItem(tr("(none)"));
+  QStringList targets{tr("(none)")};
   for (const k::SliderMass& key : m_sliderKeys) {
     m_targets.push_back({{}, key.point, key.guide});
-    m_forceTarget->addItem(tr("slider block at %1").arg(QString::fromStdString(key.point)) +
-                           (key.guide > 0 ? tr(" (guide %1)").arg(key.guide + 1) : QString()));
+    targets << (tr("slider block at %1").arg(QString::fromStdString(key.point)) +
+                (key.guide > 0 ? tr(" (guide %1)").arg(key.guide + 1) : QString()));
   }
   for (std::size_t li = 0; li < m.links.size(); ++li) {
     const k::Link& link = m.links[li];
@@ -208,18 +208,18 @@ void DynamicsPanel::refreshLoads() {
         on.push_back(k::PointId{p});
     for (const k::PointId p : on) {
       m_targets.push_back({link.name, m.points[p.index].name, 0});
-      m_forceTarget->addItem(
-          tr("%1 on %2").arg(QString::fromStdString(m.points[p.index].name), QString::fromStdString(link.name)));
+      targets << tr("%1 on %2").arg(QString::fromStdString(m.points[p.index].name), QString::fromStdString(link.name));
     }
   }
+  setComboItems(m_forceTarget, targets);
   const k::PointForce* force = loads.forces.empty() ? nullptr : &loads.forces.front();
   int target = 0;
   for (std::size_t i = 0; force != nullptr && i < m_targets.size(); ++i)
     if (m_targets[i].link == force->link && m_targets[i].point == force->point && m_targets[i].guide == force->guide)
       target = static_cast<int>(i) + 1;
   m_forceTarget->setCurrentIndex(target);
-  m_forceX->setValue(force ? force->force.x() : 0.0);
-  m_forceY->setValue(force ? force->force.y() : 0.0);
+  setValueQuietly(m_forceX, force ? force->force.x() : 0.0);
+  setValueQuietly(m_forceY, force ? force->force.y() : 0.0);
   m_forceX->setEnabled(force != nullptr);
   m_forceY->setEnabled(force != nullptr);
 

@@ -5,6 +5,7 @@
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSlider>
+#include "ui/quiet_update.h"
 
 #include <algorithm>
 #include <cmath>
@@ -49,14 +50,14 @@ double LengthEditor::value() const { return m_spin->value(); }
 
 void LengthEditor::setValue(double value) {
   m_updating = true;
-  m_spin->setValue(value);
+  setValueQuietly(m_spin, value);
   syncSlider();
   m_updating = false;
 }
 
 void LengthEditor::setLabel(const QString& label) { m_label->setText(label); }
 
-void LengthEditor::setUnit(const QString& unit) { m_spin->setSuffix(" " + unit); }
+void LengthEditor::setUnit(const QString& unit) { setSuffixQuietly(m_spin, " " + unit); }
 
 void LengthEditor::setSliderRange(double low, double high) {
   m_low = low;

@@ -58,10 +58,19 @@ MassTable::MassTable(const QStringList& headers, QWidget* parent) : QTableWidget
   connect(this, &QTableWidget::itemChanged, this, &MassTable::onItemChanged);
 }
 
+void MassTable::setHeaderText(int column, const QString& text) {
+  if (const QTableWidgetItem* header = horizontalHeaderItem(column); header != nullptr && header->text() == text)
+    return;
+  setHorizontalHeaderItem(column, new QTableWidgetItem(text));
+}
+
 QString MassTable::formatValue(double value) { return numberText(value, 'g', 6); }
 
 void MassTable::setRows(const QStringList& names, const std::vector<std::vector<Cell>>& cells) {
   m_filling = true;
+  // A refresh that changes nothing must not re-lay out the panel: only a new row or a new
+  // text can change the table's size.
+  bool resized = rowCount() != static_cast<int>(names.size());
   setRowCount(static_cast<int>(names.size()));
   QFont unsetFont = font();
   unsetFont.setItalic(true);
@@ -77,8 +86,9 @@ void MassTable::setRows(const QStringList& names, const std::vector<std::vector<
   };
   for (int row = 0; row < rowCount(); ++row) {
     QTableWidgetItem* name = itemAt(row, 0);
+    resized = resized || name->text() != names[row];
     name->setText(names[row]);
-    name->setFlags(Qt::ItemIsEnabled);
+    if (name->flags() != Qt::ItemIsEnabled) name->setFlags(Qt::ItemIsEnabled);  // setFlags always signals
     const auto& rowCells = cells[static_cast<std::size_t>(row)];
     for (int column = 1; column < columnCount(); ++column) {
       const auto index = static_cast<std::size_t>(column - 1);
@@ -86,14 +96,16 @@ void MassTable::setRows(const QStringList& names, const std::vector<std::vector<
       QTableWidgetItem* it = itemAt(row, column);
       it->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
       it->setData(kUnsetRole, !cell.value.has_value());
-      it->setText(cell.value ? formatValue(*cell.value) : cell.unsetText);
+      const QString text = cell.value ? formatValue(*cell.value) : cell.unsetText;
+      resized = resized || it->text() != text;
+      it->setText(text);
       it->setFont(cell.value ? font() : unsetFont);
       it->setForeground(palette().color(cell.value ? QPalette::Active : QPalette::Disabled, QPalette::Text));
       it->setToolTip(cell.value ? QString() : cell.unsetToolTip);
     }
   }
   m_filling = false;
-  updateGeometry();
+  if (resized) updateGeometry();
 }
 
 void MassTable::onItemChanged(QTableWidgetItem* item) {

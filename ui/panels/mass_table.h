@@ -28,6 +28,9 @@ public:
   /// Replaces the rows: one per name, with `cells[row]` in columns 1… . Emits nothing.
   void setRows(const QStringList& names, const std::vector<std::vector<Cell>>& cells);
 
+  /// Retitles `column`; an unchanged title is left alone (a new header item re-lays out the panel).
+  void setHeaderText(int column, const QString& text);
+
   /// Text for a value in a cell: up to 6 significant digits, C locale ("0.0004", "17.5").
   static QString formatValue(double value);
 

@@ -340,7 +340,9 @@ QList<QuantityChartView*> PlotPanel::showXTitles() {
   for (QuantityChartView* view : m_views) {
     const bool shown = !m_presenting || view == bottom;
     // The bottom chart is that title taller, so its plot is as high as the others'.
-    box->setStretchFactor(view, shown && m_presenting ? kTitledChartStretch : kChartStretch);
+    // Set only when it differs: QBoxLayout re-lays out the window on every call.
+    const int stretch = shown && m_presenting ? kTitledChartStretch : kChartStretch;
+    if (box->stretch(box->indexOf(view)) != stretch) box->setStretchFactor(view, stretch);
     if (view->xAxis()->isTitleVisible() == shown) continue;
     view->xAxis()->setTitleVisible(shown);
     changed.append(view);

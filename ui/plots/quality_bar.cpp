@@ -1,6 +1,7 @@
 #include "ui/plots/quality_bar.h"
 
 #include "ui/number_text.h"
+#include "ui/readout_label.h"
 
 #include "kinematics/model/driver.h"
 #include "kinematics/model/units.h"
@@ -42,7 +43,7 @@ QString boxToolTip() {
 }  // namespace
 
 QualityBar::QualityBar(MechanismDocument* document, QWidget* parent)
-    : QWidget(parent), m_document(document), m_box(new QComboBox(this)), m_cost(new QLabel(this)),
+    : QWidget(parent), m_document(document), m_box(new QComboBox(this)), m_cost(new ReadoutLabel(this)),
       m_error(new QLabel(this)) {
   // The box, then what it costs over what it buys, one line each, beside it.
   auto* row = new QHBoxLayout(this);

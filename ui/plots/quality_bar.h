@@ -13,6 +13,8 @@ class QLabel;
 
 namespace linkwright::ui {
 
+class ReadoutLabel;
+
 class QualityBar : public QWidget {
   Q_OBJECT
 public:
@@ -41,7 +43,7 @@ private:
 
   MechanismDocument* m_document;
   QComboBox* m_box;
-  QLabel* m_cost;
+  ReadoutLabel* m_cost;  // changes with every sweep: a drag must not re-lay out the window
   QLabel* m_error;
 };
 

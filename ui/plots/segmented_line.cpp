@@ -67,7 +67,9 @@ void SegmentedLine::draw() {
     } else if (segment->count() > 0) {
       segment->replace(QList<QPointF>{});
     }
-    setSeriesShown(m_chart, segment, m_shown && (i == 0 || i < runCount), i == 0);
+    // A spare segment stays visible, only empty: showing a series re-shows its legend marker,
+    // and each crossing into or out of a gap would then lay the chart out again.
+    setSeriesShown(m_chart, segment, m_shown, i == 0);
   }
 }
 

@@ -40,7 +40,7 @@ public:
   /// How far (pixels) a sample may lie from the line drawn through the kept vertices.
   static constexpr double kCurveTolerancePx = 0.2;
 
-  /// Shows `runs`, one segment each (made as needed; spare ones emptied and hidden), simplified
+  /// Shows `runs`, one segment each (made as needed; spare ones emptied), simplified
   /// for the chart's plot area and axis ranges as they are now: set the axes first. The first
   /// segment stays visible while `shown`, even empty, so the legend names the curve.
   void setRuns(const SeriesRuns& runs, bool shown);

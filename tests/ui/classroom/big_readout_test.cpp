@@ -50,6 +50,7 @@ TEST_CASE("the big read-out gives the pose's values at each crank angle it moves
   MechanismDocument doc;
   doc.reset(*k::designForExample("thesis-crank-rocker"));
   BigReadout readout(&doc);
+  readout.show();  // off screen it only catches up when shown
   REQUIRE(symbols(readout.entries()) == QStringList{"θ2", "θ4", "ω4", "μ"});
   QString before = readout.text();
   // 120° and 250°: the rocker's angle on either side of 180°, ω4 of both signs.
@@ -84,6 +85,7 @@ TEST_CASE("at a toggle the big read-out gives the angles and a dash for ω", "[u
   MechanismDocument doc;
   doc.reset(linkwright::testing::fourBar({40.0, 30.0, 20.0, 25.0}));  // non-Grashof: it stops at toggles
   BigReadout readout(&doc);
+  readout.show();  // off screen it only catches up when shown
   doc.setCrankAngle(doc.analysis().inputRange.ranges[0].to);
   REQUIRE(doc.poseStatus() == k::PoseStatus::Singular);
   REQUIRE(symbols(readout.entries()) == QStringList{"θ2", "θ4", "ω4", "μ"});
@@ -100,6 +102,7 @@ TEST_CASE("a slider-crank's big read-out gives the piston's position and velocit
   MechanismDocument doc;
   doc.reset(*k::designForExample("ls3-engine"));
   BigReadout readout(&doc);
+  readout.show();  // off screen it only catches up when shown
   doc.setCrankAngle(k::degToRad(60.0));
   REQUIRE(doc.poseStatus() == k::PoseStatus::Ok);
   const auto& e = readout.entries();
@@ -108,4 +111,20 @@ TEST_CASE("a slider-crank's big read-out gives the piston's position and velocit
   const std::size_t c = k::slidercrank::kC.index;  // the piston pin
   CHECK(e[1].value == fixed(p.position[c].x(), 1) + " mm");
   CHECK(e[2].value == fixed(p.velocity[c].x(), 1) + " mm/s");
+}
+
+TEST_CASE("a hidden big read-out computes nothing and catches up when shown", "[ui][classroom][readout]") {
+  MechanismDocument doc;
+  doc.reset(*k::designForExample("thesis-crank-rocker"));
+  BigReadout readout(&doc);
+  readout.show();
+  doc.setCrankAngle(k::degToRad(120.0));
+  const QString at120 = readout.text();
+  readout.hide();
+  doc.reset(*k::designForExample("ls3-engine"));  // another linkage, other quantities
+  doc.setCrankAngle(k::degToRad(60.0));
+  CHECK(readout.text() == at120);  // untouched while hidden
+  readout.show();
+  REQUIRE(symbols(readout.entries()) == QStringList{"θ2", "C x", "C vx", "μ"});
+  CHECK(readout.entries()[0].value == degrees(60.0));
 }

@@ -1,0 +1,74 @@
+#include "ui/readout_label.h"
+
+#include <QEvent>
+#include <QFontMetrics>
+#include <QPainter>
+#include <QRegularExpression>
+#include <QResizeEvent>
+#include <QStyle>
+
+#include <algorithm>
+#include <limits>
+
+namespace linkwright::ui {
+
+ReadoutLabel::ReadoutLabel(QWidget* parent) : QWidget(parent) {}
+
+void ReadoutLabel::setText(const QString& text) {
+  if (text == m_text) return;
+  m_text = text;
+  // Laid out already, the new text needs no more lines than the label holds at this width and
+  // has no word wider than it: nothing around the label moves.
+  const int need = linesHeight(text, width());
+  if (width() <= 0 || need > m_heldHeight || widestWord(text) > width()) {
+    m_heldHeight = std::max(m_heldHeight, need);
+    updateGeometry();
+  }
+  update();
+}
+
+void ReadoutLabel::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  if (event->size().width() != event->oldSize().width()) m_heldHeight = linesHeight(m_text, width());
+}
+
+int ReadoutLabel::linesHeight(const QString& text, int width) const {
+  const int oneLine = fontMetrics().height();
+  if (text.isEmpty()) return oneLine;
+  const QRect room(0, 0, std::max(1, width), std::numeric_limits<int>::max() / 2);
+  return std::max(oneLine, fontMetrics().boundingRect(room, kFlags, text).height());
+}
+
+int ReadoutLabel::widestWord(const QString& text) const {
+  static const QRegularExpression space(QStringLiteral("\\s+"));
+  int widest = 0;
+  for (const QString& word : text.split(space, Qt::SkipEmptyParts))
+    widest = std::max(widest, fontMetrics().horizontalAdvance(word));
+  return widest;
+}
+
+QSize ReadoutLabel::sizeHint() const {
+  if (m_text.isEmpty()) return {0, fontMetrics().height()};
+  return fontMetrics().boundingRect(QRect(), Qt::AlignLeft, m_text).size();
+}
+
+QSize ReadoutLabel::minimumSizeHint() const { return {widestWord(m_text), fontMetrics().height()}; }
+
+int ReadoutLabel::heightForWidth(int width) const {
+  const int need = linesHeight(m_text, width);
+  return width == this->width() ? std::max(need, m_heldHeight) : need;
+}
+
+void ReadoutLabel::paintEvent(QPaintEvent*) {
+  QPainter painter(this);
+  style()->drawItemText(&painter, rect(), kFlags, palette(), isEnabled(), m_text, foregroundRole());
+}
+
+void ReadoutLabel::changeEvent(QEvent* event) {
+  QWidget::changeEvent(event);
+  if (event->type() != QEvent::FontChange && event->type() != QEvent::StyleChange) return;
+  m_heldHeight = linesHeight(m_text, width());  // other lines: what was held means nothing now
+  updateGeometry();
+}
+
+}  // namespace linkwright::ui
