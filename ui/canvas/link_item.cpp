@@ -19,4 +19,9 @@ void LinkItem::setPresentationScale(double factor) {
   setPen(p);
 }
 
+QRectF LinkItem::boundingRect() const {
+  const double half = pen().widthF() / 2.0;
+  return QRectF(line().p1(), line().p2()).normalized().adjusted(-half, -half, half, half);
+}
+
 }  // namespace linkwright::ui

@@ -14,6 +14,9 @@ public:
   void setEnds(const QPointF& first, const QPointF& second) { setLine(QLineF(first, second)); }
   /// Width is the canvas's link width times `factor` (1 normal, 2 presentation).
   void setPresentationScale(double factor);
+  /// The line's box grown by half the pen's width, as QGraphicsLineItem's, without stroking
+  /// the line into a path on every call (the scene asks on every move of a drag).
+  QRectF boundingRect() const override;
 };
 
 }  // namespace linkwright::ui

@@ -9,6 +9,7 @@
 #include "ui/geometry.h"
 
 #include <QMouseEvent>
+#include <QPainter>
 #include <QScrollBar>
 #include <QWheelEvent>
 
@@ -92,6 +93,7 @@ void LinkageView::setPresentationScale(double factor) {
 }
 
 void LinkageView::refreshColors() {
+  m_grid = {};  // painted in the old colours
   m_scene->refreshColors(*m_document);
   viewport()->update();
 }
@@ -235,10 +237,25 @@ void LinkageView::scrollByPixels(const QPointF& delta) {
   m_scrollResidue -= QPointF(dx, dy);
 }
 
-void LinkageView::drawBackground(QPainter* painter, const QRectF& rect) {
-  painter->fillRect(rect, colors().canvasBackground);
-  const QRectF visible = viewportTransform().inverted().mapRect(QRectF(viewport()->rect()));
-  paintGrid(painter, rect, visible, QString::fromStdString(m_document->lengthUnit()), m_presentationScale);
+void LinkageView::drawBackground(QPainter* painter, const QRectF&) {
+  const QString unit = QString::fromStdString(m_document->lengthUnit());
+  const qreal ratio = viewport()->devicePixelRatioF();
+  const QSize pixels = viewport()->size() * ratio;
+  if (m_grid.pixmap.size() != pixels || m_grid.pixmap.devicePixelRatio() != ratio ||
+      m_grid.transform != viewportTransform() || m_grid.unit != unit || m_grid.textScale != m_presentationScale) {
+    m_grid = {QPixmap(pixels), viewportTransform(), unit, m_presentationScale};
+    m_grid.pixmap.setDevicePixelRatio(ratio);
+    QPainter grid(&m_grid.pixmap);
+    grid.setRenderHints(renderHints());
+    grid.setTransform(viewportTransform());
+    const QRectF visible = viewportTransform().inverted().mapRect(QRectF(viewport()->rect()));
+    grid.fillRect(visible, colors().canvasBackground);
+    paintGrid(&grid, visible, visible, unit, m_presentationScale);
+  }
+  painter->save();
+  painter->resetTransform();  // viewport pixels, as the cache
+  painter->drawPixmap(0, 0, m_grid.pixmap);
+  painter->restore();
 }
 
 void LinkageView::drawForeground(QPainter* painter, const QRectF& rect) {

@@ -22,6 +22,8 @@
 
 #include <QColor>
 #include <QGraphicsView>
+#include <QPixmap>
+#include <QTransform>
 
 #include <optional>
 #include <vector>
@@ -121,8 +123,18 @@ private:
   double fitSize() const;
   void finishPick(const QPointF& viewportPos);
 
+  // The grid as last painted, in viewport pixels, and what it was painted for: a drag repaints
+  // the linkage over it without drawing the grid's lines and labels again.
+  struct GridCache {
+    QPixmap pixmap;
+    QTransform transform;
+    QString unit;
+    double textScale = 0.0;
+  };
+
   MechanismDocument* m_document;
   LinkageScene* m_scene;
+  GridCache m_grid;
   double m_presentationScale = 1.0;
   bool m_readOnly = false;
   QRectF m_extraRegion;  // scene units; null when none

@@ -182,3 +182,27 @@ TEST_CASE("QGraphicsView::render, as the image export uses it, draws the labels 
   CHECK(countNear(rendered, ui::colors().velocity.darker(120)) >=
         countNear(shown, ui::colors().velocity.darker(120)) * 9 / 10);
 }
+
+TEST_CASE("the grid painted once and kept follows every zoom, pan, resize and drag", "[canvas][render]") {
+  ShownView v;
+  // What the view shows against what it shows once its kept grid is dropped and painted afresh
+  // (refreshColors drops it, as a change of colours must).
+  const auto keptEqualsFresh = [&v] {
+    const QImage kept = grabView(v);
+    v.view.refreshColors();
+    return kept == grabView(v);
+  };
+  grabView(v);  // paints and keeps the grid
+  CHECK(keptEqualsFresh());
+  v.wheel(v.pixelOf(v.point(fourbar::kB)), 3);
+  CHECK(keptEqualsFresh());
+  const QPointF grabbed = v.view.mapToScene(QPoint(20, 20));
+  v.drag(QPoint(20, 20), QPoint(80, 60));  // the background: a pan
+  REQUIRE(v.view.mapFromScene(grabbed) != QPoint(20, 20));
+  CHECK(keptEqualsFresh());
+  v.view.resize(640, 520);
+  CHECK(keptEqualsFresh());
+  const QPoint c = v.pixelOf(v.point(fourbar::kC));
+  v.drag(c, c + QPoint(6, -4));
+  CHECK(keptEqualsFresh());
+}
