@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 namespace linkwright::ui {
 
@@ -39,26 +40,31 @@ std::optional<QString> MechanismDocument::validate(const k::Design& design) cons
   }
   // Any linkage other than a four-bar has no closed-form range: it must assemble at one sample
   // of its grid at least, and the first failure says why it does not.
-  k::SweepResult grid = sweepGrid(design.mechanism, k::designSweepSpec(design));
+  const k::SweepResult& grid = sweepGrid(design);
+  m_grid.design = design;
+  m_grid.request = m_request;
+  m_grid.validated = true;
   const bool assembles = std::any_of(grid.report.begin(), grid.report.end(),
                                      [](const k::PoseReport& r) { return r.status != k::PoseStatus::NotAssemblable; });
-  const std::optional<std::string> why = grid.firstFailure;
-  m_validatedGrid = ValidatedGrid{design, m_request, std::move(grid)};
   if (assembles) return std::nullopt;
-  return tr("This linkage cannot be assembled at any crank angle: %1.").arg(QString::fromStdString(why.value_or("")));
+  return tr("This linkage cannot be assembled at any crank angle: %1.")
+      .arg(QString::fromStdString(grid.firstFailure.value_or("")));
 }
 
-k::SweepResult MechanismDocument::sweepGrid(const k::Mechanism& mechanism, const k::SweepSpec& spec) const {
+const k::SweepResult& MechanismDocument::sweepGrid(const k::Design& design) const {
   ++m_sweepsRun;
-  // Only validated designs get here (checkDesign passed), so the sweep runs.
-  return k::sweep(mechanism, spec, {false, false, m_request.newton}).value();
+  m_grid.validated = false;
+  // Only checked designs get here (checkDesign passed), so the sweep runs.
+  if (auto error =
+          k::sweepInto(design.mechanism, k::designSweepSpec(design), {false, false, m_request.newton}, m_grid.grid))
+    m_grid.grid = k::SweepResult{};
+  return m_grid.grid;
 }
 
-std::optional<k::SweepResult> MechanismDocument::takeValidatedGrid(const k::Design& design) {
-  std::optional<ValidatedGrid> cached = std::move(m_validatedGrid);
-  m_validatedGrid.reset();
-  if (!cached || cached->design != design || cached->request.newton != m_request.newton) return std::nullopt;
-  return std::move(cached->grid);
+const k::SweepResult* MechanismDocument::takeValidatedGrid(const k::Design& design) {
+  const bool usable =
+      std::exchange(m_grid.validated, false) && m_grid.design == design && m_grid.request.newton == m_request.newton;
+  return usable ? &m_grid.grid : nullptr;
 }
 
 std::optional<QString> MechanismDocument::edit(const k::Design& design, const QString& description,
@@ -234,12 +240,13 @@ void MechanismDocument::rebuild() {
   // whatever the plots' resolution; positions alone decide them. A four-bar whose crank turns
   // fully (closed form) has no gaps, so it skips this sweep; after an edit, the sweep that
   // validated the design a moment ago serves.
-  k::SweepResult grid;
+  static const k::SweepResult kNoGrid;
+  const k::SweepResult* grid = &kNoGrid;
   if (!m_fourBar || !k::fourBarInputRange(m_fourBar->lengths).fullRotation) {
-    if (auto validated = takeValidatedGrid(m_design)) grid = std::move(*validated);
-    else grid = sweepGrid(m_design.mechanism, k::designSweepSpec(m_design));
+    grid = takeValidatedGrid(m_design);
+    if (grid == nullptr) grid = &sweepGrid(m_design);
   }
-  m_analysis = k::analyseDesign(m_design.mechanism, grid);
+  m_analysis = k::analyseDesign(m_design.mechanism, *grid);
   clampMotion();
   solvePoseNow();
   scheduleEstimate();

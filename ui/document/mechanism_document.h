@@ -176,16 +176,19 @@ private:
   std::optional<QualityEstimate> unmeasuredEstimate() const;
   QualityEstimator::Input estimateInput() const;
   void adoptEstimate(const QualityEstimate& estimate);
-  // The design's own grid, positions only: what validation and the analysis read.
-  kinematics::SweepResult sweepGrid(const kinematics::Mechanism& mechanism, const kinematics::SweepSpec& spec) const;
-  // The grid sweep validate() ran for `design`, if it is the last one validated.
-  std::optional<kinematics::SweepResult> takeValidatedGrid(const kinematics::Design& design);
+  // Sweeps `design`'s own grid, positions only (what validation and the analysis read), into
+  // m_grid: a drag sweeps it on every move, into the same memory.
+  const kinematics::SweepResult& sweepGrid(const kinematics::Design& design) const;
+  // The grid validate() swept for `design`, if it is the last one validated; taken once.
+  const kinematics::SweepResult* takeValidatedGrid(const kinematics::Design& design);
 
-  // What validate() swept last, so that applying the design it accepted does not sweep again.
-  struct ValidatedGrid {
+  // The grid last swept, and the design and request it was validated for (`validated` until
+  // the design it accepted is applied), so that applying it does not sweep again.
+  struct DesignGrid {
+    kinematics::SweepResult grid;
     kinematics::Design design;
     kinematics::SolveRequest request;
-    kinematics::SweepResult grid;
+    bool validated = false;
   };
 
   kinematics::Design m_design;
@@ -195,7 +198,7 @@ private:
   kinematics::SweepSpec m_displaySpec;
   double m_sweepMs = 0.0;
   mutable long m_sweepsRun = 0;
-  mutable std::optional<ValidatedGrid> m_validatedGrid;
+  mutable DesignGrid m_grid;
   QPointer<QObject> m_requestOwner;
   RequestSource m_requestSource;
   SamplingQuality m_quality = SamplingQuality::Normal;
