@@ -17,10 +17,13 @@
 // answer the user: issue 20's "never blocks for more than 16 ms".
 //
 //   build/bin/linkwright_gui_benchmark [--moves N] [--example NAME] [--quality draft|normal|precise] [--forces] [--trace]
+//                                      [--census]
 //
 // Defaults: 400 moves, the thesis four-bar, Normal, kinematics only. --forces shows the Forces
 // tab and the force arrows; a linkage without masses gets 1 kg on each link (uniform bars) and gravity, so there is
-// something to solve. --trace prints a line per move. The older form `linkwright_gui_benchmark [moves] [example]` still works.
+// something to solve. --trace prints a line per move. --census prints, per widget class, the
+// time its repaints took and the layout requests it got per move (and skips the worst case,
+// whose whole-window repaint would swamp the count). The older form `linkwright_gui_benchmark [moves] [example]` still works.
 
 #include "ui/canvas/linkage_view.h"
 #include "ui/document/mechanism_document.h"
@@ -41,6 +44,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -49,37 +53,57 @@
 namespace {
 
 // Times every top-level event the GUI thread handles; events sent from inside a handler count
-// with it.
+// with it. With a census it also adds up, per widget class, the time its paint events took and
+// the layout requests it was sent: what a move makes Qt repaint and lay out again.
 class TimedApplication : public QApplication {
 public:
   using QApplication::QApplication;
+  struct WidgetCensus {
+    double paintMs = 0.0;
+    int layouts = 0;
+  };
+
   bool notify(QObject* receiver, QEvent* event) override {
-    if (m_depth++ > 0) {
-      const bool handled = QApplication::notify(receiver, event);
-      --m_depth;
-      return handled;
-    }
+    // Read before: a deferred delete destroys the receiver inside notify.
     const auto type = event->type();
     const char* className = receiver->metaObject()->className();
+    WidgetCensus* counted =
+        m_censusOn && receiver->isWidgetType() && (type == QEvent::Paint || type == QEvent::LayoutRequest)
+            ? &m_census[widgetName(receiver)]
+            : nullptr;
+    const bool top = m_depth++ == 0;
     const auto start = std::chrono::steady_clock::now();
     const bool handled = QApplication::notify(receiver, event);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (ms > m_longest) {
+    --m_depth;
+    if (top && ms > m_longest) {
       m_longest = ms;
       m_longestWhat = std::string(className) + " event " + std::to_string(static_cast<int>(type));
     }
-    --m_depth;
+    if (counted != nullptr && type == QEvent::Paint) counted->paintMs += ms;
+    else if (counted != nullptr) ++counted->layouts;
     return handled;
   }
   /// The longest event since the last call, ms.
   double takeLongest() { return std::exchange(m_longest, 0.0); }
   /// What it was: the receiver's class and the event type (QEvent::Type).
   const std::string& longestWhat() const { return m_longestWhat; }
+  void startCensus() { m_censusOn = true; }
+  const std::map<std::string, WidgetCensus>& census() const { return m_census; }
 
 private:
+  // The widget's class and its parent's: "QLineEdit in QDoubleSpinBox".
+  static std::string widgetName(QObject* widget) {
+    std::string name = widget->metaObject()->className();
+    if (const QObject* parent = widget->parent()) name += std::string(" in ") + parent->metaObject()->className();
+    return name;
+  }
+
   int m_depth = 0;
   double m_longest = 0.0;
   std::string m_longestWhat;
+  bool m_censusOn = false;
+  std::map<std::string, WidgetCensus> m_census;
 };
 
 // CPU time of the calling thread, ms.
@@ -100,7 +124,8 @@ struct Options {
   std::optional<std::string> example;
   linkwright::ui::SamplingQuality quality = linkwright::ui::SamplingQuality::Normal;
   bool forces = false;
-  bool trace = false;  // a line per move
+  bool trace = false;   // a line per move
+  bool census = false;  // what each widget class costs per move: paint time, layout requests
 };
 
 std::optional<Options> parse(int argc, char** argv) {
@@ -111,6 +136,7 @@ std::optional<Options> parse(int argc, char** argv) {
     const bool hasValue = i + 1 < argc;
     if (arg == "--forces") o.forces = true;
     else if (arg == "--trace") o.trace = true;
+    else if (arg == "--census") o.census = true;
     else if (arg == "--moves" && hasValue) o.moves = std::max(10, std::atoi(argv[++i]));
     else if (arg == "--example" && hasValue) o.example = argv[++i];
     else if (arg == "--quality" && hasValue) {
@@ -157,7 +183,7 @@ int main(int argc, char** argv) {
   if (!options) {
     std::fprintf(stderr,
                  "usage: linkwright_gui_benchmark [--moves N] [--example NAME] [--quality draft|normal|precise] "
-                 "[--forces] [--trace]\n");
+                 "[--forces] [--trace] [--census]\n");
     return 2;
   }
   const int moves = options->moves;
@@ -187,6 +213,7 @@ int main(int argc, char** argv) {
   const QPointF start = canvas->mapFromScene(linkwright::ui::toQt(doc->pose().position[dragged]));
   const long sweepsBefore = doc->sweepsRun();
   QTest::mousePress(canvas->viewport(), Qt::LeftButton, Qt::NoModifier, start.toPoint());
+  if (options->census) app.startCensus();
   std::vector<double> total, solve, full, cpu, longest;
   total.reserve(static_cast<std::size_t>(moves));
   for (int i = 0; i < moves; ++i) {
@@ -212,13 +239,22 @@ int main(int argc, char** argv) {
                   i, std::chrono::duration<double, std::milli>(t2 - t0).count(), cpu.back(), longest.back(),
                   longestWhat.c_str(), std::chrono::duration<double, std::milli>(t1 - t0).count(),
                   doc->sweepsRun() - sweeps0);
-    window.repaint();  // worst case: every widget of the window painted again
+    if (!options->census) window.repaint();  // worst case: every widget of the window painted again
     const auto t3 = std::chrono::steady_clock::now();
     solve.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
     total.push_back(std::chrono::duration<double, std::milli>(t2 - t0).count());
     full.push_back(std::chrono::duration<double, std::milli>(t3 - t2).count() + solve.back());
   }
   QTest::mouseRelease(canvas->viewport(), Qt::LeftButton, Qt::NoModifier, start.toPoint());
+  if (options->census) {
+    std::printf("per move, by widget class (paint ms, layout requests):\n");
+    std::vector<std::pair<std::string, TimedApplication::WidgetCensus>> rows(app.census().begin(), app.census().end());
+    std::sort(rows.begin(), rows.end(),
+              [](const auto& a, const auto& b) { return a.second.paintMs > b.second.paintMs; });
+    for (const auto& [name, c] : rows)
+      if (c.paintMs / moves >= 0.005 || c.layouts > 0)
+        std::printf("  %8.3f ms  %6.2f  %s\n", c.paintMs / moves, static_cast<double>(c.layouts) / moves, name.c_str());
+  }
   // Once the drag stops, the quality estimate is measured (in a worker) and the axes settle:
   // the GUI thread must stay responsive meanwhile too.
   app.takeLongest();
@@ -234,8 +270,9 @@ int main(int argc, char** argv) {
               percentile(solve, 0.5), percentile(solve, 0.95));
   std::printf("drag to redraw (handling + Qt's repaint of what changed): median %.2f ms, p95 %.2f ms, max %.2f ms\n",
               percentile(total, 0.5), percentile(total, 0.95), *std::max_element(total.begin(), total.end()));
-  std::printf("worst case (handling + whole window repainted):        median %.2f ms, p95 %.2f ms\n",
-              percentile(full, 0.5), percentile(full, 0.95));
+  if (!options->census)
+    std::printf("worst case (handling + whole window repainted):        median %.2f ms, p95 %.2f ms\n",
+                percentile(full, 0.5), percentile(full, 0.95));
   std::printf("GUI thread's CPU time per move (handling + repaint):   median %.2f ms, p95 %.2f ms, max %.2f ms\n",
               percentile(cpu, 0.5), percentile(cpu, 0.95), *std::max_element(cpu.begin(), cpu.end()));
   std::printf("longest single event of the GUI thread per move:      median %.2f ms, p95 %.2f ms, max %.2f ms\n",
