@@ -56,6 +56,7 @@
 #include <QProgressDialog>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QSpacerItem>
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTabWidget>
@@ -85,13 +86,20 @@ MainWindow::MainWindow(QWidget* parent)
   setObjectName("MainWindow");
   m_normalFont = font();
   auto* side = new QWidget(this);
+  // When a panel grows a row (a drag into a rocking crank adds "Not assembled"), the column
+  // grows downward: only what moved is repainted, not every panel above it.
+  side->setAttribute(Qt::WA_StaticContents);
   auto* sideLayout = new QVBoxLayout(side);
   sideLayout->setContentsMargins(0, 0, 0, 0);
   sideLayout->addWidget(m_dimensions);
   sideLayout->addWidget(m_drive);
   sideLayout->addWidget(m_motion);
   sideLayout->addWidget(m_analysis);
-  sideLayout->addStretch();
+  // Room at the bottom that a growing panel takes first: the column is laid out in its old
+  // height before the scroll area makes it taller, and without this every panel would be
+  // squeezed for that pass and moved back (the whole column repainted twice).
+  constexpr int kGrowthRoomPx = 80;
+  sideLayout->addSpacerItem(new QSpacerItem(0, kGrowthRoomPx, QSizePolicy::Minimum, QSizePolicy::Expanding));
   auto* scroll = new QScrollArea(this);
   m_sidePanel = scroll;
   scroll->setWidget(side);
