@@ -251,9 +251,10 @@ int main(int argc, char** argv) {
     std::vector<std::pair<std::string, TimedApplication::WidgetCensus>> rows(app.census().begin(), app.census().end());
     std::sort(rows.begin(), rows.end(),
               [](const auto& a, const auto& b) { return a.second.paintMs > b.second.paintMs; });
-    for (const auto& [name, c] : rows)
+    for (const auto& [widget, c] : rows)
       if (c.paintMs / moves >= 0.005 || c.layouts > 0)
-        std::printf("  %8.3f ms  %6.2f  %s\n", c.paintMs / moves, static_cast<double>(c.layouts) / moves, name.c_str());
+        std::printf("  %8.3f ms  %6.2f  %s\n", c.paintMs / moves, static_cast<double>(c.layouts) / moves,
+                    widget.c_str());
   }
   // Once the drag stops, the quality estimate is measured (in a worker) and the axes settle:
   // the GUI thread must stay responsive meanwhile too.
