@@ -2,8 +2,8 @@
 // poses and two circle points, solved by the pose solver at the reported crank angles, puts
 // the coupler point on every pose and turns the coupler by the poses' angles, to 1e-9 of the
 // link lengths; the design is recognised as a four-bar with a tilted frame; defects and bad
-// poses are reported; Norton's two-position Example 5-1, as an independent script solves it,
-// comes out to that script's digits.
+// poses are reported; Norton's three-position Example 5-2 comes out to its printed link lengths,
+// and his two-position Example 5-1, as an independent script solves it, to that script's digits.
 
 #include "kinematics/synthesis/motion_generation.h"
 
@@ -17,6 +17,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <complex>
+#include <tuple>
 
 using namespace linkwright::kinematics;
 using linkwright::test::angleDifference;
@@ -165,4 +167,51 @@ TEST_CASE("Published example: two positions, Norton Example 5-1 (as solved in or
   REQUIRE(second.ok());
   const double rockerTurn = second->linkAngle[fourbar::kRocker.index] - first->linkAngle[fourbar::kRocker.index];
   CHECK(angleDifference(rockerTurn, gamma2) == within(0.0, 1e-9));
+}
+
+TEST_CASE("Published example: three positions, Norton Example 5-2", "[synthesis][motion][published]") {
+  // R. L. Norton, "Design of Machinery" (McGraw-Hill, 2000), Example 5-2 (three-position
+  // motion synthesis by the analytical method). Its data and printed link lengths, as quoted in
+  // M. Samarth, "Kinematic synthesis and visualization of a flap actuation mechanism" (BITS
+  // Pilani / CSIR-NAL report, 2025; github.com/shoutingfish123/aircraft-flap-mechanism-synthesis,
+  // docs/ProjectReport.pdf, Fig. 2 and Table 1): P21 = 2.798 at -31.19 deg, P31 = 3.919 at
+  // -16.34 deg, coupler rotations a2 = -45 deg, a3 = 9.3 deg; free choices: crank rotations
+  // b2 = 342.3, b3 = 324.8 deg, rocker rotations g2 = 30.9, g3 = 80.6 deg; printed lengths:
+  // crank W = 6.832, coupler V = 1.399, rocker U = 3.2 (the report's precision).
+  const auto polar = [](double length, double deg) { return std::polar(length, degToRad(deg)); };
+  const std::complex<double> p21 = polar(2.798, -31.19), p31 = polar(3.919, -16.34);
+  const double a2 = degToRad(-45.0), a3 = degToRad(9.3);
+  const double b2 = degToRad(342.3), b3 = degToRad(324.8), g2 = degToRad(30.9), g3 = degToRad(80.6);
+  // The book's free choices are the rotations; Linkwright's are the circle points. Norton's
+  // standard-form dyad equations (e^{i r_j} - 1) W + (e^{i a_j} - 1) Z = P_j1, j = 2, 3, give the
+  // dyad's vector Z from its moving pivot to P, so the circle point at pose 1 is P1 - Z.
+  const auto circlePoint = [&](double r2, double r3) {
+    const std::complex<double> i{0.0, 1.0};
+    const std::complex<double> m11 = std::exp(i * r2) - 1.0, m12 = std::exp(i * a2) - 1.0;
+    const std::complex<double> m21 = std::exp(i * r3) - 1.0, m22 = std::exp(i * a3) - 1.0;
+    const std::complex<double> z = (m11 * p31 - m21 * p21) / (m11 * m22 - m12 * m21);  // Cramer
+    return Eigen::Vector2d(-z.real(), -z.imag());
+  };
+  const std::vector<CouplerPose> poses{
+      {{0.0, 0.0}, 0.0}, {{p21.real(), p21.imag()}, a2}, {{p31.real(), p31.imag()}, a3}};
+  const auto s = synthesiseMotion3(poses, {circlePoint(b2, b3), circlePoint(g2, g3)}, DefectBounds{}, {false, "in"});
+  REQUIRE(s.ok());
+  // Half a unit in the last printed digit.
+  CHECK(s->lengths.crank == within(6.832, 0.0005));
+  CHECK(s->lengths.coupler == within(1.399, 0.0005));
+  CHECK(s->lengths.rocker == within(3.2, 0.05));
+  // Checked by the pose solver: P on all three poses, the coupler turned a2 and a3, and the crank
+  // and the rocker turned by the example's free choices.
+  checkPassesThrough(*s, poses);
+  const Mechanism& m = s->candidate.design.mechanism;
+  const auto first = solvePose(m, {s->crankAngles[0], 0.0, 0.0}, {false, false});
+  REQUIRE(first.ok());
+  for (const auto& [j, beta, gamma] : {std::tuple{1, b2, g2}, std::tuple{2, b3, g3}}) {
+    CAPTURE(j);
+    const auto pose = solvePose(m, {s->crankAngles[j], 0.0, 0.0}, {false, false});
+    REQUIRE(pose.ok());
+    CHECK(angleDifference(s->crankAngles[j] - s->crankAngles[0], beta) == within(0.0, 1e-9));
+    const double rockerTurn = pose->linkAngle[fourbar::kRocker.index] - first->linkAngle[fourbar::kRocker.index];
+    CHECK(angleDifference(rockerTurn, gamma) == within(0.0, 1e-9));
+  }
 }
