@@ -1,7 +1,7 @@
 // A drag of a joint changes numbers, not the window's shape: no widget is laid out again on
 // every move (Qt re-lays out every layout up to the main window when one child asks), and a
 // read-out label asks only when its new text needs another line. See ui/quiet_update.h and
-// ui/readout_label.h.
+// ui/readout_label.h. Nor does the first hint in the status bar.
 
 #include "ui/canvas/linkage_view.h"
 #include "ui/document/mechanism_document.h"
@@ -15,6 +15,7 @@
 
 #include <QApplication>
 #include <QFormLayout>
+#include <QStatusBar>
 #include <QTest>
 
 #include <cmath>
@@ -87,6 +88,22 @@ TEST_CASE("dragging a joint lays out no widget on every move", "[ui][window][dra
   // nothing asks on every move.
   CAPTURE(requests.receivers.join(", ").toStdString());
   CHECK(movesLaidOut <= 1);
+}
+
+TEST_CASE("the first hover hint in the status bar moves no widget", "[ui][window][drag]") {
+  // QMainWindow makes its status bar on the first message; it would then take its height from
+  // the content, and every widget would move and be repainted as a drag begins.
+  MainWindow window;
+  window.resize(1400, 880);
+  window.show();
+  REQUIRE(QTest::qWaitForWindowExposed(&window));
+  settle();
+  QWidget* central = window.centralWidget();
+  const QRect before = central->geometry();
+  emit window.canvas()->statusMessage(QStringLiteral("Drag C: the coupler and rocker follow"));
+  settle();
+  CHECK(central->geometry() == before);
+  CHECK(window.statusBar()->currentMessage() == QStringLiteral("Drag C: the coupler and rocker follow"));
 }
 
 TEST_CASE("a read-out label asks for a new layout only when its text needs one", "[ui][readout]") {
