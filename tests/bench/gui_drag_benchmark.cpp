@@ -19,16 +19,20 @@
 //   build/bin/linkwright_gui_benchmark [--moves N] [--example NAME] [--quality draft|normal|precise] [--forces] [--trace]
 //                                      [--census]
 //
-// Defaults: 400 moves, the thesis four-bar, Normal, kinematics only. --forces shows the Forces
-// tab and the force arrows; a linkage without masses gets 1 kg on each link (uniform bars) and gravity, so there is
+// Defaults: 400 moves, the thesis four-bar, Normal, kinematics only. The drag starts once the
+// window has settled: the plots have reported their width (which sets the samples shown) and
+// the first quality estimate has landed. --forces shows the Forces tab and the force arrows; a
+// linkage without masses gets 1 kg on each link (uniform bars) and gravity, so there is
 // something to solve. --trace prints a line per move. --census prints, per widget class, the
 // time its repaints took and the layout requests it got per move (and skips the worst case,
-// whose whole-window repaint would swamp the count). The older form `linkwright_gui_benchmark [moves] [example]` still works.
+// whose whole-window repaint would swamp the count); with --trace, also for each move. The
+// older form `linkwright_gui_benchmark [moves] [example]` still works.
 
 #include "ui/canvas/linkage_view.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/geometry.h"
 #include "ui/main_window.h"
+#include "ui/plots/plot_panel.h"
 #include "ui/settings.h"
 
 #include "kinematics/design/design.h"
@@ -90,6 +94,19 @@ public:
   const std::string& longestWhat() const { return m_longestWhat; }
   void startCensus() { m_censusOn = true; }
   const std::map<std::string, WidgetCensus>& census() const { return m_census; }
+  /// One line: the classes that took 0.3 ms or more of paint, or got a layout request, since
+  /// the last call (a move, with --trace --census).
+  void printCensusSinceLast() {
+    std::printf("  repainted:");
+    for (const auto& [widget, c] : m_census) {
+      const WidgetCensus& before = m_printed[widget];
+      if (c.paintMs - before.paintMs >= 0.3 || c.layouts > before.layouts)
+        std::printf(" [%s %.2f ms, %d layouts]", widget.c_str(), c.paintMs - before.paintMs,
+                    c.layouts - before.layouts);
+    }
+    std::printf("\n");
+    m_printed = m_census;
+  }
 
 private:
   // The widget's class and its parent's: "QLineEdit in QDoubleSpinBox".
@@ -104,6 +121,7 @@ private:
   std::string m_longestWhat;
   bool m_censusOn = false;
   std::map<std::string, WidgetCensus> m_census;
+  std::map<std::string, WidgetCensus> m_printed;  // the census at the last printCensusSinceLast
 };
 
 // CPU time of the calling thread, ms.
@@ -203,12 +221,21 @@ int main(int argc, char** argv) {
   doc->reset(*design);
   doc->setQuality(options->quality);
   if (options->forces) window.showForces();  // the Forces tab and the canvas's force arrows
+  // The drag starts once the window has settled, as a user's does: the plots have told the
+  // document their width (150 ms after the last resize; the samples shown follow it) and the
+  // first quality estimate has landed (a worker, a few hundred ms after loading).
+  window.plots()->reportPlotWidth();
+  QApplication::processEvents();
+  if (!QTest::qWaitFor([&] { return !doc->qualityEstimatePending(); }, 60000))
+    std::printf("the first quality estimate did not land within 60 s\n");
   QApplication::processEvents();
   const std::size_t dragged = doc->fourBar() ? doc->fourBar()->c.index : doc->mechanism().points.size() - 1;
   const std::string name = options->example.value_or("thesis-crank-rocker");
-  std::printf("%s, dragging %s, %s, %s: %zu samples shown; plots and canvas redrawn after every move\n", name.c_str(),
-              doc->mechanism().points[dragged].name.c_str(), qualityName(options->quality),
-              options->forces ? "forces" : "kinematics", doc->sweep().size());
+  std::printf(
+      "%s, dragging %s, %s, %s: %zu samples shown; plots and canvas redrawn after every move; canvas at "
+      "%.3f px per length unit\n",
+      name.c_str(), doc->mechanism().points[dragged].name.c_str(), qualityName(options->quality),
+      options->forces ? "forces" : "kinematics", doc->sweep().size(), canvas->transform().m11());
 
   const QPointF start = canvas->mapFromScene(linkwright::ui::toQt(doc->pose().position[dragged]));
   const long sweepsBefore = doc->sweepsRun();
@@ -239,6 +266,7 @@ int main(int argc, char** argv) {
                   i, std::chrono::duration<double, std::milli>(t2 - t0).count(), cpu.back(), longest.back(),
                   longestWhat.c_str(), std::chrono::duration<double, std::milli>(t1 - t0).count(),
                   doc->sweepsRun() - sweeps0);
+    if (options->trace && options->census) app.printCensusSinceLast();
     if (!options->census) window.repaint();  // worst case: every widget of the window painted again
     const auto t3 = std::chrono::steady_clock::now();
     solve.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
