@@ -17,16 +17,18 @@
 // answer the user: issue 20's "never blocks for more than 16 ms".
 //
 //   build/bin/linkwright_gui_benchmark [--moves N] [--example NAME] [--quality draft|normal|precise] [--forces] [--trace]
-//                                      [--census]
+//                                      [--census] [--wander F]
 //
 // Defaults: 400 moves, the thesis four-bar, Normal, kinematics only. The drag starts once the
 // window has settled: the plots have reported their width (which sets the samples shown) and
 // the first quality estimate has landed. --forces shows the Forces tab and the force arrows; a
 // linkage without masses gets 1 kg on each link (uniform bars) and gravity, so there is
-// something to solve. --trace prints a line per move. --census prints, per widget class, the
-// time its repaints took and the layout requests it got per move (and skips the worst case,
-// whose whole-window repaint would swamp the count); with --trace, also for each move. The
-// older form `linkwright_gui_benchmark [moves] [example]` still works.
+// something to solve. --wander scales the hand's wander around the joint (±12 px across, ±8 px
+// up and down): 1.3 takes the Watt II into a rocking crank and back twice. --trace prints a
+// line per move. --census prints, per widget class, the time its repaints took and the layout
+// requests it got per move (and skips the worst case, whose whole-window repaint would swamp
+// the count); with --trace, also for each move. The older form
+// `linkwright_gui_benchmark [moves] [example]` still works.
 
 #include "ui/canvas/linkage_view.h"
 #include "ui/document/mechanism_document.h"
@@ -143,6 +145,7 @@ struct Options {
   linkwright::ui::SamplingQuality quality = linkwright::ui::SamplingQuality::Normal;
   bool forces = false;
   bool trace = false;   // a line per move
+  double wander = 1.0;  // times the hand's wander of ±12 px across, ±8 px up and down
   bool census = false;  // what each widget class costs per move: paint time, layout requests
 };
 
@@ -155,6 +158,7 @@ std::optional<Options> parse(int argc, char** argv) {
     if (arg == "--forces") o.forces = true;
     else if (arg == "--trace") o.trace = true;
     else if (arg == "--census") o.census = true;
+    else if (arg == "--wander" && hasValue) o.wander = std::clamp(std::atof(argv[++i]), 0.1, 10.0);
     else if (arg == "--moves" && hasValue) o.moves = std::max(10, std::atoi(argv[++i]));
     else if (arg == "--example" && hasValue) o.example = argv[++i];
     else if (arg == "--quality" && hasValue) {
@@ -201,7 +205,7 @@ int main(int argc, char** argv) {
   if (!options) {
     std::fprintf(stderr,
                  "usage: linkwright_gui_benchmark [--moves N] [--example NAME] [--quality draft|normal|precise] "
-                 "[--forces] [--trace] [--census]\n");
+                 "[--forces] [--trace] [--census] [--wander F]\n");
     return 2;
   }
   const int moves = options->moves;
@@ -233,9 +237,9 @@ int main(int argc, char** argv) {
   const std::string name = options->example.value_or("thesis-crank-rocker");
   std::printf(
       "%s, dragging %s, %s, %s: %zu samples shown; plots and canvas redrawn after every move; canvas at "
-      "%.3f px per length unit\n",
+      "%.3f px per length unit; wander x%.2f\n",
       name.c_str(), doc->mechanism().points[dragged].name.c_str(), qualityName(options->quality),
-      options->forces ? "forces" : "kinematics", doc->sweep().size(), canvas->transform().m11());
+      options->forces ? "forces" : "kinematics", doc->sweep().size(), canvas->transform().m11(), options->wander);
 
   const QPointF start = canvas->mapFromScene(linkwright::ui::toQt(doc->pose().position[dragged]));
   const long sweepsBefore = doc->sweepsRun();
@@ -245,7 +249,7 @@ int main(int argc, char** argv) {
   total.reserve(static_cast<std::size_t>(moves));
   for (int i = 0; i < moves; ++i) {
     // Wander a few pixels around the start, as a hand does, staying assemblable.
-    const QPoint to = (start + QPointF(12.0 * std::sin(i * 0.1), 8.0 * std::cos(i * 0.13))).toPoint();
+    const QPoint to = (start + options->wander * QPointF(12.0 * std::sin(i * 0.1), 8.0 * std::cos(i * 0.13))).toPoint();
     app.takeLongest();
     const long sweeps0 = doc->sweepsRun();
     const double cpu0 = threadCpuMs();
