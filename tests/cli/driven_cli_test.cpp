@@ -158,7 +158,7 @@ TEST_CASE("a cylinder follows a measured s(t) table in metres", "[cli][driven][l
   CHECK(columns.at("time_s") == std::vector<double>{0.0, 1.0, 2.0, 3.0});
 }
 
-TEST_CASE("a four-bar driven from its rocker is analysed in the rocker's angle; a toggle names its links",
+TEST_CASE("a four-bar driven from its rocker is analysed in the rocker's angle, a toggle names its links",
           "[cli][driven]") {
   // Frame 40, crank 10, coupler 40, rocker 30: with the rocker at 90° C is (40, 30), 50 from
   // O2, so crank and coupler are stretched in line: the toggle of the rocker-driven linkage.

@@ -35,7 +35,7 @@ void writeText(const QString& path, const QByteArray& text) {
 
 }  // namespace
 
-TEST_CASE("an edit changes the design, the analysis and the sweep; undo restores them exactly", "[ui][document]") {
+TEST_CASE("an edit changes the design, the analysis and the sweep, undo restores them exactly", "[ui][document]") {
   MechanismDocument doc;
   const kinematics::Design before = doc.design();
   QSignalSpy spy(&doc, &MechanismDocument::changed);

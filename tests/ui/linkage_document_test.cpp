@@ -102,7 +102,7 @@ TEST_CASE("a lock between two samples splits the range the crank can turn throug
   CHECK(k::radToDeg(range.ranges[1].to) == Approx(360.0));
 }
 
-TEST_CASE("a shaper shows its quick return; a Whitworth too", "[ui][linkage][analysis]") {
+TEST_CASE("a shaper shows its quick return, a Whitworth too", "[ui][linkage][analysis]") {
   MechanismDocument doc;
   ui::AnalysisPanel panel(&doc);
   doc.reset(example("shaper"));

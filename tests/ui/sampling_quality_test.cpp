@@ -34,7 +34,7 @@ TEST_CASE("the default width gives Normal the seeds' half-degree grid", "[ui][sa
   CHECK(displaySampleCount(SamplingQuality::Normal, kDefaultDisplayWidth, 360.0) == 721);
 }
 
-TEST_CASE("qualities round-trip through their settings keys; anything else reads as Normal", "[ui][sampling]") {
+TEST_CASE("qualities round-trip through their settings keys, anything else reads as Normal", "[ui][sampling]") {
   for (const SamplingQuality q : {SamplingQuality::Draft, SamplingQuality::Normal, SamplingQuality::Precise})
     CHECK(qualityFromKey(qualityKey(q)) == q);
   CHECK(qualityFromKey(QStringLiteral("ultra")) == SamplingQuality::Normal);

@@ -80,7 +80,7 @@ TEST_CASE("slider-crank ratios equal v/ω2 from the solver", "[advantage_sweep]"
   }
 }
 
-TEST_CASE("samples that do not assemble are undefined; a toggle is infinite", "[advantage_sweep]") {
+TEST_CASE("samples that do not assemble are undefined, a toggle is infinite", "[advantage_sweep]") {
   // Non-Grashof: the crank of 60/40/50/45 cannot pass the frame line's far side.
   const Mechanism m = makeFourBar({60.0, 40.0, 50.0, 45.0}, Branch::Open).value();
   const SweepResult s = sweepOf(m, 181);

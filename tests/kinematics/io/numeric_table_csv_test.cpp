@@ -23,7 +23,7 @@ TEST_CASE("a comma-separated table with one header row", "[numeric_table]") {
   CHECK(table->rounding[1] == Approx(0.0005));  // the coarsest cell, -0.748
 }
 
-TEST_CASE("European Excel: ';' with a decimal comma, and quoted header cells", "[numeric_table]") {
+TEST_CASE("European Excel: semicolon with a decimal comma, and quoted header cells", "[numeric_table]") {
   const auto table = readNumericTable("\"Angle, deg\";\"omega; rad/s\"\n0;-0,75\n30;0,20\n");
   REQUIRE(table);
   CHECK(table->delimiter == ';');

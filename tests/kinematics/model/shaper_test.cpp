@@ -113,7 +113,7 @@ TEST_CASE("the shaper's time ratio and stroke come out exactly", "[analysis][qui
   CHECK(q->stroke == Approx(x.maximum.value - x.minimum.value).epsilon(1e-9));
 }
 
-TEST_CASE("a Whitworth shaper turns its slotted link fully; a pivot on the crank circle is refused",
+TEST_CASE("a Whitworth shaper turns its slotted link fully, a pivot on the crank circle is refused",
           "[model][shaper][errors]") {
   ShaperGeometry whitworth = kSeedShaper;
   whitworth.rockerPivot = {0.0, -40.0};  // inside the crank circle

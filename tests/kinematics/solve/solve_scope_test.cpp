@@ -64,7 +64,7 @@ TEST_CASE("a six-bar's base rocker needs only the base four-bar", "[sweep][scope
   CHECK(s.reportLink == rockerOnly);
 }
 
-TEST_CASE("a point on a link needs the link's angle; the last dyad needs everything", "[sweep][scope]") {
+TEST_CASE("a point on a link needs the link's angle, the last dyad needs everything", "[sweep][scope]") {
   const Mechanism m = wattII();
   const SolveScope p = scopeOf(m, Selection{std::vector<PointId>{PointId{4}}, std::vector<LinkId>{}});
   CHECK(p.solvePoint == Marks{1, 1, 1, 1, 1, 0, 0});
@@ -97,7 +97,7 @@ TEST_CASE("a selection naming an id the mechanism lacks is refused, naming the e
   CHECK(s.error().field == "only.links[0]");
 }
 
-TEST_CASE("selected columns equal the full sweep's exactly; the others are empty", "[sweep][scope]") {
+TEST_CASE("selected columns equal the full sweep's exactly, the others are empty", "[sweep][scope]") {
   const Mechanism m = wattII();
   const SweepSpec spec{0.0, 2.0 * kPi, 721, 2.0 * kPi, 3.0};
   const auto full = sweep(m, spec);

@@ -144,7 +144,7 @@ TEST_CASE("dragging a linkage's joint with the mouse goes through dragPoint and 
   CHECK(v.document.design() == before);
 }
 
-TEST_CASE("a PRP pin has no handle; its two blocks sit on their guides", "[canvas][linkage]") {
+TEST_CASE("a PRP pin has no handle, its two blocks sit on their guides", "[canvas][linkage]") {
   ShownView v(example("ls3-engine"));
   const auto request = k::suggestDyad(v.document.mechanism(), v.document.crankAngle(), k::DyadKind::Prp);
   const auto attached = k::attachToDesign(v.document.design(), request);

@@ -130,7 +130,7 @@ TEST_CASE("a physical link keeps its colour in every inversion", "[classroom][in
   }
 }
 
-TEST_CASE("one step moves every inversion's crank; play and pause drive all four", "[classroom][inversions]") {
+TEST_CASE("one step moves every inversion's crank, play and pause drive all four", "[classroom][inversions]") {
   MainWindow window;
   window.newDocument(*k::designForExample("thesis-crank-rocker"));
   InversionsWindow* inversions = window.showInversions();

@@ -149,7 +149,7 @@ TEST_CASE("Step draws the arrows one at a time in the order a student draws them
   CHECK(panel.view()->drawnVectors().size() == all.size());
 }
 
-TEST_CASE("a chosen round scale stays while the crank turns; each polygon keeps its own", "[ui][classroom]") {
+TEST_CASE("a chosen round scale stays while the crank turns, each polygon keeps its own", "[ui][classroom]") {
   MechanismDocument doc;
   doc.reset(*k::designForExample("thesis-crank-rocker"));
   PolygonPanel panel(&doc);

@@ -74,7 +74,7 @@ TEST_CASE("a negative mass is refused with the core's message and the design is 
   CHECK(panel.linkTable()->item(1, 1)->text() == "0.6");  // snapped back
 }
 
-TEST_CASE("clearing an inertia returns it to the core's default; gravity switches on downward", "[forces][panel]") {
+TEST_CASE("clearing an inertia returns it to the core's default, gravity switches on downward", "[forces][panel]") {
   MechanismDocument doc;
   doc.reset(funsho());
   DynamicsPanel panel(&doc);

@@ -154,7 +154,7 @@ TEST_CASE("a cycle solved in a worker thread equals the one solved in the GUI th
   CHECK(inWorker.cycleForces()->size() == doc.sweep().size());
 }
 
-TEST_CASE("a newer edit cancels the worker's older solve; the last cycle stays shown meanwhile",
+TEST_CASE("a newer edit cancels the worker's older solve, the last cycle stays shown meanwhile",
           "[forces][results][worker]") {
   MechanismDocument doc;
   doc.reset(funsho());

@@ -71,7 +71,7 @@ TEST_CASE("a slider-crank plots its rod and its piston's stroke, velocity and ac
   CHECK(plotted(panel, {ColumnQuantity::LinkOmega, 1}).size() == static_cast<qsizetype>(s.size()));
 }
 
-TEST_CASE("a six-bar plots links 3 to 6 and both transmission angles; back to a four-bar restores its curves",
+TEST_CASE("a six-bar plots links 3 to 6 and both transmission angles, back to a four-bar restores its curves",
           "[plot_panel][linkage]") {
   MechanismDocument doc;
   PlotPanel panel(&doc);
@@ -79,7 +79,8 @@ TEST_CASE("a six-bar plots links 3 to 6 and both transmission angles; back to a 
   CHECK(keys(panel.curves()) == QStringList{"coupler_angle", "rocker_angle", "link5_angle", "link6_angle",
                                             "transmission_angle_C", "transmission_angle_E", "coupler_omega",
                                             "rocker_omega", "link5_omega", "link6_omega", "coupler_alpha",
-                                            "rocker_alpha", "link5_alpha", "link6_alpha"});
+                                            "rocker_alpha", "link5_alpha", "link6_alpha", "velocity_ratio",
+                                            "mechanical_advantage"});
   CHECK(panel.curve({ColumnQuantity::LinkAngle, 3})->name == QStringLiteral("link5 θ5"));
   CHECK(panel.curve({ColumnQuantity::TransmissionAngle, 6})->name == QStringLiteral("μ at E"));
   for (const auto kind : {QuantityKind::Position, QuantityKind::Velocity, QuantityKind::Acceleration})

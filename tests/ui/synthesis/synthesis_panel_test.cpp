@@ -247,7 +247,7 @@ TEST_CASE("the preview draws the chosen candidate while the panel is shown", "[u
   CHECK_FALSE(preview->isVisible());
 }
 
-TEST_CASE("a candidate off screen brings the view to it; one in view leaves the zoom alone", "[ui][synthesis]") {
+TEST_CASE("a candidate off screen brings the view to it, one in view leaves the zoom alone", "[ui][synthesis]") {
   ui::test::ShownView shown;
   ui::SynthesisPanel panel(&shown.document, &shown.view);
   shown.view.zoomBy(40.0);  // the user looks closely at one joint of the thesis four-bar
