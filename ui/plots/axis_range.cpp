@@ -62,6 +62,17 @@ bool keepsRange(const AxisRange& shown, double lo, double hi) {
          hi - lo >= kLeastFill * span;
 }
 
+AxisRange refittedRange(double lo, double hi, DataFlow flow, int maxTicks) {
+  const AxisRange tight = niceValueRange(lo, hi, maxTicks);
+  if (flow == DataFlow::Settled || !(hi > lo)) return tight;
+  // Rounding out to a coarser step can leave the data less than half the axis: then less room.
+  for (const double room : {0.2, 0.1, 0.05}) {
+    const AxisRange roomy = niceValueRange(lo - room * (hi - lo), hi + room * (hi - lo), maxTicks);
+    if (keepsRange(roomy, lo, hi)) return roomy;
+  }
+  return tight;
+}
+
 AxisRange crankAxisRange(double fromDeg, double toDeg, AngleUnit unit) {
   const double spanDeg = std::max(std::abs(toDeg - fromDeg), 1e-9);
   double stepDeg = 0.0;

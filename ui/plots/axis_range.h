@@ -38,6 +38,18 @@ AxisRange niceValueRange(double lo, double hi, int maxTicks = 6);
 /// again; the plots return to niceValueRange once the data settle.
 bool keepsRange(const AxisRange& shown, double lo, double hi);
 
+/// Whether the data a value axis shows have settled or are still changing frame after frame
+/// (a drag: a new sweep came within PlotPanel::kDataSettleMs of the last).
+enum class DataFlow { Settled, Changing };
+
+/// The range an axis takes for data spanning [lo, hi] that it no longer keeps (keepsRange).
+/// Settled data get niceValueRange. Data that keep changing get room: the data widened by a
+/// fifth of their span each side (or a tenth, or a twentieth, where rounding out to a coarser
+/// step would leave the data less than half the axis, which keepsRange would not keep), so
+/// the next frames of a drag fit it too and the chart is not laid out and repainted whole on
+/// each. The panels fit the axis tightly again once the data settle.
+AxisRange refittedRange(double lo, double hi, DataFlow flow, int maxTicks = 6);
+
 /// The span of `values` worth showing: their full range, unless a few samples spike far out
 /// (rates next to a toggle position grow without bound), in which case the span of the bulk
 /// (by default the 5th to 95th percentile: `tail` left out at each end) widened by half its

@@ -42,7 +42,8 @@ void ForceChartView::setCurves(const std::vector<Curve>& curves) {
   m_cursor->raise();
 }
 
-bool ForceChartView::setData(const std::vector<SeriesRuns>& runs, const QString& valueTitle, const PlotXAxis& x) {
+bool ForceChartView::setData(const std::vector<SeriesRuns>& runs, const QString& valueTitle, const PlotXAxis& x,
+                             DataFlow flow) {
   // The axes first: the curves are simplified for the scale they set (segmented_line.h).
   m_values.clear();
   for (const SeriesRuns& r : runs)
@@ -54,7 +55,7 @@ bool ForceChartView::setData(const std::vector<SeriesRuns>& runs, const QString&
   std::tie(m_lo, m_hi) = m_values.empty() ? std::pair<double, double>{kInf, -kInf} : robustSpan(m_values);
   if (m_fromZero && !m_values.empty()) m_lo = std::min(m_lo, 0.0);
   // While the data change, the axis stays where it still serves (keepsRange).
-  if (!m_yShown || !keepsRange(*m_yShown, m_lo, m_hi)) m_yShown = fittedRange();
+  if (!m_yShown || !keepsRange(*m_yShown, m_lo, m_hi)) m_yShown = fittedRange(flow);
   const AxisRange y = *m_yShown;
   applyAxisRange(m_yAxis, y);
   if (m_yAxis->titleText() != valueTitle) m_yAxis->setTitleText(valueTitle);
@@ -71,8 +72,8 @@ bool ForceChartView::setData(const std::vector<SeriesRuns>& runs, const QString&
   return inputs.replace(m_layoutInputs);
 }
 
-AxisRange ForceChartView::fittedRange() const {
-  AxisRange y = niceValueRange(m_lo, m_hi);
+AxisRange ForceChartView::fittedRange(DataFlow flow) const {
+  AxisRange y = refittedRange(m_lo, m_hi, flow);
   if (m_fromZero && m_lo >= 0.0 && y.min < 0.0) {
     // Magnitudes: the axis starts at 0, not at the margin below it.
     y.min = 0.0;
@@ -82,7 +83,7 @@ AxisRange ForceChartView::fittedRange() const {
 }
 
 bool ForceChartView::settleValueRange() {
-  const AxisRange fitted = fittedRange();
+  const AxisRange fitted = fittedRange(DataFlow::Settled);
   if (m_yShown == fitted) return false;
   m_yShown = fitted;
   applyAxisRange(m_yAxis, fitted);

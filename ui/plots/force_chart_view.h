@@ -40,8 +40,10 @@ public:
   void setCurves(const std::vector<Curve>& curves);
   /// Replaces the lines with `runs` (one per curve, in order; x on `x`'s axis, y in the value
   /// unit) and resets the axes: x to `x`'s range and title, y around the values. Returns
-  /// whether what lays the chart out changed (quantity_chart_view.h).
-  bool setData(const std::vector<SeriesRuns>& runs, const QString& valueTitle, const PlotXAxis& x);
+  /// whether what lays the chart out changed (quantity_chart_view.h). A value axis the data
+  /// have left is fitted again with room while they keep changing (refittedRange).
+  bool setData(const std::vector<SeriesRuns>& runs, const QString& valueTitle, const PlotXAxis& x,
+               DataFlow flow = DataFlow::Settled);
   /// Fits the value axis to the data once they have settled (setData keeps it while it still
   /// serves); returns whether it changed.
   bool settleValueRange();
@@ -74,7 +76,7 @@ private:
   double m_lo = 0.0, m_hi = 0.0;      // the data's span of the last setData
   std::optional<AxisRange> m_yShown;  // the value axis shown
 
-  AxisRange fittedRange() const;  // the value axis fitted to [m_lo, m_hi]
+  AxisRange fittedRange(DataFlow flow) const;  // the value axis fitted to [m_lo, m_hi]
 };
 
 }  // namespace linkwright::ui

@@ -137,7 +137,9 @@ void ForcePlotPanel::refreshAll() {
   if (m_torque->chart()->title() != drive.title) m_torque->chart()->setTitle(drive.title);
   m_runs.resize(drive.curves.size());
   for (std::size_t i = 0; i < drive.curves.size(); ++i) buildDriveRuns(*sweep, *cycle, i, m_unit, m_runs[i], x.source);
-  bool relayout = m_torque->setData(m_runs, drive.valueTitle, x);
+  // Data that came before the last ones settled are a drag's, or an animation's.
+  const DataFlow flow = m_settleTimer.isActive() ? DataFlow::Changing : DataFlow::Settled;
+  bool relayout = m_torque->setData(m_runs, drive.valueTitle, x, flow);
 
   const std::vector<ForceJoint> joints = forceJoints(cycle->bodies);
   std::vector<ForceChartView::Curve> curves;
@@ -147,7 +149,7 @@ void ForcePlotPanel::refreshAll() {
   m_runs.resize(joints.size());
   for (std::size_t i = 0; i < joints.size(); ++i)
     buildJointForceRuns(*sweep, *cycle, joints[i], m_unit, m_runs[i], x.source);
-  relayout |= m_joints->setData(m_runs, tr("|F| [N]"), x);
+  relayout |= m_joints->setData(m_runs, tr("|F| [N]"), x, flow);
 
   if (joints != m_jointList) {
     const QString kept = m_selector->currentText();

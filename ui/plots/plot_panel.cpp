@@ -238,12 +238,14 @@ void PlotPanel::refreshData() {
   if (shown.any(QuantityKind::VelocityRatio, m_curves) || shown.any(QuantityKind::Advantage, m_curves))
     if (auto r = kinematics::advantageSeries(m_document->mechanism(), sweep)) ratios = std::move(*r);
   QList<QuantityChartView*> changed;  // their axes or legends: laid out again
+  // Data that came before the last ones settled are a drag's, or an animation's.
+  const DataFlow flow = m_settleTimer.isActive() ? DataFlow::Changing : DataFlow::Settled;
   for (QuantityChartView* view : m_views) {
     const bool visible = shown.any(view->kind(), m_curves);
     const bool appears = visible == view->isHidden();
     view->setVisible(visible);
     view->setOverlay(m_overlay);
-    if (view->setData(sweep, shown, m_unit, x, lengthUnit, ratios ? &*ratios : nullptr) || appears)
+    if (view->setData(sweep, shown, m_unit, x, lengthUnit, ratios ? &*ratios : nullptr, flow) || appears)
       changed.append(view);
   }
   for (QuantityChartView* view : showXTitles())

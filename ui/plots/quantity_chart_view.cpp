@@ -64,7 +64,7 @@ void QuantityChartView::setCurves(const std::vector<PlotCurve>& curves) {
 
 bool QuantityChartView::setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection,
                                 AngleUnit unit, const PlotXAxis& x, const QString& lengthUnit,
-                                const kinematics::AdvantageSeries* ratios) {
+                                const kinematics::AdvantageSeries* ratios, DataFlow flow) {
   // The axes first: the curves are simplified for the scale they set (segmented_line.h).
   m_values.clear();
   m_runs.resize(m_curves.size());
@@ -88,7 +88,7 @@ bool QuantityChartView::setData(const kinematics::SweepResult& sweep, const Quan
   std::tie(m_lo, m_hi) = m_values.empty() ? std::pair<double, double>{kNone, -kNone} : robustSpan(m_values, tail);
   const int budget = tickBudget();
   if (budget != m_tickBudget || !keepsRange(m_valueRange, m_lo, m_hi))
-    m_valueRange = niceValueRange(m_lo, m_hi, budget);
+    m_valueRange = refittedRange(m_lo, m_hi, flow, budget);
   m_tickBudget = budget;
   applyAxisRange(m_yAxis, m_valueRange);
   m_cursor->setYSpan(m_valueRange.min, m_valueRange.max);

@@ -47,11 +47,13 @@ public:
   /// Replaces the curves with the sweep's values of the selected quantities (the others are
   /// emptied and hidden), x on `x`'s axis, and resets both axes (x to `x`'s range and title).
   /// The ratio charts read `ratios`, the sweep's (none drawn while it is null).
-  /// Returns whether what lays the chart out changed (an axis range or title, the legend):
-  /// then the plot areas need aligning again; on most frames of a drag they do not.
+  /// A value axis the data have left is fitted again with room while they keep changing
+  /// (refittedRange). Returns whether what lays the chart out changed (an axis range or
+  /// title, the legend): then the plot areas need aligning again; on most frames of a drag
+  /// they do not.
   bool setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection, AngleUnit unit,
                const PlotXAxis& x, const QString& lengthUnit = QStringLiteral("mm"),
-               const kinematics::AdvantageSeries* ratios = nullptr);
+               const kinematics::AdvantageSeries* ratios = nullptr, DataFlow flow = DataFlow::Settled);
   /// Another tool's rows over the curves of this chart's kind (the others are ignored), each
   /// shown while its quantity is selected; the value axis covers them too. Takes effect at
   /// the next setData. Nothing changes when `overlay` is what is shown already.

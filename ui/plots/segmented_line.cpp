@@ -16,13 +16,17 @@
 namespace linkwright::ui {
 namespace {
 constexpr double kCurveWidth = 2.0;
+// Segments made with the curve: a linkage dragged into a rocking crank splits its curves into
+// two or three runs, and a series added to a chart mid-drag costs a frame (Qt Charts makes its
+// item, legend marker and axis links, then lays out and repaints the chart).
+constexpr int kSegmentsMadeAhead = 3;
 }  // namespace
 
 SegmentedLine::SegmentedLine(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis, Style style,
                              std::function<void(QLineSeries*)> onNewSegment)
     : m_chart(chart), m_xAxis(xAxis), m_yAxis(yAxis), m_style(std::move(style)),
       m_onNewSegment(std::move(onNewSegment)) {
-  addSegment();
+  for (int i = 0; i < kSegmentsMadeAhead; ++i) addSegment();
 }
 
 QLineSeries* SegmentedLine::addSegment() {

@@ -32,8 +32,9 @@ public:
     bool operator==(const Style&) const = default;
   };
 
-  /// Adds the curve's first (empty, hidden) segment to `chart`. `onNewSegment`, if set, is
-  /// called for every segment made, the first included (a view connects its hover signal).
+  /// Adds the curve's first few (empty, hidden) segments to `chart`, so that a drag into a
+  /// gap finds them made. `onNewSegment`, if set, is called for every segment made, these
+  /// included (a view connects its hover signal).
   SegmentedLine(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis, Style style,
                 std::function<void(QLineSeries*)> onNewSegment = {});
 

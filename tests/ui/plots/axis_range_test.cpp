@@ -120,3 +120,20 @@ TEST_CASE("keepsRange keeps an axis that still holds the data and is at least ha
   CHECK_FALSE(keepsRange(shown, std::nan(""), 90.0));
   CHECK_FALSE(keepsRange(AxisRange{5.0, 5.0}, 5.0, 5.0));  // an empty axis serves nothing
 }
+
+TEST_CASE("refittedRange fits settled data tightly and leaves changing data room to grow", "[axis_range]") {
+  const auto [lo, hi] = GENERATE(table<double, double>({{10.0, 90.0}, {-3.2, 7.9}, {0.0012, 0.0047}, {-250.0, -40.0}}));
+  CAPTURE(lo, hi);
+  CHECK(refittedRange(lo, hi, DataFlow::Settled) == niceValueRange(lo, hi));
+  const AxisRange roomy = refittedRange(lo, hi, DataFlow::Changing);
+  CAPTURE(roomy.min, roomy.max);
+  const double span = hi - lo;
+  // Kept for these data, and for the next frames of a drag that move them a twentieth of their
+  // span further than niceValueRange's margin would hold.
+  CHECK(keepsRange(roomy, lo, hi));
+  CHECK(keepsRange(roomy, lo - 0.1 * span, hi + 0.1 * span));
+  // Flat or missing data have no span to leave room for.
+  CHECK(refittedRange(10.0, 90.0, DataFlow::Changing) != niceValueRange(10.0, 90.0));  // [-25, 125], not [0, 100]
+  CHECK(refittedRange(5.0, 5.0, DataFlow::Changing) == niceValueRange(5.0, 5.0));
+  CHECK(refittedRange(std::nan(""), 1.0, DataFlow::Changing) == AxisRange{});
+}

@@ -31,6 +31,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <memory>
 
 using namespace linkwright::ui;
@@ -335,14 +336,74 @@ TEST_CASE("Legends name the shown curves and nothing else", "[plot_panel]") {
   CHECK(legendLabels(panel.chartViews()[2]) ==
         QStringList{fourBarCurve(PlotQuantity::CouplerAlpha).name, fourBarCurve(PlotQuantity::RockerAlpha).name});
 
-  // A design with gaps adds segments to the curves: still one legend entry per curve.
-  const qsizetype segmentsBefore = panel.chartView(QuantityKind::Alpha)->segments(PlotQuantity::RockerAlpha).size();
+  // A design with gaps draws the curves in more segments: still one legend entry per curve.
+  const auto drawnSegments = [&panel] {
+    const QList<QLineSeries*> segments = panel.chartView(QuantityKind::Alpha)->segments(PlotQuantity::RockerAlpha);
+    return std::count_if(segments.begin(), segments.end(), [](const QLineSeries* s) { return s->count() > 0; });
+  };
+  const auto segmentsBefore = drawnSegments();
   REQUIRE_FALSE(doc.edit(nonGrashof(), QStringLiteral("lengths")).has_value());
-  REQUIRE(panel.chartView(QuantityKind::Alpha)->segments(PlotQuantity::RockerAlpha).size() > segmentsBefore);
+  REQUIRE(drawnSegments() > segmentsBefore);
   (void)panel.grab();
   CHECK(legendLabels(panel.chartViews()[2]) ==
         QStringList{fourBarCurve(PlotQuantity::CouplerAlpha).name, fourBarCurve(PlotQuantity::RockerAlpha).name});
   CHECK(legendLabels(panel.chartViews()[1]) == QStringList{fourBarCurve(PlotQuantity::RockerOmega).name});
+}
+
+TEST_CASE("a drag that leaves a value axis fits it again with room, and a single edit fits it tightly",
+          "[plot_panel]") {
+  MechanismDocument doc;
+  PlotPanel panel(&doc);
+  panel.resize(900, 1400);  // room for the ticks of a full-height chart
+  (void)panel.grab();
+  QuantityChartView* omega = panel.chartView(QuantityKind::Omega);
+  const auto withCrank = [&doc](double factor) {
+    k::Design d = doc.design();
+    k::FourBarLengths lengths = doc.fourBar()->lengths;
+    lengths.crank *= factor;
+    d.mechanism = k::withFourBarLengths(d.mechanism, *doc.fourBar(), lengths);
+    return d;
+  };
+  // What a panel of the same size, opened on the design, shows.
+  const auto tightRange = [&doc] {
+    PlotPanel fresh(&doc);
+    fresh.resize(900, 1400);
+    (void)fresh.grab();
+    return fresh.chartView(QuantityKind::Omega)->valueRange();
+  };
+  // An edit after a quiet spell: the data have settled, the axis fits them as a new panel would.
+  panel.settleValueRanges();
+  AxisRange before = omega->valueRange();
+  REQUIRE_FALSE(doc.edit(withCrank(0.5), "crank"));
+  REQUIRE(omega->valueRange() != before);
+  CHECK(omega->valueRange() == tightRange());
+  // The next frame of a drag, within the settle time, leaves the axis: it is fitted with room.
+  before = omega->valueRange();
+  REQUIRE_FALSE(doc.edit(withCrank(0.5), "crank", MergeKey{ContinuousEdit::DragPoint, 1, 0}));
+  REQUIRE(omega->valueRange() != before);
+  const AxisRange roomy = omega->valueRange();
+  CHECK(roomy != tightRange());
+  CHECK(roomy.max - roomy.min > tightRange().max - tightRange().min);
+  for (const QPointF& p : plotted(panel, PlotQuantity::RockerOmega)) {
+    CHECK(p.y() >= roomy.min);
+    CHECK(p.y() <= roomy.max);
+  }
+  panel.settleValueRanges();
+  CHECK(omega->valueRange() == tightRange());
+}
+
+TEST_CASE("a drag into a rocking crank draws the gaps with the segments made ahead: no series is added",
+          "[plot_panel]") {
+  // A series added to a chart in the middle of a drag costs a frame (Qt Charts makes its item,
+  // legend marker and axis links, then lays out and repaints the chart).
+  MechanismDocument doc;
+  PlotPanel panel(&doc);
+  QChart* alpha = panel.chartView(QuantityKind::Alpha)->chart();
+  const qsizetype seriesBefore = alpha->series().size();
+  REQUIRE_FALSE(doc.edit(nonGrashof(), QStringLiteral("lengths"), MergeKey{ContinuousEdit::DragPoint, 1, 0}));
+  const QList<QLineSeries*> rocker = panel.chartView(QuantityKind::Alpha)->segments(PlotQuantity::RockerAlpha);
+  REQUIRE(std::count_if(rocker.begin(), rocker.end(), [](const QLineSeries* s) { return s->count() > 0; }) >= 2);
+  CHECK(alpha->series().size() == seriesBefore);
 }
 
 TEST_CASE("The plot areas line up so the cursor reads across the charts", "[plot_panel]") {
