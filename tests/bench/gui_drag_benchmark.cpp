@@ -20,15 +20,15 @@
 //                                      [--census] [--wander F]
 //
 // Defaults: 400 moves, the thesis four-bar, Normal, kinematics only. The drag starts once the
-// window has settled: the plots have reported their width (which sets the samples shown) and
-// the first quality estimate has landed. --forces shows the Forces tab and the force arrows; a
-// linkage without masses gets 1 kg on each link (uniform bars) and gravity, so there is
-// something to solve. --wander scales the hand's wander around the joint (±12 px across, ±8 px
-// up and down): 1.3 takes the Watt II into a rocking crank and back twice. --trace prints a
-// line per move. --census prints, per widget class, the time its repaints took and the layout
-// requests it got per move (and skips the worst case, whose whole-window repaint would swamp
-// the count); with --trace, also for each move. The older form
-// `linkwright_gui_benchmark [moves] [example]` still works.
+// window has settled: the plots have reported their width (which sets the samples shown), the
+// first quality estimate has landed and the value axes have settled. --forces shows the Forces
+// tab and the force arrows; a linkage without masses gets 1 kg on each link (uniform bars) and
+// gravity, so there is something to solve. --wander scales the hand's wander around the joint
+// (±12 px across, ±8 px up and down): 1.3 takes the Watt II into a rocking crank and back
+// twice. --trace prints a line per move. --census prints, per widget class, the time its
+// repaints took and the layout requests it got per move (and skips the worst case, whose
+// whole-window repaint would swamp the count); with --trace, also for each move. The older
+// form `linkwright_gui_benchmark [moves] [example]` still works.
 
 #include "ui/canvas/linkage_view.h"
 #include "ui/document/mechanism_document.h"
@@ -226,12 +226,14 @@ int main(int argc, char** argv) {
   doc->setQuality(options->quality);
   if (options->forces) window.showForces();  // the Forces tab and the canvas's force arrows
   // The drag starts once the window has settled, as a user's does: the plots have told the
-  // document their width (150 ms after the last resize; the samples shown follow it) and the
-  // first quality estimate has landed (a worker, a few hundred ms after loading).
+  // document their width (150 ms after the last resize; the samples shown follow it), the
+  // first quality estimate has landed (a worker, a few hundred ms after loading) and the value
+  // axes have settled.
   window.plots()->reportPlotWidth();
   QApplication::processEvents();
   if (!QTest::qWaitFor([&] { return !doc->qualityEstimatePending(); }, 60000))
     std::printf("the first quality estimate did not land within 60 s\n");
+  QTest::qWait(linkwright::ui::PlotPanel::kDataSettleMs);
   QApplication::processEvents();
   const std::size_t dragged = doc->fourBar() ? doc->fourBar()->c.index : doc->mechanism().points.size() - 1;
   const std::string name = options->example.value_or("thesis-crank-rocker");

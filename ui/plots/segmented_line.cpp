@@ -17,9 +17,10 @@ namespace linkwright::ui {
 namespace {
 constexpr double kCurveWidth = 2.0;
 // Segments made with the curve: a linkage dragged into a rocking crank splits its curves into
-// two or three runs, and a series added to a chart mid-drag costs a frame (Qt Charts makes its
-// item, legend marker and axis links, then lays out and repaints the chart).
-constexpr int kSegmentsMadeAhead = 3;
+// two runs (one gap inside the grid), and a series added to a chart mid-drag costs a frame (Qt
+// Charts makes its item, legend marker and axis links, then lays out and repaints the chart).
+// Not more: every series makes each later layout of its chart a little slower.
+constexpr int kSegmentsMadeAhead = 2;
 }  // namespace
 
 SegmentedLine::SegmentedLine(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis, Style style,
