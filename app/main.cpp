@@ -141,6 +141,9 @@ int main(int argc, char** argv) {
   QApplication::setWindowIcon(QIcon(":/icons/linkwright.svg"));
 
   linkwright::ui::MainWindow window;
+  // A drag's slow sweeps (a Newton linkage at Precise) go to a worker; the tests' windows keep
+  // the default, in which every edit's sweep is there at once.
+  window.document()->setSweepThreading(linkwright::ui::DisplaySweeper::Threading::Adaptive);
   namespace k = linkwright::kinematics;
   if (options->example) window.newDocument(*k::designForExample(*options->example));
   if (options->file && !window.openFile(QString::fromStdString(*options->file))) {

@@ -54,6 +54,7 @@ public:
   MechanismDocument* document() const { return m_document; }
   LinkageView* canvas() const { return m_canvas; }
   PlotPanel* plots() const { return m_plots; }
+  ForceResults* forces() const { return m_forces; }
   ForcePlotPanel* forcePlots() const { return m_forcePlots; }
   DimensionsPanel* dimensionsPanel() const { return m_dimensions; }
   DrivePanel* drivePanel() const { return m_drive; }

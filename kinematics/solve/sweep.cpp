@@ -118,13 +118,16 @@ public:
 
   // Samples run in blocks (solveBlock) while the branches are plainly continuous; the first
   // sample, any sample near a toggle or a gap, and linkages with free points (whose Newton
-  // starts from the samples before) run one at a time.
-  void run() {
+  // starts from the samples before) run one at a time. Returns false, at the first block or
+  // sample after `cancel` became true, with the columns half written.
+  bool run(const std::atomic<bool>* cancel) {
     for (std::size_t j = 0; j < m_spec.samples;) {
+      if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) return false;
       if (m_haveLast && m_freePoints.empty()) j = solveBlock(j);
       if (j < m_spec.samples) solveOne(j++);
     }
     m_writer.finish(m_mech, m_out);
+    return true;
   }
 
 private:
@@ -456,7 +459,7 @@ double sweepAngle(const SweepSpec& spec, std::size_t index) {
 }
 
 std::optional<Error> sweepInto(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request,
-                               SweepResult& out) {
+                               SweepResult& out, const std::atomic<bool>* cancel) {
   if (auto e = checkMechanism(mechanism)) return e;
   if (auto e = checkSweepSpec(spec, inputKind(mechanism))) return e;
   if (auto e = checkNewtonSettings(request.newton)) return e;
@@ -467,7 +470,8 @@ std::optional<Error> sweepInto(const Mechanism& mechanism, const SweepSpec& spec
   allocate(mechanism, spec.samples, normalized, scope, out);
   out.time.resize(spec.time ? spec.samples : 0);
   for (std::size_t j = 0; j < out.time.size(); ++j) out.time[j] = sweepTime(spec, j);
-  Tracker(mechanism, spec, out.request, scope, out).run();
+  if (!Tracker(mechanism, spec, out.request, scope, out).run(cancel))
+    return Error{ErrorCode::Cancelled, "sweep", "the sweep was cancelled"};
   summarize(mechanism, spec, out);
   return std::nullopt;
 }

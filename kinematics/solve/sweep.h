@@ -22,6 +22,7 @@
 #include "kinematics/solve/motion_law.h"
 #include "kinematics/solve/pose.h"
 
+#include <atomic>
 #include <optional>
 #include <vector>
 
@@ -91,6 +92,8 @@ struct SweepResult {
   bool assembled(std::size_t sample) const { return report[sample].status != PoseStatus::NotAssemblable; }
   /// True if the linkage locks between `sample` and the next (lockedBetween holds that step).
   bool lockedAfter(std::size_t sample) const;
+  /// Every column equal, to the last bit (a worker's sweep against the GUI thread's).
+  bool operator==(const SweepResult&) const = default;
 };
 
 /// Error naming the field ("law.duration", "from time", …) for an invalid law, a non-finite
@@ -124,8 +127,10 @@ Result<SweepResult> sweep(const Mechanism& mechanism, const SweepSpec& spec, con
 
 /// The same sweep written into `out`, reusing its columns' storage: repeated sweeps of one
 /// size (a drag, an animation, a benchmark) allocate nothing per call beyond the solver's
-/// scratch poses. On error `out` is left as it was.
+/// scratch poses. On error `out` is left as it was. If `cancel` is given and becomes true
+/// (another thread sets it), the sweep stops within a few samples with ErrorCode::Cancelled
+/// and `out` holds a partial sweep: discard it.
 std::optional<Error> sweepInto(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request,
-                               SweepResult& out);
+                               SweepResult& out, const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace linkwright::kinematics

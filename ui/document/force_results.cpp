@@ -85,6 +85,7 @@ void ForceResults::cancelPending() {
 }
 
 void ForceResults::waitForCycle() {
+  m_document->waitForSweep();  // the cycle is solved on it when it lands
   if (!m_pending) return;
   m_pending->job.waitForFinished();
   finishPending();
@@ -115,6 +116,8 @@ void ForceResults::solveCycle() {
   m_solver.emplace(std::move(solver).value());
   m_solver->prepare(m_pose);
   solvePose();
+  // A drag's sweep in a worker is the design's of a moment ago: the cycle waits for it to land.
+  if (m_document->sweepPending()) return;
   ForceCycleInput input{mechanism, dynamics, std::nullopt, m_document->displaySpec(),
                         forcesRequest(m_document->request())};
   if (sweepSuffices(mechanism, m_document->sweep())) input.sweep = m_document->sweep();

@@ -14,9 +14,10 @@
 // thread (QtConcurrent), so a drag at Precise with forces never waits for it: the views keep
 // the last cycle (cyclePending() says a newer one is coming) and get changed(true) when it
 // lands. A newer document change cancels the older solve (sweepForces stops at its next
-// sample) and its result is dropped. Both paths run solveForceCycle (force_cycle.h) on a copy
-// of the document's data, so they give the same numbers. The pose forces stay synchronous:
-// one sample costs microseconds.
+// sample) and its result is dropped. While the document's own sweep is in a worker
+// (sweepPending()), the cycle waits for it: it lands as a Change::Request, which solves it.
+// Both paths run solveForceCycle (force_cycle.h) on a copy of the document's data, so they
+// give the same numbers. The pose forces stay synchronous: one sample costs microseconds.
 
 #include "ui/document/force_cycle.h"
 #include "ui/document/mechanism_document.h"
@@ -59,8 +60,9 @@ public:
   enum class Threading { Adaptive, GuiThread, Worker };
   void setThreading(Threading threading) { m_threading = threading; }
   static constexpr double kWorkerAfterMs = 4.0;
-  /// A worker is solving a newer cycle; cycleForces() and cycleSweep() are the last result.
-  bool cyclePending() const { return m_pending != nullptr; }
+  /// A worker is solving a newer cycle, or the document's sweep it needs is still coming;
+  /// cycleForces() and cycleSweep() are the last result.
+  bool cyclePending() const { return m_pending != nullptr || (m_solver && m_document->sweepPending()); }
   /// Blocks until a pending cycle has landed (tests, export); no-op if none is pending.
   void waitForCycle();
 

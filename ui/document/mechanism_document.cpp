@@ -8,7 +8,6 @@
 #include "kinematics/solve/pose_solver.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <utility>
 
@@ -24,7 +23,8 @@ MechanismDocument::MechanismDocument(QObject* parent)
   m_estimateTimer.setInterval(kEstimateSettleMs);
   connect(&m_estimateTimer, &QTimer::timeout, this, &MechanismDocument::measureQuality);
   connect(&m_estimator, &QualityEstimator::measured, this, &MechanismDocument::adoptEstimate);
-  rebuild();
+  connect(&m_sweeper, &DisplaySweeper::landed, this, [this] { emit changed(Change::Request); });
+  rebuild(SweepNow::Yes);
   connect(&m_undo, &QUndoStack::cleanChanged, this, [this] { emit changed(Change::File); });
 }
 
@@ -87,7 +87,7 @@ void MechanismDocument::applyDesign(const DesignState& state) {
   m_design = state.design;
   m_crankAngle = state.crankAngle;
   m_time = state.time;
-  rebuild();
+  rebuild(SweepNow::No);
   emit changed(Changes(Change::Design) | Change::Motion);
 }
 
@@ -213,7 +213,7 @@ void MechanismDocument::reset(const k::Design& design, const QString& filePath) 
   m_filePath = filePath;
   m_crankAngle = 0.0;
   m_time = design.time ? design.time->fromTime : 0.0;
-  rebuild();
+  rebuild(SweepNow::Yes);
   m_undo.setClean();
   emit changed(Changes(Change::Design) | Change::File);
 }
@@ -225,7 +225,7 @@ void MechanismDocument::setFilePath(const QString& path) {
 
 void MechanismDocument::markSaved() { m_undo.setClean(); }
 
-void MechanismDocument::rebuild() {
+void MechanismDocument::rebuild(SweepNow now) {
   // Designs reach here validated (edit/validate, or the document reader): nothing is checked again.
   m_fourBar = k::asFourBar(m_design.mechanism);
   // Sized once per design: free points then start each solve from the last pose shown.
@@ -235,7 +235,7 @@ void MechanismDocument::rebuild() {
     wanted.newton = m_request.newton;
     m_request = wanted;
   }
-  resweep();
+  resweep(now);
   // The crank range and gaps the panel states are the design's grid's, as in the CSV export,
   // whatever the plots' resolution; positions alone decide them. A four-bar whose crank turns
   // fully (closed form) has no gaps, so it skips this sweep; after an edit, the sweep that
@@ -284,7 +284,7 @@ void MechanismDocument::setForcesNeeded(bool needed) {
   emit changed(Change::Request);
 }
 
-void MechanismDocument::resweep() {
+void MechanismDocument::resweep(SweepNow now) {
   m_displaySpec = wantedDisplaySpec();
   // Forces need every point's acceleration (inertia forces are m·a), whatever the plots show.
   k::SolveRequest request = m_request;
@@ -293,10 +293,8 @@ void MechanismDocument::resweep() {
     request.only = {};
   }
   ++m_sweepsRun;
-  const auto start = std::chrono::steady_clock::now();
-  // Into the same result: a drag re-sweeps on every frame without new allocations.
-  if (auto error = k::sweepInto(m_design.mechanism, m_displaySpec, request, m_sweep)) m_sweep = k::SweepResult{};
-  m_sweepMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if (now == SweepNow::Yes) m_sweeper.sweepNow(m_design.mechanism, m_displaySpec, request);
+  else m_sweeper.sweep(m_design.mechanism, m_displaySpec, request);
 }
 
 void MechanismDocument::solvePoseNow() {

@@ -9,6 +9,7 @@
 // does; the displayed sweep spans the same crank angles (or times) with as many samples as the
 // plots have pixels times the sampling quality, and computes only the quantities they show.
 
+#include "ui/document/display_sweeper.h"
 #include "ui/document/edit_design_command.h"
 #include "ui/document/quality_estimate.h"
 #include "ui/document/quality_estimator.h"
@@ -35,7 +36,7 @@ namespace linkwright::ui {
 enum class Change {
   Design = 0x1,     ///< the design and everything solved from it (sweep, analysis, pose)
   Motion = 0x2,     ///< only the crank angle and the pose at it
-  Request = 0x4,    ///< which quantities or how many samples are computed (the sweep was redone)
+  Request = 0x4,    ///< the sweep was redone: other quantities or samples, or a worker's sweep landed
   File = 0x8,       ///< file name or modified flag
   Estimate = 0x10,  ///< the quality estimate was measured anew (qualityEstimate())
   PlotAxis = 0x20,  ///< what the plots' x axis shows (plotAxis())
@@ -63,13 +64,23 @@ public:
   /// Mobility, ranges and limits; crank range and gaps on the design's grid.
   const kinematics::DesignAnalysis& analysis() const { return m_analysis; }
   /// The displayed cycle: the design's crank angles at displaySpec()'s samples, computing what
-  /// request() asks for. The plots and the canvas's paths read it.
-  const kinematics::SweepResult& sweep() const { return m_sweep; }
+  /// request() asks for. The plots and the canvas's paths read it. While sweepPending(), it is
+  /// the design's as it was a moment ago (same samples and columns, other lengths).
+  const kinematics::SweepResult& sweep() const { return m_sweeper.result(); }
+  /// A drag's edit is being swept in a worker (display_sweeper.h): slow sweeps (a Newton
+  /// linkage at Precise) never hold up the GUI thread. changed(Request) follows when it lands.
+  bool sweepPending() const { return m_sweeper.pending(); }
+  /// Blocks until a pending sweep has landed, and announces it (exports, tests, benchmarks).
+  void waitForSweep() { m_sweeper.waitForResult(); }
+  /// Where a drag's sweeps run: GuiThread (the default: every edit's sweep is there at once),
+  /// or Adaptive (the designer's: in a worker once a sweep takes longer than
+  /// DisplaySweeper::kWorkerAfterMs), or Worker.
+  void setSweepThreading(DisplaySweeper::Threading threading) { m_sweeper.setThreading(threading); }
   /// The grid of sweep(): the design's range, ω and α with displaySampleCount(quality(),
   /// displayWidth(), span) samples.
   const kinematics::SweepSpec& displaySpec() const { return m_displaySpec; }
   /// Wall time of the last computation of sweep(), ms.
-  double sweepMilliseconds() const { return m_sweepMs; }
+  double sweepMilliseconds() const { return m_sweeper.milliseconds(); }
   /// How many sweeps the document has run (display, grid and validation ones): tests read it
   /// to show that an edit does each piece of work once.
   long sweepsRun() const { return m_sweepsRun; }
@@ -162,8 +173,11 @@ signals:
   void changed(linkwright::ui::Changes what);
 
 private:
-  void rebuild();       // mechanism, sweep, analysis, pose from m_design
-  void resweep();       // sweep only (request or sampling changed)
+  // rebuild: mechanism, sweep, analysis, pose from m_design; resweep: the sweep only (request
+  // or sampling changed). SweepNow::No lets an edit's sweep go to a worker (display_sweeper.h).
+  enum class SweepNow : bool { No, Yes };
+  void rebuild(SweepNow now);
+  void resweep(SweepNow now = SweepNow::Yes);
   void solvePoseNow();  // pose at m_crankAngle, or at m_time on a time base
   void clampMotion();   // m_time into the time base and the crank angle with it, or the angle into the range
   kinematics::SweepSpec wantedDisplaySpec() const;
@@ -194,9 +208,8 @@ private:
   kinematics::Design m_design;
   std::optional<kinematics::FourBarStructure> m_fourBar;
   kinematics::DesignAnalysis m_analysis;
-  kinematics::SweepResult m_sweep;
+  DisplaySweeper m_sweeper;
   kinematics::SweepSpec m_displaySpec;
-  double m_sweepMs = 0.0;
   mutable long m_sweepsRun = 0;
   mutable DesignGrid m_grid;
   QPointer<QObject> m_requestOwner;

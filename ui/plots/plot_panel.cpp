@@ -155,10 +155,12 @@ QuantityChartView* PlotPanel::chartView(QuantityKind kind) const { return m_view
 void PlotPanel::onDocumentChanged(Changes what) {
   // A new structure has new quantities; the document has already swept for what they need
   // (setRequestSource), so the plots only follow.
-  if (what & Change::Design) refreshCurves();
+  const bool newCurves = (what & Change::Design) && refreshCurves();
   if (what & Change::PlotAxis) m_readout->clearPoint();
-  if (what & (Changes(Change::Design) | Change::Request | Change::PlotAxis)) refreshData();
-  else if (what & Change::Motion) refreshCursor();
+  // A drag's sweep still in a worker changes nothing plotted yet: its landing (Request) does.
+  const bool swept = (what & Change::Design) && !m_document->sweepPending();
+  if (newCurves || swept || (what & (Changes(Change::Request) | Change::PlotAxis))) refreshData();
+  else if (what & (Changes(Change::Motion) | Change::Design)) refreshCursor();
 }
 
 void PlotPanel::setOnScreen(bool onScreen) {
@@ -175,9 +177,9 @@ void PlotPanel::onSelectionChanged() {
   emit selectionChanged();
 }
 
-void PlotPanel::refreshCurves() {
+bool PlotPanel::refreshCurves() {
   std::vector<PlotCurve> curves = plotCurves(m_document->mechanism(), m_document->pose());
-  if (curves == m_curves && !m_curves.empty()) return;
+  if (curves == m_curves && !m_curves.empty()) return false;
   // Another kind of linkage starts from its own defaults; renamed links keep the user's ticks.
   const QuantitySelection selection = selectionAfter(m_curves, m_selector->selection(), curves);
   m_curves = std::move(curves);
@@ -187,6 +189,7 @@ void PlotPanel::refreshCurves() {
   if (m_limits) m_limits->raise();  // last in the angle chart's legend, as "rocker limit" reads best
   if (m_ratioLimits) m_ratioLimits->raise();
   m_readout->clearPoint();
+  return true;
 }
 
 double PlotPanel::plotAreaWidth() const {

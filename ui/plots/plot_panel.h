@@ -125,7 +125,7 @@ private:
   void onDocumentChanged(Changes what);
   void onSelectionChanged();
   void applySelection();
-  void refreshCurves();
+  bool refreshCurves();  // true when the curves changed (the data must be set again)
   void refreshData();
   void refreshCursor();
   /// Shows the x axis's title on every chart, or when presenting on the bottom one only.

@@ -206,3 +206,40 @@ TEST_CASE("a worker's solve stops when cancelled, and the core says so", "[force
     CHECK(forces.cyclePending());
   }
 }
+
+TEST_CASE("while the document's sweep is in a worker the cycle waits for it, then equals the GUI thread's",
+          "[forces][results][worker]") {
+  MechanismDocument doc;
+  doc.setSweepThreading(DisplaySweeper::Threading::Worker);
+  doc.reset(funsho());
+  doc.setRequest(ForceResults::forcesRequest(doc.request()));
+  ForceResults forces(&doc);
+  forces.setThreading(ForceResults::Threading::GuiThread);
+  forces.setEnabled(true);
+  REQUIRE(forces.state() == ForceResults::State::Ok);
+  const k::ForceSweep first = *forces.cycleForces();
+  QSignalSpy spy(&forces, &ForceResults::changed);
+
+  REQUIRE_FALSE(doc.edit(longerCrank(doc, 0.5), "crank", MergeKey{ContinuousEdit::DragPoint, 1, 0}));
+  REQUIRE(doc.sweepPending());
+  // A cycle solved now would pair the new lengths with the last sweep: it waits.
+  CHECK(forces.cyclePending());
+  CHECK(sameForces(*forces.cycleForces(), first));
+  REQUIRE(forces.poseForces() != nullptr);
+  REQUIRE(spy.count() == 1);
+  CHECK_FALSE(spy.front().front().toBool());
+
+  forces.waitForCycle();
+  CHECK_FALSE(forces.cyclePending());
+  CHECK(spy.back().front().toBool());
+  CHECK(forces.cycleSweep()->inputAngle == doc.sweep().inputAngle);
+  CHECK(forces.cycleSweep()->acceleration == doc.sweep().acceleration);
+  MechanismDocument inGui;
+  inGui.reset(doc.design());
+  inGui.setRequest(ForceResults::forcesRequest(inGui.request()));
+  ForceResults check(&inGui);
+  check.setThreading(ForceResults::Threading::GuiThread);
+  check.setEnabled(true);
+  CHECK(sameForces(*forces.cycleForces(), *check.cycleForces()));
+  CHECK_FALSE(sameForces(*forces.cycleForces(), first));
+}

@@ -229,6 +229,24 @@ TEST_CASE("A non-Grashof linkage plots nothing outside its assemblable range", "
     for (const QPointF& p : plotted(panel, q)) CHECK(p.y() != 0.0);
 }
 
+TEST_CASE("a drag's sweep in a worker leaves the curves as they were until it lands, then plots it",
+          "[plot_panel][worker]") {
+  MechanismDocument doc;
+  doc.setSweepThreading(DisplaySweeper::Threading::Worker);
+  PlotPanel panel(&doc);
+  const QList<QPointF> before = plotted(panel, PlotQuantity::RockerAngle);
+  const k::Design d = linkwright::testing::withLengths(doc.design(), {60.0, 25.0, 65.0, 45.0});
+  REQUIRE_FALSE(doc.edit(d, QStringLiteral("coupler"), MergeKey{ContinuousEdit::DragPoint, 1, 0}).has_value());
+  REQUIRE(doc.sweepPending());
+  CHECK(plotted(panel, PlotQuantity::RockerAngle) == before);
+  doc.waitForSweep();
+  CHECK(plotted(panel, PlotQuantity::RockerAngle) ==
+        expectedDegrees(doc.sweep(), doc.sweep().linkAngle[kRocker], false));
+  CHECK(plotted(panel, PlotQuantity::RockerAngle) != before);
+  CHECK(plotted(panel, PlotQuantity::CouplerOmega) ==
+        expectedDegrees(doc.sweep(), doc.sweep().linkOmega[kCoupler], true));
+}
+
 TEST_CASE("Moving the crank moves the cursor and leaves the data alone", "[plot_panel]") {
   MechanismDocument doc;
   PlotPanel panel(&doc);
