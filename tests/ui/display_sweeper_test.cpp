@@ -76,6 +76,18 @@ TEST_CASE("a drag's sweep in a worker lands equal to the GUI thread's, the last 
   CHECK_FALSE(inWorker.sweep() == before);
 }
 
+TEST_CASE("by default every edit's sweep is there when the edit returns", "[document][sweep][worker]") {
+  MechanismDocument doc;
+  doc.reset(*k::designForExample("stephenson-ii"));
+  doc.setQuality(SamplingQuality::Precise);  // a sweep of milliseconds: Adaptive would defer the next
+  REQUIRE_FALSE(doc.edit(longerBar(doc.design(), 0.5), "bar", kDrag));
+  CHECK_FALSE(doc.sweepPending());
+  MechanismDocument check;
+  openStephenson(check, Threading::GuiThread);
+  REQUIRE_FALSE(check.edit(doc.design(), "bar"));
+  CHECK(doc.sweep() == check.sweep());
+}
+
 TEST_CASE("a newer edit cancels the worker's older sweep, and only the newest lands", "[document][sweep][worker]") {
   MechanismDocument doc;
   openStephenson(doc, Threading::Worker);

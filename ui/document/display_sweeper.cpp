@@ -37,10 +37,9 @@ void DisplaySweeper::sweepNow(const k::Mechanism& mechanism, const k::SweepSpec&
 }
 
 bool DisplaySweeper::sweep(const k::Mechanism& mechanism, const k::SweepSpec& spec, const k::SolveRequest& request) {
-  Shape shape = shapeOf(mechanism, spec, request);
   const bool slow =
       m_threading == Threading::Worker || (m_threading == Threading::Adaptive && m_milliseconds > kWorkerAfterMs);
-  if (!slow || shape != m_shape) {
+  if (!slow || shapeOf(mechanism, spec, request) != m_shape) {
     sweepNow(mechanism, spec, request);
     return false;
   }
@@ -60,8 +59,7 @@ bool DisplaySweeper::sweep(const k::Mechanism& mechanism, const k::SweepSpec& sp
   auto watcher = std::make_unique<QFutureWatcher<SharedOutcome>>();
   connect(watcher.get(), &QFutureWatcherBase::finished, this, &DisplaySweeper::finishPending);
   watcher->setFuture(future);
-  m_pending = std::make_unique<PendingJob>(
-      PendingJob{std::move(cancel), std::move(future), std::move(watcher), std::move(shape)});
+  m_pending = std::make_unique<PendingJob>(PendingJob{std::move(cancel), std::move(future), std::move(watcher)});
   return true;
 }
 
@@ -80,8 +78,7 @@ void DisplaySweeper::waitForResult() {
 void DisplaySweeper::finishPending() {
   if (!m_pending || !m_pending->job.isFinished()) return;
   const SharedOutcome outcome = m_pending->job.result();
-  m_shape = std::move(m_pending->shape);
-  m_pending.reset();
+  m_pending.reset();  // its shape was m_shape's: it went to the worker for that
   // Only a job that was not cancelled gets here, so a failure is the core's refusal.
   if (outcome->ok) {
     std::swap(m_result, *outcome->result);

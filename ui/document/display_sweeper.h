@@ -1,12 +1,12 @@
 #pragma once
 // The document's displayed sweep (mechanism_document.h), solved in the GUI thread or in a
-// worker. A sweep that took longer than kWorkerAfterMs the last time (a Newton linkage at
-// Precise sweeps 3601 samples) runs in a worker thread (QtConcurrent) when it is a drag's: the
-// new job has the shape of the sweep shown (the same grid, request and structure, only other
-// lengths), so the views keep reading the last result, whose columns still fit the design,
-// until the new one lands and landed() is emitted. A newer job cancels an older one (the core's
-// sweep stops within a few samples) and its result is dropped. Both paths run the same
-// kinematics::sweepInto on the same inputs, so they give the same numbers.
+// worker. With Adaptive threading (the designer's), once a sweep took longer than
+// kWorkerAfterMs (a Newton linkage at Precise: 3601 samples), a drag's next sweep runs in a
+// worker thread (QtConcurrent). It has the shape of the sweep shown (the same grid, request and
+// structure, only other lengths), so the views keep reading the last result, whose columns
+// still fit the design, until the new one lands and landed() is emitted. A newer job cancels
+// an older one (the core's sweep stops within a few samples) and its result is dropped. Both
+// paths run the same kinematics::sweepInto on the same inputs, so they give the same numbers.
 
 #include "kinematics/model/mechanism.h"
 #include "kinematics/solve/sweep.h"
@@ -27,9 +27,10 @@ public:
   explicit DisplaySweeper(QObject* parent = nullptr);
   ~DisplaySweeper() override;
 
-  /// Where a drag's sweeps run: in a worker once the last sweep took longer than
-  /// kWorkerAfterMs (Adaptive, the default), always in the GUI thread, or always in a worker.
-  enum class Threading { Adaptive, GuiThread, Worker };
+  /// Where a drag's sweeps run: always in the GUI thread (the default: every sweep is there
+  /// when sweep() returns), in a worker once the last sweep took longer than kWorkerAfterMs
+  /// (Adaptive, the designer's), or always in a worker.
+  enum class Threading { GuiThread, Adaptive, Worker };
   void setThreading(Threading threading) { m_threading = threading; }
   static constexpr double kWorkerAfterMs = 4.0;
 
@@ -77,7 +78,6 @@ private:
     std::shared_ptr<std::atomic<bool>> cancel;
     QFuture<SharedOutcome> job;                              // runs in the pool
     std::unique_ptr<QFutureWatcher<SharedOutcome>> watcher;  // tells this thread it is done
-    Shape shape;
   };
 
   void cancelPending();
@@ -87,7 +87,7 @@ private:
   kinematics::SweepResult m_result;
   Shape m_shape;  // of m_result
   double m_milliseconds = 0.0;
-  Threading m_threading = Threading::Adaptive;
+  Threading m_threading = Threading::GuiThread;
   std::shared_ptr<kinematics::SweepResult> m_spare;  // the last result replaced: a job's memory
   std::unique_ptr<PendingJob> m_pending;
 };
