@@ -20,7 +20,7 @@
 // painted: drag-to-redraw counts the worker's time, the GUI thread's figures do not.
 //
 //   build/bin/linkwright_gui_benchmark [--moves N] [--example NAME] [--quality draft|normal|precise] [--forces] [--trace]
-//                                      [--census] [--wander F]
+//                                      [--census] [--wander F] [--threading adaptive|gui]
 //
 // Defaults: 400 moves, the thesis four-bar, Normal, kinematics only. The drag starts once the
 // window has settled: the plots have reported their width (which sets the samples shown), the
@@ -30,7 +30,9 @@
 // (±12 px across, ±8 px up and down): 1.3 takes the Watt II into a rocking crank and back
 // twice. --trace prints a line per move. --census prints, per widget class, the time its
 // repaints took and the layout requests it got per move (and skips the worst case, whose
-// whole-window repaint would swamp the count); with --trace, also for each move. The older
+// whole-window repaint would swamp the count); with --trace, also for each move. --threading
+// gui sweeps every edit in the GUI thread, for a profiler (callgrind counts instructions, which
+// the host's speed does not change). The older
 // form `linkwright_gui_benchmark [moves] [example]` still works.
 
 #include "ui/canvas/linkage_view.h"
@@ -151,6 +153,9 @@ struct Options {
   bool trace = false;   // a line per move
   double wander = 1.0;  // times the hand's wander of ±12 px across, ±8 px up and down
   bool census = false;  // what each widget class costs per move: paint time, layout requests
+  // As the designer sweeps (Adaptive); GuiThread for a profiler, under which every sweep is
+  // slow enough for Adaptive to send it to a worker.
+  linkwright::ui::DisplaySweeper::Threading threading = linkwright::ui::DisplaySweeper::Threading::Adaptive;
 };
 
 std::optional<Options> parse(int argc, char** argv) {
@@ -165,7 +170,12 @@ std::optional<Options> parse(int argc, char** argv) {
     else if (arg == "--wander" && hasValue) o.wander = std::clamp(std::atof(argv[++i]), 0.1, 10.0);
     else if (arg == "--moves" && hasValue) o.moves = std::max(10, std::atoi(argv[++i]));
     else if (arg == "--example" && hasValue) o.example = argv[++i];
-    else if (arg == "--quality" && hasValue) {
+    else if (arg == "--threading" && hasValue) {
+      const std::string t = argv[++i];
+      if (t == "adaptive") o.threading = linkwright::ui::DisplaySweeper::Threading::Adaptive;
+      else if (t == "gui") o.threading = linkwright::ui::DisplaySweeper::Threading::GuiThread;
+      else return std::nullopt;
+    } else if (arg == "--quality" && hasValue) {
       const std::string q = argv[++i];
       if (q == "draft") o.quality = linkwright::ui::SamplingQuality::Draft;
       else if (q == "normal") o.quality = linkwright::ui::SamplingQuality::Normal;
@@ -209,7 +219,7 @@ int main(int argc, char** argv) {
   if (!options) {
     std::fprintf(stderr,
                  "usage: linkwright_gui_benchmark [--moves N] [--example NAME] [--quality draft|normal|precise] "
-                 "[--forces] [--trace] [--census] [--wander F]\n");
+                 "[--forces] [--trace] [--census] [--wander F] [--threading adaptive|gui]\n");
     return 2;
   }
   const int moves = options->moves;
@@ -219,7 +229,7 @@ int main(int argc, char** argv) {
   window.show();
   QApplication::processEvents();
   auto* doc = window.document();
-  doc->setSweepThreading(linkwright::ui::DisplaySweeper::Threading::Adaptive);  // as app/main.cpp does
+  doc->setSweepThreading(options->threading);  // Adaptive by default, as app/main.cpp does
   auto* canvas = window.canvas();
   const auto* forces = window.forces();
   auto design = linkwright::kinematics::designForExample(options->example.value_or("thesis-crank-rocker"));

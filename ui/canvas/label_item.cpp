@@ -16,13 +16,25 @@ constexpr double kBoxPaddingPx = 3.0;
 LabelItem::LabelItem(QGraphicsItem* parent) : QGraphicsItem(parent) {
   setFlag(ItemIgnoresTransformations);
   m_font.setPointSizeF(canvas::kLabelPointSize);
+  m_layout.setTextFormat(Qt::PlainText);
   setZValue(canvas::z::kLabels);
+}
+
+void LabelItem::layOut() {
+  const QFontMetricsF metrics(m_font);
+  m_size = m_maximumWidth > 0.0
+               ? metrics.boundingRect(QRectF(0.0, 0.0, m_maximumWidth, 1e6), Qt::TextWordWrap, m_text).size()
+               : QSizeF(metrics.horizontalAdvance(m_text), metrics.height());
+  m_layout.setText(m_text);
+  m_layout.setTextWidth(m_maximumWidth > 0.0 ? m_maximumWidth : -1.0);
+  m_layout.prepare(QTransform(), m_font);
 }
 
 void LabelItem::setText(const QString& text) {
   if (text == m_text) return;
   prepareGeometryChange();
   m_text = text;
+  layOut();
 }
 
 void LabelItem::setColor(const QColor& color) {
@@ -36,8 +48,10 @@ void LabelItem::setBoxed(bool boxed) {
 }
 
 void LabelItem::setMaximumWidth(double pixels) {
+  if (pixels == m_maximumWidth) return;
   prepareGeometryChange();
   m_maximumWidth = pixels;
+  layOut();
 }
 
 void LabelItem::setPlacement(const QPointF& offsetPx, Qt::Alignment alignment) {
@@ -55,10 +69,7 @@ void LabelItem::placeToward(const QPointF& direction, double distancePx) {
 }
 
 QRectF LabelItem::textRect() const {
-  const QFontMetricsF metrics(m_font);
-  const QSizeF size = m_maximumWidth > 0.0
-                          ? metrics.boundingRect(QRectF(0.0, 0.0, m_maximumWidth, 1e6), Qt::TextWordWrap, m_text).size()
-                          : QSizeF(metrics.horizontalAdvance(m_text), metrics.height());
+  const QSizeF size = m_size;
   QPointF topLeft = m_offset;
   if (m_alignment & Qt::AlignRight) topLeft.rx() -= size.width();
   else if (m_alignment & Qt::AlignHCenter) topLeft.rx() -= size.width() / 2.0;
@@ -88,7 +99,9 @@ void LabelItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidge
   }
   painter->setFont(m_font);
   painter->setPen(color);
-  painter->drawText(rect, Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, m_text);
+  // Centred in the box upright, as drawText with AlignVCenter would.
+  const double top = rect.top() + (rect.height() - m_layout.size().height()) / 2.0;
+  painter->drawStaticText(QPointF(rect.left(), top), m_layout);
 }
 
 }  // namespace linkwright::ui

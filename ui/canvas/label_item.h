@@ -5,6 +5,7 @@
 #include <QColor>
 #include <QFont>
 #include <QGraphicsItem>
+#include <QStaticText>
 #include <QString>
 
 #include <optional>
@@ -35,8 +36,13 @@ public:
 
 private:
   QRectF textRect() const;
+  // Lays the text out once per change: a drag repaints every label on every move, and shaping
+  // the text each time was most of their cost.
+  void layOut();
 
   QString m_text;
+  QStaticText m_layout;           // the text, shaped and wrapped
+  QSizeF m_size;                  // its box, as the font's metrics measure it
   std::optional<QColor> m_color;  // nullopt: the theme's
   QFont m_font;
   bool m_boxed = false;

@@ -41,6 +41,9 @@ LinkageScene::LinkageScene(QObject* parent)
     : QGraphicsScene(parent), m_range(new FeasibleRangeItem), m_centres(new InstantCentresItem),
       m_message(new LabelItem) {
   setBackgroundBrush(colors().canvasBackground);
+  // The links and labels move on every frame of a drag, and Qt rebuilds its BSP index for
+  // each move; a plain search serves a few dozen items as fast (Qt's advice for moving scenes).
+  setItemIndexMethod(NoIndex);
   addItem(m_range);
   addItem(m_centres);
   m_centres->setVisible(false);

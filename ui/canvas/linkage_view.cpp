@@ -41,6 +41,8 @@ LinkageView::LinkageView(MechanismDocument* document, QWidget* parent)
   // Cosmetic strokes reach past item bounds by a few pixels; repainting the whole viewport
   // leaves no trails and costs nothing for a dozen items.
   setViewportUpdateMode(FullViewportUpdate);
+  // drawBackground covers every pixel with the cached grid: Qt need not fill it first.
+  viewport()->setAttribute(Qt::WA_OpaquePaintEvent);
   setTransformationAnchor(NoAnchor);
   setResizeAnchor(AnchorViewCenter);
   setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);

@@ -2,6 +2,7 @@
 
 #include "ui/colors.h"
 #include "ui/plots/plot_area_alignment.h"
+#include "ui/plots/plot_grid.h"
 
 #include <QChart>
 #include <QLegend>
@@ -22,6 +23,7 @@ QChart* makeCrankAngleChart(const QString& title, QValueAxis* xAxis, QValueAxis*
   chart->addAxis(yAxis, Qt::AlignLeft);
   xAxis->setTickType(QValueAxis::TicksDynamic);
   xAxis->setTickAnchor(0.0);
+  new PlotGridItem(chart, xAxis, yAxis);  // owned by the chart
   return chart;
 }
 

@@ -1,5 +1,6 @@
 #include "ui/plots/force_chart_view.h"
 
+#include "ui/plots/chart_view_setup.h"
 #include "ui/plots/crank_angle_chart.h"
 #include "ui/plots/plot_quantity.h"
 
@@ -19,7 +20,7 @@ ForceChartView::ForceChartView(const QString& title, bool fromZero, QWidget* par
     : QChartView(parent), m_fromZero(fromZero), m_xAxis(new QValueAxis), m_yAxis(new QValueAxis) {
   QChart* chart = makeCrankAngleChart(title, m_xAxis, m_yAxis);
   setChart(chart);
-  setRenderHint(QPainter::Antialiasing);
+  setUpChartView(this);
   m_cursor = makeCrankCursor(chart, m_xAxis, m_yAxis);
   // The curves are simplified for the plot area's scale: a new one may need them drawn again.
   connect(chart, &QChart::plotAreaChanged, this, [this] {

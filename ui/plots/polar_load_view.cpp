@@ -1,8 +1,10 @@
 #include "ui/plots/polar_load_view.h"
 
 #include "ui/plots/chart_scale.h"
+#include "ui/plots/chart_view_setup.h"
 #include "ui/plots/force_chart_view.h"
 #include "ui/plots/plot_area_alignment.h"
+#include "ui/plots/plot_grid.h"
 #include "ui/plots/segmented_line.h"
 #include "ui/plots/series_visibility.h"
 
@@ -40,8 +42,9 @@ PolarLoadView::PolarLoadView(QWidget* parent)
     axis->setTickType(QValueAxis::TicksDynamic);
     axis->setTickAnchor(0.0);
   }
+  new PlotGridItem(chart, m_xAxis, m_yAxis);  // owned by the chart
   setChart(chart);
-  setRenderHint(QPainter::Antialiasing);
+  setUpChartView(this);
   m_originX->setObjectName(QStringLiteral("origin_x"));
   m_originY->setObjectName(QStringLiteral("origin_y"));
   for (QLineSeries* line : {m_originX, m_originY}) {

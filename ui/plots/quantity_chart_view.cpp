@@ -2,6 +2,7 @@
 
 #include "ui/colors.h"
 #include "ui/plots/chart_scale.h"
+#include "ui/plots/chart_view_setup.h"
 #include "ui/plots/crank_angle_chart.h"
 #include "ui/plots/series_visibility.h"
 
@@ -23,7 +24,7 @@ QuantityChartView::QuantityChartView(QuantityKind kind, const QString& title, QW
     : QChartView(parent), m_kind(kind), m_xAxis(new QValueAxis), m_yAxis(new QValueAxis) {
   QChart* chart = makeCrankAngleChart(title, m_xAxis, m_yAxis);
   setChart(chart);  // the view owns the chart, the chart its axes and series
-  setRenderHint(QPainter::Antialiasing);
+  setUpChartView(this);
   // OpenGL stays off (the default): a few 721-point lines draw well under a frame in
   // software, and the OpenGL path cannot be exported as SVG.
   m_cursor = makeCrankCursor(chart, m_xAxis, m_yAxis);
