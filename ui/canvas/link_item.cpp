@@ -7,7 +7,10 @@
 namespace linkwright::ui {
 
 LinkItem::LinkItem(const QColor& color, QGraphicsItem* parent) : QGraphicsLineItem(parent) {
-  QPen pen(color, canvas::kLinkWidthPx, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin);
+  // Flat ends: each end is a joint, whose pin covers it. Qt's raster engine draws a thick line
+  // with flat or square caps as one antialiased quad, and strokes a round-capped one as a
+  // path: on a six-bar the links were a quarter of the canvas's repaint.
+  QPen pen(color, canvas::kLinkWidthPx, Qt::SolidLine, Qt::FlatCap, Qt::RoundJoin);
   pen.setCosmetic(true);
   setPen(pen);
   setZValue(canvas::z::kLinks);
