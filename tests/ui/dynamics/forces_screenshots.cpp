@@ -13,6 +13,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QGraphicsScene>
+#include <QTabWidget>
 #include <QTextStream>
 
 namespace k = linkwright::kinematics;
@@ -58,6 +59,10 @@ void shoot(const std::string& example, double crankDeg, const QString& dir, bool
   save(panel, dir, tag + "_panel.png", {460, 600});
   ForcePlotPanel plots(&doc, &forces);
   save(plots, dir, tag + "_plots.png", {1000, 560});
+  if (auto* tabs = plots.findChild<QTabWidget*>()) {
+    tabs->setCurrentIndex(tabs->count() - 1);  // the polar load diagrams
+    save(plots, dir, tag + "_polar.png", {1000, 560});
+  }
 
   LinkageView view(&doc);
   auto* arrows = new ForceArrowsItem;
