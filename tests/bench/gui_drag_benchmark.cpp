@@ -15,9 +15,10 @@
 // the GUI thread's loop, and a display's frame clock paints between them. The longest single
 // event handled (QApplication::notify at the top level) is how long the GUI thread cannot
 // answer the user: issue 20's "never blocks for more than 16 ms". The window's sweeps are
-// threaded as the designer's are (Adaptive: a slow drag's sweep goes to a worker), and a move
-// is redrawn once what it started in a worker (the sweep, the force cycle) has landed and been
-// painted: drag-to-redraw counts the worker's time, the GUI thread's figures do not.
+// threaded as the designer's are (Adaptive: a slow drag's sweep and every drag's design grid
+// go to a worker), and a move is redrawn once what it started in a worker (the sweep, the
+// grid, the force cycle) has landed and been painted: drag-to-redraw counts the worker's
+// time, the GUI thread's figures do not.
 //
 //   build/bin/linkwright_gui_benchmark [--moves N] [--example NAME] [--quality draft|normal|precise] [--forces] [--trace]
 //                                      [--census] [--wander F] [--threading adaptive|gui]
@@ -280,8 +281,9 @@ int main(int argc, char** argv) {
     QApplication::sendPostedEvents();
     QApplication::processEvents();
     // What went to a worker is drawn when it lands: the GUI thread serves events meanwhile.
-    if (doc->sweepPending() || forces->cyclePending()) {
-      while (doc->sweepPending() || forces->cyclePending()) QApplication::processEvents(QEventLoop::WaitForMoreEvents);
+    const auto pending = [&] { return doc->sweepPending() || doc->analysisPending() || forces->cyclePending(); };
+    if (pending()) {
+      while (pending()) QApplication::processEvents(QEventLoop::WaitForMoreEvents);
       QApplication::processEvents();
       QApplication::sendPostedEvents();
       QApplication::processEvents();

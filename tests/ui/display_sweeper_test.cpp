@@ -2,7 +2,8 @@
 // six-bar at Precise lands equal, to the last bit, to the one the GUI thread computes; the
 // last sweep stays shown meanwhile; a newer edit cancels the older sweep and only the newest
 // lands; a sweep of another shape (other samples, quantities or structure) is never deferred;
-// and the core's sweep stops when told to.
+// and the core's sweep stops when told to. A drag's design grid (the analysis's crank range
+// and gaps) lands from a worker too, equal to the GUI thread's analysis.
 #include "ui/document/mechanism_document.h"
 
 #include "kinematics/design/design.h"
@@ -66,8 +67,8 @@ TEST_CASE("a drag's sweep in a worker lands equal to the GUI thread's, the last 
   CHECK_FALSE(inGui.sweepPending());
   CHECK(inWorker.sweep() == before);  // the views keep reading the last sweep
   CHECK(inWorker.design() == inGui.design());
-  CHECK(inWorker.pose() == inGui.pose());  // the pose and the analysis follow at once
-  CHECK(inWorker.analysis().inputRange == inGui.analysis().inputRange);
+  CHECK(inWorker.pose() == inGui.pose());                                // the pose follows at once
+  CHECK(inWorker.analysis().inputRange == inGui.analysis().inputRange);  // a full turn before and after
 
   inWorker.waitForSweep();
   CHECK_FALSE(inWorker.sweepPending());
@@ -172,4 +173,100 @@ TEST_CASE("the core's sweep stops when cancelled, and says so", "[document][swee
   const std::atomic<bool> running{false};
   CHECK_FALSE(k::sweepInto(design.mechanism, spec, {}, out, &running));
   CHECK(out == k::sweep(design.mechanism, spec, {}).value());
+}
+
+namespace {
+
+// The Watt II with E's second bar (to O6) `by` longer: -20 mm leaves the crank three
+// ranges, still holding 0°; -25 mm leaves it two, without 0°; +200 mm assembles nowhere.
+k::Design wattWithBar(const k::Design& watt, double by) {
+  k::Design d = watt;
+  std::get<k::RrrPoint>(d.mechanism.points.back().definition).secondLength += by;
+  return d;
+}
+
+void openWatt(MechanismDocument& doc, Threading threading) {
+  doc.setSweepThreading(threading);
+  doc.reset(*k::designForExample("watt-ii"));
+}
+
+}  // namespace
+
+TEST_CASE("a drag's design grid lands from a worker, and the analysis then equals the GUI thread's",
+          "[document][sweep][worker]") {
+  MechanismDocument inWorker;
+  MechanismDocument inGui;
+  openWatt(inWorker, Threading::Adaptive);
+  openWatt(inGui, Threading::GuiThread);
+  REQUIRE(inWorker.analysis().inputRange.fullRotation);
+  REQUIRE_FALSE(inWorker.analysisPending());  // a new document analyses at once
+
+  QSignalSpy spy(&inWorker, &MechanismDocument::changed);
+  const long sweepsBefore = inWorker.sweepsRun();
+  REQUIRE_FALSE(inWorker.edit(wattWithBar(inWorker.design(), -20.0), "bar", kDrag));
+  REQUIRE_FALSE(inGui.edit(wattWithBar(inGui.design(), -20.0), "bar", kDrag));
+  REQUIRE(inGui.analysis().inputRange.ranges.size() == 3);
+  // Accepted without its grid (it assembles at the crank angle shown); the grid is in a worker
+  // and the analysis keeps the last grid's range meanwhile. The pose follows at once.
+  CHECK(inWorker.analysisPending());
+  CHECK_FALSE(inGui.analysisPending());
+  CHECK(inWorker.sweepsRun() - sweepsBefore == 2);  // the display sweep and the grid, once each
+  CHECK(inWorker.analysis().inputRange.fullRotation);
+  CHECK(inWorker.pose() == inGui.pose());
+  CHECK(countOf(spy, Change::Analysis) == 0);
+
+  inWorker.waitForSweep();
+  CHECK_FALSE(inWorker.analysisPending());
+  CHECK(inWorker.analysis().inputRange == inGui.analysis().inputRange);
+  CHECK(inWorker.analysis().notAssembled == inGui.analysis().notAssembled);
+  CHECK(inWorker.crankAngle() == inGui.crankAngle());
+  CHECK(countOf(spy, Change::Analysis) == 1);  // the panel and the canvas redraw the range
+  CHECK(countOf(spy, Change::Motion) == 1);    // the edit's own: 0° is still in range
+}
+
+TEST_CASE("a drag's grid that changes no range lands unannounced", "[document][sweep][worker]") {
+  MechanismDocument doc;
+  openWatt(doc, Threading::Adaptive);
+  QSignalSpy spy(&doc, &MechanismDocument::changed);
+  REQUIRE_FALSE(doc.edit(wattWithBar(doc.design(), 10.0), "bar", kDrag));
+  CHECK(doc.analysisPending());
+  doc.waitForSweep();
+  CHECK(doc.analysis().inputRange.fullRotation);
+  CHECK(countOf(spy, Change::Analysis) == 0);
+}
+
+TEST_CASE("a drag's design that does not assemble at the crank angle shown is checked on its whole grid at once",
+          "[document][sweep][worker]") {
+  MechanismDocument inWorker;
+  MechanismDocument inGui;
+  openWatt(inWorker, Threading::Adaptive);
+  openWatt(inGui, Threading::GuiThread);
+  REQUIRE_FALSE(inWorker.edit(wattWithBar(inWorker.design(), -25.0), "bar", kDrag));
+  REQUIRE_FALSE(inGui.edit(wattWithBar(inGui.design(), -25.0), "bar", kDrag));
+  CHECK_FALSE(inWorker.analysisPending());
+  CHECK(inWorker.analysis().inputRange == inGui.analysis().inputRange);
+  CHECK(inWorker.crankAngle() == inGui.crankAngle());  // clamped out of the gap at once
+  CHECK(inWorker.crankAngle() > 6.0);
+  CHECK(inWorker.poseStatus() == k::PoseStatus::Ok);
+
+  // One that assembles nowhere is refused as before, and nothing changes.
+  const k::Design kept = inWorker.design();
+  const auto why = inWorker.edit(wattWithBar(kept, 200.0), "bar", kDrag);
+  REQUIRE(why);
+  CHECK(why->contains("cannot be assembled at any crank angle"));
+  CHECK(inWorker.design() == kept);
+  CHECK_FALSE(inWorker.analysisPending());
+}
+
+TEST_CASE("a grid in flight never lands on a later design", "[document][sweep][worker]") {
+  MechanismDocument doc;
+  openWatt(doc, Threading::Adaptive);
+  REQUIRE_FALSE(doc.edit(wattWithBar(doc.design(), -20.0), "bar", kDrag));
+  REQUIRE(doc.analysisPending());
+  doc.reset(*k::designForExample("thesis-crank-rocker"));
+  CHECK_FALSE(doc.analysisPending());
+  QTest::qWait(50);  // a stray landing would arrive through the event loop
+  doc.waitForSweep();
+  CHECK(doc.analysis().inputRange.fullRotation);
+  CHECK(doc.analysis().grashof.has_value());  // the four-bar's analysis, not the Watt II's grid
 }

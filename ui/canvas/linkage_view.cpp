@@ -169,7 +169,8 @@ double LinkageView::fitSize() const {
 void LinkageView::zoomBy(double factor) { zoomAbout(QRectF(viewport()->rect()).center(), factor); }
 
 void LinkageView::onDocumentChanged(Changes what) {
-  if (what & (Changes(Change::Design) | Change::Request)) {
+  // The crank's feasible range is drawn from the analysis, which a drag's grid may bring later.
+  if (what & (Changes(Change::Design) | Change::Request | Change::Analysis)) {
     m_scene->updateDesign(*m_document);
     // reset() announces Design and File together; ordinary edits never do.
     if ((what & Change::Design) && (what & Change::File)) fitToView();

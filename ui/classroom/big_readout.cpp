@@ -217,7 +217,7 @@ void BigReadout::onDocumentChanged(Changes what) {
     return;
   }
   if (what & Change::Design) m_quantities = readoutQuantities(*m_document);
-  if (what & (Changes(Change::Design) | Change::Motion | Change::Request)) refresh();
+  if (what & (Changes(Change::Design) | Change::Motion | Change::Request | Change::Analysis)) refresh();
   if (what & Change::Design) fitFont();  // other quantities, another length of text
 }
 

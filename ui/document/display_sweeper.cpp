@@ -36,10 +36,15 @@ void DisplaySweeper::sweepNow(const k::Mechanism& mechanism, const k::SweepSpec&
   m_shape = shapeOf(mechanism, spec, request);
 }
 
-bool DisplaySweeper::sweep(const k::Mechanism& mechanism, const k::SweepSpec& spec, const k::SolveRequest& request) {
+bool DisplaySweeper::defers(const k::Mechanism& mechanism, const k::SweepSpec& spec,
+                            const k::SolveRequest& request) const {
   const bool slow =
       m_threading == Threading::Worker || (m_threading == Threading::Adaptive && m_milliseconds > kWorkerAfterMs);
-  if (!slow || shapeOf(mechanism, spec, request) != m_shape) {
+  return slow && shapeOf(mechanism, spec, request) == m_shape;
+}
+
+bool DisplaySweeper::sweep(const k::Mechanism& mechanism, const k::SweepSpec& spec, const k::SolveRequest& request) {
+  if (!defers(mechanism, spec, request)) {
     sweepNow(mechanism, spec, request);
     return false;
   }

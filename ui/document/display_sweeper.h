@@ -7,6 +7,8 @@
 // still fit the design, until the new one lands and landed() is emitted. A newer job cancels
 // an older one (the core's sweep stops within a few samples) and its result is dropped. Both
 // paths run the same kinematics::sweepInto on the same inputs, so they give the same numbers.
+// The document keeps a second one for its design's grid, which the analysis reads; a drag's
+// grid always goes to a worker there (Threading::Worker) unless the document is GuiThread.
 
 #include "kinematics/model/mechanism.h"
 #include "kinematics/solve/sweep.h"
@@ -48,6 +50,11 @@ public:
   /// shape; else now. Returns true when it went to a worker (then landed() follows).
   bool sweep(const kinematics::Mechanism& mechanism, const kinematics::SweepSpec& spec,
              const kinematics::SolveRequest& request);
+  /// Whether sweep() would send this sweep to a worker.
+  bool defers(const kinematics::Mechanism& mechanism, const kinematics::SweepSpec& spec,
+              const kinematics::SolveRequest& request) const;
+  /// Drops a pending job: its result never lands.
+  void cancel() { cancelPending(); }
   /// Blocks until a pending job has landed (exports, tests); no-op if none is pending.
   void waitForResult();
 

@@ -24,6 +24,7 @@ MechanismDocument::MechanismDocument(QObject* parent)
   connect(&m_estimateTimer, &QTimer::timeout, this, &MechanismDocument::measureQuality);
   connect(&m_estimator, &QualityEstimator::measured, this, &MechanismDocument::adoptEstimate);
   connect(&m_sweeper, &DisplaySweeper::landed, this, [this] { emit changed(Change::Request); });
+  connect(&m_grid.sweeper, &DisplaySweeper::landed, this, &MechanismDocument::adoptGridAnalysis);
   rebuild(SweepNow::Yes);
   connect(&m_undo, &QUndoStack::cleanChanged, this, [this] { emit changed(Change::File); });
 }
@@ -38,6 +39,10 @@ std::optional<QString> MechanismDocument::validate(const k::Design& design) cons
           "reach between the crank tip and the rocker pivot.");
     return std::nullopt;
   }
+  // A drag's design (the grid and structure of the one shown, only other lengths) that
+  // assembles at the instant shown is accepted at once where a worker sweeps the grid: the
+  // analysis lands with that sweep (gridDeferred).
+  if (gridDeferred(design) && assemblesAtInstant(design)) return std::nullopt;
   // Any linkage other than a four-bar has no closed-form range: it must assemble at one sample
   // of its grid at least, and the first failure says why it does not.
   const k::SweepResult& grid = sweepGrid(design);
@@ -51,20 +56,45 @@ std::optional<QString> MechanismDocument::validate(const k::Design& design) cons
       .arg(QString::fromStdString(grid.firstFailure.value_or("")));
 }
 
+k::SolveRequest MechanismDocument::gridRequest() const { return {false, false, m_request.newton}; }
+
 const k::SweepResult& MechanismDocument::sweepGrid(const k::Design& design) const {
   ++m_sweepsRun;
   m_grid.validated = false;
   // Only checked designs get here (checkDesign passed), so the sweep runs.
-  if (auto error =
-          k::sweepInto(design.mechanism, k::designSweepSpec(design), {false, false, m_request.newton}, m_grid.grid))
-    m_grid.grid = k::SweepResult{};
-  return m_grid.grid;
+  m_grid.sweeper.sweepNow(design.mechanism, k::designSweepSpec(design), gridRequest());
+  return m_grid.sweeper.result();
 }
 
 const k::SweepResult* MechanismDocument::takeValidatedGrid(const k::Design& design) {
   const bool usable =
       std::exchange(m_grid.validated, false) && m_grid.design == design && m_grid.request.newton == m_request.newton;
-  return usable ? &m_grid.grid : nullptr;
+  return usable ? &m_grid.sweeper.result() : nullptr;
+}
+
+bool MechanismDocument::gridDeferred(const k::Design& design) const {
+  return !design.time && m_grid.sweeper.defers(design.mechanism, k::designSweepSpec(design), gridRequest());
+}
+
+bool MechanismDocument::assemblesAtInstant(const k::Design& design) const {
+  m_candidatePose = m_pose;  // prepared for this structure; its free points start the solve
+  const k::DriverState driver{m_crankAngle, design.omega, design.alpha};
+  return k::solvePoseInto(design.mechanism, driver, {false, false}, m_candidatePose).status !=
+         k::PoseStatus::NotAssemblable;
+}
+
+void MechanismDocument::adoptGridAnalysis() {
+  k::DesignAnalysis analysis = k::analyseDesign(m_design.mechanism, m_grid.sweeper.result());
+  if (analysis.inputRange == m_analysis.inputRange && analysis.notAssembled == m_analysis.notAssembled) return;
+  m_analysis = std::move(analysis);
+  const double angle = m_crankAngle;
+  clampMotion();
+  Changes what = Change::Analysis;
+  if (m_crankAngle != angle) {
+    solvePoseNow();
+    what |= Change::Motion;
+  }
+  emit changed(what);
 }
 
 std::optional<QString> MechanismDocument::edit(const k::Design& design, const QString& description,
@@ -240,11 +270,20 @@ void MechanismDocument::rebuild(SweepNow now) {
   // whatever the plots' resolution; positions alone decide them. A four-bar whose crank turns
   // fully (closed form) has no gaps, so it skips this sweep; after an edit, the sweep that
   // validated the design a moment ago serves.
+  // A drag's grid may go to a worker (gridDeferred): until it lands, the analysis reads the
+  // last grid, of the same samples, and adoptGridAnalysis announces what changed.
   static const k::SweepResult kNoGrid;
   const k::SweepResult* grid = &kNoGrid;
   if (!m_fourBar || !k::fourBarInputRange(m_fourBar->lengths).fullRotation) {
     grid = takeValidatedGrid(m_design);
+    if (grid == nullptr && now == SweepNow::No && gridDeferred(m_design)) {
+      ++m_sweepsRun;
+      m_grid.sweeper.sweep(m_design.mechanism, k::designSweepSpec(m_design), gridRequest());
+      grid = &m_grid.sweeper.result();
+    }
     if (grid == nullptr) grid = &sweepGrid(m_design);
+  } else {
+    m_grid.sweeper.cancel();  // an older design's grid must not land on this one
   }
   m_analysis = k::analyseDesign(m_design.mechanism, *grid);
   clampMotion();

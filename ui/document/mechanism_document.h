@@ -8,6 +8,9 @@
 // Two grids: the analysis (crank range, gaps) uses the design's saved grid, as CSV export
 // does; the displayed sweep spans the same crank angles (or times) with as many samples as the
 // plots have pixels times the sampling quality, and computes only the quantities they show.
+// In the designer (threading other than GuiThread) a drag's design grid is swept in a worker:
+// the drag's design is accepted because it assembles at the crank angle shown, and the
+// analysis's range and gaps follow when the grid lands (changed(Analysis)).
 
 #include "ui/document/display_sweeper.h"
 #include "ui/document/edit_design_command.h"
@@ -40,6 +43,7 @@ enum class Change {
   File = 0x8,       ///< file name or modified flag
   Estimate = 0x10,  ///< the quality estimate was measured anew (qualityEstimate())
   PlotAxis = 0x20,  ///< what the plots' x axis shows (plotAxis())
+  Analysis = 0x40,  ///< the crank range and gaps changed when a drag's grid landed from a worker
 };
 Q_DECLARE_FLAGS(Changes, Change)
 Q_DECLARE_OPERATORS_FOR_FLAGS(Changes)
@@ -70,12 +74,24 @@ public:
   /// A drag's edit is being swept in a worker (display_sweeper.h): slow sweeps (a Newton
   /// linkage at Precise) never hold up the GUI thread. changed(Request) follows when it lands.
   bool sweepPending() const { return m_sweeper.pending(); }
-  /// Blocks until a pending sweep has landed, and announces it (exports, tests, benchmarks).
-  void waitForSweep() { m_sweeper.waitForResult(); }
-  /// Where a drag's sweeps run: GuiThread (the default: every edit's sweep is there at once),
-  /// or Adaptive (the designer's: in a worker once a sweep takes longer than
-  /// DisplaySweeper::kWorkerAfterMs), or Worker.
-  void setSweepThreading(DisplaySweeper::Threading threading) { m_sweeper.setThreading(threading); }
+  /// A drag's design grid (the analysis's crank range and gaps) is being swept in a worker;
+  /// analysis() holds the last grid's range and gaps meanwhile, and changed(Analysis) follows
+  /// if the new ones differ.
+  bool analysisPending() const { return m_grid.sweeper.pending(); }
+  /// Blocks until a pending sweep and grid have landed, and announces them (exports, tests,
+  /// benchmarks).
+  void waitForSweep() {
+    m_sweeper.waitForResult();
+    m_grid.sweeper.waitForResult();
+  }
+  /// Where a drag's sweeps run: GuiThread (the default: every edit's sweeps are there at once),
+  /// or Adaptive (the designer's: the displayed sweep in a worker once a sweep takes longer
+  /// than DisplaySweeper::kWorkerAfterMs, the design's grid always), or Worker (both always).
+  void setSweepThreading(DisplaySweeper::Threading threading) {
+    m_sweeper.setThreading(threading);
+    m_grid.sweeper.setThreading(threading == DisplaySweeper::Threading::GuiThread ? threading
+                                                                                  : DisplaySweeper::Threading::Worker);
+  }
   /// The grid of sweep(): the design's range, ω and α with displaySampleCount(quality(),
   /// displayWidth(), span) samples.
   const kinematics::SweepSpec& displaySpec() const { return m_displaySpec; }
@@ -191,15 +207,25 @@ private:
   QualityEstimator::Input estimateInput() const;
   void adoptEstimate(const QualityEstimate& estimate);
   // Sweeps `design`'s own grid, positions only (what validation and the analysis read), into
-  // m_grid: a drag sweeps it on every move, into the same memory.
+  // m_grid, now: a drag sweeps it on every move, into the same memory.
   const kinematics::SweepResult& sweepGrid(const kinematics::Design& design) const;
+  kinematics::SolveRequest gridRequest() const;
   // The grid validate() swept for `design`, if it is the last one validated; taken once.
   const kinematics::SweepResult* takeValidatedGrid(const kinematics::Design& design);
+  // Whether `design`'s grid would be swept in a worker: a drag's (the samples and structure
+  // of the grid shown), where the threading is not GuiThread; never on a time base.
+  bool gridDeferred(const kinematics::Design& design) const;
+  // Whether `design` assembles at the crank angle shown: such a drag's design is valid (it
+  // assembles somewhere), checked without sweeping its grid.
+  bool assemblesAtInstant(const kinematics::Design& design) const;
+  // A worker's grid landed: the analysis takes its range and gaps, and the crank is clamped
+  // into the range; announced only if they changed.
+  void adoptGridAnalysis();
 
   // The grid last swept, and the design and request it was validated for (`validated` until
   // the design it accepted is applied), so that applying it does not sweep again.
   struct DesignGrid {
-    kinematics::SweepResult grid;
+    DisplaySweeper sweeper;  // its result() is the grid
     kinematics::Design design;
     kinematics::SolveRequest request;
     bool validated = false;
@@ -220,6 +246,7 @@ private:
   QTimer m_estimateTimer;
   QualityEstimator m_estimator;
   kinematics::Pose m_pose;
+  mutable kinematics::Pose m_candidatePose;  // assemblesAtInstant's, reused
   kinematics::PoseStatus m_poseStatus = kinematics::PoseStatus::Ok;
   kinematics::SolveRequest m_request{true, true};
   bool m_forcesNeeded = false;

@@ -82,7 +82,7 @@ AnalysisPanel::AnalysisPanel(MechanismDocument* document, QWidget* parent)
   m_form->addRow(m_warning);
   layout->addWidget(box);
   connect(document, &MechanismDocument::changed, this, [this](Changes what) {
-    if (what & Change::Design) refreshDesign();
+    if (what & (Changes(Change::Design) | Change::Analysis)) refreshDesign();  // a drag's grid landed
     refreshMotion();
   });
   refreshDesign();
