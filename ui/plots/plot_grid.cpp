@@ -44,7 +44,7 @@ std::vector<double> majorTickPixels(const QValueAxis& axis, double from, double 
 int gridPixel(double pixel) { return static_cast<int>(std::floor(pixel)); }
 
 PlotGridItem::PlotGridItem(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis)
-    : QGraphicsObject(chart), m_chart(chart), m_xAxis(xAxis), m_yAxis(yAxis), m_area(chart->plotArea()) {
+    : QGraphicsObject(chart), m_xAxis(xAxis), m_yAxis(yAxis), m_area(chart->plotArea()) {
   setZValue(kGridZ);
   setAcceptedMouseButtons(Qt::NoButton);  // the curves' hover and the view's gestures pass through
   follow(xAxis);

@@ -39,9 +39,7 @@ public:
 
 private:
   void follow(QValueAxis* axis);  // repaints when what places or colours its lines changes
-  void followPlotArea();
 
-  QChart* m_chart;
   QValueAxis* m_xAxis;
   QValueAxis* m_yAxis;
   QRectF m_area;  // the plot area, chart coordinates
