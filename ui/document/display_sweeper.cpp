@@ -1,5 +1,7 @@
 #include "ui/document/display_sweeper.h"
 
+#include "ui/worker_pool.h"
+
 #include <QtConcurrent>
 
 #include <chrono>
@@ -52,7 +54,7 @@ bool DisplaySweeper::sweep(const k::Mechanism& mechanism, const k::SweepSpec& sp
   // The result this one replaced lends its memory; a cancelled job keeps its own.
   std::shared_ptr<k::SweepResult> target = m_spare ? std::move(m_spare) : std::make_shared<k::SweepResult>();
   auto cancel = std::make_shared<std::atomic<bool>>(false);
-  auto future = QtConcurrent::run([mechanism, spec, request, target, cancel] {
+  auto future = QtConcurrent::run(workerPool(), [mechanism, spec, request, target, cancel] {
     const auto start = std::chrono::steady_clock::now();
     auto outcome = std::make_shared<Outcome>();
     outcome->ok = !k::sweepInto(mechanism, spec, request, *target, cancel.get());

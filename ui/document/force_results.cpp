@@ -1,6 +1,7 @@
 #include "ui/document/force_results.h"
 
 #include "ui/number_text.h"
+#include "ui/worker_pool.h"
 
 #include <QCoreApplication>
 #include <QtConcurrent>
@@ -128,7 +129,7 @@ void ForceResults::solveCycle() {
     return;
   }
   auto cancel = std::make_shared<std::atomic<bool>>(false);
-  auto job = QtConcurrent::run([input = std::move(input), cancel]() mutable {
+  auto job = QtConcurrent::run(workerPool(), [input = std::move(input), cancel]() mutable {
     return std::make_shared<k::Result<ForceCycle>>(solveForceCycle(std::move(input), cancel.get()));
   });
   // The watcher goes with its job: a cancelled one is deleted, and its signal with it.

@@ -1,5 +1,7 @@
 #include "ui/document/quality_estimator.h"
 
+#include "ui/worker_pool.h"
+
 #include <QtConcurrent>
 
 #include <utility>
@@ -29,7 +31,7 @@ void QualityEstimator::cancel() {
 void QualityEstimator::launch(Input input) {
   m_running = true;
   m_dropRunning = false;
-  m_watcher.setFuture(QtConcurrent::run([input = std::move(input)] {
+  m_watcher.setFuture(QtConcurrent::run(workerPool(), [input = std::move(input)] {
     return estimatePeakError(input.mechanism, input.omega, input.samplesPerRevolution, input.newton);
   }));
 }

@@ -1,5 +1,7 @@
 #include "ui/synthesis/path_search_worker.h"
 
+#include "ui/worker_pool.h"
+
 #include <QPointer>
 #include <QtConcurrent/QtConcurrentRun>
 
@@ -28,7 +30,7 @@ void PathSearchWorker::start(const PathRequest& request, const k::DefectBounds& 
   connect(watcher, &QFutureWatcherBase::finished, this, [this, serial, watcher] { onFinished(serial, watcher); });
   m_watcher = watcher;
   QPointer<PathSearchWorker> self(this);
-  watcher->setFuture(QtConcurrent::run([request, bounds, flag, serial, self]() {
+  watcher->setFuture(QtConcurrent::run(workerPool(), [request, bounds, flag, serial, self]() {
     // Called on the worker thread; the destructor waits for this thread, so `self` outlives it.
     const k::PathProgress report = [&self, serial](int done, int total) {
       QMetaObject::invokeMethod(
