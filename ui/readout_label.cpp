@@ -18,10 +18,12 @@ void ReadoutLabel::setText(const QString& text) {
   if (text == m_text) return;
   m_text = text;
   // Laid out already, the new text needs no more lines than the label holds at this width and
-  // has no word wider than it: nothing around the label moves.
-  const int need = linesHeight(text, width());
-  if (width() <= 0 || need > m_heldHeight || widestWord(text) > width()) {
-    m_heldHeight = std::max(m_heldHeight, need);
+  // has no word wider than it: nothing around the label moves. One wrapped layout tells both:
+  // a word that cannot be wrapped makes its line, and so the text, wider than the label.
+  if (width() <= 0) {
+    updateGeometry();
+  } else if (const QRect needed = wrapped(text, width()); needed.height() > m_heldHeight || needed.width() > width()) {
+    m_heldHeight = std::max(m_heldHeight, needed.height());
     updateGeometry();
   }
   update();
@@ -32,12 +34,15 @@ void ReadoutLabel::resizeEvent(QResizeEvent* event) {
   if (event->size().width() != event->oldSize().width()) m_heldHeight = linesHeight(m_text, width());
 }
 
-int ReadoutLabel::linesHeight(const QString& text, int width) const {
+QRect ReadoutLabel::wrapped(const QString& text, int width) const {
   const int oneLine = fontMetrics().height();
-  if (text.isEmpty()) return oneLine;
+  if (text.isEmpty()) return {0, 0, 0, oneLine};
   const QRect room(0, 0, std::max(1, width), std::numeric_limits<int>::max() / 2);
-  return std::max(oneLine, fontMetrics().boundingRect(room, kFlags, text).height());
+  const QRect used = fontMetrics().boundingRect(room, kFlags, text);
+  return {0, 0, used.width(), std::max(oneLine, used.height())};
 }
+
+int ReadoutLabel::linesHeight(const QString& text, int width) const { return wrapped(text, width).height(); }
 
 int ReadoutLabel::widestWord(const QString& text) const {
   static const QRegularExpression space(QStringLiteral("\\s+"));

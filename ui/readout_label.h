@@ -37,6 +37,9 @@ protected:
 
 private:
   static constexpr int kFlags = Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap;
+  /// The size `text` takes wrapped at `width`, one line high at least; wider than `width` when
+  /// a word is.
+  QRect wrapped(const QString& text, int width) const;
   /// The height `text` takes wrapped at `width`: one line at least.
   int linesHeight(const QString& text, int width) const;
   int widestWord(const QString& text) const;

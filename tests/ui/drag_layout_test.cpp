@@ -145,4 +145,13 @@ TEST_CASE("a read-out label asks for a new layout only when its text needs one",
   panel.resize(340, 100);
   QApplication::processEvents();
   CHECK(label->height() == oneLine);
+
+  // A word wider than the label cannot be wrapped, though it fits in the lines held: the label
+  // asks for the room of its widest word.
+  requests.receivers.clear();
+  const QString word(label->width() / label->fontMetrics().horizontalAdvance(QChar(u'W')) + 4, QChar(u'W'));
+  label->setText(word);
+  QApplication::processEvents();
+  CHECK_FALSE(requests.receivers.isEmpty());
+  CHECK(label->minimumSizeHint().width() == label->fontMetrics().horizontalAdvance(word));
 }
