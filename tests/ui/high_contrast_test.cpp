@@ -18,7 +18,6 @@
 #include <catch2/catch.hpp>
 
 #include <QChart>
-#include <QLineSeries>
 #include <QValueAxis>
 
 #include <cmath>
@@ -49,9 +48,9 @@ const LinkageScene& sceneOf(const MainWindow& window) {
 }
 
 QColor curveColour(const MainWindow& window, PlotQuantity quantity) {
-  const QList<QLineSeries*> segments = window.plots()->chartView(QuantityKind::Angle)->segments(quantity);
-  REQUIRE_FALSE(segments.isEmpty());
-  return segments.front()->pen().color();
+  const CurveItem* curve = window.plots()->chartView(QuantityKind::Angle)->curveItem(quantity);
+  REQUIRE(curve != nullptr);
+  return curve->pen().color();
 }
 
 }  // namespace

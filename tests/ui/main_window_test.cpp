@@ -40,7 +40,6 @@
 #include <QFile>
 #include <QImage>
 #include <QLegend>
-#include <QLineSeries>
 #include <QScatterSeries>
 #include <QTemporaryDir>
 #include <QTest>
@@ -205,10 +204,10 @@ TEST_CASE("presentation mode enlarges the fonts and can be left again", "[ui][wi
   const auto axisFont = [&] { return chart->axes(Qt::Vertical).front()->labelsFont(); };
   const auto size = [](const QFont& f) { return f.pixelSize() > 0 ? f.pixelSize() : f.pointSizeF(); };
   const double title = size(chart->titleFont()), labels = size(axisFont()), legend = size(chart->legend()->font());
-  QList<QLineSeries*> curves =
-      window.plots()->chartView(ui::QuantityKind::Omega)->segments(ui::PlotQuantity::RockerOmega);
-  REQUIRE_FALSE(curves.isEmpty());
-  const double pen = curves.front()->pen().widthF();
+  const ui::CurveItem* curve =
+      window.plots()->chartView(ui::QuantityKind::Omega)->curveItem(ui::PlotQuantity::RockerOmega);
+  REQUIRE(curve != nullptr);
+  const double pen = curve->pen().widthF();
   QChart* force = window.forcePlots()->torqueChart()->chart();
   const double forceTitle = size(force->titleFont());
   window.setPresentationMode(true);
@@ -216,13 +215,13 @@ TEST_CASE("presentation mode enlarges the fonts and can be left again", "[ui][wi
   CHECK(size(chart->titleFont()) >= 1.5 * title);
   CHECK(size(axisFont()) >= 1.5 * labels);
   CHECK(size(chart->legend()->font()) >= 1.5 * legend);
-  CHECK(curves.front()->pen().widthF() >= 1.5 * pen);
+  CHECK(curve->pen().widthF() >= 1.5 * pen);
   CHECK(size(force->titleFont()) >= 1.5 * forceTitle);
   window.setPresentationMode(false);
   CHECK(window.font().pointSizeF() == normal);
   CHECK(size(chart->titleFont()) == title);
   CHECK(size(axisFont()) == labels);
-  CHECK(curves.front()->pen().widthF() == pen);
+  CHECK(curve->pen().widthF() == pen);
 }
 
 TEST_CASE("presentation mode opens on every example, and only the bottom chart names the x axis", "[ui][window]") {
@@ -275,9 +274,11 @@ TEST_CASE("typing a length in the panel updates the badge and the plotted series
   CHECK(window.analysisPanel()->grashofText().contains("Triple-rocker"));
   // The rocker's ω curve now holds exactly the new sweep's values at its assembled samples.
   const auto& sweep = window.document()->sweep();
-  const auto segments = window.plots()->chartView(ui::QuantityKind::Omega)->segments(ui::PlotQuantity::RockerOmega);
-  REQUIRE_FALSE(segments.isEmpty());
-  const QList<QPointF> plotted = segments.front()->points();
+  const ui::CurveItem* curve =
+      window.plots()->chartView(ui::QuantityKind::Omega)->curveItem(ui::PlotQuantity::RockerOmega);
+  REQUIRE(curve != nullptr);
+  REQUIRE_FALSE(curve->runs().isEmpty());
+  const QList<QPointF> plotted = curve->runs().front();
   REQUIRE_FALSE(plotted.isEmpty());
   std::size_t first = 0;
   while (!sweep.ok(first)) ++first;

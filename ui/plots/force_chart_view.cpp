@@ -6,7 +6,6 @@
 
 #include <QChart>
 #include <QLegend>
-#include <QLineSeries>
 #include <QValueAxis>
 
 #include <algorithm>
@@ -101,8 +100,8 @@ void ForceChartView::resizeEvent(QResizeEvent* event) {
 
 void ForceChartView::setCursorX(std::optional<double> x) { m_cursor->setX(x); }
 
-QList<QLineSeries*> ForceChartView::segments(std::size_t index) const {
-  return index < m_lines.size() ? m_lines[index].segments() : QList<QLineSeries*>{};
+CurveItem* ForceChartView::curveItem(std::size_t index) const {
+  return index < m_lines.size() ? m_lines[index].item() : nullptr;
 }
 
 QList<QPointF> ForceChartView::samples(std::size_t index) const {

@@ -2,7 +2,7 @@
 // A chart of force quantities against time or crank angle (the driving torque, the joint
 // reaction magnitudes): a line per curve, split into segments where the forces were not
 // solved, explicit value axes with rounded ranges, and a cursor (VerticalMarker) that moves
-// without touching the data. Series are updated with replace(); no animations.
+// without touching the data. The lines are our own items (curve_item.h); no animations.
 
 #include "ui/plots/angle_unit.h"
 #include "ui/plots/axis_range.h"
@@ -20,7 +20,6 @@
 #include <optional>
 #include <vector>
 
-class QLineSeries;
 class QValueAxis;
 
 namespace linkwright::ui {
@@ -28,7 +27,7 @@ namespace linkwright::ui {
 class ForceChartView : public QChartView {
   Q_OBJECT
 public:
-  /// One line of the chart: its series' object name ("torque", "joint_B"), legend text, colour.
+  /// One line of the chart: its object name ("torque", "joint_B"), legend text, colour.
   using Curve = SegmentedLine::Style;
 
   /// A chart titled `title`; `fromZero` keeps 0 on the value axis (magnitudes).
@@ -51,8 +50,8 @@ public:
   void setCursorX(std::optional<double> x);
   std::optional<double> cursorX() const { return m_cursor->x(); }
 
-  /// The segments of curve `index`; the first carries the legend entry.
-  QList<QLineSeries*> segments(std::size_t index) const;
+  /// The line of curve `index`, or null.
+  CurveItem* curveItem(std::size_t index) const;
   /// The samples curve `index` stands for, in order, gaps left out (segmented_line.h).
   QList<QPointF> samples(std::size_t index) const;
   QValueAxis* xAxis() const { return m_xAxis; }

@@ -9,7 +9,6 @@
 #include <QChart>
 #include <QFontMetricsF>
 #include <QGraphicsLayout>
-#include <QLineSeries>
 #include <QScatterSeries>
 #include <QValueAxis>
 
@@ -53,12 +52,10 @@ void QuantityChartView::setCurves(const std::vector<PlotCurve>& curves) {
   removeMarkers();  // outlined in the curves' colours (a theme switch): the next setOverlay remakes them
   m_curves.reserve(mine.size());
   for (const PlotCurve& c : mine) {
+    m_curves.push_back({c, SegmentedLine(chart(), m_xAxis, m_yAxis, {c.key, c.name, c.color})});
     const PlotQuantity q = c.quantity;
-    auto hover = [this, q](QLineSeries* segment) {
-      connect(segment, &QXYSeries::hovered, this,
-              [this, q, segment](const QPointF& p, bool inside) { onSegmentHovered(q, segment, p, inside); });
-    };
-    m_curves.push_back({c, SegmentedLine(chart(), m_xAxis, m_yAxis, {c.key, c.name, c.color}, hover)});
+    connect(m_curves.back().line.item(), &CurveItem::hovered, this,
+            [this, q](qsizetype run, QPointF p, bool inside) { onCurveHovered(q, run, p, inside); });
   }
   m_cursor->raise();  // over the curves, as before they were replaced
 }
@@ -209,10 +206,10 @@ void QuantityChartView::resizeEvent(QResizeEvent* event) {
 
 void QuantityChartView::setCursorX(std::optional<double> x) { m_cursor->setX(x); }
 
-QList<QLineSeries*> QuantityChartView::segments(PlotQuantity quantity) const {
+CurveItem* QuantityChartView::curveItem(PlotQuantity quantity) const {
   for (const Curve& curve : m_curves)
-    if (curve.curve.quantity == quantity) return curve.line.segments();
-  return {};
+    if (curve.curve.quantity == quantity) return curve.line.item();
+  return nullptr;
 }
 
 QList<QPointF> QuantityChartView::samples(PlotQuantity quantity) const {
@@ -221,12 +218,10 @@ QList<QPointF> QuantityChartView::samples(PlotQuantity quantity) const {
   return {};
 }
 
-void QuantityChartView::onSegmentHovered(PlotQuantity quantity, const QLineSeries* segment, QPointF point,
-                                         bool inside) {
+void QuantityChartView::onCurveHovered(PlotQuantity quantity, qsizetype run, QPointF point, bool inside) {
   for (const Curve& curve : m_curves)
     if (curve.curve.quantity == quantity)
-      if (const auto sample = curve.line.nearestSample(segment, point.x()))
-        emit curveHovered(quantity, *sample, inside);
+      if (const auto sample = curve.line.nearestSample(run, point.x())) emit curveHovered(quantity, *sample, inside);
 }
 
 }  // namespace linkwright::ui

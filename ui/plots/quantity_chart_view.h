@@ -22,7 +22,6 @@
 #include <memory>
 #include <vector>
 
-class QLineSeries;
 class QScatterSeries;
 class QValueAxis;
 
@@ -67,11 +66,10 @@ public:
   /// Moves the cursor to `x` (plot units), or hides it. Touches no data series.
   void setCursorX(std::optional<double> x);
   std::optional<double> cursorX() const { return m_cursor->x(); }
-  /// The line segments of `quantity` (empty for a quantity of another kind); the first one
-  /// carries the legend entry.
-  QList<QLineSeries*> segments(PlotQuantity quantity) const;
-  /// The samples `quantity`'s line stands for, in sweep order, gaps left out (the segments
-  /// draw only the vertices the screen needs of them); empty while it is not selected.
+  /// The line of `quantity`, or null for a quantity of another kind.
+  CurveItem* curveItem(PlotQuantity quantity) const;
+  /// The samples `quantity`'s line stands for, in sweep order, gaps left out (the line draws
+  /// only the vertices the screen needs of them); empty while it is not selected.
   QList<QPointF> samples(PlotQuantity quantity) const;
 
 signals:
@@ -97,7 +95,7 @@ private:
   };
 
   void removeMarkers();
-  void onSegmentHovered(PlotQuantity quantity, const QLineSeries* segment, QPointF point, bool inside);
+  void onCurveHovered(PlotQuantity quantity, qsizetype run, QPointF point, bool inside);
   // The value axis over the data's span, with no more ticks than the plot's height can label.
   void applyValueRange();
   int tickBudget() const;

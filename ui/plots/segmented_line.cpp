@@ -16,32 +16,20 @@
 namespace linkwright::ui {
 namespace {
 constexpr double kCurveWidth = 2.0;
-// Segments made with the curve: a linkage dragged into a rocking crank splits its curves into
-// two runs (one gap inside the grid), and a series added to a chart mid-drag costs a frame (Qt
-// Charts makes its item, legend marker and axis links, then lays out and repaints the chart).
-// Not more: every series makes each later layout of its chart a little slower.
-constexpr int kSegmentsMadeAhead = 2;
 }  // namespace
 
-SegmentedLine::SegmentedLine(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis, Style style,
-                             std::function<void(QLineSeries*)> onNewSegment)
-    : m_chart(chart), m_xAxis(xAxis), m_yAxis(yAxis), m_style(std::move(style)),
-      m_onNewSegment(std::move(onNewSegment)) {
-  for (int i = 0; i < kSegmentsMadeAhead; ++i) addSegment();
-}
-
-QLineSeries* SegmentedLine::addSegment() {
-  auto* segment = new QLineSeries;
-  segment->setObjectName(m_style.key);
-  segment->setName(m_style.name);
-  segment->setPen(QPen(m_style.color, scaledPenWidth(m_chart, kCurveWidth)));
-  m_chart->addSeries(segment);
-  segment->attachAxis(m_xAxis);
-  segment->attachAxis(m_yAxis);
-  if (m_onNewSegment) m_onNewSegment(segment);
-  m_segments.append(segment);
-  setSeriesShown(m_chart, segment, false, false);
-  return segment;
+SegmentedLine::SegmentedLine(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis, Style style)
+    : m_chart(chart), m_xAxis(xAxis), m_yAxis(yAxis), m_style(std::move(style)), m_legendEntry(new QLineSeries) {
+  m_legendEntry->setObjectName(m_style.key);
+  m_legendEntry->setName(m_style.name);
+  m_legendEntry->setPen(QPen(m_style.color, scaledPenWidth(m_chart, kCurveWidth)));
+  m_chart->addSeries(m_legendEntry);
+  m_legendEntry->attachAxis(m_xAxis);
+  m_legendEntry->attachAxis(m_yAxis);
+  setSeriesShown(m_chart, m_legendEntry, false, false);
+  m_item = new CurveItem(m_chart, m_xAxis, m_yAxis, m_legendEntry);
+  m_item->setObjectName(m_style.key);
+  m_item->setVisible(false);
 }
 
 void SegmentedLine::setRuns(const SeriesRuns& runs, bool shown) {
@@ -61,21 +49,13 @@ ScreenScale SegmentedLine::currentScale() const {
 }
 
 void SegmentedLine::draw() {
-  const qsizetype runCount = m_runs.runs.size();
-  while (m_segments.size() < runCount) addSegment();
   m_drawnScale = currentScale();
-  for (qsizetype i = 0; i < m_segments.size(); ++i) {
-    QLineSeries* segment = m_segments[i];
-    if (i < runCount) {
-      simplifyForScreen(m_runs.runs[i], m_drawnScale, kCurveTolerancePx, m_vertices, m_scratch);
-      segment->replace(m_vertices);
-    } else if (segment->count() > 0) {
-      segment->replace(QList<QPointF>{});
-    }
-    // A spare segment stays visible, only empty: showing a series re-shows its legend marker,
-    // and each crossing into or out of a gap would then lay the chart out again.
-    setSeriesShown(m_chart, segment, m_shown, i == 0);
-  }
+  QList<QList<QPointF>> vertices(m_runs.runs.size());
+  for (qsizetype i = 0; i < m_runs.runs.size(); ++i)
+    simplifyForScreen(m_runs.runs[i], m_drawnScale, kCurveTolerancePx, vertices[i], m_scratch);
+  m_item->setRuns(std::move(vertices));
+  if (m_item->isVisible() != m_shown) m_item->setVisible(m_shown);
+  setSeriesShown(m_chart, m_legendEntry, m_shown, true);
 }
 
 void SegmentedLine::rescale() {
@@ -97,20 +77,19 @@ QList<QPointF> SegmentedLine::samples() const {
   return all;
 }
 
-std::optional<QPointF> SegmentedLine::nearestSample(const QLineSeries* segment, qreal x) const {
-  const qsizetype i = std::find(m_segments.begin(), m_segments.end(), segment) - m_segments.begin();
-  if (i >= m_runs.runs.size() || m_runs.runs[i].isEmpty()) return std::nullopt;
-  const QList<QPointF>& run = m_runs.runs[i];
-  return *std::min_element(run.begin(), run.end(),
+std::optional<QPointF> SegmentedLine::nearestSample(qsizetype run, qreal x) const {
+  if (run < 0 || run >= m_runs.runs.size() || m_runs.runs[run].isEmpty()) return std::nullopt;
+  const QList<QPointF>& samples = m_runs.runs[run];
+  return *std::min_element(samples.begin(), samples.end(),
                            [x](QPointF a, QPointF b) { return std::abs(a.x() - x) < std::abs(b.x() - x); });
 }
 
 void SegmentedLine::removeFromChart() {
-  for (QLineSeries* segment : m_segments) {
-    m_chart->removeSeries(segment);
-    delete segment;
-  }
-  m_segments.clear();
+  delete m_item;
+  m_item = nullptr;
+  m_chart->removeSeries(m_legendEntry);
+  delete m_legendEntry;
+  m_legendEntry = nullptr;
 }
 
 }  // namespace linkwright::ui

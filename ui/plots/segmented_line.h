@@ -1,11 +1,12 @@
 #pragma once
-// One curve of a chart drawn as line segments: a curve breaks wherever its samples are missing
-// (not assembled, singular), and each run of samples is its own QLineSeries on the chart's two
-// axes. Shared by the kinematics and the force charts. Series are updated with replace(), and
-// hold only the vertices the plot area can show (screen_simplify.h: every sample within
-// kCurveTolerancePx of the drawn line); the samples themselves stay here for the hover
-// read-out, so it gives a sample's exact value.
+// One curve of a chart, broken wherever its samples are missing (not assembled, singular) into
+// runs that no line joins. Shared by the kinematics and the force charts. The runs are drawn
+// by one CurveItem (curve_item.h) and hold only the vertices the plot area can show
+// (screen_simplify.h: every sample within kCurveTolerancePx of the drawn line); the samples
+// themselves stay here for the hover read-out, so it gives a sample's exact value. An empty
+// series of the chart names the curve in the legend.
 
+#include "ui/plots/curve_item.h"
 #include "ui/plots/series_data.h"
 #include "ui/screen_simplify.h"
 
@@ -13,7 +14,6 @@
 #include <QList>
 #include <QString>
 
-#include <functional>
 #include <optional>
 
 class QChart;
@@ -24,7 +24,7 @@ namespace linkwright::ui {
 
 class SegmentedLine {
 public:
-  /// How a segment looks and where it goes: its object name (`key`), legend text and colour.
+  /// How the curve looks and where it goes: its object name (`key`), legend text and colour.
   struct Style {
     QString key;
     QString name;
@@ -32,34 +32,30 @@ public:
     bool operator==(const Style&) const = default;
   };
 
-  /// Adds the curve's first few (empty, hidden) segments to `chart`, so that a drag into a
-  /// gap finds them made. `onNewSegment`, if set, is called for every segment made, these
-  /// included (a view connects its hover signal).
-  SegmentedLine(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis, Style style,
-                std::function<void(QLineSeries*)> onNewSegment = {});
+  /// Adds the curve (hidden, empty) and its legend entry to `chart`.
+  SegmentedLine(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis, Style style);
 
   /// How far (pixels) a sample may lie from the line drawn through the kept vertices.
   static constexpr double kCurveTolerancePx = 0.2;
 
-  /// Shows `runs`, one segment each (made as needed; spare ones emptied), simplified
-  /// for the chart's plot area and axis ranges as they are now: set the axes first. The first
-  /// segment stays visible while `shown`, even empty, so the legend names the curve.
+  /// Shows `runs`, simplified for the chart's plot area and axis ranges as they are now: set
+  /// the axes first. The legend names the curve while `shown`, even with no runs.
   void setRuns(const SeriesRuns& runs, bool shown);
   /// Draws the runs again if the plot area or the axes have changed the scale by more than a
   /// few per cent since they were drawn (a resize, a new axis range).
   void rescale();
-  /// The sample of `segment`'s run nearest `x` in x (every sample, not only the vertices drawn).
-  std::optional<QPointF> nearestSample(const QLineSeries* segment, qreal x) const;
-  /// Takes the segments off the chart and deletes them.
+  /// The sample of run `run` nearest `x` in x (every sample, not only the vertices drawn).
+  std::optional<QPointF> nearestSample(qsizetype run, qreal x) const;
+  /// Takes the curve and its legend entry off the chart and deletes them.
   void removeFromChart();
 
   /// The samples the curve stands for, run after run (the drawn vertices are some of them).
   QList<QPointF> samples() const;
   const Style& style() const { return m_style; }
-  const QList<QLineSeries*>& segments() const { return m_segments; }
+  /// The line drawn (its hovered signal tells which run the mouse is on).
+  CurveItem* item() const { return m_item; }
 
 private:
-  QLineSeries* addSegment();
   ScreenScale currentScale() const;
   void draw();
 
@@ -67,13 +63,12 @@ private:
   QValueAxis* m_xAxis;
   QValueAxis* m_yAxis;
   Style m_style;
-  std::function<void(QLineSeries*)> m_onNewSegment;
-  QList<QLineSeries*> m_segments;
-  SeriesRuns m_runs;  // the samples shown, all of them
+  QLineSeries* m_legendEntry;  // owned by the chart; never given points
+  CurveItem* m_item;           // owned by the chart
+  SeriesRuns m_runs;           // the samples shown, all of them
   bool m_shown = false;
   ScreenScale m_drawnScale;  // the scale m_runs were simplified for
   SimplifyScratch m_scratch;
-  QList<QPointF> m_vertices;  // one run's simplified points, reused
 };
 
 }  // namespace linkwright::ui

@@ -3,6 +3,7 @@
 #include "ui/plots/plot_panel.h"
 
 #include "four_bar_curves.h"
+#include "mouse_on_curve.h"
 #include "plotted_points.h"
 
 #include "ui/plots/hover_readout.h"
@@ -150,9 +151,9 @@ TEST_CASE("The checkboxes request only what is shown and hide empty charts", "[p
 
   // A hidden angle curve is emptied and out of the legend; the chart stays for the others.
   tick(panel, PlotQuantity::CouplerAngle, false);
-  const QLineSeries* couplerLine = panel.chartView(QuantityKind::Angle)->segments(PlotQuantity::CouplerAngle)[0];
+  const CurveItem* couplerLine = panel.chartView(QuantityKind::Angle)->curveItem(PlotQuantity::CouplerAngle);
   CHECK_FALSE(couplerLine->isVisible());
-  CHECK(couplerLine->count() == 0);
+  CHECK(couplerLine->runs().isEmpty());
 }
 
 TEST_CASE("A new mechanism is swept once, for what the plots will show of it", "[plot_panel]") {
@@ -215,8 +216,7 @@ TEST_CASE("A non-Grashof linkage plots nothing outside its assemblable range", "
   for (const PlotQuantity q : fourBarQuantities()) tick(panel, q, true);  // the ratios too
   for (const PlotQuantity q : fourBarQuantities()) {
     CAPTURE(fourBarCurve(q).key);
-    const QList<QLineSeries*> segments = panel.chartView(quantityKind(q))->segments(q);
-    CHECK(segments.size() >= 2);  // the gap splits the line
+    CHECK(panel.chartView(quantityKind(q))->curveItem(q)->runs().size() >= 2);  // the gap splits the line
     for (const QPointF& p : plotted(panel, q)) CHECK(doc.analysis().inputRange.contains(k::degToRad(p.x()), 1e-9));
   }
   CHECK(plotted(panel, PlotQuantity::RockerAngle).size() == assembled);
@@ -322,14 +322,27 @@ TEST_CASE("The angle chart marks the thesis crank-rocker's limits at 21.59° and
 TEST_CASE("Hovering a curve reads out the nearest sample with its unit", "[plot_panel]") {
   MechanismDocument doc;
   PlotPanel panel(&doc);
-  QLineSeries* omega = panel.chartView(QuantityKind::Omega)->segments(PlotQuantity::RockerOmega)[0];
-  // The mouse is near the line, not on a sample: the read-out snaps to the sample at 90°.
-  emit omega->hovered(QPointF(90.2, 0.0), true);
-  const double value = k::radToDeg(doc.sweep().linkOmega[kRocker][180]);
+  panel.resize(700, 900);
+  panel.show();
+  REQUIRE(QTest::qWaitForWindowExposed(&panel));
+  QCoreApplication::processEvents();
+  QuantityChartView& view = *panel.chartView(QuantityKind::Omega);
+  const CurveItem& omega = *view.curveItem(PlotQuantity::RockerOmega);
+  // The mouse a pixel off the line near 90°, between samples: the read-out snaps to the sample
+  // nearest the mouse's crank angle.
+  const double at90 = k::radToDeg(doc.sweep().linkOmega[kRocker][180]);
+  const QPoint pixel = test::pixelOf(view, omega, {90.0, at90}) + QPoint(0, 1);
+  const double crank = test::valueAt(view, omega, pixel).x();
+  const std::size_t nearest = static_cast<std::size_t>(std::lround(crank * 2.0));  // 721 samples, 0.5° apart
+  const QPointF sample(k::radToDeg(doc.sweep().inputAngle[nearest]),
+                       k::radToDeg(doc.sweep().linkOmega[kRocker][nearest]));
+  test::moveMouse(view, pixel);
   CHECK(panel.hoverReadout()->text() ==
-        readoutText(fourBarCurve(PlotQuantity::RockerOmega), {90.0, value}, AngleUnit::Degrees));
-  CHECK(panel.hoverReadout()->text().endsWith(QStringLiteral("deg/s at crank 90.0°")));
-  emit omega->hovered(QPointF(90.2, 0.0), false);
+        readoutText(fourBarCurve(PlotQuantity::RockerOmega), sample, AngleUnit::Degrees));
+  CHECK(sample.x() == Approx(90.0).margin(1.0));
+  CHECK(panel.hoverReadout()->text().contains(QStringLiteral(" deg/s at crank ")));
+  // Off the curves (the chart's corner) it reads nothing.
+  test::moveMouse(view, QPoint(2, 2));
   CHECK_FALSE(panel.hoverReadout()->text().contains(QStringLiteral("=")));
 }
 
@@ -356,8 +369,7 @@ TEST_CASE("Legends name the shown curves and nothing else", "[plot_panel]") {
 
   // A design with gaps draws the curves in more segments: still one legend entry per curve.
   const auto drawnSegments = [&panel] {
-    const QList<QLineSeries*> segments = panel.chartView(QuantityKind::Alpha)->segments(PlotQuantity::RockerAlpha);
-    return std::count_if(segments.begin(), segments.end(), [](const QLineSeries* s) { return s->count() > 0; });
+    return panel.chartView(QuantityKind::Alpha)->curveItem(PlotQuantity::RockerAlpha)->runs().size();
   };
   const auto segmentsBefore = drawnSegments();
   REQUIRE_FALSE(doc.edit(nonGrashof(), QStringLiteral("lengths")).has_value());
@@ -419,8 +431,7 @@ TEST_CASE("a drag into a rocking crank draws the gaps with the segments made ahe
   QChart* alpha = panel.chartView(QuantityKind::Alpha)->chart();
   const qsizetype seriesBefore = alpha->series().size();
   REQUIRE_FALSE(doc.edit(nonGrashof(), QStringLiteral("lengths"), MergeKey{ContinuousEdit::DragPoint, 1, 0}));
-  const QList<QLineSeries*> rocker = panel.chartView(QuantityKind::Alpha)->segments(PlotQuantity::RockerAlpha);
-  REQUIRE(std::count_if(rocker.begin(), rocker.end(), [](const QLineSeries* s) { return s->count() > 0; }) >= 2);
+  REQUIRE(panel.chartView(QuantityKind::Alpha)->curveItem(PlotQuantity::RockerAlpha)->runs().size() >= 2);
   CHECK(alpha->series().size() == seriesBefore);
 }
 

@@ -22,7 +22,6 @@
 
 #include <QCheckBox>
 #include <QCoreApplication>
-#include <QLineSeries>
 #include <QScatterSeries>
 #include <QValueAxis>
 
@@ -146,10 +145,9 @@ TEST_CASE("the advantage breaks at each rocker limit, which both ratio charts ma
     CHECK(std::signbit(std::prev(after)->y()) != std::signbit(after->y()));
   }
   // The advantage runs to ±∞ at each limit: its line is cut there, every piece of one sign.
-  const QList<QLineSeries*> pieces = panel.chartView(QuantityKind::Advantage)->segments(kFourBarAdvantage);
+  const QList<QList<QPointF>> pieces = panel.chartView(QuantityKind::Advantage)->curveItem(kFourBarAdvantage)->runs();
   CHECK(pieces.size() == 3);  // before the first limit, between them, after the second
-  for (const QLineSeries* piece : pieces) {
-    const QList<QPointF> points = piece->points();
+  for (const QList<QPointF>& points : pieces) {
     REQUIRE_FALSE(points.isEmpty());
     const bool negative = std::signbit(points.front().y());
     for (const QPointF& p : points) CHECK(std::signbit(p.y()) == negative);
@@ -190,7 +188,7 @@ TEST_CASE("a slider-crank's ratios are v/ω2 and F/T2, in its length unit", "[pl
   }
   // Dead centres, 0° and 180° (and 360°): the piston is at rest, the advantage breaks there,
   // and both ratio charts mark them, the rest labelled on the velocity ratio's zero.
-  CHECK(panel.chartView(QuantityKind::Advantage)->segments(kSliderAdvantage).size() >= 2);
+  CHECK(panel.chartView(QuantityKind::Advantage)->curveItem(kSliderAdvantage)->runs().size() >= 2);
   CHECK(panel.advantageLimitMarkers()->lineXs() == QList<double>{0.0, 180.0, 360.0});
   CHECK(panel.velocityRatioLimitMarkers()->lineXs() == QList<double>{0.0, 180.0, 360.0});
   CHECK(panel.velocityRatioLimitMarkers()->points()->name() == QStringLiteral("output at rest"));

@@ -4,6 +4,7 @@
 #include "ui/screen_simplify.h"
 
 #include "four_bar_curves.h"
+#include "mouse_on_curve.h"
 
 #include "ui/plots/hover_readout.h"
 #include "ui/plots/plot_panel.h"
@@ -14,7 +15,6 @@
 #include "kinematics/model/units.h"
 
 #include <QChart>
-#include <QLineSeries>
 #include <QTest>
 #include <QValueAxis>
 
@@ -119,20 +119,26 @@ TEST_CASE("a shown chart draws fewer vertices than samples, every sample within 
   for (const PlotQuantity q : {PlotQuantity::CouplerOmega, PlotQuantity::RockerOmega}) {
     const QList<QPointF> samples = view->samples(q);
     QList<QPointF> drawn;
-    for (const QLineSeries* segment : view->segments(q)) drawn += segment->points();
+    for (const QList<QPointF>& run : view->curveItem(q)->runs()) drawn += run;
     REQUIRE(samples.size() == static_cast<qsizetype>(doc.sweep().size()));  // a crank-rocker: no gaps
     CHECK(drawn.size() < samples.size() / 3);
     CHECK(isOrderedSubset(drawn, samples));
     CHECK(worstDistance(samples, drawn, scale) <= SegmentedLine::kCurveTolerancePx * 1.05);
   }
   // The sample at 90° is not a drawn vertex, yet hovering there reads it out exactly.
-  QLineSeries* omega = view->segments(PlotQuantity::RockerOmega)[0];
+  // (The mouse moves in whole pixels: the sample is the one nearest the pixel's crank angle.)
+  const CurveItem& omega = *view->curveItem(PlotQuantity::RockerOmega);
   const std::size_t at90 =
       static_cast<std::size_t>(std::lround(90.0 / 360.0 * static_cast<double>(doc.sweep().size() - 1)));
-  const QPointF sample(k::radToDeg(doc.sweep().inputAngle[at90]),
-                       k::radToDeg(doc.sweep().linkOmega[k::fourbar::kRocker.index][at90]));
-  REQUIRE_FALSE(omega->points().contains(sample));
-  emit omega->hovered(QPointF(sample.x() + 0.01, 0.0), true);
+  const QPoint pixel =
+      test::pixelOf(*view, omega, {90.0, k::radToDeg(doc.sweep().linkOmega[k::fourbar::kRocker.index][at90])});
+  const double crank = test::valueAt(*view, omega, pixel).x();
+  const QList<QPointF> samples = view->samples(PlotQuantity::RockerOmega);
+  const QPointF sample = *std::min_element(samples.begin(), samples.end(), [crank](QPointF a, QPointF b) {
+    return std::abs(a.x() - crank) < std::abs(b.x() - crank);
+  });
+  REQUIRE_FALSE(omega.runs().front().contains(sample));
+  test::moveMouse(*view, pixel);
   CHECK(panel.hoverReadout()->text() ==
         readoutText(fourBarCurve(PlotQuantity::RockerOmega), sample, AngleUnit::Degrees));
 }
