@@ -325,17 +325,27 @@ TEST_CASE("Hovering a curve reads out the nearest sample with its unit", "[plot_
   panel.resize(700, 900);
   panel.show();
   REQUIRE(QTest::qWaitForWindowExposed(&panel));
+  // Settled now, so the timers left from showing it change neither the sweep nor the axes.
+  panel.reportPlotWidth();
+  panel.settleValueRanges();
   QCoreApplication::processEvents();
   QuantityChartView& view = *panel.chartView(QuantityKind::Omega);
   const CurveItem& omega = *view.curveItem(PlotQuantity::RockerOmega);
   // The mouse a pixel off the line near 90°, between samples: the read-out snaps to the sample
   // nearest the mouse's crank angle.
-  const double at90 = k::radToDeg(doc.sweep().linkOmega[kRocker][180]);
-  const QPoint pixel = test::pixelOf(view, omega, {90.0, at90}) + QPoint(0, 1);
+  const std::vector<double>& crankAngles = doc.sweep().inputAngle;
+  const std::size_t at90 = static_cast<std::size_t>(
+      std::min_element(crankAngles.begin(), crankAngles.end(),
+                       [](double a, double b) { return std::abs(a - k::kPi / 2.0) < std::abs(b - k::kPi / 2.0); }) -
+      crankAngles.begin());
+  const QPoint pixel =
+      test::pixelOf(view, omega, {k::radToDeg(crankAngles[at90]), k::radToDeg(doc.sweep().linkOmega[kRocker][at90])}) +
+      QPoint(0, 1);
   const double crank = test::valueAt(view, omega, pixel).x();
-  const std::size_t nearest = static_cast<std::size_t>(std::lround(crank * 2.0));  // 721 samples, 0.5° apart
-  const QPointF sample(k::radToDeg(doc.sweep().inputAngle[nearest]),
-                       k::radToDeg(doc.sweep().linkOmega[kRocker][nearest]));
+  const QList<QPointF> samples = view.samples(PlotQuantity::RockerOmega);
+  const QPointF sample = *std::min_element(samples.begin(), samples.end(), [crank](QPointF a, QPointF b) {
+    return std::abs(a.x() - crank) < std::abs(b.x() - crank);
+  });
   test::moveMouse(view, pixel);
   CHECK(panel.hoverReadout()->text() ==
         readoutText(fourBarCurve(PlotQuantity::RockerOmega), sample, AngleUnit::Degrees));
