@@ -1,6 +1,5 @@
 #include "ui/plots/polar_load_view.h"
 
-#include "ui/plots/chart_scale.h"
 #include "ui/plots/chart_view_setup.h"
 #include "ui/plots/force_chart_view.h"
 #include "ui/plots/plot_area_alignment.h"
@@ -20,7 +19,6 @@
 namespace linkwright::ui {
 
 namespace {
-constexpr qreal kCurveWidth = 2.0;
 constexpr qreal kDotSizePx = 9.0;
 const QColor kOriginColor(150, 150, 150);
 const QColor kDotColor(0xc0, 0x20, 0x20);  // the crank cursor's colour on the other charts
@@ -64,26 +62,18 @@ PolarLoadView::PolarLoadView(QWidget* parent)
   connect(chart, &QChart::plotAreaChanged, this, [this] { equalizeScales(); });
 }
 
-QLineSeries* PolarLoadView::addSegment() {
-  auto* segment = new QLineSeries;
-  segment->setObjectName(QStringLiteral("locus"));
-  chart()->addSeries(segment);
-  segment->attachAxis(m_xAxis);
-  segment->attachAxis(m_yAxis);
-  // Keep the dot on top of the locus.
-  chart()->removeSeries(m_dot);
-  chart()->addSeries(m_dot);
-  m_dot->attachAxis(m_xAxis);
-  m_dot->attachAxis(m_yAxis);
-  m_segments.append(segment);
-  return segment;
-}
-
 void PolarLoadView::setLocus(const SeriesRuns& locus, const QString& title, const QColor& color) {
   chart()->setTitle(title);
-  m_color = color;
-  m_locus = locus;
-  while (m_segments.size() < locus.runs.size()) addSegment();
+  if (!m_locus || m_locus->style().color != color) {
+    if (m_locus) m_locus->removeFromChart();
+    m_locus.emplace(chart(), m_xAxis, m_yAxis, SegmentedLine::Style{QStringLiteral("locus"), QString(), color});
+    // Keep the dot on top of the locus.
+    chart()->removeSeries(m_dot);
+    chart()->addSeries(m_dot);
+    m_dot->attachAxis(m_xAxis);
+    m_dot->attachAxis(m_yAxis);
+  }
+  m_pointCount = locus.pointCount();
   m_xLo = m_xHi = m_yLo = m_yHi = 0.0;
   for (const QList<QPointF>& run : locus.runs)
     for (const QPointF& p : run) {
@@ -94,27 +84,8 @@ void PolarLoadView::setLocus(const SeriesRuns& locus, const QString& title, cons
     m_yLo = std::min(0.0, locus.minY);
     m_yHi = std::max(0.0, locus.maxY);
   }
-  for (qsizetype i = 0; i < m_segments.size(); ++i) {
-    m_segments[i]->setPen(QPen(color, scaledPenWidth(chart(), kCurveWidth)));
-    setSeriesShown(chart(), m_segments[i], i < locus.runs.size(), false);
-  }
   equalizeScales();  // the axes first: the locus is simplified for their scale
-  drawLocus();
-}
-
-void PolarLoadView::drawLocus() {
-  const double area = chart()->plotArea().width();
-  const double span = m_xAxis->max() - m_xAxis->min();
-  m_drawnPixelsPerN = span > 0.0 ? area / span : 0.0;  // equal on both axes
-  const ScreenScale scale{m_drawnPixelsPerN, m_drawnPixelsPerN};
-  for (qsizetype i = 0; i < m_segments.size(); ++i) {
-    if (i < m_locus.runs.size()) {
-      simplifyForScreen(m_locus.runs[i], scale, SegmentedLine::kCurveTolerancePx, m_vertices, m_scratch);
-      m_segments[i]->replace(m_vertices);
-    } else if (m_segments[i]->count() > 0) {
-      m_segments[i]->replace(QList<QPointF>{});
-    }
-  }
+  m_locus->setRuns(locus, true);
 }
 
 void PolarLoadView::setCurrent(std::optional<QPointF> force) {
@@ -164,9 +135,8 @@ void PolarLoadView::equalizeScales() {
     m_originY->replace(QList<QPointF>{{0.0, yMid - yHalf}, {0.0, yMid + yHalf}});
   }
   m_equalizing = false;
-  // A new scale (a resize, a dot outside the locus) by more than 5 %: the locus is drawn again.
-  const double now = area.width() / (m_xAxis->max() - m_xAxis->min());
-  if (!m_locus.empty() && !(now <= 1.05 * m_drawnPixelsPerN && m_drawnPixelsPerN <= 1.05 * now)) drawLocus();
+  // A new scale (a resize, a dot outside the locus): the locus is simplified again if it matters.
+  if (m_locus) m_locus->rescale();
 }
 
 double PolarLoadView::xScale() const { return (m_xAxis->max() - m_xAxis->min()) / chart()->plotArea().width(); }

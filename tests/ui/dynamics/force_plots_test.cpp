@@ -12,7 +12,6 @@
 #include "kinematics/model/units.h"
 
 #include <QComboBox>
-#include <QLineSeries>
 #include <QScatterSeries>
 #include <QSignalSpy>
 #include <QValueAxis>
@@ -30,10 +29,9 @@ std::size_t okSamples(const k::ForceSweep& f) {
   return n;
 }
 
-QList<QPointF> plotted(const QList<QLineSeries*>& segments) {
+QList<QPointF> plotted(const CurveItem& line) {
   QList<QPointF> points;
-  for (const QLineSeries* s : segments)
-    if (s->isVisible()) points += s->points();
+  for (const QList<QPointF>& run : line.runs()) points += run;
   return points;
 }
 
@@ -76,7 +74,7 @@ TEST_CASE("the force plots show the core's torque, joint magnitudes and polar lo
     for (int joint = 0; joint < panel.jointSelector()->count(); ++joint) {
       panel.jointSelector()->setCurrentIndex(joint);
       CHECK(static_cast<std::size_t>(panel.polarView()->pointCount()) == okSamples(f));
-      const QList<QPointF> locus = plotted(panel.polarView()->segments());
+      const QList<QPointF> locus = plotted(*panel.polarView()->locus());
       CHECK(locus.front() == QPointF(f.revolute[static_cast<std::size_t>(joint)][0].x(),
                                      f.revolute[static_cast<std::size_t>(joint)][0].y()));
     }
