@@ -108,6 +108,17 @@ QPointF CurveItem::toValue(QPointF point) const {
 
 QRectF CurveItem::boundingRect() const { return m_bounds; }
 
+QRectF CurveItem::clipRect() const {
+  // Qt Charts' clip for a line series (LineChartItem::paint): the plot area widened by the
+  // fractions of a pixel that let a line along an edge show, never by a whole pixel.
+  const auto fraction = [](qreal v) { return v - static_cast<int>(v); };
+  const qreal x1 = fraction(m_area.left());
+  const qreal y1 = fraction(m_area.top());
+  const qreal x2 = fraction(m_area.width() + 0.5);
+  const qreal y2 = fraction(m_area.height() + 0.5);
+  return m_area.adjusted(-x1, -y1, std::max(x1, x2), std::max(y1, y2));
+}
+
 QPainterPath CurveItem::shape() const {
   const Mapping m = mapping();
   if (m_shapeMapping == m) return m_shape;
@@ -130,7 +141,7 @@ void CurveItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidge
   const Mapping m = mapping();
   if (m.scale.x() == 0.0 || m.scale.y() == 0.0) return;
   painter->save();
-  painter->setClipRect(m_area, Qt::IntersectClip);
+  painter->setClipRect(clipRect(), Qt::IntersectClip);
   painter->setPen(pen());
   painter->setBrush(Qt::NoBrush);
   m_segments.clear();

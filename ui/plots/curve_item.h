@@ -72,6 +72,7 @@ private:
   Mapping mapping() const;
   qsizetype nearestRun(QPointF point) const;  // chart coordinates
   void placeBounds();                         // boundingRect() for the runs, axes and plot area now
+  QRectF clipRect() const;                    // where the line may paint, chart coordinates
 
   QValueAxis* m_xAxis;
   QValueAxis* m_yAxis;
