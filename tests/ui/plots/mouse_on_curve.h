@@ -3,14 +3,28 @@
 // of what hovering a curve reads out.
 
 #include "ui/plots/curve_item.h"
+#include "ui/plots/plot_panel.h"
 
 #include <QChart>
 #include <QChartView>
+#include <QCoreApplication>
 #include <QTest>
 
 #include <cmath>
 
 namespace linkwright::ui::test {
+
+/// Shows `panel` at `size` and settles it: the timers left from showing it then change neither
+/// the sweep nor the axes while a test points at its charts. False if it was never exposed.
+inline bool showSettled(PlotPanel& panel, QSize size) {
+  panel.resize(size);
+  panel.show();
+  if (!QTest::qWaitForWindowExposed(&panel)) return false;
+  panel.reportPlotWidth();
+  panel.settleValueRanges();
+  QCoreApplication::processEvents();
+  return true;
+}
 
 /// The viewport pixel that holds the point where `view`'s `curve` draws `value` (plot units).
 inline QPoint pixelOf(const QChartView& view, const CurveItem& curve, QPointF value) {

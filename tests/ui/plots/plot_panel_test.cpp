@@ -322,13 +322,7 @@ TEST_CASE("The angle chart marks the thesis crank-rocker's limits at 21.59° and
 TEST_CASE("Hovering a curve reads out the nearest sample with its unit", "[plot_panel]") {
   MechanismDocument doc;
   PlotPanel panel(&doc);
-  panel.resize(700, 900);
-  panel.show();
-  REQUIRE(QTest::qWaitForWindowExposed(&panel));
-  // Settled now, so the timers left from showing it change neither the sweep nor the axes.
-  panel.reportPlotWidth();
-  panel.settleValueRanges();
-  QCoreApplication::processEvents();
+  REQUIRE(test::showSettled(panel, {700, 900}));
   QuantityChartView& view = *panel.chartView(QuantityKind::Omega);
   const CurveItem& omega = *view.curveItem(PlotQuantity::RockerOmega);
   // The mouse a pixel off the line near 90°, between samples: the read-out snaps to the sample

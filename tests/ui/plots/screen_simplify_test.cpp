@@ -107,13 +107,7 @@ TEST_CASE("a shown chart draws fewer vertices than samples, every sample within 
           "[plots][simplify]") {
   MechanismDocument doc;
   PlotPanel panel(&doc);
-  panel.resize(600, 700);
-  panel.show();
-  REQUIRE(QTest::qWaitForWindowExposed(&panel));
-  // Settled now, so the timers left from showing it change neither the sweep nor the axes.
-  panel.reportPlotWidth();
-  panel.settleValueRanges();
-  QApplication::processEvents();
+  REQUIRE(test::showSettled(panel, {600, 700}));
   QuantityChartView* view = panel.chartView(QuantityKind::Omega);
   const QRectF area = view->chart()->plotArea();
   REQUIRE(area.width() > 100.0);
