@@ -1,11 +1,10 @@
 #pragma once
-// What lays a chart out besides its size: the axes' ranges and titles and which curves the
-// legend lists. A chart whose inputs are unchanged keeps its plot area, so a drag that only
-// moves the curves (most frames) skips the layout and the alignment of the plot areas.
+// What lays a chart out besides its size: the room its axes' labels and titles take
+// (plot_axes.h) and which curves the legend lists. A chart whose inputs are unchanged keeps
+// its plot area, so a drag that only moves the curves, or moves an axis to labels of the same
+// width, skips the alignment of the plot areas.
 
-#include "ui/plots/axis_range.h"
-
-#include <QString>
+#include <QMargins>
 
 #include <utility>
 #include <vector>
@@ -13,10 +12,7 @@
 namespace linkwright::ui {
 
 struct ChartLayoutInputs {
-  AxisRange x;
-  AxisRange y;
-  QString xTitle;
-  QString yTitle;
+  QMargins axesRoom;
   std::vector<bool> legend;  ///< per curve: listed or not
   bool operator==(const ChartLayoutInputs&) const = default;
 

@@ -2,6 +2,7 @@
 
 #include "ui/colors.h"
 #include "ui/plots/plot_area_alignment.h"
+#include "ui/plots/plot_axes.h"
 #include "ui/plots/plot_grid.h"
 
 #include <QChart>
@@ -24,6 +25,7 @@ QChart* makeCrankAngleChart(const QString& title, QValueAxis* xAxis, QValueAxis*
   xAxis->setTickType(QValueAxis::TicksDynamic);
   xAxis->setTickAnchor(0.0);
   new PlotGridItem(chart, xAxis, yAxis);  // owned by the chart
+  new PlotAxesItem(chart, xAxis, yAxis);  // owned by the chart
   return chart;
 }
 
@@ -33,8 +35,8 @@ std::unique_ptr<VerticalMarker> makeCrankCursor(QChart* chart, QValueAxis* xAxis
 }
 
 void applyAxisRange(QValueAxis* axis, const AxisRange& range) {
-  // Each setter relays out the axis (its labels shaped afresh) even when the value is the
-  // same, which would cost a drag more than the sweep: only what changed is set.
+  // Each setter has the axes relabelled (plot_axes.h) even when the value is the same: only
+  // what changed is set.
   if (axis->min() != range.min || axis->max() != range.max) axis->setRange(range.min, range.max);
   if (axis->tickCount() != range.tickCount) axis->setTickCount(range.tickCount);
   const QString format = QStringLiteral("%.%1f").arg(range.decimals);

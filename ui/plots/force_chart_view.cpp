@@ -2,6 +2,7 @@
 
 #include "ui/plots/chart_view_setup.h"
 #include "ui/plots/crank_angle_chart.h"
+#include "ui/plots/plot_axes.h"
 #include "ui/plots/plot_quantity.h"
 
 #include <QChart>
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <tuple>
+#include <utility>
 
 namespace linkwright::ui {
 
@@ -64,7 +66,7 @@ bool ForceChartView::setData(const std::vector<SeriesRuns>& runs, const QString&
   if (m_xAxis->titleText() != x.title) m_xAxis->setTitleText(x.title);
   m_cursor->setYSpan(y.min, y.max);
   static const SeriesRuns kNone;
-  ChartLayoutInputs inputs{x.range, y, x.title, valueTitle, {}};
+  ChartLayoutInputs inputs{axesRoom(chart()), {}};
   for (std::size_t i = 0; i < m_lines.size(); ++i) {
     m_lines[i].setRuns(i < runs.size() ? runs[i] : kNone, true);
     inputs.legend.push_back(true);
@@ -88,9 +90,9 @@ bool ForceChartView::settleValueRange() {
   m_yShown = fitted;
   applyAxisRange(m_yAxis, fitted);
   m_cursor->setYSpan(fitted.min, fitted.max);
-  m_layoutInputs.y = fitted;
   for (SegmentedLine& line : m_lines) line.rescale();
-  return true;
+  const QMargins before = std::exchange(m_layoutInputs.axesRoom, axesRoom(chart()));
+  return m_layoutInputs.axesRoom != before;
 }
 
 void ForceChartView::resizeEvent(QResizeEvent* event) {

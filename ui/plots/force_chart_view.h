@@ -44,7 +44,7 @@ public:
   bool setData(const std::vector<SeriesRuns>& runs, const QString& valueTitle, const PlotXAxis& x,
                DataFlow flow = DataFlow::Settled);
   /// Fits the value axis to the data once they have settled (setData keeps it while it still
-  /// serves); returns whether it changed.
+  /// serves); returns whether that changed the room its labels take (quantity_chart_view.h).
   bool settleValueRange();
   /// Moves the cursor to `x` (plot units), or hides it. Touches no data series.
   void setCursorX(std::optional<double> x);

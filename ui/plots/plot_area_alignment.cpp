@@ -1,5 +1,7 @@
 #include "ui/plots/plot_area_alignment.h"
 
+#include "ui/plots/plot_axes.h"
+
 #include <QChart>
 #include <QGraphicsLayout>
 
@@ -12,10 +14,11 @@ void alignPlotAreas(const QList<QChart*>& charts) { alignPlotAreas(charts, chart
 
 void alignPlotAreas(const QList<QChart*>& charts, const QList<QChart*>& changed) {
   if (charts.isEmpty()) return;
-  // The plot area's left edge is the left margin plus the y axis' labels and title; its right
-  // edge the width less the right margin and the legend. So each chart's natural insets (with
-  // the base margins) follow from one layout pass at its current margins, which is the pass
-  // the next paint needs anyway; activating it here just makes plotArea() current. Insets,
+  // The plot area's left edge is the left margin, which holds the base, the room of the y
+  // axis' labels and title (plot_axes.h) and what alignment adds; its right edge the width
+  // less the right margin and the legend. So each chart's natural insets (with the base
+  // margins and its axes' room) follow from one layout pass at its current margins, which is
+  // the pass the next paint needs anyway; activating it here just makes plotArea() current. Insets,
   // not edges, are matched: while a layout resizes the views one after another their widths
   // differ for a moment, and matching right edges then would pad the narrower ones hugely
   // (and QChartView never lowers a minimum size it once raised).
@@ -32,7 +35,7 @@ void alignPlotAreas(const QList<QChart*>& charts, const QList<QChart*>& changed)
     if (changed.contains(chart)) chart->layout()->invalidate();
     chart->layout()->activate();
     const QRectF area = chart->plotArea();
-    const QMargins extra = chart->margins() - kBaseChartMargins;
+    const QMargins extra = chart->margins() - kBaseChartMargins - axesRoom(chart);
     natural.append({area.left() - extra.left(), chart->size().width() - area.right() - extra.right()});
   }
   Insets common = natural[0];
@@ -41,7 +44,7 @@ void alignPlotAreas(const QList<QChart*>& charts, const QList<QChart*>& changed)
     common.right = std::max(common.right, n.right);
   }
   for (qsizetype i = 0; i < charts.size(); ++i) {
-    QMargins margins = kBaseChartMargins;
+    QMargins margins = kBaseChartMargins + axesRoom(charts[i]);
     margins.setLeft(margins.left() + static_cast<int>(std::lround(common.left - natural[i].left)));
     margins.setRight(margins.right() + static_cast<int>(std::lround(common.right - natural[i].right)));
     // Unchanged margins leave the layout valid: no second pass.

@@ -30,15 +30,28 @@ std::vector<double> majorTickPixels(const QValueAxis& axis, double from, double 
     for (int i = 0; i < count; ++i) pixels.push_back(from + i * (to - from) / (count - 1));
     return pixels;
   }
+  const double perUnit = (to - from) / (max - min);
+  for (const double value : majorTickValues(axis)) pixels.push_back(from + (value - min) * perUnit);
+  return pixels;
+}
+
+std::vector<double> majorTickValues(const QValueAxis& axis) {
+  const double min = axis.min(), max = axis.max();
+  if (!(max > min)) return {};
+  std::vector<double> values;
+  if (axis.tickType() == QValueAxis::TicksFixed) {
+    const int count = axis.tickCount();
+    if (count < 2) return {};
+    for (int i = 0; i < count; ++i) values.push_back(min + i * (max - min) / (count - 1));
+    return values;
+  }
   const double interval = axis.tickInterval();
   if (!(interval > 0.0)) return {};
   const double anchor = axis.tickAnchor();
-  const double perUnit = (to - from) / (max - min);
   // As Qt Charts does, but bounded: a tick interval far below the range would hang the paint.
   double value = anchor - std::floor((anchor - min) / interval) * interval;
-  for (int i = 0; value <= max && i < kMaxTicks; ++i, value += interval)
-    pixels.push_back(from + (value - min) * perUnit);
-  return pixels;
+  for (int i = 0; value <= max && i < kMaxTicks; ++i, value += interval) values.push_back(value);
+  return values;
 }
 
 int gridPixel(double pixel) { return static_cast<int>(std::floor(pixel)); }

@@ -20,6 +20,8 @@ namespace linkwright::ui {
 /// spaced for fixed ticks; for dynamic ones, every `tickInterval` from the `tickAnchor` within
 /// the range. Empty for an empty range.
 std::vector<double> majorTickPixels(const QValueAxis& axis, double from, double to);
+/// The values of those ticks, in the same order.
+std::vector<double> majorTickValues(const QValueAxis& axis);
 
 /// The pixel row or column an aliased one-pixel line takes for Qt's line at `pixel`.
 int gridPixel(double pixel);

@@ -3,6 +3,7 @@
 #include "ui/plots/chart_view_setup.h"
 #include "ui/plots/force_chart_view.h"
 #include "ui/plots/plot_area_alignment.h"
+#include "ui/plots/plot_axes.h"
 #include "ui/plots/plot_grid.h"
 #include "ui/plots/segmented_line.h"
 #include "ui/plots/series_visibility.h"
@@ -41,6 +42,7 @@ PolarLoadView::PolarLoadView(QWidget* parent)
     axis->setTickAnchor(0.0);
   }
   new PlotGridItem(chart, m_xAxis, m_yAxis);  // owned by the chart
+  new PlotAxesItem(chart, m_xAxis, m_yAxis);  // owned by the chart
   setChart(chart);
   setUpChartView(this);
   m_originX->setObjectName(QStringLiteral("origin_x"));
@@ -120,7 +122,7 @@ void PolarLoadView::equalizeScales() {
   const double yHalf = 0.5 * perPixel * area.height();
   // One tick step on both axes, so the grid is square; at least a few ticks on the shorter.
   const double step = niceStep(2.0 * std::min(xHalf, yHalf) / 4.0);
-  // Only what changed: every axis setter lays the chart out again (crank_angle_chart.h).
+  // Only what changed: every axis setter has the axes relabelled (crank_angle_chart.h).
   const QString format = QStringLiteral("%.%1f").arg(decimalsFor(step));
   for (QValueAxis* axis : {m_xAxis, m_yAxis}) {
     if (axis->tickInterval() != step) axis->setTickInterval(step);

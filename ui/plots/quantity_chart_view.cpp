@@ -4,6 +4,7 @@
 #include "ui/plots/chart_scale.h"
 #include "ui/plots/chart_view_setup.h"
 #include "ui/plots/crank_angle_chart.h"
+#include "ui/plots/plot_axes.h"
 #include "ui/plots/series_visibility.h"
 
 #include <QChart>
@@ -16,6 +17,7 @@
 #include <cmath>
 #include <limits>
 #include <tuple>
+#include <utility>
 
 namespace linkwright::ui {
 
@@ -97,7 +99,7 @@ bool QuantityChartView::setData(const kinematics::SweepResult& sweep, const Quan
   applyAxisRange(m_xAxis, x.range);
   if (m_xAxis->tickInterval() != x.range.step) m_xAxis->setTickInterval(x.range.step);
   if (m_xAxis->titleText() != x.title) m_xAxis->setTitleText(x.title);
-  ChartLayoutInputs inputs{x.range, m_valueRange, x.title, m_yAxis->titleText(), {}};
+  ChartLayoutInputs inputs{axesRoom(chart()), {}};
   for (std::size_t i = 0; i < m_curves.size(); ++i) {
     const bool shown = selection.contains(m_curves[i].curve.quantity);
     m_curves[i].line.setRuns(m_runs[i], shown);
@@ -177,13 +179,13 @@ QScatterSeries* QuantityChartView::overlaySeries(PlotQuantity quantity) const {
 bool QuantityChartView::settleValueRange() {
   if (niceValueRange(m_lo, m_hi, m_tickBudget) == m_valueRange) return false;
   applyValueRange();
-  m_layoutInputs.y = m_valueRange;
-  return true;
+  const QMargins before = std::exchange(m_layoutInputs.axesRoom, axesRoom(chart()));
+  return m_layoutInputs.axesRoom != before;
 }
 
 int QuantityChartView::tickBudget() const {
-  // Qt Charts elides every label of an axis whose labels overlap ("…"): a label needs about
-  // one and a half lines of the plot's height. Before the first layout, the default.
+  // Labels closer than about one and a half lines of text crowd each other (Qt Charts used to
+  // elide them all to "…"). Before the first layout, the default.
   constexpr int kMostTicks = 6;
   const double height = chart()->plotArea().height();
   if (height <= 0.0) return kMostTicks;

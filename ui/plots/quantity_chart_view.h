@@ -47,9 +47,9 @@ public:
   /// emptied and hidden), x on `x`'s axis, and resets both axes (x to `x`'s range and title).
   /// The ratio charts read `ratios`, the sweep's (none drawn while it is null).
   /// A value axis the data have left is fitted again with room while they keep changing
-  /// (refittedRange). Returns whether what lays the chart out changed (an axis range or
-  /// title, the legend): then the plot areas need aligning again; on most frames of a drag
-  /// they do not.
+  /// (refittedRange). Returns whether what lays the chart out changed (the room the axes'
+  /// labels and titles take, the legend): then the plot areas need aligning again; on most
+  /// frames of a drag they do not.
   bool setData(const kinematics::SweepResult& sweep, const QuantitySelection& selection, AngleUnit unit,
                const PlotXAxis& x, const QString& lengthUnit = QStringLiteral("mm"),
                const kinematics::AdvantageSeries* ratios = nullptr, DataFlow flow = DataFlow::Settled);
@@ -60,8 +60,8 @@ public:
   /// The markers of `quantity`'s compared column, or null.
   QScatterSeries* overlaySeries(PlotQuantity quantity) const;
   /// While the data change, setData keeps the value axis where it still serves (keepsRange);
-  /// this sets it to the data's own range once they have settled. Returns whether it changed
-  /// (then the plot areas need aligning again).
+  /// this sets it to the data's own range once they have settled. Returns whether that
+  /// changed the room its labels take (then the plot areas need aligning again).
   bool settleValueRange();
   /// Moves the cursor to `x` (plot units), or hides it. Touches no data series.
   void setCursorX(std::optional<double> x);

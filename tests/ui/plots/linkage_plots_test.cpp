@@ -96,8 +96,8 @@ TEST_CASE("a six-bar plots links 3 to 6 and both transmission angles, back to a 
   CHECK_FALSE(panel.chartView(QuantityKind::Alpha)->isHidden());
 }
 
-TEST_CASE("a short chart labels fewer ticks, so that no label is elided", "[plot_panel][linkage]") {
-  // Qt Charts elides every label of a value axis whose labels would overlap: the shaper's four
+TEST_CASE("a short chart labels fewer ticks, so that no labels overlap", "[plot_panel][linkage]") {
+  // Qt Charts elided every label of a value axis whose labels would overlap: the shaper's four
   // charts in an 880 px window left its slider charts with "…" for every value.
   MechanismDocument doc;
   doc.reset(*k::designForExample("shaper"));

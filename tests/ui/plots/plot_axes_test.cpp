@@ -1,0 +1,193 @@
+// Tests ui/plots/plot_axes.h: a chart's value axes drawn by one item of ours, Qt Charts' own
+// hidden, with the room the labels and titles need kept in the chart's margins.
+#include "ui/plots/plot_axes.h"
+
+#include "ui/plots/crank_angle_chart.h"
+#include "ui/plots/plot_area_alignment.h"
+
+#include <QApplication>
+#include <QChart>
+#include <QChartView>
+#include <QFontMetricsF>
+#include <QGraphicsLayout>
+#include <QGraphicsTextItem>
+#include <QImage>
+#include <QPainter>
+#include <QValueAxis>
+
+#include <catch2/catch.hpp>
+
+using namespace linkwright::ui;
+
+namespace {
+
+const QColor kLabelColour(0, 0, 255);
+const QColor kTitleColour(0, 160, 0);
+
+// A crank-angle chart as the plots make it: 0–360° with a tick every 90°, a value axis of
+// five fixed ticks, both titled.
+struct Chart {
+  QChartView view;
+  QValueAxis* x = new QValueAxis;
+  QValueAxis* y = new QValueAxis;
+  QChart* chart = makeCrankAngleChart(QStringLiteral("Link angles"), x, y);
+  PlotAxesItem* axes = nullptr;
+
+  Chart() {
+    view.setChart(chart);
+    applyAxisRange(x, {0.0, 360.0, 90.0, 5, 0});
+    x->setTickInterval(90.0);
+    x->setTitleText(QStringLiteral("crank angle [deg]"));
+    applyAxisRange(y, {-50.0, 150.0, 50.0, 5, 0});
+    y->setTitleText(QStringLiteral("angle [deg]"));
+    for (QGraphicsItem* item : chart->childItems())
+      if (auto* a = dynamic_cast<PlotAxesItem*>(item)) axes = a;
+    view.resize(520, 320);
+    view.show();
+    settle();
+  }
+  void settle() {
+    QApplication::processEvents();
+    chart->layout()->activate();
+    QApplication::processEvents();
+  }
+  QImage render() {
+    QImage image(view.viewport()->size(), QImage::Format_ARGB32);
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    view.render(&painter, QRectF(), view.viewport()->rect());
+    return image;
+  }
+};
+
+// Pixels of `colour` (within a tolerance for antialiasing) in `rect` of `image`.
+int countNear(const QImage& image, const QRect& rect, const QColor& colour) {
+  int n = 0;
+  for (int y = std::max(0, rect.top()); y <= std::min(image.height() - 1, rect.bottom()); ++y)
+    for (int x = std::max(0, rect.left()); x <= std::min(image.width() - 1, rect.right()); ++x) {
+      const QColor c = image.pixelColor(x, y);
+      if (std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green()) + std::abs(c.blue() - colour.blue()) <
+          60)
+        ++n;
+    }
+  return n;
+}
+
+double widest(const QFontMetricsF& metrics, const QStringList& texts) {
+  double w = 0.0;
+  for (const QString& t : texts) w = std::max(w, metrics.horizontalAdvance(t));
+  return w;
+}
+
+}  // namespace
+
+TEST_CASE("the axes label the ticks in the axis's format, and Qt Charts' own axes are hidden", "[plots][axes]") {
+  Chart c;
+  REQUIRE(c.axes != nullptr);
+  CHECK(c.axes->labels(Qt::Horizontal) == QStringList{"0", "90", "180", "270", "360"});
+  CHECK(c.axes->labels(Qt::Vertical) == QStringList{"-50", "0", "50", "100", "150"});
+  CHECK(c.axes->title(Qt::Horizontal) == QStringLiteral("crank angle [deg]"));
+  CHECK(c.axes->title(Qt::Vertical) == QStringLiteral("angle [deg]"));
+  CHECK_FALSE(c.x->isVisible());
+  CHECK_FALSE(c.y->isVisible());
+  // Qt Charts shows none of its label or title items (the chart's own title stays).
+  for (QGraphicsItem* item : c.chart->scene()->items())
+    if (auto* text = dynamic_cast<QGraphicsTextItem*>(item); text != nullptr && text->isVisible())
+      CHECK(text->toPlainText() == QStringLiteral("Link angles"));
+
+  // A new range, ticks and format are followed at once.
+  applyAxisRange(c.y, {0.0, 2.5, 0.5, 6, 1});
+  CHECK(c.axes->labels(Qt::Vertical) == QStringList{"0.0", "0.5", "1.0", "1.5", "2.0", "2.5"});
+}
+
+TEST_CASE("a rounding error about zero is labelled 0, not -0", "[plots][axes]") {
+  Chart c;
+  c.y->setTickType(QValueAxis::TicksDynamic);
+  c.y->setTickAnchor(0.3);  // the ticks reach 0 by adding 0.1 to -0.7: a few 1e-16 off
+  c.y->setTickInterval(0.1);
+  applyAxisRange(c.y, {-0.7, 0.7, 0.1, 15, 1});
+  const QStringList labels = c.axes->labels(Qt::Vertical);
+  REQUIRE(labels.size() == 15);
+  CHECK(labels.front() == QStringLiteral("-0.7"));
+  CHECK(labels.contains(QStringLiteral("0.0")));
+  CHECK_FALSE(labels.contains(QStringLiteral("-0.0")));
+}
+
+TEST_CASE("the chart keeps room for the labels and titles beside its plot area", "[plots][axes]") {
+  Chart c;
+  const QRectF before = c.chart->plotArea();
+  const QMargins room = c.axes->room();
+  // The margins hold the room: the plot area starts where the labels and title end.
+  CHECK(c.chart->margins() == kBaseChartMargins + room);
+  const QFontMetricsF labels(c.y->labelsFont());
+  CHECK(room.left() >= labels.horizontalAdvance(QStringLiteral("-50")) + QFontMetricsF(c.y->titleFont()).height());
+  CHECK(room.bottom() >= labels.height() + QFontMetricsF(c.x->titleFont()).height());
+  CHECK(axesRoom(c.chart) == room);
+
+  // Wider labels push the plot area right by as much as they grew.
+  applyAxisRange(c.y, {-50000.0, 150000.0, 50000.0, 5, 0});
+  c.settle();
+  const double grown = widest(labels, c.axes->labels(Qt::Vertical)) - widest(labels, {"-50", "0", "50", "100", "150"});
+  CHECK(c.chart->plotArea().left() - before.left() == Approx(grown).margin(1.0));
+  CHECK(c.chart->margins() == kBaseChartMargins + c.axes->room());
+
+  // A hidden title gives its room back to the plot.
+  c.x->setTitleVisible(false);
+  c.settle();
+  CHECK(c.axes->title(Qt::Horizontal).isEmpty());
+  CHECK(c.chart->plotArea().height() > before.height() + 0.9 * QFontMetricsF(c.x->titleFont()).height());
+}
+
+TEST_CASE("the labels and titles are painted beside the plot area, in the axes' colours", "[plots][axes]") {
+  Chart c;
+  for (QValueAxis* axis : {c.x, c.y}) {
+    axis->setLabelsBrush(kLabelColour);
+    axis->setTitleBrush(kTitleColour);
+  }
+  const QImage image = c.render();
+  const QRect area = c.chart->plotArea().toAlignedRect();
+  const QMargins room = c.axes->room();
+  const QRect left(area.left() - room.left(), area.top(), room.left(), area.height());
+  const QRect below(area.left(), area.bottom() + 1, area.width(), room.bottom());
+  CHECK(countNear(image, left, kLabelColour) > 20);
+  CHECK(countNear(image, below, kLabelColour) > 20);
+  CHECK(countNear(image, left, kTitleColour) > 20);
+  CHECK(countNear(image, below, kTitleColour) > 20);
+  // Nothing of them inside the plot area.
+  CHECK(countNear(image, area.adjusted(2, 2, -2, -2), kLabelColour) == 0);
+  CHECK(countNear(image, area.adjusted(2, 2, -2, -2), kTitleColour) == 0);
+  // The vertical title reads upwards: it is taller than wide.
+  int top = image.height(), bottom = -1, leftmost = image.width(), rightmost = -1;
+  for (int y = left.top(); y <= left.bottom(); ++y)
+    for (int x = left.left(); x <= left.right(); ++x)
+      if (countNear(image, QRect(x, y, 1, 1), kTitleColour) == 1) {
+        top = std::min(top, y);
+        bottom = std::max(bottom, y);
+        leftmost = std::min(leftmost, x);
+        rightmost = std::max(rightmost, x);
+      }
+  CHECK(bottom - top > 3 * (rightmost - leftmost));
+}
+
+TEST_CASE("a title longer than its side of the plot is cut short", "[plots][axes]") {
+  Chart c;
+  c.y->setTitleText(QString(200, QLatin1Char('w')));
+  c.settle();
+  const QString shown = c.axes->title(Qt::Vertical);
+  CHECK(shown.endsWith(QChar(0x2026)));
+  CHECK(QFontMetricsF(c.y->titleFont()).horizontalAdvance(shown) <= c.chart->plotArea().height());
+}
+
+TEST_CASE("aligned charts keep each one's room and line up their plot areas", "[plots][axes]") {
+  Chart narrow, wide;
+  applyAxisRange(wide.y, {-50000.0, 150000.0, 50000.0, 5, 0});
+  wide.settle();
+  alignPlotAreas({narrow.chart, wide.chart});
+  narrow.settle();
+  wide.settle();
+  CHECK(narrow.chart->plotArea().left() == Approx(wide.chart->plotArea().left()).margin(0.5));
+  CHECK(narrow.chart->plotArea().right() == Approx(wide.chart->plotArea().right()).margin(0.5));
+  // The narrow chart's labels are padded out, not moved: its room is its own.
+  CHECK(narrow.chart->margins().left() > kBaseChartMargins.left() + narrow.axes->room().left());
+  CHECK(wide.chart->margins() == kBaseChartMargins + wide.axes->room());
+}
