@@ -21,6 +21,7 @@ constexpr qreal kAxesZ = 3.0;
 // Qt Charts' spacing (ChartAxisElement): a tick is as long as the gap from it to its label.
 constexpr qreal kLabelPadding = 4.0;
 constexpr qreal kTitlePadding = 2.0;
+constexpr int kTickLength = 4;  // = kLabelPadding, in whole pixels
 // Qt Charts drew its texts as documents with this margin all round (ChartPresenter::textMargin);
 // the same space keeps the labels and titles as far apart as they were.
 constexpr qreal kTextMargin = 4.0;
@@ -43,6 +44,9 @@ QStaticText staticText(const QString& text, const QFont& font) {
 }
 
 int ceilPx(double px) { return static_cast<int>(std::ceil(px - 1e-6)); }
+
+// The axis pen's width in whole pixels, at least one.
+int lineWidth(const QValueAxis& axis) { return std::max(1, static_cast<int>(std::lround(axis.linePen().widthF()))); }
 
 }  // namespace
 
@@ -170,9 +174,11 @@ void PlotAxesItem::paintX(QPainter* painter, const QRectF& exposed) const {
   const QValueAxis& axis = *m_x.axis;
   const double bottom = m_area.bottom();
   const std::vector<double> ticks = majorTickPixels(axis, m_area.left(), m_area.right());
-  painter->setPen(axis.linePen());
-  painter->drawLine(QPointF(m_area.left(), bottom), QPointF(m_area.right(), bottom));
-  for (const double x : ticks) painter->drawLine(QPointF(x, bottom), QPointF(x, bottom + kLabelPadding));
+  // Filled rows and columns of pixels, as the grid's (plot_grid.h): no stroker for a line.
+  const QBrush line = axis.linePen().brush();
+  const int width = lineWidth(axis), row = gridPixel(bottom), left = gridPixel(m_area.left());
+  painter->fillRect(QRect(left, row, gridPixel(m_area.right()) - left + 1, width), line);
+  for (const double x : ticks) painter->fillRect(QRect(gridPixel(x), row, width, kTickLength), line);
   // A static text is drawn in the painter's font: the one it was laid out in.
   painter->setPen(axis.labelsBrush().color());
   painter->setFont(axis.labelsFont());
@@ -194,9 +200,10 @@ void PlotAxesItem::paintY(QPainter* painter, const QRectF& exposed) const {
   const QValueAxis& axis = *m_y.axis;
   const double left = m_area.left();
   const std::vector<double> ticks = majorTickPixels(axis, m_area.bottom(), m_area.top());
-  painter->setPen(axis.linePen());
-  painter->drawLine(QPointF(left, m_area.top()), QPointF(left, m_area.bottom()));
-  for (const double y : ticks) painter->drawLine(QPointF(left - kLabelPadding, y), QPointF(left, y));
+  const QBrush line = axis.linePen().brush();
+  const int width = lineWidth(axis), edge = gridPixel(left), top = gridPixel(m_area.top());
+  painter->fillRect(QRect(edge, top, width, gridPixel(m_area.bottom()) - top + 1), line);
+  for (const double y : ticks) painter->fillRect(QRect(edge - kTickLength, gridPixel(y), kTickLength, width), line);
   painter->setPen(axis.labelsBrush().color());
   painter->setFont(axis.labelsFont());
   for (std::size_t i = 0; i < m_y.labels.size() && i < ticks.size(); ++i) {
