@@ -109,8 +109,7 @@ void PlotAxesItem::retitle(Axis& axis, double length) const {
   const QString title = axis.axis->isTitleVisible() ? axis.axis->titleText() : QString();
   const QFont font = axis.axis->titleFont();
   // A title longer than its side of the plot is cut short with "…", as Qt Charts did.
-  const QString shown = QFontMetricsF(font).elidedText(title, Qt::ElideRight, std::max(0.0, length));
-  if (shown != axis.title.text()) axis.title = staticText(shown, font);
+  axis.title = staticText(QFontMetricsF(font).elidedText(title, Qt::ElideRight, std::max(0.0, length)), font);
 }
 
 void PlotAxesItem::relabel() {

@@ -2,6 +2,7 @@
 // hidden, with the room the labels and titles need kept in the chart's margins.
 #include "ui/plots/plot_axes.h"
 
+#include "ui/plots/chart_scale.h"
 #include "ui/plots/crank_angle_chart.h"
 #include "ui/plots/plot_area_alignment.h"
 
@@ -16,6 +17,8 @@
 #include <QValueAxis>
 
 #include <catch2/catch.hpp>
+
+#include <utility>
 
 using namespace linkwright::ui;
 
@@ -190,4 +193,41 @@ TEST_CASE("aligned charts keep each one's room and line up their plot areas", "[
   // The narrow chart's labels are padded out, not moved: its room is its own.
   CHECK(narrow.chart->margins().left() > kBaseChartMargins.left() + narrow.axes->room().left());
   CHECK(wide.chart->margins() == kBaseChartMargins + wide.axes->room());
+}
+
+TEST_CASE("the axes follow the chart's scale, their titles still centred (presentation mode)", "[plots][axes]") {
+  Chart c;
+  c.view.resize(900, 520);
+  c.settle();
+  for (QValueAxis* axis : {c.x, c.y}) axis->setTitleBrush(kTitleColour);
+  // The columns the x title's pixels span, below the plot area.
+  const auto xTitleSpan = [&c] {
+    const QImage image = c.render();
+    const int below = c.chart->plotArea().toAlignedRect().bottom() + 1;
+    std::pair<int, int> span{image.width(), -1};
+    for (int y = below; y < image.height(); ++y)
+      for (int x = 0; x < image.width(); ++x)
+        if (countNear(image, QRect(x, y, 1, 1), kTitleColour) == 1) {
+          span.first = std::min(span.first, x);
+          span.second = std::max(span.second, x);
+        }
+    return span;
+  };
+  // The depth of the x axis' texts (a line of labels and the title) at the fonts of the time.
+  const auto textDepth = [&c] {
+    return QFontMetricsF(c.x->labelsFont()).height() + QFontMetricsF(c.x->titleFont()).height();
+  };
+  const QMargins before = c.axes->room();
+  const double depth1 = textDepth();
+  const auto [left1, right1] = xTitleSpan();
+  setChartScale(c.chart, 2.0);
+  c.settle();
+  // The room grows by what the texts grew (the paddings stay).
+  CHECK(c.axes->room().bottom() - before.bottom() == Approx(textDepth() - depth1).margin(1.0));
+  CHECK(c.axes->room().left() > before.left() + 10);
+  // The title is drawn in its new font, twice as wide, and still centred under the plot area.
+  const auto [left2, right2] = xTitleSpan();
+  REQUIRE(right1 > left1);
+  CHECK(right2 - left2 > 1.7 * (right1 - left1));
+  CHECK(0.5 * (left2 + right2) == Approx(c.chart->plotArea().center().x()).margin(3.0));
 }
