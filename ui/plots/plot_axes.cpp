@@ -26,9 +26,14 @@ constexpr int kTickLength = 4;  // = kLabelPadding, in whole pixels
 // the same space keeps the labels and titles as far apart as they were.
 constexpr qreal kTextMargin = 4.0;
 
+// From this size on a label prints in scientific notation: in fixed notation a value near a
+// toggle position could print hundreds of digits and squash the plot to nothing.
+constexpr double kLargestFixed = 1e9;
+
 // `value` as the axis's "%.Nf" label format prints it (any other format: the digits `step`
 // needs); a rounding error about zero prints as 0, not -0.
 QString formatLabel(double value, const QString& format, double step) {
+  if (std::abs(value) >= kLargestFixed) return QString::number(value, 'g', 6);
   const bool fixed = format.size() == 4 && format.startsWith(QLatin1String("%.")) && format[2].isDigit() &&
                      format[3] == QLatin1Char('f');
   const int decimals = fixed ? format[2].digitValue() : decimalsFor(step);

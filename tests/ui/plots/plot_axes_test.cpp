@@ -116,6 +116,15 @@ TEST_CASE("a rounding error about zero is labelled 0, not -0", "[plots][axes]") 
   CHECK_FALSE(labels.contains(QStringLiteral("-0.0")));
 }
 
+TEST_CASE("huge values are labelled in scientific notation, not hundreds of digits", "[plots][axes]") {
+  Chart c;
+  applyAxisRange(c.y, {-2e300, 6e300, 2e300, 5, 0});
+  c.settle();
+  CHECK(c.axes->labels(Qt::Vertical) == QStringList{"-2e+300", "0", "2e+300", "4e+300", "6e+300"});
+  // The plot keeps most of the chart's width.
+  CHECK(c.chart->plotArea().width() > 0.5 * c.chart->size().width());
+}
+
 TEST_CASE("the chart keeps room for the labels and titles beside its plot area", "[plots][axes]") {
   Chart c;
   const QRectF before = c.chart->plotArea();
