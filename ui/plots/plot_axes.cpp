@@ -129,8 +129,8 @@ void PlotAxesItem::relabel() {
   const double yLabelHeight = QFontMetricsF(m_y.axis->labelsFont()).height();
   // The end labels reach past the plot area by half their size: the top one above it, the
   // last one on the right beside it.
-  setRoom(QMargins(ceilPx(depth(m_y)), ceilPx(m_y.labels.empty() ? 0.0 : 0.5 * yLabelHeight), ceilPx(0.5 * m_x.widest),
-                   ceilPx(depth(m_x))));
+  setRoom(QMargins(ceilPx(reach(m_y)), ceilPx(m_y.labels.empty() ? 0.0 : 0.5 * yLabelHeight), ceilPx(0.5 * m_x.widest),
+                   ceilPx(reach(m_x))));
   update();
 }
 
@@ -139,7 +139,7 @@ double PlotAxesItem::titleOffset(const Axis& axis) {
   return kLabelPadding + labels + kTitlePadding + kTextMargin;
 }
 
-double PlotAxesItem::depth(const Axis& axis) {
+double PlotAxesItem::reach(const Axis& axis) {
   const bool titled = axis.axis->isTitleVisible() && !axis.axis->titleText().isEmpty();
   if (!titled) return kLabelPadding + (axis.depth > 0.0 ? axis.depth + kTextMargin : 0.0);
   return titleOffset(axis) + QFontMetricsF(axis.axis->titleFont()).height() + kTextMargin + kTitlePadding;

@@ -45,7 +45,7 @@ private:
   };
   // From the plot area's edge, where the title's text starts, and where the axis ends.
   static double titleOffset(const Axis& axis);
-  static double depth(const Axis& axis);
+  static double reach(const Axis& axis);
 
   void follow(QValueAxis* axis);
   // New texts for new ranges, ticks, formats, fonts or titles, and the room they need.
