@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# A fresh Debian 12 root, to prove what a new user's machine needs: nothing in it but Debian's
-# minimal base (mmdebstrap --variant=minbase) and what our scripts install.
+# A fresh Debian 12 or 13 root, to prove what a new user's machine needs: nothing in it but
+# Debian's minimal base (mmdebstrap --variant=minbase) and what our scripts install.
 #
-#   packaging/fresh-root.sh create ROOT        make ROOT anew from the host's Debian apt sources
-#   packaging/fresh-root.sh run ROOT COMMAND   run the bash COMMAND as root inside ROOT, in /src,
-#                                              which is this source tree
-#   packaging/fresh-root.sh remove ROOT        delete ROOT
+#   packaging/fresh-root.sh create ROOT RELEASE  make ROOT anew: RELEASE is bookworm (Debian 12)
+#                                                or trixie (Debian 13), from the host's mirror
+#   packaging/fresh-root.sh run ROOT COMMAND     run the bash COMMAND as root inside ROOT, in
+#                                                /src, which is this source tree
+#   packaging/fresh-root.sh remove ROOT          delete ROOT
 #
 # With LINKWRIGHT_COMPILER_CACHE=DIR (a host folder), run also mounts DIR in the root and sets
 # CMake's compiler launcher to ccache (which the root must have), so CI compiles only what changed
@@ -18,7 +19,7 @@
 # to delete a root that still has anything mounted under it.
 set -euo pipefail
 
-usage() { sed -n '4,7s/^# \{0,1\}//p' "$0" >&2; exit 2; }
+usage() { sed -n '5,9s/^# \{0,1\}//p' "$0" >&2; exit 2; }
 [[ $# -ge 2 ]] || usage
 action=$1
 root=$(realpath -m "$2")
@@ -40,27 +41,51 @@ remove_root() {
   rm -rf --one-file-system "$root"
 }
 
-# The host's Debian sources (deb822 or one-line), so the root uses the same archive and snapshot.
-debian_sources() {
-  local f
+# The Debian mirror the host uses (deb822 or one-line sources), so a root of either release
+# comes from the same archive as the host's own packages.
+host_mirror() {
+  local f line
   for f in /etc/apt/sources.list.d/*.sources /etc/apt/sources.list.d/*.list /etc/apt/sources.list; do
-    [[ -s "$f" ]] && grep -qE '^[^#]*(deb\.debian\.org|debian)' "$f" && echo "$f"
+    [[ -s "$f" ]] || continue
+    while read -r line; do
+      [[ "$line" =~ ^[^#]*(https?://[^ ]+/debian)/?( |$) ]] && { echo "${BASH_REMATCH[1]}"; return 0; }
+    done < "$f"
   done
   return 0
 }
 
+# deb822 sources for RELEASE: the release, its updates and its security archive, signed by the
+# keys in debian-archive-keyring (which on Debian 12 holds Debian 13's keys too).
+release_sources() {
+  local release=$1 mirror=$2
+  printf 'Types: deb\nURIs: %s\nSuites: %s %s-updates\nComponents: main\nSigned-By: %s\n\n' \
+    "$mirror" "$release" "$release" /usr/share/keyrings/debian-archive-keyring.gpg
+  printf 'Types: deb\nURIs: %s-security\nSuites: %s-security\nComponents: main\nSigned-By: %s\n' \
+    "$mirror" "$release" /usr/share/keyrings/debian-archive-keyring.gpg
+}
+
 case "$action" in
   create)
+    [[ $# -eq 3 ]] || usage
+    release=$3
+    case "$release" in
+      bookworm) version=12 ;;
+      trixie) version=13 ;;
+      *) echo "fresh-root: release '$release' is not one we build for: bookworm (Debian 12) or trixie (Debian 13)" >&2; exit 2 ;;
+    esac
     command -v mmdebstrap >/dev/null || { echo "fresh-root: mmdebstrap missing: packaging/install-deps.sh --checks" >&2; exit 2; }
-    mapfile -t sources < <(debian_sources)
-    [[ ${#sources[@]} -gt 0 ]] || { echo "fresh-root: no Debian apt sources on this host" >&2; exit 2; }
+    mirror=$(host_mirror)
+    [[ -n "$mirror" ]] || { echo "fresh-root: no Debian mirror in this host's apt sources" >&2; exit 2; }
     [[ -e "$root" ]] && remove_root
     mkdir -p "$(dirname "$root")"
+    sources=$(mktemp --suffix=.sources)
+    trap 'rm -f "$sources"' EXIT
+    release_sources "$release" "$mirror" > "$sources"
     # Root mode creates the device nodes in the root itself; no bind mount of /dev is needed.
-    mmdebstrap --quiet --variant=minbase --mode=root bookworm "$root" "${sources[@]}"
+    mmdebstrap --quiet --variant=minbase --mode=root "$release" "$root" "$sources"
     cp /etc/resolv.conf "$root/etc/resolv.conf"
     mkdir -p "$root/src"
-    echo "fresh-root: Debian 12 minimal root at $root ($(chroot "$root" dpkg-query -W | wc -l) packages)"
+    echo "fresh-root: Debian $version ($release) minimal root at $root ($(chroot "$root" dpkg-query -W | wc -l) packages)"
     ;;
   run)
     [[ $# -eq 3 ]] || usage
