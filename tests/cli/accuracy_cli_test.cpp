@@ -3,7 +3,7 @@
 #include "app/cli/svg_plot.h"
 #include "tests/cli/run_cli.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cmath>
 #include <filesystem>

@@ -15,7 +15,7 @@
 #include "kinematics/solve/pose_solver.h"
 #include "kinematics/solve/sweep.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cstdio>
 #include <filesystem>

@@ -4,8 +4,8 @@
 // −0.106° offset; bad tables, maps and options exit with 2, name what is wrong, print nothing.
 
 #include "tests/cli/run_cli.h"
+#include "tests/support/catch.h"
 
-#include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
 #include <filesystem>

@@ -10,7 +10,7 @@
 #include "kinematics/io/json.h"
 #include "kinematics/model/fourbar.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <filesystem>
 #include <fstream>

@@ -14,7 +14,7 @@
 #include "kinematics/report/report_content.h"
 #include "kinematics/solve/sweep.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <array>
 #include <cstdio>

@@ -13,7 +13,7 @@
 #include "kinematics/io/json.h"
 #include "kinematics/model/units.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <algorithm>
 #include <array>

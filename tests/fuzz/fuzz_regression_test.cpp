@@ -4,7 +4,7 @@
 
 #include "tests/fuzz/fuzz_checks.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <filesystem>
 #include <fstream>

@@ -22,7 +22,7 @@
 #include "kinematics/model/units.h"
 #include "kinematics/solve/sweep.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <Eigen/Dense>
 

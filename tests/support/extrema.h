@@ -5,7 +5,7 @@
 #include "kinematics/analysis/extrema.h"
 #include "kinematics/solve/pose_solver.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <vector>
 

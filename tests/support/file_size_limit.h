@@ -4,7 +4,7 @@
 // permission bits it also stops root, who runs the tests in CI. SIGXFSZ, which the kernel
 // would send, is ignored meanwhile.
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <sys/resource.h>
 #include <csignal>

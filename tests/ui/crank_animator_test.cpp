@@ -9,7 +9,7 @@
 
 #include "tests/ui/support/timed_design.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cmath>
 

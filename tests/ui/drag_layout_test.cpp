@@ -11,7 +11,7 @@
 #include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <QApplication>
 #include <QFormLayout>

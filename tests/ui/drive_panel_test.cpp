@@ -11,7 +11,7 @@
 #include "tests/ui/support/four_bar_design.h"
 #include "tests/ui/support/timed_design.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

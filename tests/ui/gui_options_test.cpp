@@ -3,7 +3,7 @@
 
 #include "app/gui_options.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <string>
 #include <vector>

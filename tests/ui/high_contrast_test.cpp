@@ -15,7 +15,7 @@
 
 #include "kinematics/model/fourbar.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <QChart>
 #include <QValueAxis>

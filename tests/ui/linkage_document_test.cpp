@@ -18,7 +18,7 @@
 #include "kinematics/solve/pose_solver.h"
 #include "tests/support/locking_six_bar.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -15,7 +15,7 @@
 
 #include "tests/ui/support/read_file.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <QAction>
 #include <QFile>

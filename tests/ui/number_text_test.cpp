@@ -2,7 +2,7 @@
 
 #include "ui/number_text.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <limits>
 

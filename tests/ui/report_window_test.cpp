@@ -9,7 +9,7 @@
 #include "app/cli/cli.h"
 #include "kinematics/design/design.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <QComboBox>
 #include <QFile>

@@ -2,7 +2,7 @@
 
 #include "ui/document/sampling_quality.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 using namespace linkwright::ui;
 

@@ -8,7 +8,7 @@
 #include <QSemaphore>
 #include <QThreadPool>
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <chrono>
 #include <future>

@@ -15,7 +15,7 @@
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cmath>
 

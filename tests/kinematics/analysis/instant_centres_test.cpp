@@ -13,7 +13,7 @@
 #include "kinematics/model/vec2.h"
 #include "kinematics/solve/pose_solver.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cmath>
 

@@ -6,7 +6,7 @@
 #include "kinematics/model/units.h"
 #include "kinematics/model/vec2.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cmath>
 

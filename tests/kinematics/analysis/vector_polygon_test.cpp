@@ -20,7 +20,7 @@
 #include "kinematics/solve/sweep.h"
 #include "tests/kinematics/dynamics/dynamics_cases.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cmath>
 

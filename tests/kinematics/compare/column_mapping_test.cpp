@@ -6,7 +6,7 @@
 #include "kinematics/design/design.h"
 #include "kinematics/model/units.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 using namespace linkwright::kinematics;
 using namespace linkwright::kinematics::compare;

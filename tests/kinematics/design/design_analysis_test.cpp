@@ -17,7 +17,7 @@
 #include "tests/support/approx.h"
 #include "tests/support/locking_six_bar.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cmath>
 

@@ -6,7 +6,7 @@
 #include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cmath>
 #include <limits>

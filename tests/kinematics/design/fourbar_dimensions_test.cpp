@@ -13,7 +13,7 @@
 #include "tests/kinematics/design/drawn_fourbar.h"
 #include "tests/support/approx.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <array>
 #include <cmath>

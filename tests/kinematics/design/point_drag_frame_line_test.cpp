@@ -11,7 +11,7 @@
 #include "tests/kinematics/design/drawn_fourbar.h"
 #include "tests/support/approx.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 using namespace linkwright::kinematics;
 using linkwright::test::within;

@@ -10,7 +10,7 @@
 #include "tests/kinematics/dynamics/dynamics_cases.h"
 #include "tests/kinematics/dynamics/power_balance.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cmath>
 

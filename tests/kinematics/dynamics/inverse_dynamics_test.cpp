@@ -11,7 +11,7 @@
 
 #include "tests/kinematics/dynamics/dynamics_cases.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cmath>
 

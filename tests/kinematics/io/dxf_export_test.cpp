@@ -7,10 +7,10 @@
 
 #include "kinematics/design/examples.h"
 #include "kinematics/solve/pose_solver.h"
+#include "tests/support/catch.h"
 
 #include <dl_creationadapter.h>
 #include <dl_dxf.h>
-#include <catch2/catch.hpp>
 
 #include <filesystem>
 #include <fstream>

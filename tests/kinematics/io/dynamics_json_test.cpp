@@ -9,7 +9,7 @@
 
 #include "tests/kinematics/dynamics/dynamics_cases.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <limits>
 #include <string>

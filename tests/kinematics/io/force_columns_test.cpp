@@ -9,7 +9,7 @@
 #include "kinematics/model/shaper.h"
 #include "kinematics/model/units.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <sstream>
 

@@ -3,7 +3,7 @@
 
 #include "kinematics/io/json.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <string>
 

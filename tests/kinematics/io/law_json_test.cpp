@@ -6,7 +6,7 @@
 #include "kinematics/io/document_json.h"
 #include "kinematics/model/units.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <string>
 

@@ -12,7 +12,7 @@
 #include "kinematics/solve/motion_law.h"
 #include "kinematics/solve/pose_solver.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cmath>
 #include <limits>

@@ -4,7 +4,7 @@
 
 #include "kinematics/io/number_format.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <bit>
 #include <cmath>

@@ -4,7 +4,7 @@
 
 #include "kinematics/io/numeric_table_csv.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 using namespace linkwright::kinematics;
 using io::readNumericTable;

@@ -9,7 +9,7 @@
 #include "kinematics/model/validate.h"
 #include "kinematics/solve/sweep.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cmath>
 #include <limits>

@@ -7,7 +7,7 @@
 #include "kinematics/model/units.h"
 #include "tests/support/approx.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <limits>
 

@@ -3,7 +3,7 @@
 
 #include "kinematics/solve/rrp_dyad.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cmath>
 

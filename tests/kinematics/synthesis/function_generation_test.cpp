@@ -14,7 +14,7 @@
 
 #include "tests/support/approx.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <Eigen/Dense>
 

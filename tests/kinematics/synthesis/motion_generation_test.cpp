@@ -12,9 +12,9 @@
 #include "kinematics/solve/pose_solver.h"
 
 #include "tests/support/approx.h"
+#include "tests/support/catch.h"
 
 #include <Eigen/Geometry>
-#include <catch2/catch.hpp>
 
 #include <cmath>
 #include <complex>

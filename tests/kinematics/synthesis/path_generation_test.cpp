@@ -12,7 +12,7 @@
 
 #include "tests/support/approx.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <atomic>
 #include <cmath>

@@ -13,7 +13,7 @@
 
 #include <QGraphicsLineItem>
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 namespace k = linkwright::kinematics;
 using linkwright::ui::test::ShownView;

@@ -4,7 +4,7 @@
 
 #include "ui/canvas/grid_painter.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cmath>
 #include <tuple>

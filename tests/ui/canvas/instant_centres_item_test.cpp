@@ -12,7 +12,7 @@
 #include "kinematics/design/design.h"
 #include "kinematics/model/units.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 using namespace linkwright;
 namespace k = kinematics;

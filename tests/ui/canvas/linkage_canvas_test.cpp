@@ -17,7 +17,7 @@
 #include <QGraphicsPolygonItem>
 #include <QSignalSpy>
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cmath>
 

@@ -15,7 +15,7 @@
 #include <QGraphicsPolygonItem>
 #include <QPainterPath>
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 namespace k = linkwright::kinematics;
 namespace fourbar = linkwright::kinematics::fourbar;

@@ -2,7 +2,7 @@
 
 #include "canvas_test_support.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cmath>
 

@@ -9,7 +9,7 @@
 #include <QImage>
 #include <QPainter>
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <algorithm>
 #include <cmath>

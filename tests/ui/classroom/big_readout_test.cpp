@@ -12,7 +12,7 @@
 #include "kinematics/model/slider_crank.h"
 #include "kinematics/model/units.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cmath>
 

@@ -14,7 +14,7 @@
 
 #include "tests/ui/support/four_bar_design.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <QComboBox>
 #include <QPushButton>

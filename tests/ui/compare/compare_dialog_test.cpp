@@ -14,7 +14,7 @@
 #include "kinematics/compare/table_comparison.h"
 #include "kinematics/design/design.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <QChart>
 #include <QCheckBox>

@@ -12,7 +12,7 @@
 
 #include "tests/ui/support/four_bar_design.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 using namespace linkwright::ui;
 namespace k = linkwright::kinematics;

@@ -16,7 +16,7 @@
 #include <QSignalSpy>
 #include <QValueAxis>
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 using namespace linkwright::ui;
 namespace k = linkwright::kinematics;

@@ -14,7 +14,7 @@
 
 #include <QSignalSpy>
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 using namespace linkwright::ui;
 namespace k = linkwright::kinematics;

@@ -18,7 +18,7 @@
 #include "tests/ui/support/read_file.h"
 #include "tests/ui/support/timed_design.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <QApplication>
 #include <QDir>

@@ -6,7 +6,7 @@
 
 #include "tests/ui/support/gif_readback.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <QFile>
 #include <QTemporaryDir>

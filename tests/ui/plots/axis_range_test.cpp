@@ -1,7 +1,7 @@
 // Tests ui/plots/axis_range.h: rounded value ranges, the crank axis, wrapping into the grid.
 #include "ui/plots/axis_range.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cmath>
 

@@ -3,7 +3,7 @@
 
 #include "four_bar_curves.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 using namespace linkwright::ui;
 using linkwright::ui::test::fourBarCurve;

@@ -16,7 +16,7 @@
 #include <QPainter>
 #include <QValueAxis>
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <algorithm>
 #include <cmath>

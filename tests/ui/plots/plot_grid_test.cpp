@@ -11,7 +11,7 @@
 #include <QImage>
 #include <QValueAxis>
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <algorithm>
 #include <vector>

@@ -6,7 +6,7 @@
 
 #include <limits>
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 using namespace linkwright::ui;
 

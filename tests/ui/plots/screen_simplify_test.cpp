@@ -18,7 +18,7 @@
 #include <QTest>
 #include <QValueAxis>
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <algorithm>
 #include <cmath>

@@ -20,7 +20,7 @@
 #include <QLineSeries>
 #include <QValueAxis>
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <cmath>
 

@@ -1,7 +1,7 @@
 #pragma once
 // The whole contents of a file the GUI tests wrote (a save, an export).
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <QByteArray>
 #include <QFile>

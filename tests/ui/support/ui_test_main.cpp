@@ -1,7 +1,7 @@
 // Catch2 runner for the GUI tests: a QApplication on the offscreen platform unless the caller
 // chose another (QT_QPA_PLATFORM=xcb under Xvfb, say).
 #define CATCH_CONFIG_RUNNER
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <QApplication>
 

@@ -11,7 +11,7 @@
 
 #include "kinematics/model/units.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <QPushButton>
 #include <QTableWidget>

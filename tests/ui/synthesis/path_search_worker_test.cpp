@@ -11,7 +11,7 @@
 
 #include "ui/document/mechanism_document.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <QApplication>
 #include <QDeadlineTimer>

@@ -21,7 +21,7 @@
 #include "tests/ui/canvas/canvas_test_support.h"
 #include "tests/ui/support/four_bar_design.h"
 
-#include <catch2/catch.hpp>
+#include "tests/support/catch.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
