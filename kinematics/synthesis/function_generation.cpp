@@ -198,7 +198,7 @@ Result<FunctionSynthesis> synthesiseFunction(const FunctionTarget& t, const Func
     task.branches.push_back(branchAt(s.linkage, p));
   }
   FourBarCheck check = checkFourBar(task, bounds);
-  s.candidate = {functionDesign(std::move(*m), t), s.error.maxAbs, check.grashof, check.minTransmission,
+  s.candidate = {functionDesign(std::move(m).value(), t), s.error.maxAbs, check.grashof, check.minTransmission,
                  std::move(check.defects)};
   return s;
 }

@@ -211,7 +211,7 @@ void sweepBenchmark(benchmark::State& state, const Mechanism& mechanism, double 
   SweepResult result;
   const Instruments instruments;
   for (auto _ : state) {
-    const auto error = sweepInto(mechanism, spec, request, result);
+    auto error = sweepInto(mechanism, spec, request, result);  // not const: DoNotOptimize(const&) is deprecated
     benchmark::DoNotOptimize(error);
     benchmark::DoNotOptimize(result.linkAlpha.data());
     benchmark::ClobberMemory();
@@ -239,7 +239,7 @@ void forcesBenchmark(benchmark::State& state) {
   SweepResult kinematics;
   const Instruments instruments;
   for (auto _ : state) {
-    const auto error = sweepInto(m, spec, SolveRequest{}, kinematics);
+    auto error = sweepInto(m, spec, SolveRequest{}, kinematics);
     auto forces = sweepForces(m, e.dynamics, kinematics);
     benchmark::DoNotOptimize(error);
     benchmark::DoNotOptimize(forces);
@@ -258,7 +258,7 @@ void poseBenchmark(benchmark::State& state, const Mechanism& mechanism, double o
   double angle = 0.0;
   const Instruments instruments;
   for (auto _ : state) {
-    const PoseReport r = solvePoseInto(mechanism, {angle, omega, 0.5}, full, pose);
+    PoseReport r = solvePoseInto(mechanism, {angle, omega, 0.5}, full, pose);
     benchmark::DoNotOptimize(r);
     benchmark::DoNotOptimize(pose.linkAlpha.data());
     benchmark::ClobberMemory();

@@ -79,7 +79,7 @@ k::SweepResult thesisEvery30(const k::Example& e) {
   const k::SweepSpec spec{0.0, 2.0 * k::kPi, 13, e.omega, e.alpha};
   auto r = k::sweep(e.mechanism, spec);
   REQUIRE(r.ok());
-  return std::move(*r);
+  return std::move(r).value();
 }
 
 std::size_t linkIndex(const k::Mechanism& m, const std::string& name) {

@@ -17,7 +17,9 @@ PathSearchWorker::~PathSearchWorker() {
   // Superseded searches were cancelled when the next one started; wait for them all, so that
   // none posts to this object once it is gone.
   if (m_cancel) m_cancel->store(true);
-  for (auto* watcher : findChildren<QFutureWatcher<PathSearchResult>*>()) watcher->waitForFinished();
+  // QFutureWatcher<T> has no Q_OBJECT of its own (Qt 6.8 refuses it in findChildren); every
+  // child watcher here is one of ours, found through the base that has one.
+  for (auto* watcher : findChildren<QFutureWatcherBase*>()) watcher->waitForFinished();
 }
 
 void PathSearchWorker::start(const PathRequest& request, const k::DefectBounds& bounds) {

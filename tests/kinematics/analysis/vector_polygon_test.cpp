@@ -88,14 +88,14 @@ void checkRigid(const ClassroomPolygons& p, const std::string& suffix, const Eig
   const double vTol = 1e-9 * sizeOf(p.velocity);
   const double aTol = 1e-9 * sizeOf(p.acceleration);
   CAPTURE(suffix);
-  const PolygonVector& v = find(p.velocity, "V_" + suffix);
+  const PolygonVector v = find(p.velocity, "V_" + suffix);
   checkNear(v.value(), omega * perp(r), vTol);
   CHECK(std::abs(v.value().dot(r)) <= vTol * r.norm());
   CHECK(std::abs(v.value().norm() - std::abs(omega) * r.norm()) <= vTol);
-  const PolygonVector& n = find(p.acceleration, "A^n_" + suffix);
+  const PolygonVector n = find(p.acceleration, "A^n_" + suffix);
   checkNear(n.value(), -omega * omega * r, aTol);
   CHECK(std::abs(n.value().norm() - omega * omega * r.norm()) <= aTol);
-  const PolygonVector& t = find(p.acceleration, "A^t_" + suffix);
+  const PolygonVector t = find(p.acceleration, "A^t_" + suffix);
   CHECK(t.from == n.to);
   checkNear(t.value(), alpha * perp(r), aTol);
 }
@@ -163,12 +163,12 @@ TEST_CASE("slider-crank polygons: the piston slides along the guide", "[vector_p
   const Eigen::Vector2d o2 = pose.position[0], b = pose.position[1], c = pose.position[2];
   checkRigid(p, "B", b - o2, example.omega, kCrankAlpha);
   checkRigid(p, "CB", c - b, pose.linkOmega[1], pose.linkAlpha[1]);
-  const PolygonVector& vc = find(p.velocity, "V_C");
+  const PolygonVector vc = find(p.velocity, "V_C");
   CHECK(vc.term == VectorTerm::Sliding);
   CHECK(vc.from == Eigen::Vector2d::Zero());
   checkNear(vc.to, pose.velocity[2], 1e-9 * sizeOf(p.velocity));
   CHECK(std::abs(vc.value().y()) <= 1e-9 * sizeOf(p.velocity));
-  const PolygonVector& ac = find(p.acceleration, "A_C");
+  const PolygonVector ac = find(p.acceleration, "A_C");
   checkNear(ac.to, pose.acceleration[2], 1e-9 * sizeOf(p.acceleration));
   CHECK(p.velocity.equations[1].text == "V_C = V_B + V_CB");
   CHECK(p.acceleration.equations[1].text == "A_C = A_B + A^n_CB + A^t_CB");
@@ -190,13 +190,13 @@ TEST_CASE("crank-shaper polygons: the block slides in the turning slot, with Cor
   // The slide rate is how fast B moves away from O4: d|O4B|/dt = e·V_B.
   const Eigen::Vector2d e = (b - o4).normalized();
   const Eigen::Vector2d slide = e.dot(pose.velocity[kB.index]) * e;
-  const PolygonVector& vs = find(p.velocity, "V_BB'");
+  const PolygonVector vs = find(p.velocity, "V_BB'");
   checkNear(vs.value(), slide, vTol);
   checkNear(vs.to, pose.velocity[kB.index], vTol);
-  const PolygonVector& cor = find(p.acceleration, "A^c_B");
+  const PolygonVector cor = find(p.acceleration, "A^c_B");
   CHECK(cor.term == VectorTerm::Coriolis);
   checkNear(cor.value(), 2.0 * w * perp(slide), aTol);
-  const PolygonVector& as = find(p.acceleration, "A_BB'");
+  const PolygonVector as = find(p.acceleration, "A_BB'");
   CHECK(std::abs(cross(as.value(), e)) <= aTol);
   checkNear(as.to, pose.acceleration[kB.index], aTol);
   checkRigid(p, "RD", pose.position[kRam.index] - d, pose.linkOmega[kLink.index], pose.linkAlpha[kLink.index]);
@@ -229,7 +229,7 @@ TEST_CASE("a pin on a turning guide (PRP yoke): the slide and its Coriolis term 
   checkSidesClose(p->acceleration);
   const Eigen::Vector2d e(std::cos(theta), std::sin(theta));
   const double sDot = 50.0 * std::sin(theta) / (std::cos(theta) * std::cos(theta)) * omega;
-  const PolygonVector& slide = find(p->velocity, "V_CC'");
+  const PolygonVector slide = find(p->velocity, "V_CC'");
   checkNear(slide.value(), sDot * e, 1e-9 * sizeOf(p->velocity));
   checkNear(find(p->acceleration, "A^c_C").value(), 2.0 * omega * sDot * perp(e), 1e-9 * sizeOf(p->acceleration));
   CHECK(p->velocity.equations[1].text == "V_C = V_C' + V_CC'");
