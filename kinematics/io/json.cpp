@@ -23,6 +23,13 @@ Result<JsonValue> parseJson(std::string_view text) {
     if (depth >= kMaxJsonDepth) throw TooDeep{};  // depth counts the enclosing levels
     return true;
   };
+  // nlohmann-json words an empty input differently from one version to the next (3.11.3:
+  // "attempting to parse an empty input…"); say it as for any other input that ends too soon.
+  if (text.empty()) {
+    return Error{ErrorCode::InvalidValue, "json",
+                 "line 1, column 1: syntax error while parsing value - unexpected end of input; expected '[', "
+                 "'{', or a literal"};
+  }
   try {
     return JsonValue::parse(text.begin(), text.end(), limitDepth);
   } catch (const nlohmann::json::parse_error& e) {
