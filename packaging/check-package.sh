@@ -1,37 +1,34 @@
 #!/usr/bin/env bash
-# Checks a built Debian package as a distribution and a new user would:
-#   1. lintian finds no error (warnings are printed);
-#   2. its AppStream data passes appstreamcli validate --pedantic and its desktop entry
-#      desktop-file-validate;
-#   3. on a fresh Debian 12 root, `apt-get install ./linkwright_*.deb` pulls in no -dev package,
-#      linkwright-cli classifies the thesis crank-rocker and the designer renders a window
-#      offscreen; the picture is copied to SCREENSHOT.
+# Checks a built Debian package as a distribution and a new user would, on a fresh root of the
+# Debian release it was built for (its version ends +deb12 or +deb13), with that release's tools:
+#   1. `apt-get install ./linkwright_*.deb` pulls in no -dev package, linkwright-cli classifies
+#      the thesis crank-rocker and the designer renders a window offscreen; the picture is
+#      copied to SCREENSHOT;
+#   2. then, in the same root, the release's lintian finds no error (warnings are printed), and
+#      the installed AppStream data passes appstreamcli validate --pedantic and the desktop
+#      entry desktop-file-validate.
 #
 # Usage: packaging/check-package.sh DEB [SCREENSHOT.png]
-# Needs root and the tools of packaging/install-deps.sh --checks.
+# Needs root and mmdebstrap (packaging/install-deps.sh --checks).
 set -euo pipefail
 
 deb=$(realpath "${1:?usage: packaging/check-package.sh DEB [SCREENSHOT.png]}")
 screenshot=$(realpath -m "${2:-linkwright-package-screenshot.png}")
 here=$(cd "$(dirname "$0")" && pwd)
 root=${LINKWRIGHT_PACKAGE_ROOT:-/var/tmp/linkwright-package-root}
-unpacked=$(mktemp -d)
-trap 'rm -rf "$unpacked"; "$here/fresh-root.sh" remove "$root" 2>/dev/null || true' EXIT
+trap '"$here/fresh-root.sh" remove "$root" 2>/dev/null || true' EXIT
 
 step() { echo "--- check-package: $*"; }
 
-step "lintian $(basename "$deb")"
-lintian --fail-on error --info "$deb"
-echo "lintian: no errors"
+version=$(dpkg-deb -f "$deb" Version)
+case "$version" in
+  *+deb12) release=bookworm ;;
+  *+deb13) release=trixie ;;
+  *) echo "check-package: version $version names no Debian release we build for (+deb12 or +deb13)" >&2; exit 2 ;;
+esac
 
-step "AppStream data and desktop entry"
-dpkg-deb -x "$deb" "$unpacked"
-appstreamcli validate --pedantic --no-net "$unpacked"/usr/share/metainfo/*.metainfo.xml
-desktop-file-validate "$unpacked"/usr/share/applications/linkwright.desktop
-echo "desktop-file-validate: clean"
-
-step "install on a fresh Debian 12 root"
-"$here/fresh-root.sh" create "$root"
+step "install $(basename "$deb") on a fresh $release root"
+"$here/fresh-root.sh" create "$root" "$release"
 cp "$deb" "$root/tmp/"
 deb_in_root=/tmp/$(basename "$deb")
 "$here/fresh-root.sh" run "$root" "
@@ -57,3 +54,13 @@ if [[ "$(head -c 8 "$screenshot" | od -An -tx1 | tr -d ' \n')" != 89504e470d0a1a
   exit 1
 fi
 echo "check-package: the installed designer rendered its window: $screenshot ($(stat -c %s "$screenshot") bytes)"
+
+step "$release's lintian, AppStream and desktop-entry checks"
+"$here/fresh-root.sh" run "$root" "
+  packaging/install-deps.sh --package-checks > /tmp/package-checks-install.log
+  lintian --fail-on error --info $deb_in_root
+  echo 'lintian: no errors'
+  appstreamcli validate --pedantic --no-net /usr/share/metainfo/io.github.linkwright.linkwright.metainfo.xml
+  desktop-file-validate /usr/share/applications/linkwright.desktop
+  echo 'desktop-file-validate: clean'
+"

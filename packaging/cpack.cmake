@@ -56,6 +56,18 @@ if(TARGET linkwright)
   install(FILES ${PROJECT_SOURCE_DIR}/resources/icons/linkwright.svg DESTINATION share/icons/hicolor/scalable/apps)
 endif()
 
+# A package is built for the Debian release it is built on: its dependencies carry that
+# release's library names (Debian 13's have the t64 suffixes), so the release is part of its
+# version: 0.1.0+deb12 for Debian 12, 0.1.0+deb13 for Debian 13, which also sorts the newer
+# release's package above the older one's across an upgrade.
+cmake_host_system_information(RESULT linkwright_distribution QUERY DISTRIB_ID)
+cmake_host_system_information(RESULT linkwright_distribution_version QUERY DISTRIB_VERSION_ID)
+if(linkwright_distribution STREQUAL "debian" AND linkwright_distribution_version MATCHES "^[0-9]+$")
+  set(linkwright_package_suffix "+deb${linkwright_distribution_version}")
+else()
+  set(linkwright_package_suffix "")
+endif()
+
 set(CPACK_GENERATOR "DEB")
 set(CPACK_PACKAGE_NAME "linkwright")
 set(CPACK_PACKAGE_VENDOR "The Linkwright developers")
@@ -66,6 +78,7 @@ set(CPACK_RESOURCE_FILE_LICENSE ${PROJECT_SOURCE_DIR}/LICENSE)
 set(CPACK_STRIP_FILES ON)
 set(CPACK_INSTALL_DEFAULT_DIRECTORY_PERMISSIONS
   OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_READ GROUP_EXECUTE WORLD_READ WORLD_EXECUTE)
+set(CPACK_DEBIAN_PACKAGE_VERSION "${PROJECT_VERSION}${linkwright_package_suffix}")
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION "science")
 set(CPACK_DEBIAN_PACKAGE_PRIORITY "optional")

@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
-# Installs Linkwright's build and test dependencies from Debian 12 packages.
+# Installs Linkwright's build and test dependencies from Debian packages: the same names on
+# Debian 12 (bookworm) and Debian 13 (trixie).
 # Does nothing when everything is present; uses sudo when not run as root.
 #
 #   packaging/install-deps.sh            what building, testing and packaging need
-#   packaging/install-deps.sh --checks   also the tools CI checks the package with
+#   packaging/install-deps.sh --checks   also the tools CI runs on its host: fresh roots, the
+#                                        code style, and the package checks
+#   packaging/install-deps.sh --package-checks   only the tools that check a built package
+#                                        (packaging/check-package.sh, in the package's root)
 #   packaging/install-deps.sh --fuzz     also clang and libFuzzer (tests/fuzz, sanitizer builds)
 #
 # Packages are installed with --no-install-recommends, so every package the build reads must
@@ -21,7 +25,8 @@ packages=(
   libcairo2-dev pkgconf      # cairo draws the lab-report PDF (kinematics/report/); pkg-config finds it
   fonts-dejavu-core          # the report's font (DejaVu Sans: Greek letters, °, ²)
   poppler-utils              # pdftotext and pdfinfo read the report back in tests/cli/report_cli_test.cpp
-  catch2                     # Catch2 2.13 test framework
+  catch2                     # the test framework: Catch2 2.13 on Debian 12, 3.7 on Debian 13
+                             # (tests/support/catch.h takes either)
   qt6-base-dev qt6-charts-dev qt6-svg-dev  # the GUI (Widgets, Concurrent, Charts, SVG export)
   libgl-dev                  # OpenGL headers that Qt6Gui's CMake package requires
   libqt6opengl6-dev          # Qt6OpenGL: Qt6Charts' CMake package requires it, yet it is only a
@@ -31,23 +36,29 @@ packages=(
   dpkg-dev file              # cpack -G DEB: dpkg-shlibdeps finds the package's dependencies
 )
 
-check_packages=(
+package_check_packages=(
   lintian                    # Debian's package checker
   appstream desktop-file-utils  # validate the AppStream data and the desktop entry
-  mmdebstrap                 # a fresh Debian 12 root (packaging/fresh-root.sh)
+)
+
+check_packages=(
+  "${package_check_packages[@]}"
+  mmdebstrap                 # fresh Debian 12 and 13 roots (packaging/fresh-root.sh)
   clang-format               # the code style (.clang-format), checked by CI
 )
 
 fuzz_packages=(
-  clang                      # libFuzzer's compiler (Debian 12: clang 14)
-  libclang-rt-14-dev         # the libFuzzer and sanitizer runtimes, only a Recommends of clang
+  clang                      # libFuzzer's compiler (clang 14 on Debian 12, 19 on Debian 13)
+  libclang-rt-dev            # the libFuzzer and sanitizer runtimes of that clang, only a
+                             # Recommends of it
 )
 
 case "${1:-}" in
   "") ;;
   --checks) packages+=("${check_packages[@]}") ;;
+  --package-checks) packages=("${package_check_packages[@]}") ;;
   --fuzz) packages+=("${fuzz_packages[@]}") ;;
-  *) echo "usage: packaging/install-deps.sh [--checks | --fuzz]" >&2; exit 2 ;;
+  *) echo "usage: packaging/install-deps.sh [--checks | --package-checks | --fuzz]" >&2; exit 2 ;;
 esac
 
 missing=()
