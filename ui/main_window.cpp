@@ -31,6 +31,7 @@
 #include "ui/plots/quality_bar.h"
 #include "ui/settings.h"
 #include "ui/synthesis/synthesis_panel.h"
+#include "ui/wheel_guard.h"
 
 #include "kinematics/design/dyad_request.h"
 #include "kinematics/design/examples.h"
@@ -101,10 +102,12 @@ MainWindow::MainWindow(QWidget* parent)
   constexpr int kGrowthRoomPx = 80;
   sideLayout->addSpacerItem(new QSpacerItem(0, kGrowthRoomPx, QSizePolicy::Minimum, QSizePolicy::Expanding));
   auto* scroll = new QScrollArea(this);
+  scroll->setObjectName("SidePanel");
   m_sidePanel = scroll;
   scroll->setWidget(side);
   scroll->setWidgetResizable(true);
   scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  new WheelGuard(scroll);  // the wheel scrolls the panels; it edits a control only once focused
   // As wide as the panels need, plus the vertical scroll bar: never cut off on the right.
   scroll->setMinimumWidth(side->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width() + 4);
 
