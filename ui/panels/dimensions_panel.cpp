@@ -20,7 +20,8 @@ namespace k = kinematics;
 
 DimensionsPanel::DimensionsPanel(MechanismDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document), m_fourBar(new FourBarLengthsEditor(document, this)),
-      m_box(new QGroupBox(tr("Dimensions"), this)), m_grid(new QGridLayout(m_box)), m_message(new RefusalLabel(this)) {
+      m_box(new QGroupBox(tr("Dimensions"), this)), m_grid(new QGridLayout(m_box)),
+      m_message(new RefusalLabel(document, this)) {
   auto* layout = new QVBoxLayout(this);
   m_grid->setColumnStretch(1, 1);
   m_grid->setVerticalSpacing(3);

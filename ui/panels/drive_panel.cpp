@@ -113,7 +113,7 @@ DrivePanel::DrivePanel(MechanismDocument* document, Settings* settings, QWidget*
     : QWidget(parent), m_document(document), m_settings(settings), m_driver(new QComboBox(this)),
       m_law(new QComboBox(this)), m_speedUnit(new QComboBox(this)), m_samples(new QSpinBox(this)),
       m_tableName(new QLabel(this)), m_loadTable(new QPushButton(tr("Load CSV…"), this)), m_axis(new QComboBox(this)),
-      m_form(nullptr), m_message(new RefusalLabel(this)) {
+      m_form(nullptr), m_message(new RefusalLabel(document, this)) {
   auto* layout = new QVBoxLayout(this);
   auto* box = new QGroupBox(tr("Drive"), this);
   m_form = new QFormLayout(box);

@@ -119,7 +119,11 @@ DynamicsPanel::DynamicsPanel(MechanismDocument* document, QWidget* parent)
   connect(m_forceX, &QDoubleSpinBox::valueChanged, this, [this] { editForce(); });
   connect(m_forceY, &QDoubleSpinBox::valueChanged, this, [this] { editForce(); });
   connect(document, &MechanismDocument::changed, this, [this](Changes what) {
-    if (what & Change::Design) refresh();
+    if (!(what & Change::Design)) return;
+    // A refused edit changes nothing, so a new design is one the refusal was not made for.
+    m_refusal->clear();
+    m_refusal->setVisible(false);
+    refresh();
   });
   refresh();
 }

@@ -35,7 +35,7 @@ namespace k = kinematics;
 SynthesisPanel::SynthesisPanel(MechanismDocument* document, LinkageView* view, QWidget* parent)
     : QWidget(parent), m_document(document), m_view(view), m_problem(new QComboBox(this)),
       m_transmissionBound(new QDoubleSpinBox(this)), m_stack(new QStackedWidget(this)),
-      m_refusal(new RefusalLabel(this)), m_summary(new QLabel(this)), m_table(new CandidateTable(this)),
+      m_refusal(new RefusalLabel(document, this)), m_summary(new QLabel(this)), m_table(new CandidateTable(this)),
       m_use(new QPushButton(tr("Use this linkage"), this)), m_pathSearch(new PathSearchWorker(this)),
       m_preview(new SynthesisPreviewItem) {
   setObjectName(QStringLiteral("SynthesisPanel"));
