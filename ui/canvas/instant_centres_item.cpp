@@ -123,10 +123,17 @@ void InstantCentresItem::setPresentationScale(double factor) {
 }
 
 void InstantCentresItem::updateBounds() {
-  QRectF box;
+  // The points' extent, kept as corners: QRectF::united ignores a rectangle of no size, so a
+  // box grown from points that way stayed at the last point alone, and the item, culled by
+  // that box, went undrawn wherever its last point lay off screen (the shaper's centres).
+  std::optional<QRectF> extent;
   const auto include = [&](const Eigen::Vector2d& p) {
     const QPointF q = toQt(p);
-    box = box.isNull() ? QRectF(q, QSizeF(0.0, 0.0)) : box.united(QRectF(q, QSizeF(0.0, 0.0)));
+    if (!extent) extent = QRectF(q, q);
+    extent->setLeft(std::min(extent->left(), q.x()));
+    extent->setRight(std::max(extent->right(), q.x()));
+    extent->setTop(std::min(extent->top(), q.y()));
+    extent->setBottom(std::max(extent->bottom(), q.y()));
   };
   if (m_centres)
     for (const k::InstantCentre& c : m_centres->centres)
@@ -136,6 +143,7 @@ void InstantCentresItem::updateBounds() {
   if (m_frame)
     for (const auto& run : m_centrodes.moving)
       for (const Eigen::Vector2d& p : run) include(m_frame->toWorld(p));
+  const QRectF box = extent.value_or(QRectF());
   // Marks, arrows and labels are drawn in pixels around these points.
   const double margin = 0.25 * std::max({box.width(), box.height(), m_centres ? m_centres->scale : 0.0});
   prepareGeometryChange();
