@@ -145,7 +145,8 @@ int main(int argc, char** argv) {
   // the default, in which every edit's sweep is there at once.
   window.document()->setSweepThreading(linkwright::ui::DisplaySweeper::Threading::Adaptive);
   namespace k = linkwright::kinematics;
-  if (options->example) window.newDocument(*k::designForExample(*options->example));
+  if (options->example)
+    window.newDocument(*k::designForExample(*options->example), QString::fromStdString(*options->example));
   if (options->file && !window.openFile(QString::fromStdString(*options->file))) {
     std::cerr << "linkwright: " << window.banner()->text().toStdString() << "\n";
     if (options->screenshot || options->animation || options->inversionsScreenshot) return 2;

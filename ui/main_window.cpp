@@ -156,7 +156,7 @@ MainWindow::MainWindow(QWidget* parent)
   resize(1400, 880);
   restoreGeometry(m_settings->windowGeometry());
   restoreState(m_settings->windowState());
-  newDocument(*k::designForExample("thesis-crank-rocker"));
+  newDocument(*k::designForExample("thesis-crank-rocker"), QStringLiteral("thesis-crank-rocker"));
 }
 
 // Kinematics plots, the forces view (masses and loads, torque and joint-force plots, polar
@@ -335,7 +335,7 @@ void MainWindow::buildExamplesMenu(QMenu* menu) {
   menu->setToolTipsVisible(true);
   const auto addExample = [this, menu](const std::string& name, const std::string& description) {
     QAction* action = menu->addAction(exampleMenuText(description), this, [this, name] {
-      if (maybeSave()) newDocument(*k::designForExample(name));
+      if (maybeSave()) newDocument(*k::designForExample(name), QString::fromStdString(name));
     });
     action->setObjectName(QString::fromStdString("example_" + name));
     action->setToolTip(QString::fromStdString(name + ": " + description));
@@ -364,7 +364,8 @@ void MainWindow::openAttachDyadDialog() {
   dialog.exec();
 }
 
-void MainWindow::newDocument(const k::Design& design) {
+void MainWindow::newDocument(const k::Design& design, const QString& name) {
+  m_unsavedName = name.isEmpty() ? QString::fromStdString(design.kind) : name;
   m_animator->pause();
   m_plots->clearComparison();  // another tool's rows belong to the linkage they were compared with
   m_document->reset(design);
@@ -539,7 +540,9 @@ void MainWindow::refreshRecentFiles() {
 
 void MainWindow::refreshTitle() {
   const QString path = m_document->filePath();
-  const QString name = path.isEmpty() ? tr("Untitled") : QFileInfo(path).fileName();
+  // A document not saved yet is named after what it was started from, so a lecture's window
+  // says which example it shows.
+  const QString name = path.isEmpty() ? tr("%1 (not saved)").arg(m_unsavedName) : QFileInfo(path).fileName();
   setWindowTitle(tr("%1[*] — Linkwright").arg(name));
   setWindowModified(m_document->isModified());
 }

@@ -65,8 +65,9 @@ public:
   CrankAnimator* animator() const { return m_animator; }
   MessageBanner* banner() const { return m_banner; }
 
-  /// Starts a new document on `design` (File ▸ New, Examples).
-  void newDocument(const kinematics::Design& design);
+  /// Starts a new document on `design` (File ▸ New, Examples). Until it is saved, the title
+  /// calls it `name` (the example's name), or the design's kind when `name` is empty.
+  void newDocument(const kinematics::Design& design, const QString& name = {});
   /// Attaches a dyad to the current linkage, undoably (Edit ▸ Attach dyad… without the
   /// dialog). Returns the reason if the core or the document refuses; then nothing changes.
   std::optional<QString> attachDyad(const kinematics::DyadRequest& request);
@@ -175,6 +176,7 @@ private:
   QAction* m_inversionsAction = nullptr;
   InversionsWindow* m_inversions = nullptr;
   bool m_presentation = false;
+  QString m_unsavedName;  ///< what the title calls a document not saved yet
   QFont m_normalFont;
 };
 

@@ -34,6 +34,7 @@
 
 #include "tests/support/catch.h"
 
+#include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -168,6 +169,22 @@ TEST_CASE("opening a corrupt file shows an error and changes nothing", "[ui][win
   CHECK(window.banner()->isVisibleTo(&window));
   CHECK(window.banner()->text().contains("broken.json"));
   CHECK(window.banner()->text().contains("not valid JSON"));
+}
+
+TEST_CASE("the title names the example picked until the document is saved", "[ui][window][journey][file]") {
+  ui::MainWindow window;
+  CHECK(window.windowTitle().startsWith("thesis-crank-rocker (not saved)"));
+  auto* shaper = window.findChild<QAction*>("example_shaper");
+  REQUIRE(shaper != nullptr);
+  shaper->trigger();  // Examples ▸ the crank-shaper, as the menu does
+  CHECK(window.document()->design().kind == kinematics::designForExample("shaper")->kind);
+  CHECK(window.windowTitle().startsWith("shaper (not saved)"));
+  CHECK_FALSE(window.windowTitle().contains("Untitled"));
+  window.newDocument(*kinematics::designForExample("watt-ii"));  // File ▸ New's path: no name given
+  CHECK(window.windowTitle().startsWith(QString::fromStdString(window.document()->design().kind) + " (not saved)"));
+  QTemporaryDir dir;
+  REQUIRE(window.saveTo(dir.filePath("lecture.linkwright")));
+  CHECK(window.windowTitle().startsWith("lecture.linkwright"));
 }
 
 TEST_CASE("the window starts on the thesis example and offers every example", "[ui][window]") {
