@@ -89,7 +89,13 @@ SynthesisPanel::SynthesisPanel(MechanismDocument* document, LinkageView* view, Q
     updatePreview();
     updateControls();
   });
-  connect(m_use, &QPushButton::clicked, this, [this] { m_refusal->showOutcome(useChosen()); });
+  connect(m_use, &QPushButton::clicked, this, [this] {
+    const std::optional<QString> refusal = useChosen();
+    m_refusal->showOutcome(refusal);
+    // The candidate is the linkage drawn now; its preview over it would only hide it. Picking
+    // a candidate in the table shows the preview again.
+    if (!refusal) showPreview(false);
+  });
   connect(m_pathSearch, &PathSearchWorker::progress, this, [this](int done, int total) {
     m_progress->setRange(0, total);
     m_progress->setValue(done);

@@ -243,6 +243,12 @@ TEST_CASE("the preview draws the chosen candidate while the panel is shown", "[u
   CHECK_FALSE(preview->isVisible());
   panel.candidates()->selectRow(1);
   CHECK(preview->isVisible());
+  // Used, the candidate is the document's linkage: no preview left drawn over it.
+  QTest::mouseClick(panel.useButton(), Qt::LeftButton);
+  REQUIRE(panel.refusalMessage().isEmpty());
+  CHECK_FALSE(preview->isVisible());
+  panel.candidates()->selectRow(2);
+  CHECK(preview->isVisible());
   panel.hide();
   CHECK_FALSE(preview->isVisible());
 }
