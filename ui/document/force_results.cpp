@@ -104,7 +104,8 @@ void ForceResults::solveCycle() {
   cancelPending();
   const k::LinkageDynamics& dynamics = m_document->design().dynamics;
   if (dynamics.empty()) {
-    clear(State::NoDynamics, tr("This design has no masses or loads: set them in Properties."));
+    clear(State::NoDynamics,
+          tr("This design has no masses or loads: give its links masses in the Links table above, or add a load."));
     return;
   }
   const k::Mechanism& mechanism = m_document->mechanism();

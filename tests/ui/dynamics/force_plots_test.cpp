@@ -97,8 +97,8 @@ TEST_CASE("without masses the force plots hide and say why", "[forces][plots]") 
   ForceResults forces(&doc);
   forces.setEnabled(true);
   ForcePlotPanel panel(&doc, &forces);
-  CHECK(panel.statusText().contains("Properties"));
-  CHECK(panel.torqueChart()->isHidden() == false);  // its container hides, not the chart itself
+  CHECK(panel.statusText().contains("Links table"));  // where the masses go
+  CHECK(panel.torqueChart()->isHidden() == false);    // its container hides, not the chart itself
   CHECK_FALSE(panel.torqueChart()->isVisibleTo(&panel));
 }
 

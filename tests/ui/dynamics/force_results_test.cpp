@@ -99,6 +99,9 @@ TEST_CASE("a design without masses or loads, or with an unknown unit, has no for
   forces.setEnabled(true);
   CHECK(forces.state() == ForceResults::State::NoDynamics);
   CHECK(forces.message().contains("no masses or loads"));
+  // It points at where the masses go, the Forces tab's Links table (there is no Properties panel).
+  CHECK(forces.message().contains("Links table"));
+  CHECK_FALSE(forces.message().contains("Properties"));
   CHECK(forces.cycleForces() == nullptr);
 
   k::Design d = funsho();
