@@ -328,11 +328,16 @@ see docs/compare.md; with the mechanism options):
                         rev  an angle measured from the link's other end (ours + 180°,
                              SolidWorks' "inner" rocker angle)
                       e.g. --map 2=time:s,3=coupler_angle:deg,4=rocker_angle:deg:rev
+  --map auto          the mapping clear headers propose: theta2 (the crank angle),
+                      theta3/4, omega3/4, alpha3/4 (coupler, rocker; ASCII or Greek), time,
+                      analyze's names, each in the unit its header names, as (deg);
+                      the report's map: line shows what was taken
   --offset auto|none|DEG
                       a constant crank-angle offset: rows are solved at their crank
-                      angle + offset. auto (default): the least-squares offset within
-                      ±5°, fitted to the position columns if any are mapped, else to all
-                      (each weighted by 1/span²); DEG: given, within ±5
+                      angle + offset. auto (default): fitted within ±5° to the rows that
+                      agree (cells beyond 3 tolerances left out, and listed), to the
+                      position columns if any are mapped, else to all; zero unless it
+                      halves the misfit; DEG: given, within ±5
   --tolerance PCT[,ABS]
                       a row is flagged when |deviation| > ABS + PCT % of the column's
                       span (max − min of its exact values); default 0.25 %, and ABS

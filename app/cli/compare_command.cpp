@@ -8,6 +8,7 @@
 #include "app/cli/compare_report.h"
 #include "app/cli/option_values.h"
 
+#include "kinematics/compare/header_mapping.h"
 #include "kinematics/compare/table_comparison.h"
 #include "kinematics/io/numeric_table_csv.h"
 #include "kinematics/model/units.h"
@@ -69,6 +70,21 @@ kc::CompareOptions optionsFor(const Invocation& inv) {
   return options;
 }
 
+// --map's text, or with "auto" the mapping the table's headers propose (the report's map:
+// line shows it, in the form --map reads back).
+k::Result<kc::ColumnMapping> mappingFor(const std::string& text, const k::io::NumericTable& table,
+                                        const k::Mechanism& mechanism) {
+  if (text != "auto") return kc::parseColumnMap(text, mechanism);
+  kc::ColumnMapping proposed = kc::proposeColumnMapping(table, mechanism);
+  if (!proposed.axis || proposed.columns.empty())
+    return k::Error{k::ErrorCode::InvalidValue, "--map",
+                    std::string("--map auto: the table's headers name ") +
+                        (proposed.axis ? "no quantity" : "no crank angle or time column") +
+                        " clearly (such as \"theta2 (deg)\", \"omega4 [rad/s]\", \"time (s)\"); give --map "
+                        "COLUMN=WHAT[:UNIT],... instead"};
+  return proposed;
+}
+
 }  // namespace
 
 ExitCode runCompare(const Invocation& inv, std::ostream& out, std::ostream& err) {
@@ -80,7 +96,7 @@ ExitCode runCompare(const Invocation& inv, std::ostream& out, std::ostream& err)
   if (!resolved) return fail(resolved.error().message);
   const auto table = readTableFile(*inv.compareTable);
   if (!table) return fail(table.error().message);
-  const auto mapping = kc::parseColumnMap(*inv.compareMap, resolved->mechanism);
+  const auto mapping = mappingFor(*inv.compareMap, *table, resolved->mechanism);
   if (!mapping) return fail(mapping.error().message);
   if (auto e = kc::checkColumnMapping(*mapping, *table)) return fail("--map: " + e->message);
   const auto drive = driveFor(inv, resolved->defaults);

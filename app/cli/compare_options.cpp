@@ -13,7 +13,7 @@ using kinematics::compare::OffsetMode;
 
 constexpr const char* kShape =
     "linkwright-cli compare FILE.json|--example NAME|--fourbar F,C,C,R TABLE.csv --map "
-    "COLUMN=WHAT[:UNIT][:FLAG],... (see linkwright-cli --help compare)";
+    "COLUMN=WHAT[:UNIT][:FLAG],...|auto (see linkwright-cli --help compare)";
 
 std::optional<Error> parseOffset(Invocation& inv, const std::string& value) {
   if (value == "auto" || value == "none") {

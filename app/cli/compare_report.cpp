@@ -68,6 +68,21 @@ std::string solvedAt(double offsetDeg) {
          formatShort(std::abs(offsetDeg), 4) + "°";
 }
 
+// "line 8 (column 3), lines 5, 17 (column 4)": the cells the offset fit left out.
+std::string leftOutOfFit(const kc::Comparison& cmp) {
+  std::string text;
+  for (const kc::ColumnComparison& column : cmp.columns) {
+    std::vector<std::string> lines;
+    for (const kc::RowComparison& row : column.rows)
+      if (row.outsideFit) lines.push_back(std::to_string(row.line));
+    if (lines.empty()) continue;
+    std::string entry = lines.size() == 1 ? "line " : "lines ";
+    for (std::size_t i = 0; i < lines.size(); ++i) entry += (i ? ", " : "") + lines[i];
+    text += (text.empty() ? "" : "; ") + entry + " (column " + std::to_string(column.mapped.column + 1) + ")";
+  }
+  return text;
+}
+
 std::string offsetDescription(const CompareContext& c, const kc::Comparison& cmp) {
   const std::string value = formatShort(cmp.offsetDeg, 4) + "°";
   switch (cmp.offsetMode) {
@@ -75,10 +90,12 @@ std::string offsetDescription(const CompareContext& c, const kc::Comparison& cmp
   case kc::OffsetMode::Given: return value + " (given): " + solvedAt(cmp.offsetDeg);
   case kc::OffsetMode::Auto: break;
   }
-  std::string text = value + " (least squares within ±" + formatShort(c.options.offsetBoundDeg) + "°, fitted to " +
+  std::string text = value + " (fitted within ±" + formatShort(c.options.offsetBoundDeg) + "° to " +
                      (cmp.offsetFromPositions ? "the position columns" : "all columns") +
-                     "): " + solvedAt(cmp.offsetDeg);
+                     ", leaving out cells beyond 3 tolerances): " + solvedAt(cmp.offsetDeg);
+  if (cmp.offsetKeptZero) text += "\n        zero kept: no offset halves the misfit of the rows that agree";
   if (cmp.offsetAtBound) text += "\n        at the bound: the table may be shifted further, or mapped wrong";
+  if (const std::string left = leftOutOfFit(cmp); !left.empty()) text += "\n        left out of the fit: " + left;
   return text;
 }
 
@@ -136,6 +153,7 @@ void writeComparisonJson(std::ostream& out, const CompareContext& c, const kc::C
                       {"exact", row.exact ? number(*row.exact) : json(nullptr)},
                       {"deviation", row.exact ? number(row.deviation) : json(nullptr)},
                       {"flagged", row.flagged},
+                      {"outside_fit", row.outsideFit},
                       {"note", row.note}});
     columns.push_back({{"column", column.mapped.column + 1},
                        {"header", c.table.labels[column.mapped.column]},
@@ -159,7 +177,11 @@ void writeComparisonJson(std::ostream& out, const CompareContext& c, const kc::C
   const json doc{{"table", c.tablePath},
                  {"rows", c.table.rows.size()},
                  {"map", kc::formatColumnMap(c.mapping)},
-                 {"offset", {{"mode", mode}, {"deg", number(cmp.offsetDeg)}, {"at_bound", cmp.offsetAtBound}}},
+                 {"offset",
+                  {{"mode", mode},
+                   {"deg", number(cmp.offsetDeg)},
+                   {"at_bound", cmp.offsetAtBound},
+                   {"kept_zero", cmp.offsetKeptZero}}},
                  {"tolerance_percent_of_span", number(c.options.relativeTolerance * 100.0)},
                  {"flagged_rows", cmp.flaggedRows()},
                  {"columns", std::move(columns)}};

@@ -14,10 +14,6 @@ namespace {
 
 using io::formatShort;
 
-// A row that cannot be solved weighs as much as a deviation of a thousand spans: the fit stays
-// where the table's rows assemble.
-constexpr double kUnsolvedPenalty = 1e6;
-
 // The exact values of every mapped column at every row, for one offset.
 struct Evaluation {
   std::vector<std::vector<std::optional<double>>> exact;  // [column][row], the file's form
@@ -100,77 +96,132 @@ double spanOf(const MappedColumn& c, const io::NumericTable& table, const std::v
   return hi - lo;
 }
 
-// Σ (deviation / scale)² over the fitted columns; unsolved rows weigh kUnsolvedPenalty.
-double misfit(const Evaluation& ev, const io::NumericTable& table, const ColumnMapping& mapping,
-              const std::vector<bool>& fitted, const std::vector<double>& scale) {
-  double sum = 0.0;
-  for (std::size_t c = 0; c < mapping.columns.size(); ++c) {
-    if (!fitted[c]) continue;
-    const MappedColumn& col = mapping.columns[c];
-    for (std::size_t r = 0; r < table.rows.size(); ++r) {
-      const auto& value = table.rows[r].cells[col.column];
+// The offset fit weighs each cell (row, fitted column) by its column's default tolerance:
+// u = deviation / (rounding + 0.25 % of the span at δ = 0). A cell beyond kInlierBound
+// tolerances is one the comparison should flag, not one the offset should explain.
+constexpr double kInlierBound = 3.0;
+// An offset replaces zero only when it at least halves the misfit: a table's rounding noise
+// lets a fitted δ take off a few per cent, never half (1/N of it on average, N cells).
+constexpr double kClearlyBetter = 0.5;
+
+struct FitCells {
+  const io::NumericTable& table;
+  const ColumnMapping& mapping;
+  std::vector<bool> fitted;       // [column]
+  std::vector<double> tolerance;  // [column]
+};
+
+// u of every cell with a value in a fitted column: nullopt where the pose has no exact value.
+template <typename Visit>
+void forEachCell(const FitCells& cells, const Evaluation& ev, Visit visit) {
+  for (std::size_t c = 0; c < cells.mapping.columns.size(); ++c) {
+    if (!cells.fitted[c]) continue;
+    const MappedColumn& col = cells.mapping.columns[c];
+    for (std::size_t r = 0; r < cells.table.rows.size(); ++r) {
+      const auto& value = cells.table.rows[r].cells[col.column];
       if (!value) continue;
-      if (!ev.exact[c][r]) {
-        sum += kUnsolvedPenalty;
-        continue;
-      }
-      const double d = deviationOf(col, *value, *ev.exact[c][r]) / scale[c];
-      sum += d * d;
+      if (!ev.exact[c][r]) visit(c, r, std::optional<double>());
+      else visit(c, r, std::optional<double>(deviationOf(col, *value, *ev.exact[c][r]) / cells.tolerance[c]));
     }
   }
+}
+
+// Σ min(u², K²): a cell that disagrees (or cannot be solved) costs K² wherever δ is, so it
+// cannot pull the fit. Scanned over the whole bound, this finds the offset most rows agree on.
+double robustMisfit(const FitCells& cells, const Evaluation& ev) {
+  double sum = 0.0;
+  forEachCell(cells, ev, [&](std::size_t, std::size_t, std::optional<double> u) {
+    sum += u ? std::min(*u * *u, kInlierBound * kInlierBound) : kInlierBound * kInlierBound;
+  });
   return sum;
 }
 
-struct OffsetFit {
-  double offset = 0.0;  // in the input's unit (rad for a crank)
-  bool atBound = false;
-  bool fromPositions = false;
-};
+using CellSet = std::vector<std::vector<bool>>;  // [column][row]: the fit uses the cell
 
-OffsetFit fitOffset(const Mechanism& m, const CompareDrive& drive, const io::NumericTable& table,
-                    const ColumnMapping& mapping, double bound) {
-  OffsetFit fit;
-  std::vector<bool> fitted(mapping.columns.size(), true);
-  for (const MappedColumn& c : mapping.columns) fit.fromPositions = fit.fromPositions || isPosition(c);
-  for (std::size_t c = 0; c < mapping.columns.size(); ++c)
-    fitted[c] = !fit.fromPositions || isPosition(mapping.columns[c]);
-  const Evaluation atZero = evaluate(m, drive, table, mapping, 0.0);
-  // One scale per dimension, in its sweep unit: the largest span among its columns. Columns of
-  // one dimension weigh alike (a degree of θ3 as a degree of θ4, whatever their spans).
-  const std::size_t n = mapping.columns.size();
-  std::vector<double> dimensionSpan(static_cast<std::size_t>(Dimension::Time) + 1, 0.0);
-  for (std::size_t c = 0; c < n; ++c) {
-    const MappedColumn& col = mapping.columns[c];
-    double& span = dimensionSpan[static_cast<std::size_t>(col.quantity.dimension)];
-    span = std::max(span, spanOf(col, table, atZero.exact[c]) * col.unit.factor);
-  }
-  std::vector<double> scale(n, 1.0);
-  for (std::size_t c = 0; c < n; ++c) {
-    const MappedColumn& col = mapping.columns[c];
-    const double span = dimensionSpan[static_cast<std::size_t>(col.quantity.dimension)] / col.unit.factor;
-    scale[c] = span > 0.0 ? span : std::max(table.rounding[col.column], 1e-12);
-  }
-  const auto cost = [&](double offset) {
-    return misfit(evaluate(m, drive, table, mapping, offset), table, mapping, fitted, scale);
-  };
-  constexpr int kScan = 100;
-  const double step = 2.0 * bound / kScan;
-  double best = 0.0, bestCost = cost(0.0);
-  for (int i = 0; i <= kScan; ++i) {
-    const double offset = -bound + i * step;
-    if (const double s = cost(offset); s < bestCost) best = offset, bestCost = s;
-  }
-  // Golden section on the scan's best interval.
-  double a = std::max(-bound, best - step), b = std::min(bound, best + step);
+CellSet inliers(const FitCells& cells, const Evaluation& ev) {
+  CellSet set(cells.mapping.columns.size(), std::vector<bool>(cells.table.rows.size(), false));
+  forEachCell(cells, ev, [&](std::size_t c, std::size_t r, std::optional<double> u) {
+    set[c][r] = u && std::abs(*u) <= kInlierBound;
+  });
+  return set;
+}
+
+// Σ u² over `set`; a cell of the set that can no longer be solved costs K².
+double squares(const FitCells& cells, const Evaluation& ev, const CellSet& set) {
+  double sum = 0.0;
+  forEachCell(cells, ev, [&](std::size_t c, std::size_t r, std::optional<double> u) {
+    if (set[c][r]) sum += u ? *u * *u : kInlierBound * kInlierBound;
+  });
+  return sum;
+}
+
+// The minimum of `cost` on [a, b] by golden section, to 1e-9 of the bound.
+template <typename Cost>
+double goldenSection(const Cost& cost, double a, double b, double bound) {
   const double g = (std::sqrt(5.0) - 1.0) / 2.0;
   double x1 = b - g * (b - a), x2 = a + g * (b - a), f1 = cost(x1), f2 = cost(x2);
   while (b - a > 1e-9 * std::max(1.0, bound)) {
     if (f1 < f2) b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = cost(x1);
     else a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = cost(x2);
   }
-  fit.offset = (a + b) / 2.0;
-  if (cost(fit.offset) > bestCost) fit.offset = best;
-  fit.atBound = std::abs(fit.offset) > bound - step / 2.0;
+  return (a + b) / 2.0;
+}
+
+struct OffsetFit {
+  double offset = 0.0;  // in the input's unit (rad for a crank)
+  bool atBound = false;
+  bool fromPositions = false;
+  bool keptZero = false;  // a fitted offset did not explain the rows clearly better than none
+  CellSet used;           // the cells the fit was made on
+};
+
+// Iteratively trimmed least squares: the robust scan's best δ, then least squares on the cells
+// within kInlierBound tolerances of it, repeated until those cells stay the same; zero unless
+// that δ at least halves the misfit of those cells.
+OffsetFit fitOffset(const Mechanism& m, const CompareDrive& drive, const io::NumericTable& table,
+                    const ColumnMapping& mapping, double bound) {
+  OffsetFit fit;
+  const std::size_t n = mapping.columns.size();
+  FitCells cells{table, mapping, std::vector<bool>(n, true), std::vector<double>(n, 1.0)};
+  for (const MappedColumn& c : mapping.columns) fit.fromPositions = fit.fromPositions || isPosition(c);
+  for (std::size_t c = 0; c < n; ++c) cells.fitted[c] = !fit.fromPositions || isPosition(mapping.columns[c]);
+  const Evaluation atZero = evaluate(m, drive, table, mapping, 0.0);
+  for (std::size_t c = 0; c < n; ++c) {
+    const MappedColumn& col = mapping.columns[c];
+    const double t =
+        table.rounding[col.column] + CompareOptions{}.relativeTolerance * spanOf(col, table, atZero.exact[c]);
+    cells.tolerance[c] = std::max(t, 1e-12);
+  }
+  const auto at = [&](double offset) { return evaluate(m, drive, table, mapping, offset); };
+
+  constexpr int kScan = 100;
+  const double step = 2.0 * bound / kScan;
+  double best = 0.0, bestCost = robustMisfit(cells, atZero);
+  for (int i = 0; i <= kScan; ++i) {
+    const double offset = -bound + i * step;
+    if (const double s = robustMisfit(cells, at(offset)); s < bestCost) best = offset, bestCost = s;
+  }
+  double offset = goldenSection([&](double d) { return robustMisfit(cells, at(d)); }, std::max(-bound, best - step),
+                                std::min(bound, best + step), bound);
+  if (robustMisfit(cells, at(offset)) > bestCost) offset = best;
+
+  CellSet used = inliers(cells, at(offset));
+  for (int round = 0; round < 10; ++round) {
+    const auto cost = [&](double d) { return squares(cells, at(d), used); };
+    const double refined = goldenSection(cost, std::max(-bound, offset - step), std::min(bound, offset + step), bound);
+    if (cost(refined) <= cost(offset)) offset = refined;
+    CellSet next = inliers(cells, at(offset));
+    if (next == used) break;
+    used = std::move(next);
+  }
+  if (!(squares(cells, at(offset), used) <= kClearlyBetter * squares(cells, atZero, used))) {
+    fit.keptZero = offset != 0.0;
+    offset = 0.0;
+    used = inliers(cells, atZero);
+  }
+  fit.offset = offset;
+  fit.atBound = std::abs(offset) > bound - step / 2.0;
+  fit.used = std::move(used);
   return fit;
 }
 
@@ -283,16 +334,25 @@ Result<Comparison> compareTable(const Mechanism& m, const CompareDrive& drive, c
   out.axis = *mapping.axis;
   out.offsetMode = options.offset;
   double offset = options.offset == OffsetMode::Given ? toInput(options.offsetDeg) : 0.0;
+  OffsetFit fit;
   if (options.offset == OffsetMode::Auto) {
-    const OffsetFit fit = fitOffset(m, drive, table, mapping, toInput(options.offsetBoundDeg));
+    fit = fitOffset(m, drive, table, mapping, toInput(options.offsetBoundDeg));
     offset = fit.offset;
     out.offsetAtBound = fit.atBound;
     out.offsetFromPositions = fit.fromPositions;
+    out.offsetKeptZero = fit.keptZero;
   }
   out.offsetDeg = angle ? radToDeg(offset) : offset;
   const Evaluation ev = evaluate(m, drive, table, mapping, offset);
-  for (std::size_t c = 0; c < mapping.columns.size(); ++c)
-    out.columns.push_back(compareColumn(mapping.columns[c], table, ev, c, out.axis, options));
+  for (std::size_t c = 0; c < mapping.columns.size(); ++c) {
+    ColumnComparison column = compareColumn(mapping.columns[c], table, ev, c, out.axis, options);
+    const bool fitted = options.offset == OffsetMode::Auto && (!fit.fromPositions || isPosition(column.mapped));
+    for (std::size_t r = 0, k = 0; r < table.rows.size(); ++r) {
+      if (!table.rows[r].cells[column.mapped.column]) continue;
+      column.rows[k++].outsideFit = fitted && !fit.used[c][r];
+    }
+    out.columns.push_back(std::move(column));
+  }
   return out;
 }
 

@@ -6,14 +6,18 @@
 //
 // Crank-angle offset. A motion study often starts a hair away from the angle it claims (the
 // thesis's SolidWorks export, seed 000 Figures 41–43, is at −0.106°). The table's row at x is
-// then solved at x + δ, with δ constant. With OffsetMode::Auto, δ minimises
-//   S(δ) = Σ_columns Σ_rows (deviation / scale)²
-// over |δ| ≤ the bound, where scale is the largest range of exact values among the columns of
-// that column's dimension, in its unit: columns of one dimension weigh alike (a degree of θ3
-// as a degree of θ4), and dimensions (degrees, deg/s²) become comparable. Position columns (angles, coordinates) decide δ
-// when any are mapped: they are what an offset shifts first, and a wrong rate column (a typo in
-// a formula) must not drag it. S is scanned on 101 points and the best interval refined by
-// golden section to 1e-7°.
+// then solved at x + δ, with δ constant. With OffsetMode::Auto, δ is fitted robustly, so that
+// the rows a comparison should flag (a typo, a wrong formula) cannot pull it:
+//   1. each cell's deviation is measured in its column's default tolerance (rounding + 0.25 %
+//      of the span), u = deviation / tolerance, and Σ min(u², 3²) is scanned on 101 points
+//      over |δ| ≤ the bound and refined by golden section: a cell beyond 3 tolerances costs
+//      the same wherever δ is;
+//   2. least squares on the cells within 3 tolerances of that δ (golden section to 1e-9 of
+//      the bound), repeated until those cells stay the same: iteratively trimmed;
+//   3. zero is kept unless the fitted δ at least halves Σ u² over those cells: rounding noise
+//      lets a fit take off about 1/N of it (N cells), an offset in the table nearly all.
+// The cells left out are marked (RowComparison::outsideFit). Position columns (angles,
+// coordinates) decide δ when any are mapped: they are what an offset shifts first.
 //
 // Tolerance. A row is flagged when |deviation| > absolute + relative × span: by default the
 // absolute part is the column's own rounding (half a unit in its last printed digit) and the
@@ -73,7 +77,8 @@ struct RowComparison {
   /// link's first joint, an angle on the exact value's turn, and a magnitude with the exact
   /// value's sign (its own where there is none).
   double restated = 0.0;
-  std::string note;  ///< why there is no exact value (cannot be assembled, a toggle)
+  std::string note;         ///< why there is no exact value (cannot be assembled, a toggle)
+  bool outsideFit = false;  ///< OffsetMode::Auto: the offset fit left this cell out (beyond 3 tolerances)
 };
 
 /// One mapped column's deviations.
@@ -97,6 +102,7 @@ struct Comparison {
   double offsetDeg = 0.0;            ///< δ used: rows solved at x + δ
   bool offsetAtBound = false;        ///< Auto's δ is at the bound: the true offset may be larger
   bool offsetFromPositions = false;  ///< Auto fitted δ to the position columns only
+  bool offsetKeptZero = false;       ///< Auto kept δ = 0: no offset halved the misfit
   std::vector<ColumnComparison> columns;
   std::size_t flaggedRows() const;  ///< over all columns
 };

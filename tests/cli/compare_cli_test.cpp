@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <sstream>
 
 using linkwright::test::CliRun;
 using linkwright::test::runCliCommand;
@@ -46,7 +47,9 @@ TEST_CASE("compare: the thesis Excel table flags α4 in its 8 typo rows and exit
   CHECK_THAT(r.out, Catch::Contains("13 rows, tab-separated, decimal comma"));
   CHECK_THAT(r.out, Catch::Contains("column 7, rocker_alpha rad/s2: 8 of 13 rows beyond"));
   // The flagged rows name the file's lines: 330° is line 16 (0.59 printed, -0.6177 exact).
-  CHECK_THAT(r.out, Catch::Contains("16    330  330.0") && Catch::Contains("-0.6176"));
+  CHECK_THAT(r.out, Catch::Contains("16    330  330  ") && Catch::Contains("-0.6177"));
+  // The table is at the angles it states: the fit keeps zero and says why.
+  CHECK_THAT(r.out, Catch::Contains("offset:    0° (fitted") && Catch::Contains("zero kept"));
   const auto json = nlohmann::json::parse(compare(data("thesis_excel_table7.tsv"), kExcelMap, {"--json"}).out);
   CHECK(json["flagged_rows"] == 8);
   CHECK(json["columns"].size() == 6);
@@ -59,7 +62,7 @@ TEST_CASE("compare: SolidWorks Figure 41 agrees after the fitted offset of -0.10
   const std::string map = "2=time:s,3=coupler_angle:deg,4=rocker_angle:deg:rev";
   const CliRun r = compare(data("thesis_solidworks_fig41_angles.tsv"), map);
   CHECK(r.code == 0);
-  CHECK_THAT(r.out, Catch::Contains("offset:    -0.106"));
+  CHECK_THAT(r.out, Catch::Contains("offset:    -0.10"));
   CHECK_THAT(r.out, Catch::Contains("every row agrees within the tolerance"));
   const auto json = nlohmann::json::parse(compare(data("thesis_solidworks_fig41_angles.tsv"), map, {"--json"}).out);
   CHECK(json["offset"]["mode"] == "auto");
@@ -72,6 +75,29 @@ TEST_CASE("compare: SolidWorks Figure 41 agrees after the fitted offset of -0.10
   const CliRun tight = compare(data("thesis_solidworks_fig41_angles.tsv"), map, {"--tolerance", "0,0"});
   CHECK(tight.code == 0);
   CHECK_THAT(tight.out, Catch::Contains("rows beyond"));
+}
+
+TEST_CASE("compare: a typo does not pull the offset, and the report says the fit left it out", "[cli][compare]") {
+  std::ifstream in(data("thesis_excel_table7.tsv"));
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string table = text.str();
+  const std::string right = "90\t16,10\t80,72", wrong = "90\t16,10\t83,72";  // θ4 at 90° 3° off
+  REQUIRE(table.find(right) != std::string::npos);
+  table.replace(table.find(right), right.size(), wrong);
+  const fs::path file = scratchFile(table);
+  const CliRun r = compare(file.string(), "1=crank-angle:deg,2=coupler_angle:deg,3=rocker_angle:deg");
+  CHECK(r.code == 0);
+  CHECK_THAT(r.out,
+             Catch::Contains("offset:    0° (fitted") && Catch::Contains("left out of the fit: line 8 (column 3)"));
+  CHECK_THAT(r.out, Catch::Contains("column 3, rocker_angle deg: 1 of 13 rows beyond"));
+  CHECK_THAT(r.out, !Catch::Contains("column 2, coupler_angle deg:"));
+  const auto json = nlohmann::json::parse(
+      compare(file.string(), "1=crank-angle:deg,2=coupler_angle:deg,3=rocker_angle:deg", {"--json"}).out);
+  CHECK(json["flagged_rows"] == 1);
+  CHECK(json["offset"]["kept_zero"] == true);
+  CHECK(json["columns"][1]["rows"][3]["outside_fit"] == true);
+  fs::remove(file);
 }
 
 TEST_CASE("compare: a table without numbers, a wrong unit, a column mapped twice, no x: exit 2", "[cli][compare]") {
@@ -134,4 +160,18 @@ TEST_CASE("compare: analyze's own table agrees with the exact solution to round-
     CHECK(std::abs(column["worst"].get<double>()) < 1e-9);
   }
   fs::remove(file);
+}
+
+TEST_CASE("compare --map auto takes the mapping the headers propose, and says so", "[cli][compare]") {
+  const CliRun r = compare(data("thesis_excel_table7.tsv"), "auto");
+  CHECK(r.code == 0);
+  CHECK_THAT(r.out, Catch::Contains("map:       1=crank-angle:deg,2=coupler_angle:deg,3=rocker_angle:deg,"
+                                    "4=coupler_omega:rad/s,5=rocker_omega:rad/s,6=coupler_alpha:rad/s2,"
+                                    "7=rocker_alpha:rad/s2"));
+  CHECK_THAT(r.out, Catch::Contains("column 7, rocker_alpha rad/s2: 8 of 13 rows beyond"));
+  // SolidWorks' "L3-1 Angular Displacement1 (deg)" names no symbol: no guess, exit 2.
+  const CliRun unclear = compare(data("thesis_solidworks_fig41_angles.tsv"), "auto");
+  CHECK(unclear.code == 2);
+  CHECK(unclear.out.empty());
+  CHECK_THAT(unclear.err, Catch::Contains("--map auto") && Catch::Contains("give --map"));
 }

@@ -1,5 +1,6 @@
 #include "ui/compare/column_map_editor.h"
 
+#include "kinematics/compare/header_mapping.h"
 #include "kinematics/io/number_format.h"
 
 #include <QCheckBox>
@@ -79,17 +80,10 @@ void ColumnMapEditor::setTable(const k::io::NumericTable& table, const k::Mechan
       emit mappingChanged();
     });
     connect(comboAt(this, row, kUnit), &QComboBox::currentIndexChanged, this, &ColumnMapEditor::mappingChanged);
-    // A header that is one of analyze's own column names maps itself.
-    std::string implied;
-    if (table.labels[c] == "time_s") role->setCurrentIndex(kTime);
-    else if (const auto q = kc::findQuantity(mechanism, table.labels[c], &implied); q && !implied.empty())
-      for (std::size_t i = 0; i < m_quantities.size(); ++i)
-        if (m_quantities[i].key == q->key) role->setCurrentIndex(kFirstQuantity + static_cast<int>(i));
     fillUnits(row);
   }
-  // analyze's first column, the crank angle, is the x of its own tables.
-  if (rowCount() > 0 && table.labels[0].ends_with("angle_deg") && roleIndex(0) >= kFirstQuantity)
-    comboAt(this, 0, kRole)->setCurrentIndex(kCrankAngle);
+  // Clear headers ("Theta4 (deg)", analyze's own names) propose the mapping to start from.
+  setMapping(kc::proposeColumnMapping(table, mechanism));
 }
 
 int ColumnMapEditor::roleIndex(int row) const { return comboAt(this, row, kRole)->currentIndex(); }

@@ -17,9 +17,8 @@ class ColumnMapEditor : public QTableWidget {
 public:
   explicit ColumnMapEditor(QWidget* parent = nullptr);
 
-  /// One row per column of `table`, each offered the quantities of `mechanism`; a column whose
-  /// header is an analyze column name ("rocker_omega_rad_s", "time_s", "crank_angle_deg") is
-  /// mapped to it.
+  /// One row per column of `table`, each offered the quantities of `mechanism`, showing the
+  /// mapping its headers propose (kinematics/compare/header_mapping.h).
   void setTable(const kinematics::io::NumericTable& table, const kinematics::Mechanism& mechanism);
 
   /// Shows `mapping` (columns it does not name are not compared).

@@ -68,7 +68,8 @@ CompareDialog::CompareDialog(const k::Design& design, const k::io::NumericTable&
       m_summary(resultTable({tr("Column"), tr("Compared with"), tr("Rows"), tr("Worst"), tr("At x"), tr("RMS"),
                              tr("Tolerance"), tr("Flagged")},
                             this)),
-      m_rows(resultTable({tr("Line"), tr("x"), tr("Crank (°)"), tr("Value"), tr("Exact"), tr("Deviation")}, this)),
+      m_rows(resultTable(
+          {tr("Line"), tr("x"), tr("Crank (°)"), tr("Value"), tr("Exact"), tr("Deviation"), tr("Offset fit")}, this)),
       m_drawOnPlots(new QCheckBox(tr("&Draw the rows on the plots"), this)) {
   setWindowTitle(tr("Compare with %1").arg(QFileInfo(path).fileName()));
   auto* layout = new QVBoxLayout(this);
@@ -83,7 +84,7 @@ CompareDialog::CompareDialog(const k::Design& design, const k::io::NumericTable&
   m_editor->setTable(table, design.mechanism);
   layout->addWidget(m_editor, 2);
 
-  m_offsetMode->addItems({tr("Fitted (least squares, ±5°)"), tr("None"), tr("Given")});
+  m_offsetMode->addItems({tr("Fitted (robust, ±5°)"), tr("None"), tr("Given")});
   m_offset->setRange(-5.0, 5.0);
   m_offset->setDecimals(4);
   m_offset->setSuffix(QStringLiteral("°"));
@@ -173,7 +174,12 @@ void CompareDialog::showSummary() {
                 .arg(c.offsetMode == kc::OffsetMode::Auto
                          ? tr(" (fitted to the %1)").arg(c.offsetFromPositions ? tr("position columns") : tr("columns"))
                          : QString());
+  if (c.offsetKeptZero) offset += tr(", zero kept: no offset halves the misfit of the rows that agree");
   if (c.offsetAtBound) offset += tr(", at the bound: the table may be shifted further or mapped wrong");
+  int leftOut = 0;
+  for (const kc::ColumnComparison& column : c.columns)
+    for (const kc::RowComparison& row : column.rows) leftOut += row.outsideFit ? 1 : 0;
+  if (leftOut > 0) offset += tr(", %n value(s) left out of the fit", nullptr, leftOut);
   m_result->setText(c.flaggedRows() == 0
                         ? tr("%1. Every row agrees within the tolerance.").arg(offset)
                         : tr("%1. %2 values beyond the tolerance, highlighted.").arg(offset).arg(c.flaggedRows()));
@@ -204,7 +210,8 @@ void CompareDialog::showRows(int column) {
     const kc::RowComparison& r = col.rows[static_cast<std::size_t>(i)];
     setRow(m_rows, i,
            {QString::number(r.line), number(r.x), number(r.inputDeg, 7), number(r.value),
-            r.exact ? number(*r.exact) : tr("none"), r.exact ? number(r.deviation, 4) : QString::fromStdString(r.note)},
+            r.exact ? number(*r.exact) : tr("none"), r.exact ? number(r.deviation, 4) : QString::fromStdString(r.note),
+            r.outsideFit ? tr("left out") : QString()},
            r.flagged);
   }
 }

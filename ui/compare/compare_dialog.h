@@ -1,7 +1,7 @@
 #pragma once
 // File ▸ Compare…: another tool's table (read by kinematics/io/numeric_table_csv.h) against
 // the document's exact solution. The user maps the columns (ColumnMapEditor), chooses the
-// crank-angle offset (automatic least squares, none, or a value) and the tolerance, and
+// crank-angle offset (fitted robustly, none, or a value) and the tolerance, and
 // Compare shows each column's worst and rms deviation and, for the column selected, every row
 // with the ones beyond the tolerance highlighted; "Draw the rows on the plots" puts the table's
 // rows over the designer's curves (PlotPanel::setComparison). Every number is the core's

@@ -11,6 +11,7 @@
 
 #include "tests/support/catch.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -197,4 +198,74 @@ TEST_CASE("a flagged looser or tighter tolerance moves the flags as it says", "[
   tight.relativeTolerance = 0.0;
   tight.absoluteTolerance = 0.0;
   CHECK(compareFile("thesis_excel_table7.tsv", kExcelMap, tight).flaggedRows() > 40);  // every rounded cell
+}
+
+namespace {
+
+Comparison compareEdited(const io::NumericTable& table, const std::string& map) {
+  const auto mapping = parseColumnMap(map, thesis().mechanism);
+  REQUIRE(mapping);
+  const auto result = compareTable(thesis().mechanism, compareDriveFor(thesis()), table, *mapping);
+  REQUIRE(result);
+  return *result;
+}
+
+std::vector<double> outsideFitAngles(const ColumnComparison& column) {
+  std::vector<double> angles;
+  for (const RowComparison& row : column.rows)
+    if (row.outsideFit) angles.push_back(row.x);
+  return angles;
+}
+
+}  // namespace
+
+TEST_CASE("one θ4 value 3° off: the fitted offset stays zero and only that row is flagged", "[compare][offset]") {
+  io::NumericTable table = readTable("thesis_excel_table7.tsv");
+  REQUIRE(table.rows[3].cells[0] == 90.0);
+  table.rows[3].cells[2] = *table.rows[3].cells[2] + 3.0;  // 80.72 → 83.72
+  const Comparison c = compareEdited(table, "1=crank-angle:deg,2=coupler_angle:deg,3=rocker_angle:deg");
+  // A least-squares fit over every row gave +0.31° and flagged three correct θ3 rows with it.
+  CHECK(c.offsetDeg == 0.0);
+  CHECK_FALSE(c.offsetAtBound);
+  CHECK(c.offsetKeptZero);  // the fit on the agreeing cells finds a rounding-sized δ, not a clear one
+  CHECK(flaggedAngles(c.columns[0]).empty());
+  CHECK(flaggedAngles(c.columns[1]) == std::vector<double>{90});
+  CHECK(outsideFitAngles(c.columns[0]).empty());
+  CHECK(outsideFitAngles(c.columns[1]) == std::vector<double>{90});
+  CHECK(c.columns[1].worst == Approx(3.0).margin(0.01));
+  // The same as no offset at all.
+  CompareOptions none;
+  none.offset = OffsetMode::None;
+  const auto mapping = *parseColumnMap("1=crank-angle:deg,2=coupler_angle:deg,3=rocker_angle:deg", thesis().mechanism);
+  const auto raw = compareTable(thesis().mechanism, compareDriveFor(thesis()), table, mapping, none);
+  REQUIRE(raw);
+  CHECK(raw->flaggedRows() == c.flaggedRows());
+}
+
+TEST_CASE("accelerations only, α4 with its typo: the offset stays zero and α3 agrees", "[compare][offset]") {
+  const Comparison c = compareEdited(readTable("thesis_excel_table7.tsv"),
+                                     "1=crank-angle:deg,6=coupler_alpha:rad/s2,7=rocker_alpha:rad/s2");
+  // A least-squares fit ran to the +5° bound and flagged ten rows of the correct α3.
+  CHECK(std::abs(c.offsetDeg) < 0.01);
+  CHECK_FALSE(c.offsetAtBound);
+  CHECK_FALSE(c.offsetFromPositions);
+  CHECK(c.columns[0].flagged == 0);
+  CHECK(flaggedAngles(c.columns[1]) == std::vector<double>{30, 60, 90, 120, 240, 270, 300, 330});
+  // The fit left out the typo rows it could not explain (those beyond three tolerances).
+  const std::vector<double> left = outsideFitAngles(c.columns[1]), flagged = flaggedAngles(c.columns[1]);
+  CHECK_FALSE(left.empty());
+  for (const double x : left) CHECK(std::count(flagged.begin(), flagged.end(), x) == 1);
+}
+
+TEST_CASE("an offset in the table is still found with a typo in it", "[compare][offset]") {
+  // SolidWorks' angles (−0.106°) with one θ3 value 2° off: the offset stays, the typo is flagged.
+  io::NumericTable table = readTable("thesis_solidworks_fig41_angles.tsv");
+  table.rows[5].cells[2] = *table.rows[5].cells[2] - 2.0;
+  const Comparison c = compareEdited(table, kSolidWorksAngles);
+  CHECK(c.offsetDeg == Approx(-0.106).margin(0.0015));
+  CHECK_FALSE(c.offsetKeptZero);
+  CHECK(c.columns[0].flagged == 1);
+  CHECK(c.columns[0].rows[5].flagged);
+  CHECK(c.columns[0].rows[5].outsideFit);
+  CHECK(c.columns[1].flagged == 0);
 }

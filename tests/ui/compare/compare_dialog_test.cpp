@@ -60,6 +60,12 @@ TEST_CASE("Compare on the thesis Excel table highlights the 8 α4 typo rows", "[
   CompareDialog dialog(thesis, excelTable(), kTable);
   // Each column of the table has a row; the units follow the quantity chosen.
   REQUIRE(dialog.mapEditor()->rowCount() == 7);
+  // The headers ("Angle, θ_2 , deg", "… α_4 , rad/s ²") propose the whole mapping to start from.
+  const auto proposed = dialog.mapEditor()->mapping();
+  REQUIRE(proposed);
+  CHECK(kc::formatColumnMap(*proposed) ==
+        "1=crank-angle:deg,2=coupler_angle:deg,3=rocker_angle:deg,4=coupler_omega:rad/s,5=rocker_omega:rad/s,"
+        "6=coupler_alpha:rad/s2,7=rocker_alpha:rad/s2");
   dialog.mapEditor()->setMapping(*kc::parseColumnMap(kMap, thesis.mechanism));
   const auto mapping = dialog.mapEditor()->mapping();
   REQUIRE(mapping);
