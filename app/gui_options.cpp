@@ -51,6 +51,23 @@ bool parseAnimationOptions(const QCommandLineParser& parser, const QCommandLineO
   return true;
 }
 
+// "1366x768": within what a screen has (640×480 to 7680×4320).
+bool parseWindowSize(const std::string& text, GuiOptions& o, std::string& error) {
+  int width = 0, height = 0;
+  const char* end = text.data() + text.size();
+  const auto w = std::from_chars(text.data(), end, width);
+  const bool separated = w.ec == std::errc{} && w.ptr != end && (*w.ptr == 'x' || *w.ptr == 'X');
+  const auto h =
+      separated ? std::from_chars(w.ptr + 1, end, height) : std::from_chars_result{w.ptr, std::errc::invalid_argument};
+  if (!separated || h.ec != std::errc{} || h.ptr != end || width < 640 || width > 7680 || height < 480 ||
+      height > 4320) {
+    error = "--window-size: '" + text + "' must be WIDTHxHEIGHT in pixels, 640x480 to 7680x4320 (e.g. 1366x768)";
+    return false;
+  }
+  o.windowSize = std::pair{width, height};
+  return true;
+}
+
 }  // namespace
 
 std::string guiUsage() {
@@ -80,6 +97,8 @@ std::string guiUsage() {
          "                      plots' checkboxes: rocker_angle, transmission_angle,\n"
          "                      rocker_omega, C_x, velocity_ratio, mechanical_advantage…\n"
          "                      (a key the linkage does not have is refused, listing its keys)\n"
+         "  --window-size WxH   the window's size in pixels, e.g. 1366x768 (a teaching\n"
+         "                      laptop), 640x480 to 7680x4320\n"
          "  --presentation      large fonts and lines, full screen, the big read-out\n"
          "  --high-contrast     black on white, darker link colours, thicker grid axes (a\n"
          "                      projector; View ▸ High contrast, F12)\n"
@@ -115,8 +134,10 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
   const QCommandLineOption compare("compare", {}, "TABLE");
   const QCommandLineOption compareMap("compare-map", {}, "MAP");
   const QCommandLineOption plots("plots", {}, "KEYS");
+  const QCommandLineOption windowSize("window-size", {}, "WxH");
   parser.addOptions({help, version, presentation, highContrast, forces, centres, example, screenshot,
-                     inversionsScreenshot, crankAngle, animation, frames, frameDelay, compare, compareMap, plots});
+                     inversionsScreenshot, crankAngle, animation, frames, frameDelay, compare, compareMap, plots,
+                     windowSize});
   parser.addPositionalArgument("file", {});
   QStringList arguments{"linkwright"};
   for (const std::string& a : args) arguments << QString::fromStdString(a);
@@ -125,7 +146,7 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
     return std::nullopt;
   }
   for (const auto& option : {example, screenshot, inversionsScreenshot, crankAngle, animation, frames, frameDelay,
-                             compare, compareMap, plots})
+                             compare, compareMap, plots, windowSize})
     if (parser.values(option).size() > 1) {
       error = "--" + option.names().front().toStdString() + " is given more than once";
       return std::nullopt;
@@ -161,6 +182,8 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
       return std::nullopt;
     }
   }
+  if (parser.isSet(windowSize) && !parseWindowSize(parser.value(windowSize).toStdString(), o, error))
+    return std::nullopt;
   if (parser.isSet(screenshot)) o.screenshot = parser.value(screenshot).toStdString();
   if (parser.isSet(inversionsScreenshot)) {
     if (o.screenshot) {

@@ -23,6 +23,7 @@ struct GuiOptions {
   std::optional<std::string> compare;     ///< a table from another tool: open File ▸ Compare… on it
   std::optional<std::string> compareMap;  ///< its column mapping (linkwright-cli compare's --map), compared at once
   std::optional<std::string> plots;       ///< --plots: the keys of the quantities to plot, comma-separated
+  std::optional<std::pair<int, int>> windowSize;  ///< --window-size: the window's width and height, px
   bool presentation = false;
   bool highContrast = false;  ///< start in View ▸ High contrast
   bool forces = false;        ///< start on the Forces tab with force arrows shown

@@ -151,6 +151,7 @@ int main(int argc, char** argv) {
     std::cerr << "linkwright: " << window.banner()->text().toStdString() << "\n";
     if (options->screenshot || options->animation || options->inversionsScreenshot) return 2;
   }
+  if (options->windowSize) window.resize(options->windowSize->first, options->windowSize->second);
   if (options->crankAngleDeg) window.document()->setCrankAngle(k::degToRad(*options->crankAngleDeg));
   if (options->presentation) window.setPresentationMode(true);
   if (options->highContrast) window.setHighContrast(true);

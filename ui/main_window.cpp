@@ -61,6 +61,7 @@
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTabWidget>
+#include <QToolBar>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
@@ -94,8 +95,6 @@ MainWindow::MainWindow(QWidget* parent)
   sideLayout->setContentsMargins(0, 0, 0, 0);
   sideLayout->addWidget(m_dimensions);
   sideLayout->addWidget(m_drive);
-  sideLayout->addWidget(m_motion);
-  sideLayout->addWidget(m_analysis);
   // Room at the bottom that a growing panel takes first: the column is laid out in its old
   // height before the scroll area makes it taller, and without this every panel would be
   // squeezed for that pass and moved back (the whole column repainted twice).
@@ -111,10 +110,18 @@ MainWindow::MainWindow(QWidget* parent)
   // As wide as the panels need, plus the vertical scroll bar: never cut off on the right.
   scroll->setMinimumWidth(side->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width() + 4);
 
+  // The answers over the linkage, where they are seen without scrolling.
+  auto* canvasColumn = new QWidget(this);
+  auto* canvasLayout = new QVBoxLayout(canvasColumn);
+  canvasLayout->setContentsMargins(0, 0, 0, 0);
+  canvasLayout->setSpacing(2);
+  canvasLayout->addWidget(m_analysis);
+  canvasLayout->addWidget(m_canvas, 1);
+
   auto* splitter = new QSplitter(Qt::Horizontal, this);
   splitter->setObjectName("MainSplitter");
   splitter->addWidget(scroll);
-  splitter->addWidget(m_canvas);
+  splitter->addWidget(canvasColumn);
   splitter->addWidget(buildAnalysisTabs());
   splitter->setStretchFactor(0, 0);
   splitter->setStretchFactor(1, 3);
@@ -135,6 +142,13 @@ MainWindow::MainWindow(QWidget* parent)
   // first hover over a handle), and the window's content then shrinks by its height: every
   // widget moved and repainted at once, a visible jump and a 26 ms stall on the first drag.
   setStatusBar(new QStatusBar(this));
+
+  // Play, step and the crank angle across the top: in sight at any height, and in presentation.
+  auto* motionBar = new QToolBar(tr("Motion"), this);
+  motionBar->setObjectName("MotionBar");
+  motionBar->setMovable(false);
+  motionBar->addWidget(m_motion);
+  addToolBar(Qt::TopToolBarArea, motionBar);
 
   buildMenus();
   m_canvas->linkageScene()->addItem(m_forceArrows);

@@ -59,6 +59,9 @@ TEST_CASE("the designer's options are read in both value forms", "[ui][options]"
   CHECK(inversions.options->inversionsScreenshot == "inv.png");
   CHECK_FALSE(inversions.options->screenshot);
 
+  CHECK(parse({"--window-size=1366x768"}).options->windowSize == std::pair{1366, 768});
+  CHECK_FALSE(parse({}).options->windowSize);
+
   CHECK(parse({"-h"}).options->help);
   CHECK(parse({"--version"}).options->version);
   CHECK_FALSE(parse({}).options->help);
@@ -81,6 +84,10 @@ TEST_CASE("mistakes on the designer's command line name the option", "[ui][optio
       {{"--frame-delay", "40"}, "--frames and --frame-delay need --animation FILE"},
       {{"--animation", "a.gif", "--screenshot", "a.png"}, "give --screenshot or --animation, not both"},
       {{"--plots="}, "--plots: give at least one key"},
+      {{"--window-size", "1366"}, "--window-size: '1366' must be WIDTHxHEIGHT in pixels, 640x480 to 7680x4320"},
+      {{"--window-size", "1366x76"}, "--window-size: '1366x76' must be WIDTHxHEIGHT"},
+      {{"--window-size", "1366x768px"}, "--window-size: '1366x768px' must be"},
+      {{"--window-size", "-1x768"}, "--window-size: '-1x768' must be"},
       {{"--inversions-screenshot", "i.png", "--screenshot", "a.png"},
        "give --screenshot or --inversions-screenshot, not both"},
       {{"--inversions-screenshot", "i.png", "--animation", "a.gif"},

@@ -41,7 +41,13 @@ QString kindDisplayName(const k::Design& design) {
   for (const DesignTemplate& t : designTemplates())
     if (t.kind == kind) return QString(t.label).remove(QLatin1Char('&'));
   if (kind == "linkage" || kind.empty()) return tr("Linkage");
-  return QString::fromStdString(kind);
+  // A kind without a template, as a name: "stephenson-iii-triad" → "Stephenson III triad".
+  QStringList words = QString::fromStdString(kind).split(QLatin1Char('-'), Qt::SkipEmptyParts);
+  static const QStringList kRoman{"i", "ii", "iii", "iv", "v", "vi"};
+  for (QString& word : words)
+    if (kRoman.contains(word)) word = word.toUpper();
+  if (!words.isEmpty()) words.front()[0] = words.front()[0].toUpper();
+  return words.join(QLatin1Char(' '));
 }
 
 QString exampleMenuText(const std::string& description, int maxChars) {

@@ -11,9 +11,8 @@
 #include "kinematics/model/units.h"
 
 #include <QFormLayout>
-#include <QGroupBox>
+#include <QHBoxLayout>
 #include <QLabel>
-#include <QVBoxLayout>
 
 namespace linkwright::ui {
 
@@ -63,24 +62,43 @@ AnalysisPanel::AnalysisPanel(MechanismDocument* document, QWidget* parent)
       m_transmissionRange(new ReadoutLabel(this)), m_limits(new ReadoutLabel(this)),
       m_timeRatio(new ReadoutLabel(this)), m_stroke(new ReadoutLabel(this)), m_notAssembled(new ReadoutLabel(this)),
       m_warning(new QLabel(this)) {
-  auto* layout = new QVBoxLayout(this);
-  auto* box = new QGroupBox(tr("Analysis"), this);
-  m_form = new QFormLayout(box);
+  // Two columns over the canvas: the answers in sight at 1366×768 without scrolling. The
+  // linkage's identity on the left, its motion's figures on the right; long values wrap.
+  setObjectName("AnalysisStrip");
+  auto* layout = new QHBoxLayout(this);
+  layout->setContentsMargins(6, 2, 6, 2);
+  m_left = new QFormLayout;
+  m_form = new QFormLayout;
+  for (QFormLayout* form : {m_left, m_form}) {
+    form->setRowWrapPolicy(QFormLayout::DontWrapRows);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    form->setVerticalSpacing(1);
+  }
   m_badge->setTextFormat(Qt::RichText);
-  m_form->addRow(m_badge);
-  m_form->addRow(tr("S + L, P + Q"), m_sums);
-  m_form->addRow(tr("Mobility"), m_mobility);
-  m_form->addRow(tr("Crank range"), m_range);
-  m_form->addRow(tr("Transmission μ"), m_transmissionNow);
+  m_badge->setWordWrap(true);
+  m_mobility->setWordWrap(true);
+  m_left->addRow(m_badge);
+  m_left->addRow(tr("S + L, P + Q"), m_sums);
+  m_left->addRow(tr("Mobility"), m_mobility);
+  m_left->addRow(tr("Crank range"), m_range);
+  m_left->addRow(tr("Not assembled"), m_notAssembled);
+  m_left->addRow(tr("Transmission μ"), m_transmissionNow);
   m_form->addRow(tr("μ over cycle"), m_transmissionRange);
   m_form->addRow(tr("Rocker limits"), m_limits);
   m_form->addRow(tr("Time ratio"), m_timeRatio);
   m_form->addRow(tr("Ram stroke"), m_stroke);
-  m_form->addRow(tr("Not assembled"), m_notAssembled);
   m_warning->setWordWrap(true);
   m_warning->setStyleSheet("color: #a15c00;");
   m_form->addRow(m_warning);
-  layout->addWidget(box);
+  // Each column half the strip, whatever its values' one-line widths: a long badge or range
+  // wraps in its half rather than squeezing the other column into a sliver.
+  for (QFormLayout* form : {m_left, m_form}) {
+    auto* column = new QWidget(this);
+    column->setLayout(form);
+    form->setContentsMargins(0, 0, 0, 0);
+    column->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    layout->addWidget(column, 1);
+  }
   connect(document, &MechanismDocument::changed, this, [this](Changes what) {
     if (what & (Changes(Change::Design) | Change::Analysis)) refreshDesign();  // a drag's grid landed
     refreshMotion();
@@ -96,7 +114,7 @@ QString AnalysisPanel::timeRatioText() const {
 }
 QString AnalysisPanel::strokeText() const { return m_form->isRowVisible(m_stroke) ? m_stroke->text() : QString(); }
 QString AnalysisPanel::notAssembledText() const {
-  return m_form->isRowVisible(m_notAssembled) ? m_notAssembled->text() : QString();
+  return m_left->isRowVisible(m_notAssembled) ? m_notAssembled->text() : QString();
 }
 QString AnalysisPanel::mobilityText() const { return m_mobility->text(); }
 
@@ -107,14 +125,15 @@ void AnalysisPanel::refreshDesign() {
       tr("M = 3(%1 − 1) − 2·%2 − %3 = %4").arg(m.links).arg(m.fullJoints).arg(m.halfJoints).arg(m.mobility));
   const k::Mechanism& linkage = m_document->mechanism();
   const bool crank = k::inputKind(linkage) == k::InputKind::Angle;
-  if (auto* label = qobject_cast<QLabel*>(m_form->labelForField(m_range)))
+  if (auto* label = qobject_cast<QLabel*>(m_left->labelForField(m_range)))
     label->setText(crank ? tr("Crank range") : tr("Input range"));
   if (a.inputRange.fullRotation) m_range->setText(tr("full turn"));
   else
     m_range->setText(rangesText(linkage, a.inputRange.ranges) + (crank ? tr(" (rocks between the ends)") : QString()));
   // A four-bar's rows for any linkage that is one, however it was built or stored.
   const bool fourBar = a.grashof.has_value();
-  for (QWidget* row : {m_sums, m_transmissionRange, m_limits}) m_form->setRowVisible(row, fourBar);
+  m_left->setRowVisible(m_sums, fourBar);
+  for (QWidget* row : {m_transmissionRange, m_limits}) m_form->setRowVisible(row, fourBar);
   if (fourBar) refreshFourBar();
   else refreshLinkage();
 }
@@ -144,7 +163,7 @@ void AnalysisPanel::refreshFourBar() {
                          : tr("—"));
   m_form->setRowVisible(m_timeRatio, true);
   m_form->setRowVisible(m_stroke, false);
-  m_form->setRowVisible(m_notAssembled, false);
+  m_left->setRowVisible(m_notAssembled, false);
 }
 
 void AnalysisPanel::refreshLinkage() {
@@ -164,7 +183,7 @@ void AnalysisPanel::refreshLinkage() {
     m_stroke->setText(QString("%1 %2").arg(numberText(q->stroke, 'f', 2), unit));
   }
   const auto& gaps = a.notAssembled;
-  m_form->setRowVisible(m_notAssembled, !gaps.empty());
+  m_left->setRowVisible(m_notAssembled, !gaps.empty());
   m_notAssembled->setText(rangesText(m_document->mechanism(), gaps));
 }
 

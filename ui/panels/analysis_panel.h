@@ -4,7 +4,7 @@
 // the time ratio. For any other linkage: its kind, the transmission angle at each dyad joint,
 // a quick return's time ratio and stroke, and the crank angles where it cannot be assembled.
 // Always the mobility and the crank's range. All numbers come from the document; rows that
-// do not apply are hidden.
+// do not apply are hidden. Shown in two columns over the canvas (the window's answers strip).
 
 #include <QWidget>
 
@@ -35,7 +35,8 @@ private:
   void refreshMotion();
 
   MechanismDocument* m_document;
-  QFormLayout* m_form;
+  QFormLayout* m_left;  // what the linkage is
+  QFormLayout* m_form;  // how it moves
   QLabel* m_badge;
   ReadoutLabel* m_sums;
   QLabel* m_mobility;

@@ -1,6 +1,7 @@
 #include "ui/panels/motion_panel.h"
 
 #include "ui/number_text.h"
+#include "ui/readout_label.h"
 
 #include "ui/animation/crank_animator.h"
 #include "ui/document/mechanism_document.h"
@@ -12,15 +13,12 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
-#include <QFormLayout>
-#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QStyle>
-#include <QVBoxLayout>
 
 #include <algorithm>
 #include <cmath>
@@ -33,17 +31,19 @@ MotionPanel::MotionPanel(MechanismDocument* document, CrankAnimator* animator, Q
     : QWidget(parent), m_document(document), m_animator(animator), m_branch(new QComboBox(this)),
       m_play(new QPushButton(this)), m_back(new QPushButton(this)), m_forward(new QPushButton(this)),
       m_step(new QDoubleSpinBox(this)), m_loop(new QCheckBox(tr("Loop"), this)),
-      m_position(new QSlider(Qt::Horizontal, this)), m_positionText(new QLabel(this)) {
-  auto* layout = new QVBoxLayout(this);
-  auto* motion = new QGroupBox(tr("Motion"), this);
-  auto* motionLayout = new QVBoxLayout(motion);
-  m_form = new QFormLayout;
+      m_position(new QSlider(Qt::Horizontal, this)), m_positionText(new ReadoutLabel(this)),
+      m_branchLabel(new QLabel(tr("&Branch"), this)) {
+  // One row, as a media player's transport: it sits in the window's Motion bar, in sight
+  // whatever the window's height (the side panel scrolls).
+  auto* layout = new QHBoxLayout(this);
+  layout->setContentsMargins(4, 0, 4, 0);
   m_branch->addItem(tr("Open"));
   m_branch->addItem(tr("Crossed"));
   m_branch->setToolTip(tr("Assembly branch: open has sin(θ4 − θ3) > 0, crossed is its mirror image"));
-  m_form->addRow(tr("Branch"), m_branch);
-  motionLayout->addLayout(m_form);
-  auto* buttons = new QHBoxLayout;
+  m_branchLabel->setBuddy(m_branch);
+  layout->addWidget(m_branchLabel);
+  layout->addWidget(m_branch);
+  layout->addSpacing(8);
   m_back->setIcon(style()->standardIcon(QStyle::SP_MediaSeekBackward));
   m_back->setToolTip(tr("Step back"));
   m_forward->setIcon(style()->standardIcon(QStyle::SP_MediaSeekForward));
@@ -55,17 +55,14 @@ MotionPanel::MotionPanel(MechanismDocument* document, CrankAnimator* animator, Q
   m_step->setSuffix(tr("°"));
   m_step->setToolTip(tr("Step angle"));
   m_loop->setChecked(animator->isLooping());
-  buttons->addWidget(m_back);
-  buttons->addWidget(m_play);
-  buttons->addWidget(m_forward);
-  buttons->addWidget(m_step);
-  buttons->addWidget(m_loop);
-  motionLayout->addLayout(buttons);
+  for (QWidget* w : std::initializer_list<QWidget*>{m_back, m_play, m_forward, m_step, m_loop}) layout->addWidget(w);
   m_position->setRange(-1800, 1800);  // tenths of a degree
-  motionLayout->addWidget(m_position);
-  m_positionText->setWordWrap(true);
-  motionLayout->addWidget(m_positionText);
-  layout->addWidget(motion);
+  m_position->setMinimumWidth(120);
+  layout->addWidget(m_position, 1);
+  // Wide enough for the longest text ("t = 12.345 s · crank angle θ₂ = -179.9°"), so the row
+  // does not move as the numbers change.
+  m_positionText->setMinimumWidth(fontMetrics().horizontalAdvance(tr("t = 00.000 s · crank angle θ₂ = -000.0°")));
+  layout->addWidget(m_positionText);
 
   connect(m_branch, &QComboBox::currentIndexChanged, this, [this] { editBranch(); });
   connect(m_play, &QPushButton::clicked, animator, &CrankAnimator::togglePlay);
@@ -136,7 +133,8 @@ void MotionPanel::refreshDesign() {
   }
   // Other linkages choose a branch per joint, in the dimensions panel.
   const auto& fourBar = m_document->fourBar();
-  m_form->setRowVisible(m_branch, fourBar.has_value());
+  m_branchLabel->setVisible(fourBar.has_value());
+  m_branch->setVisible(fourBar.has_value());
   if (!fourBar) return;
   const QSignalBlocker block(m_branch);
   m_branch->setCurrentIndex(fourBar->branch == k::Branch::Open ? 0 : 1);

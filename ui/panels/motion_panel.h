@@ -1,14 +1,13 @@
 #pragma once
-// Motion controls: a four-bar's assembly branch, play / pause, step forward and back by a
-// chosen angle (on a time base, a chosen time), loop, and the crank angle itself (on a time
-// base, the instant). How the crank is driven (ω, α or a motion law) is the drive panel's.
+// Motion controls in one row (the window's Motion bar): a four-bar's assembly branch, play /
+// pause, step forward and back by a chosen angle (on a time base, a chosen time), loop, and the
+// crank angle itself (on a time base, the instant). How the crank is driven (ω, α or a motion law) is the drive panel's.
 
 #include <QWidget>
 
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
-class QFormLayout;
 class QLabel;
 class QPushButton;
 class QSlider;
@@ -17,6 +16,7 @@ namespace linkwright::ui {
 
 class CrankAnimator;
 class MechanismDocument;
+class ReadoutLabel;
 
 class MotionPanel : public QWidget {
   Q_OBJECT
@@ -45,7 +45,6 @@ private:
 
   MechanismDocument* m_document;
   CrankAnimator* m_animator;
-  QFormLayout* m_form = nullptr;
   QComboBox* m_branch;
   QPushButton* m_play;
   QPushButton* m_back;
@@ -53,7 +52,8 @@ private:
   QDoubleSpinBox* m_step;
   QCheckBox* m_loop;
   QSlider* m_position;
-  QLabel* m_positionText;
+  ReadoutLabel* m_positionText;
+  QLabel* m_branchLabel;
   // What the slider and the step box are showing: a crank's angle (degrees), a linear input
   // over its grid (its length unit), or the time base's instants (s).
   enum class Scale { CrankAngle, LinearInput, Time };
