@@ -510,7 +510,11 @@ void MainWindow::setPresentationMode(bool on) {
   // The class watches the linkage and the plots; Space, the arrows' menu and F11 still work.
   m_sidePanel->setVisible(!on);
   if (m_presentationAction->isChecked() != on) m_presentationAction->setChecked(on);
+  // Back where it was: a window manager that forgets the size would leave the window too
+  // narrow for the side panel, the canvas and the plots together.
+  if (on) m_geometryBeforePresentation = saveGeometry();
   on ? showFullScreen() : showNormal();
+  if (!on) restoreGeometry(m_geometryBeforePresentation);
   m_canvas->fitToView();
 }
 

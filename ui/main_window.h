@@ -173,6 +173,7 @@ private:
   QAction* m_bigReadoutAction = nullptr;
   BigReadout* m_bigReadout = nullptr;
   bool m_bigReadoutBeforePresentation = false;  // the toggle's state, put back on leaving
+  QByteArray m_geometryBeforePresentation;      // the window's, put back on leaving
   QAction* m_inversionsAction = nullptr;
   InversionsWindow* m_inversions = nullptr;
   bool m_presentation = false;

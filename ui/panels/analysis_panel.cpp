@@ -136,6 +136,9 @@ void AnalysisPanel::refreshDesign() {
   for (QWidget* row : {m_transmissionRange, m_limits}) m_form->setRowVisible(row, fourBar);
   if (fourBar) refreshFourBar();
   else refreshLinkage();
+  // The columns ignore their one-line widths, but never get narrower than their labels and the
+  // longest word of a value: the canvas column keeps room for the strip.
+  for (QFormLayout* form : {m_left, m_form}) form->parentWidget()->setMinimumWidth(form->minimumSize().width());
 }
 
 void AnalysisPanel::refreshFourBar() {

@@ -75,6 +75,7 @@ void PlotAxesItem::follow(QValueAxis* axis) {
   // Qt Charts' own items go: a hidden axis is left out of the chart's layout and is not laid
   // out for a new range, but it still scales the series and names what this item draws.
   axis->setVisible(false);
+  axis->setTitleVisible(false);  // shown on a hidden axis, Qt would draw it unplaced: setTitleShown()
   const auto relabelled = [this] { relabel(); };
   connect(axis, &QValueAxis::rangeChanged, this, relabelled);
   connect(axis, &QValueAxis::tickCountChanged, this, relabelled);
@@ -111,7 +112,7 @@ void PlotAxesItem::relabel(Axis& axis) const {
 }
 
 void PlotAxesItem::retitle(Axis& axis, double length) const {
-  const QString title = axis.axis->isTitleVisible() ? axis.axis->titleText() : QString();
+  const QString title = axis.titled ? axis.axis->titleText() : QString();
   const QFont font = axis.axis->titleFont();
   // A title longer than its side of the plot is cut short with "…", as Qt Charts did.
   axis.title = staticText(QFontMetricsF(font).elidedText(title, Qt::ElideRight, std::max(0.0, length)), font);
@@ -140,7 +141,7 @@ double PlotAxesItem::titleOffset(const Axis& axis) {
 }
 
 double PlotAxesItem::reach(const Axis& axis) {
-  const bool titled = axis.axis->isTitleVisible() && !axis.axis->titleText().isEmpty();
+  const bool titled = axis.titled && !axis.axis->titleText().isEmpty();
   if (!titled) return kLabelPadding + (axis.depth > 0.0 ? axis.depth + kTextMargin : 0.0);
   return titleOffset(axis) + QFontMetricsF(axis.axis->titleFont()).height() + kTextMargin + kTitlePadding;
 }
@@ -160,6 +161,17 @@ QStringList PlotAxesItem::labels(Qt::Orientation orientation) const {
 
 QString PlotAxesItem::title(Qt::Orientation orientation) const {
   return (orientation == Qt::Horizontal ? m_x : m_y).title.text();
+}
+
+void PlotAxesItem::setTitleShown(Qt::Orientation orientation, bool shown) {
+  Axis& axis = orientation == Qt::Horizontal ? m_x : m_y;
+  if (axis.titled == shown) return;
+  axis.titled = shown;
+  relabel();
+}
+
+bool PlotAxesItem::titleShown(Qt::Orientation orientation) const {
+  return (orientation == Qt::Horizontal ? m_x : m_y).titled;
 }
 
 QRectF PlotAxesItem::boundingRect() const {
@@ -233,9 +245,14 @@ void PlotAxesItem::paintY(QPainter* painter, const QRectF& exposed) const {
 }
 
 QMargins axesRoom(const QChart* chart) {
+  const PlotAxesItem* axes = plotAxes(chart);
+  return axes != nullptr ? axes->room() : QMargins();
+}
+
+PlotAxesItem* plotAxes(const QChart* chart) {
   for (QGraphicsItem* item : chart->childItems())
-    if (const auto* axes = dynamic_cast<const PlotAxesItem*>(item)) return axes->room();
-  return {};
+    if (auto* axes = dynamic_cast<PlotAxesItem*>(item)) return axes;
+  return nullptr;
 }
 
 }  // namespace linkwright::ui

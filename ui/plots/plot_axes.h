@@ -31,6 +31,11 @@ public:
   QStringList labels(Qt::Orientation orientation) const;
   /// The title as drawn (cut short to its side of the plot area), empty while hidden.
   QString title(Qt::Orientation orientation) const;
+  /// Shows or hides the title of the horizontal (x) or vertical (y) axis (shown at first); its
+  /// text is the axis's titleText(). Qt Charts' own title stays hidden: shown again on a hidden
+  /// axis, Qt drew it unplaced at the chart's top-left (after presentation mode on and off).
+  void setTitleShown(Qt::Orientation orientation, bool shown);
+  bool titleShown(Qt::Orientation orientation) const;
 
   QRectF boundingRect() const override;
   void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
@@ -40,6 +45,7 @@ private:
     QValueAxis* axis;
     std::vector<QStaticText> labels;
     QStaticText title;    // elided to the plot area's side
+    bool titled = true;   // the title is drawn
     double widest = 0.0;  // the widest label, px
     double depth = 0.0;   // how far the labels reach away from the plot area, px
   };
@@ -65,5 +71,7 @@ private:
 
 /// The room `chart`'s PlotAxesItem keeps in its margins; none for a chart without one.
 QMargins axesRoom(const QChart* chart);
+/// `chart`'s PlotAxesItem, or nullptr.
+PlotAxesItem* plotAxes(const QChart* chart);
 
 }  // namespace linkwright::ui

@@ -6,6 +6,7 @@
 #include "ui/plots/hover_readout.h"
 #include "ui/plots/limit_markers.h"
 #include "ui/plots/plot_area_alignment.h"
+#include "ui/plots/plot_axes.h"
 #include "ui/plots/plot_x_axis.h"
 #include "ui/plots/quality_bar.h"
 #include "ui/plots/quantity_chart_view.h"
@@ -348,8 +349,9 @@ QList<QuantityChartView*> PlotPanel::showXTitles() {
     // Set only when it differs: QBoxLayout re-lays out the window on every call.
     const int stretch = shown && m_presenting ? kTitledChartStretch : kChartStretch;
     if (box->stretch(box->indexOf(view)) != stretch) box->setStretchFactor(view, stretch);
-    if (view->xAxis()->isTitleVisible() == shown) continue;
-    view->xAxis()->setTitleVisible(shown);
+    PlotAxesItem* axes = plotAxes(view->chart());
+    if (axes->titleShown(Qt::Horizontal) == shown) continue;
+    axes->setTitleShown(Qt::Horizontal, shown);
     changed.append(view);
   }
   return changed;

@@ -147,7 +147,7 @@ TEST_CASE("the chart keeps room for the labels and titles beside its plot area",
   CHECK(c.chart->margins() == kBaseChartMargins + c.axes->room());
 
   // A hidden title gives its room back to the plot.
-  c.x->setTitleVisible(false);
+  c.axes->setTitleShown(Qt::Horizontal, false);
   c.settle();
   CHECK(c.axes->title(Qt::Horizontal).isEmpty());
   CHECK(c.chart->plotArea().height() > before.height() + 0.9 * QFontMetricsF(c.x->titleFont()).height());

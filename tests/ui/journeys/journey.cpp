@@ -1,0 +1,242 @@
+#include "tests/ui/journeys/journey.h"
+
+#include "ui/canvas/instant_centres_item.h"
+#include "ui/canvas/label_item.h"
+#include "ui/canvas/linkage_scene.h"
+#include "ui/canvas/linkage_view.h"
+#include "ui/document/mechanism_document.h"
+#include "ui/message_banner.h"
+#include "ui/panels/analysis_panel.h"
+#include "ui/panels/motion_panel.h"
+#include "ui/panels/refusal_label.h"
+#include "ui/readout_label.h"
+
+#include "kinematics/analysis/instant_centres.h"
+#include "kinematics/design/design.h"
+#include "kinematics/design/design_analysis.h"
+#include "kinematics/model/units.h"
+#include "tests/support/catch.h"
+
+#include <QAbstractSpinBox>
+#include <QAction>
+#include <QApplication>
+#include <QFileInfo>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMenuBar>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QTest>
+#include <QTimer>
+
+#include <cmath>
+
+namespace linkwright::test {
+namespace k = kinematics;
+
+namespace {
+
+QString plain(QString text) {
+  text.remove(QLatin1Char('&'));
+  if (text.endsWith(QStringLiteral("…"))) text.chop(1);
+  return text.trimmed();
+}
+
+QAction* findAction(const QList<QAction*>& actions, const QStringList& path) {
+  for (QAction* action : actions) {
+    if (plain(action->text()) != path.front()) continue;
+    if (path.size() == 1) return action;
+    if (QMenu* sub = action->menu()) return findAction(sub->actions(), path.mid(1));
+  }
+  return nullptr;
+}
+
+QString grashofWord(k::GrashofClass c) {
+  switch (c) {
+  case k::GrashofClass::CrankRocker: return QStringLiteral("Crank-rocker");
+  case k::GrashofClass::DoubleCrank: return QStringLiteral("Double-crank");
+  case k::GrashofClass::DoubleRocker: return QStringLiteral("Double-rocker");
+  case k::GrashofClass::ChangePoint: return QStringLiteral("Change point");
+  case k::GrashofClass::TripleRocker: return QStringLiteral("Triple-rocker");
+  }
+  return {};
+}
+
+}  // namespace
+
+bool wholeInSight(const QWidget* w) {
+  return w->isVisible() && !w->visibleRegion().isEmpty() && w->visibleRegion().boundingRect() == w->rect();
+}
+
+Journey::Journey(QSize size) {
+  m_window.resize(size);
+  m_window.show();
+  REQUIRE(QTest::qWaitForWindowExposed(&m_window));
+  m_window.activateWindow();
+  REQUIRE(QTest::qWaitForWindowActive(&m_window));
+  settle();
+}
+
+void Journey::menu(const QStringList& path) {
+  CAPTURE(path.join(QStringLiteral(" ▸ ")).toStdString());
+  QAction* action = findAction(m_window.menuBar()->actions(), path);
+  REQUIRE(action != nullptr);
+  REQUIRE(action->isEnabled());
+  action->trigger();
+  settle();
+}
+
+void Journey::example(const std::string& name) {
+  auto* action = m_window.findChild<QAction*>(QString::fromStdString("example_" + name));
+  REQUIRE(action != nullptr);
+  action->trigger();
+  settle();
+}
+
+void Journey::key(int key, Qt::KeyboardModifiers modifiers) {
+  QWidget* target = QApplication::focusWidget() != nullptr ? QApplication::focusWidget() : &m_window;
+  QTest::keyClick(target, static_cast<Qt::Key>(key), modifiers);
+  settle();
+}
+
+void Journey::type(QWidget* field, const QString& text) {
+  REQUIRE(field != nullptr);
+  QTest::mouseClick(field, Qt::LeftButton, Qt::NoModifier, field->rect().center());
+  if (auto* spin = qobject_cast<QAbstractSpinBox*>(field)) spin->selectAll();
+  if (auto* line = qobject_cast<QLineEdit*>(field)) line->selectAll();
+  QTest::keyClicks(QApplication::focusWidget(), text);
+  QTest::keyClick(QApplication::focusWidget(), Qt::Key_Return);
+  settle();
+}
+
+void Journey::whenDialogOpens(std::function<void(QWidget*)> answer) {
+  auto* poll = new QTimer(&m_window);
+  poll->setInterval(10);
+  QObject::connect(poll, &QTimer::timeout, poll, [poll, answer = std::move(answer)] {
+    QWidget* dialog = QApplication::activeModalWidget();
+    if (dialog == nullptr) return;
+    poll->stop();
+    poll->deleteLater();
+    answer(dialog);
+  });
+  poll->start();
+}
+
+void Journey::settle() {
+  for (int i = 0; i < 5; ++i) QApplication::processEvents();
+  m_window.settle();
+  for (int i = 0; i < 5; ++i) QApplication::processEvents();
+  QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+}
+
+void Journey::check(const std::string& step) {
+  INFO("after: " << step << " (" << m_window.document()->design().kind << ")");
+  settle();
+  checkMessages();
+  checkTitle();
+  checkReadouts();
+  checkNoNonFinite();
+  checkViewsDraw();
+  checkNotClipped();
+  m_refusalExpected = m_bannerExpected = m_fitted = false;
+}
+
+void Journey::checkMessages() {
+  for (const ui::RefusalLabel* refusal : m_window.findChildren<ui::RefusalLabel*>()) {
+    if (!refusal->isVisibleTo(&m_window) || refusal->refusal().isEmpty()) continue;
+    CAPTURE(refusal->refusal().toStdString());
+    CHECK(m_refusalExpected);
+  }
+  CAPTURE(m_window.banner()->text().toStdString());
+  CHECK((m_window.banner()->isVisibleTo(&m_window) && !m_window.banner()->text().isEmpty()) == m_bannerExpected);
+}
+
+void Journey::checkTitle() {
+  const QString title = m_window.windowTitle();
+  CAPTURE(title.toStdString());
+  const QString path = m_window.document()->filePath();
+  if (path.isEmpty()) CHECK(title.contains(QStringLiteral("(not saved)")));
+  else CHECK(title.startsWith(QFileInfo(path).fileName()));
+  CHECK_FALSE(title.contains(QStringLiteral("Untitled")));
+  CHECK(title.endsWith(QStringLiteral("— Linkwright")));
+}
+
+void Journey::checkReadouts() {
+  const k::Design& design = m_window.document()->design();
+  const auto grid = k::sweep(design.mechanism, k::designSweepSpec(design));
+  REQUIRE(grid);
+  const k::DesignAnalysis core = k::analyseDesign(design.mechanism, *grid);
+  const ui::AnalysisPanel& strip = *m_window.analysisPanel();
+  CAPTURE(strip.grashofText().toStdString(), strip.timeRatioText().toStdString());
+  if (core.grashof) CHECK(strip.grashofText().contains(grashofWord(core.grashof->category)));
+  const std::optional<double> ratio = core.grashof       ? core.limits.timeRatio
+                                      : core.quickReturn ? std::optional<double>(core.quickReturn->timeRatio)
+                                                         : std::nullopt;
+  if (ratio) CHECK(strip.timeRatioText().startsWith(QString::number(*ratio, 'f', 4)));
+  else if (!core.grashof) CHECK(strip.timeRatioText().isEmpty());
+  // The motion bar shows the crank where the document has it.
+  if (!m_window.document()->onTimeBase() && k::inputKind(design.mechanism) == k::InputKind::Angle) {
+    const double deg = k::radToDeg(std::remainder(m_window.document()->crankAngle(), 2.0 * k::kPi));
+    CAPTURE(m_window.motionPanel()->positionText().toStdString(), deg);
+    CHECK(m_window.motionPanel()->positionText().contains(QString::number(std::abs(deg), 'f', 1)));
+  }
+}
+
+void Journey::checkNoNonFinite() {
+  static const QRegularExpression nonFinite(QStringLiteral("\\b(nan|inf)\\b"),
+                                            QRegularExpression::CaseInsensitiveOption);
+  QStringList texts{m_window.windowTitle()};
+  for (const QLabel* label : m_window.findChildren<QLabel*>())
+    if (label->isVisibleTo(&m_window)) texts << label->text();
+  for (const ui::ReadoutLabel* label : m_window.findChildren<ui::ReadoutLabel*>())
+    if (label->isVisibleTo(&m_window)) texts << label->text();
+  for (const QAbstractSpinBox* spin : m_window.findChildren<QAbstractSpinBox*>())
+    if (spin->isVisibleTo(&m_window)) texts << spin->text();
+  for (const QString& text : texts) {
+    CAPTURE(text.toStdString());
+    CHECK_FALSE(nonFinite.match(text).hasMatch());
+  }
+}
+
+void Journey::checkViewsDraw() {
+  QAction* centres = findAction(m_window.menuBar()->actions(), {"View", "Instant centres and centrodes"});
+  REQUIRE(centres != nullptr);
+  if (!centres->isChecked()) return;
+  const auto* scene = dynamic_cast<const ui::LinkageScene*>(m_window.canvas()->linkageScene());
+  REQUIRE(scene != nullptr);
+  const auto core = k::instantCentres(m_window.document()->mechanism(), m_window.document()->pose());
+  if (!core || core->centres.empty()) return;
+  const ui::InstantCentresItem& item = *scene->instantCentresItem();
+  CAPTURE(item.reason().toStdString());
+  REQUIRE(item.centres().has_value());
+  CHECK(item.centres()->centres.size() == core->centres.size());
+}
+
+void Journey::checkNotClipped() {
+  const ui::AnalysisPanel* strip = m_window.analysisPanel();
+  CHECK(wholeInSight(strip));
+  for (QWidget* value : strip->findChildren<QWidget*>()) {
+    if (!value->isVisibleTo(&m_window)) continue;
+    const auto* label = qobject_cast<const QLabel*>(value);
+    const QRect seen = value->visibleRegion().boundingRect();
+    CAPTURE(value->metaObject()->className(), label != nullptr ? label->text().toStdString() : std::string(),
+            value->width(), value->height(), seen.width(), seen.height(), m_window.width(), m_window.height());
+    CHECK(wholeInSight(value));
+    CHECK(value->height() >= value->heightForWidth(value->width()));
+  }
+  CHECK(wholeInSight(m_window.motionPanel()->playButton()));
+  if (!m_fitted) return;
+  ui::LinkageView* view = m_window.canvas();
+  const QRect viewport = view->viewport()->rect();
+  for (QGraphicsItem* item : view->scene()->items()) {
+    const auto* label = dynamic_cast<const ui::LabelItem*>(item);
+    if (label == nullptr || !label->isVisible() || label->text().isEmpty()) continue;
+    const QRectF drawn = label->deviceTransform(view->viewportTransform()).mapRect(label->boundingRect());
+    CAPTURE(label->text().toStdString(), drawn.left(), drawn.top(), drawn.right(), drawn.bottom(), viewport.width(),
+            viewport.height());
+    CHECK(QRectF(viewport).adjusted(-1, -1, 1, 1).contains(drawn));
+  }
+}
+
+}  // namespace linkwright::test

@@ -1,0 +1,76 @@
+#pragma once
+// A user's task through the real window (offscreen), one step at a time, as a person takes it:
+// menus by their titles, keys to the focused widget, the mouse on the canvas and the side
+// panel, dialogs answered as they open. After every step check() asserts what must hold
+// whatever the task (the journeys' shared invariants):
+// - every visible message belongs to the current design: no refusal under a panel and no
+//   banner unless the step just made one (expectRefusal(), expectBanner());
+// - the title names the document: its file, or what it was started from, "(not saved)";
+// - the read-outs are the core's figures for the current design (the analysis strip against
+//   kinematics::analyseDesign on a fresh grid sweep; the motion bar's angle against the pose);
+// - no visible text shows nan or inf;
+// - each toggled view draws something where the linkage supports it (instant centres);
+// - nothing visible is clipped: the analysis strip's values, the motion bar, and after a fit
+//   every label on the canvas inside the canvas.
+
+#include "ui/main_window.h"
+
+#include <QSize>
+#include <QString>
+#include <QStringList>
+
+#include <functional>
+#include <string>
+
+namespace linkwright::test {
+
+class Journey {
+public:
+  /// The window at `size`, shown and settled on its default example.
+  explicit Journey(QSize size = QSize(1366, 700));
+
+  ui::MainWindow& window() { return m_window; }
+
+  /// Triggers the action `path` names through the menu bar ("View", "Instant centres"); the
+  /// '&' of mnemonics and a trailing "…" are ignored. Fails the test when it is absent or
+  /// disabled.
+  void menu(const QStringList& path);
+  /// Examples ▸ the example `name` (the action's objectName is example_<name>).
+  void example(const std::string& name);
+  /// A key (with modifiers) as the keyboard gives it: to the focused widget, else the window.
+  void key(int key, Qt::KeyboardModifiers modifiers = Qt::NoModifier);
+  /// Types `text` into the spin box or line edit `field`, as a click there and typing, then Enter.
+  void type(QWidget* field, const QString& text);
+  /// Answers the next modal dialog when it opens (a file dialog, a question), with `answer`
+  /// called on it; the step that opens it follows.
+  void whenDialogOpens(std::function<void(QWidget*)> answer);
+
+  /// The next check() allows a refusal under a panel / a banner (the step made one).
+  void expectRefusal() { m_refusalExpected = true; }
+  void expectBanner() { m_bannerExpected = true; }
+  /// The next check() also requires every canvas label inside the canvas (the view was fitted).
+  void expectFitted() { m_fitted = true; }
+
+  /// Lets the window settle (layouts, sweeps, deferred deletes).
+  void settle();
+  /// The invariants above, after `step` (named in any failure).
+  void check(const std::string& step);
+
+private:
+  void checkMessages();
+  void checkTitle();
+  void checkReadouts();
+  void checkNoNonFinite();
+  void checkViewsDraw();
+  void checkNotClipped();
+
+  ui::MainWindow m_window;
+  bool m_refusalExpected = false;
+  bool m_bannerExpected = false;
+  bool m_fitted = false;
+};
+
+/// Visible, and not clipped by any parent or the window's edge.
+bool wholeInSight(const QWidget* widget);
+
+}  // namespace linkwright::test
