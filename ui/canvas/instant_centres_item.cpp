@@ -3,10 +3,12 @@
 #include "ui/colors.h"
 
 #include "ui/canvas/canvas_style.h"
+#include "ui/canvas/label_item.h"
 #include "ui/geometry.h"
 
 #include <QFont>
 #include <QFontMetricsF>
+#include <QGraphicsScene>
 #include <QPainter>
 #include <QPainterPath>
 #include <QStringList>
@@ -54,16 +56,62 @@ std::optional<Eigen::Vector2d> arrowFoot(const k::InstantCentres& c, std::size_t
   return std::nullopt;
 }
 
-// A label on a white box, its bottom-right corner at `corner` (pixels): upper left of a
-// centre, where the point names (upper right) and ground hatching (below) are not.
-// A label near the view's edge is moved in, so a centre at the edge still reads.
-void drawLabel(QPainter* painter, const QPointF& corner, const QString& text) {
+// A label on a white box beside a point (pixels), `gap` away: upper left, where the point
+// names (placed away from the links) and the ground hatching (below) usually are not; else the
+// nearest place around the point, at the four corners and sides and then farther out, whose
+// box stays off the boxes already `taken` (the point names, the other centres' labels); where
+// none is free, the one overlapping least. A label near the view's edge is moved in, so a
+// centre at the edge still reads. The box drawn joins `taken`.
+void drawLabel(QPainter* painter, const QPointF& at, double gap, const QString& text, std::vector<QRectF>& taken) {
   const QFontMetricsF metrics(painter->font());
-  QRectF box(corner - QPointF(metrics.horizontalAdvance(text) + 4.0, metrics.height()), corner);
+  const QSizeF size(metrics.horizontalAdvance(text) + 4.0, metrics.height());
   const QRectF view = painter->viewport();
-  box.translate(std::max(0.0, view.left() - box.left()), std::max(0.0, view.top() - box.top()));
-  painter->fillRect(box, colors().labelBox);
-  painter->drawText(box, Qt::AlignCenter, text);
+  const auto boxAt = [&](double dx, double dy, double distance) {
+    const QPointF corner(dx < 0   ? -distance - size.width()
+                         : dx > 0 ? distance
+                                  : -0.5 * size.width(),
+                         dy < 0   ? -distance - size.height()
+                         : dy > 0 ? distance
+                                  : -0.5 * size.height());
+    QRectF box(at + corner, size);
+    box.translate(std::max(0.0, view.left() - box.left()), std::max(0.0, view.top() - box.top()));
+    box.translate(std::min(0.0, view.right() - box.right()), std::min(0.0, view.bottom() - box.bottom()));
+    return box;
+  };
+  const auto overlap = [&](const QRectF& box) {
+    double area = 0.0;
+    for (const QRectF& t : taken) {
+      const QRectF common = t.intersected(box);
+      area += common.isValid() ? common.width() * common.height() : 0.0;
+    }
+    return area;
+  };
+  static constexpr std::pair<int, int> kAround[] = {{-1, -1}, {-1, 1}, {1, 1},  {1, -1},
+                                                    {0, -1},  {0, 1},  {-1, 0}, {1, 0}};
+  QRectF best = boxAt(-1, -1, gap);
+  double bestOverlap = overlap(best);
+  for (int ring = 0; ring < 4 && bestOverlap > 0.0; ++ring)
+    for (const auto& [dx, dy] : kAround) {
+      const QRectF box = boxAt(dx, dy, gap + ring * size.height());
+      if (const double o = overlap(box); o < bestOverlap) best = box, bestOverlap = o;
+      if (bestOverlap == 0.0) break;
+    }
+  painter->fillRect(best, colors().labelBox);
+  painter->drawText(best, Qt::AlignCenter, text);
+  taken.push_back(best);
+}
+
+// The boxes of the scene's point names and other canvas labels, in the pixels `sceneToPixels`
+// maps to.
+std::vector<QRectF> labelBoxes(const QGraphicsScene* scene, const QTransform& sceneToPixels) {
+  std::vector<QRectF> boxes;
+  if (scene == nullptr) return boxes;
+  for (const QGraphicsItem* item : scene->items()) {
+    const auto* label = dynamic_cast<const LabelItem*>(item);
+    if (label != nullptr && label->isVisible() && !label->text().isEmpty())
+      boxes.push_back(label->deviceTransform(sceneToPixels).mapRect(label->boundingRect()));
+  }
+  return boxes;
 }
 
 void drawArrow(QPainter* painter, const QPointF& from, const QPointF& unit, double length, double head) {
@@ -155,6 +203,8 @@ QRectF InstantCentresItem::boundingRect() const { return m_bounds; }
 
 void InstantCentresItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) {
   const QTransform toPixels = painter->worldTransform();
+  std::vector<QRectF> taken = labelBoxes(scene(), sceneTransform().inverted() * toPixels);
+  const std::size_t names = taken.size();
   const auto px = [&](const Eigen::Vector2d& p) { return toPixels.map(toQt(p)); };
   painter->save();
   painter->resetTransform();
@@ -208,6 +258,8 @@ void InstantCentresItem::paint(QPainter* painter, const QStyleOptionGraphicsItem
   font.setBold(true);
   painter->setFont(font);
   const double dot = kCentreDotPx * m_scale;
+  // Centres at one point (a pin that joins three links) share one label: "I₁₃, I₁₄".
+  std::vector<std::pair<QPointF, QString>> named;
   for (std::size_t i = 1; i <= n; ++i)
     for (std::size_t j = i + 1; j <= n; ++j) {
       const k::InstantCentre& centre = c.centre(i, j);
@@ -217,7 +269,10 @@ void InstantCentresItem::paint(QPainter* painter, const QStyleOptionGraphicsItem
         painter->setBrush(colors().centre);
         painter->drawEllipse(at, dot, dot);
         painter->setBrush(Qt::NoBrush);
-        drawLabel(painter, at - QPointF(dot + 2.0, dot + 2.0), label(i, j));
+        const auto same = std::find_if(named.begin(), named.end(),
+                                       [&](const auto& other) { return QLineF(other.first, at).length() < 1.5; });
+        if (same != named.end()) same->second += QStringLiteral(", ") + label(i, j);
+        else named.emplace_back(at, label(i, j));
         continue;
       }
       const auto foot = arrowFoot(c, i, j);
@@ -230,14 +285,17 @@ void InstantCentresItem::paint(QPainter* painter, const QStyleOptionGraphicsItem
       if (!(length > 0.0) || !std::isfinite(length)) continue;
       unit /= length;
       drawArrow(painter, from, unit, kFarArrowPx * m_scale, 8.0 * m_scale);
-      drawLabel(painter, from + unit * (kFarArrowPx + 4.0) * m_scale, label(i, j) + QStringLiteral(" ∞"));
+      drawLabel(painter, from + unit * (kFarArrowPx + 4.0) * m_scale, 0.0, label(i, j) + QStringLiteral(" ∞"), taken);
     }
+  for (const auto& [at, text] : named) drawLabel(painter, at, dot + 2.0, text, taken);
   // What Kennedy's theorem leaves open, under the frame's pin the drawing measures from.
   if (const QString note = unresolvedNote(); !note.isEmpty()) {
     const QFontMetricsF metrics(painter->font());
-    drawLabel(painter, px(c.anchor) + QPointF(metrics.horizontalAdvance(note) / 2.0, 3.0 * metrics.height()), note);
+    drawLabel(painter, px(c.anchor) + QPointF(metrics.horizontalAdvance(note) / 2.0, 3.0 * metrics.height()), 0.0, note,
+              taken);
   }
   painter->restore();
+  m_drawnLabels.assign(taken.begin() + static_cast<std::ptrdiff_t>(names), taken.end());
 }
 
 }  // namespace linkwright::ui

@@ -17,9 +17,11 @@
 #include "kinematics/solve/sweep.h"
 
 #include <QGraphicsItem>
+#include <QRectF>
 #include <QString>
 
 #include <optional>
+#include <vector>
 
 namespace linkwright::ui {
 
@@ -43,6 +45,9 @@ public:
   /// The centres Kennedy's theorem leaves unresolved at this pose, named ("I₁₅, I₃₆ …"); empty
   /// when it resolves every one.
   QString unresolvedNote() const;
+  /// The centres' label boxes drawn at the last paint, in that paint's pixels; each is placed
+  /// off the canvas's own labels (point names) and the centres' labels before it.
+  const std::vector<QRectF>& drawnLabels() const { return m_drawnLabels; }
 
   QRectF boundingRect() const override;
   void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
@@ -58,6 +63,7 @@ private:
   std::optional<kinematics::InstantCentres> m_centres;
   kinematics::Centrodes m_centrodes;
   std::optional<kinematics::CouplerFrame> m_frame;
+  std::vector<QRectF> m_drawnLabels;
   QString m_reason;
   double m_scale = 1.0;
   QRectF m_bounds;

@@ -10,7 +10,7 @@
 #include "kinematics/model/driver.h"
 #include "kinematics/model/units.h"
 
-#include <QFormLayout>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 
@@ -65,40 +65,31 @@ AnalysisPanel::AnalysisPanel(MechanismDocument* document, QWidget* parent)
   // Two columns over the canvas: the answers in sight at 1366×768 without scrolling. The
   // linkage's identity on the left, its motion's figures on the right; long values wrap.
   setObjectName("AnalysisStrip");
+  // As tall as its wrapped rows, whatever the window's height: the canvas below gives way.
+  setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Minimum);
   auto* layout = new QHBoxLayout(this);
   layout->setContentsMargins(6, 2, 6, 2);
-  m_left = new QFormLayout;
-  m_form = new QFormLayout;
-  for (QFormLayout* form : {m_left, m_form}) {
-    form->setRowWrapPolicy(QFormLayout::DontWrapRows);
-    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    form->setVerticalSpacing(1);
-  }
   m_badge->setTextFormat(Qt::RichText);
   m_badge->setWordWrap(true);
   m_mobility->setWordWrap(true);
-  m_left->addRow(m_badge);
-  m_left->addRow(tr("S + L, P + Q"), m_sums);
-  m_left->addRow(tr("Mobility"), m_mobility);
-  m_left->addRow(tr("Crank range"), m_range);
-  m_left->addRow(tr("Not assembled"), m_notAssembled);
-  m_left->addRow(tr("Transmission μ"), m_transmissionNow);
-  m_form->addRow(tr("μ over cycle"), m_transmissionRange);
-  m_form->addRow(tr("Rocker limits"), m_limits);
-  m_form->addRow(tr("Time ratio"), m_timeRatio);
-  m_form->addRow(tr("Ram stroke"), m_stroke);
   m_warning->setWordWrap(true);
   m_warning->setStyleSheet("color: #a15c00;");
-  m_form->addRow(m_warning);
-  // Each column half the strip, whatever its values' one-line widths: a long badge or range
-  // wraps in its half rather than squeezing the other column into a sliver.
-  for (QFormLayout* form : {m_left, m_form}) {
-    auto* column = new QWidget(this);
-    column->setLayout(form);
-    form->setContentsMargins(0, 0, 0, 0);
-    column->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-    layout->addWidget(column, 1);
-  }
+  // A grid per column, not a QFormLayout: Qt 6.4's form kept a height of 0 for a row shown
+  // again at a width it had laid out before (the thesis's rocker limits after a six-bar).
+  m_left = addColumn(layout);
+  m_right = addColumn(layout);
+  m_left->addWidget(m_badge, 0, 0, 1, 2);
+  addRow(m_left, tr("S + L, P + Q"), m_sums);
+  addRow(m_left, tr("Mobility"), m_mobility);
+  addRow(m_left, tr("Crank range"), m_range);
+  addRow(m_left, tr("Not assembled"), m_notAssembled);
+  addRow(m_left, tr("Transmission μ"), m_transmissionNow);
+  addRow(m_right, tr("μ over cycle"), m_transmissionRange);
+  addRow(m_right, tr("Rocker limits"), m_limits);
+  addRow(m_right, tr("Time ratio"), m_timeRatio);
+  addRow(m_right, tr("Ram stroke"), m_stroke);
+  m_right->addWidget(m_warning, m_right->rowCount(), 0, 1, 2);
+  for (QGridLayout* grid : {m_left, m_right}) grid->setRowStretch(grid->rowCount(), 1);  // rows at the top
   connect(document, &MechanismDocument::changed, this, [this](Changes what) {
     if (what & (Changes(Change::Design) | Change::Analysis)) refreshDesign();  // a drag's grid landed
     refreshMotion();
@@ -109,14 +100,40 @@ AnalysisPanel::AnalysisPanel(MechanismDocument* document, QWidget* parent)
 
 QString AnalysisPanel::grashofText() const { return m_badge->text(); }
 QString AnalysisPanel::transmissionNowText() const { return m_transmissionNow->text(); }
-QString AnalysisPanel::timeRatioText() const {
-  return m_form->isRowVisible(m_timeRatio) ? m_timeRatio->text() : QString();
-}
-QString AnalysisPanel::strokeText() const { return m_form->isRowVisible(m_stroke) ? m_stroke->text() : QString(); }
+QString AnalysisPanel::timeRatioText() const { return !m_timeRatio->isHidden() ? m_timeRatio->text() : QString(); }
+QString AnalysisPanel::strokeText() const { return !m_stroke->isHidden() ? m_stroke->text() : QString(); }
 QString AnalysisPanel::notAssembledText() const {
-  return m_left->isRowVisible(m_notAssembled) ? m_notAssembled->text() : QString();
+  return !m_notAssembled->isHidden() ? m_notAssembled->text() : QString();
 }
 QString AnalysisPanel::mobilityText() const { return m_mobility->text(); }
+
+// Each column half the strip, whatever its values' one-line widths: a long badge or range
+// wraps in its half rather than squeezing the other column into a sliver.
+QGridLayout* AnalysisPanel::addColumn(QHBoxLayout* strip) {
+  auto* column = new QWidget(this);
+  column->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+  auto* grid = new QGridLayout(column);
+  grid->setContentsMargins(0, 0, 0, 0);
+  grid->setVerticalSpacing(1);
+  grid->setColumnStretch(1, 1);
+  strip->addWidget(column, 1);
+  return grid;
+}
+
+void AnalysisPanel::addRow(QGridLayout* grid, const QString& name, QWidget* field) {
+  auto* label = new QLabel(name, this);
+  label->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+  const int row = grid->rowCount();
+  grid->addWidget(label, row, 0, Qt::AlignTop);
+  grid->addWidget(field, row, 1);
+  m_labels.insert(field, label);
+}
+
+// A hidden row's widgets are left out of the grid.
+void AnalysisPanel::showRow(QWidget* field, bool shown) {
+  field->setVisible(shown);
+  m_labels.value(field)->setVisible(shown);
+}
 
 void AnalysisPanel::refreshDesign() {
   const k::DesignAnalysis& a = m_document->analysis();
@@ -125,20 +142,19 @@ void AnalysisPanel::refreshDesign() {
       tr("M = 3(%1 − 1) − 2·%2 − %3 = %4").arg(m.links).arg(m.fullJoints).arg(m.halfJoints).arg(m.mobility));
   const k::Mechanism& linkage = m_document->mechanism();
   const bool crank = k::inputKind(linkage) == k::InputKind::Angle;
-  if (auto* label = qobject_cast<QLabel*>(m_left->labelForField(m_range)))
-    label->setText(crank ? tr("Crank range") : tr("Input range"));
+  m_labels.value(m_range)->setText(crank ? tr("Crank range") : tr("Input range"));
   if (a.inputRange.fullRotation) m_range->setText(tr("full turn"));
   else
     m_range->setText(rangesText(linkage, a.inputRange.ranges) + (crank ? tr(" (rocks between the ends)") : QString()));
   // A four-bar's rows for any linkage that is one, however it was built or stored.
   const bool fourBar = a.grashof.has_value();
-  m_left->setRowVisible(m_sums, fourBar);
-  for (QWidget* row : {m_transmissionRange, m_limits}) m_form->setRowVisible(row, fourBar);
+  showRow(m_sums, fourBar);
+  for (QWidget* row : {m_transmissionRange, m_limits}) showRow(row, fourBar);
   if (fourBar) refreshFourBar();
   else refreshLinkage();
   // The columns ignore their one-line widths, but never get narrower than their labels and the
   // longest word of a value: the canvas column keeps room for the strip.
-  for (QFormLayout* form : {m_left, m_form}) form->parentWidget()->setMinimumWidth(form->minimumSize().width());
+  for (QGridLayout* grid : {m_left, m_right}) grid->parentWidget()->setMinimumWidth(grid->minimumSize().width());
 }
 
 void AnalysisPanel::refreshFourBar() {
@@ -164,9 +180,9 @@ void AnalysisPanel::refreshFourBar() {
                                .arg(numberText(*a.limits.timeRatio, 'f', 4))
                                .arg(degrees(*a.limits.slowStrokeCrankArc, 1), degrees(*a.limits.quickStrokeCrankArc, 1))
                          : tr("—"));
-  m_form->setRowVisible(m_timeRatio, true);
-  m_form->setRowVisible(m_stroke, false);
-  m_left->setRowVisible(m_notAssembled, false);
+  showRow(m_timeRatio, true);
+  showRow(m_stroke, false);
+  showRow(m_notAssembled, false);
 }
 
 void AnalysisPanel::refreshLinkage() {
@@ -177,8 +193,8 @@ void AnalysisPanel::refreshLinkage() {
                              .arg(m_document->mechanism().points.size())
                              .arg(m_document->mechanism().links.size())));
   const auto& q = a.quickReturn;
-  m_form->setRowVisible(m_timeRatio, q.has_value());
-  m_form->setRowVisible(m_stroke, q.has_value());
+  showRow(m_timeRatio, q.has_value());
+  showRow(m_stroke, q.has_value());
   if (q) {
     m_timeRatio->setText(tr("%1 (strokes %2 / %3)")
                              .arg(numberText(q->timeRatio, 'f', 4))
@@ -186,7 +202,7 @@ void AnalysisPanel::refreshLinkage() {
     m_stroke->setText(QString("%1 %2").arg(numberText(q->stroke, 'f', 2), unit));
   }
   const auto& gaps = a.notAssembled;
-  m_left->setRowVisible(m_notAssembled, !gaps.empty());
+  showRow(m_notAssembled, !gaps.empty());
   m_notAssembled->setText(rangesText(m_document->mechanism(), gaps));
 }
 

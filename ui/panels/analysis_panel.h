@@ -6,9 +6,11 @@
 // Always the mobility and the crank's range. All numbers come from the document; rows that
 // do not apply are hidden. Shown in two columns over the canvas (the window's answers strip).
 
+#include <QHash>
 #include <QWidget>
 
-class QFormLayout;
+class QGridLayout;
+class QHBoxLayout;
 class QLabel;
 
 namespace linkwright::ui {
@@ -30,13 +32,17 @@ public:
 
 private:
   void refreshDesign();
+  QGridLayout* addColumn(QHBoxLayout* strip);
+  void addRow(QGridLayout* grid, const QString& name, QWidget* field);
+  void showRow(QWidget* field, bool shown);
   void refreshFourBar();
   void refreshLinkage();
   void refreshMotion();
 
   MechanismDocument* m_document;
-  QFormLayout* m_left;  // what the linkage is
-  QFormLayout* m_form;  // how it moves
+  QGridLayout* m_left;                // what the linkage is
+  QGridLayout* m_right;               // how it moves
+  QHash<QWidget*, QLabel*> m_labels;  // each value's row label
   QLabel* m_badge;
   ReadoutLabel* m_sums;
   QLabel* m_mobility;

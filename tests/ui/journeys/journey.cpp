@@ -229,6 +229,7 @@ void Journey::checkNotClipped() {
   if (!m_fitted) return;
   ui::LinkageView* view = m_window.canvas();
   const QRect viewport = view->viewport()->rect();
+  std::vector<QRectF> names;
   for (QGraphicsItem* item : view->scene()->items()) {
     const auto* label = dynamic_cast<const ui::LabelItem*>(item);
     if (label == nullptr || !label->isVisible() || label->text().isEmpty()) continue;
@@ -236,6 +237,19 @@ void Journey::checkNotClipped() {
     CAPTURE(label->text().toStdString(), drawn.left(), drawn.top(), drawn.right(), drawn.bottom(), viewport.width(),
             viewport.height());
     CHECK(QRectF(viewport).adjusted(-1, -1, 1, 1).contains(drawn));
+    names.push_back(drawn);
+  }
+  // The instant centres' labels, as the canvas paints them: inside, off the point names and
+  // off each other (I₂₃ was drawn over B).
+  const auto* scene = dynamic_cast<const ui::LinkageScene*>(view->linkageScene());
+  if (scene == nullptr || !scene->instantCentresItem()->isVisible()) return;
+  view->viewport()->grab();  // paints
+  const std::vector<QRectF>& centres = scene->instantCentresItem()->drawnLabels();
+  for (std::size_t a = 0; a < centres.size(); ++a) {
+    CAPTURE(a, centres[a].left(), centres[a].top(), centres[a].width(), centres[a].height());
+    CHECK(QRectF(viewport).adjusted(-1, -1, 1, 1).contains(centres[a]));
+    for (const QRectF& name : names) CHECK_FALSE(name.intersects(centres[a]));
+    for (std::size_t b = a + 1; b < centres.size(); ++b) CHECK_FALSE(centres[b].intersects(centres[a]));
   }
 }
 
