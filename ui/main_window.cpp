@@ -177,6 +177,7 @@ MainWindow::MainWindow(QWidget* parent)
 // load diagrams) and dimensional synthesis share the right-hand pane as tabs.
 QWidget* MainWindow::buildAnalysisTabs() {
   auto* forces = new QSplitter(Qt::Vertical, this);
+  m_forcesSplitter = forces;
   forces->addWidget(m_dynamicsPanel);
   forces->addWidget(m_forcePlots);
   forces->setStretchFactor(1, 1);
@@ -190,6 +191,7 @@ QWidget* MainWindow::buildAnalysisTabs() {
   m_polygons = new PolygonPanel(m_document, this);
   m_tabs->addTab(m_polygons, tr("Polygons"));
   connect(m_tabs, &QTabWidget::currentChanged, this, &MainWindow::updateForcesNeeded);
+  connect(m_tabs, &QTabWidget::currentChanged, this, &MainWindow::keepForceInputsShown);
   // The plots follow the document only while their tab is shown.
   const auto followTab = [this](int tab) {
     m_plots->setOnScreen(tab == 0);
@@ -209,6 +211,18 @@ void MainWindow::updateForcesNeeded() {
   m_document->setForcesNeeded(needed);  // first: the sweep then already has what forces need
   m_forces->setEnabled(needed);
   m_forceArrows->setVisible(arrows);
+}
+
+// The splitter keeps the masses' and loads' panel the height it had: at presentation mode's
+// larger text that squeezed the Links table to its header. It gets at least what it needs;
+// the plots below give way.
+void MainWindow::keepForceInputsShown() {
+  QList<int> sizes = m_forcesSplitter->sizes();
+  const int needed = m_dynamicsPanel->minimumSizeHint().height();
+  if (sizes.size() != 2 || sizes[0] >= needed) return;
+  sizes[1] = std::max(0, sizes[1] - (needed - sizes[0]));
+  sizes[0] = needed;
+  m_forcesSplitter->setSizes(sizes);
 }
 
 void MainWindow::showForcesTab() { m_tabs->setCurrentIndex(1); }
@@ -515,6 +529,7 @@ void MainWindow::setPresentationMode(bool on) {
   if (on) m_geometryBeforePresentation = saveGeometry();
   on ? showFullScreen() : showNormal();
   if (!on) restoreGeometry(m_geometryBeforePresentation);
+  keepForceInputsShown();
   m_canvas->fitToView();
 }
 

@@ -16,6 +16,7 @@
 
 class QAction;
 class QMenu;
+class QSplitter;
 class QTabWidget;
 
 namespace linkwright::kinematics {
@@ -132,6 +133,7 @@ private:
   QWidget* buildAnalysisTabs();
   void updateForcesNeeded();
   void showForcesTab();
+  void keepForceInputsShown();
   void showPolygonsTab();
   void refreshRecentFiles();
   void refreshTitle();
@@ -173,7 +175,9 @@ private:
   QAction* m_bigReadoutAction = nullptr;
   BigReadout* m_bigReadout = nullptr;
   bool m_bigReadoutBeforePresentation = false;  // the toggle's state, put back on leaving
-  QByteArray m_geometryBeforePresentation;      // the window's, put back on leaving
+  QByteArray m_geometryBeforePresentation;
+  QSplitter* m_forcesSplitter =
+      nullptr;  // the masses and loads over the force plots      // the window's, put back on leaving
   QAction* m_inversionsAction = nullptr;
   InversionsWindow* m_inversions = nullptr;
   bool m_presentation = false;

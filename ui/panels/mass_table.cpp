@@ -2,10 +2,13 @@
 
 #include "ui/number_text.h"
 
+#include <QEvent>
 #include <QHeaderView>
 #include <QLineEdit>
 #include <QLocale>
 #include <QStyledItemDelegate>
+
+#include <algorithm>
 
 namespace linkwright::ui {
 
@@ -53,9 +56,32 @@ MassTable::MassTable(const QStringList& headers, QWidget* parent) : QTableWidget
   setSelectionMode(QAbstractItemView::SingleSelection);
   setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                   QAbstractItemView::AnyKeyPressed);
-  setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  setVerticalScrollBarPolicy(Qt::ScrollBarAsNeeded);
   setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
   connect(this, &QTableWidget::itemChanged, this, &MassTable::onItemChanged);
+}
+
+QSize MassTable::minimumSizeHint() const {
+  // Never a sliver (presentation mode's larger text squeezed it to its header): the header and
+  // the first three rows stay, the rest behind the scroll bar. From the font as well as the
+  // sections: after a font change the sections take their new sizes only when next laid out.
+  const int line = fontMetrics().height();
+  int height = std::max(horizontalHeader()->sizeHint().height(), 2 * line + 8) + 2 * frameWidth();
+  for (int row = 0; row < std::min(rowCount(), kRowsAlwaysShown); ++row) height += std::max(rowHeight(row), line + 8);
+  return {QTableWidget::minimumSizeHint().width(), height};
+}
+
+void MassTable::changeEvent(QEvent* event) {
+  QTableWidget::changeEvent(event);
+  // A larger font (presentation mode) makes the header and rows taller: the minimum with them.
+  if (event->type() == QEvent::FontChange || event->type() == QEvent::StyleChange) keepRowsShown();
+}
+
+// As an explicit minimum: a layout caches a widget's minimumSizeHint, and the header's and
+// rows' sizes follow a font change only later.
+void MassTable::keepRowsShown() {
+  setMinimumHeight(minimumSizeHint().height());
+  updateGeometry();
 }
 
 void MassTable::setHeaderText(int column, const QString& text) {
@@ -105,7 +131,7 @@ void MassTable::setRows(const QStringList& names, const std::vector<std::vector<
     }
   }
   m_filling = false;
-  if (resized) updateGeometry();
+  if (resized) keepRowsShown();
 }
 
 void MassTable::onItemChanged(QTableWidgetItem* item) {

@@ -31,8 +31,15 @@ public:
   /// Retitles `column`; an unchanged title is left alone (a new header item re-lays out the panel).
   void setHeaderText(int column, const QString& text);
 
+  /// The header and the first kRowsAlwaysShown rows, however the panel is squeezed.
+  QSize minimumSizeHint() const override;
+  static constexpr int kRowsAlwaysShown = 3;
+
   /// Text for a value in a cell: up to 6 significant digits, C locale ("0.0004", "17.5").
   static QString formatValue(double value);
+
+protected:
+  void changeEvent(QEvent* event) override;
 
 signals:
   /// The user committed `text` in (row, column ≥ 1): `value` is its number, or unset for an
@@ -41,6 +48,7 @@ signals:
 
 private:
   void onItemChanged(QTableWidgetItem* item);
+  void keepRowsShown();
   bool m_filling = false;
 };
 

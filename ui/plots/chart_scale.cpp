@@ -42,6 +42,10 @@ double chartScale(const QChart* chart) {
   return stored.isValid() ? stored.toDouble() : 1.0;
 }
 
+QFont scaledPointLabelsFont(const QChart* chart, QXYSeries* series) {
+  return scaled(baseFont(series, kBaseLabelsFont, series->pointLabelsFont()), chartScale(chart));
+}
+
 double scaledPenWidth(const QChart* chart, double width) { return width * chartScale(chart); }
 
 void setChartScale(QChart* chart, double factor) {
@@ -71,6 +75,8 @@ void setChartScale(QChart* chart, double factor) {
     QPen pen = xy->pen();
     pen.setWidthF(base.toDouble() * factor);
     xy->setPen(pen);
+    if (xy->pointLabelsVisible())
+      xy->setPointLabelsFont(scaled(baseFont(xy, kBaseLabelsFont, xy->pointLabelsFont()), factor));
     // Markers (another tool's rows) grow with the lines.
     if (auto* scatter = qobject_cast<QScatterSeries*>(xy)) {
       QVariant size = scatter->property(kBaseMarkerSize);

@@ -107,7 +107,10 @@ bool LimitMarkers::setPositions(const QList<QPointF>& points, bool showPoints) {
   const bool legendChanges = pointsShown != m_points->isVisible();
   m_points->replace(pointsShown ? points : QList<QPointF>{});
   // setChartScale passes over it while it is empty: it takes the chart's scale here.
-  if (pointsShown) m_points->setMarkerSize(kMarkerSize * chartScale(m_chart));
+  if (pointsShown) {
+    m_points->setMarkerSize(kMarkerSize * chartScale(m_chart));
+    m_points->setPointLabelsFont(scaledPointLabelsFont(m_chart, m_points));
+  }
   setSeriesShown(m_chart, m_points, pointsShown, true);
   return legendChanges;
 }

@@ -5,6 +5,9 @@
 
 #include "tests/ui/journeys/journey.h"
 
+#include "ui/panels/dynamics_panel.h"
+#include "ui/panels/mass_table.h"
+#include "ui/plots/limit_markers.h"
 #include "ui/plots/plot_panel.h"
 #include "ui/plots/quantity_chart_view.h"
 
@@ -12,6 +15,7 @@
 
 #include <QGraphicsScene>
 #include <QGraphicsTextItem>
+#include <QScatterSeries>
 #include <QValueAxis>
 
 using namespace linkwright;
@@ -48,4 +52,29 @@ TEST_CASE("presentation mode on and off, then another example: no stray axis tit
     journey.check(std::string("Examples ▸ ") + example);
     CHECK(strayAxisTitles(journey.window()) == 0);
   }
+}
+
+TEST_CASE("in presentation mode the limit labels grow and the mass table keeps its rows", "[journey][presentation]") {
+  test::Journey journey;
+  journey.example("funsho-fourbar");
+  const QScatterSeries* limits = journey.window().plots()->limitMarkers()->points();
+  REQUIRE(limits->isVisible());
+  const double before = limits->pointLabelsFont().pointSizeF();
+  journey.menu({"View", "Presentation mode"});
+  REQUIRE(journey.window().presentationMode());
+  // "limit" grows with the axes' text.
+  CHECK(limits->pointLabelsFont().pointSizeF() == Approx(1.6 * before).epsilon(0.02));
+  journey.menu({"View", "Forces and masses"});
+  // The Links table shows its header and its rows (it was squeezed to a sliver).
+  const ui::MassTable* table = journey.window().findChild<ui::DynamicsPanel*>()->linkTable();
+  REQUIRE(table->rowCount() >= 3);
+  for (int row = 0; row < ui::MassTable::kRowsAlwaysShown; ++row) {
+    const QRect cell = table->visualRect(table->model()->index(row, 0));
+    CAPTURE(row, cell.top(), cell.bottom(), table->viewport()->height(), table->minimumSizeHint().height());
+    CHECK(cell.bottom() < table->viewport()->height());
+    CHECK(cell.top() >= 0);
+  }
+  journey.menu({"View", "Presentation mode"});
+  CHECK(limits->pointLabelsFont().pointSizeF() == Approx(before));
+  journey.check("presentation off");
 }
