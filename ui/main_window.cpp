@@ -11,6 +11,7 @@
 #include "ui/colors.h"
 #include "ui/compare/compare_dialog.h"
 #include "ui/dialogs/attach_dyad_dialog.h"
+#include "ui/dialogs/getting_started.h"
 #include "ui/document/design_templates.h"
 #include "ui/document/document_file.h"
 #include "ui/document/force_results.h"
@@ -47,10 +48,12 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDateTime>
+#include <QDesktopServices>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGraphicsView>
+#include <QInputDialog>
 #include <QKeySequence>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -63,6 +66,7 @@
 #include <QTabWidget>
 #include <QToolBar>
 #include <QUndoStack>
+#include <QUrl>
 #include <QVBoxLayout>
 
 #include <sstream>
@@ -340,6 +344,14 @@ void MainWindow::buildMenus() {
   buildExamplesMenu(menuBar()->addMenu(tr("E&xamples")));
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
+  help->addAction(tr("&Getting started"), QKeySequence::HelpContents, this, [this] {
+    auto* dialog = new GettingStartedDialog(this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->show();
+  });
+  help->addAction(tr("&Documentation online"), this,
+                  [] { QDesktopServices::openUrl(QUrl(QString::fromLatin1(kDocumentationUrl))); });
+  help->addSeparator();
   help->addAction(tr("&About Linkwright"), this, [this] {
     QMessageBox::about(this, tr("About Linkwright"),
                        tr("<b>Linkwright %1</b><p>Design and analysis of planar linkages (four-bars, slider-cranks, "
@@ -713,22 +725,43 @@ CompareDialog* MainWindow::openCompareTable(const QString& path) {
 }
 
 void MainWindow::exportImageDialog() {
+  // Which image first: the canvas, one plot, or all of them (each plot beside the canvas's
+  // file). It wrote all four files without asking.
+  const QList<QGraphicsView*> views = m_plots->graphicsViews();
   QStringList sources{tr("Canvas")};
-  for (int i = 0; i < m_plots->graphicsViews().size(); ++i) sources << tr("Plot: %1").arg(m_plots->chartTitle(i));
+  QList<int> plotOf{-1};
+  for (int i = 0; i < views.size(); ++i) {
+    if (views[i]->isHidden()) continue;  // a chart with nothing ticked is not shown, so not exported
+    sources << tr("Plot: %1").arg(m_plots->chartTitle(i));
+    plotOf << i;
+  }
+  sources << tr("Canvas and every plot shown");
+  bool chosen = false;
+  const QString source = QInputDialog::getItem(this, tr("Export image"), tr("Image of:"), sources, 0, false, &chosen);
+  if (!chosen) return;
+  const auto choice = sources.indexOf(source);
   QString selected;
   const QString path = QFileDialog::getSaveFileName(this, tr("Export image"), QString(),
                                                     tr("PNG image (*.png);;SVG drawing (*.svg)"), &selected);
   if (path.isEmpty()) return;
   QString withSuffix = path;
   if (QFileInfo(path).suffix().isEmpty()) withSuffix += selected.contains("svg") ? ".svg" : ".png";
-  // Without a second dialog: the canvas is exported, and each plot beside it with a suffix.
-  if (!exportCanvasImage(withSuffix)) return;
   const QFileInfo info(withSuffix);
+  if (choice > 0 && choice < plotOf.size()) {
+    if (exportPlotImage(plotOf[choice], withSuffix))
+      statusBar()->showMessage(tr("Exported %1").arg(info.fileName()), 5000);
+    return;
+  }
+  if (!exportCanvasImage(withSuffix)) return;
+  if (choice == 0) {
+    statusBar()->showMessage(tr("Exported %1").arg(info.fileName()), 5000);
+    return;
+  }
   int exported = 0;
-  const QList<QGraphicsView*> views = m_plots->graphicsViews();
-  for (int i = 0; i < views.size(); ++i) {
-    if (views[i]->isHidden()) continue;  // a chart with nothing ticked is not shown, so not exported
-    exportPlotImage(i, info.path() + "/" + info.completeBaseName() + QString("-plot%1.").arg(i + 1) + info.suffix());
+  for (int i = 1; i < plotOf.size(); ++i) {
+    const QString plotPath =
+        info.path() + "/" + info.completeBaseName() + QString("-plot%1.").arg(plotOf[i] + 1) + info.suffix();
+    if (!exportPlotImage(plotOf[i], plotPath)) return;
     ++exported;
   }
   statusBar()->showMessage(tr("Exported the canvas and %1 plots beside %2").arg(exported).arg(info.fileName()), 5000);

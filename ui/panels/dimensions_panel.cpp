@@ -92,10 +92,18 @@ void DimensionsPanel::rebuild() {
     if (branchOf(m.points[i]) != nullptr) {
       auto* label = new QLabel(tr("branch"), m_box);
       auto* box = new QComboBox(m_box);
-      box->addItems({tr("Open"), tr("Crossed")});
-      box->setToolTip(
-          tr("Which of the two assemblies: open puts the joint left of the line from its first to its "
-             "second parent (a slider: further along its guide)"));
+      // An arm's elbow in the words of robotics; any other joint in the linkage's.
+      if (m_document->design().kind == "two-link arm") {
+        box->addItems({tr("Elbow up"), tr("Elbow down")});
+        box->setToolTip(
+            tr("Elbow up: the elbow left of the line from the shoulder to the tip, as seen along it "
+               "(the open assembly); elbow down: its mirror image"));
+      } else {
+        box->addItems({tr("Open"), tr("Crossed")});
+        box->setToolTip(
+            tr("Which of the two assemblies: open puts the joint left of the line from its first to its "
+               "second parent (a slider: further along its guide)"));
+      }
       label->setIndent(10);
       m_grid->addWidget(label, row, 0);
       m_grid->addWidget(box, row++, 1);

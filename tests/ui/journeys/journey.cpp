@@ -110,15 +110,14 @@ void Journey::type(QWidget* field, const QString& text) {
   settle();
 }
 
-void Journey::whenDialogOpens(std::function<void(QWidget*)> answer) {
+void Journey::whenModalOpens(std::function<bool(QWidget*)> answer) {
   auto* poll = new QTimer(&m_window);
   poll->setInterval(10);
   QObject::connect(poll, &QTimer::timeout, poll, [poll, answer = std::move(answer)] {
-    QWidget* dialog = QApplication::activeModalWidget();
-    if (dialog == nullptr) return;
+    QWidget* modal = QApplication::activeModalWidget();
+    if (modal == nullptr || !modal->isVisible() || !answer(modal)) return;
     poll->stop();
     poll->deleteLater();
-    answer(dialog);
   });
   poll->start();
 }

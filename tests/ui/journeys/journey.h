@@ -41,9 +41,16 @@ public:
   void key(int key, Qt::KeyboardModifiers modifiers = Qt::NoModifier);
   /// Types `text` into the spin box or line edit `field`, as a click there and typing, then Enter.
   void type(QWidget* field, const QString& text);
-  /// Answers the next modal dialog when it opens (a file dialog, a question), with `answer`
-  /// called on it; the step that opens it follows.
-  void whenDialogOpens(std::function<void(QWidget*)> answer);
+  /// Answers the next modal dialog of type `Dialog` when it opens (a file dialog, a choice),
+  /// with `answer` called on it; the step that opens it follows.
+  template <typename Dialog>
+  void whenDialogOpens(std::function<void(Dialog*)> answer) {
+    whenModalOpens([answer = std::move(answer)](QWidget* modal) {
+      auto* dialog = qobject_cast<Dialog*>(modal);
+      if (dialog != nullptr) answer(dialog);
+      return dialog != nullptr;
+    });
+  }
 
   /// The next check() allows a refusal under a panel / a banner (the step made one).
   void expectRefusal() { m_refusalExpected = true; }
@@ -57,6 +64,8 @@ public:
   void check(const std::string& step);
 
 private:
+  // Calls `answer` on the active modal widget until it returns true.
+  void whenModalOpens(std::function<bool(QWidget*)> answer);
   void checkMessages();
   void checkTitle();
   void checkReadouts();
