@@ -20,6 +20,8 @@
 #include <QAbstractSpinBox>
 #include <QAction>
 #include <QApplication>
+#include <QDialogButtonBox>
+#include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
 #include <QLineEdit>
@@ -120,6 +122,24 @@ void Journey::whenModalOpens(std::function<bool(QWidget*)> answer) {
     poll->deleteLater();
   });
   poll->start();
+}
+
+void Journey::answerFileDialog(const QString& path) {
+  whenDialogOpens<QFileDialog>([path](QFileDialog* files) {
+    auto* name = files->findChild<QLineEdit*>("fileNameEdit");
+    REQUIRE(name != nullptr);
+    name->setText(path);
+    QTest::keyClick(name, Qt::Key_Return);
+  });
+}
+
+void Journey::clickOk(QWidget* dialog) {
+  auto* buttons = dialog->findChild<QDialogButtonBox*>();
+  REQUIRE(buttons != nullptr);
+  QPushButton* ok = buttons->button(QDialogButtonBox::Ok);
+  if (ok == nullptr) ok = buttons->button(QDialogButtonBox::Save);
+  REQUIRE(ok != nullptr);
+  QTest::mouseClick(ok, Qt::LeftButton);
 }
 
 void Journey::settle() {

@@ -52,6 +52,18 @@ public:
     });
   }
 
+  /// Answers the next file dialog by typing `path` into its file name field and Enter.
+  void answerFileDialog(const QString& path);
+  /// Accepts the next dialog of type `Dialog` as it comes (its defaults), by its OK button.
+  template <typename Dialog>
+  void acceptDialog() {
+    whenModalOpens([](QWidget* modal) {
+      auto* dialog = qobject_cast<Dialog*>(modal);
+      if (dialog != nullptr) clickOk(dialog);
+      return dialog != nullptr;
+    });
+  }
+
   /// The next check() allows a refusal under a panel / a banner (the step made one).
   void expectRefusal() { m_refusalExpected = true; }
   void expectBanner() { m_bannerExpected = true; }
@@ -64,6 +76,7 @@ public:
   void check(const std::string& step);
 
 private:
+  static void clickOk(QWidget* dialog);
   // Calls `answer` on the active modal widget until it returns true.
   void whenModalOpens(std::function<bool(QWidget*)> answer);
   void checkMessages();

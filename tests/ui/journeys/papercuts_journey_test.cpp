@@ -45,13 +45,7 @@ namespace {
 void exportImage(test::Journey& journey, const QString& choice, const QString& path) {
   journey.whenDialogOpens<QInputDialog>([&journey, choice, path](QInputDialog* ask) {
     REQUIRE(ask->comboBoxItems().contains(choice));
-    journey.whenDialogOpens<QFileDialog>([path](QFileDialog* files) {
-      // As a person does: the name typed into the dialog's file name field, then Enter.
-      auto* name = files->findChild<QLineEdit*>("fileNameEdit");
-      REQUIRE(name != nullptr);
-      name->setText(path);
-      QTest::keyClick(name, Qt::Key_Return);
-    });
+    journey.answerFileDialog(path);
     ask->setTextValue(choice);
     ask->accept();
   });
