@@ -32,6 +32,7 @@
 #include "ui/plots/quality_bar.h"
 #include "ui/settings.h"
 #include "ui/synthesis/synthesis_panel.h"
+#include "ui/undo_keys.h"
 #include "ui/wheel_guard.h"
 
 #include "kinematics/design/dyad_request.h"
@@ -110,7 +111,8 @@ MainWindow::MainWindow(QWidget* parent)
   scroll->setWidget(side);
   scroll->setWidgetResizable(true);
   scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  new WheelGuard(scroll);  // the wheel scrolls the panels; it edits a control only once focused
+  new WheelGuard(scroll);
+  new UndoKeysToDocument(this);  // the wheel scrolls the panels; it edits a control only once focused
   // As wide as the panels need, plus the vertical scroll bar: never cut off on the right.
   scroll->setMinimumWidth(side->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width() + 4);
 

@@ -5,6 +5,8 @@
 // motion bar unclipped, none of their values cut off, and every control of the side panel can
 // still be scrolled into sight.
 
+#include "tests/ui/journeys/journey.h"
+
 #include "ui/document/mechanism_document.h"
 #include "ui/main_window.h"
 #include "ui/panels/analysis_panel.h"
@@ -25,35 +27,20 @@
 
 using namespace linkwright;
 
-namespace {
-
-// Shown whole: visible, and not clipped by any parent or the window's edge.
-bool wholeInSight(const QWidget* w) {
-  return w->isVisible() && !w->visibleRegion().isEmpty() && w->visibleRegion().boundingRect() == w->rect();
-}
-
-// A new linkage's texts change the strip's row heights, which lays it out again: a few passes.
-void settle() {
-  for (int i = 0; i < 5; ++i) QApplication::processEvents();
-}
-
-}  // namespace
+using test::wholeInSight;
 
 TEST_CASE("at 1366×700 the analysis and the motion controls are in sight without scrolling",
           "[ui][window][journey][layout]") {
-  ui::MainWindow window;
-  window.resize(1366, 700);
-  window.show();
-  REQUIRE(QTest::qWaitForWindowExposed(&window));
+  test::Journey journey;  // 1366×700
+  ui::MainWindow& window = journey.window();
   auto* side = window.findChild<QScrollArea*>("SidePanel");
   REQUIRE(side != nullptr);
   for (const kinematics::Example& e : kinematics::examples()) {
     const std::string& example = e.name;
     CAPTURE(example);
-    window.newDocument(*kinematics::designForExample(example), QString::fromStdString(example));
-    settle();
+    journey.example(example);
     side->verticalScrollBar()->setValue(0);
-    settle();
+    journey.check("Examples ▸ " + example);
     CHECK_FALSE(side->isAncestorOf(window.analysisPanel()));
     CHECK(wholeInSight(window.analysisPanel()));
     CHECK(wholeInSight(window.motionPanel()->playButton()));

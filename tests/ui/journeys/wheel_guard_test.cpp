@@ -3,6 +3,8 @@
 // spin box, combo box and slider of the real window's side panel is wheeled, on a four-bar and
 // on a six-bar whose dimension fields are made anew, and the document must not change.
 
+#include "tests/ui/journeys/journey.h"
+
 #include "ui/document/mechanism_document.h"
 #include "ui/main_window.h"
 
@@ -50,12 +52,9 @@ TEST_CASE("the wheel over the side panel's controls edits nothing until a contro
           "[ui][window][journey][wheel]") {
   const std::string example = GENERATE("thesis-crank-rocker", "watt-ii");
   CAPTURE(example);
-  ui::MainWindow window;
-  window.resize(1366, 768);
-  window.show();
-  REQUIRE(QTest::qWaitForWindowExposed(&window));
-  window.newDocument(*kinematics::designForExample(example));
-  QApplication::processEvents();
+  test::Journey journey(QSize(1366, 768));
+  ui::MainWindow& window = journey.window();
+  journey.example(example);
   auto* side = window.findChild<QScrollArea*>("SidePanel");
   REQUIRE(side != nullptr);
   const kinematics::Design before = window.document()->design();
@@ -72,13 +71,12 @@ TEST_CASE("the wheel over the side panel's controls edits nothing until a contro
   QApplication::processEvents();
   CHECK(window.document()->undoStack()->count() == 0);
   CHECK(window.document()->design() == before);
+  journey.check("the wheel over every control");
 }
 
 TEST_CASE("a focused control in the side panel still takes the wheel", "[ui][window][journey][wheel]") {
-  ui::MainWindow window;
-  window.resize(1366, 768);
-  window.show();
-  REQUIRE(QTest::qWaitForWindowExposed(&window));
+  test::Journey journey(QSize(1366, 768));
+  ui::MainWindow& window = journey.window();
   auto* side = window.findChild<QScrollArea*>("SidePanel");
   REQUIRE(side != nullptr);
   QAbstractSlider* slider = side->widget()->findChild<QAbstractSlider*>();

@@ -2,12 +2,15 @@
 // example that has them (the crank-shaper's fifteen were missing in the designer while
 // `linkwright-cli centres --example shaper` printed them).
 
+#include "tests/ui/journeys/journey.h"
+
 #include "ui/canvas/instant_centres_item.h"
 #include "ui/canvas/linkage_scene.h"
 #include "ui/canvas/linkage_view.h"
 #include "ui/colors.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/main_window.h"
+#include "ui/panels/motion_panel.h"
 
 #include "kinematics/analysis/instant_centres.h"
 #include "kinematics/design/examples.h"
@@ -15,6 +18,7 @@
 #include "tests/support/catch.h"
 
 #include <QImage>
+#include <QSlider>
 #include <QTest>
 
 #include <cmath>
@@ -27,15 +31,15 @@ TEST_CASE("View ▸ Instant centres in the window draws the core's centres, the 
           "[ui][window][journey][centres]") {
   const std::string example = GENERATE("thesis-crank-rocker", "shaper", "watt-ii", "ls3-engine");
   CAPTURE(example);
-  ui::MainWindow window;
+  test::Journey journey(QSize(1366, 768));
+  ui::MainWindow& window = journey.window();
   // As the designer runs (app/main.cpp): slow sweeps in a worker.
   window.document()->setSweepThreading(ui::DisplaySweeper::Threading::Adaptive);
-  window.resize(1366, 768);
-  window.show();
-  REQUIRE(QTest::qWaitForWindowExposed(&window));
-  window.newDocument(*k::designForExample(example));
-  window.setShowInstantCentres(true);
-  window.document()->setCrankAngle(k::degToRad(30.0));
+  journey.example(example);
+  journey.menu({"View", "Instant centres and centrodes"});
+  // The crank moved to 30° with the Motion bar's slider (tenths of a degree).
+  window.motionPanel()->positionSlider()->setValue(300);
+  journey.check("centres at 30°");
   const auto* scene = dynamic_cast<ui::LinkageScene*>(window.canvas()->linkageScene());
   REQUIRE(scene != nullptr);
   const ui::InstantCentresItem& item = *scene->instantCentresItem();
