@@ -1,0 +1,178 @@
+// Not a test: the designer's gallery. Renders every built-in example in every view a user can
+// turn on (the drawing, instant centres, forces with their arrows, the polygons, every plot
+// including the ratios) to DIR/<example>-<view>.png, and with --docs also writes the README's
+// and docs' designer images (docs/images) under their names, so that they are retaken from one
+// command:
+//   QT_QPA_PLATFORM=offscreen BUILD/bin/linkwright_gallery DIR [--docs docs/images]
+// Look at every picture it writes before a change to a view is called done. docs/classroom.md
+// and docs/compare.md give the commands for the presentation, inversion, polygon and compare
+// images, which need their own screen size or tool.
+
+#include "ui/compare/compare_dialog.h"
+#include "ui/document/mechanism_document.h"
+#include "ui/main_window.h"
+#include "ui/plots/plot_panel.h"
+#include "ui/plots/plot_quantity.h"
+
+#include "kinematics/design/examples.h"
+#include "kinematics/model/units.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QDir>
+#include <QFile>
+#include <QMenu>
+#include <QMenuBar>
+
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace k = linkwright::kinematics;
+using linkwright::ui::MainWindow;
+
+namespace {
+
+void settle(MainWindow& window) {
+  for (int i = 0; i < 5; ++i) QApplication::processEvents();
+  window.settle();
+  for (int i = 0; i < 5; ++i) QApplication::processEvents();
+  QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+}
+
+// The View menu's action named `text` ('&' ignored), as a person chooses it.
+QAction* viewAction(MainWindow& window, const QString& text) {
+  for (QAction* menu : window.menuBar()->actions())
+    if (menu->text().remove('&') == "View")
+      for (QAction* action : menu->menu()->actions())
+        if (action->text().remove('&') == text) return action;
+  return nullptr;
+}
+
+void showEveryPlot(MainWindow& window) {
+  QStringList keys;
+  for (const auto& curve : window.plots()->curves()) keys << curve.key;
+  QString unknown;
+  if (const auto selection = linkwright::ui::selectionOfKeys(window.plots()->curves(), keys, unknown))
+    window.plots()->setSelection(*selection);
+}
+
+// The ratio plots (velocity ratio, mechanical advantage) beside the angles.
+void showRatios(MainWindow& window) {
+  QStringList keys;
+  for (const auto& curve : window.plots()->curves())
+    if (curve.key.contains("ratio") || curve.key.contains("advantage") || curve.key.endsWith("_angle"))
+      keys << curve.key;
+  QString unknown;
+  if (const auto selection = linkwright::ui::selectionOfKeys(window.plots()->curves(), keys, unknown))
+    window.plots()->setSelection(*selection);
+}
+
+struct View {
+  const char* name;
+  std::function<void(MainWindow&)> show;
+};
+
+const std::vector<View>& views() {
+  static const std::vector<View> all{
+      {"designer", [](MainWindow&) {}},
+      {"centres", [](MainWindow& w) { viewAction(w, "Instant centres and centrodes")->setChecked(true); }},
+      {"forces", [](MainWindow& w) { w.showForces(); }},
+      {"polygons", [](MainWindow& w) { viewAction(w, "Velocity and acceleration polygons")->trigger(); }},
+      {"plots", showEveryPlot},
+      {"ratios", showRatios},
+      {"centres-ratios",
+       [](MainWindow& w) {
+         viewAction(w, "Instant centres and centrodes")->setChecked(true);
+         showRatios(w);
+       }},
+  };
+  return all;
+}
+
+bool render(const std::string& example, const View& view, double crankDeg, const QString& path) {
+  MainWindow window;
+  window.resize(1400, 880);
+  window.newDocument(*k::designForExample(example), QString::fromStdString(example));
+  window.show();
+  settle(window);
+  view.show(window);
+  if (crankDeg != 0.0) window.document()->setCrankAngle(k::degToRad(crankDeg));
+  settle(window);
+  if (!window.grab().save(path, "PNG")) {
+    std::cerr << "linkwright_gallery: cannot write " << path.toStdString() << "\n";
+    return false;
+  }
+  return true;
+}
+
+const View& viewNamed(const std::string& name) {
+  for (const View& v : views())
+    if (name == v.name) return v;
+  return views().front();
+}
+
+// The designer images the README and docs show, by name: example, view, crank angle.
+struct DocImage {
+  const char* file;
+  const char* example;
+  const char* view;
+  double crankDeg;
+};
+constexpr DocImage kDocImages[] = {
+    {"designer.png", "thesis-crank-rocker", "designer", 30.0},
+    {"shaper.png", "shaper", "designer", 60.0},
+    {"ls3-engine.png", "ls3-engine", "designer", 40.0},
+    {"watt-ii.png", "watt-ii", "designer", 30.0},
+    {"forces.png", "funsho-fourbar", "forces", 60.0},
+    {"instant_centres.png", "thesis-crank-rocker", "centres", 250.0},
+    {"instant_centres_shaper.png", "shaper", "centres-ratios", 30.0},
+    {"ratios.png", "thesis-crank-rocker", "ratios", 30.0},
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  QApplication app(argc, argv);
+  const QStringList args = QApplication::arguments().mid(1);
+  if (args.isEmpty() || args.front().startsWith('-')) {
+    std::cerr << "usage: linkwright_gallery DIR [--docs DOCS_IMAGES_DIR]\n";
+    return 2;
+  }
+  const QDir out(args.front());
+  if (!out.mkpath(".")) return 1;
+  int written = 0;
+  for (const k::Example& example : k::examples())
+    for (const View& view : views()) {
+      if (std::string(view.name) == "centres-ratios") continue;  // for the docs only
+      const QString path = out.filePath(QString::fromStdString(example.name) + "-" + view.name + ".png");
+      if (!render(example.name, view, 30.0, path)) return 1;
+      ++written;
+    }
+  const qsizetype docs = args.indexOf("--docs");
+  if (docs > 0 && docs + 1 < args.size()) {
+    const QDir images(args[docs + 1]);
+    for (const DocImage& image : kDocImages) {
+      if (!render(image.example, viewNamed(image.view), image.crankDeg, images.filePath(image.file))) return 1;
+      ++written;
+    }
+  }
+  // File ▸ Compare… on the thesis's Excel table (run from the source tree), its map proposed
+  // by the headers: the dialog docs/compare.md shows.
+  const QString table = "tests/data/compare/thesis_excel_table7.tsv";
+  if (docs > 0 && docs + 1 < args.size() && QFile::exists(table)) {
+    MainWindow window;
+    window.resize(1400, 880);
+    window.show();
+    settle(window);
+    linkwright::ui::CompareDialog* dialog = window.openCompareTable(table);
+    if (dialog == nullptr || !dialog->compare()) return 1;
+    dialog->resize(1100, 720);
+    settle(window);
+    if (!dialog->grab().save(QDir(args[docs + 1]).filePath("compare.png"), "PNG")) return 1;
+    ++written;
+  }
+  std::cout << "wrote " << written << " images\n";
+  return 0;
+}
