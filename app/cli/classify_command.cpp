@@ -187,8 +187,8 @@ ExitCode runClassify(const Invocation& inv, std::ostream& out, std::ostream& err
   const Classification c{*fourBar, m.lengthUnit, k::analyseDesign(m, k::SweepResult{})};
   if (inv.json) printJson(c, out);
   else printText(c, out);
-  if (c.range.ranges.empty() && !c.range.fullRotation) {
-    err << "linkwright-cli: this linkage cannot be assembled at any crank angle\n";
+  if (auto e = k::assemblesNowhere(m, k::SweepResult{})) {
+    err << "linkwright-cli: " << e->message << "\n";
     return ExitCode::NotAssemblable;
   }
   return ExitCode::Success;

@@ -6,6 +6,7 @@
 
 #include "kinematics/analysis/extrema.h"
 #include "kinematics/analysis/mobility.h"
+#include "kinematics/design/design_analysis.h"
 #include "kinematics/io/json.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/units.h"
@@ -99,8 +100,8 @@ ExitCode classifyLinkage(const std::string& kind, const k::Mechanism& m, bool js
           << deg(t.extrema.minimum.value) << " at crank " << deg(turn(t.extrema.minimum.inputAngle)) << ", max "
           << deg(t.extrema.maximum.value) << " at crank " << deg(turn(t.extrema.maximum.inputAngle)) << "\n";
   }
-  if (none) {
-    err << "linkwright-cli: this linkage cannot be assembled at any crank angle\n";
+  if (auto e = k::assemblesNowhere(m, *sweep)) {
+    err << "linkwright-cli: " << e->message << "\n";
     return ExitCode::NotAssemblable;
   }
   return ExitCode::Success;

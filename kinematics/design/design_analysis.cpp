@@ -60,6 +60,22 @@ InputRange assembledRange(const SweepResult& sweep, InputKind input) {
   return range;
 }
 
+std::optional<Error> assemblesNowhere(const Mechanism& mechanism, const SweepResult& gridSweep) {
+  const auto nowhere = [](const std::string& why) {
+    return Error{ErrorCode::NotAssemblable, "design", "This linkage cannot be assembled at any " + why};
+  };
+  if (const auto fourBar = asFourBar(mechanism)) {
+    const InputRange range = fourBarInputRange(fourBar->lengths);
+    if (!range.ranges.empty() || range.fullRotation) return std::nullopt;
+    return nowhere("crank angle: the coupler and rocker cannot reach between the crank tip and the rocker pivot.");
+  }
+  const bool assembles = std::any_of(gridSweep.report.begin(), gridSweep.report.end(),
+                                     [](const PoseReport& r) { return r.status != PoseStatus::NotAssemblable; });
+  if (assembles) return std::nullopt;
+  const std::string input = inputKind(mechanism) == InputKind::Angle ? "crank angle" : "input position";
+  return nowhere(input + (gridSweep.firstFailure ? ": " + *gridSweep.firstFailure + "." : "."));
+}
+
 DesignAnalysis analyseDesign(const Mechanism& mechanism, const SweepResult& gridSweep) {
   DesignAnalysis a;
   a.mobility = mobility(mechanism);

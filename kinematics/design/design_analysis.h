@@ -14,6 +14,7 @@
 #include "kinematics/analysis/transmission.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism.h"
+#include "kinematics/model/result.h"
 #include "kinematics/solve/sweep.h"
 
 #include <optional>
@@ -37,6 +38,13 @@ struct DesignAnalysis {
 /// Analyses `mechanism`, whose sweep over its design's grid is `gridSweep` (positions
 /// suffice; for a four-bar only its notAssembled is read, so an empty result will do).
 DesignAnalysis analyseDesign(const Mechanism& mechanism, const SweepResult& gridSweep);
+
+/// Why `mechanism` cannot be shown or analysed at all, or nullopt: it assembles at no input. A
+/// four-bar is judged by its closed-form crank range (`gridSweep` is not read), any other
+/// linkage by its sweep over its input (positions suffice): no sample assembled. The one
+/// sentence the designer's refusal and the CLI's exit 3 give (ErrorCode::NotAssemblable,
+/// field "design").
+std::optional<Error> assemblesNowhere(const Mechanism& mechanism, const SweepResult& gridSweep);
 
 /// The input ranges over which `sweep` assembled, one per run of assembled samples (a lock
 /// between two samples, SweepResult::lockedBetween, ends a run); a full turn when every

@@ -126,9 +126,8 @@ void drawArrow(QPainter* painter, const QPointF& from, const QPointF& unit, doub
 
 InstantCentresItem::InstantCentresItem(QGraphicsItem* parent) : QGraphicsItem(parent) { setZValue(canvas::z::kArrows); }
 
-void InstantCentresItem::setCycle(const k::Mechanism& mechanism, const k::SweepResult& sweep) {
-  auto curves = k::centrodes(mechanism, sweep);
-  m_centrodes = curves ? std::move(curves).value() : k::Centrodes{};
+void InstantCentresItem::setCentrodes(const k::Centrodes& centrodes) {
+  m_centrodes = centrodes;
   updateBounds();
 }
 

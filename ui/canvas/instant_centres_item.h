@@ -29,8 +29,8 @@ class InstantCentresItem : public QGraphicsItem {
 public:
   explicit InstantCentresItem(QGraphicsItem* parent = nullptr);
 
-  /// The centrodes of `mechanism` over `sweep` (a Design or Request change).
-  void setCycle(const kinematics::Mechanism& mechanism, const kinematics::SweepResult& sweep);
+  /// The centrodes to draw (the document's, derived from its sweep: a Design or Request change).
+  void setCentrodes(const kinematics::Centrodes& centrodes);
   /// The centres at `pose`, and the moving centrode placed with the coupler there.
   void setPose(const kinematics::Mechanism& mechanism, const kinematics::Pose& pose);
   void setPresentationScale(double factor);

@@ -81,7 +81,7 @@ void LinkageScene::updateDesign(const MechanismDocument& document) {
   // Slideways and slotted bars reach a little past the points; a fit shows them whole.
   if (const QRectF extra = m_items->extraExtent(); !extra.isNull()) m_bounds = m_bounds.united(extra);
   computeArrowScales(document);
-  if (m_centres->isVisible()) m_centres->setCycle(m, document.sweep());
+  if (m_centres->isVisible()) m_centres->setCentrodes(document.centrodes());
   const double margin = 0.1 * linkageSize();
   setSceneRect(m_bounds.adjusted(-margin, -margin, margin, margin));  // what an export shows
   updatePose(document);
@@ -224,7 +224,7 @@ void LinkageScene::setShowAccelerationArrows(bool show) {
 void LinkageScene::setShowInstantCentres(bool show, const MechanismDocument& document) {
   m_centres->setVisible(show);
   if (!show) return;
-  m_centres->setCycle(document.mechanism(), document.sweep());
+  m_centres->setCentrodes(document.centrodes());
   m_centres->setPose(document.mechanism(), document.pose());
 }
 

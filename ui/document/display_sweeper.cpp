@@ -34,6 +34,7 @@ void DisplaySweeper::sweepNow(const k::Mechanism& mechanism, const k::SweepSpec&
   const auto start = std::chrono::steady_clock::now();
   // Into the same result: a drag re-sweeps on every frame without new allocations.
   if (auto error = k::sweepInto(mechanism, spec, request, m_result)) m_result = k::SweepResult{};
+  ++m_serial;
   m_milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   m_shape = shapeOf(mechanism, spec, request);
 }
@@ -93,6 +94,7 @@ void DisplaySweeper::finishPending() {
   } else {
     m_result = k::SweepResult{};
   }
+  ++m_serial;
   m_milliseconds = outcome->milliseconds;
   emit landed();
 }

@@ -18,6 +18,7 @@
 #include <QObject>
 
 #include <atomic>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -38,6 +39,8 @@ public:
 
   /// The last sweep that landed (empty when it failed: the document checked its inputs).
   const kinematics::SweepResult& result() const { return m_result; }
+  /// Grows each time result() changes: what is derived from a result is kept while it stays.
+  std::uint64_t serial() const { return m_serial; }
   /// Wall time that sweep took, ms.
   double milliseconds() const { return m_milliseconds; }
   /// A worker is sweeping a newer job; result() is the last one.
@@ -92,6 +95,7 @@ private:
   void finishPending();
 
   kinematics::SweepResult m_result;
+  std::uint64_t m_serial = 0;
   Shape m_shape;  // of m_result
   double m_milliseconds = 0.0;
   Threading m_threading = Threading::GuiThread;

@@ -31,29 +31,42 @@ MechanismDocument::MechanismDocument(QObject* parent)
 
 std::optional<QString> MechanismDocument::validate(const k::Design& design) const {
   if (auto e = k::checkDesign(design)) return QString::fromStdString(e->message);
-  if (const auto fourBar = k::asFourBar(design.mechanism)) {
-    const k::InputRange range = k::fourBarInputRange(fourBar->lengths);
-    if (range.ranges.empty() && !range.fullRotation)
-      return tr(
-          "These lengths cannot be assembled at any crank angle: the coupler and rocker cannot "
-          "reach between the crank tip and the rocker pivot.");
+  const auto refused = [](const k::Error& e) { return QString::fromStdString(e.message); };
+  // A four-bar has a closed-form crank range: the core judges it without a sweep.
+  if (k::asFourBar(design.mechanism)) {
+    if (auto e = k::assemblesNowhere(design.mechanism, k::SweepResult{})) return refused(*e);
     return std::nullopt;
   }
   // A drag's design (the grid and structure of the one shown, only other lengths) that
   // assembles at the instant shown is accepted at once where a worker sweeps the grid: the
   // analysis lands with that sweep (gridDeferred).
   if (gridDeferred(design) && assemblesAtInstant(design)) return std::nullopt;
-  // Any linkage other than a four-bar has no closed-form range: it must assemble at one sample
-  // of its grid at least, and the first failure says why it does not.
+  // Any other linkage must assemble at one sample of its grid at least; the core says why not.
   const k::SweepResult& grid = sweepGrid(design);
   m_grid.design = design;
   m_grid.request = m_request;
   m_grid.validated = true;
-  const bool assembles = std::any_of(grid.report.begin(), grid.report.end(),
-                                     [](const k::PoseReport& r) { return r.status != k::PoseStatus::NotAssemblable; });
-  if (assembles) return std::nullopt;
-  return tr("This linkage cannot be assembled at any crank angle: %1.")
-      .arg(QString::fromStdString(grid.firstFailure.value_or("")));
+  if (auto e = k::assemblesNowhere(design.mechanism, grid)) return refused(*e);
+  return std::nullopt;
+}
+
+const std::optional<k::AdvantageSeries>& MechanismDocument::ratios() const {
+  // Serial 0 is no sweep yet: the caches start stale.
+  if (m_ratiosSerial != m_sweeper.serial() || m_ratiosSerial == 0) {
+    auto series = k::advantageSeries(m_design.mechanism, m_sweeper.result());
+    m_ratios = series ? std::optional<k::AdvantageSeries>(std::move(series).value()) : std::nullopt;
+    m_ratiosSerial = m_sweeper.serial();
+  }
+  return m_ratios;
+}
+
+const k::Centrodes& MechanismDocument::centrodes() const {
+  if (m_centrodesSerial != m_sweeper.serial() || m_centrodesSerial == 0) {
+    auto curves = k::centrodes(m_design.mechanism, m_sweeper.result());
+    m_centrodes = curves ? std::move(curves).value() : k::Centrodes{};
+    m_centrodesSerial = m_sweeper.serial();
+  }
+  return m_centrodes;
 }
 
 k::SolveRequest MechanismDocument::gridRequest() const { return {false, false, m_request.newton}; }

@@ -18,6 +18,8 @@
 #include "ui/document/quality_estimator.h"
 #include "ui/document/sampling_quality.h"
 
+#include "kinematics/analysis/advantage_sweep.h"
+#include "kinematics/analysis/centrodes.h"
 #include "kinematics/design/design.h"
 #include "kinematics/design/design_analysis.h"
 #include "kinematics/model/recognise.h"
@@ -74,6 +76,12 @@ public:
   /// A drag's edit is being swept in a worker (display_sweeper.h): slow sweeps (a Newton
   /// linkage at Precise) never hold up the GUI thread. changed(Request) follows when it lands.
   bool sweepPending() const { return m_sweeper.pending(); }
+  /// Derived from sweep() on first ask and kept while it stays: the velocity ratio and the
+  /// mechanical advantage at every sample (from its instant centres; empty where the core
+  /// finds none), and the coupler's fixed and moving centrodes. Only a view that shows them
+  /// asks, so a hidden one costs nothing; views draw these and compute nothing of their own.
+  const std::optional<kinematics::AdvantageSeries>& ratios() const;
+  const kinematics::Centrodes& centrodes() const;
   /// A drag's design grid (the analysis's crank range and gaps) is being swept in a worker;
   /// analysis() holds the last grid's range and gaps meanwhile, and changed(Analysis) follows
   /// if the new ones differ.
@@ -235,6 +243,11 @@ private:
   std::optional<kinematics::FourBarStructure> m_fourBar;
   kinematics::DesignAnalysis m_analysis;
   DisplaySweeper m_sweeper;
+  // What ratios() and centrodes() derived, and from which sweep (DisplaySweeper::serial).
+  mutable std::optional<kinematics::AdvantageSeries> m_ratios;
+  mutable std::uint64_t m_ratiosSerial = 0;
+  mutable kinematics::Centrodes m_centrodes;
+  mutable std::uint64_t m_centrodesSerial = 0;
   kinematics::SweepSpec m_displaySpec;
   mutable long m_sweepsRun = 0;
   mutable DesignGrid m_grid;

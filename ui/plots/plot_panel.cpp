@@ -237,10 +237,10 @@ void PlotPanel::refreshData() {
                              : std::vector<OverlayCurve>{};
     m_overlayStale = false;
   }
-  // The ratios come from the instant centres of every sample: only while a ratio is shown.
-  std::optional<kinematics::AdvantageSeries> ratios;
-  if (shown.any(QuantityKind::VelocityRatio, m_curves) || shown.any(QuantityKind::Advantage, m_curves))
-    if (auto r = kinematics::advantageSeries(m_document->mechanism(), sweep)) ratios = std::move(*r);
+  // The document derives the ratios from the sweep, asked only while a ratio is shown.
+  const bool ratiosShown =
+      shown.any(QuantityKind::VelocityRatio, m_curves) || shown.any(QuantityKind::Advantage, m_curves);
+  const kinematics::AdvantageSeries* ratios = ratiosShown && m_document->ratios() ? &*m_document->ratios() : nullptr;
   QList<QuantityChartView*> changed;  // their axes or legends: laid out again
   // Data that came before the last ones settled are a drag's, or an animation's.
   const DataFlow flow = m_settleTimer.isActive() ? DataFlow::Changing : DataFlow::Settled;
@@ -249,12 +249,11 @@ void PlotPanel::refreshData() {
     const bool appears = visible == view->isHidden();
     view->setVisible(visible);
     view->setOverlay(m_overlay);
-    if (view->setData(sweep, shown, m_unit, x, lengthUnit, ratios ? &*ratios : nullptr, flow) || appears)
-      changed.append(view);
+    if (view->setData(sweep, shown, m_unit, x, lengthUnit, ratios, flow) || appears) changed.append(view);
   }
   for (QuantityChartView* view : showXTitles())
     if (!changed.contains(view)) changed.append(view);
-  const QString note = placeLimitMarkers(shown, ratios ? &*ratios : nullptr, changed);
+  const QString note = placeLimitMarkers(shown, ratios, changed);
   QuantityChartView* angles = chartView(QuantityKind::Angle);
   m_limitNote->setText(note);
   m_limitNote->setVisible(!note.isEmpty() && !angles->isHidden());

@@ -6,6 +6,7 @@
 
 #include "kinematics/design/design_analysis.h"
 #include "kinematics/analysis/assembly_range.h"
+#include "kinematics/design/design.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/model/driven_linkages.h"
 #include "kinematics/model/fourbar.h"
@@ -133,4 +134,33 @@ TEST_CASE("a linear input's range holds only its own values: no turn wraps it", 
   // The same numbers as a crank's angles wrap: 2π·10 rad + 0.5 is 0.5 rad.
   const InputRange angles{false, {{0.0, 1.0}}};
   CHECK(angles.contains(20.0 * kPi + 0.5));
+}
+
+TEST_CASE("a linkage that assembles nowhere is refused in one sentence, a four-bar by its range",
+          "[design][analysis][refusal]") {
+  // Frame 60, crank 25, coupler 5, rocker 5: the coupler and rocker reach at most 10 of the 35
+  // to 85 between the crank tip and the rocker pivot.
+  const Mechanism stuck = *makeFourBar({60.0, 25.0, 5.0, 5.0}, Branch::Open);
+  const auto e = assemblesNowhere(stuck, SweepResult{});
+  REQUIRE(e);
+  CHECK(e->code == ErrorCode::NotAssemblable);
+  CHECK(e->field == "design");
+  CHECK(e->message ==
+        "This linkage cannot be assembled at any crank angle: the coupler and rocker cannot reach between the "
+        "crank tip and the rocker pivot.");
+  // The thesis four-bar turns fully; a non-Grashof one rocks: both assemble somewhere.
+  CHECK_FALSE(assemblesNowhere(*makeFourBar(linkwright::test::kThesis, Branch::Open), SweepResult{}));
+  CHECK_FALSE(assemblesNowhere(*makeFourBar({60.0, 25.0, 30.0, 45.0}, Branch::Open), SweepResult{}));
+  // Any other linkage by its grid: the shaper assembles over its turn, and refused when no
+  // sample did, with the sweep's first failure.
+  const Design shaper = *designForExample("shaper");
+  const auto grid = sweep(shaper.mechanism, designSweepSpec(shaper), {false, false});
+  REQUIRE(grid);
+  CHECK_FALSE(assemblesNowhere(shaper.mechanism, *grid));
+  SweepResult none = *grid;
+  for (PoseReport& r : none.report) r.status = PoseStatus::NotAssemblable;
+  none.firstFailure = "D cannot be assembled at 0°";
+  const auto refused = assemblesNowhere(shaper.mechanism, none);
+  REQUIRE(refused);
+  CHECK(refused->message == "This linkage cannot be assembled at any crank angle: D cannot be assembled at 0°.");
 }
