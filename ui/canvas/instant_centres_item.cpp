@@ -131,25 +131,10 @@ void InstantCentresItem::setCentrodes(const k::Centrodes& centrodes) {
   updateBounds();
 }
 
-const k::Result<k::CentreModel>& InstantCentresItem::modelOf(const k::Mechanism& mechanism) {
-  if (!m_model || m_modelMechanism != mechanism) {
-    m_model = k::centreModel(mechanism);
-    m_modelMechanism = mechanism;
-  }
-  return *m_model;
-}
-
-void InstantCentresItem::setPose(const k::Mechanism& mechanism, const k::Pose& pose) {
-  m_centres.reset();
-  m_frame.reset();
-  m_reason.clear();
-  const auto& model = modelOf(mechanism);
-  if (!model) m_reason = QString::fromStdString(model.error().message);
-  else if (pose.position.size() == mechanism.points.size() &&
-           std::all_of(pose.position.begin(), pose.position.end(), [](const auto& p) { return p.allFinite(); })) {
-    m_centres = k::instantCentres(mechanism, *model, pose);
-    if (model->centrodeBody != 0) m_frame = k::couplerFrame(*model, pose);
-  }
+void InstantCentresItem::setCentres(const CentresAtPose& centres) {
+  m_centres = centres.centres;
+  m_frame = centres.frame;
+  m_reason = centres.reason;
   updateBounds();
 }
 

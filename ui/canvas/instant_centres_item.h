@@ -5,16 +5,14 @@
 // centre at infinity, or too far to draw, as an arrow along its direction; a note naming the
 // centres Kennedy's theorem does not reach; and the centrodes of the first floating body (a
 // coupler) over the cycle: the fixed one in the frame, the moving one carried by the body,
-// touching at I1k. Every position comes from the core (instant_centres.h, centrodes.h); this
-// item only draws, in screen pixels, so marks and text keep their size at any zoom. A linkage
+// touching at I1k. Every position comes from the core through the document (centresAtPose(),
+// centrodes()); this item only draws, in screen pixels, so marks and text keep their size at any zoom. A linkage
 // whose bodies the core cannot find shows nothing and says why (reason()).
 
-#include "kinematics/analysis/centre_model.h"
+#include "ui/document/centres_at_pose.h"
+
 #include "kinematics/analysis/centrodes.h"
 #include "kinematics/analysis/instant_centres.h"
-#include "kinematics/model/mechanism.h"
-#include "kinematics/solve/pose.h"
-#include "kinematics/solve/sweep.h"
 
 #include <QGraphicsItem>
 #include <QRectF>
@@ -31,8 +29,9 @@ public:
 
   /// The centrodes to draw (the document's, derived from its sweep: a Design or Request change).
   void setCentrodes(const kinematics::Centrodes& centrodes);
-  /// The centres at `pose`, and the moving centrode placed with the coupler there.
-  void setPose(const kinematics::Mechanism& mechanism, const kinematics::Pose& pose);
+  /// The centres at the pose, and the coupler's frame that places the moving centrode (the
+  /// document's, derived at each pose).
+  void setCentres(const CentresAtPose& centres);
   void setPresentationScale(double factor);
 
   /// What is drawn, for tests: the centres at the pose (none when reason() is set), the
@@ -54,11 +53,6 @@ public:
 
 private:
   void updateBounds();
-  /// The centre model of `mechanism`, rebuilt only when the mechanism changes (not per drag).
-  const kinematics::Result<kinematics::CentreModel>& modelOf(const kinematics::Mechanism& mechanism);
-
-  std::optional<kinematics::Mechanism> m_modelMechanism;
-  std::optional<kinematics::Result<kinematics::CentreModel>> m_model;
 
   std::optional<kinematics::InstantCentres> m_centres;
   kinematics::Centrodes m_centrodes;

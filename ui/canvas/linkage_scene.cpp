@@ -159,7 +159,7 @@ void LinkageScene::computeArrowScales(const MechanismDocument& document) {
 
 void LinkageScene::updatePose(const MechanismDocument& document) {
   m_items->setPose(document.mechanism(), document.pose());
-  if (m_centres->isVisible()) m_centres->setPose(document.mechanism(), document.pose());
+  if (m_centres->isVisible()) m_centres->setCentres(document.centresAtPose());
   updateArrows(document);
 }
 
@@ -225,7 +225,7 @@ void LinkageScene::setShowInstantCentres(bool show, const MechanismDocument& doc
   m_centres->setVisible(show);
   if (!show) return;
   m_centres->setCentrodes(document.centrodes());
-  m_centres->setPose(document.mechanism(), document.pose());
+  m_centres->setCentres(document.centresAtPose());
 }
 
 std::optional<QPointF> LinkageScene::handlePosition(const DragHandle& handle) const {

@@ -69,6 +69,25 @@ const k::Centrodes& MechanismDocument::centrodes() const {
   return m_centrodes;
 }
 
+const CentresAtPose& MechanismDocument::centresAtPose() const {
+  if (m_centresSerial == m_poseSerial && m_poseSerial != 0) return m_centresAtPose;
+  m_centresSerial = m_poseSerial;
+  const k::Mechanism& m = m_design.mechanism;
+  if (!m_centreModel || m_centreModelFor != m) {  // the bodies found once per mechanism
+    m_centreModel = k::centreModel(m);
+    m_centreModelFor = m;
+  }
+  m_centresAtPose = {};
+  const auto& model = *m_centreModel;
+  if (!model) m_centresAtPose.reason = QString::fromStdString(model.error().message);
+  else if (m_pose.position.size() == m.points.size() &&
+           std::all_of(m_pose.position.begin(), m_pose.position.end(), [](const auto& p) { return p.allFinite(); })) {
+    m_centresAtPose.centres = k::instantCentres(m, *model, m_pose);
+    if (model->centrodeBody != 0) m_centresAtPose.frame = k::couplerFrame(*model, m_pose);
+  }
+  return m_centresAtPose;
+}
+
 k::SolveRequest MechanismDocument::gridRequest() const { return {false, false, m_request.newton}; }
 
 const k::SweepResult& MechanismDocument::sweepGrid(const k::Design& design) const {
@@ -357,6 +376,7 @@ void MechanismDocument::solvePoseNow() {
   }
   const k::PoseReport report = k::solvePoseInto(m_design.mechanism, driver, {true, true}, m_pose);
   m_poseStatus = report.status;
+  ++m_poseSerial;
 }
 
 }  // namespace linkwright::ui

@@ -12,6 +12,7 @@
 // the drag's design is accepted because it assembles at the crank angle shown, and the
 // analysis's range and gaps follow when the grid lands (changed(Analysis)).
 
+#include "ui/document/centres_at_pose.h"
 #include "ui/document/display_sweeper.h"
 #include "ui/document/edit_design_command.h"
 #include "ui/document/quality_estimate.h"
@@ -82,6 +83,9 @@ public:
   /// asks, so a hidden one costs nothing; views draw these and compute nothing of their own.
   const std::optional<kinematics::AdvantageSeries>& ratios() const;
   const kinematics::Centrodes& centrodes() const;
+  /// The instant centres at pose() and the coupler's frame there, derived on first ask and
+  /// kept while the pose stays (the body model kept while the mechanism stays).
+  const CentresAtPose& centresAtPose() const;
   /// A drag's design grid (the analysis's crank range and gaps) is being swept in a worker;
   /// analysis() holds the last grid's range and gaps meanwhile, and changed(Analysis) follows
   /// if the new ones differ.
@@ -248,6 +252,11 @@ private:
   mutable std::uint64_t m_ratiosSerial = 0;
   mutable kinematics::Centrodes m_centrodes;
   mutable std::uint64_t m_centrodesSerial = 0;
+  std::uint64_t m_poseSerial = 0;  // grows with each pose solved
+  mutable CentresAtPose m_centresAtPose;
+  mutable std::uint64_t m_centresSerial = 0;
+  mutable std::optional<kinematics::Mechanism> m_centreModelFor;
+  mutable std::optional<kinematics::Result<kinematics::CentreModel>> m_centreModel;
   kinematics::SweepSpec m_displaySpec;
   mutable long m_sweepsRun = 0;
   mutable DesignGrid m_grid;
