@@ -36,19 +36,33 @@ io::NumericTable readTable(const std::string& name) {
   return *table;
 }
 
-Comparison compareFile(const std::string& file, const std::string& map, const CompareOptions& options = {}) {
+Comparison compareEdited(const io::NumericTable& table, const std::string& map, const CompareOptions& options = {}) {
   const auto mapping = parseColumnMap(map, thesis().mechanism);
   REQUIRE(mapping);
-  const auto result = compareTable(thesis().mechanism, compareDriveFor(thesis()), readTable(file), *mapping, options);
+  const auto result = compareTable(thesis().mechanism, compareDriveFor(thesis()), table, *mapping, options);
   REQUIRE(result);
   return *result;
 }
 
-std::vector<double> flaggedAngles(const ColumnComparison& column) {
+Comparison compareFile(const std::string& file, const std::string& map, const CompareOptions& options = {}) {
+  return compareEdited(readTable(file), map, options);
+}
+
+// The x of the rows of `column` that `pick` selects.
+template <typename Pick>
+std::vector<double> anglesWhere(const ColumnComparison& column, Pick pick) {
   std::vector<double> angles;
   for (const RowComparison& row : column.rows)
-    if (row.flagged) angles.push_back(row.x);
+    if (pick(row)) angles.push_back(row.x);
   return angles;
+}
+
+std::vector<double> flaggedAngles(const ColumnComparison& column) {
+  return anglesWhere(column, [](const RowComparison& row) { return row.flagged; });
+}
+
+std::vector<double> outsideFitAngles(const ColumnComparison& column) {
+  return anglesWhere(column, [](const RowComparison& row) { return row.outsideFit; });
 }
 
 constexpr const char* kExcelMap =
@@ -199,25 +213,6 @@ TEST_CASE("a flagged looser or tighter tolerance moves the flags as it says", "[
   tight.absoluteTolerance = 0.0;
   CHECK(compareFile("thesis_excel_table7.tsv", kExcelMap, tight).flaggedRows() > 40);  // every rounded cell
 }
-
-namespace {
-
-Comparison compareEdited(const io::NumericTable& table, const std::string& map) {
-  const auto mapping = parseColumnMap(map, thesis().mechanism);
-  REQUIRE(mapping);
-  const auto result = compareTable(thesis().mechanism, compareDriveFor(thesis()), table, *mapping);
-  REQUIRE(result);
-  return *result;
-}
-
-std::vector<double> outsideFitAngles(const ColumnComparison& column) {
-  std::vector<double> angles;
-  for (const RowComparison& row : column.rows)
-    if (row.outsideFit) angles.push_back(row.x);
-  return angles;
-}
-
-}  // namespace
 
 TEST_CASE("one θ4 value 3° off: the fitted offset stays zero and only that row is flagged", "[compare][offset]") {
   io::NumericTable table = readTable("thesis_excel_table7.tsv");
