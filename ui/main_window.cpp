@@ -111,8 +111,8 @@ MainWindow::MainWindow(QWidget* parent)
   scroll->setWidget(side);
   scroll->setWidgetResizable(true);
   scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  new WheelGuard(scroll);
-  new UndoKeysToDocument(this);  // the wheel scrolls the panels; it edits a control only once focused
+  new WheelGuard(scroll);        // the wheel scrolls the panels; it edits a control only once focused
+  new UndoKeysToDocument(this);  // Ctrl+Z in a number field undoes the design, not the field's text
   // As wide as the panels need, plus the vertical scroll bar: never cut off on the right.
   scroll->setMinimumWidth(side->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width() + 4);
 
