@@ -1,7 +1,6 @@
 // linkwright-cli accuracy: the speed-accuracy trade of reading peaks off a sampled cycle,
 // measured on the seeds' linkages (sampling_accuracy.h), with the time each choice costs.
 
-#include "app/cli/atomic_file.h"
 #include "app/cli/commands.h"
 #include "app/cli/svg_plot.h"
 
@@ -9,6 +8,7 @@
 #include "kinematics/design/examples.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/number_format.h"
+#include "kinematics/io/safe_file.h"
 #include "kinematics/model/constraint_form.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
@@ -177,16 +177,16 @@ ExitCode runAccuracy(const Invocation& inv, std::ostream& out, std::ostream& err
   }
   const std::string table = csv(rows);
   if (inv.svgFile)
-    if (const auto e = writeFileAtomically(*inv.svgFile, plot(rows))) {
-      err << "linkwright-cli: " << *e << "\n";
+    if (const auto e = kinematics::io::writeFileSafely(*inv.svgFile, plot(rows))) {
+      err << "linkwright-cli: " << e->message << "\n";
       return ExitCode::IoError;
     }
   if (!inv.outputFile) {
     out << table;
     return ExitCode::Success;
   }
-  if (const auto e = writeFileAtomically(*inv.outputFile, table)) {
-    err << "linkwright-cli: " << *e << "\n";
+  if (const auto e = kinematics::io::writeFileSafely(*inv.outputFile, table)) {
+    err << "linkwright-cli: " << e->message << "\n";
     return ExitCode::IoError;
   }
   return ExitCode::Success;

@@ -1,4 +1,3 @@
-#include "app/cli/atomic_file.h"
 #include "app/cli/commands.h"
 #include "app/cli/text_table.h"
 
@@ -6,6 +5,7 @@
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/number_format.h"
+#include "kinematics/io/safe_file.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
@@ -131,8 +131,8 @@ ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err)
   else if (forceSweep) kinematics::io::writeSweepCsv(csv, *mechanism, *result, *forceSweep);
   else kinematics::io::writeSweepCsv(csv, *mechanism, *result);
   if (inv.outputFile) {
-    if (auto problem = writeFileAtomically(*inv.outputFile, csv.str())) {
-      err << "linkwright-cli: " << *problem << "\n";
+    if (auto problem = kinematics::io::writeFileSafely(*inv.outputFile, csv.str())) {
+      err << "linkwright-cli: " << problem->message << "\n";
       return ExitCode::IoError;
     }
   } else {

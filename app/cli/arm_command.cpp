@@ -5,13 +5,13 @@
 // only keeps the options and columns scripts written for it know. The stretches of the path
 // outside the workspace come from their exact crossings with its annulus.
 
-#include "app/cli/atomic_file.h"
 #include "app/cli/commands.h"
 
 #include "kinematics/analysis/two_link_arm.h"
 #include "kinematics/design/design.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/number_format.h"
+#include "kinematics/io/safe_file.h"
 #include "kinematics/model/driven_linkages.h"
 #include "kinematics/model/path_shape.h"
 #include "kinematics/model/units.h"
@@ -261,8 +261,8 @@ ExitCode runArm(const Invocation& inv, std::ostream& out, std::ostream& err) {
   if (inv.tableFormat) writeTable(text, columns, rows);
   else writeCsv(text, columns, rows);
   if (inv.outputFile) {
-    if (auto problem = writeFileAtomically(*inv.outputFile, text.str())) {
-      err << "linkwright-cli: " << *problem << "\n";
+    if (auto problem = kinematics::io::writeFileSafely(*inv.outputFile, text.str())) {
+      err << "linkwright-cli: " << problem->message << "\n";
       return ExitCode::IoError;
     }
   } else {

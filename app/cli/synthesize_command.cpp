@@ -2,11 +2,11 @@
 // prints every candidate with its defects (text or JSON) and writes the chosen one as a
 // Linkwright document that analyze, extremes and classify read.
 
-#include "app/cli/atomic_file.h"
 #include "app/cli/commands.h"
 #include "app/cli/synthesize_report.h"
 
 #include "kinematics/io/document_json.h"
+#include "kinematics/io/safe_file.h"
 
 #include <ostream>
 
@@ -33,8 +33,8 @@ ExitCode runSynthesize(const Invocation& inv, std::ostream& out, std::ostream& e
     // The document keeps what it was synthesised for: the designer shows the targets again.
     kinematics::Design design = row.candidate.design;
     design.synthesis = targetsOf(request);
-    if (auto e = writeFileAtomically(*request.outputFile, kinematics::io::writeDocument(design))) {
-      err << "linkwright-cli: " << *e << "\n";
+    if (auto e = kinematics::io::writeFileSafely(*request.outputFile, kinematics::io::writeDocument(design))) {
+      err << "linkwright-cli: " << e->message << "\n";
       return ExitCode::IoError;
     }
     if (!row.candidate.defects.empty()) {

@@ -1,14 +1,13 @@
 #include "kinematics/io/dxf_export.h"
 
+#include "kinematics/io/safe_file.h"
+
 #include <dl_dxf.h>
 #include <dl_writer_ascii.h>
 
-#include <cerrno>
 #include <charconv>
-#include <cstring>
-#include <filesystem>
-#include <memory>
-#include <system_error>
+#include <cstdio>
+#include <string>
 #include <utility>
 
 namespace linkwright::kinematics::io {
@@ -18,9 +17,15 @@ namespace {
 // below 1 (1.2345678901234567e-5 keeps 12). This writer prints the shortest fixed-point text
 // that reads back as the same double (std::to_chars: whatever the value and the locale), with
 // a decimal point always; the rest of the file is dxflib's.
-class RoundTripWriter : public DL_WriterA {
+// dxflib's writer into memory, in DL_WriterA's layout (each group code right-aligned in three
+// columns on its own line, then its value), so that safe_file.h writes the file and checks
+// every write: DL_WriterA's stream reported no error when its last buffer failed to reach a
+// full disk. Reals in fixed point with all their digits (a DXF reader takes them so), not
+// DL_WriterA's %.16lf-or-shorter, so that a drawing reads back to the last bit.
+// DL_Dxf takes a DL_WriterA: its own stream is opened on /dev/null and never written.
+class MemoryWriter : public DL_WriterA {
 public:
-  using DL_WriterA::DL_WriterA;
+  MemoryWriter(std::string& out, DL_Codes::version dxfVersion) : DL_WriterA("/dev/null", dxfVersion), m_out(out) {}
   void dxfReal(int gc, double value) const override {
     char text[400];  // the longest fixed-point double, 1.8e308, has 309 digits
     const auto [end, ec] = std::to_chars(text, text + sizeof text, value, std::chars_format::fixed);
@@ -28,6 +33,23 @@ public:
     if (out.find('.') == std::string::npos) out += ".0";
     dxfString(gc, out);
   }
+  void dxfInt(int gc, int value) const override { dxfString(gc, std::to_string(value)); }
+  void dxfHex(int gc, int value) const override {
+    char text[16];
+    std::snprintf(text, sizeof text, "%0X", static_cast<unsigned>(value));
+    dxfString(gc, text);
+  }
+  void dxfString(int gc, const char* value) const override { dxfString(gc, std::string(value)); }
+  void dxfString(int gc, const std::string& value) const override {
+    m_out += gc < 10 ? "  " : gc < 100 ? " " : "";
+    m_out += std::to_string(gc);
+    m_out += '\n';
+    m_out += value;
+    m_out += '\n';
+  }
+
+private:
+  std::string& m_out;
 };
 
 // Layer colours (AutoCAD colour index): GROUND white, the parts cycling red, yellow, green,
@@ -90,25 +112,19 @@ void writeLayer(DL_Dxf& dxf, DL_WriterA& dw, const DrawingLayer& layer) {
     dxf.writeLine(dw, DL_LineData(l.from.x(), l.from.y(), 0.0, l.to.x(), l.to.y(), 0.0), attributes);
 }
 
-Error outputError(const std::string& path, const std::string& why) {
-  return Error{ErrorCode::InvalidValue, "output", "cannot write " + path + ": " + why};
-}
-
-// Writes the whole file at `temp`; false if the stream failed at any point.
-bool writeFile(const LinkDrawing& drawing, const std::filesystem::path& temp) {
+// The whole drawing as DXF text.
+std::string dxfText(const LinkDrawing& drawing) {
+  std::string text;
   DL_Dxf dxf;  // writes R2000 (AC1015), the version of the writer below
-  const auto dw = std::make_unique<RoundTripWriter>(temp.c_str(), DL_Codes::AC1015);
-  if (dw->openFailed()) return false;
-  writeTables(dxf, *dw, drawing);
-  dw->sectionEntities();
-  for (const DrawingLayer& layer : drawing.layers) writeLayer(dxf, *dw, layer);
-  dw->sectionEnd();
-  dxf.writeObjects(*dw);
-  dxf.writeObjectsEnd(*dw);
-  dw->dxfEOF();
-  const bool ok = !dw->openFailed();  // the stream's fail bit: set by a failed write too
-  dw->close();
-  return ok;
+  MemoryWriter dw(text, DL_Codes::AC1015);
+  writeTables(dxf, dw, drawing);
+  dw.sectionEntities();
+  for (const DrawingLayer& layer : drawing.layers) writeLayer(dxf, dw, layer);
+  dw.sectionEnd();
+  dxf.writeObjects(dw);
+  dxf.writeObjectsEnd(dw);
+  dw.dxfEOF();
+  return text;
 }
 
 }  // namespace
@@ -123,24 +139,7 @@ int dxfInsUnits(const std::string& unit) {
 }
 
 std::optional<Error> writeDxf(const LinkDrawing& drawing, const std::string& path) {
-  const std::filesystem::path target(path);
-  std::filesystem::path temp = target;
-  temp += ".linkwright-tmp";
-  errno = 0;
-  if (!writeFile(drawing, temp)) {
-    const int why = errno;
-    std::error_code ignored;
-    std::filesystem::remove(temp, ignored);
-    return outputError(path, why != 0 ? std::strerror(why) : "write failed");
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, target, ec);
-  if (ec) {
-    std::error_code ignored;
-    std::filesystem::remove(temp, ignored);
-    return outputError(path, ec.message());
-  }
-  return std::nullopt;
+  return writeFileSafely(path, dxfText(drawing));
 }
 
 std::optional<Error> exportLinkDrawingDxf(const Mechanism& mechanism, const Pose& pose, const DrawingOptions& options,

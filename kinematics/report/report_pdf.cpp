@@ -1,5 +1,7 @@
 #include "kinematics/report/report_pdf.h"
 
+#include "kinematics/io/safe_file.h"
+
 #include "kinematics/report/report_layout.h"
 
 #include <cairo-pdf.h>
@@ -8,7 +10,6 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 
 namespace linkwright::kinematics::report {
 namespace {
@@ -101,10 +102,6 @@ int render(const ReportContent& r, Paper paper, cairo_write_func_t write, void* 
   return pages;
 }
 
-Error outputError(const std::string& path, const std::string& why) {
-  return Error{ErrorCode::InvalidValue, "output", "cannot write " + path + ": " + why};
-}
-
 }  // namespace
 
 std::optional<Paper> paperFromName(std::string_view name) {
@@ -117,27 +114,17 @@ std::optional<Error> writeReportPdf(const ReportContent& report, Paper paper, co
   cairo_status_t status = CAIRO_STATUS_SUCCESS;
   // A first pass to nowhere counts the pages, so every footer can say "page i of N".
   const int pages = render(report, paper, discard, nullptr, 0, status);
-  if (status != CAIRO_STATUS_SUCCESS) return outputError(path, cairo_status_to_string(status));
-  const std::filesystem::path target(path);
-  std::filesystem::path temp = target;
-  temp += ".linkwright-tmp";
-  errno = 0;
-  std::FILE* file = std::fopen(temp.c_str(), "wb");
-  if (!file) return outputError(path, std::strerror(errno != 0 ? errno : EIO));
-  render(report, paper, toFile, file, pages, status);
-  const bool closed = std::fclose(file) == 0;
-  std::error_code ec;
-  if (status != CAIRO_STATUS_SUCCESS || !closed) {
-    std::filesystem::remove(temp, ec);
-    return outputError(path, status != CAIRO_STATUS_SUCCESS ? cairo_status_to_string(status) : "write failed");
-  }
-  std::filesystem::rename(temp, target, ec);
-  if (ec) {
-    std::error_code ignored;
-    std::filesystem::remove(temp, ignored);
-    return outputError(path, ec.message());
-  }
-  return std::nullopt;
+  if (status != CAIRO_STATUS_SUCCESS) return io::outputError(path, cairo_status_to_string(status));
+  return io::writeFileSafely(path, [&](const std::string& to) -> std::optional<std::string> {
+    errno = 0;
+    std::FILE* file = std::fopen(to.c_str(), "wb");
+    if (!file) return std::string(std::strerror(errno != 0 ? errno : EIO));
+    render(report, paper, toFile, file, pages, status);
+    const bool closed = std::fclose(file) == 0;
+    if (status != CAIRO_STATUS_SUCCESS) return std::string(cairo_status_to_string(status));
+    if (!closed) return std::string(std::strerror(errno != 0 ? errno : EIO));
+    return std::nullopt;
+  });
 }
 
 }  // namespace linkwright::kinematics::report

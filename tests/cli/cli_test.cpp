@@ -247,11 +247,33 @@ TEST_CASE("analyze -o writes the same CSV to a file, atomically", "[cli]") {
   std::ifstream in(file, std::ios::binary);
   const std::string written((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   CHECK(written == run({"analyze", "--example", "thesis-crank-rocker"}).out);
-  CHECK_FALSE(std::filesystem::exists(dir / "thesis.csv.linkwright-tmp"));
+  CHECK(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()) == 1);
 
   const Run bad = run({"analyze", "--example", "thesis-crank-rocker", "-o", (dir / "missing" / "x.csv").string()});
   CHECK(bad.code == 1);
   CHECK_THAT(bad.err, Catch::Contains("cannot write"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("-o to a device or a symlink writes through it, never replacing it", "[cli][errors]") {
+  // Was: every writer renamed a temporary file over the target, so -o /dev/null failed (and as
+  // root replaced the system's /dev/null) and -o link replaced the link.
+  const Run null = run({"analyze", "--example", "thesis-crank-rocker", "-o", "/dev/null"});
+  CHECK(null.code == 0);
+  CHECK(std::filesystem::is_character_file("/dev/null"));
+  const auto dir = std::filesystem::temp_directory_path() / "linkwright_cli_link_test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::filesystem::create_symlink("real.csv", dir / "link.csv");
+  REQUIRE(run({"analyze", "--example", "thesis-crank-rocker", "-o", (dir / "link.csv").string()}).code == 0);
+  CHECK(std::filesystem::is_symlink(dir / "link.csv"));
+  CHECK(std::filesystem::file_size(dir / "real.csv") > 1000);
+  for (const char* command : {"dxf", "report"}) {
+    CAPTURE(command);
+    const Run r = run({command, "--example", "thesis-crank-rocker", "-o", "/dev/null"});
+    CHECK(r.code == 0);
+    CHECK(std::filesystem::is_character_file("/dev/null"));
+  }
   std::filesystem::remove_all(dir);
 }
 
@@ -270,7 +292,25 @@ TEST_CASE("analyze -o to a full disk keeps the previous file and says why", "[cl
   CHECK(full.code == 1);
   CHECK_THAT(full.err, Catch::Contains("cannot write " + file.string() + ": File too large"));
   CHECK(std::filesystem::file_size(file) == before);
-  CHECK_FALSE(std::filesystem::exists(dir / "thesis.csv.linkwright-tmp"));
+  // No temporary file left beside it.
+  CHECK(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()) == 1);
+  // The DXF reported success and left a cut-off file over the old one (its last buffer was
+  // written at close, unchecked).
+  const auto drawing = dir / "links.dxf";
+  REQUIRE(run({"dxf", "--example", "thesis-crank-rocker", "-o", drawing.string()}).code == 0);
+  const std::string old = [&] {
+    std::ifstream in(drawing, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  }();
+  Run dxf;
+  {
+    test::FileSizeLimit limit(old.size() - 100);
+    dxf = run({"dxf", "--example", "thesis-crank-rocker", "--at", "30", "-o", drawing.string()});
+  }
+  CHECK(dxf.code == 1);
+  CHECK_THAT(dxf.err, Catch::Contains("cannot write " + drawing.string() + ": File too large"));
+  std::ifstream in(drawing, std::ios::binary);
+  CHECK(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()) == old);
   std::filesystem::remove_all(dir);
 }
 

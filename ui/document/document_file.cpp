@@ -1,11 +1,11 @@
 #include "ui/document/document_file.h"
 
 #include "kinematics/io/document_json.h"
+#include "kinematics/io/safe_file.h"
 
 #include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
-#include <QSaveFile>
 
 namespace linkwright::ui {
 namespace {
@@ -41,16 +41,13 @@ std::optional<QString> loadDesignFile(const QString& path, kinematics::Design& d
 }
 
 std::optional<QString> saveFileAtomically(const QString& path, const QByteArray& bytes) {
-  QSaveFile file(path);
-  if (!file.open(QIODevice::WriteOnly))
-    return tr("Cannot write %1: %2.").arg(QFileInfo(path).fileName(), file.errorString());
-  // flush() before commit(): Qt 6.4's commit() does not see a failed flush of QFileDevice's
-  // write buffer, and would rename a truncated file over the previous one (seen with a
-  // file-size limit standing in for a full disk).
-  if (file.write(bytes) != bytes.size() || !file.flush() || !file.commit())
-    return tr("Cannot write %1: %2. The previous file, if any, is unchanged.")
-        .arg(QFileInfo(path).fileName(), file.errorString());
-  return std::nullopt;
+  // The core's one writer (kinematics/io/safe_file.h), as the CLI's outputs.
+  const auto error = kinematics::io::writeFileSafely(
+      path.toStdString(), std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+  if (!error) return std::nullopt;
+  const std::string& message = error->message;  // "cannot write PATH: WHY"
+  const QString why = QString::fromStdString(message.substr(message.rfind(": ") + 2));
+  return tr("Cannot write %1: %2. The previous file, if any, is unchanged.").arg(QFileInfo(path).fileName(), why);
 }
 
 std::optional<QString> saveDesignFile(const QString& path, const kinematics::Design& design) {

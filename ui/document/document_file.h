@@ -26,7 +26,8 @@ std::optional<QString> loadDesignFile(const QString& path, kinematics::Design& d
 /// Writes `design` to `path` atomically; returns the message on failure.
 std::optional<QString> saveDesignFile(const QString& path, const kinematics::Design& design);
 
-/// Writes `bytes` to `path` atomically (CSV and SVG exports use it too).
+/// Writes `bytes` to `path` through the core's one writer (kinematics/io/safe_file.h): whole or
+/// not at all, a device or FIFO written through, a symlink's target written (every export uses it).
 std::optional<QString> saveFileAtomically(const QString& path, const QByteArray& bytes);
 
 }  // namespace linkwright::ui
