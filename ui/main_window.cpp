@@ -37,6 +37,7 @@
 
 #include "kinematics/design/dyad_request.h"
 #include "kinematics/design/examples.h"
+#include "kinematics/io/bounded_read.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/dxf_export.h"
 #include "kinematics/io/numeric_table_csv.h"
@@ -703,14 +704,13 @@ void MainWindow::compareDialog() {
 }
 
 CompareDialog* MainWindow::openCompareTable(const QString& path) {
-  QFile file(path);
-  if (!file.open(QIODevice::ReadOnly)) {
-    showError(tr("%1 cannot be opened for reading").arg(QFileInfo(path).fileName()));
+  // The core's one reader: a regular file of at most 64 MiB, the limit enforced while reading.
+  const auto text = k::io::readFileBounded(path.toStdString(), k::io::kMaxNumericTableBytes, "a table");
+  if (!text) {
+    showError(QString::fromStdString(text.error().message));
     return nullptr;
   }
-  const QByteArray bytes = file.readAll();
-  const auto table =
-      k::io::readNumericTable(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+  const auto table = k::io::readNumericTable(*text);
   if (!table) {
     showError(tr("%1: %2").arg(QFileInfo(path).fileName(), QString::fromStdString(table.error().message)));
     return nullptr;

@@ -10,14 +10,13 @@
 
 #include "kinematics/compare/header_mapping.h"
 #include "kinematics/compare/table_comparison.h"
+#include "kinematics/io/bounded_read.h"
 #include "kinematics/io/numeric_table_csv.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 
 #include <cmath>
-#include <fstream>
 #include <ostream>
-#include <sstream>
 
 namespace linkwright::cli {
 namespace {
@@ -26,11 +25,9 @@ namespace k = kinematics;
 namespace kc = kinematics::compare;
 
 k::Result<k::io::NumericTable> readTableFile(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) return k::Error{k::ErrorCode::InvalidValue, path, path + ": cannot be opened for reading"};
-  std::stringstream text;
-  text << file.rdbuf();
-  auto table = k::io::readNumericTable(text.str());
+  const auto text = k::io::readFileBounded(path, k::io::kMaxNumericTableBytes, "a table");
+  if (!text) return k::Error{text.error().code, path, text.error().message};
+  auto table = k::io::readNumericTable(*text);
   if (!table) return k::Error{table.error().code, path, path + ": " + table.error().message};
   return table;
 }

@@ -1,14 +1,12 @@
 #include "app/cli/commands.h"
 
+#include "kinematics/io/bounded_read.h"
 #include "kinematics/io/law_table_csv.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace linkwright::cli {
 namespace {
@@ -23,18 +21,11 @@ Error badValue(const std::string& option, const std::string& why) {
   return Error{ErrorCode::InvalidValue, option, option + " " + why};
 }
 
-// A measured q(t) (io/law_table_csv.h), from a regular file: not a device or a pipe.
+// A measured q(t) (io/law_table_csv.h), from a regular file of at most 64 MiB (io/bounded_read.h).
 k::Result<k::TableLaw> readLawTable(const std::string& path, const GridDefaults& d) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error) ||
-      std::filesystem::file_size(path, error) > k::io::kMaxLawTableBytes)
-    return badValue("--law-table",
-                    path + " cannot be opened for reading as a table (a regular file of at most 64 MiB)");
-  std::ifstream file(path, std::ios::binary);
-  if (!file) return badValue("--law-table", path + " cannot be opened for reading");
-  std::ostringstream text;
-  text << file.rdbuf();
-  auto law = k::io::readLawTableCsv(text.str(), d.input, d.lengthUnit);
+  const auto text = k::io::readFileBounded(path, k::io::kMaxLawTableBytes, "a table");
+  if (!text) return badValue("--law-table", text.error().message);
+  auto law = k::io::readLawTableCsv(*text, d.input, d.lengthUnit);
   if (!law) return badValue("--law-table", path + ": " + law.error().message);
   return law;
 }

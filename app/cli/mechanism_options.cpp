@@ -2,13 +2,11 @@
 
 #include "kinematics/design/design.h"
 #include "kinematics/design/fourbar_dimensions.h"
+#include "kinematics/io/bounded_read.h"
 #include "kinematics/io/document_json.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/validate.h"
-
-#include <fstream>
-#include <sstream>
 
 namespace linkwright::cli {
 
@@ -29,11 +27,9 @@ GridDefaults gridOf(const k::Design& d) {
 
 // The document named on the command line; errors name the file.
 k::Result<k::Design> readDocumentFile(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) return k::Error{k::ErrorCode::InvalidValue, path, path + ": cannot be opened for reading"};
-  std::stringstream text;
-  text << file.rdbuf();
-  auto design = k::io::readDocument(text.str());
+  const auto text = k::io::readFileBounded(path, k::io::kMaxDocumentBytes, "a Linkwright document");
+  if (!text) return k::Error{text.error().code, path, text.error().message};
+  auto design = k::io::readDocument(*text);
   if (!design) return k::Error{design.error().code, path, path + ": " + design.error().message};
   return design;
 }

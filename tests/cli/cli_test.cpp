@@ -255,6 +255,23 @@ TEST_CASE("analyze -o writes the same CSV to a file, atomically", "[cli]") {
   std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("a device or a folder as an input file is refused before reading, exit 2", "[cli][errors]") {
+  // Was: analyze /dev/zero and compare … /dev/zero grew by 0.7 GB/s until the kernel killed them.
+  const Run document = run({"analyze", "/dev/zero"});
+  CHECK(document.code == 2);
+  CHECK_THAT(document.err,
+             Catch::Contains("/dev/zero: cannot be read as a Linkwright document: it is not a regular file"));
+  const Run table = run({"compare", "--example", "thesis-crank-rocker", "/dev/zero", "--map", "auto"});
+  CHECK(table.code == 2);
+  CHECK_THAT(table.err, Catch::Contains("/dev/zero: cannot be read as a table: it is not a regular file"));
+  const Run folder = run({"analyze", std::filesystem::temp_directory_path().string()});
+  CHECK(folder.code == 2);
+  CHECK_THAT(folder.err, Catch::Contains("it is a folder"));
+  const Run law = run({"analyze", "--example", "thesis-crank-rocker", "--law", "table", "--law-table", "/dev/zero"});
+  CHECK(law.code == 2);
+  CHECK_THAT(law.err, Catch::Contains("--law-table /dev/zero: cannot be read as a table"));
+}
+
 TEST_CASE("-o to a device or a symlink writes through it, never replacing it", "[cli][errors]") {
   // Was: every writer renamed a temporary file over the target, so -o /dev/null failed (and as
   // root replaced the system's /dev/null) and -o link replaced the link.

@@ -1,5 +1,6 @@
 #include "ui/document/document_file.h"
 
+#include "kinematics/io/bounded_read.h"
 #include "kinematics/io/document_json.h"
 #include "kinematics/io/safe_file.h"
 
@@ -12,8 +13,12 @@ namespace {
 
 QString tr(const char* text) { return QCoreApplication::translate("DocumentFile", text); }
 
-// Documents are a few hundred bytes; anything this large is not one of ours.
-constexpr qint64 kMaxDocumentBytes = 16 * 1024 * 1024;
+// The core's sentence without what it starts with ("PATH: why" → "why"): the messages here
+// name the file by its name.
+QString whyOf(const std::string& message, const std::string& start) {
+  const std::string lead = start + ": ";
+  return QString::fromStdString(message.rfind(lead, 0) == 0 ? message.substr(lead.size()) : message);
+}
 
 }  // namespace
 
@@ -27,14 +32,12 @@ QString withDocumentSuffix(const QString& path) {
 
 std::optional<QString> loadDesignFile(const QString& path, kinematics::Design& design) {
   const QString name = QFileInfo(path).fileName();
-  QFile file(path);
-  if (!file.exists()) return tr("Cannot open %1: the file does not exist.").arg(name);
-  if (!file.open(QIODevice::ReadOnly)) return tr("Cannot open %1: %2.").arg(name, file.errorString());
-  if (file.size() > kMaxDocumentBytes)
-    return tr("Cannot open %1: it is too large to be a Linkwright document.").arg(name);
-  const QByteArray bytes = file.readAll();
-  const auto parsed =
-      kinematics::io::readDocument(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+  if (!QFileInfo::exists(path)) return tr("Cannot open %1: the file does not exist.").arg(name);
+  // The core's one reader: a regular file, its limit enforced while reading.
+  const auto text =
+      kinematics::io::readFileBounded(path.toStdString(), kinematics::io::kMaxDocumentBytes, "a Linkwright document");
+  if (!text) return tr("Cannot open %1: %2.").arg(name, whyOf(text.error().message, path.toStdString()));
+  const auto parsed = kinematics::io::readDocument(*text);
   if (!parsed) return tr("Cannot open %1: %2.").arg(name, QString::fromStdString(parsed.error().message));
   design = *parsed;
   return std::nullopt;
@@ -45,8 +48,7 @@ std::optional<QString> saveFileAtomically(const QString& path, const QByteArray&
   const auto error = kinematics::io::writeFileSafely(
       path.toStdString(), std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
   if (!error) return std::nullopt;
-  const std::string& message = error->message;  // "cannot write PATH: WHY"
-  const QString why = QString::fromStdString(message.substr(message.rfind(": ") + 2));
+  const QString why = whyOf(error->message, "cannot write " + path.toStdString());
   return tr("Cannot write %1: %2. The previous file, if any, is unchanged.").arg(QFileInfo(path).fileName(), why);
 }
 
