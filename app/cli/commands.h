@@ -67,6 +67,11 @@ kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& invocat
 /// The sweep the speed and range options ask for, with `defaults` for what they leave out.
 kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Invocation& invocation, const GridDefaults& defaults);
 
+/// --rpm, --omega, --alpha, --from, --to and --step against the input's domain
+/// (kinematics/model/validate.h, driver.h), each refusal naming the option as typed, its value
+/// and the range in that option's unit; nullopt when all fit.
+std::optional<kinematics::Error> checkDriveOptions(const Invocation& invocation, kinematics::InputKind kind);
+
 /// The time base --law asks for: the law from --law and its options, starting at --from
 /// (degrees) at the speed of --rpm / --omega; times from --from-time to --to-time (defaults:
 /// the table's span, a rise's duration, a ramp and one turn, one turn) every --step-time

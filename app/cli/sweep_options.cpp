@@ -20,9 +20,11 @@ Error badValue(const std::string& option, const std::string& why) {
   return Error{ErrorCode::InvalidValue, option, option + " " + why};
 }
 
+}  // namespace
+
 // The input domain (kinematics/model/validate.h, driver.h), named by the option the user
 // typed: --from, --to and --step in degrees for a crank, in the length unit for a linear driver.
-std::optional<Error> checkOptions(const Invocation& inv, kinematics::InputKind kind) {
+std::optional<Error> checkDriveOptions(const Invocation& inv, kinematics::InputKind kind) {
   using namespace kinematics;
   if (inv.rpm && !(std::isfinite(*inv.rpm) && std::abs(rpmToRadPerSec(*inv.rpm)) <= kMaxOmega))
     return badValue("--rpm", "must be finite and within ±" + formatShort(kMaxOmega * 60.0 / (2.0 * kPi), 3) +
@@ -41,14 +43,12 @@ std::optional<Error> checkOptions(const Invocation& inv, kinematics::InputKind k
   return std::nullopt;
 }
 
-}  // namespace
-
 double GridDefaults::toInput(double value) const {
   return input == kinematics::InputKind::Angle ? kinematics::degToRad(value) : value;
 }
 
 kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Invocation& inv, const GridDefaults& d) {
-  if (auto e = checkOptions(inv, d.input)) return *e;
+  if (auto e = checkDriveOptions(inv, d.input)) return *e;
   if (inv.law) return timeSweepSpecFor(inv, d);
   if (d.time) {
     // A document or example whose driver follows a law: its time base, at --samples instants

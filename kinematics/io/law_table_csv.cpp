@@ -29,6 +29,7 @@ Error tableError(const std::string& why) { return Error{ErrorCode::InvalidValue,
 
 Result<TableLaw> readLawTableCsv(std::string_view text, InputKind kind, const std::string& lengthUnit) {
   if (text.size() > kMaxLawTableBytes) return tableError("the table is larger than 64 MiB");
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // a UTF-8 byte-order mark (Excel's)
   const auto nextLine = [&text]() {
     const std::size_t end = text.find('\n');
     const std::string_view line = text.substr(0, end);

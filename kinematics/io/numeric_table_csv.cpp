@@ -71,8 +71,15 @@ std::optional<Cell> parseNumber(std::string cell, bool decimalComma) {
   const std::string mantissa = cell.substr(0, exponentAt);
   const std::size_t point = mantissa.find('.');
   const int decimals = point == std::string::npos ? 0 : static_cast<int>(mantissa.size() - point - 1);
-  const int exponent = exponentAt == std::string::npos ? 0 : std::atoi(cell.c_str() + exponentAt + 1);
-  parsed.rounding = 0.5 * std::pow(10.0, exponent - decimals);
+  long exponent = 0;
+  if (exponentAt != std::string::npos) {
+    const char* from = cell.c_str() + exponentAt + 1;
+    if (*from == '+') ++from;
+    std::from_chars(from, cell.c_str() + cell.size(), exponent);  // from_chars took the whole cell above
+  }
+  parsed.rounding = 0.5 * std::pow(10.0, static_cast<double>(exponent - decimals));
+  // "0e400" is zero to half of 1e400: a precision no double holds, not a measurement.
+  if (!std::isfinite(parsed.rounding)) return std::nullopt;
   return parsed;
 }
 
@@ -114,6 +121,9 @@ void addLabels(std::vector<std::string>& labels, const std::vector<std::string>&
 
 Result<NumericTable> readNumericTable(std::string_view text) {
   if (text.size() > kMaxNumericTableBytes) return csvError("the table is larger than 64 MiB");
+  // A UTF-8 byte-order mark (Excel writes one) is not part of the first line: with it, a
+  // headerless table's first row read as its header.
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
   const std::vector<std::string_view> lines = splitLines(text);
   NumericTable table;
   table.delimiter = detectDelimiter(lines);

@@ -175,3 +175,22 @@ TEST_CASE("compare --map auto takes the mapping the headers propose, and says so
   CHECK(unclear.out.empty());
   CHECK_THAT(unclear.err, Catch::Contains("--map auto") && Catch::Contains("give --map"));
 }
+
+TEST_CASE("compare checks --from, --rpm, --omega and --alpha as analyze does, naming the option typed",
+          "[cli][compare][errors]") {
+  const std::string map = "2=time:s,3=coupler_angle:deg,4=rocker_angle:deg:rev";
+  const auto refused = [&](std::vector<std::string> options, const std::string& option) {
+    CAPTURE(options);
+    const CliRun r = compare(data("thesis_solidworks_fig41_angles.tsv"), map, std::move(options));
+    CHECK(r.code == 2);
+    CHECK(r.out.empty());
+    CHECK_THAT(r.err, Catch::StartsWith("linkwright-cli: " + option + " "));
+  };
+  refused({"--from", "nan"}, "--from");  // every row "agreed", exit 0
+  refused({"--from", "1e300"}, "--from");
+  refused({"--rpm", "nan"}, "--rpm");  // blamed --omega
+  refused({"--omega", "2e6"}, "--omega");
+  // α's domain is ±1e12 rad/s², not ±1e6.
+  CHECK(compare(data("thesis_solidworks_fig41_angles.tsv"), map, {"--alpha", "2e6"}).code == 0);
+  refused({"--alpha", "2e12"}, "--alpha");
+}

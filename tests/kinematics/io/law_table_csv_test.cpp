@@ -46,3 +46,12 @@ TEST_CASE("a table without its unit, or with a bad row, is refused naming the li
   REQUIRE_FALSE(short_);
   CHECK_THAT(short_.error().message, Catch::Contains("at least four rows"));
 }
+
+TEST_CASE("a law table after a UTF-8 byte-order mark reads as without it", "[io][law]") {
+  const std::string table = "time_s,q_deg\n0,0\n1,10\n2,20\n3,30\n";
+  const auto plain = io::readLawTableCsv(table, InputKind::Angle, "mm");
+  const auto marked = io::readLawTableCsv("\xEF\xBB\xBF" + table, InputKind::Angle, "mm");
+  REQUIRE(plain);
+  REQUIRE(marked);
+  CHECK(*marked == *plain);
+}

@@ -66,3 +66,23 @@ TEST_CASE("a file without numbers, or with text after them, is refused naming th
   CHECK_THAT(text.error().message, Catch::Contains("line 3") && Catch::Contains("3,abc"));
   CHECK_FALSE(readNumericTable("x,y\n1,nan\n"));  // not a number a table can hold
 }
+
+TEST_CASE("a byte-order mark is not part of the first row, and 0e400 is not a measurement", "[numeric_table]") {
+  // Excel's UTF-8 BOM before a headerless table: its first row was read as the header.
+  const auto bom = readNumericTable(
+      "\xEF\xBB\xBF"
+      "0,1.5\n30,2.5\n60,3.5\n");
+  REQUIRE(bom);
+  CHECK(bom->rows.size() == 3);
+  CHECK(bom->rows[0].line == 1);
+  CHECK(*bom->rows[0].cells[1] == 1.5);
+  // A zero written to half of 1e400 claimed a rounding of infinity: its column's tolerance
+  // read "undefined" and nothing in it was ever flagged.
+  const auto huge = readNumericTable("x,y\n0,0e400\n1,0e400\n");
+  REQUIRE_FALSE(huge);
+  CHECK_THAT(huge.error().message,
+             Catch::Contains("line 2 is not a row of numbers") || Catch::Contains("no numeric row"));
+  const auto exponent = readNumericTable("x,y\n0,1.5e2\n1,2e-3\n");
+  REQUIRE(exponent);
+  CHECK(exponent->rounding[1] == Approx(5.0));  // 1.5e2: to the 10s, the coarsest
+}
