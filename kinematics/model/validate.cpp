@@ -62,6 +62,14 @@ std::optional<Error> checkMagnitude(double value, const std::string& field, doub
                                formatNumber(value) + ")");
 }
 
+std::optional<Error> checkComputedMagnitude(double value, const std::string& field, double max,
+                                            const std::string& unit) {
+  if (std::isfinite(value) && std::abs(value) <= max) return std::nullopt;
+  const std::string bound = "±" + boundText(max) + " " + unit;
+  if (!std::isfinite(value)) return valueError(field, field + " overflows for these inputs (beyond " + bound + ")");
+  return valueError(field, field + " would be " + formatNumber(value) + ", beyond " + bound);
+}
+
 std::optional<Error> checkNonNegative(double value, const std::string& field, double max, const std::string& unit) {
   if (std::isfinite(value) && value >= 0.0 && value <= max) return std::nullopt;
   return valueError(

@@ -59,6 +59,11 @@ std::optional<Error> checkLength(double value, const std::string& field, const s
 /// Error unless `value` is finite and |value| ≤ `max`; `unit` follows the bound in the
 /// message ("omega must be finite and within ±1e6 rad/s (got 1e+160)").
 std::optional<Error> checkMagnitude(double value, const std::string& field, double max, const std::string& unit);
+/// As checkMagnitude, for a value the core computed from what was typed (a law's peak, its
+/// angle at an instant), never printed as nan or inf as if typed: "FIELD would be 1e+13, beyond
+/// ±1e12 rad/s²", or, where it overflows, "FIELD overflows for these inputs (beyond …)".
+std::optional<Error> checkComputedMagnitude(double value, const std::string& field, double max,
+                                            const std::string& unit);
 
 /// Error unless `value` is finite, ≥ 0 and ≤ `max` (masses, inertias).
 std::optional<Error> checkNonNegative(double value, const std::string& field, double max, const std::string& unit);

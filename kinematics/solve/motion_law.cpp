@@ -100,10 +100,11 @@ std::optional<Error> checkDuration(double value, const std::string& field) {
 struct CheckLaw {
   InputDomain domain;
 
-  // Bounds every law shares: the driver's speed and acceleration within the domain's.
+  // Bounds every law shares: the driver's speed and acceleration within the domain's. Both
+  // are computed (a ramp's speed over its time), so never echoed as nan or inf.
   std::optional<Error> checkPeaks(double velocity, double acceleration) const {
-    if (auto e = checkMagnitude(velocity, "law peak velocity", domain.rate, domain.rateUnit)) return e;
-    return checkMagnitude(acceleration, "law peak acceleration", domain.acceleration, domain.accelerationUnit);
+    if (auto e = checkComputedMagnitude(velocity, "law peak velocity", domain.rate, domain.rateUnit)) return e;
+    return checkComputedMagnitude(acceleration, "law peak acceleration", domain.acceleration, domain.accelerationUnit);
   }
   std::optional<Error> checkPosition(double value, const char* field) const {
     return checkMagnitude(value, field, domain.position, domain.positionUnit);
@@ -131,6 +132,10 @@ struct CheckLaw {
     if (l.time.size() < 4 || l.position.size() != l.time.size() || l.curvature.size() != l.time.size())
       return fieldError("law.table", "needs at least four rows of time and position, as makeTableLaw builds");
     double peakVelocity = 0.0, peakAcceleration = 0.0;
+    // The largest |value|, a NaN kept (std::max would drop it): an overflowed spline is refused.
+    const auto grow = [](double& peak, double value) {
+      if (!std::isnan(peak) && !(std::abs(value) <= peak)) peak = std::abs(value);
+    };
     for (std::size_t i = 0; i + 1 < l.time.size(); ++i) {
       // q̈ is linear on each interval and q̇ quadratic: their extremes are at the ends or where q̈ = 0.
       const double t0 = l.time[i], t1 = l.time[i + 1];
@@ -139,9 +144,10 @@ struct CheckLaw {
                                  ? t0 + (t1 - t0) * l.curvature[i] / (l.curvature[i] - l.curvature[i + 1])
                                  : t0}) {
         const DriverState s = StateAt{t}(l);
-        peakVelocity = std::max(peakVelocity, std::abs(s.velocity));
+        grow(peakVelocity, s.velocity);
       }
-      peakAcceleration = std::max({peakAcceleration, std::abs(l.curvature[i]), std::abs(l.curvature[i + 1])});
+      grow(peakAcceleration, l.curvature[i]);
+      grow(peakAcceleration, l.curvature[i + 1]);
     }
     for (std::size_t i = 0; i < l.position.size(); ++i)
       if (auto e = checkPosition(l.position[i], "law.table position")) return e;

@@ -407,10 +407,11 @@ std::optional<Error> checkTimeBase(const TimeBase& time, InputKind kind) {
   // positions at the two ends bound every sample's: within the domain's.
   const InputDomain domain = inputDomain(kind);
   for (const double t : {time.fromTime, time.toTime})
-    if (auto e = checkMagnitude(motionAt(time.law, t).position,
-                                std::string(kind == InputKind::Angle ? "the law's angle" : "the law's position") +
-                                    " at " + formatNumber(t) + " s",
-                                domain.position, domain.positionUnit))
+    if (auto e =
+            checkComputedMagnitude(motionAt(time.law, t).position,
+                                   std::string(kind == InputKind::Angle ? "the law's angle" : "the law's position") +
+                                       " at " + formatNumber(t) + " s",
+                                   domain.position, domain.positionUnit))
       return e;
   if (const auto span = lawTimeSpan(time.law); span && (time.fromTime < span->first || time.toTime > span->second))
     return Error{ErrorCode::InvalidValue, "from time",

@@ -115,3 +115,23 @@ TEST_CASE("bad laws are refused with the field and the value", "[motion_law][err
   CHECK_THAT(makeTableLaw({0.0, 1.0, 2.0, 3.0}, {0.0, INFINITY, 2.0, 3.0}).error().message,
              Catch::Contains("law.table[1].position"));
 }
+
+TEST_CASE("a law's computed peaks are never echoed as nan or inf as if typed", "[law][errors]") {
+  // A ramp of 5e-324 s: its peak acceleration v/T overflows.
+  const auto ramp = checkMotionLaw(RampToSpeed{0.0, 1.0, 5e-324});
+  REQUIRE(ramp);
+  CHECK(ramp->field == "law peak acceleration");
+  CHECK(ramp->message == "law peak acceleration overflows for these inputs (beyond ±1e12 rad/s²)");
+  // Finite but out of range: what it would be.
+  const auto steep = checkMotionLaw(RampToSpeed{0.0, 1e6, 1e-7});
+  REQUIRE(steep);
+  CHECK(steep->message == "law peak acceleration would be 1e+13, beyond ±1e12 rad/s²");
+  // Rows 1e-300 s apart: the spline overflows; std::max dropped its NaN and the time base then
+  // said "the law's angle at 0 s … (got nan)".
+  const auto table = makeTableLaw({0.0, 1e-300, 2e-300, 3e-300}, {0.0, 0.1, 0.2, 0.3});
+  if (table) {
+    const auto e = checkMotionLaw(*table);
+    REQUIRE(e);
+    CHECK_THAT(e->message, !Catch::Contains("nan") && !Catch::Contains("inf") && Catch::Contains("overflows"));
+  }
+}
