@@ -88,6 +88,18 @@ std::optional<Error> positive(std::optional<double>& target, const std::string& 
   return std::nullopt;
 }
 
+// A length typed for a drawing (a hole's diameter, a plate's width): within the lengths a
+// linkage may have (model/validate.h), so a DXF never holds 300-digit coordinates.
+std::optional<Error> drawingLength(std::optional<double>& target, const std::string& option, const std::string& value) {
+  if (auto e = positive(target, option, value)) return e;
+  if (*target < kinematics::kMinLength || *target > kinematics::kMaxLength) {
+    const double got = *target;
+    target.reset();
+    return usage(option, option + " must be between 1e-06 and 1e9 (got " + kinematics::formatNumber(got) + ")");
+  }
+  return std::nullopt;
+}
+
 // X,Y with both finite.
 std::optional<Error> point(std::optional<Eigen::Vector2d>& target, const std::string& option,
                            const std::string& value) {
@@ -111,8 +123,8 @@ std::optional<Error> applyArmOrCentres(Invocation& inv, const std::string& optio
   else if (option == "--to-point") return point(inv.toPoint, option, value);
   else if (option == "--speed") return positive(inv.speed, option, value);
   else if (option == "--step-time") return positive(inv.stepTime, option, value);
-  else if (option == "--hole") return positive(inv.holeDiameter, option, value);
-  else if (option == "--width") return positive(inv.plateWidth, option, value);
+  else if (option == "--hole") return drawingLength(inv.holeDiameter, option, value);
+  else if (option == "--width") return drawingLength(inv.plateWidth, option, value);
   else if (option == "--elbow") {
     if (value == "up") inv.elbow = kinematics::Branch::Open;
     else if (value == "down") inv.elbow = kinematics::Branch::Crossed;

@@ -139,6 +139,10 @@ ExitCode runCentres(const Invocation& inv, std::ostream& out, std::ostream& err)
     return ExitCode::BadInput;
   }
   const k::Mechanism& m = resolved->mechanism;
+  if (auto e = checkAtOption(inv, resolved->defaults)) {
+    err << "linkwright-cli: " << e->message << "\n";
+    return ExitCode::BadInput;
+  }
   ExitCode code = ExitCode::Success;
   bool headerDone = false;
   for (const double deg : inv.atDeg) {

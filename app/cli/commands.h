@@ -72,6 +72,11 @@ kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Invocation& invocat
 /// and the range in that option's unit; nullopt when all fit.
 std::optional<kinematics::Error> checkDriveOptions(const Invocation& invocation, kinematics::InputKind kind);
 
+/// --at against the input's domain (an instant within ±1e6 s on a time base, else the input in
+/// degrees or the length unit): out of it is bad input (exit 2), not a pose that cannot be
+/// assembled (exit 3), for every command that takes it.
+std::optional<kinematics::Error> checkAtOption(const Invocation& invocation, const GridDefaults& defaults);
+
 /// The time base --law asks for: the law from --law and its options, starting at --from
 /// (degrees) at the speed of --rpm / --omega; times from --from-time to --to-time (defaults:
 /// the table's span, a rise's duration, a ramp and one turn, one turn) every --step-time

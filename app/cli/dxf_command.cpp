@@ -61,6 +61,10 @@ ExitCode runDxf(const Invocation& inv, std::ostream& out, std::ostream& err) {
   }
   const k::Mechanism& m = resolved->mechanism;
   const GridDefaults& d = resolved->defaults;
+  if (auto e = checkAtOption(inv, d)) {
+    err << "linkwright-cli: " << e->message << "\n";
+    return ExitCode::BadInput;
+  }
   const double at = inv.atDeg.empty() ? defaultInput(d) : inv.atDeg.front();
   // Positions are all a drawing needs; without rates a toggle pose still draws.
   const auto pose = k::solvePose(m, {d.toInput(at), 0.0, 0.0}, k::SolveRequest{false, false});

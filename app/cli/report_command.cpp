@@ -102,6 +102,7 @@ ExitCode runReport(const Invocation& inv, std::ostream& out, std::ostream& err) 
   const auto resolved = resolveMechanism(inv);
   if (!resolved) return fail(resolved.error());
   const GridDefaults& d = resolved->defaults;
+  if (auto e = checkAtOption(inv, d)) return fail(*e);
   const auto step = tableStep(inv, d);
   if (!step) return fail(step.error());
   k::report::ReportRequest request;

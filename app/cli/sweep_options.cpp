@@ -43,6 +43,18 @@ std::optional<Error> checkDriveOptions(const Invocation& inv, kinematics::InputK
   return std::nullopt;
 }
 
+std::optional<Error> checkAtOption(const Invocation& inv, const GridDefaults& d) {
+  using namespace kinematics;
+  const InputDomain domain = inputDomain(d.input);
+  const bool angle = d.input == InputKind::Angle;
+  // On a time base --at is an instant (s); else the input, in degrees or the length unit.
+  const double max = d.time ? 1e6 : angle ? kMaxAngleDeg : domain.position;
+  const char* unit = d.time ? "s" : angle ? "degrees" : domain.positionUnit;
+  for (const double at : inv.atDeg)
+    if (auto e = checkMagnitude(at, "--at", max, unit)) return e;
+  return std::nullopt;
+}
+
 double GridDefaults::toInput(double value) const {
   return input == kinematics::InputKind::Angle ? kinematics::degToRad(value) : value;
 }

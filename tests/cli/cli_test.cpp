@@ -272,7 +272,7 @@ TEST_CASE("a device or a folder as an input file is refused before reading, exit
   CHECK_THAT(law.err, Catch::Contains("--law-table /dev/zero: cannot be read as a table"));
 }
 
-TEST_CASE("-o to a device or a symlink writes through it, never replacing it", "[cli][errors]") {
+TEST_CASE("writing -o to a device or a symlink goes through it, never replacing it", "[cli][errors]") {
   // Was: every writer renamed a temporary file over the target, so -o /dev/null failed (and as
   // root replaced the system's /dev/null) and -o link replaced the link.
   const Run null = run({"analyze", "--example", "thesis-crank-rocker", "-o", "/dev/null"});
@@ -672,4 +672,28 @@ TEST_CASE("centres: points at infinity, toggles and angles that do not assemble"
   CHECK_THAT(partial.out, Catch::Contains("crank angle 0°"));
   CHECK(run({"--help"}).out.find("centres    instant centres") != std::string::npos);
   CHECK(run({"--help", "arm"}).out.find("--elbow up|down") != std::string::npos);
+}
+
+TEST_CASE("an --at out of its domain is bad input for every command, and a drawing's sizes are lengths",
+          "[cli][errors]") {
+  // --at 1e300 exited 3 (cannot be assembled) for centres, dxf and report, 2 for polygon.
+  for (const char* command : {"centres", "dxf", "report", "polygon"}) {
+    CAPTURE(command);
+    std::vector<std::string> args{command, "--example", "thesis-crank-rocker", "--at", "1e300"};
+    if (std::string(command) == "dxf" || std::string(command) == "report") {
+      args.push_back("-o");
+      args.push_back((std::filesystem::temp_directory_path() / "linkwright-at-test.out").string());
+    }
+    const Run r = run(args);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("--at must be finite and within ±1e6 degrees (got 1e+300)"));
+  }
+  // dxf --hole and --width took 1e300 and 1e-300: 300-digit coordinates in the file.
+  for (const auto& [option, value] : {std::pair{"--hole", "1e300"}, {"--width", "1e-300"}}) {
+    CAPTURE(option, value);
+    const Run r = run({"dxf", "--example", "thesis-crank-rocker", option, value, "-o",
+                       (std::filesystem::temp_directory_path() / "linkwright-hole-test.dxf").string()});
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains(std::string(option) + " ") && Catch::Contains("must be between 1e-06 and 1e9"));
+  }
 }

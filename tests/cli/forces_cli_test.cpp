@@ -180,7 +180,7 @@ TEST_CASE("analyze FILE --forces: a path-driven arm and a cylinder-driven boom, 
   }
 }
 
-TEST_CASE("--help lists --forces, its columns and its exit code", "[cli][forces]") {
+TEST_CASE("help: --help lists --forces, its columns and its exit code", "[cli][forces]") {
   const Run r = run({"--help", "analyze"});
   REQUIRE(r.code == 0);
   CHECK_THAT(r.out, Catch::Contains("--forces") && Catch::Contains("T_drive_Nm") && Catch::Contains("F_<joint>_x_N") &&

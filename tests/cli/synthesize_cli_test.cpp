@@ -443,7 +443,7 @@ TEST_CASE("synthesize: an unwritable output file exits 1 and writes nothing else
   CHECK_THAT(r.err, Catch::Contains("cannot write /nonexistent-dir/design.json"));
 }
 
-TEST_CASE("--help synthesize lists every problem, option and default", "[cli][synthesize]") {
+TEST_CASE("help: --help synthesize lists every problem, option and default", "[cli][synthesize]") {
   const Run top = run({"--help"});
   CHECK(top.out.find("synthesize a linkage from the motion wanted") != std::string::npos);
   for (const Args& args :
