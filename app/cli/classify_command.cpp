@@ -1,7 +1,7 @@
 #include "app/cli/classify_linkage.h"
 #include "app/cli/commands.h"
 
-#include "kinematics/design/design_analysis.h"
+#include "kinematics/design/derived_design.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/io/json.h"
 #include "kinematics/io/number_format.h"
@@ -187,8 +187,9 @@ ExitCode runClassify(const Invocation& inv, std::ostream& out, std::ostream& err
   const Classification c{*fourBar, m.lengthUnit, k::analyseDesign(m, k::SweepResult{})};
   if (inv.json) printJson(c, out);
   else printText(c, out);
-  if (auto e = k::assemblesNowhere(m, k::SweepResult{})) {
-    err << "linkwright-cli: " << e->message << "\n";
+  // The designer's verdict on the same linkage (kinematics/design/derived_design.h).
+  if (const auto verdict = k::deriveDesign(m, k::SweepResult{}); !verdict) {
+    err << "linkwright-cli: " << verdict.error().message << "\n";
     return ExitCode::NotAssemblable;
   }
   return ExitCode::Success;

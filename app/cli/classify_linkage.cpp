@@ -6,7 +6,7 @@
 
 #include "kinematics/analysis/extrema.h"
 #include "kinematics/analysis/mobility.h"
-#include "kinematics/design/design_analysis.h"
+#include "kinematics/design/derived_design.h"
 #include "kinematics/io/json.h"
 #include "kinematics/io/number_format.h"
 #include "kinematics/model/units.h"
@@ -100,8 +100,9 @@ ExitCode classifyLinkage(const std::string& kind, const k::Mechanism& m, bool js
           << deg(t.extrema.minimum.value) << " at crank " << deg(turn(t.extrema.minimum.inputAngle)) << ", max "
           << deg(t.extrema.maximum.value) << " at crank " << deg(turn(t.extrema.maximum.inputAngle)) << "\n";
   }
-  if (auto e = k::assemblesNowhere(m, *sweep)) {
-    err << "linkwright-cli: " << e->message << "\n";
+  // The designer's verdict on the same linkage (kinematics/design/derived_design.h).
+  if (const auto verdict = k::deriveDesign(m, *sweep); !verdict) {
+    err << "linkwright-cli: " << verdict.error().message << "\n";
     return ExitCode::NotAssemblable;
   }
   return ExitCode::Success;

@@ -30,23 +30,18 @@ MechanismDocument::MechanismDocument(QObject* parent)
 }
 
 std::optional<QString> MechanismDocument::validate(const k::Design& design) const {
+  m_grid.accepted.reset();
+  // A field out of its range is refused before anything is swept.
   if (auto e = k::checkDesign(design)) return QString::fromStdString(e->message);
-  const auto refused = [](const k::Error& e) { return QString::fromStdString(e.message); };
-  // A four-bar has a closed-form crank range: the core judges it without a sweep.
-  if (k::asFourBar(design.mechanism)) {
-    if (auto e = k::assemblesNowhere(design.mechanism, k::SweepResult{})) return refused(*e);
-    return std::nullopt;
-  }
+  const bool needsGrid = k::needsGridSweep(design.mechanism);
   // A drag's design (the grid and structure of the one shown, only other lengths) that
-  // assembles at the instant shown is accepted at once where a worker sweeps the grid: the
-  // analysis lands with that sweep (gridDeferred).
-  if (gridDeferred(design) && assemblesAtInstant(design)) return std::nullopt;
-  // Any other linkage must assemble at one sample of its grid at least; the core says why not.
-  const k::SweepResult& grid = sweepGrid(design);
-  m_grid.design = design;
-  m_grid.request = m_request;
-  m_grid.validated = true;
-  if (auto e = k::assemblesNowhere(design.mechanism, grid)) return refused(*e);
+  // assembles at the instant shown is accepted at once where a worker sweeps the grid: it is
+  // derived when that sweep lands (gridDeferred).
+  if (needsGrid && gridDeferred(design) && assemblesAtInstant(design)) return std::nullopt;
+  static const k::SweepResult kNoGrid;
+  auto derived = k::deriveDesign(design, needsGrid ? sweepGrid(design) : kNoGrid);
+  if (!derived) return QString::fromStdString(derived.error().message);
+  m_grid.accepted = DesignGrid::Accepted{design, m_request.newton, std::move(derived).value()};
   return std::nullopt;
 }
 
@@ -88,20 +83,19 @@ const CentresAtPose& MechanismDocument::centresAtPose() const {
   return m_centresAtPose;
 }
 
-k::SolveRequest MechanismDocument::gridRequest() const { return {false, false, m_request.newton}; }
+k::SolveRequest MechanismDocument::gridRequest() const { return k::gridSweepRequest(m_request.newton); }
 
 const k::SweepResult& MechanismDocument::sweepGrid(const k::Design& design) const {
   ++m_sweepsRun;
-  m_grid.validated = false;
   // Only checked designs get here (checkDesign passed), so the sweep runs.
   m_grid.sweeper.sweepNow(design.mechanism, k::designSweepSpec(design), gridRequest());
   return m_grid.sweeper.result();
 }
 
-const k::SweepResult* MechanismDocument::takeValidatedGrid(const k::Design& design) {
-  const bool usable =
-      std::exchange(m_grid.validated, false) && m_grid.design == design && m_grid.request.newton == m_request.newton;
-  return usable ? &m_grid.sweeper.result() : nullptr;
+std::optional<k::DerivedDesign> MechanismDocument::takeAccepted(const k::Design& design) {
+  auto accepted = std::exchange(m_grid.accepted, std::nullopt);
+  if (!accepted || accepted->design != design || accepted->newton != m_request.newton) return std::nullopt;
+  return std::move(accepted->derived);
 }
 
 bool MechanismDocument::gridDeferred(const k::Design& design) const {
@@ -116,9 +110,13 @@ bool MechanismDocument::assemblesAtInstant(const k::Design& design) const {
 }
 
 void MechanismDocument::adoptGridAnalysis() {
-  k::DesignAnalysis analysis = k::analyseDesign(m_design.mechanism, m_grid.sweeper.result());
-  if (analysis.inputRange == m_analysis.inputRange && analysis.notAssembled == m_analysis.notAssembled) return;
-  m_analysis = std::move(analysis);
+  // The drag's design assembled at the instant shown; a grid none of whose samples assemble
+  // (the instant lies between them) leaves the analysis it had.
+  auto derived = k::deriveDesign(m_design.mechanism, m_grid.sweeper.result());
+  if (!derived) return;
+  const k::DesignAnalysis& a = derived->analysis;
+  if (a.inputRange == analysis().inputRange && a.notAssembled == analysis().notAssembled) return;
+  m_derived = std::move(derived).value();
   const double angle = m_crankAngle;
   clampMotion();
   Changes what = Change::Analysis;
@@ -158,7 +156,7 @@ void MechanismDocument::setCrankAngle(double angle) {
     setTime(k::timeNearestPosition(*m_design.time, angle, m_time, k::inputPeriod(m_design.mechanism)));
     return;
   }
-  const double clamped = m_analysis.inputRange.clamp(angle);
+  const double clamped = analysis().inputRange.clamp(angle);
   if (clamped == m_crankAngle) return;
   m_crankAngle = clamped;
   solvePoseNow();
@@ -288,8 +286,34 @@ void MechanismDocument::setFilePath(const QString& path) {
 void MechanismDocument::markSaved() { m_undo.setClean(); }
 
 void MechanismDocument::rebuild(SweepNow now) {
-  // Designs reach here validated (edit/validate, or the document reader): nothing is checked again.
-  m_fourBar = k::asFourBar(m_design.mechanism);
+  // Designs reach here accepted (edit/validate, or the document reader and validate): what
+  // validate derived a moment ago serves; else the core derives it here.
+  std::optional<k::DerivedDesign> derived = takeAccepted(m_design);
+  // The crank range and gaps the panel states are the design's grid's, as in the CSV export,
+  // whatever the plots' resolution; positions alone decide them. A four-bar whose crank turns
+  // fully (closed form) has no gaps, so it skips this sweep.
+  if (!k::needsGridSweep(m_design.mechanism)) m_grid.sweeper.cancel();  // an older design's grid must not land
+  if (!derived) {
+    static const k::SweepResult kNoGrid;
+    const k::SweepResult* grid = &kNoGrid;
+    if (k::needsGridSweep(m_design.mechanism)) {
+      // A drag's grid may go to a worker (gridDeferred): until it lands, the design is derived
+      // from the last grid, of the same samples, and adoptGridAnalysis announces what changed.
+      if (now == SweepNow::No && gridDeferred(m_design)) {
+        ++m_sweepsRun;
+        m_grid.sweeper.sweep(m_design.mechanism, k::designSweepSpec(m_design), gridRequest());
+      } else {
+        sweepGrid(m_design);
+      }
+      grid = &m_grid.sweeper.result();
+    }
+    auto fresh = k::deriveDesign(m_design.mechanism, *grid);
+    // Only an accepted design gets here, so a refusal can only be a deferred grid's (the last
+    // one, of a design before the drag): its analysis is kept until the new grid lands.
+    if (fresh) derived = std::move(fresh).value();
+    else derived = k::DerivedDesign{k::asFourBar(m_design.mechanism), m_derived.analysis};
+  }
+  m_derived = std::move(*derived);
   // Sized once per design: free points then start each solve from the last pose shown.
   k::preparePose(m_design.mechanism, m_pose);
   if (m_requestOwner && m_requestSource) {
@@ -298,26 +322,6 @@ void MechanismDocument::rebuild(SweepNow now) {
     m_request = wanted;
   }
   resweep(now);
-  // The crank range and gaps the panel states are the design's grid's, as in the CSV export,
-  // whatever the plots' resolution; positions alone decide them. A four-bar whose crank turns
-  // fully (closed form) has no gaps, so it skips this sweep; after an edit, the sweep that
-  // validated the design a moment ago serves.
-  // A drag's grid may go to a worker (gridDeferred): until it lands, the analysis reads the
-  // last grid, of the same samples, and adoptGridAnalysis announces what changed.
-  static const k::SweepResult kNoGrid;
-  const k::SweepResult* grid = &kNoGrid;
-  if (!m_fourBar || !k::fourBarInputRange(m_fourBar->lengths).fullRotation) {
-    grid = takeValidatedGrid(m_design);
-    if (grid == nullptr && now == SweepNow::No && gridDeferred(m_design)) {
-      ++m_sweepsRun;
-      m_grid.sweeper.sweep(m_design.mechanism, k::designSweepSpec(m_design), gridRequest());
-      grid = &m_grid.sweeper.result();
-    }
-    if (grid == nullptr) grid = &sweepGrid(m_design);
-  } else {
-    m_grid.sweeper.cancel();  // an older design's grid must not land on this one
-  }
-  m_analysis = k::analyseDesign(m_design.mechanism, *grid);
   clampMotion();
   solvePoseNow();
   scheduleEstimate();
@@ -326,7 +330,7 @@ void MechanismDocument::rebuild(SweepNow now) {
 void MechanismDocument::clampMotion() {
   if (!m_design.time) {
     m_time = 0.0;
-    m_crankAngle = m_analysis.inputRange.clamp(m_crankAngle);
+    m_crankAngle = analysis().inputRange.clamp(m_crankAngle);
     return;
   }
   // The law decides where the crank is, assembled or not: a sample it cannot reach shows

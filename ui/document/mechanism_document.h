@@ -21,8 +21,8 @@
 
 #include "kinematics/analysis/advantage_sweep.h"
 #include "kinematics/analysis/centrodes.h"
+#include "kinematics/design/derived_design.h"
 #include "kinematics/design/design.h"
-#include "kinematics/design/design_analysis.h"
 #include "kinematics/model/recognise.h"
 #include "kinematics/solve/pose.h"
 #include "kinematics/solve/sweep.h"
@@ -62,14 +62,17 @@ public:
 
   /// The current design; valid and assemblable somewhere, always.
   const kinematics::Design& design() const { return m_design; }
+  /// What the core derived from the design (kinematics/design/derived_design.h): the
+  /// document holds it and nothing else about the design, so nothing outlives its design.
+  const kinematics::DerivedDesign& derived() const { return m_derived; }
   /// The design's four-bar, if its mechanism is one (read from its structure on each change).
-  const std::optional<kinematics::FourBarStructure>& fourBar() const { return m_fourBar; }
+  const std::optional<kinematics::FourBarStructure>& fourBar() const { return m_derived.fourBar; }
   /// The design's length unit ("mm").
   const std::string& lengthUnit() const { return m_design.mechanism.lengthUnit; }
   /// The design's mechanism, what the solver solves.
   const kinematics::Mechanism& mechanism() const { return m_design.mechanism; }
   /// Mobility, ranges and limits; crank range and gaps on the design's grid.
-  const kinematics::DesignAnalysis& analysis() const { return m_analysis; }
+  const kinematics::DesignAnalysis& analysis() const { return m_derived.analysis; }
   /// The displayed cycle: the design's crank angles at displaySpec()'s samples, computing what
   /// request() asks for. The plots and the canvas's paths read it. While sweepPending(), it is
   /// the design's as it was a moment ago (same samples and columns, other lengths).
@@ -118,7 +121,8 @@ public:
   /// Status of pose(): Ok, or Singular at a toggle position.
   kinematics::PoseStatus poseStatus() const { return m_poseStatus; }
 
-  /// Checks a candidate design: nullopt if it can be accepted, else why not (a sentence).
+  /// Checks a candidate design with the core's deriveDesign: nullopt if it can be accepted,
+  /// else the core's sentence for why not.
   std::optional<QString> validate(const kinematics::Design& design) const;
 
   /// Replaces the design through the undo stack. Consecutive edits with the same `mergeKey`
@@ -222,30 +226,33 @@ private:
   // m_grid, now: a drag sweeps it on every move, into the same memory.
   const kinematics::SweepResult& sweepGrid(const kinematics::Design& design) const;
   kinematics::SolveRequest gridRequest() const;
-  // The grid validate() swept for `design`, if it is the last one validated; taken once.
-  const kinematics::SweepResult* takeValidatedGrid(const kinematics::Design& design);
+  // What validate() derived for `design`, if it is the last one accepted; taken once.
+  std::optional<kinematics::DerivedDesign> takeAccepted(const kinematics::Design& design);
   // Whether `design`'s grid would be swept in a worker: a drag's (the samples and structure
   // of the grid shown), where the threading is not GuiThread; never on a time base.
   bool gridDeferred(const kinematics::Design& design) const;
   // Whether `design` assembles at the crank angle shown: such a drag's design is valid (it
   // assembles somewhere), checked without sweeping its grid.
   bool assemblesAtInstant(const kinematics::Design& design) const;
-  // A worker's grid landed: the analysis takes its range and gaps, and the crank is clamped
-  // into the range; announced only if they changed.
+  // A worker's grid landed: the design is derived anew from it, and the crank is clamped
+  // into its range; announced only if the range or gaps changed.
   void adoptGridAnalysis();
 
-  // The grid last swept, and the design and request it was validated for (`validated` until
-  // the design it accepted is applied), so that applying it does not sweep again.
+  // The grid last swept; the derived state validate() accepted and the design and Newton
+  // settings it was accepted for, until that design is applied, so that applying it derives
+  // nothing again.
   struct DesignGrid {
     DisplaySweeper sweeper;  // its result() is the grid
-    kinematics::Design design;
-    kinematics::SolveRequest request;
-    bool validated = false;
+    struct Accepted {
+      kinematics::Design design;
+      kinematics::NewtonSettings newton;
+      kinematics::DerivedDesign derived;
+    };
+    std::optional<Accepted> accepted;
   };
 
   kinematics::Design m_design;
-  std::optional<kinematics::FourBarStructure> m_fourBar;
-  kinematics::DesignAnalysis m_analysis;
+  kinematics::DerivedDesign m_derived;
   DisplaySweeper m_sweeper;
   // What ratios() and centrodes() derived, and from which sweep (DisplaySweeper::serial).
   mutable std::optional<kinematics::AdvantageSeries> m_ratios;
