@@ -1,6 +1,10 @@
 #include "kinematics/design/parameters.h"
 
+#include "kinematics/design/fourbar_dimensions.h"
+#include "kinematics/model/recognise.h"
+
 #include <algorithm>
+#include <cmath>
 #include <type_traits>
 #include <variant>
 
@@ -86,9 +90,38 @@ NumberPtr<M> numberOf(M& m, const Parameter& p) {
   return nullptr;
 }
 
-}  // namespace
+// The named dimension's number in `lengths`.
+double* fourBarLength(FourBarLengths& lengths, ParameterSlot slot) {
+  switch (slot) {
+  case ParameterSlot::FrameLength: return &lengths.frame;
+  case ParameterSlot::CrankLength: return &lengths.crank;
+  case ParameterSlot::CouplerLength: return &lengths.coupler;
+  case ParameterSlot::RockerLength: return &lengths.rocker;
+  default: return nullptr;
+  }
+}
 
-std::vector<Parameter> parametersOf(const Mechanism& m) {
+// The point that carries each named dimension, as parametersOf lists it.
+PointId carrier(const FourBarStructure& s, ParameterSlot slot) {
+  switch (slot) {
+  case ParameterSlot::CrankLength: return s.b;
+  case ParameterSlot::CouplerLength:
+  case ParameterSlot::RockerLength: return s.c;
+  default: return s.o4;
+  }
+}
+
+// Whether the four-bar's named dimensions stand for this raw number.
+bool replacedByName(const FourBarStructure& s, const Parameter& p) {
+  using S = ParameterSlot;
+  if (p.point == s.o4) return p.slot == S::X || p.slot == S::Y;
+  if (p.point == s.b) return p.slot == S::Length;
+  if (p.point == s.c) return p.slot == S::Length || p.slot == S::SecondLength;
+  return false;
+}
+
+// The raw numbers of every point, in point order.
+std::vector<Parameter> rawParameters(const Mechanism& m) {
   using S = ParameterSlot;
   std::vector<Parameter> out;
   for (std::size_t i = 0; i < m.points.size(); ++i) {
@@ -126,11 +159,47 @@ std::vector<Parameter> parametersOf(const Mechanism& m) {
   return out;
 }
 
+// The four-bar `parameter` names a dimension of, if it is a named one of `m`'s four-bar.
+std::optional<FourBarStructure> namedFourBar(const Mechanism& m, const Parameter& parameter) {
+  if (!isFourBarDimension(parameter.slot)) return std::nullopt;
+  auto s = asFourBar(m);
+  if (!s || carrier(*s, parameter.slot) != parameter.point) return std::nullopt;
+  return s;
+}
+
+}  // namespace
+
+bool isFourBarDimension(ParameterSlot slot) {
+  using S = ParameterSlot;
+  return slot == S::FrameLength || slot == S::CrankLength || slot == S::CouplerLength || slot == S::RockerLength ||
+         slot == S::FrameAngle;
+}
+
+std::vector<Parameter> parametersOf(const Mechanism& m) {
+  using S = ParameterSlot;
+  std::vector<Parameter> raw = rawParameters(m);
+  const auto s = asFourBar(m);
+  if (!s) return raw;
+  std::vector<Parameter> out;
+  for (const S slot : {S::FrameLength, S::CrankLength, S::CouplerLength, S::RockerLength})
+    out.push_back({carrier(*s, slot), slot});
+  for (const Parameter& p : raw) {
+    if (p.point == s->o4 && p.slot == S::X) out.push_back({s->o4, S::FrameAngle});
+    if (!replacedByName(*s, p)) out.push_back(p);
+  }
+  return out;
+}
+
 ParameterUnit parameterUnit(ParameterSlot slot) {
   switch (slot) {
   case ParameterSlot::Length:
   case ParameterSlot::SecondLength:
-  case ParameterSlot::ConstraintLength: return ParameterUnit::Length;
+  case ParameterSlot::ConstraintLength:
+  case ParameterSlot::FrameLength:
+  case ParameterSlot::CrankLength:
+  case ParameterSlot::CouplerLength:
+  case ParameterSlot::RockerLength: return ParameterUnit::Length;
+  case ParameterSlot::FrameAngle:
   case ParameterSlot::Phase:
   case ParameterSlot::GuideAngle:
   case ParameterSlot::SecondGuideAngle:
@@ -140,11 +209,32 @@ ParameterUnit parameterUnit(ParameterSlot slot) {
 }
 
 std::optional<double> parameterValue(const Mechanism& mechanism, const Parameter& parameter) {
+  if (isFourBarDimension(parameter.slot)) {
+    auto s = namedFourBar(mechanism, parameter);
+    if (!s) return std::nullopt;
+    if (parameter.slot == ParameterSlot::FrameAngle) return s->frameAngle;
+    return *fourBarLength(s->lengths, parameter.slot);
+  }
   if (const double* number = numberOf(mechanism, parameter)) return *number;
   return std::nullopt;
 }
 
 bool setParameter(Mechanism& mechanism, const Parameter& parameter, double value) {
+  if (isFourBarDimension(parameter.slot)) {
+    auto s = namedFourBar(mechanism, parameter);
+    if (!s) return false;
+    if (parameter.slot == ParameterSlot::FrameAngle) {
+      // O4 turns about O2, the frame's length kept.
+      const Eigen::Vector2d o2 = std::get<GroundPoint>(mechanism.points[s->o2.index].definition).position;
+      std::get<GroundPoint>(mechanism.points[s->o4.index].definition).position =
+          o2 + s->lengths.frame * Eigen::Vector2d(std::cos(value), std::sin(value));
+      return true;
+    }
+    FourBarLengths lengths = s->lengths;
+    *fourBarLength(lengths, parameter.slot) = value;
+    mechanism = withFourBarLengths(mechanism, *s, lengths);
+    return true;
+  }
   double* number = numberOf(mechanism, parameter);
   if (number == nullptr) return false;
   *number = value;

@@ -2,8 +2,11 @@
 // The numbers that define each point of a linkage, as typed parameters: a ground pivot's x
 // and y, a crank's length and phase, a driven point's path, an actuator's link length, an RRR
 // joint's two lengths, a slider's rod length and its guide, a slotted link's length, a point's offsets on its link, a free point's guess and
-// the constraint lengths that reach it. Editors list them, read them and set them through
-// here, so no editor touches a point definition itself.
+// the constraint lengths that reach it. A recognised four-bar (model/recognise.h), however it
+// was built or stored, is listed by its named dimensions instead of the raw numbers they stand
+// for: frame, crank, coupler and rocker lengths and the frame's direction, set through
+// fourbar_dimensions.h. Editors list them, read them and set them through here, so no editor
+// touches a point definition itself, and every linkage has one dimensions editor.
 
 #include "kinematics/model/mechanism.h"
 
@@ -33,7 +36,17 @@ enum class ParameterSlot {
   PathX,             ///< a polyline path's vertex `vertex`: x
   PathY,             ///< … y
   Sweep,             ///< an arc path's sweep (rad)
+  // A recognised four-bar's named dimensions, derived from the points' numbers; `point` is
+  // the point whose definition carries each (O4, B, C, C, O4).
+  FrameLength,    ///< a four-bar's O2–O4
+  CrankLength,    ///< … O2–B
+  CouplerLength,  ///< … B–C
+  RockerLength,   ///< … O4–C
+  FrameAngle,     ///< … the direction O2→O4 (rad, CCW from +x)
 };
+
+/// Whether `slot` is one of a four-bar's named dimensions.
+bool isFourBarDimension(ParameterSlot slot);
 
 /// What a parameter's value is: a length (positive), an offset or coordinate (any sign), or
 /// an angle (rad).
@@ -47,7 +60,9 @@ struct Parameter {
   bool operator==(const Parameter&) const = default;
 };
 
-/// Every parameter of `mechanism`, point by point, in the order an editor shows them.
+/// Every parameter of `mechanism` in the order an editor shows them: point by point; for a
+/// four-bar its four named lengths first, then the rest, the frame's direction in place of
+/// O4's x and y.
 std::vector<Parameter> parametersOf(const Mechanism& mechanism);
 
 /// The kind of value `parameter` holds.
@@ -56,8 +71,10 @@ ParameterUnit parameterUnit(ParameterSlot slot);
 /// The parameter's value (rad for angles), or nothing if `mechanism` has no such parameter.
 std::optional<double> parameterValue(const Mechanism& mechanism, const Parameter& parameter);
 
-/// Sets the parameter; false (and nothing changed) if `mechanism` has no such parameter.
-/// Checking the new value is the design's job (checkDesign).
+/// Sets the parameter; false (and nothing changed) if `mechanism` has no such parameter. A
+/// four-bar's named length keeps O2, the frame's direction, the crank's phase, the branch and
+/// a coupler point's place from B (withFourBarLengths). Checking the new value is the
+/// design's job (checkDesign).
 bool setParameter(Mechanism& mechanism, const Parameter& parameter, double value);
 
 }  // namespace linkwright::kinematics

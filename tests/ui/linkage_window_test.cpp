@@ -7,7 +7,6 @@
 #include "ui/main_window.h"
 #include "ui/message_banner.h"
 #include "ui/panels/dimensions_panel.h"
-#include "ui/panels/fourbar_lengths_editor.h"
 
 #include "app/cli/cli.h"
 #include "kinematics/design/design.h"
@@ -18,6 +17,7 @@
 #include "tests/support/catch.h"
 
 #include <QAction>
+#include <QCheckBox>
 #include <QFile>
 #include <QGroupBox>
 #include <QMenu>
@@ -73,8 +73,9 @@ TEST_CASE("File ▸ New offers each kind of linkage and the Examples menu every 
     CHECK(window.document()->undoStack()->count() == 0);
     CHECK(window.document()->poseStatus() != k::PoseStatus::NotAssemblable);
     const bool fourBar = window.document()->fourBar().has_value();
-    CHECK(window.dimensionsPanel()->fourBarEditor()->isVisibleTo(&window) == fourBar);
-    CHECK(window.dimensionsPanel()->pointsBox()->isVisibleTo(&window) == !fourBar);
+    // One editor: a four-bar's is headed by its named lengths and offers its coupler point.
+    CHECK((window.dimensionsPanel()->editor(k::ParameterSlot::CouplerLength) != nullptr) == fourBar);
+    CHECK(window.dimensionsPanel()->couplerPointBox()->isVisibleTo(&window) == fourBar);
   }
   QMenu* examples = topMenu(window, "Examples");
   REQUIRE(examples != nullptr);
@@ -107,8 +108,8 @@ TEST_CASE("a linkage saved in one window opens the same in another", "[ui][windo
   ui::MainWindow other;
   REQUIRE(other.openFile(path));
   CHECK(other.document()->design() == saved);
-  CHECK(other.dimensionsPanel()->pointsBox()->isVisibleTo(&other));
-  CHECK_FALSE(other.dimensionsPanel()->fourBarEditor()->isVisibleTo(&other));
+  CHECK(other.dimensionsPanel()->editor(k::ParameterSlot::CouplerLength) == nullptr);
+  CHECK(other.dimensionsPanel()->editor(k::ParameterSlot::Length) != nullptr);
 }
 
 TEST_CASE("a corrupt or newer file leaves an open linkage as it was", "[ui][window][file][errors][linkage]") {
@@ -136,11 +137,12 @@ TEST_CASE("attaching a dyad in the window swaps the four-bar lengths for the poi
   REQUIRE_FALSE(window.attachDyad(request).has_value());
   CHECK_FALSE(window.document()->fourBar().has_value());
   CHECK(window.document()->mechanism().links.size() == 5);
-  CHECK(window.dimensionsPanel()->pointsBox()->isVisibleTo(&window));
-  CHECK_FALSE(window.dimensionsPanel()->fourBarEditor()->isVisibleTo(&window));
+  CHECK(window.dimensionsPanel()->editor(k::ParameterSlot::CouplerLength) == nullptr);
+  CHECK_FALSE(window.dimensionsPanel()->couplerPointBox()->isVisibleTo(&window));
   window.document()->undoStack()->undo();
   CHECK(window.document()->fourBar().has_value());
-  CHECK(window.dimensionsPanel()->fourBarEditor()->isVisibleTo(&window));
+  CHECK(window.dimensionsPanel()->editor(k::ParameterSlot::CouplerLength) != nullptr);
+  CHECK(window.dimensionsPanel()->couplerPointBox()->isVisibleTo(&window));
   // A refusal names the reason and changes nothing.
   k::DyadRequest taken = request;
   taken.joint = "C";

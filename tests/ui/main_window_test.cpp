@@ -10,7 +10,6 @@
 #include "ui/message_banner.h"
 #include "ui/panels/analysis_panel.h"
 #include "ui/panels/dimensions_panel.h"
-#include "ui/panels/length_editor.h"
 #include "ui/plots/force_chart_view.h"
 #include "ui/plots/force_plot_panel.h"
 #include "ui/plots/limit_markers.h"
@@ -285,7 +284,7 @@ TEST_CASE("presentation mode scales a slider-crank's charts after a four-bar's",
 
 TEST_CASE("typing a length in the panel updates the badge and the plotted series as the core says", "[ui][window]") {
   ui::MainWindow window;
-  auto* frame = window.dimensionsPanel()->lengthEditor(0)->findChild<QDoubleSpinBox*>();
+  auto* frame = window.dimensionsPanel()->editor(kinematics::ParameterSlot::FrameLength);
   REQUIRE(frame != nullptr);
   frame->setFocus();
   frame->selectAll();

@@ -5,25 +5,32 @@
 #include "ui/document/mechanism_document.h"
 #include "ui/panels/analysis_panel.h"
 #include "ui/panels/dimensions_panel.h"
-#include "ui/panels/length_editor.h"
 #include "ui/panels/motion_panel.h"
+#include "ui/panels/parameter_editor.h"
 #include "ui/settings.h"
 
+#include "kinematics/design/design.h"
+#include "kinematics/design/examples.h"
+#include "kinematics/design/fourbar_dimensions.h"
+#include "kinematics/design/parameters.h"
+#include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 
 #include "tests/ui/support/four_bar_design.h"
 
 #include "tests/support/catch.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QSlider>
 #include <QTest>
+
+#include <algorithm>
 
 using namespace linkwright;
 
 namespace {
-
-QDoubleSpinBox* spinOf(ui::LengthEditor* editor) { return editor->findChild<QDoubleSpinBox*>(); }
 
 void typeInto(QDoubleSpinBox* spin, double value) {
   spin->setFocus();
@@ -39,13 +46,13 @@ TEST_CASE("typing a length changes the design and the Grashof badge as the core 
   ui::DimensionsPanel lengths(&doc);
   ui::AnalysisPanel analysis(&doc);
   CHECK(analysis.grashofText().contains("Crank-rocker"));
-  typeInto(spinOf(lengths.lengthEditor(0)), 20.0);  // 20 + 70 > 25 + 45: non-Grashof
+  typeInto(lengths.editor(kinematics::ParameterSlot::FrameLength), 20.0);  // 20 + 70 > 25 + 45: non-Grashof
   CHECK(doc.fourBar()->lengths.frame == 20.0);
   CHECK(doc.analysis().grashof->category == kinematics::GrashofClass::TripleRocker);
   CHECK(analysis.grashofText().contains("Triple-rocker"));
   doc.undoStack()->undo();
   CHECK(doc.fourBar()->lengths.frame == 60.0);
-  CHECK(spinOf(lengths.lengthEditor(0))->value() == 60.0);
+  CHECK(lengths.editor(kinematics::ParameterSlot::FrameLength)->value() == 60.0);
 }
 
 TEST_CASE("a length that cannot be assembled is refused, shown, and the editor snaps back", "[ui][panels][errors]") {
@@ -53,10 +60,10 @@ TEST_CASE("a length that cannot be assembled is refused, shown, and the editor s
   ui::DimensionsPanel lengths(&doc);
   lengths.show();
   const kinematics::Design before = doc.design();
-  typeInto(spinOf(lengths.lengthEditor(0)), 900.0);
+  typeInto(lengths.editor(kinematics::ParameterSlot::FrameLength), 900.0);
   CHECK(doc.design() == before);
   CHECK(lengths.refusalMessage().contains("cannot be assembled at any crank angle"));
-  CHECK(spinOf(lengths.lengthEditor(0))->value() == 60.0);
+  CHECK(lengths.editor(kinematics::ParameterSlot::FrameLength)->value() == 60.0);
 }
 
 TEST_CASE("the branch box switches the assembly branch, undoably", "[ui][panels]") {
@@ -114,4 +121,89 @@ TEST_CASE("a linear input on a grid is moved, stepped and named in its length un
   CHECK(doc.crankAngle() == Approx(1.62).epsilon(1e-12));
   CHECK(doc.analysis().inputRange.ranges.size() == 1);
   CHECK_FALSE(doc.analysis().inputRange.fullRotation);
+}
+
+TEST_CASE("one dimensions editor: every number of every example has a spin box and a slider that spans it",
+          "[ui][panels][dimensions]") {
+  ui::MechanismDocument doc;
+  ui::DimensionsPanel panel(&doc);
+  for (const kinematics::Example& e : kinematics::examples()) {
+    CAPTURE(e.name);
+    doc.reset(kinematics::designFromExample(e));
+    const auto parameters = kinematics::parametersOf(doc.mechanism());
+    REQUIRE(panel.fields().size() == parameters.size());
+    for (std::size_t i = 0; i < parameters.size(); ++i) {
+      CAPTURE(panel.fields()[i].label.toStdString());
+      CHECK(panel.fields()[i].parameter == parameters[i]);
+      CHECK_FALSE(panel.fields()[i].label.isEmpty());
+      QSlider* slider = panel.parameterEditor(i)->slider();
+      // The slider shows the value strictly inside its span, so it can move either way.
+      CHECK(slider->value() > slider->minimum());
+      CHECK(slider->value() < slider->maximum());
+    }
+  }
+}
+
+TEST_CASE("a four-bar's named length and any linkage's number: a slider drag is one undo step",
+          "[ui][panels][dimensions][undo]") {
+  ui::MechanismDocument doc;
+  ui::DimensionsPanel panel(&doc);
+  const auto drag = [&](std::size_t field) {
+    QSlider* slider = panel.parameterEditor(field)->slider();
+    const int start = slider->value();
+    slider->setSliderDown(true);
+    for (int step = 1; step <= 5; ++step) slider->setValue(start + 4 * step);
+    slider->setSliderDown(false);  // released: the edit is complete
+  };
+  SECTION("the four-bar's coupler, through the core's one path") {
+    const kinematics::Design before = doc.design();
+    const std::size_t coupler = *panel.fieldIndex(kinematics::ParameterSlot::CouplerLength);
+    drag(coupler);
+    REQUIRE(doc.undoStack()->count() == 1);
+    const double typed = panel.editor(coupler)->value();
+    CHECK(doc.fourBar()->lengths.coupler == Approx(typed).epsilon(1e-12));
+    CHECK(doc.fourBar()->lengths.coupler > 70.0);  // moved up the slider, and still a four-bar
+    CHECK(doc.mechanism() == kinematics::withFourBarLengths(before.mechanism, *kinematics::asFourBar(before.mechanism),
+                                                            doc.fourBar()->lengths));
+    doc.undoStack()->undo();
+    CHECK(doc.design() == before);
+    // A second drag of the same field is its own undo step.
+    drag(coupler);
+    drag(coupler);
+    CHECK(doc.undoStack()->count() == 2);
+  }
+  SECTION("the engine's rod, a slider-crank's number that had no slider before") {
+    doc.reset(*kinematics::designForExample("ls3-engine"));
+    const kinematics::Design before = doc.design();
+    const auto& fields = panel.fields();
+    const auto rod = std::find_if(fields.begin(), fields.end(), [](const ui::DimensionField& f) {
+      return f.parameter.slot == kinematics::ParameterSlot::Length && f.label.startsWith("to ");
+    });
+    REQUIRE(rod != fields.end());
+    const auto index = static_cast<std::size_t>(rod - fields.begin());
+    drag(index);
+    REQUIRE(doc.undoStack()->count() == 1);
+    CHECK(doc.design() != before);
+    CHECK(kinematics::parameterValue(doc.mechanism(), rod->parameter) ==
+          Approx(panel.editor(index)->value()).epsilon(1e-12));
+    doc.undoStack()->undo();
+    CHECK(doc.design() == before);
+  }
+}
+
+TEST_CASE("a four-bar's point on the coupler is added and removed from the one editor", "[ui][panels][dimensions]") {
+  ui::MechanismDocument doc;
+  doc.reset(*kinematics::fourBarDesign(kinematics::kThesisCrankRocker));
+  ui::DimensionsPanel panel(&doc);
+  REQUIRE_FALSE(kinematics::couplerPointOf(doc.mechanism(), *doc.fourBar()));
+  CHECK_FALSE(panel.fieldIndex(kinematics::ParameterSlot::Along));
+  panel.couplerPointBox()->setChecked(true);
+  const auto point = kinematics::couplerPointOf(doc.mechanism(), *doc.fourBar());
+  REQUIRE(point);
+  CHECK(point->spec.along == 35.0);  // the coupler's middle
+  REQUIRE(panel.fieldIndex(kinematics::ParameterSlot::Along));
+  CHECK(panel.fields()[*panel.fieldIndex(kinematics::ParameterSlot::Along)].label == "along B→C");
+  panel.couplerPointBox()->setChecked(false);
+  CHECK_FALSE(kinematics::couplerPointOf(doc.mechanism(), *doc.fourBar()));
+  CHECK(doc.undoStack()->count() == 2);
 }

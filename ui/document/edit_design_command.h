@@ -15,14 +15,14 @@ namespace linkwright::ui {
 class MechanismDocument;
 
 /// What a continuous edit changes, for merging its steps.
-enum class ContinuousEdit { DragPoint, Length, CouplerPoint, Speed, Acceleration, SynthesisTargets };
+enum class ContinuousEdit { DragPoint, Parameter, Speed, Acceleration, SynthesisTargets };
 
 /// Consecutive edits with equal keys (the moves of one drag, the steps of one slider) merge
 /// into one undo step. `serial` tells one drag or press of the same thing from the next, so
 /// two drags of a point stay two undo steps.
 struct MergeKey {
   ContinuousEdit edit = ContinuousEdit::DragPoint;
-  std::size_t item = 0;  ///< the point dragged, or the length (0 frame … 3 rocker) changed
+  std::size_t item = 0;  ///< the point dragged, or the dimensions field changed
   int serial = 0;
   bool operator==(const MergeKey&) const = default;
 };

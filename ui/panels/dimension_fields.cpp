@@ -2,6 +2,7 @@
 
 #include "ui/canvas/mechanism_drawing.h"
 
+#include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 
 #include <QCoreApplication>
@@ -34,8 +35,30 @@ QString guideLabel(const k::Mechanism& m, const k::Guide& g, int which, const QS
   return tr("%1 angle").arg(prefix);
 }
 
-QString labelOf(const k::Mechanism& m, const k::Parameter& p) {
+// A four-bar's named dimension: "Crank O2–B", by the linkage's own point names.
+QString fourBarLabel(const k::Mechanism& m, const k::FourBarStructure& s, k::ParameterSlot slot) {
   using S = k::ParameterSlot;
+  const auto between = [&](const char* text, k::PointId a, k::PointId b) {
+    return tr(text).arg(nameOf(m, a), nameOf(m, b));
+  };
+  switch (slot) {
+  case S::FrameLength: return between("Frame %1–%2", s.o2, s.o4);
+  case S::CrankLength: return between("Crank %1–%2", s.o2, s.b);
+  case S::CouplerLength: return between("Coupler %1–%2", s.b, s.c);
+  case S::RockerLength: return between("Rocker %1–%2", s.o4, s.c);
+  default: return between("frame angle %1→%2", s.o2, s.o4);
+  }
+}
+
+// Along and across the link a point is fixed on, named by the link's ends.
+QString offsetLabel(const k::Mechanism& m, const k::AttachedPoint& a, bool along) {
+  const k::Link& link = m.links[a.link.index];
+  return (along ? tr("along %1→%2") : tr("across, left of %1→%2")).arg(nameOf(m, link.first), nameOf(m, link.second));
+}
+
+QString labelOf(const k::Mechanism& m, const std::optional<k::FourBarStructure>& fourBar, const k::Parameter& p) {
+  using S = k::ParameterSlot;
+  if (fourBar && k::isFourBarDimension(p.slot)) return fourBarLabel(m, *fourBar, p.slot);
   const auto& d = m.points[p.point.index].definition;
   const auto to = [&](k::PointId other) { return tr("to %1").arg(nameOf(m, other)); };
   const bool free = std::holds_alternative<k::FreePoint>(d);
@@ -48,8 +71,10 @@ QString labelOf(const k::Mechanism& m, const k::Parameter& p) {
   case S::Sweep: return tr("path sweep");
   case S::PathX: return tr("path point %1 x").arg(p.vertex + 1);
   case S::PathY: return tr("path point %1 y").arg(p.vertex + 1);
-  case S::Along: return tr("along");
-  case S::Across: return tr("across");
+  case S::Along:
+  case S::Across:
+    if (const auto* a = std::get_if<k::AttachedPoint>(&d)) return offsetLabel(m, *a, p.slot == S::Along);
+    return {};
   case S::Length:
     if (const auto* c = std::get_if<k::CrankPoint>(&d)) return to(c->pivot);
     if (const auto* r = std::get_if<k::RrrPoint>(&d)) return to(r->first);
@@ -76,6 +101,7 @@ QString labelOf(const k::Mechanism& m, const k::Parameter& p) {
     const k::DistanceConstraint& dc = m.constraints[p.constraint];
     return to(dc.first == p.point ? dc.second : dc.first);
   }
+  default: return {};
   }
   return {};
 }
@@ -84,7 +110,8 @@ QString labelOf(const k::Mechanism& m, const k::Parameter& p) {
 
 std::vector<DimensionField> dimensionFields(const k::Mechanism& m) {
   std::vector<DimensionField> out;
-  for (const k::Parameter& p : k::parametersOf(m)) out.push_back({p, labelOf(m, p)});
+  const auto fourBar = k::asFourBar(m);
+  for (const k::Parameter& p : k::parametersOf(m)) out.push_back({p, labelOf(m, fourBar, p)});
   return out;
 }
 

@@ -1,29 +1,31 @@
 #pragma once
-// The side panel where a linkage's dimensions are typed. A linkage recognised as a four-bar
-// shows its named lengths with sliders and its coupler point (fourbar_lengths_editor.h); any
-// other lists each point with the numbers that define it (dimension_fields.h) in spin boxes,
-// and its assembly branch where it has one. Every change goes through the document
-// (validated, undoable); a refused change shows why and the editors snap back to the
-// document's values. The point editors are rebuilt only when the linkage's structure changes
-// (a dyad attached, another document), so typing keeps focus.
+// The side panel where a linkage's dimensions are typed or slid: one editor for every
+// linkage. It lists the core's parameters (kinematics/design/parameters.h) point by point,
+// a recognised four-bar's named lengths first, each as a spin box for exact values and a
+// slider for quick changes, with the assembly branch where a joint has one (a four-bar's is
+// in the Motion panel, in the four-bar's convention); a four-bar also offers its point on the
+// coupler. Every change goes through the document (validated, undoable; a slider's drag is one
+// undo step); a refused change shows why and the editors snap back to the document's values.
+// The editors are rebuilt only when the linkage's structure changes (a dyad attached, another
+// document), so typing keeps focus and a slider keeps its span while in use.
 
 #include "ui/panels/dimension_fields.h"
 #include "ui/panels/refusal_label.h"
 
 #include <QWidget>
 
+#include <optional>
 #include <vector>
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
-class QGridLayout;
 class QGroupBox;
-class QLabel;
+class QVBoxLayout;
 
 namespace linkwright::ui {
 
-class FourBarLengthsEditor;
-class LengthEditor;
+class ParameterEditor;
 class MechanismDocument;
 
 class DimensionsPanel : public QWidget {
@@ -31,37 +33,40 @@ class DimensionsPanel : public QWidget {
 public:
   explicit DimensionsPanel(MechanismDocument* document, QWidget* parent = nullptr);
 
-  /// The four-bar face, shown while the linkage is a four-bar.
-  FourBarLengthsEditor* fourBarEditor() const { return m_fourBar; }
-  /// The point-by-point face, shown for any other linkage.
-  QGroupBox* pointsBox() const { return m_box; }
-  /// Its editor of frame (0), crank (1), coupler (2), rocker (3).
-  LengthEditor* lengthEditor(int index) const;
-  /// The point-by-point fields (any other linkage), in order, and their editors (same order).
+  /// The fields, in order, and their editors (same order).
   const std::vector<DimensionField>& fields() const { return m_fields; }
-  QDoubleSpinBox* editor(std::size_t index) const { return m_editors[index]; }
+  ParameterEditor* parameterEditor(std::size_t index) const { return m_editors[index]; }
+  /// The spin box of field `index`.
+  QDoubleSpinBox* editor(std::size_t index) const;
+  /// The field of `slot` (a four-bar's CouplerLength, …) and its spin box, if the linkage has one.
+  std::optional<std::size_t> fieldIndex(kinematics::ParameterSlot slot) const;
+  QDoubleSpinBox* editor(kinematics::ParameterSlot slot) const;
   /// The branch box of `point`, if it has one.
   QComboBox* branchBox(kinematics::PointId point) const;
+  /// A four-bar's "point on the coupler" check box; hidden for any other linkage.
+  QCheckBox* couplerPointBox() const { return m_couplerPoint; }
   /// The message shown when the last edit was refused (empty if it was accepted).
   QString refusalMessage() const;
 
 private:
   void rebuild();
   void refresh();
-  void editField(std::size_t index, double value);
+  void resetSliderRanges();
+  void editField(std::size_t index, double value, bool final);
   void editBranch(kinematics::PointId point, int index);
+  void editCouplerPoint(bool wanted);
   void showOutcome(const std::optional<QString>& refusal);
 
   MechanismDocument* m_document;
-  FourBarLengthsEditor* m_fourBar;
-  bool m_wasFourBar = false;  // a four-bar again (undo after attaching a dyad): its sliders need ranges
   QGroupBox* m_box;
-  QGridLayout* m_grid;
+  QVBoxLayout* m_rowsLayout;
+  QCheckBox* m_couplerPoint;
   RefusalLabel* m_message;
   std::vector<DimensionField> m_fields;
-  std::vector<QDoubleSpinBox*> m_editors;
+  std::vector<ParameterEditor*> m_editors;
   std::vector<std::pair<kinematics::PointId, QComboBox*>> m_branches;
-  std::vector<QWidget*> m_rows;  // every widget in the grid, deleted on rebuild
+  std::vector<QWidget*> m_rows;  // every widget in the list, deleted on rebuild
+  int m_dragSerial = 0;          // separates consecutive slider drags into their own undo steps
   bool m_refreshing = false;
 };
 

@@ -7,7 +7,6 @@
 #include "ui/canvas/linkage_view.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/panels/dimensions_panel.h"
-#include "ui/panels/length_editor.h"
 
 #include "kinematics/design/examples.h"
 #include "tests/support/catch.h"
@@ -68,7 +67,7 @@ TEST_CASE("a crank that cannot turn: its reach is labelled inside the canvas, ce
   test::Journey journey;
   ui::DimensionsPanel* panel = journey.window().dimensionsPanel();
   // Coupler 30: the crank of the thesis four-bar only rocks (S + L = 85 > P + Q = 75).
-  journey.type(panel->lengthEditor(2)->findChild<QDoubleSpinBox*>(), "30");
+  journey.type(panel->editor(kinematics::ParameterSlot::CouplerLength), "30");
   REQUIRE_FALSE(journey.window().document()->analysis().inputRange.fullRotation);
   journey.check("Coupler 30");
   journey.menu({"View", "Fit to view"});

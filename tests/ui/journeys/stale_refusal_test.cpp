@@ -8,7 +8,6 @@
 #include "ui/document/mechanism_document.h"
 #include "ui/main_window.h"
 #include "ui/panels/dimensions_panel.h"
-#include "ui/panels/length_editor.h"
 #include "ui/panels/motion_panel.h"
 
 #include "kinematics/design/examples.h"
@@ -31,9 +30,9 @@ namespace {
 // be assembled anywhere and is refused.
 void provokeRefusal(test::Journey& journey) {
   ui::DimensionsPanel* panel = journey.window().dimensionsPanel();
-  journey.type(panel->lengthEditor(2)->findChild<QDoubleSpinBox*>(), "5");
+  journey.type(panel->editor(kinematics::ParameterSlot::CouplerLength), "5");
   journey.check("Coupler 5");
-  journey.type(panel->lengthEditor(3)->findChild<QDoubleSpinBox*>(), "5");
+  journey.type(panel->editor(kinematics::ParameterSlot::RockerLength), "5");
   REQUIRE(panel->refusalMessage().contains("Not applied"));
   journey.expectRefusal();
   journey.check("Rocker 5, refused");

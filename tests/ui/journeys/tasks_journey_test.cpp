@@ -7,7 +7,6 @@
 #include "ui/compare/compare_dialog.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/panels/dimensions_panel.h"
-#include "ui/panels/length_editor.h"
 #include "ui/plots/plot_panel.h"
 #include "ui/synthesis/candidate_table.h"
 #include "ui/synthesis/synthesis_panel.h"
@@ -43,7 +42,7 @@ TEST_CASE("save a changed design, open another, open it again", "[journey][files
   ui::MainWindow& window = journey.window();
   QTemporaryDir dir;
   const QString path = dir.filePath("lecture.linkwright");
-  journey.type(window.dimensionsPanel()->lengthEditor(1)->findChild<QDoubleSpinBox*>(), "20");
+  journey.type(window.dimensionsPanel()->editor(kinematics::ParameterSlot::CrankLength), "20");
   journey.check("Crank 20");
   CHECK(window.windowTitle().contains("*"));
   const kinematics::Design saved = window.document()->design();

@@ -1,4 +1,4 @@
-#include "ui/panels/length_editor.h"
+#include "ui/panels/parameter_editor.h"
 
 #include <QDoubleSpinBox>
 #include <QGridLayout>
@@ -15,7 +15,7 @@ namespace {
 constexpr int kSliderSteps = 1000;
 }
 
-LengthEditor::LengthEditor(const QString& label, bool allowNonPositive, QWidget* parent)
+ParameterEditor::ParameterEditor(const QString& label, QWidget* parent)
     : QWidget(parent), m_label(new QLabel(label, this)), m_spin(new QDoubleSpinBox(this)),
       m_slider(new QSlider(Qt::Horizontal, this)) {
   auto* layout = new QGridLayout(this);
@@ -24,8 +24,9 @@ LengthEditor::LengthEditor(const QString& label, bool allowNonPositive, QWidget*
   layout->addWidget(m_label, 0, 0);
   layout->addWidget(m_spin, 0, 1);
   layout->addWidget(m_slider, 1, 0, 1, 2);
+  layout->setColumnStretch(1, 1);
+  layout->setVerticalSpacing(0);
   m_spin->setDecimals(4);
-  m_spin->setRange(allowNonPositive ? -1e6 : 1e-4, 1e6);
   m_spin->setKeyboardTracking(false);  // typed numbers apply on Enter or focus out, not per digit
   m_spin->setAccelerated(true);
   m_slider->setRange(0, kSliderSteps);
@@ -46,20 +47,25 @@ LengthEditor::LengthEditor(const QString& label, bool allowNonPositive, QWidget*
   connect(m_slider, &QSlider::sliderReleased, this, [this] { emit edited(m_spin->value(), true); });
 }
 
-double LengthEditor::value() const { return m_spin->value(); }
+double ParameterEditor::value() const { return m_spin->value(); }
 
-void LengthEditor::setValue(double value) {
+void ParameterEditor::setValue(double value) {
   m_updating = true;
   setValueQuietly(m_spin, value);
   syncSlider();
   m_updating = false;
 }
 
-void LengthEditor::setLabel(const QString& label) { m_label->setText(label); }
+void ParameterEditor::setLabel(const QString& label) { m_label->setText(label); }
 
-void LengthEditor::setUnit(const QString& unit) { setSuffixQuietly(m_spin, " " + unit); }
+void ParameterEditor::setSuffix(const QString& suffix) { setSuffixQuietly(m_spin, suffix); }
 
-void LengthEditor::setSliderRange(double low, double high) {
+void ParameterEditor::setRange(double minimum, double maximum) {
+  const QSignalBlocker block(m_spin);
+  m_spin->setRange(minimum, maximum);
+}
+
+void ParameterEditor::setSliderRange(double low, double high) {
   m_low = low;
   m_high = std::max(high, low + 1e-9);
   const bool was = m_updating;
@@ -68,7 +74,7 @@ void LengthEditor::setSliderRange(double low, double high) {
   m_updating = was;
 }
 
-void LengthEditor::syncSlider() {
+void ParameterEditor::syncSlider() {
   const QSignalBlocker block(m_slider);
   const double t = (m_spin->value() - m_low) / (m_high - m_low);
   m_slider->setValue(static_cast<int>(std::lround(std::clamp(t, 0.0, 1.0) * kSliderSteps)));
