@@ -13,7 +13,8 @@
 
 #include <cmath>
 #include <ostream>
-#include <sstream>
+#include <string>
+#include <vector>
 
 namespace linkwright::cli {
 namespace {
@@ -21,6 +22,9 @@ namespace {
 using kinematics::Error;
 using kinematics::ErrorCode;
 using kinematics::io::formatShort;
+
+// Samples solved and written at a time: a few megabytes of columns for a six-bar with forces.
+constexpr std::size_t kWindowSamples = 4096;
 
 // An input value in the driver's display unit: "30°" for a crank, "12 mm" for a linear driver.
 std::string inputText(const kinematics::Mechanism& m, double q) {
@@ -43,32 +47,16 @@ std::string inputsName(const kinematics::Mechanism& m) {
   return name.ends_with("position") || name.ends_with("length") || name.ends_with("angle") ? name + "s" : name;
 }
 
-void reportUnassembled(const kinematics::SweepResult& result, const ResolvedMechanism& resolved, std::ostream& err) {
+void reportUnassembled(const kinematics::SweepSummary& summary, const ResolvedMechanism& resolved, std::ostream& err) {
   const kinematics::Mechanism& m = resolved.mechanism;
-  std::size_t failed = 0;
-  for (std::size_t j = 0; j < result.size(); ++j) failed += result.assembled(j) ? 0 : 1;
-  err << "linkwright-cli: the linkage cannot be assembled at " << failed << " of " << result.size() << " requested "
-      << inputsName(m) << " (" << rangesText(m, result.notAssembled) << "); those rows are left out.\n";
-  if (result.firstFailure) err << "  " << *result.firstFailure << ".\n";
+  const std::size_t failed = summary.samples - summary.assembledSamples;
+  err << "linkwright-cli: the linkage cannot be assembled at " << failed << " of " << summary.samples << " requested "
+      << inputsName(m) << " (" << rangesText(m, summary.notAssembled) << "); those rows are left out.\n";
+  if (summary.firstFailure) err << "  " << *summary.firstFailure << ".\n";
   if (!kinematics::asFourBar(resolved.mechanism)) return;
   const kinematics::InputRange range = kinematics::analyseDesign(resolved.mechanism, {}).inputRange;
   if (range.ranges.empty()) err << "  It cannot be assembled at any " << kinematics::inputName(m) << ".\n";
   else err << "  It can be assembled for " << inputsName(m) << " " << rangesText(m, range.ranges) << " (exact).\n";
-}
-
-// The forces the invocation asks for, or the reason there are none.
-kinematics::Result<std::optional<kinematics::ForceSweep>> forcesFor(const Invocation& inv,
-                                                                    const SweptMechanism& swept) {
-  if (!inv.forces) return std::optional<kinematics::ForceSweep>{};
-  const ResolvedMechanism& r = swept.resolved;
-  if (r.dynamics.empty())
-    return Error{ErrorCode::InvalidValue, "--forces",
-                 "--forces needs masses and loads, and " + r.source +
-                     " has none: give them in a document's \"dynamics\" (see docs/document_format.md), or try "
-                     "--example funsho-fourbar"};
-  auto forces = kinematics::sweepForces(r.mechanism, r.dynamics, swept.result);
-  if (!forces) return Error{forces.error().code, "--forces", "--forces: " + forces.error().message};
-  return std::optional<kinematics::ForceSweep>{std::move(*forces)};
 }
 
 // A sample in the driver's own words: "crank angle 30°", "C path position 12 mm", with its
@@ -95,19 +83,37 @@ std::string toggleText(const kinematics::Mechanism& m) {
   return "a dyad is stretched straight or folded, its rates are undefined";
 }
 
-// Samples whose kinematics exist but whose forces do not (a structure that locks there).
-void reportUndeterminedForces(const kinematics::Mechanism& m, const kinematics::SweepResult& result,
-                              const kinematics::ForceSweep& forces, std::ostream& err) {
-  for (std::size_t j = 0; j < result.size(); ++j)
-    if (result.ok(j) && !forces.ok(j))
-      err << "linkwright-cli: note: the joint forces are not determined at " << sampleText(m, result, j)
+// Samples whose kinematics exist but whose forces do not (a structure that locks there),
+// gathered window by window: the first few named, the rest counted, so that a table of 10⁷ rows
+// keeps no more than that.
+class UndeterminedForces {
+public:
+  void gather(const kinematics::Mechanism& m, const kinematics::SweepResult& part,
+              const kinematics::ForceSweep& forces) {
+    for (std::size_t j = 0; j < part.size(); ++j) {
+      if (!part.ok(j) || forces.ok(j)) continue;
+      if (m_named.size() < kNamed) m_named.push_back(sampleText(m, part, j));
+      else ++m_more;
+    }
+  }
+  void report(std::ostream& err) const {
+    for (const std::string& at : m_named)
+      err << "linkwright-cli: note: the joint forces are not determined at " << at
           << " (the Newton–Euler system is singular; force cells left empty)\n";
-}
+    if (m_more > 0) err << "linkwright-cli: note: … and at " << m_more << " more samples (force cells left empty)\n";
+  }
+
+private:
+  static constexpr std::size_t kNamed = 20;
+  std::vector<std::string> m_named;
+  std::size_t m_more = 0;
+};
 
 }  // namespace
 
-void noteLocks(const kinematics::Mechanism& m, const kinematics::SweepResult& sweep, std::ostream& err) {
-  for (const kinematics::AngleRange& step : sweep.lockedBetween)
+void noteLocks(const kinematics::Mechanism& m, const std::vector<kinematics::AngleRange>& lockedBetween,
+               std::ostream& err) {
+  for (const kinematics::AngleRange& step : lockedBetween)
     err << "linkwright-cli: note: the linkage locks between " << inputsName(m) << " " << inputText(m, step.from)
         << " and " << inputText(m, step.to) << " (a dyad passes its assembly limit between these samples); from "
         << inputText(m, step.to) << " on it is assembled afresh on the chosen branches, so points jump there\n";
@@ -118,33 +124,64 @@ ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err)
     err << "linkwright-cli: " << e.message << "\n";
     return ExitCode::BadInput;
   };
-  const auto swept = sweepInvocation(inv);
-  if (!swept) return fail(swept.error());
-  const kinematics::Mechanism* mechanism = &swept->resolved.mechanism;
-  const kinematics::SweepResult* result = &swept->result;
-  const auto forces = forcesFor(inv, *swept);
-  if (!forces) return fail(forces.error());
-  const kinematics::ForceSweep* forceSweep = forces->has_value() ? &**forces : nullptr;
+  const auto resolved = resolveMechanism(inv);
+  if (!resolved) return fail(resolved.error());
+  const auto spec = sweepSpecFor(inv, resolved->defaults);
+  if (!spec) return fail(spec.error());
+  const kinematics::Mechanism& m = resolved->mechanism;
+  if (inv.forces && resolved->dynamics.empty())
+    return fail(Error{ErrorCode::InvalidValue, "--forces",
+                      "--forces needs masses and loads, and " + resolved->source +
+                          " has none: give them in a document's \"dynamics\" (see docs/document_format.md), or try "
+                          "--example funsho-fourbar"});
 
-  std::ostringstream csv;
-  if (inv.tableFormat) writeSweepTable(csv, *mechanism, *result, forceSweep);
-  else if (forceSweep) kinematics::io::writeSweepCsv(csv, *mechanism, *result, *forceSweep);
-  else kinematics::io::writeSweepCsv(csv, *mechanism, *result);
+  // The sweep is solved and written a window at a time: memory does not grow with the samples.
+  std::optional<Error> refused;  // the core's, as opposed to the output's
+  kinematics::SweepSummary summary;
+  UndeterminedForces undetermined;
+  const auto writeTable = [&](std::ostream& to) -> std::optional<std::string> {
+    kinematics::io::SweepCsvWriter csv(to, m);
+    SweepTableWriter table(to, m);
+    auto swept =
+        kinematics::sweepInWindows(m, *spec, {}, kWindowSamples, [&](const kinematics::SweepResult& part, std::size_t) {
+          std::optional<kinematics::ForceSweep> forces;
+          if (inv.forces) {
+            auto solved = kinematics::sweepForces(m, resolved->dynamics, part);
+            if (!solved) {
+              refused = Error{solved.error().code, "--forces", "--forces: " + solved.error().message};
+              return false;
+            }
+            forces = std::move(solved).value();
+            undetermined.gather(m, part, *forces);
+          }
+          if (inv.tableFormat) table.write(part, forces ? &*forces : nullptr);
+          else csv.write(part, forces ? &*forces : nullptr);
+          return static_cast<bool>(to);  // a failed write stops the sweep; the writer says why
+        });
+    if (swept) summary = std::move(swept).value();
+    else if (!refused && swept.error().code != ErrorCode::Cancelled) refused = swept.error();
+    if (refused) return refused->message;
+    return std::nullopt;
+  };
   if (inv.outputFile) {
-    if (auto problem = kinematics::io::writeFileSafely(*inv.outputFile, csv.str())) {
+    const auto problem = kinematics::io::writeStreamSafely(*inv.outputFile, writeTable);
+    if (refused) return fail(*refused);
+    if (problem) {
       err << "linkwright-cli: " << problem->message << "\n";
       return ExitCode::IoError;
     }
   } else {
-    out << csv.str() << std::flush;
+    writeTable(out);
+    out << std::flush;
+    if (refused) return fail(*refused);
   }
-  for (const double q : result->singularAngles)
-    err << "linkwright-cli: note: toggle position at " << kinematics::inputName(*mechanism) << " "
-        << inputText(*mechanism, q) << ": " << toggleText(*mechanism) << " (cells left empty)\n";
-  noteLocks(*mechanism, *result, err);
-  if (forceSweep) reportUndeterminedForces(*mechanism, *result, *forceSweep, err);
-  if (!result->notAssembled.empty()) {
-    reportUnassembled(*result, swept->resolved, err);
+  for (const double q : summary.singularAngles)
+    err << "linkwright-cli: note: toggle position at " << kinematics::inputName(m) << " " << inputText(m, q) << ": "
+        << toggleText(m) << " (cells left empty)\n";
+  noteLocks(m, summary.lockedBetween, err);
+  undetermined.report(err);
+  if (!summary.notAssembled.empty()) {
+    reportUnassembled(summary, *resolved, err);
     return ExitCode::NotAssemblable;
   }
   return ExitCode::Success;

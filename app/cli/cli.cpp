@@ -4,6 +4,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/exit_codes.h"
 
+#include <new>
 #include <ostream>
 
 namespace linkwright::cli {
@@ -357,7 +358,7 @@ Output: the table, x, offset and tolerance used; per mapped column its worst dev
 
 constexpr const char* kExitCodes = R"(Exit codes:
   0  success
-  1  the output file could not be written
+  1  the output file could not be written, or memory ran out (the old file is kept)
   2  bad usage or input: unknown option, malformed or invalid value (the message names it);
      --forces for a linkage without masses, or with a length unit forces cannot convert
   3  the linkage cannot be assembled over the requested range (rows that assemble are
@@ -402,7 +403,9 @@ std::string helpText(const std::string& topic) {
   return text + "\n" + kExitCodes;
 }
 
-int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+namespace {
+
+int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const kinematics::Result<Invocation> parsed = parseArguments(args);
   if (!parsed) {
     err << "linkwright-cli: " << parsed.error().message << "\n";
@@ -439,6 +442,21 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   case Command::Synthesize: return toInt(runSynthesize(inv, out, err));
   }
   return toInt(ExitCode::BadInput);
+}
+
+}  // namespace
+
+int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  // Memory runs out on a machine smaller than the job (a table of 10⁷ rows read whole, a
+  // synthesis of many starts): a sentence and exit 1, never an abort. The one writer has then
+  // left any output file as it was.
+  try {
+    return runCommand(args, out, err);
+  } catch (const std::bad_alloc&) {
+    err << "linkwright-cli: out of memory: this machine cannot hold what the command needs (try fewer samples, "
+           "rows or starts); no output file was changed\n";
+    return toInt(ExitCode::IoError);
+  }
 }
 
 }  // namespace linkwright::cli

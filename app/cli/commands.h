@@ -93,6 +93,7 @@ kinematics::Result<SweptMechanism> sweepInvocation(const Invocation& invocation)
 
 /// One note on `err` per lock between two samples of `sweep` (SweepResult::lockedBetween):
 /// the linkage cannot turn through, and points jump where it is assembled afresh.
-void noteLocks(const kinematics::Mechanism& mechanism, const kinematics::SweepResult& sweep, std::ostream& err);
+void noteLocks(const kinematics::Mechanism& mechanism, const std::vector<kinematics::AngleRange>& lockedBetween,
+               std::ostream& err);
 
 }  // namespace linkwright::cli

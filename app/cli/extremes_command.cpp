@@ -97,7 +97,7 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
         [i](const k::Pose& p, double) { return p.acceleration[i].norm(); });
     if (accel) printRow(out, resolved->mechanism, m.points[i].name + "_accel_" + u + "_s2", *accel, timeBase);
   }
-  noteLocks(resolved->mechanism, *result, err);
+  noteLocks(resolved->mechanism, result->lockedBetween, err);
   if (!result->notAssembled.empty()) {
     err << "linkwright-cli: the linkage cannot be assembled over the whole range; extremes are over the part that "
            "can\n";

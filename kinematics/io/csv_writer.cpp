@@ -1,8 +1,6 @@
 #include "kinematics/io/csv_writer.h"
 
-#include "kinematics/io/force_columns.h"
 #include "kinematics/io/number_format.h"
-#include "kinematics/io/sweep_columns.h"
 
 namespace linkwright::kinematics::io {
 namespace {
@@ -36,37 +34,35 @@ std::vector<std::string> sweepCsvHeader(const Mechanism& m, const SolveRequest& 
   return names;
 }
 
-namespace {
-
-void writeCsv(std::ostream& out, const Mechanism& m, const SweepResult& r, const ForceSweep* forces) {
-  const std::vector<SweepColumn> columns = sweepColumns(m, r.request, !r.time.empty());
-  const std::vector<ForceColumn> forceCols = forces ? forceColumns(forces->bodies) : std::vector<ForceColumn>{};
-  for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << csvField(columns[c].name);
-  for (const ForceColumn& c : forceCols) out << ',' << csvField(c.name);
-  out << kLineEnd;
-  std::string row;
+void SweepCsvWriter::write(const SweepResult& r, const ForceSweep* forces) {
+  if (!m_headerWritten) {
+    m_columns = sweepColumns(m_mechanism, r.request, !r.time.empty());
+    m_forceColumns = forces ? forceColumns(forces->bodies) : std::vector<ForceColumn>{};
+    for (std::size_t c = 0; c < m_columns.size(); ++c) m_out << (c ? "," : "") << csvField(m_columns[c].name);
+    for (const ForceColumn& c : m_forceColumns) m_out << ',' << csvField(c.name);
+    m_out << kLineEnd;
+    m_headerWritten = true;
+  }
   for (std::size_t j = 0; j < r.size(); ++j) {
     if (!r.assembled(j)) continue;
-    row.clear();
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      if (c) row += ',';
+    m_row.clear();
+    for (std::size_t c = 0; c < m_columns.size(); ++c) {
+      if (c) m_row += ',';
       // At a toggle the rates do not exist: leave the cell empty.
-      if (r.ok(j) || !columns[c].isRate()) row += cellText(columns[c], r, j);
+      if (r.ok(j) || !m_columns[c].isRate()) m_row += cellText(m_columns[c], r, j);
     }
-    for (const ForceColumn& c : forceCols) {
-      row += ',';
-      if (forces->ok(j)) row += formatDouble(c.value(*forces, j));
+    for (const ForceColumn& c : m_forceColumns) {
+      m_row += ',';
+      if (forces->ok(j)) m_row += formatDouble(c.value(*forces, j));
     }
-    out << row << kLineEnd;
+    m_out << m_row << kLineEnd;
   }
 }
 
-}  // namespace
-
-void writeSweepCsv(std::ostream& out, const Mechanism& m, const SweepResult& r) { writeCsv(out, m, r, nullptr); }
+void writeSweepCsv(std::ostream& out, const Mechanism& m, const SweepResult& r) { SweepCsvWriter(out, m).write(r); }
 
 void writeSweepCsv(std::ostream& out, const Mechanism& m, const SweepResult& r, const ForceSweep& forces) {
-  writeCsv(out, m, r, &forces);
+  SweepCsvWriter(out, m).write(r, &forces);
 }
 
 }  // namespace linkwright::kinematics::io

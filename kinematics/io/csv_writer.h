@@ -6,6 +6,8 @@
 // With a force sweep, its columns (force_columns.h) follow, empty where forces are undefined.
 
 #include "kinematics/dynamics/force_sweep.h"
+#include "kinematics/io/force_columns.h"
+#include "kinematics/io/sweep_columns.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/solve/sweep.h"
 
@@ -17,6 +19,25 @@ namespace linkwright::kinematics::io {
 
 /// The header names, in column order, for this mechanism and request.
 std::vector<std::string> sweepCsvHeader(const Mechanism& mechanism, const SolveRequest& request);
+
+/// Writes a sweep's table as it is solved, window by window (sweepInWindows): the header with
+/// the first window, then each window's rows, byte for byte the table writeSweepCsv writes of
+/// the whole sweep.
+class SweepCsvWriter {
+public:
+  SweepCsvWriter(std::ostream& out, const Mechanism& mechanism) : m_out(out), m_mechanism(mechanism) {}
+  /// Writes the rows of `part` (a window of a sweep of the mechanism, or a whole one), with
+  /// the force columns of `forces` (sweepForces of that window) if given.
+  void write(const SweepResult& part, const ForceSweep* forces = nullptr);
+
+private:
+  std::ostream& m_out;
+  const Mechanism& m_mechanism;
+  bool m_headerWritten = false;
+  std::vector<SweepColumn> m_columns;
+  std::vector<ForceColumn> m_forceColumns;
+  std::string m_row;
+};
 
 /// Writes header and rows. `result` must come from sweep(mechanism, ...).
 void writeSweepCsv(std::ostream& out, const Mechanism& mechanism, const SweepResult& result);

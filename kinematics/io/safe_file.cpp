@@ -1,9 +1,11 @@
 #include "kinematics/io/safe_file.h"
 
+#include <array>
 #include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <streambuf>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -69,6 +71,62 @@ std::optional<std::string> writeWholeFile(const std::string& path, std::string_v
   return std::nullopt;
 }
 
+// A stream buffer over a file descriptor that keeps the first write error: std::ofstream
+// reports only that something failed, and its close is not checked at all.
+class CheckedFileBuffer : public std::streambuf {
+public:
+  explicit CheckedFileBuffer(int fd) : m_fd(fd) { setp(m_buffer.data(), m_buffer.data() + m_buffer.size()); }
+  // The reason writing failed, if it did.
+  std::optional<std::string> failure() const {
+    return m_error != 0 ? std::optional<std::string>(reason(m_error)) : std::nullopt;
+  }
+
+protected:
+  int_type overflow(int_type c) override {
+    if (!drain()) return traits_type::eof();
+    if (!traits_type::eq_int_type(c, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(c);
+      pbump(1);
+    }
+    return traits_type::not_eof(c);
+  }
+  int sync() override { return drain() ? 0 : -1; }
+
+private:
+  bool drain() {
+    const char* at = pbase();
+    while (m_error == 0 && at < pptr()) {
+      const ssize_t n = ::write(m_fd, at, static_cast<std::size_t>(pptr() - at));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) m_error = n < 0 ? errno : ENOSPC;
+      else at += n;
+    }
+    setp(m_buffer.data(), m_buffer.data() + m_buffer.size());
+    return m_error == 0;
+  }
+
+  int m_fd;
+  int m_error = 0;
+  std::array<char, 1 << 16> m_buffer{};
+};
+
+// The file at `path`, truncated, written by `write` through a checked buffer, then closed.
+std::optional<std::string> writeWholeStream(const std::string& path, const StreamWriter& write) {
+  const int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) return reason(errno);
+  CheckedFileBuffer buffer(fd);
+  std::ostream out(&buffer);
+  auto stopped = write(out);
+  out.flush();
+  const auto failed = buffer.failure();
+  const bool closed = close(fd) == 0;
+  const int closeError = errno;
+  if (stopped) return stopped;
+  if (failed) return failed;
+  if (!closed) return reason(closeError);
+  return std::nullopt;
+}
+
 }  // namespace
 
 Error outputError(const std::string& path, const std::string& why) {
@@ -77,6 +135,10 @@ Error outputError(const std::string& path, const std::string& why) {
 
 std::optional<Error> writeFileSafely(const std::string& path, std::string_view contents) {
   return writeFileSafely(path, [contents](const std::string& to) { return writeWholeFile(to, contents); });
+}
+
+std::optional<Error> writeStreamSafely(const std::string& path, const StreamWriter& write) {
+  return writeFileSafely(path, [&write](const std::string& to) { return writeWholeStream(to, write); });
 }
 
 std::optional<Error> writeFileSafely(const std::string& path, const FileWriter& write) {
@@ -102,7 +164,14 @@ std::optional<Error> writeFileSafely(const std::string& path, const FileWriter& 
     unlink(temp.c_str());
     return outputError(path, message);
   };
-  if (auto failed = write(temp)) return fail(*failed);
+  std::optional<std::string> failed;
+  try {
+    failed = write(temp);
+  } catch (...) {
+    unlink(temp.c_str());  // out of memory part-way, say: the old file stays, no temporary is left
+    throw;
+  }
+  if (failed) return fail(*failed);
   // On disk before it replaces the old file: a crash then leaves one or the other, whole.
   const int sync = open(temp.c_str(), O_RDONLY | O_CLOEXEC);
   if (sync < 0 || fsync(sync) != 0) {

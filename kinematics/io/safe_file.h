@@ -16,6 +16,7 @@
 
 #include <functional>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <string_view>
 
@@ -28,6 +29,15 @@ using FileWriter = std::function<std::optional<std::string>(const std::string& p
 
 /// Writes `path` through `write`, as above.
 std::optional<Error> writeFileSafely(const std::string& path, const FileWriter& write);
+
+/// What a streaming writer does with the stream it is given: writes its bytes, as many as it
+/// has, and says why it stopped early (a core error) or nothing.
+using StreamWriter = std::function<std::optional<std::string>(std::ostream& out)>;
+
+/// Writes `path` as above from `write`, through a buffered stream whose every write, flush and
+/// close is checked (a full disk fails with "No space left on device"): output that is
+/// produced piece by piece (a table of 10⁷ rows) is never held whole in memory.
+std::optional<Error> writeStreamSafely(const std::string& path, const StreamWriter& write);
 
 /// Writes `contents` to `path`, as above.
 std::optional<Error> writeFileSafely(const std::string& path, std::string_view contents);

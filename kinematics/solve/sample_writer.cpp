@@ -36,6 +36,7 @@ SampleWriter::SampleWriter(const Mechanism& m, SweepResult& out) {
     if (out.linkAngle[k].empty()) continue;
     m_links.push_back({k, out.linkAngle[k].data(), columnData(out.linkOmega, k), columnData(out.linkAlpha, k)});
   }
+  m_lastAngle.assign(m_links.size(), 0.0);
 }
 
 void SampleWriter::write(std::size_t j, std::span<const Pose> poses) {
@@ -46,25 +47,26 @@ void SampleWriter::write(std::size_t j, std::span<const Pose> poses) {
     copyColumn(s.acceleration, j, poses, &Pose::acceleration, s.point);
     copyColumn(s.transmission, j, poses, &Pose::transmissionAngle, s.point);
   }
-  for (const LinkSlot& s : m_links) {
+  for (std::size_t l = 0; l < m_links.size(); ++l) {
+    const LinkSlot& s = m_links[l];
     double* const angle = s.angle;
     const std::size_t k = s.link;
-    double last = m_haveAngle ? angle[m_lastWritten] + wrapAngle(poses[0].linkAngle[k] - angle[m_lastWritten])
-                              : poses[0].linkAngle[k];
+    const double previous = m_lastAngle[l];
+    double last = m_haveAngle ? previous + wrapAngle(poses[0].linkAngle[k] - previous) : poses[0].linkAngle[k];
     angle[j] = last;
     for (std::size_t b = 1; b < poses.size(); ++b) {
       last += wrapAngle(poses[b].linkAngle[k] - last);
       angle[j + b] = last;
     }
+    m_lastAngle[l] = last;
     copyColumn(s.omega, j, poses, &Pose::linkOmega, k);
     copyColumn(s.alpha, j, poses, &Pose::linkAlpha, k);
   }
-  m_lastWritten = j + poses.size() - 1;
   m_haveAngle = true;
 }
 
 // Every sample gets the pivot's position, then the few that did not assemble get zero.
-void SampleWriter::finish(const Mechanism& m, SweepResult& out) const {
+void SampleWriter::finish(const Mechanism& m, SweepResult& out) {
   const std::size_t n = out.size();
   for (const PointSlot& s : m_ground) {
     std::fill_n(s.position, n, std::get<GroundPoint>(m.points[s.point].definition).position);
@@ -74,6 +76,7 @@ void SampleWriter::finish(const Mechanism& m, SweepResult& out) const {
     if (s.velocity != nullptr) std::fill_n(s.velocity, n, Eigen::Vector2d::Zero());
     if (s.acceleration != nullptr) std::fill_n(s.acceleration, n, Eigen::Vector2d::Zero());
   }
+  m_wroteNothing = false;  // the next window, if any, starts afresh
 }
 
 void SampleWriter::writeNothing(std::size_t j) {

@@ -8,7 +8,9 @@
 // assembles, zero velocity and acceleration), so they are filled once, by finish().
 //
 // Link angles are unwrapped on the way in: each stored angle is the previous stored angle
-// plus the wrapped difference, so a column is continuous through ±180°.
+// plus the wrapped difference, so a column is continuous through ±180°. The previous angle is
+// kept by the writer, not read back from the column, so a sweep in windows (sweepInWindows)
+// that reuses its columns for the next window goes on unwrapping from where it was.
 
 #include "kinematics/model/mechanism.h"
 #include "kinematics/solve/pose.h"
@@ -38,7 +40,7 @@ public:
 
   /// Fills the ground pivots' columns, once every sample's report is in `out`: zero at the
   /// samples given to writeNothing, the pivot's place at the others.
-  void finish(const Mechanism& mechanism, SweepResult& out) const;
+  void finish(const Mechanism& mechanism, SweepResult& out);
 
 private:
   struct PointSlot {
@@ -58,8 +60,8 @@ private:
   std::vector<PointSlot> m_points;  // moving points
   std::vector<PointSlot> m_ground;  // ground pivots
   std::vector<LinkSlot> m_links;
-  bool m_haveAngle = false;  // a sample has been written: later angles continue from it
-  std::size_t m_lastWritten = 0;
+  std::vector<double> m_lastAngle;  // per link slot, the last angle written: later ones continue from it
+  bool m_haveAngle = false;
   bool m_wroteNothing = false;  // some sample did not assemble: finish() zeroes its pivots
 };
 

@@ -103,13 +103,22 @@ double inputStepLimit(const Mechanism& m) {
   return 0.5;
 }
 
-// Solves one sweep: tracks branches from sample to sample and writes the columns.
+void allocate(const Mechanism& m, const SweepSpec& spec, std::size_t first, std::size_t n, const SolveRequest& request,
+              const SolveScope& scope, SweepResult& out);
+void summarize(const Mechanism& m, const SweepSpec& spec, std::size_t first, bool afterFailure, SweepResult& out,
+               SweepSummary& summary);
+
+// Solves one sweep: tracks branches from sample to sample and writes the columns, a window of
+// them at a time (the whole sweep is one window unless sweepInWindows asks for smaller ones).
+// `out` is allocated for the first window; each full window is finished, summarized and handed
+// to the sink, and the same columns then hold the next.
 class Tracker {
 public:
   Tracker(const Mechanism& m, const SweepSpec& spec, const SolveRequest& request, const SolveScope& scope,
-          SweepResult& out)
-      : m_mech(m), m_spec(spec), m_request(request), m_scope(scope), m_out(out), m_writer(m, out),
-        m_dyads(dyadsIn(m, scope)), m_maxStep(inputStepLimit(m)), m_scratch(kMaxRefineDepth + 1) {
+          SweepResult& out, std::size_t window, const SweepWindowSink* sink, SweepSummary& summary)
+      : m_mech(m), m_spec(spec), m_request(request), m_scope(scope), m_out(out), m_writer(m, out), m_window(window),
+        m_sink(sink), m_summary(summary), m_dyads(dyadsIn(m, scope)), m_maxStep(inputStepLimit(m)),
+        m_scratch(kMaxRefineDepth + 1) {
     for (Pose& p : m_poses) preparePose(m, p);
     m_predicted.assign(m.points.size(), Eigen::Vector2d::Zero());
     for (std::size_t i = 0; i < m.points.size(); ++i)
@@ -118,34 +127,56 @@ public:
 
   // Samples run in blocks (solveBlock) while the branches are plainly continuous; the first
   // sample, any sample near a toggle or a gap, and linkages with free points (whose Newton
-  // starts from the samples before) run one at a time. Returns false, at the first block or
-  // sample after `cancel` became true, with the columns half written.
+  // starts from the samples before) run one at a time. A block never crosses the end of a
+  // window. Returns false, at the first block or sample after `cancel` became true (with the
+  // columns half written) or when the sink asked to stop.
   bool run(const std::atomic<bool>* cancel) {
     for (std::size_t j = 0; j < m_spec.samples;) {
       if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) return false;
+      if (j == windowEnd() && !nextWindow()) return false;
       if (m_haveLast && m_freePoints.empty()) j = solveBlock(j);
+      if (j == windowEnd() && j < m_spec.samples && !nextWindow()) return false;
       if (j < m_spec.samples) solveOne(j++);
     }
-    m_writer.finish(m_mech, m_out);
-    return true;
+    return finishWindow();
   }
 
 private:
+  std::size_t windowEnd() const { return m_first + m_out.size(); }
+
+  // The window is complete: its ground pivots and summary are filled in and it goes to the
+  // sink. Returns what the sink says (true without one).
+  bool finishWindow() {
+    m_writer.finish(m_mech, m_out);
+    summarize(m_mech, m_spec, m_first, m_afterFailure, m_out, m_summary);
+    m_afterFailure = m_out.size() > 0 && !m_out.assembled(m_out.size() - 1);
+    return m_sink == nullptr || (*m_sink)(m_out, m_first);
+  }
+
+  // Hands the full window on and makes the same columns the next window's.
+  bool nextWindow() {
+    if (!finishWindow()) return false;
+    m_first += m_out.size();
+    allocate(m_mech, m_spec, m_first, std::min(m_window, m_spec.samples - m_first), m_out.request, m_scope, m_out);
+    return true;
+  }
+
   void solveOne(std::size_t j) {
     const DriverState driver = sweepDriver(m_spec, j);
     const double angle = driver.position;
-    m_out.inputAngle[j] = angle;
+    const std::size_t at = j - m_first;
+    m_out.inputAngle[at] = angle;
     m_continued = true;
     const PoseReport report = solveSample(driver);
-    m_out.report[j] = report;
+    m_out.report[at] = report;
     if (report.status == PoseStatus::NotAssemblable) {
-      m_writer.writeNothing(j);
+      m_writer.writeNothing(at);
       m_haveLast = m_haveBefore = false;
       m_run = 0;
       return;
     }
     if (report.status == PoseStatus::Singular) clearRates(*m_current);
-    m_writer.write(j, *m_current);
+    m_writer.write(at, *m_current);
     advance(angle);
   }
 
@@ -154,7 +185,7 @@ private:
   // them up to the first one that failed or whose branch continuity is not plain: that one,
   // whose index is returned, is then solved alone, with refinement. Same numbers as solveOne.
   std::size_t solveBlock(std::size_t j) {
-    const std::size_t count = std::min(kMaxBlock, m_spec.samples - j);
+    const std::size_t count = std::min(kMaxBlock, windowEnd() - j);
     if (m_block[0].position.size() != m_mech.points.size()) {
       for (std::size_t b = 0; b < kMaxBlock; ++b) {
         preparePose(m_mech, m_block[b]);
@@ -176,12 +207,13 @@ private:
           branchAmbiguous(m_mech, m_dyads, m_maxStep, previousAngle, previous, angle, m_block[kept]))
         break;
     }
+    const std::size_t at = j - m_first;
     for (std::size_t b = 0; b < kept; ++b) {
-      m_out.inputAngle[j + b] = drivers[b].position;
-      m_out.report[j + b] = reports[b];
+      m_out.inputAngle[at + b] = drivers[b].position;
+      m_out.report[at + b] = reports[b];
       if (reports[b].status == PoseStatus::Singular) clearRates(m_block[b]);
     }
-    m_writer.write(j, {m_block.data(), kept});
+    m_writer.write(at, {m_block.data(), kept});
     if (kept > 0) keepBlockEnd(kept, drivers);
     return j + kept;
   }
@@ -308,6 +340,11 @@ private:
   const SolveScope& m_scope;
   SweepResult& m_out;
   SampleWriter m_writer;
+  std::size_t m_window;           // samples per window
+  const SweepWindowSink* m_sink;  // null: one window, the whole sweep, kept in m_out
+  SweepSummary& m_summary;
+  std::size_t m_first = 0;      // the window's first sample in the sweep
+  bool m_afterFailure = false;  // the sample before the window did not assemble
   std::vector<TrackedDyad> m_dyads;
   double m_maxStep;
   Pose m_poses[3];
@@ -346,8 +383,11 @@ void sizeColumns(std::vector<std::vector<T>>& columns, const std::vector<unsigne
   }
 }
 
-void allocate(const Mechanism& m, std::size_t n, const SolveRequest& request, const SolveScope& scope,
-              SweepResult& out) {
+// Sizes `out` for the window of `n` samples from `first`: its columns (a later window is never
+// longer than the first, so its columns shrink in place and the writer's pointers stay valid),
+// its instants on a time base, and no runs yet.
+void allocate(const Mechanism& m, const SweepSpec& spec, std::size_t first, std::size_t n, const SolveRequest& request,
+              const SolveScope& scope, SweepResult& out) {
   out.request = request;
   out.inputAngle.resize(n);
   out.report.resize(n);
@@ -362,29 +402,41 @@ void allocate(const Mechanism& m, std::size_t n, const SolveRequest& request, co
     dyads[i] = dyads[i] != 0 && hasAssemblyBranch(m.points[i].definition) ? 1 : 0;
   if (!request.transmissionAngles) std::fill(dyads.begin(), dyads.end(), 0);
   sizeColumns(out.transmissionAngle, dyads, true, n);
+  out.time.resize(spec.time ? n : 0);
+  for (std::size_t j = 0; j < out.time.size(); ++j) out.time[j] = sweepTime(spec, first + j);
   out.notAssembled.clear();
   out.singularAngles.clear();
   out.lockedBetween.clear();
   out.firstFailure.reset();
 }
 
-// Collects the runs of failed samples and the singular samples after the loop.
-void summarize(const Mechanism& m, const SweepSpec& spec, SweepResult& out) {
+// Collects the window's runs of failed samples and its singular samples once it is solved,
+// into the window and the whole sweep's summary (`afterFailure`: the sample before the window
+// failed, so a run there goes on).
+void summarize(const Mechanism& m, const SweepSpec& spec, std::size_t first, bool afterFailure, SweepResult& out,
+               SweepSummary& summary) {
   Pose scratch;
+  summary.samples += out.size();
+  summary.lockedBetween.insert(summary.lockedBetween.end(), out.lockedBetween.begin(), out.lockedBetween.end());
   for (std::size_t j = 0; j < out.size(); ++j) {
     const PoseReport& r = out.report[j];
     if (r.status == PoseStatus::Singular) out.singularAngles.push_back(out.inputAngle[j]);
+    if (r.status != PoseStatus::NotAssemblable) ++summary.assembledSamples;
     if (r.status == PoseStatus::Ok) continue;
-    if (!out.firstFailure && r.status == PoseStatus::NotAssemblable) {
+    if (!summary.firstFailure && r.status == PoseStatus::NotAssemblable) {
       preparePose(m, scratch);
-      solvePoseInto(m, sweepDriver(spec, j), kPositionsOnly, scratch);
-      out.firstFailure = describeFailure(m, r, scratch, out.inputAngle[j]);
+      solvePoseInto(m, sweepDriver(spec, first + j), kPositionsOnly, scratch);
+      summary.firstFailure = describeFailure(m, r, scratch, out.inputAngle[j]);
+      out.firstFailure = summary.firstFailure;
     }
     if (r.status != PoseStatus::NotAssemblable) continue;
     const bool continues = j > 0 && out.report[j - 1].status == PoseStatus::NotAssemblable;
     if (continues) out.notAssembled.back().to = out.inputAngle[j];
     else out.notAssembled.push_back({out.inputAngle[j], out.inputAngle[j]});
+    if (continues || (j == 0 && afterFailure)) summary.notAssembled.back().to = out.inputAngle[j];
+    else summary.notAssembled.push_back({out.inputAngle[j], out.inputAngle[j]});
   }
+  summary.singularAngles.insert(summary.singularAngles.end(), out.singularAngles.begin(), out.singularAngles.end());
 }
 
 }  // namespace
@@ -459,22 +511,45 @@ double sweepAngle(const SweepSpec& spec, std::size_t index) {
   return index + 1 == spec.samples ? spec.toAngle : spec.fromAngle + t * (spec.toAngle - spec.fromAngle);
 }
 
-std::optional<Error> sweepInto(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request,
-                               SweepResult& out, const std::atomic<bool>* cancel) {
-  if (auto e = checkMechanism(mechanism)) return e;
-  if (auto e = checkSweepSpec(spec, inputKind(mechanism))) return e;
-  if (auto e = checkNewtonSettings(request.newton)) return e;
-  if (auto e = checkSelection(mechanism, request.only)) return e;
+namespace {
+
+// The checks every sweep makes before it solves anything, and its request as solved.
+Result<SolveRequest> checkedRequest(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request) {
+  if (auto e = checkMechanism(mechanism)) return *e;
+  if (auto e = checkSweepSpec(spec, inputKind(mechanism))) return *e;
+  if (auto e = checkNewtonSettings(request.newton)) return *e;
+  if (auto e = checkSelection(mechanism, request.only)) return *e;
   SolveRequest normalized = request;
   normalized.velocities = request.velocities || request.accelerations;
-  const SolveScope scope = scopeOf(mechanism, normalized.only);
-  allocate(mechanism, spec.samples, normalized, scope, out);
-  out.time.resize(spec.time ? spec.samples : 0);
-  for (std::size_t j = 0; j < out.time.size(); ++j) out.time[j] = sweepTime(spec, j);
-  if (!Tracker(mechanism, spec, out.request, scope, out).run(cancel))
+  return normalized;
+}
+
+}  // namespace
+
+std::optional<Error> sweepInto(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request,
+                               SweepResult& out, const std::atomic<bool>* cancel) {
+  const auto normalized = checkedRequest(mechanism, spec, request);
+  if (!normalized) return normalized.error();
+  const SolveScope scope = scopeOf(mechanism, normalized->only);
+  allocate(mechanism, spec, 0, spec.samples, *normalized, scope, out);
+  SweepSummary summary;
+  if (!Tracker(mechanism, spec, out.request, scope, out, spec.samples, nullptr, summary).run(cancel))
     return Error{ErrorCode::Cancelled, "sweep", "the sweep was cancelled"};
-  summarize(mechanism, spec, out);
   return std::nullopt;
+}
+
+Result<SweepSummary> sweepInWindows(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request,
+                                    std::size_t window, const SweepWindowSink& sink) {
+  const auto normalized = checkedRequest(mechanism, spec, request);
+  if (!normalized) return normalized.error();
+  const SolveScope scope = scopeOf(mechanism, normalized->only);
+  window = std::max<std::size_t>(window, 1);
+  SweepResult part;
+  allocate(mechanism, spec, 0, std::min(window, spec.samples), *normalized, scope, part);
+  SweepSummary summary;
+  if (!Tracker(mechanism, spec, part.request, scope, part, window, &sink, summary).run(nullptr))
+    return Error{ErrorCode::Cancelled, "sweep", "the sweep was stopped by its reader"};
+  return summary;
 }
 
 void copySampleToPose(const SweepResult& s, std::size_t j, Pose& pose) {

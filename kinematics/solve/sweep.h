@@ -23,6 +23,7 @@
 #include "kinematics/solve/pose.h"
 
 #include <atomic>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -120,6 +121,31 @@ DriverState sweepDriver(const SweepSpec& spec, std::size_t index);
 /// every point, angle, ω and α of every link. The sweep must hold all of them (the default
 /// request, no selection); the pose's other entries are left as they were.
 void copySampleToPose(const SweepResult& sweep, std::size_t sample, Pose& pose);
+
+/// What a whole sweep found besides its columns, as SweepResult holds it: a sweep in windows
+/// (sweepInWindows) gathers it over every window.
+struct SweepSummary {
+  std::size_t samples = 0;
+  std::size_t assembledSamples = 0;
+  std::vector<AngleRange> notAssembled;
+  std::vector<double> singularAngles;
+  std::vector<AngleRange> lockedBetween;
+  std::optional<std::string> firstFailure;
+  bool operator==(const SweepSummary&) const = default;
+};
+
+/// A window of a sweep: samples [first, first + part.size()) of it. `part`'s columns, reports
+/// and input angles are those samples' (indices from 0); its notAssembled, singularAngles and
+/// lockedBetween are the ones within the window, and its firstFailure the sweep's first if it
+/// lies there. Returns false to stop the sweep.
+using SweepWindowSink = std::function<bool(const SweepResult& part, std::size_t first)>;
+
+/// The sweep delivered in windows of at most `window` samples, the same numbers as sweep(), in
+/// memory that does not grow with the sample count: what a table of 10⁷ rows is written
+/// from. Fails as sweep() does, before any window, or with ErrorCode::Cancelled when `sink`
+/// returns false.
+Result<SweepSummary> sweepInWindows(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request,
+                                    std::size_t window, const SweepWindowSink& sink);
 
 /// Runs the sweep. Fails only for an invalid mechanism, spec or selection; samples that cannot
 /// be assembled are reported in the result (report, notAssembled, firstFailure).

@@ -12,6 +12,7 @@
 #include <atomic>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <random>
 #include <sstream>
 #include <thread>
@@ -89,6 +90,48 @@ TEST_CASE("on a full disk the old file stays as it was and the error says why", 
   CHECK(failing->message == "cannot write " + file.string() + ": No space left on device");
   CHECK(contentsOf(file) == "the old report\n");
   CHECK(namesIn(dir.path) == std::vector<std::string>{"report.pdf"});
+}
+
+TEST_CASE("a streamed file is written whole, and on a full disk, a refusal or out of memory the old one stays",
+          "[io][file][stream]") {
+  ScratchDir dir;
+  const fs::path file = dir.path / "table.csv";
+  const auto rows = [](int count) {
+    return [count](std::ostream& out) -> std::optional<std::string> {
+      for (int i = 0; i < count; ++i) out << i << ",row of a table written as it is solved\n";
+      return std::nullopt;
+    };
+  };
+  REQUIRE_FALSE(io::writeStreamSafely(file.string(), rows(3)));
+  CHECK(contentsOf(file) ==
+        "0,row of a table written as it is solved\n1,row of a table written as it is solved\n"
+        "2,row of a table written as it is solved\n");
+  // 200 000 rows past a 100 kB limit: the buffer's write fails part-way and says why.
+  std::optional<Error> full;
+  {
+    const linkwright::test::FileSizeLimit limit(100000);
+    full = io::writeStreamSafely(file.string(), rows(200000));
+  }
+  REQUIRE(full);
+  CHECK_THAT(full->message, Catch::StartsWith("cannot write " + file.string() + ": ") && Catch::Contains("large"));
+  CHECK(contentsOf(file).starts_with("0,row"));
+  CHECK(contentsOf(file).size() < 200);
+  // The producer's own refusal part-way.
+  const auto refused = io::writeStreamSafely(file.string(), [](std::ostream& out) -> std::optional<std::string> {
+    out << "half";
+    return std::string("--forces: the linkage has no masses");
+  });
+  REQUIRE(refused);
+  CHECK(refused->message == "cannot write " + file.string() + ": --forces: the linkage has no masses");
+  // Memory that runs out part-way: the exception goes on, and no temporary file is left.
+  CHECK_THROWS_AS(io::writeStreamSafely(file.string(),
+                                        [](std::ostream& out) -> std::optional<std::string> {
+                                          out << "half";
+                                          throw std::bad_alloc();
+                                        }),
+                  std::bad_alloc);
+  CHECK(contentsOf(file).size() < 200);
+  CHECK(namesIn(dir.path) == std::vector<std::string>{"table.csv"});
 }
 
 TEST_CASE("a symlink's target is written and the link kept", "[io][file]") {
