@@ -23,9 +23,6 @@ using kinematics::Error;
 using kinematics::ErrorCode;
 using kinematics::io::formatShort;
 
-// Samples solved and written at a time: a few megabytes of columns for a six-bar with forces.
-constexpr std::size_t kWindowSamples = 4096;
-
 // An input value in the driver's display unit: "30°" for a crank, "12 mm" for a linear driver.
 std::string inputText(const kinematics::Mechanism& m, double q) {
   const std::string unit = kinematics::inputUnit(m);
@@ -142,8 +139,8 @@ ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err)
   const auto writeTable = [&](std::ostream& to) -> std::optional<std::string> {
     kinematics::io::SweepCsvWriter csv(to, m);
     SweepTableWriter table(to, m);
-    auto swept =
-        kinematics::sweepInWindows(m, *spec, {}, kWindowSamples, [&](const kinematics::SweepResult& part, std::size_t) {
+    auto swept = kinematics::sweepInWindows(
+        m, *spec, {}, kSweepWindowSamples, [&](const kinematics::SweepResult& part, std::size_t) {
           std::optional<kinematics::ForceSweep> forces;
           if (inv.forces) {
             auto solved = kinematics::sweepForces(m, resolved->dynamics, part);

@@ -83,13 +83,9 @@ std::optional<kinematics::Error> checkAtOption(const Invocation& invocation, con
 /// seconds or at --samples instants (default 361).
 kinematics::Result<kinematics::SweepSpec> timeSweepSpecFor(const Invocation& invocation, const GridDefaults& defaults);
 
-/// The linkage an invocation describes, swept over the grid it asks for (analyze, extremes).
-struct SweptMechanism {
-  ResolvedMechanism resolved;
-  kinematics::SweepSpec spec;
-  kinematics::SweepResult result;
-};
-kinematics::Result<SweptMechanism> sweepInvocation(const Invocation& invocation);
+/// Samples a command solves at a time when it sweeps in windows (sweepInWindows: analyze,
+/// extremes): a few megabytes of columns for a six-bar with forces, whatever the sample count.
+inline constexpr std::size_t kSweepWindowSamples = 4096;
 
 /// One note on `err` per lock between two samples of `sweep` (SweepResult::lockedBetween):
 /// the linkage cannot turn through, and points jump where it is assembled afresh.

@@ -7,7 +7,6 @@
 #include "kinematics/model/driver.h"
 #include "kinematics/model/units.h"
 
-#include <functional>
 #include <iomanip>
 #include <ostream>
 
@@ -15,20 +14,6 @@ namespace linkwright::cli {
 namespace {
 
 namespace k = kinematics;
-
-// Refines the extremes of a quantity known at each sample (where `valid`) and on a pose.
-std::optional<k::Extrema> refineOver(const k::Mechanism& m, const k::SweepSpec& spec, const k::SweepResult& r,
-                                     const std::function<bool(std::size_t)>& valid,
-                                     const std::function<double(std::size_t)>& sampled,
-                                     const k::PoseQuantity& quantity) {
-  std::vector<double> values(r.size(), 0.0);
-  std::vector<bool> mask(r.size(), false);
-  for (std::size_t j = 0; j < r.size(); ++j) {
-    mask[j] = valid(j);
-    if (mask[j]) values[j] = sampled(j);
-  }
-  return k::refineExtrema(m, spec, values, mask, quantity);
-}
 
 // Where an extremum is: the input (a crank's angle in degrees) on an input grid, the instant
 // on a time base.
@@ -49,16 +34,42 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
     err << "linkwright-cli: " << e.message << "\n";
     return ExitCode::BadInput;
   };
-  const auto swept = sweepInvocation(inv);
-  if (!swept) return fail(swept.error());
-  const auto* resolved = &swept->resolved;
-  const auto* spec = &swept->spec;
-  const auto* result = &swept->result;
+  const auto resolved = resolveMechanism(inv);
+  if (!resolved) return fail(resolved.error());
+  const auto spec = sweepSpecFor(inv, resolved->defaults);
+  if (!spec) return fail(spec.error());
+  const k::Mechanism& m = resolved->mechanism;
+
+  // The sweep is scanned a window at a time: each column's and each point's best samples are
+  // kept, never the columns, and refined between their neighbours afterwards.
+  std::vector<k::io::ColumnExtremaScan> columns;
+  std::vector<std::size_t> moving;  // the moving points: their speeds and accelerations
+  for (std::size_t i = 0; i < m.points.size(); ++i)
+    if (!std::holds_alternative<k::GroundPoint>(m.points[i].definition)) moving.push_back(i);
+  std::vector<k::SampledExtrema> speeds(moving.size()), accels(moving.size());
+  const auto summary =
+      k::sweepInWindows(m, *spec, {}, kSweepWindowSamples, [&](const k::SweepResult& part, std::size_t first) {
+        if (first == 0)
+          for (const k::io::SweepColumn& column : k::io::sweepColumns(m, part.request))
+            if (column.quantity != k::io::ColumnQuantity::InputAngle &&
+                column.quantity != k::io::ColumnQuantity::InputLength)
+              columns.emplace_back(column);
+        for (k::io::ColumnExtremaScan& scan : columns) scan.add(part, first);
+        for (std::size_t p = 0; p < moving.size(); ++p) {
+          const std::size_t i = moving[p];
+          for (std::size_t j = 0; j < part.size(); ++j) {
+            const bool ok = part.ok(j);
+            speeds[p].add(first + j, ok, ok ? part.velocity[i][j].norm() : 0.0);
+            accels[p].add(first + j, ok, ok ? part.acceleration[i][j].norm() : 0.0);
+          }
+        }
+        return true;
+      });
+  if (!summary) return fail(summary.error());
 
   const bool timeBase = spec->time.has_value();
-  const k::Mechanism& linkage = resolved->mechanism;
-  const bool crank = k::inputKind(linkage) == k::InputKind::Angle;
-  const std::string rateUnit = crank ? "rad/s" : linkage.lengthUnit + "/s";
+  const bool crank = k::inputKind(m) == k::InputKind::Angle;
+  const std::string rateUnit = crank ? "rad/s" : m.lengthUnit + "/s";
   if (timeBase)
     out << "extremes over times " << k::io::formatShort(spec->time->fromTime) << " s to "
         << k::io::formatShort(spec->time->toTime) << " s, refined between " << spec->samples << " samples; the "
@@ -69,36 +80,28 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
         << " samples; crank " << k::io::formatShort(spec->omega) << " rad/s, " << k::io::formatShort(spec->alpha)
         << " rad/s²\n";
   else
-    out << "extremes over " << k::inputName(linkage) << " " << k::io::formatShort(spec->fromAngle) << " to "
-        << k::io::formatShort(spec->toAngle) << " " << linkage.lengthUnit << ", refined between " << spec->samples
+    out << "extremes over " << k::inputName(m) << " " << k::io::formatShort(spec->fromAngle) << " to "
+        << k::io::formatShort(spec->toAngle) << " " << m.lengthUnit << ", refined between " << spec->samples
         << " samples; driver " << k::io::formatShort(spec->omega) << " " << rateUnit << ", "
         << k::io::formatShort(spec->alpha) << " " << rateUnit << "²\n";
   const char* where = timeBase ? "at time_s" : crank ? "at crank_deg" : "at input";
   out << std::left << std::setw(26) << "quantity" << std::right << std::setw(18) << "minimum" << std::setw(14) << where
       << std::setw(18) << "maximum" << std::setw(14) << where << "\n";
-  for (const k::io::SweepColumn& column : k::io::sweepColumns(resolved->mechanism, result->request)) {
-    if (column.quantity == k::io::ColumnQuantity::InputAngle || column.quantity == k::io::ColumnQuantity::InputLength)
-      continue;
-    if (const auto e = k::io::columnExtrema(resolved->mechanism, *spec, *result, column))
-      printRow(out, resolved->mechanism, column.name, *e, timeBase);
-  }
+  for (const k::io::ColumnExtremaScan& scan : columns)
+    if (const auto e = scan.refine(m, *spec)) printRow(out, m, scan.column().name, *e, timeBase);
   // Speed and acceleration magnitudes of each moving point: what seed 003 reports.
-  const k::Mechanism& m = resolved->mechanism;
   const std::string& u = m.lengthUnit;
-  for (std::size_t i = 0; i < m.points.size(); ++i) {
-    if (std::holds_alternative<k::GroundPoint>(m.points[i].definition)) continue;
-    const auto ok = [&](std::size_t j) { return result->ok(j); };
-    const auto speed = refineOver(
-        m, *spec, *result, ok, [&](std::size_t j) { return result->velocity[i][j].norm(); },
-        [i](const k::Pose& p, double) { return p.velocity[i].norm(); });
-    if (speed) printRow(out, resolved->mechanism, m.points[i].name + "_speed_" + u + "_s", *speed, timeBase);
-    const auto accel = refineOver(
-        m, *spec, *result, ok, [&](std::size_t j) { return result->acceleration[i][j].norm(); },
-        [i](const k::Pose& p, double) { return p.acceleration[i].norm(); });
-    if (accel) printRow(out, resolved->mechanism, m.points[i].name + "_accel_" + u + "_s2", *accel, timeBase);
+  for (std::size_t p = 0; p < moving.size(); ++p) {
+    const std::size_t i = moving[p];
+    const auto speed =
+        k::refineExtrema(m, *spec, speeds[p], [i](const k::Pose& pose, double) { return pose.velocity[i].norm(); });
+    if (speed) printRow(out, m, m.points[i].name + "_speed_" + u + "_s", *speed, timeBase);
+    const auto accel =
+        k::refineExtrema(m, *spec, accels[p], [i](const k::Pose& pose, double) { return pose.acceleration[i].norm(); });
+    if (accel) printRow(out, m, m.points[i].name + "_accel_" + u + "_s2", *accel, timeBase);
   }
-  noteLocks(resolved->mechanism, result->lockedBetween, err);
-  if (!result->notAssembled.empty()) {
+  noteLocks(m, summary->lockedBetween, err);
+  if (!summary->notAssembled.empty()) {
     err << "linkwright-cli: the linkage cannot be assembled over the whole range; extremes are over the part that "
            "can\n";
     return ExitCode::NotAssemblable;

@@ -115,14 +115,4 @@ kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Invocation& inv, co
   return spec;
 }
 
-kinematics::Result<SweptMechanism> sweepInvocation(const Invocation& inv) {
-  auto resolved = resolveMechanism(inv);
-  if (!resolved) return resolved.error();
-  const auto spec = sweepSpecFor(inv, resolved->defaults);
-  if (!spec) return spec.error();
-  auto result = kinematics::sweep(resolved->mechanism, *spec);
-  if (!result) return result.error();
-  return SweptMechanism{std::move(*resolved), *spec, std::move(*result)};
-}
-
 }  // namespace linkwright::cli

@@ -70,39 +70,46 @@ struct Search {
 
 }  // namespace
 
-std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec& spec,
-                                     const std::vector<double>& values, const std::vector<bool>& valid,
+void SampledExtrema::add(std::size_t index, bool valid, double value) {
+  for (std::optional<Best>* best : {&m_lowest, &m_highest})
+    if (*best && (*best)->index + 1 == index) (*best)->validAfter = valid;
+  if (valid && (!m_lowest || value < m_lowest->value)) m_lowest = Best{index, value, m_lastValid, false};
+  if (valid && (!m_highest || value > m_highest->value)) m_highest = Best{index, value, m_lastValid, false};
+  if (index == 1) m_secondValid = valid;
+  m_lastButOneValid = m_lastValid;
+  m_lastValid = valid;
+  m_samples = index + 1;
+}
+
+std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec& spec, const SampledExtrema& sampled,
                                      const PoseQuantity& quantity, double angleTolerance) {
-  std::optional<std::size_t> lowest, highest;
-  for (std::size_t j = 0; j < values.size(); ++j) {
-    if (!valid[j]) continue;
-    if (!lowest || values[j] < values[*lowest]) lowest = j;
-    if (!highest || values[j] > values[*highest]) highest = j;
-  }
-  if (!lowest) return std::nullopt;
+  if (!sampled.lowest()) return std::nullopt;
   Search search{mechanism, spec, quantity, {}};
   preparePose(mechanism, search.pose);
   // The bracket: from the best sample's valid neighbours (or the sample itself at an end). Over
   // a full turn the ends are neighbours too: an extremum just before the first sample is one
   // just before the last.
-  const std::size_t n = values.size();
+  const std::size_t n = sampled.samples();
   const bool fullTurn = !spec.time && n > 2 && std::abs(std::abs(spec.toAngle - spec.fromAngle) - 2.0 * kPi) < 1e-9;
   const double step = n > 1 ? parameterAt(spec, 1) - parameterAt(spec, 0) : 0.0;
-  auto bracket = [&](std::size_t j) {
+  auto bracket = [&](const SampledExtrema::Best& best) {
+    const std::size_t j = best.index;
     double lo = parameterAt(spec, j);
     double hi = lo;
-    if (j > 0 && valid[j - 1]) lo = parameterAt(spec, j - 1);
-    else if (j == 0 && fullTurn && valid[n - 2]) lo -= step;
-    if (j + 1 < n && valid[j + 1]) hi = parameterAt(spec, j + 1);
-    else if (j + 1 == n && fullTurn && valid[1]) hi += step;
+    if (j > 0 && best.validBefore) lo = parameterAt(spec, j - 1);
+    else if (j == 0 && fullTurn && sampled.lastButOneValid()) lo -= step;
+    if (j + 1 < n && best.validAfter) hi = parameterAt(spec, j + 1);
+    else if (j + 1 == n && fullTurn && sampled.secondValid()) hi += step;
     return std::pair{std::min(lo, hi), std::max(lo, hi)};
   };
+  const SampledExtrema::Best& lowest = *sampled.lowest();
+  const SampledExtrema::Best& highest = *sampled.highest();
   Extrema out;
-  const auto [minLo, minHi] = bracket(*lowest);
-  out.minimum = search.maximize(minLo, minHi, -1.0, search.at(values[*lowest], parameterAt(spec, *lowest), false),
+  const auto [minLo, minHi] = bracket(lowest);
+  out.minimum = search.maximize(minLo, minHi, -1.0, search.at(lowest.value, parameterAt(spec, lowest.index), false),
                                 angleTolerance);
-  const auto [maxLo, maxHi] = bracket(*highest);
-  out.maximum = search.maximize(maxLo, maxHi, 1.0, search.at(values[*highest], parameterAt(spec, *highest), false),
+  const auto [maxLo, maxHi] = bracket(highest);
+  out.maximum = search.maximize(maxLo, maxHi, 1.0, search.at(highest.value, parameterAt(spec, highest.index), false),
                                 angleTolerance);
   if (spec.time) return out;
   // Report angles inside the requested range (a full-turn bracket may step just outside it).
@@ -113,6 +120,14 @@ std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec
     if (e->inputAngle > highEnd) e->inputAngle -= 2.0 * kPi;
   }
   return out;
+}
+
+std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec& spec,
+                                     const std::vector<double>& values, const std::vector<bool>& valid,
+                                     const PoseQuantity& quantity, double angleTolerance) {
+  SampledExtrema sampled;
+  for (std::size_t j = 0; j < values.size(); ++j) sampled.add(j, valid[j], values[j]);
+  return refineExtrema(mechanism, spec, sampled, quantity, angleTolerance);
 }
 
 }  // namespace linkwright::kinematics

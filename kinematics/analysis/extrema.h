@@ -33,6 +33,39 @@ struct Extrema {
 /// Evaluates a quantity from a pose solved with velocities and accelerations at `inputAngle`.
 using PoseQuantity = std::function<double(const Pose& pose, double inputAngle)>;
 
+/// A quantity's lowest and highest samples gathered in sweep order, in constant memory: what
+/// refineExtrema needs of a whole sweep (the best samples and whether their neighbours, and the
+/// second and last-but-one samples, have a value), so a sweep in windows (sweepInWindows) of
+/// 10⁷ samples is searched as one held whole.
+class SampledExtrema {
+public:
+  /// Sample `index` of the sweep (the next one: samples come in order, each once) has `value`
+  /// if `valid`.
+  void add(std::size_t index, bool valid, double value);
+
+  struct Best {
+    std::size_t index = 0;
+    double value = 0.0;
+    bool validBefore = false;  ///< the sample before has a value
+    bool validAfter = false;   ///< the sample after has a value
+  };
+  const std::optional<Best>& lowest() const { return m_lowest; }
+  const std::optional<Best>& highest() const { return m_highest; }
+  std::size_t samples() const { return m_samples; }
+  bool secondValid() const { return m_secondValid; }          ///< sample 1 has a value
+  bool lastButOneValid() const { return m_lastButOneValid; }  ///< sample n − 2 has a value
+
+private:
+  std::optional<Best> m_lowest, m_highest;
+  std::size_t m_samples = 0;
+  bool m_lastValid = false, m_lastButOneValid = false, m_secondValid = false;
+};
+
+/// Refines the extremes of the samples gathered in `sampled` (a sweep of `mechanism` over
+/// `spec`) on poses solved between them, as below. Nullopt if no sample had a value.
+std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec& spec, const SampledExtrema& sampled,
+                                     const PoseQuantity& quantity, double angleTolerance = 1e-10);
+
 /// Refines the extremes of `quantity` over `sampled` (a sweep of `mechanism` over `spec`):
 /// `values[j]` is the quantity at sample j and `valid[j]` says whether it exists there (rates
 /// do not at a toggle). Nullopt if no sample is valid. The search stays between the valid

@@ -10,7 +10,10 @@
 #include "tests/cli/run_cli.h"
 
 #include "kinematics/dynamics/force_sweep.h"
+#include "kinematics/io/column_extrema.h"
 #include "kinematics/io/csv_writer.h"
+#include "kinematics/io/number_format.h"
+#include "kinematics/io/sweep_columns.h"
 
 #include "tests/support/catch.h"
 #include "tests/support/memory_limit.h"
@@ -82,6 +85,40 @@ TEST_CASE("analyze of many rows runs in an address space far smaller than its ta
   });
   CHECK(run.err.empty());
   CHECK(run.code == 0);
+}
+
+TEST_CASE("extremes over many windows are the whole sweep's, and need no more memory", "[cli][streaming][memory]") {
+  // 10 001 samples in three windows against the whole sweep's columns scanned at once.
+  const std::vector<std::string> args{"extremes", "--example", "watt-ii", "--samples", "10001"};
+  const test::CliRun run = test::runCliCommand(args);
+  REQUIRE(run.code == 0);
+  const auto inv = cli::parseArguments(args);
+  const auto resolved = cli::resolveMechanism(*inv);
+  const auto spec = cli::sweepSpecFor(*inv, resolved->defaults);
+  const auto whole = kinematics::sweep(resolved->mechanism, *spec);
+  REQUIRE(whole);
+  std::size_t rows = 0;
+  for (const auto& column : kinematics::io::sweepColumns(resolved->mechanism, whole->request)) {
+    if (column.quantity == kinematics::io::ColumnQuantity::InputAngle) continue;
+    const auto e = kinematics::io::columnExtrema(resolved->mechanism, *spec, *whole, column);
+    REQUIRE(e);
+    // The row names the column and both refined values, printed to 9 digits.
+    const auto at = run.out.find("\n" + column.name + " ");
+    REQUIRE(at != std::string::npos);
+    const std::string row = run.out.substr(at + 1, run.out.find('\n', at + 1) - at - 1);
+    CHECK(row.find(kinematics::io::formatShort(e->minimum.value, 9)) != std::string::npos);
+    CHECK(row.find(kinematics::io::formatShort(e->maximum.value, 9)) != std::string::npos);
+    ++rows;
+  }
+  CHECK(rows > 30);
+  if (!test::memoryLimitsWork()) return;
+  const auto limited = test::runWithMemoryLimit(48u << 20, [](std::string& err) {
+    const test::CliRun r = test::runCliCommand({"extremes", kSixBarWithMasses, "--samples", "300000"});
+    err = r.err;
+    return r.code;
+  });
+  CHECK(limited.err.empty());
+  CHECK(limited.code == 0);
 }
 
 TEST_CASE("memory that runs out ends with a sentence and exit 1", "[cli][streaming][memory]") {

@@ -12,6 +12,10 @@
 #include "tests/support/catch.h"
 
 #include <cmath>
+#include <optional>
+#include <random>
+#include <utility>
+#include <vector>
 
 using namespace linkwright::kinematics;
 using linkwright::test::extremaOf;
@@ -71,4 +75,41 @@ TEST_CASE("over a full turn an extremum just before the first sample is still fo
   CHECK(shifted.minimum.value == Approx(fine.minimum.value).epsilon(1e-9));
   CHECK(shifted.minimum.inputAngle >= start);
   CHECK(shifted.minimum.inputAngle <= start + 2.0 * kPi);
+}
+
+TEST_CASE("samples gathered one by one keep the best ones and their neighbours, as the whole column says",
+          "[analysis][extrema][windows]") {
+  std::mt19937 random(12);
+  std::uniform_real_distribution<double> value(-5.0, 5.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    const std::size_t n = 1 + random() % 40;
+    std::vector<double> values(n);
+    std::vector<bool> valid(n);
+    SampledExtrema sampled;
+    for (std::size_t j = 0; j < n; ++j) {
+      valid[j] = random() % 4 != 0;
+      // Few distinct values: ties, where the first of the best is kept.
+      values[j] = valid[j] ? std::round(value(random)) : 0.0;
+      sampled.add(j, valid[j], values[j]);
+    }
+    // The whole column, brute force.
+    std::optional<std::size_t> lo, hi;
+    for (std::size_t j = 0; j < n; ++j) {
+      if (!valid[j]) continue;
+      if (!lo || values[j] < values[*lo]) lo = j;
+      if (!hi || values[j] > values[*hi]) hi = j;
+    }
+    CAPTURE(trial, n);
+    REQUIRE(lo.has_value() == sampled.lowest().has_value());
+    CHECK(sampled.samples() == n);
+    if (n > 1) CHECK(sampled.secondValid() == valid[1]);
+    if (n > 2) CHECK(sampled.lastButOneValid() == valid[n - 2]);
+    if (!lo) continue;
+    for (const auto& [best, index] : {std::pair{*sampled.lowest(), *lo}, std::pair{*sampled.highest(), *hi}}) {
+      CHECK(best.index == index);
+      CHECK(best.value == values[index]);
+      CHECK(best.validBefore == (index > 0 && valid[index - 1]));
+      CHECK(best.validAfter == (index + 1 < n && valid[index + 1]));
+    }
+  }
 }
