@@ -76,8 +76,11 @@ std::string leftOutOfFit(const kc::Comparison& cmp) {
     for (const kc::RowComparison& row : column.rows)
       if (row.outsideFit) lines.push_back(std::to_string(row.line));
     if (lines.empty()) continue;
+    // A long table's misfit rows are named a few at a time; the flagged rows below list them all.
+    constexpr std::size_t kNamed = 20;
     std::string entry = lines.size() == 1 ? "line " : "lines ";
-    for (std::size_t i = 0; i < lines.size(); ++i) entry += (i ? ", " : "") + lines[i];
+    for (std::size_t i = 0; i < std::min(lines.size(), kNamed); ++i) entry += (i ? ", " : "") + lines[i];
+    if (lines.size() > kNamed) entry += " and " + std::to_string(lines.size() - kNamed) + " more";
     text += (text.empty() ? "" : "; ") + entry + " (column " + std::to_string(column.mapped.column + 1) + ")";
   }
   return text;
@@ -142,19 +145,11 @@ void writeComparisonText(std::ostream& out, const CompareContext& c, const kc::C
 void writeComparisonJson(std::ostream& out, const CompareContext& c, const kc::Comparison& cmp) {
   using nlohmann::json;
   const auto number = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+  // The document without its rows is small: it is laid out whole, and each column's rows are
+  // written into it one object at a time, as dump(2) would place them (8 spaces in, "]" at 6).
+  // A table of 10⁶ rows is then never a tree of 10⁶ JSON objects.
   json columns = json::array();
-  for (const kc::ColumnComparison& column : cmp.columns) {
-    json rows = json::array();
-    for (const kc::RowComparison& row : column.rows)
-      rows.push_back({{"line", row.line},
-                      {"x", number(row.x)},
-                      {"crank_angle_deg", number(row.inputDeg)},
-                      {"value", number(row.value)},
-                      {"exact", row.exact ? number(*row.exact) : json(nullptr)},
-                      {"deviation", row.exact ? number(row.deviation) : json(nullptr)},
-                      {"flagged", row.flagged},
-                      {"outside_fit", row.outsideFit},
-                      {"note", row.note}});
+  for (const kc::ColumnComparison& column : cmp.columns)
     columns.push_back({{"column", column.mapped.column + 1},
                        {"header", c.table.labels[column.mapped.column]},
                        {"quantity", column.mapped.quantity.key},
@@ -169,8 +164,7 @@ void writeComparisonJson(std::ostream& out, const CompareContext& c, const kc::C
                        {"rms", number(column.rms)},
                        {"compared", column.compared},
                        {"flagged", column.flagged},
-                       {"rows", std::move(rows)}});
-  }
+                       {"rows", json::array()}});
   const char* mode = cmp.offsetMode == kc::OffsetMode::Auto   ? "auto"
                      : cmp.offsetMode == kc::OffsetMode::None ? "none"
                                                               : "given";
@@ -185,7 +179,39 @@ void writeComparisonJson(std::ostream& out, const CompareContext& c, const kc::C
                  {"tolerance_percent_of_span", number(c.options.relativeTolerance * 100.0)},
                  {"flagged_rows", cmp.flaggedRows()},
                  {"columns", std::move(columns)}};
-  out << doc.dump(2) << "\n";
+  const std::string skeleton = doc.dump(2);
+  // Each column's empty "rows" array, in order (a string's quotes are escaped, so only these match).
+  const std::string empty = "\"rows\": []";
+  std::size_t at = 0;
+  std::string indented;
+  for (const kc::ColumnComparison& column : cmp.columns) {
+    const std::size_t found = skeleton.find(empty, at);
+    out.write(skeleton.data() + at, static_cast<std::streamsize>(found - at));
+    out << "\"rows\": [";
+    for (std::size_t r = 0; r < column.rows.size(); ++r) {
+      const kc::RowComparison& row = column.rows[r];
+      const json object{{"line", row.line},
+                        {"x", number(row.x)},
+                        {"crank_angle_deg", number(row.inputDeg)},
+                        {"value", number(row.value)},
+                        {"exact", row.exact ? number(*row.exact) : json(nullptr)},
+                        {"deviation", row.exact ? number(row.deviation) : json(nullptr)},
+                        {"flagged", row.flagged},
+                        {"outside_fit", row.outsideFit},
+                        {"note", row.note}};
+      const std::string text = object.dump(2);
+      indented.assign(r ? ",\n        " : "\n        ");
+      for (const char ch : text) {
+        indented += ch;
+        if (ch == '\n') indented += "        ";
+      }
+      out << indented;
+    }
+    out << (column.rows.empty() ? "]" : "\n      ]");
+    at = found + empty.size();
+  }
+  out.write(skeleton.data() + at, static_cast<std::streamsize>(skeleton.size() - at));
+  out << "\n";
 }
 
 }  // namespace linkwright::cli

@@ -171,9 +171,26 @@ struct OffsetFit {
   double offset = 0.0;  // in the input's unit (rad for a crank)
   bool atBound = false;
   bool fromPositions = false;
-  bool keptZero = false;  // a fitted offset did not explain the rows clearly better than none
-  CellSet used;           // the cells the fit was made on
+  bool keptZero = false;          // a fitted offset did not explain the rows clearly better than none
+  CellSet used;                   // the cells the fit was made on (of the rows it was made on)
+  std::vector<bool> fitted;       // [column]
+  std::vector<double> tolerance;  // [column]: a cell's unit of misfit
 };
+
+// The offset is one number: a few thousand rows spread over the table fix it as well as a
+// million, and the fit solves its rows about 140 times. A longer table is fitted on every k-th
+// row, and solved whole once at the offset found.
+constexpr std::size_t kFitRows = 4096;
+
+// Every k-th row of `table`, at most kFitRows, or nothing if the table is no longer.
+std::optional<io::NumericTable> fitSample(const io::NumericTable& table) {
+  if (table.rows.size() <= kFitRows) return std::nullopt;
+  io::NumericTable sample = table;
+  sample.rows.clear();
+  const std::size_t every = (table.rows.size() + kFitRows - 1) / kFitRows;
+  for (std::size_t r = 0; r < table.rows.size(); r += every) sample.rows.push_back(table.rows[r]);
+  return sample;
+}
 
 // Iteratively trimmed least squares: the robust scan's best δ, then least squares on the cells
 // within kInlierBound tolerances of it, repeated until those cells stay the same; zero unless
@@ -222,6 +239,8 @@ OffsetFit fitOffset(const Mechanism& m, const CompareDrive& drive, const io::Num
   fit.offset = offset;
   fit.atBound = std::abs(offset) > bound - step / 2.0;
   fit.used = std::move(used);
+  fit.fitted = std::move(cells.fitted);
+  fit.tolerance = std::move(cells.tolerance);
   return fit;
 }
 
@@ -335,8 +354,9 @@ Result<Comparison> compareTable(const Mechanism& m, const CompareDrive& drive, c
   out.offsetMode = options.offset;
   double offset = options.offset == OffsetMode::Given ? toInput(options.offsetDeg) : 0.0;
   OffsetFit fit;
+  const std::optional<io::NumericTable> sample = options.offset == OffsetMode::Auto ? fitSample(table) : std::nullopt;
   if (options.offset == OffsetMode::Auto) {
-    fit = fitOffset(m, drive, table, mapping, toInput(options.offsetBoundDeg));
+    fit = fitOffset(m, drive, sample ? *sample : table, mapping, toInput(options.offsetBoundDeg));
     offset = fit.offset;
     out.offsetAtBound = fit.atBound;
     out.offsetFromPositions = fit.fromPositions;
@@ -344,6 +364,8 @@ Result<Comparison> compareTable(const Mechanism& m, const CompareDrive& drive, c
   }
   out.offsetDeg = angle ? radToDeg(offset) : offset;
   const Evaluation ev = evaluate(m, drive, table, mapping, offset);
+  // Fitted on a sample: the cells left out are those of every row beyond the bound at the offset.
+  if (sample) fit.used = inliers(FitCells{table, mapping, fit.fitted, fit.tolerance}, ev);
   for (std::size_t c = 0; c < mapping.columns.size(); ++c) {
     ColumnComparison column = compareColumn(mapping.columns[c], table, ev, c, out.axis, options);
     const bool fitted = options.offset == OffsetMode::Auto && (!fit.fromPositions || isPosition(column.mapped));

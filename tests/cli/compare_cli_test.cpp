@@ -194,3 +194,48 @@ TEST_CASE("compare checks --from, --rpm, --omega and --alpha as analyze does, na
   CHECK(compare(data("thesis_solidworks_fig41_angles.tsv"), map, {"--alpha", "2e6"}).code == 0);
   refused({"--alpha", "2e12"}, "--alpha");
 }
+
+TEST_CASE("compare: a long table's offset is fitted on a sample of its rows and finds exactly its typo",
+          "[cli][compare][long]") {
+  // The thesis four-bar's own table at 12 001 crank angles (three times the rows the fit
+  // samples), its crank angles stated 1.5° late, one coupler angle 3° off.
+  const CliRun exact = runCliCommand({"analyze", "--example", "thesis-crank-rocker", "--samples", "12001"});
+  REQUIRE(exact.code == 0);
+  std::istringstream lines(exact.out);
+  std::string line, table;
+  std::getline(lines, line);
+  table += "theta2 (deg),theta3 (deg)\n";
+  const int typoRow = 7777;  // line 7779 of the file: the header is line 1
+  for (int row = 0; std::getline(lines, line); ++row) {
+    std::vector<std::string> cells;
+    std::stringstream split(line);
+    for (std::string cell; std::getline(split, cell, ',');) cells.push_back(cell);
+    // crank_angle_deg, then the crank's ω and α, then coupler_angle_deg.
+    double coupler = std::stod(cells[3]);
+    if (row == typoRow) coupler += 3.0;
+    std::ostringstream out;
+    out.precision(12);
+    out << std::stod(cells[0]) + 1.5 << "," << coupler << "\n";
+    table += out.str();
+  }
+  const fs::path file = scratchFile(table);
+  const CliRun json =
+      runCliCommand({"compare", "--example", "thesis-crank-rocker", file.string(), "--map", "auto", "--json"});
+  REQUIRE(json.code == 0);
+  // Written row by row, yet the very document nlohmann::json lays out.
+  const auto doc = nlohmann::json::parse(json.out);
+  CHECK(doc.dump(2) + "\n" == json.out);
+  CHECK(doc["offset"]["deg"].get<double>() == Approx(-1.5).margin(1e-7));
+  const auto& rows = doc["columns"][0]["rows"];
+  REQUIRE(rows.size() == 12001);
+  std::vector<int> flagged, outside;
+  for (const auto& row : rows) {
+    if (row["flagged"].get<bool>()) flagged.push_back(row["line"].get<int>());
+    if (row["outside_fit"].get<bool>()) outside.push_back(row["line"].get<int>());
+  }
+  CHECK(flagged == std::vector<int>{typoRow + 2});
+  CHECK(outside == std::vector<int>{typoRow + 2});
+  const CliRun text = runCliCommand({"compare", "--example", "thesis-crank-rocker", file.string(), "--map", "auto"});
+  CHECK_THAT(text.out, Catch::Contains("left out of the fit: line 7779 (column 2)"));
+  fs::remove(file);
+}
