@@ -1,4 +1,5 @@
 #include "app/cli/commands.h"
+#include "app/cli/progress.h"
 #include "app/cli/text_table.h"
 
 #include "kinematics/design/design_analysis.h"
@@ -136,11 +137,12 @@ ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err)
   std::optional<Error> refused;  // the core's, as opposed to the output's
   kinematics::SweepSummary summary;
   UndeterminedForces undetermined;
+  Progress progress(err, "analyze", "samples");
   const auto writeTable = [&](std::ostream& to) -> std::optional<std::string> {
     kinematics::io::SweepCsvWriter csv(to, m);
     SweepTableWriter table(to, m);
     auto swept = kinematics::sweepInWindows(
-        m, *spec, {}, kSweepWindowSamples, [&](const kinematics::SweepResult& part, std::size_t) {
+        m, *spec, {}, kSweepWindowSamples, [&](const kinematics::SweepResult& part, std::size_t first) {
           std::optional<kinematics::ForceSweep> forces;
           if (inv.forces) {
             auto solved = kinematics::sweepForces(m, resolved->dynamics, part);
@@ -153,6 +155,7 @@ ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err)
           }
           if (inv.tableFormat) table.write(part, forces ? &*forces : nullptr);
           else csv.write(part, forces ? &*forces : nullptr);
+          progress.update(first + part.size(), spec->samples);
           return static_cast<bool>(to);  // a failed write stops the sweep; the writer says why
         });
     if (swept) summary = std::move(swept).value();

@@ -1,4 +1,5 @@
 #include "app/cli/commands.h"
+#include "app/cli/progress.h"
 
 #include "kinematics/analysis/extrema.h"
 #include "kinematics/io/column_extrema.h"
@@ -47,6 +48,7 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
   for (std::size_t i = 0; i < m.points.size(); ++i)
     if (!std::holds_alternative<k::GroundPoint>(m.points[i].definition)) moving.push_back(i);
   std::vector<k::SampledExtrema> speeds(moving.size()), accels(moving.size());
+  Progress progress(err, "extremes", "samples");
   const auto summary =
       k::sweepInWindows(m, *spec, {}, kSweepWindowSamples, [&](const k::SweepResult& part, std::size_t first) {
         if (first == 0)
@@ -63,6 +65,7 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
             accels[p].add(first + j, ok, ok ? part.acceleration[i][j].norm() : 0.0);
           }
         }
+        progress.update(first + part.size(), spec->samples);
         return true;
       });
   if (!summary) return fail(summary.error());

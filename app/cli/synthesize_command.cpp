@@ -3,6 +3,7 @@
 // Linkwright document that analyze, extremes and classify read.
 
 #include "app/cli/commands.h"
+#include "app/cli/progress.h"
 #include "app/cli/synthesize_report.h"
 
 #include "kinematics/io/document_json.h"
@@ -14,7 +15,12 @@ namespace linkwright::cli {
 
 ExitCode runSynthesize(const Invocation& inv, std::ostream& out, std::ostream& err) {
   const SynthesisRequest& request = *inv.synthesis;
-  const auto report = solveSynthesis(request);
+  const auto report = [&] {
+    Progress progress(err, "synthesize path", "starts");
+    return solveSynthesis(request, [&progress](int done, int total) {
+      progress.update(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
+    });
+  }();
   if (!report) {
     err << "linkwright-cli: " << report.error().message << "\n";
     // A search that found nothing is not bad input: the targets may be fine, the starts too few.

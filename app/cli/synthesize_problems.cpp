@@ -269,13 +269,13 @@ CandidateRow pathRow(const k::PathCandidate& c) {
   return row;
 }
 
-k::Result<SynthesisReport> solvePath(const SynthesisRequest& r) {
+k::Result<SynthesisReport> solvePath(const SynthesisRequest& r, const k::PathProgress& progress) {
   const k::SynthesisTargets t = targetsOf(r);
   const k::PathTarget& target = t.path;
   k::PathOptions options;
   options.starts = t.pathSearch.starts;
   options.seed = t.pathSearch.seed;
-  const auto s = k::synthesisePath(target, options, boundsOf(r));
+  const auto s = k::synthesisePath(target, options, boundsOf(r), nullptr, progress);
   if (!s)
     return optionError(s.error(), {{"points", "--target"}, {"timing", "--timing"}, {"starts", "--starts"}}, "path");
   if (s->candidates.empty())
@@ -350,14 +350,14 @@ k::SynthesisTargets targetsOf(const SynthesisRequest& r) {
   return t;
 }
 
-k::Result<SynthesisReport> solveSynthesis(const SynthesisRequest& r) {
+k::Result<SynthesisReport> solveSynthesis(const SynthesisRequest& r, const k::PathProgress& progress) {
   switch (r.problem) {
   case SynthesisProblem::Swing: return solveSwing(r);
   case SynthesisProblem::Slider: return solveSlider(r);
   case SynthesisProblem::Shaper: return solveShaper(r);
   case SynthesisProblem::Function: return solveFunction(r);
   case SynthesisProblem::Motion: return solveMotion(r);
-  case SynthesisProblem::Path: return solvePath(r);
+  case SynthesisProblem::Path: return solvePath(r, progress);
   }
   return k::Error{k::ErrorCode::InvalidValue, "PROBLEM", "unknown synthesis problem"};
 }

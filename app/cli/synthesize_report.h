@@ -6,6 +6,7 @@
 #include "app/cli/synthesize_options.h"
 
 #include "kinematics/synthesis/candidate.h"
+#include "kinematics/synthesis/path_generation.h"
 
 #include <iosfwd>
 #include <optional>
@@ -50,7 +51,9 @@ struct SynthesisReport {
 };
 
 /// Runs the core for the request. Errors name the option that caused them ("--rod: …").
-kinematics::Result<SynthesisReport> solveSynthesis(const SynthesisRequest& request);
+/// `progress` hears of a path search's starts as they finish.
+kinematics::Result<SynthesisReport> solveSynthesis(const SynthesisRequest& request,
+                                                   const kinematics::PathProgress& progress = {});
 
 /// The candidates' table, their defects with the reasons, and the chosen one (0-based).
 void writeReportText(const SynthesisReport& report, std::size_t chosen, std::ostream& out);
