@@ -3,7 +3,7 @@
 // state (the crank angle the canvas shows; on a time base, the instant, which sets the angle)
 // and the solved results the views read, and the view settings the plots share (their x axis).
 // Every view re-reads it when it emits changed(); views never solve anything themselves
-// (STYLE.md, layering rule 2).
+// (docs/style.md, "Views only draw").
 //
 // Two grids: the analysis (crank range, gaps) uses the design's saved grid, as CSV export
 // does; the displayed sweep spans the same crank angles (or times) with as many samples as the
