@@ -3,6 +3,7 @@
 #include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/units.h"
+#include "kinematics/model/vec2.h"
 #include "kinematics/solve/pose_solver.h"
 
 #include <algorithm>
@@ -13,8 +14,6 @@ namespace linkwright::kinematics {
 namespace {
 
 using Eigen::Vector2d;
-
-double cross(const Vector2d& a, const Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // A joint that can take over from `driver`: its parents, the length to the driver and the
 // ground point (or ground guide) it is held to.

@@ -2,6 +2,7 @@
 
 #include "kinematics/dynamics/rigid_bodies.h"
 #include "kinematics/model/validate.h"
+#include "kinematics/model/vec2.h"
 
 #include <algorithm>
 #include <cctype>
@@ -12,8 +13,6 @@
 
 namespace linkwright::kinematics::io {
 namespace {
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // Andrew's monotone chain, counter-clockwise, collinear and repeated points dropped.
 std::vector<Eigen::Vector2d> convexHull(std::vector<Eigen::Vector2d> p) {
@@ -41,7 +40,7 @@ Error drawingError(const std::string& field, const std::string& message) {
 
 Outline rectangle(const Eigen::Vector2d& centre, const Eigen::Vector2d& along, double length, double height) {
   const Eigen::Vector2d u = along * (length / 2.0);
-  const Eigen::Vector2d v = Eigen::Vector2d(-along.y(), along.x()) * (height / 2.0);
+  const Eigen::Vector2d v = perp(along) * (height / 2.0);
   return {{centre - u - v, 0.0}, {centre + u - v, 0.0}, {centre + u + v, 0.0}, {centre - u + v, 0.0}};
 }
 

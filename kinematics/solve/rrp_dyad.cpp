@@ -1,5 +1,7 @@
 #include "kinematics/solve/rrp_dyad.h"
 
+#include "kinematics/model/vec2.h"
+
 #include <cmath>
 
 namespace linkwright::kinematics {
@@ -11,7 +13,7 @@ RrpCandidates rrpCandidates(const Eigen::Vector2d& p1, double length, const Eige
   const double b = guideDirection.dot(d);
   // The distance from P1 to the guide, computed directly rather than from b² − c, so the
   // discriminant near the toggle carries no cancellation: b² − c = l² − distance².
-  const double distance = std::abs(guideDirection.x() * d.y() - guideDirection.y() * d.x());
+  const double distance = std::abs(cross(guideDirection, d));
   out.reachGap = length - distance;
   if (out.reachGap < -kAssemblyTolerance * length) {
     out.failure = AssemblyFailure::TooFar;
