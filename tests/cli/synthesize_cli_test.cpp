@@ -427,7 +427,14 @@ TEST_CASE("synthesize: bad values exit 2 and name the option, the value and the 
        "--timing needs one crank angle per target (4; got 2)"},
       {Args{"synthesize", "path", "--target", "1,2", "--target", "3,4", "--target", "5,6", "--target", "7,9",
             "--starts", "0"},
-       "--starts must be between 1 and 100000 (got 0)"},
+       "--starts must be between 1 and 2000 (got 0)"},
+      // 100000 was accepted and ran for about 140 s with nothing shown.
+      {Args{"synthesize", "path", "--target", "1,2", "--target", "3,4", "--target", "5,6", "--target", "7,9",
+            "--starts", "100000"},
+       "--starts must be between 1 and 2000 (got 100000); a longer search runs in the designer's Synthesis panel"},
+      {Args{"synthesize", "path", "--target", "1,2", "--target", "3,4", "--target", "5,6", "--target", "7,9",
+            "--starts", "2001"},
+       "--starts must be between 1 and 2000 (got 2001)"},
   }));
   CAPTURE(args);
   const Run r = run(args);
@@ -453,7 +460,7 @@ TEST_CASE("help: --help synthesize lists every problem, option and default", "[c
     for (const char* text :
          {"swing --swing DEG --time-ratio Q (--rocker L | --frame L) [--count N]", "slider --stroke S",
           "shaper --stroke S", "function --function NAME", "motion --pose X,Y,DEG", "path --target X,Y",
-          "--min-transmission DEG", "--choose K", "-o, --output FILE"})
+          "--min-transmission DEG", "--choose K", "-o, --output FILE", "N random starts (1 to 2000, default"})
       CHECK(r.out.find(text) != std::string::npos);
   }
 }
