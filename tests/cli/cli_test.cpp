@@ -691,6 +691,25 @@ TEST_CASE("centres: points at infinity, toggles and angles that do not assemble"
   CHECK(run({"--help", "arm"}).out.find("--elbow up|down") != std::string::npos);
 }
 
+TEST_CASE("centres accepts a linkage at the end of the domain as analyze, polygon, dxf and report do",
+          "[cli][centres][domain]") {
+  // Its solved joint C is at x = 2e9: centres refused it ("C.x must be within ±1e9"), as if typed.
+  const std::vector<std::string> linkage{"--fourbar", "1e9,1e9,1e9,1e9", "--at", "1"};
+  const auto with = [&linkage](std::vector<std::string> args) {
+    args.insert(args.begin() + 1, linkage.begin(), linkage.end());
+    return args;
+  };
+  const Run centres = run(with({"centres"}));
+  INFO(centres.err);
+  CHECK(centres.code == 0);
+  CHECK(centres.err.empty());
+  CHECK_THAT(centres.out, Catch::Contains("I13") && Catch::Contains("ω4/ω2 = "));
+  CHECK(run(with({"polygon"})).code == 0);
+  const Run analyze = run({"analyze", "--fourbar", "1e9,1e9,1e9,1e9", "--from", "1", "--to", "1"});
+  CHECK(analyze.code == 0);
+  CHECK_THAT(analyze.out, Catch::Contains(",1999847695.1563911,"));  // C_x: beyond ±1e9, and accepted
+}
+
 TEST_CASE("an --at out of its domain is bad input for every command, and a drawing's sizes are lengths",
           "[cli][errors]") {
   // --at 1e300 exited 3 (cannot be assembled) for centres, dxf and report, 2 for polygon.
