@@ -20,6 +20,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 
@@ -441,6 +442,36 @@ TEST_CASE("synthesize: bad values exit 2 and name the option, the value and the 
   CHECK(r.code == 2);
   CHECK(r.out.empty());
   CHECK_THAT(r.err, Catch::Contains(expected));
+}
+
+TEST_CASE("a document's synthesis targets are held to their fields' ranges when it is read",
+          "[cli][synthesize][errors]") {
+  const TempPath file("targets");
+  REQUIRE(
+      run({"synthesize", "swing", "--swing", "60", "--time-ratio", "1.3", "--rocker", "50", "-o", file.path()}).code ==
+      0);
+  // The document the CLI wrote, with every other problem's default targets, reads back.
+  REQUIRE(run({"classify", file.path()}).code == 0);
+  std::string text;
+  {
+    std::ifstream in(file.path());
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const std::string swing = "\"swing_rad\": ";
+  const std::size_t at = text.find(swing);
+  REQUIRE(at != std::string::npos);
+  text.replace(at + swing.size(), text.find(',', at) - at - swing.size(), "1e300");
+  {
+    std::ofstream out(file.path());
+    out << text;
+  }
+  // It was read unchecked, and analyze went on as if nothing were wrong.
+  const Run r = run({"analyze", file.path()});
+  CHECK(r.code == 2);
+  CHECK(r.out.empty());
+  CHECK_THAT(
+      r.err,
+      Catch::Contains("synthesis.swing.swing_rad must be finite and within ±1.7453e7 rad (1e9 degrees) (got 1e+300)"));
 }
 
 TEST_CASE("synthesize: an unwritable output file exits 1 and writes nothing else", "[cli][synthesize][errors]") {
