@@ -3,6 +3,7 @@
 #include "kinematics/design/design.h"
 
 #include <QCommandLineParser>
+#include <QFileInfo>
 #include <QStringList>
 
 #include <charconv>
@@ -28,7 +29,16 @@ std::optional<int> wholeNumber(const std::string& option, const std::string& tex
 bool parseAnimationOptions(const QCommandLineParser& parser, const QCommandLineOption& animation,
                            const QCommandLineOption& frames, const QCommandLineOption& frameDelay, GuiOptions& o,
                            std::string& error) {
-  if (parser.isSet(animation)) o.animation = parser.value(animation).toStdString();
+  if (parser.isSet(animation)) {
+    // A wrong suffix is bad input, said before the window is made (the export checks it too).
+    const QString path = parser.value(animation);
+    if (QFileInfo(path).suffix().toLower() != QLatin1String("gif")) {
+      error =
+          "--animation: the file name must end in .gif, the only format it writes (got '" + path.toStdString() + "')";
+      return false;
+    }
+    o.animation = path.toStdString();
+  }
   if ((parser.isSet(frames) || parser.isSet(frameDelay)) && !o.animation) {
     error = "--frames and --frame-delay need --animation FILE";
     return false;

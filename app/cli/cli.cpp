@@ -288,7 +288,7 @@ degrees CCW from +x (for four-bars the frame line O2->O4 is +x); lengths in the 
   path --target X,Y (4 to 10 times) [--timing DEG,DEG,... [--timing-from start|frame]]
        [--starts N] [--seed S] [--full-turn]
                       four-bars whose coupler point passes through the targets in order,
-                      by Levenberg-Marquardt from N random starts (1 to 100000, default
+                      by Levenberg-Marquardt from N random starts (1 to 2000, default
                       400; seed S, default 19: a run repeats exactly); the best ten
                       distinct ones, best first. --timing: the crank angle at each target,
                       from a free start angle (default) or from the frame line. The error

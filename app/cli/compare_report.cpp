@@ -179,7 +179,9 @@ void writeComparisonJson(std::ostream& out, const CompareContext& c, const kc::C
                  {"tolerance_percent_of_span", number(c.options.relativeTolerance * 100.0)},
                  {"flagged_rows", cmp.flaggedRows()},
                  {"columns", std::move(columns)}};
-  const std::string skeleton = doc.dump(2);
+  // The table's headers and its path are the file's own bytes, not always UTF-8: nlohmann would
+  // throw (type_error 316) and end the program; invalid bytes become U+FFFD, as jsonQuote does.
+  const std::string skeleton = doc.dump(2, ' ', false, json::error_handler_t::replace);
   // Each column's empty "rows" array, in order (a string's quotes are escaped, so only these match).
   const std::string empty = "\"rows\": []";
   std::size_t at = 0;

@@ -7,6 +7,7 @@
 #include "kinematics/analysis/inversions.h"
 #include "kinematics/io/json.h"
 #include "kinematics/io/number_format.h"
+#include "kinematics/model/driver.h"
 #include "kinematics/model/recognise.h"
 
 #include <optional>
@@ -98,8 +99,16 @@ ExitCode runInversions(const Invocation& inv, std::ostream& out, std::ostream& e
   if (const auto f = k::asFourBar(m, k::PointsOnLinks::AnyLink)) return fourBar(*f, m.lengthUnit, inv.json, out, err);
   if (const auto s = k::asSliderCrank(m, k::PointsOnLinks::AnyLink))
     if (const auto g = k::sliderCrankGeometry(m, *s)) return sliderCrank(*g, m.lengthUnit, inv.json, out, err);
-  err << "linkwright-cli: inversions needs a four-bar or a slider-crank (" << resolved->source << " is "
-      << (resolved->kind.empty() ? "neither" : "a " + resolved->kind) << ")\n";
+  const std::string what = resolved->kind.empty() ? "neither" : "a " + resolved->kind;
+  // A linkage driven along a path or by an actuator may be a slider-crank (piston-driven is),
+  // but the inversions are built from its crank, which it does not have as its input.
+  if (k::inputKind(m) != k::InputKind::Angle)
+    err << "linkwright-cli: inversions needs a four-bar or a slider-crank driven by its crank; " << resolved->source
+        << " is " << what << " driven by its " << k::inputName(m)
+        << ", a length, so it has no crank to build the inversions from\n";
+  else
+    err << "linkwright-cli: inversions needs a four-bar or a slider-crank (" << resolved->source << " is " << what
+        << ")\n";
   return ExitCode::BadInput;
 }
 

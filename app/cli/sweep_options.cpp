@@ -26,9 +26,10 @@ Error badValue(const std::string& option, const std::string& why) {
 // typed: --from, --to and --step in degrees for a crank, in the length unit for a linear driver.
 std::optional<Error> checkDriveOptions(const Invocation& inv, kinematics::InputKind kind) {
   using namespace kinematics;
+  // The bound in whole rev/min, rounded down so that every speed it states is accepted.
   if (inv.rpm && !(std::isfinite(*inv.rpm) && std::abs(rpmToRadPerSec(*inv.rpm)) <= kMaxOmega))
-    return badValue("--rpm", "must be finite and within ±" + formatShort(kMaxOmega * 60.0 / (2.0 * kPi), 3) +
-                                 " rev/min, 1e6 rad/s (got " + formatNumber(*inv.rpm) + ")");
+    return badValue("--rpm", "must be finite and within ±" + formatNumber(std::floor(kMaxOmega * 60.0 / (2.0 * kPi))) +
+                                 " rev/min, which is 1e6 rad/s (got " + formatNumber(*inv.rpm) + ")");
   const InputDomain d = inputDomain(kind);
   const bool angle = kind == InputKind::Angle;
   const double grid = angle ? kMaxAngleDeg : d.position;

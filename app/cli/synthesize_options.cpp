@@ -9,6 +9,7 @@
 #include <charconv>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -242,8 +243,16 @@ const std::map<std::string, Handler>& handlers() {
        }},
       {"--starts",
        [](SynthesisRequest& r, const std::string& option, const std::string& value) -> std::optional<Error> {
-         auto n = wholeNumber(option, value, 1, 100000);
+         // Parsed whole first, so that the message for too many can say where more are run.
+         auto n =
+             wholeNumber(option, value, std::numeric_limits<long long>::min(), std::numeric_limits<long long>::max());
          if (!n) return n.error();
+         if (*n < 1 || *n > kMaxCliPathStarts)
+           return usage(option, option + " must be between 1 and " + std::to_string(kMaxCliPathStarts) + " (got " +
+                                    value + ")" +
+                                    (*n > kMaxCliPathStarts ? "; a longer search runs in the designer's Synthesis "
+                                                              "panel, where it can be cancelled"
+                                                            : ""));
          r.starts = *n;
          return std::nullopt;
        }},

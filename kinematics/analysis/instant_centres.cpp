@@ -2,7 +2,6 @@
 
 #include "kinematics/analysis/centre_model.h"
 #include "kinematics/analysis/kennedy.h"
-#include "kinematics/model/validate.h"
 #include "kinematics/model/vec2.h"
 
 #include <algorithm>
@@ -15,9 +14,12 @@
 namespace linkwright::kinematics {
 namespace {
 
+// A joint's position, solved (a pose's) or passed in: any finite point. The input domain bounds
+// what is typed, not where a linkage within it carries its joints (a four-bar of 1e9 links
+// reaches 2e9), and Kennedy's lines stay far from overflow at any such size.
 std::optional<Error> checkPoint(const Eigen::Vector2d& p, const std::string& name) {
-  if (auto e = checkCoordinate(p.x(), name + ".x")) return e;
-  return checkCoordinate(p.y(), name + ".y");
+  if (std::isfinite(p.x()) && std::isfinite(p.y())) return std::nullopt;
+  return Error{ErrorCode::InvalidValue, name, name + " has no finite position, so the instant centres cannot be found"};
 }
 
 // Error if the two ends of a link coincide (the link has no direction there).

@@ -82,6 +82,13 @@ std::optional<MotionLaw> readLaw(const JsonValue& value, const std::string& path
     auto time = readList(value, "time_s", path, r);
     auto angle = readList(value, keys.lawTable, path, r);
     if (r.error) return std::nullopt;
+    // Named by the document's own keys: makeTableLaw knows them only as times and positions.
+    if (time.size() != angle.size()) {
+      r.fail(path + "." + keys.lawTable, "has " + std::to_string(angle.size()) + " values but " + path +
+                                             ".time_s has " + std::to_string(time.size()) +
+                                             ": the two lists must have the same length, one value per time");
+      return std::nullopt;
+    }
     auto table = makeTableLaw(std::move(time), std::move(angle));
     if (!table) {
       r.fail(path, table.error().message);

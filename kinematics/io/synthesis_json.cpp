@@ -1,6 +1,9 @@
 #include "kinematics/io/synthesis_json.h"
 
+#include "kinematics/design/synthesis_ranges.h"
 #include "kinematics/io/number_format.h"
+#include "kinematics/model/units.h"
+#include "kinematics/model/validate.h"
 
 #include <cmath>
 #include <string_view>
@@ -37,6 +40,25 @@ void writePath(std::ostream& out, const PathTarget& p, const PathSearch& search)
       << search.seed << '}';
 }
 
+// The range of a number as the designer's field for it holds it (synthesis_ranges.h), and
+// how a message states it.
+struct Range {
+  double max;
+  std::string text;
+};
+
+Range lengthRange(const std::string& unit) { return {kMaxTargetValue, "±1e9 " + unit}; }
+const Range kPlain{kMaxTargetValue, "±1e9"};
+// The fields show degrees; 1e9 degrees is 17453292.5 rad, stated rounded down.
+const Range kAngle{degToRad(kMaxTargetValue), "±1.7453e7 rad (1e9 degrees)"};
+
+// Records that `value` at `field` is outside `range`, unless an error is recorded already.
+void checkWithin(double value, const std::string& field, const Range& range, JsonReader& r) {
+  if (r.error || (std::isfinite(value) && std::abs(value) <= range.max)) return;
+  r.error = Error{ErrorCode::InvalidValue, field,
+                  field + " must be finite and within " + range.text + " (got " + formatNumber(value) + ")"};
+}
+
 // Reads members of one object, each error naming its full path.
 struct Members {
   const JsonValue& object;
@@ -44,10 +66,15 @@ struct Members {
   JsonReader& r;
 
   double number(const std::string& key) const { return r.number(object, key, path + "." + key).value_or(0.0); }
+  double number(const std::string& key, const Range& range) const {
+    const double v = number(key);
+    checkWithin(v, path + "." + key, range, r);
+    return v;
+  }
   std::string text(const std::string& key) const { return r.string(object, key, path + "." + key).value_or(""); }
-  std::optional<double> optionalNumber(const std::string& key) const {
+  std::optional<double> optionalNumber(const std::string& key, const Range& range) const {
     if (!JsonReader::has(object, key)) return std::nullopt;
-    return r.number(object, key, path + "." + key);
+    return number(key, range);
   }
   bool flag(const std::string& key) const {
     const JsonValue* v = findMember(object, key);
@@ -78,17 +105,27 @@ struct Members {
                                    formatShort(v) + ")");
     return v;
   }
-  std::vector<double> numbers(const std::string& key) const {
+  std::vector<double> numbers(const std::string& key, const Range& range) const {
     std::vector<double> values;
     const JsonValue* a = r.array(object, key, path + "." + key);
     for (std::size_t i = 0; a != nullptr && i < a->size(); ++i) {
+      const std::string item = path + "." + key + "[" + std::to_string(i) + "]";
       if (!(*a)[i].is_number()) {
-        r.fail(path + "." + key + "[" + std::to_string(i) + "]", "must be a number");
+        r.fail(item, "must be a number");
         break;
       }
       values.push_back((*a)[i].get<double>());
+      checkWithin(values.back(), item, range, r);
     }
     return values;
+  }
+  // An array member of at most `most` items (the rows the designer's table and the CLI take).
+  const JsonValue* list(const std::string& key, std::size_t most) const {
+    const JsonValue* a = r.array(object, key, path + "." + key);
+    if (a != nullptr && a->size() > most && !r.error)
+      r.fail(path + "." + key,
+             "must have at most " + std::to_string(most) + " items (got " + std::to_string(a->size()) + ")");
+    return r.error ? nullptr : a;
   }
   std::optional<Members> child(const std::string& key) const {
     const JsonValue* o = r.object(object, key, path + "." + key);
@@ -97,35 +134,38 @@ struct Members {
   }
 };
 
-// An [x, y] pair at `path`.
-Eigen::Vector2d readPair(const JsonValue& value, const std::string& path, JsonReader& r) {
+// An [x, y] pair of lengths at `path`, each within `range`.
+Eigen::Vector2d readPair(const JsonValue& value, const std::string& path, const Range& range, JsonReader& r) {
   if (!value.is_array() || value.size() != 2 || !value[0].is_number() || !value[1].is_number()) {
     r.fail(path, "must be a pair of numbers [x, y]");
     return Eigen::Vector2d::Zero();
   }
-  return {value[0].get<double>(), value[1].get<double>()};
+  const Eigen::Vector2d p(value[0].get<double>(), value[1].get<double>());
+  checkWithin(p.x(), path + "[0]", range, r);
+  checkWithin(p.y(), path + "[1]", range, r);
+  return p;
 }
 
-void readMotion(const Members& m, MotionTargets& out) {
-  const JsonValue* poses = m.r.array(m.object, "poses", m.path + ".poses");
+void readMotion(const Members& m, const Range& length, MotionTargets& out) {
+  const JsonValue* poses = m.list("poses", 3);
   for (std::size_t i = 0; poses != nullptr && i < poses->size(); ++i) {
     const Members pose{(*poses)[i], m.path + ".poses[" + std::to_string(i) + "]", m.r};
-    out.poses.push_back({{pose.number("x"), pose.number("y")}, pose.number("angle_rad")});
+    out.poses.push_back({{pose.number("x", length), pose.number("y", length)}, pose.number("angle_rad", kAngle)});
   }
   if (const JsonValue* a = findMember(m.object, "circle_point_a"))
-    out.circlePoints.a = readPair(*a, m.path + ".circle_point_a", m.r);
+    out.circlePoints.a = readPair(*a, m.path + ".circle_point_a", length, m.r);
   if (const JsonValue* b = findMember(m.object, "circle_point_b"))
-    out.circlePoints.b = readPair(*b, m.path + ".circle_point_b", m.r);
-  out.centreA = m.number("centre_a");
-  out.centreB = m.number("centre_b");
+    out.circlePoints.b = readPair(*b, m.path + ".circle_point_b", length, m.r);
+  out.centreA = m.number("centre_a", length);
+  out.centreB = m.number("centre_b", length);
   out.needsFullRotation = m.flag("full_turn");
 }
 
-void readPath(const Members& m, PathTarget& out, PathSearch& search) {
-  const JsonValue* targets = m.r.array(m.object, "targets", m.path + ".targets");
+void readPath(const Members& m, const Range& length, PathTarget& out, PathSearch& search) {
+  const JsonValue* targets = m.list("targets", 10);
   for (std::size_t i = 0; targets != nullptr && i < targets->size(); ++i)
-    out.points.push_back(readPair((*targets)[i], m.path + ".targets[" + std::to_string(i) + "]", m.r));
-  out.timing = m.numbers("timing_rad");
+    out.points.push_back(readPair((*targets)[i], m.path + ".targets[" + std::to_string(i) + "]", length, m.r));
+  if (m.list("timing_rad", 10) != nullptr) out.timing = m.numbers("timing_rad", kAngle);
   out.timingReference =
       m.choice("timing_from", {"start", "frame"}) == 1 ? TimingReference::Frame : TimingReference::Start;
   out.needsFullRotation = m.flag("full_turn");
@@ -167,42 +207,51 @@ std::optional<SynthesisTargets> readSynthesisMember(const JsonValue& root, const
   const JsonValue* object = r.object(root, "synthesis", "synthesis", false);
   if (object == nullptr) return std::nullopt;
   const Members s{*object, "synthesis", r};
+  // Every number within the range of the designer's field for it (synthesis_ranges.h).
+  const Range length = lengthRange(unit);
   SynthesisTargets t;
   t.problem =
       static_cast<SynthesisProblem>(s.choice("problem", {"swing", "slider", "shaper", "function", "motion", "path"}));
   if (const auto m = s.child("swing")) {
-    t.swing = {m->number("swing_rad"), m->number("time_ratio"), m->number("length"),
+    t.swing = {m->number("swing_rad", kAngle), m->number("time_ratio", kPlain), m->number("length", length),
                m->choice("fixed", {"rocker", "frame"}) == 1 ? SwingScale::Frame : SwingScale::Rocker, unit};
   }
   if (const auto m = s.child("slider")) {
-    t.slider = {m->number("stroke"), m->number("time_ratio"),
+    t.slider = {m->number("stroke", length), m->number("time_ratio", kPlain),
                 m->choice("fixed", {"rod", "offset"}) == 1 ? SliderChoice::Offset : SliderChoice::Rod,
-                m->number("value"), unit};
+                m->number("value", length), unit};
   }
   if (const auto m = s.child("shaper")) {
-    t.shaper = {m->number("stroke"), m->number("time_ratio"),           m->number("crank"),
-                m->number("link"),   m->optionalNumber("guide_height"), unit};
+    t.shaper = {m->number("stroke", length), m->number("time_ratio", kPlain),           m->number("crank", length),
+                m->number("link", length),   m->optionalNumber("guide_height", length), unit};
   }
   if (const auto m = s.child("function")) {
     FunctionSpec& f = t.function;
     f.function = m->text("name");
-    f.x0 = m->number("x0");
-    f.x1 = m->number("x1");
-    f.inputStart = m->number("input_start_rad");
-    f.inputSpan = m->number("input_span_rad");
-    f.outputStart = m->number("output_start_rad");
-    f.outputSpan = m->number("output_span_rad");
-    f.frame = m->number("frame");
-    f.points = m->numbers("points");
+    f.x0 = m->number("x0", kPlain);
+    f.x1 = m->number("x1", kPlain);
+    f.inputStart = m->number("input_start_rad", kAngle);
+    f.inputSpan = m->number("input_span_rad", kAngle);
+    f.outputStart = m->number("output_start_rad", kAngle);
+    f.outputSpan = m->number("output_span_rad", kAngle);
+    f.frame = m->number("frame", length);
+    f.points = m->numbers("points", kPlain);
     f.count = static_cast<std::size_t>(m->whole("count", 3, 1000));
   }
-  if (const auto m = s.child("motion")) readMotion(*m, t.motion);
-  if (const auto m = s.child("path")) readPath(*m, t.path, t.pathSearch);
+  if (const auto m = s.child("motion")) readMotion(*m, length, t.motion);
+  if (const auto m = s.child("path")) readPath(*m, length, t.path, t.pathSearch);
   t.path.lengthUnit = unit;
   if (const auto m = s.child("bounds")) {
-    t.bounds.minTransmission = m->number("min_transmission_rad");
-    t.bounds.maxLinkLength = m->optionalNumber("max_link");
-    t.bounds.maxLinkRatio = m->optionalNumber("max_ratio");
+    t.bounds.minTransmission =
+        m->number("min_transmission_rad", Range{degToRad(kMaxTransmissionBoundDeg), "±17453.29 rad (1e6 degrees)"});
+    t.bounds.maxLinkLength = m->optionalNumber("max_link", length);
+    if (t.bounds.maxLinkLength && !r.error)
+      if (auto e = checkLength(*t.bounds.maxLinkLength, "synthesis.bounds.max_link", "(the longest link allowed)"))
+        r.error = e;
+    t.bounds.maxLinkRatio = m->optionalNumber("max_ratio", kPlain);
+    if (t.bounds.maxLinkRatio && !r.error && !(*t.bounds.maxLinkRatio >= 1.0 && *t.bounds.maxLinkRatio <= 1e6))
+      r.fail("synthesis.bounds.max_ratio",
+             "must be between 1 and 1e6 (longest / shortest link; got " + formatNumber(*t.bounds.maxLinkRatio) + ")");
   }
   if (r.error) return std::nullopt;
   return t;

@@ -170,7 +170,10 @@ std::optional<std::pair<double, double>> lawTimeSpan(const MotionLaw& law) {
 
 Result<TableLaw> makeTableLaw(std::vector<double> time, std::vector<double> position) {
   const std::size_t n = time.size();
-  if (n < 4 || position.size() != n)
+  if (position.size() != n)
+    return fieldError("law.table", "has " + std::to_string(n) + " times but " + std::to_string(position.size()) +
+                                       " positions: the two lists must have the same length, one position per time");
+  if (n < 4)
     return fieldError("law.table", "needs at least four rows of time and position (got " + std::to_string(n) + ")");
   for (std::size_t i = 0; i < n; ++i) {
     const std::string row = "law.table[" + std::to_string(i) + "]";

@@ -68,8 +68,8 @@ using MotionLaw = std::variant<ConstantVelocity, RampToSpeed, CycloidalRise, Pol
 /// The law's state at time `t` (s). The law must be valid (checkMotionLaw).
 DriverState motionAt(const MotionLaw& law, double t);
 
-/// A table law through (time, position) points, or an Error naming the row: fewer than four
-/// points, a non-finite value, or times not strictly increasing.
+/// A table law through (time, position) points, or an Error naming the row: lists of different
+/// lengths, fewer than four points, a non-finite value, or times not strictly increasing.
 Result<TableLaw> makeTableLaw(std::vector<double> time, std::vector<double> position);
 
 /// Error naming the first invalid field ("law.duration", "law.velocity", …) and the value;

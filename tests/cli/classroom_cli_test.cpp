@@ -103,6 +103,12 @@ TEST_CASE("polygon and inversions: bad values exit 2 naming the option and range
       {Args{"polygon", "--example", "thesis-crank-rocker", "--at", "10", "--step", "5"},
        "unknown option '--step' for 'polygon'"},
       {Args{"inversions", "--example", "shaper"}, "inversions needs a four-bar or a slider-crank"},
+      // It said "needs a four-bar or a slider-crank (the example piston-driven is a slider-crank)".
+      {Args{"inversions", "--example", "piston-driven"},
+       "inversions needs a four-bar or a slider-crank driven by its crank; the example piston-driven is a "
+       "slider-crank driven by its C path position, a length, so it has no crank to build the inversions from"},
+      {Args{"inversions", "--example", "excavator-boom"},
+       "the example excavator-boom is a cylinder rocker driven by its actuator A–C length, a length"},
       {Args{"inversions", "--fourbar", "60,0,70,45"}, "--fourbar: crank length must be positive and finite (got 0)"},
   }));
   CAPTURE(args);

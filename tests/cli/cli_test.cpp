@@ -106,7 +106,7 @@ TEST_CASE("bad usage exits 2 with a message naming the option and the reason", "
       {Args{"analyze", "--fourbar", "60,25,70,inf"}, "--fourbar: rocker length must be positive and finite (got inf)"},
       {Args{"analyze", "--fourbar", "60,25,70,45", "--rpm", "fast"}, "--rpm: 'fast' is not a number"},
       {Args{"analyze", "--fourbar", "60,25,70,45", "--rpm", "nan"},
-       "--rpm must be finite and within ±9.55e+06 rev/min, 1e6 rad/s (got nan)"},
+       "--rpm must be finite and within ±9549296 rev/min, which is 1e6 rad/s (got nan)"},
       {Args{"analyze", "--fourbar", "60,25,70,45", "--omega", "inf"},
        "--omega must be finite and within ±1e6 rad/s (got inf)"},
       {Args{"analyze", "--fourbar", "60,25,70,45", "--alpha", "-inf"},
@@ -339,7 +339,7 @@ TEST_CASE("values outside the input domain exit 2 naming the option, the value a
        "--omega must be finite and within ±1e6 rad/s (got 1e+160)"},
       {{"analyze", "--fourbar", "1e308,25,70,45"}, "--fourbar: frame length must be between 1e-6 and 1e9 (got 1e+308)"},
       {{"extremes", "--fourbar", "60,25,70,45", "--rpm", "1e200"},
-       "--rpm must be finite and within ±9.55e+06 rev/min, 1e6 rad/s (got 1e+200)"},
+       "--rpm must be finite and within ±9549296 rev/min, which is 1e6 rad/s (got 1e+200)"},
       {{"analyze", "--fourbar", "1e9,1e-6,1e9,1e9"}, "lengths span too wide a range: link crank is 1e-06 mm but"},
       {{"analyze", "--fourbar", "60,25,70,45", "--alpha", "2e12"},
        "--alpha must be finite and within ±1e12 rad/s² (got 2e+12)"},
@@ -353,6 +353,23 @@ TEST_CASE("values outside the input domain exit 2 naming the option, the value a
   CHECK(r.code == 2);
   CHECK(r.out.empty());
   CHECK_THAT(r.err, Catch::Contains(message));
+}
+
+TEST_CASE("the bound of --rpm is stated in rev/min, and every speed within it is accepted", "[cli][errors][domain]") {
+  // 1e6 rad/s is 9549296.6 rev/min: the message said "within ±9.55e+06 rev/min" and refused 9.55e6.
+  const Run over = run({"analyze", "--fourbar", "60,25,70,45", "--rpm", "9.55e6", "--step", "90"});
+  CHECK(over.code == 2);
+  CHECK(over.err ==
+        "linkwright-cli: --rpm must be finite and within ±9549296 rev/min, which is 1e6 rad/s (got 9550000)\n");
+  for (const char* rpm : {"9549296", "-9549296"}) {
+    CAPTURE(rpm);
+    CHECK(run({"analyze", "--fourbar", "60,25,70,45", "--rpm", rpm, "--step", "90"}).code == 0);
+  }
+  const Run compare = run({"compare", "--example", "thesis-crank-rocker",
+                           std::string(LINKWRIGHT_TEST_DATA) + "/compare/thesis_solidworks_fig41_angles.tsv", "--map",
+                           "2=time:s,3=coupler_angle:deg,4=rocker_angle:deg:rev", "--rpm", "9.55e6"});
+  CHECK(compare.code == 2);
+  CHECK(compare.err == over.err);
 }
 
 TEST_CASE("the text table writes a value that is still not finite as undefined", "[cli][errors]") {
@@ -672,6 +689,25 @@ TEST_CASE("centres: points at infinity, toggles and angles that do not assemble"
   CHECK_THAT(partial.out, Catch::Contains("crank angle 0°"));
   CHECK(run({"--help"}).out.find("centres    instant centres") != std::string::npos);
   CHECK(run({"--help", "arm"}).out.find("--elbow up|down") != std::string::npos);
+}
+
+TEST_CASE("centres accepts a linkage at the end of the domain as analyze, polygon, dxf and report do",
+          "[cli][centres][domain]") {
+  // Its solved joint C is at x = 2e9: centres refused it ("C.x must be within ±1e9"), as if typed.
+  const std::vector<std::string> linkage{"--fourbar", "1e9,1e9,1e9,1e9", "--at", "1"};
+  const auto with = [&linkage](std::vector<std::string> args) {
+    args.insert(args.begin() + 1, linkage.begin(), linkage.end());
+    return args;
+  };
+  const Run centres = run(with({"centres"}));
+  INFO(centres.err);
+  CHECK(centres.code == 0);
+  CHECK(centres.err.empty());
+  CHECK_THAT(centres.out, Catch::Contains("I13") && Catch::Contains("ω4/ω2 = "));
+  CHECK(run(with({"polygon"})).code == 0);
+  const Run analyze = run({"analyze", "--fourbar", "1e9,1e9,1e9,1e9", "--from", "1", "--to", "1"});
+  CHECK(analyze.code == 0);
+  CHECK_THAT(analyze.out, Catch::Contains(",1999847695.1563911,"));  // C_x: beyond ±1e9, and accepted
 }
 
 TEST_CASE("an --at out of its domain is bad input for every command, and a drawing's sizes are lengths",

@@ -239,3 +239,19 @@ TEST_CASE("compare: a long table's offset is fitted on a sample of its rows and 
   CHECK_THAT(text.out, Catch::Contains("left out of the fit: line 7779 (column 2)"));
   fs::remove(file);
 }
+
+TEST_CASE("compare --json writes a header or a path that is not UTF-8 with U+FFFD, not a crash",
+          "[cli][compare][json][errors]") {
+  // The fuzzer's finding: a header of Latin-1 bytes threw nlohmann's type_error 316 out of main.
+  const fs::path dir = fs::temp_directory_path() / "linkwright-compare-utf8";
+  fs::create_directories(dir);
+  const fs::path table = dir / "\xFF\xFEtable.csv";
+  std::ofstream(table) << "theta2 (deg),theta3 \xB0 (deg),theta4 (deg)\n0,33.2031,58.4119\n90,12.6,54.8\n";
+  const CliRun r = compare(table.string(), "auto", {"--json"});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const auto json = nlohmann::json::parse(r.out);
+  CHECK(json["table"] == (dir / "\xEF\xBF\xBD\xEF\xBF\xBDtable.csv").string());
+  CHECK(json["columns"][0]["header"] == "theta3 \xEF\xBF\xBD (deg)");
+  fs::remove_all(dir);
+}

@@ -183,3 +183,28 @@ TEST_CASE("a four-bar driven from its rocker is analysed in the rocker's angle, 
   CHECK(std::isnan(columns.at("crank_omega_rad_s")[0]));  // left empty at the toggle
   CHECK(columns.at("rocker_omega_rad_s")[1] == within(1.0, 1e-12));
 }
+
+TEST_CASE("examples lists a linkage driven along a path or by an actuator in its driver's units",
+          "[cli][driven][examples]") {
+  const auto r = runCliCommand({"examples"});
+  REQUIRE(r.code == 0);
+  // The line under each example's description.
+  const auto settings = [&r](const std::string& name) {
+    const std::size_t at = r.out.find(name + "\n");
+    REQUIRE(at != std::string::npos);
+    const std::size_t line = r.out.find('\n', r.out.find('\n', at) + 1) + 1;
+    return r.out.substr(line, r.out.find('\n', line) - line);
+  };
+  // They were shown as "--omega 2 rad/s, every 0.00424264°" and "--omega 1560 rad/s, every 0.39°".
+  CHECK(settings("seed-arm") ==
+        "  two-link arm (m), its tip path position from 0 m to 0.424264 m in 0.212132 s (mean 2 m/s) on its motion "
+        "law, at 101 instants");
+  CHECK(settings("piston-driven") ==
+        "  slider-crank (mm), its C path position from 1 mm to 79 mm in 0.05 s (mean 1560 mm/s) on its motion law, "
+        "at 201 instants");
+  CHECK(settings("excavator-boom") ==
+        "  cylinder rocker (m), its actuator A–C length from 1.2 m to 1.9 m in 4 s (mean 0.175 m/s) on its motion "
+        "law, at 201 instants");
+  // A crank keeps rad/s and degrees.
+  CHECK(settings("ls3-engine") == "  slider-crank (mm), --omega 691.15 rad/s, every 1°");
+}

@@ -142,6 +142,28 @@ TEST_CASE("a document whose crank follows a law is analysed on its time base", "
   std::filesystem::remove(path);
 }
 
+TEST_CASE("a document's table law with lists of different lengths says so, with both lengths",
+          "[cli][law][document][errors]") {
+  k::Design d = *k::designForExample("thesis-crank-rocker");
+  d.time = k::TimeBase{k::makeTableLaw({0.0, 0.3, 0.7, 1.2, 2.0}, {0.0, 0.1, 0.35, 0.9, 1.7}).value(), 0.0, 2.0};
+  std::string text = k::io::writeDocument(d);
+  const std::string full = "\"angle_rad\": [0, 0.1, 0.35, 0.9, 1.7]";
+  REQUIRE(text.find(full) != std::string::npos);
+  text.replace(text.find(full), full.size(), "\"angle_rad\": [0, 0.1, 0.35, 0.9]");
+  const std::string path = (std::filesystem::temp_directory_path() / "linkwright_law_lists.linkwright").string();
+  {
+    std::ofstream f(path);
+    f << text;
+  }
+  const auto r = runCliCommand({"analyze", path});
+  CHECK(r.code == 2);
+  CHECK(r.out.empty());
+  // It said "needs at least four rows of time and position (got 5)".
+  CHECK_THAT(r.err, Catch::Contains("driver.law.angle_rad has 4 values but driver.law.time_s has 5: the two lists "
+                                    "must have the same length, one value per time"));
+  std::filesystem::remove(path);
+}
+
 TEST_CASE("extremes on a time base are refined in time: a cycloidal rise's peak α at T/4", "[cli][law][extremes]") {
   // Sampled every 0.07 s, so no sample lands on T/4 = 0.125 s: the search finds it.
   const auto r = runCliCommand({"extremes", "--fourbar", "60,25,70,45", "--law", "cycloidal", "--rise", "90",

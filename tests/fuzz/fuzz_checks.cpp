@@ -17,25 +17,6 @@ constexpr std::size_t kMaxArgumentBytes = 256;
 
 bool isTokenChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '+' || c == '-'; }
 
-// One CLI run: its exit code must be a documented one and no output may hold a non-finite
-// number. Exit 2 (bad input) must say why.
-std::optional<std::string> checkRun(const std::vector<std::string>& args, std::string_view document = {},
-                                    int* exitCode = nullptr) {
-  std::ostringstream out, err;
-  const int code = cli::runCli(args, out, err);
-  if (exitCode != nullptr) *exitCode = code;
-  std::string call, typed(document);
-  for (const auto& a : args) {
-    call += " '" + a + "'";
-    typed += "\n" + a;
-  }
-  if (code < 0 || code > 3) return "exit code " + std::to_string(code) + " for" + call;
-  if (code == 2 && err.str().empty()) return "exit code 2 without a message for" + call;
-  if (const auto token = nonFiniteToken(out.str(), typed)) return "'" + *token + "' in the output of" + call;
-  if (const auto token = nonFiniteToken(err.str(), typed)) return "'" + *token + "' in the messages of" + call;
-  return std::nullopt;
-}
-
 std::string lowerCase(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -43,6 +24,22 @@ std::string lowerCase(std::string text) {
 }
 
 }  // namespace
+
+std::optional<std::string> checkCliRun(const std::vector<std::string>& args, std::string_view typed, int* exitCode) {
+  std::ostringstream out, err;
+  const int code = cli::runCli(args, out, err);
+  if (exitCode != nullptr) *exitCode = code;
+  std::string call, quoted(typed);
+  for (const auto& a : args) {
+    call += " '" + a + "'";
+    quoted += "\n" + a;
+  }
+  if (code < 0 || code > 3) return "exit code " + std::to_string(code) + " for" + call;
+  if (code == 2 && err.str().empty()) return "exit code 2 without a message for" + call;
+  if (const auto token = nonFiniteToken(out.str(), quoted)) return "'" + *token + "' in the output of" + call;
+  if (const auto token = nonFiniteToken(err.str(), quoted)) return "'" + *token + "' in the messages of" + call;
+  return std::nullopt;
+}
 
 std::optional<std::string> nonFiniteToken(std::string_view text, std::string_view typed) {
   std::optional<std::string> typedLower;  // made only when a nan or inf turns up
@@ -88,12 +85,12 @@ std::optional<std::string> checkDocument(std::string_view bytes, const std::stri
   // analyze first: a document it refuses, as most mutated inputs are, the others would refuse
   // the same way.
   int code = 0;
-  if (auto finding = checkRun({"analyze", scratchPath, "--samples", "13"}, bytes, &code)) return finding;
+  if (auto finding = checkCliRun({"analyze", scratchPath, "--samples", "13"}, bytes, &code)) return finding;
   if (code == 2) return std::nullopt;
-  if (auto finding = checkRun({"analyze", scratchPath, "--samples", "13", "--forces"}, bytes)) return finding;
-  if (auto finding = checkRun({"classify", scratchPath}, bytes)) return finding;
+  if (auto finding = checkCliRun({"analyze", scratchPath, "--samples", "13", "--forces"}, bytes)) return finding;
+  if (auto finding = checkCliRun({"classify", scratchPath}, bytes)) return finding;
   // Kennedy's circle diagram on whatever bodies the document's linkage has.
-  if (auto finding = checkRun({"centres", scratchPath, "--at", "0,100,230"}, bytes)) return finding;
+  if (auto finding = checkCliRun({"centres", scratchPath, "--at", "0,100,230"}, bytes)) return finding;
   return std::nullopt;
 }
 
@@ -131,7 +128,7 @@ std::optional<std::string> checkArguments(std::string_view bytes) {
     return std::nullopt;
   }
   if (!isCheapToRun(*parsed)) return std::nullopt;
-  return checkRun(args);
+  return checkCliRun(args);
 }
 
 }  // namespace linkwright::fuzz

@@ -25,6 +25,13 @@ std::optional<std::string> checkDocument(std::string_view bytes, const std::stri
 /// wrong, or nothing.
 std::optional<std::string> checkArguments(std::string_view bytes);
 
+/// One linkwright-cli run, in-process: its exit code must be a documented one, exit code 2 must
+/// come with a message, and no output or message may hold a nan or inf not in `typed` (the
+/// arguments, and any file the run reads, are added to it). Returns what went wrong, or nothing;
+/// `exitCode`, if given, receives the exit code.
+std::optional<std::string> checkCliRun(const std::vector<std::string>& args, std::string_view typed = {},
+                                       int* exitCode = nullptr);
+
 /// Whether the fuzzer runs `invocation`: a command that reads and writes no file and finishes
 /// in milliseconds (classify, centres, examples, help, version, and analyze or extremes whose
 /// grid is at most a few thousand samples). Anything slower would be reported as a hang.

@@ -3,6 +3,7 @@
 // are there to catch.
 
 #include "tests/fuzz/fuzz_checks.h"
+#include "tests/fuzz/table_checks.h"
 
 #include "tests/support/catch.h"
 
@@ -99,4 +100,33 @@ TEST_CASE("every stored argument input gives an error or finite results", "[fuzz
     INFO(file.filename().string());
     CHECK(fuzz::checkArguments(readBytes(file)).value_or("no finding") == "no finding");
   }
+}
+
+TEST_CASE("every stored compare table gives an error or a table that keeps its layout", "[fuzz]") {
+  const auto files = storedInputs("compare-tables");
+  REQUIRE(files.size() >= 5);  // the seed corpus: the thesis's tables, analyze's own, a decimal comma
+  const std::string scratch = (fs::temp_directory_path() / "linkwright-fuzz-regression.csv").string();
+  for (const auto& file : files) {
+    INFO(file.filename().string());
+    CHECK(fuzz::checkCompareTable(readBytes(file), scratch).value_or("no finding") == "no finding");
+  }
+  fs::remove(scratch);
+}
+
+TEST_CASE("every stored law table gives an error or a finite law", "[fuzz]") {
+  const auto files = storedInputs("law-tables");
+  REQUIRE(files.size() >= 5);  // the seed corpus: degrees, radians, lengths, a byte-order mark, too few rows
+  for (const auto& file : files) {
+    INFO(file.filename().string());
+    CHECK(fuzz::checkLawTable(readBytes(file)).value_or("no finding") == "no finding");
+  }
+}
+
+TEST_CASE("the table checks pass a good table, a clear refusal and a nan the table holds", "[fuzz]") {
+  const std::string scratch = (fs::temp_directory_path() / "linkwright-fuzz-table-checks.csv").string();
+  CHECK_FALSE(fuzz::checkCompareTable("theta2 (deg),theta4 (deg)\n0,58.41\n90,45\n", scratch));
+  CHECK_FALSE(fuzz::checkCompareTable("no numbers here\n", scratch));  // an error, clearly given
+  CHECK_FALSE(fuzz::checkLawTable("time_s,crank_angle_deg\n0,0\n1,90\n2,180\n3,270\n"));
+  CHECK_FALSE(fuzz::checkLawTable("time_s,crank_angle_deg\n0,nan\n"));  // the nan is the table's own
+  fs::remove(scratch);
 }

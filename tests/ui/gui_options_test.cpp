@@ -82,6 +82,10 @@ TEST_CASE("mistakes on the designer's command line name the option", "[ui][optio
       {{"--animation", "a.gif", "--frame-delay", "6000"},
        "--frame-delay: must be a whole number from 20 to 5000 (got '6000')"},
       {{"--frame-delay", "40"}, "--frames and --frame-delay need --animation FILE"},
+      // It exited 1, as if the file could not be written.
+      {{"--animation", "x.png"},
+       "--animation: the file name must end in .gif, the only format it writes (got 'x.png')"},
+      {{"--animation", "gif"}, "--animation: the file name must end in .gif"},
       {{"--animation", "a.gif", "--screenshot", "a.png"}, "give --screenshot or --animation, not both"},
       {{"--plots="}, "--plots: give at least one key"},
       {{"--window-size", "1366"}, "--window-size: '1366' must be WIDTHxHEIGHT in pixels, 640x480 to 7680x4320"},

@@ -1,13 +1,16 @@
 #include "ui/synthesis/problem_form.h"
 
+#include "kinematics/design/synthesis_ranges.h"
+
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 
 namespace linkwright::ui {
 
 namespace {
-// Wide enough to type any wrong value and be told why; the core decides what it accepts.
-constexpr double kFieldLimit = 1e9;
+// Wide enough to type any wrong value and be told why; the core decides what it accepts. A
+// document stores what the fields hold, and its reader takes the same range.
+constexpr double kFieldLimit = kinematics::kMaxTargetValue;
 }  // namespace
 
 ProblemForm::ProblemForm(QWidget* parent) : QWidget(parent) {}

@@ -10,6 +10,7 @@
 #include "ui/synthesis/target_forms.h"
 #include "ui/synthesis/target_table.h"
 
+#include "kinematics/design/synthesis_ranges.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/units.h"
 
@@ -45,7 +46,7 @@ SynthesisPanel::SynthesisPanel(MechanismDocument* document, LinkageView* view, Q
                        tr("Crank-shaper for a stroke"), tr("Function generator"), tr("Motion: coupler poses"),
                        tr("Path: coupler point through points")});
   header->addRow(tr("Problem"), m_problem);
-  m_transmissionBound->setRange(-1e6, 1e6);
+  m_transmissionBound->setRange(-k::kMaxTransmissionBoundDeg, k::kMaxTransmissionBoundDeg);
   m_transmissionBound->setDecimals(1);
   m_transmissionBound->setValue(k::radToDeg(k::DefectBounds{}.minTransmission));
   m_transmissionBound->setSuffix(tr("°"));

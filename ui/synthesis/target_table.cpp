@@ -1,5 +1,7 @@
 #include "ui/synthesis/target_table.h"
 
+#include "kinematics/design/synthesis_ranges.h"
+
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLocale>
@@ -122,6 +124,12 @@ k::Result<std::vector<std::vector<double>>> TargetTable::values(int skipColumn) 
       if (!ok || !std::isfinite(v))
         return k::Error{k::ErrorCode::InvalidValue, "points",
                         tr("%1, %2: “%3” is not a number")
+                            .arg(rowLabel(r), m_table->horizontalHeaderItem(c)->text(), text)
+                            .toStdString()};
+      // The range of the forms' fields, which a document keeps (synthesis_ranges.h).
+      if (std::abs(v) > k::kMaxTargetValue)
+        return k::Error{k::ErrorCode::InvalidValue, "points",
+                        tr("%1, %2: must be within ±1e9 (got %3)")
                             .arg(rowLabel(r), m_table->horizontalHeaderItem(c)->text(), text)
                             .toStdString()};
       row.push_back(v);

@@ -359,6 +359,73 @@ TEST_CASE("a design's synthesis targets are saved as version 6 and read back bit
   CHECK_THAT(writeDocument(sampleDesign()), !Catch::Contains("synthesis"));
 }
 
+TEST_CASE("synthesis targets beyond the range of their field are refused with the member, value and range",
+          "[io][document][synthesis][errors]") {
+  // They were read unchecked: "swing_rad": 1e300 opened, and the designer's field showed 1e9°.
+  Design d = sampleDesign();
+  d.synthesis = sampleTargets();
+  const std::string good = writeDocument(d);
+  auto [text, expected] = GENERATE_COPY(table<std::string, std::string>({
+      {replaced(good, "\"swing_rad\": 1.0471975511965976", "\"swing_rad\": 1e300"),
+       "synthesis.swing.swing_rad must be finite and within ±1.7453e7 rad (1e9 degrees) (got 1e+300)"},
+      {replaced(good, "\"time_ratio\": 1.3", "\"time_ratio\": -2e9"),
+       "synthesis.swing.time_ratio must be finite and within ±1e9 (got -2e+09)"},
+      {replaced(good, "\"length\": 50", "\"length\": 1e10"),
+       "synthesis.swing.length must be finite and within ±1e9 mm (got 1e+10)"},
+      {replaced(good, "\"value\": -12.5", "\"value\": 1e200"),
+       "synthesis.slider.value must be finite and within ±1e9 mm"},
+      {replaced(good, "\"link\": 150", "\"link\": 1e200"), "synthesis.shaper.link must be finite and within ±1e9 mm"},
+      {replaced(good, "\"guide_height\": 45.857142857142854", "\"guide_height\": 1e200"),
+       "synthesis.shaper.guide_height must be finite"},
+      {replaced(good, "\"x1\": 2", "\"x1\": 1e300"),
+       "synthesis.function.x1 must be finite and within ±1e9 (got 1e+300)"},
+      {replaced(good, "\"output_span_rad\": -0.9", "\"output_span_rad\": 1e300"),
+       "synthesis.function.output_span_rad must be finite"},
+      {replaced(good, "\"points\": [1.1, 1.5, 1.9]", "\"points\": [1.1, 1e300, 1.9]"),
+       "synthesis.function.points[1] must be finite and within ±1e9 (got 1e+300)"},
+      {replaced(good, "\"frame\": 80", "\"frame\": 1e300"), "synthesis.function.frame must be finite"},
+      {replaced(good, "\"x\": 10, \"y\": 5, \"angle_rad\": 0.3", "\"x\": 10, \"y\": 5, \"angle_rad\": 1e300"),
+       "synthesis.motion.poses[1].angle_rad must be finite"},
+      {replaced(good, "\"x\": 10, \"y\": 5", "\"x\": 10, \"y\": 5e9"),
+       "synthesis.motion.poses[1].y must be finite and within ±1e9 mm (got 5e+09)"},
+      {replaced(good, "\"circle_point_b\": [5, -7]", "\"circle_point_b\": [5, -7e99]"),
+       "synthesis.motion.circle_point_b[1] must be finite and within ±1e9 mm (got -7e+99)"},
+      {replaced(good, "\"centre_b\": -2.5", "\"centre_b\": -2.5e99"), "synthesis.motion.centre_b must be finite"},
+      {replaced(good, "\"targets\": [[0, 0]", "\"targets\": [[0, 1e300]"),
+       "synthesis.path.targets[0][1] must be finite and within ±1e9 mm (got 1e+300)"},
+      {replaced(good, "\"timing_rad\": [0.1", "\"timing_rad\": [1e300"), "synthesis.path.timing_rad[0] must be finite"},
+      {replaced(good, "\"timing_rad\": [0.1", "\"timing_rad\": [0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1"),
+       "synthesis.path.timing_rad must have at most 10 items (got 11)"},
+      {replaced(good, "\"min_transmission_rad\": 0.5", "\"min_transmission_rad\": 1e300"),
+       "synthesis.bounds.min_transmission_rad must be finite and within ±17453.29 rad (1e6 degrees) (got 1e+300)"},
+      {replaced(good, "\"max_link\": 500", "\"max_link\": 0"),
+       "synthesis.bounds.max_link (the longest link allowed) must be positive and finite (got 0)"},
+      {replaced(good, "\"max_link\": 500", "\"max_link\": 500, \"max_ratio\": 0.5"),
+       "synthesis.bounds.max_ratio must be between 1 and 1e6 (longest / shortest link; got 0.5)"},
+  }));
+  CAPTURE(text);
+  REQUIRE(text != good);
+  const auto read = readDocument(text);
+  REQUIRE_FALSE(read.ok());
+  CHECK_THAT(read.error().message, Catch::Contains(expected));
+}
+
+TEST_CASE("synthesis targets at the ends of their fields' ranges, and every problem's defaults, read back",
+          "[io][document][synthesis]") {
+  Design d = sampleDesign();
+  SynthesisTargets t;  // the defaults: zero swing and strokes, no poses or targets, as the CLI saves them
+  t.swing.length = -1e9;
+  t.swing.swing = degToRad(-1e9);
+  t.shaper.guideHeight = 1e9;
+  t.bounds.minTransmission = degToRad(1e6);
+  t.bounds.maxLinkRatio = 1e6;
+  d.synthesis = t;
+  const auto back = readDocument(writeDocument(d));
+  INFO((back.ok() ? "" : back.error().message));
+  REQUIRE(back.ok());
+  CHECK(back->synthesis == d.synthesis);
+}
+
 TEST_CASE("bad synthesis targets are refused with the member named", "[io][document][synthesis][errors]") {
   Design d = sampleDesign();
   d.synthesis = sampleTargets();

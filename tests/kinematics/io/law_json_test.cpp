@@ -71,6 +71,13 @@ TEST_CASE("a damaged law is refused with the member named", "[io][document][law]
   const std::size_t rows = text.find("\"time_s\": [");
   REQUIRE(rows != std::string::npos);
   text.replace(rows, std::string("\"time_s\": [0, ").size(), "\"time_s\": [");
+  // Lists of different lengths are not too few rows (it said "needs at least four rows").
+  CHECK(message(text) ==
+        "driver.law.angle_rad has 4 values but driver.law.time_s has 3: the two lists must have the "
+        "same length, one value per time");
+  const std::size_t angles = text.find("\"angle_rad\": [");
+  REQUIRE(angles != std::string::npos);
+  text.replace(angles, std::string("\"angle_rad\": [0, ").size(), "\"angle_rad\": [");
   CHECK_THAT(message(text), Catch::Contains("driver.law") && Catch::Contains("four rows"));
   // A law whose times leave its table.
   std::string outside = writeDocument(table);

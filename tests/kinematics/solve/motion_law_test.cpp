@@ -110,6 +110,9 @@ TEST_CASE("bad laws are refused with the field and the value", "[motion_law][err
   CHECK_THAT(message(CycloidalRise{0.0, 1.0, 1e-6}), Catch::Contains("law peak velocity"));
   CHECK_THAT(message(PolynomialRise{std::nan(""), 1.0, 1.0}), Catch::Contains("law.start must be finite"));
   CHECK_THAT(makeTableLaw({0.0, 1.0, 2.0}, {0.0, 1.0, 2.0}).error().message, Catch::Contains("at least four rows"));
+  // Lists of different lengths are not too few rows (it said "needs at least four rows (got 5)").
+  CHECK(makeTableLaw({0.0, 1.0, 2.0, 3.0, 4.0}, {0.0, 1.0, 2.0, 3.0}).error().message ==
+        "law.table has 5 times but 4 positions: the two lists must have the same length, one position per time");
   CHECK_THAT(makeTableLaw({0.0, 1.0, 1.0, 2.0}, {0.0, 1.0, 2.0, 3.0}).error().message,
              Catch::Contains("law.table[2].time must be later than the row before (got 1 after 1)"));
   CHECK_THAT(makeTableLaw({0.0, 1.0, 2.0, 3.0}, {0.0, INFINITY, 2.0, 3.0}).error().message,

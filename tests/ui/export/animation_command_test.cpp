@@ -64,6 +64,8 @@ TEST_CASE("linkwright --animation refuses bad values, names them and writes noth
       {{"--animation", path, "--frame-delay", "5"}, 2, "--frame-delay: must be a whole number from 20 to 5000"},
       {{"--frames", "36"}, 2, "--frames and --frame-delay need --animation FILE"},
       {{"--animation", dir.filePath("missing/out.gif"), "--frames", "4"}, 1, "does not exist or is not writable"},
+      // A wrong suffix is bad input (it exited 1), and the message names the suffix accepted.
+      {{"--animation", dir.filePath("bad.png"), "--frames", "4"}, 2, "the file name must end in .gif"},
   };
   for (const Case& c : cases) {
     CAPTURE(c.arguments.join(' ').toStdString());

@@ -2,8 +2,8 @@
 // frames reads back (giflib) with 36 frames of the canvas's size, the delay and the loop; the
 // linkage moves between frames; the first frame is the canvas as shown at the start angle;
 // the crank angle comes back and the undo stack stays empty. The cycle's inputs follow the
-// animator (a turn, a rocking range there and back, a time base). Bad settings, a bad path or
-// a cancel write nothing and say why.
+// animator (a turn, a rocking range there and back, a time base). Bad settings, a bad path, a
+// full disk or a cancel write nothing and say why.
 
 #include "ui/export/cycle_animation.h"
 #include "ui/canvas/linkage_view.h"
@@ -13,6 +13,7 @@
 
 #include "kinematics/model/units.h"
 
+#include "tests/support/file_size_limit.h"
 #include "tests/ui/support/four_bar_design.h"
 #include "tests/ui/support/gif_readback.h"
 #include "tests/ui/support/read_file.h"
@@ -213,4 +214,27 @@ TEST_CASE("a cancelled animation leaves the file that was there", "[ui][export][
   CHECK(calls == 3);
   CHECK(test::readAll(path) == "old contents");
   CHECK(window.document()->crankAngle() == before);
+}
+
+TEST_CASE("an animation on a full disk keeps the file that was there and says why", "[ui][export][animation][errors]") {
+  ui::MainWindow window;
+  showSettled(window);
+  QTemporaryDir dir;
+  const QString path = dir.filePath("full.gif");
+  {
+    QFile old(path);
+    REQUIRE(old.open(QIODevice::WriteOnly));
+    old.write("old contents");
+  }
+  ui::AnimationSettings settings;
+  settings.frames = 4;
+  {
+    // A full disk as the writer sees it (tests/support/file_size_limit.h): smaller than any GIF.
+    test::FileSizeLimit full(1024);
+    CHECK_FALSE(window.exportAnimation(path, settings));
+  }
+  // It said "Unknown error".
+  CHECK(window.banner()->text() == "Cannot write full.gif: File too large. The previous file, if any, is unchanged.");
+  CHECK(test::readAll(path) == "old contents");
+  CHECK(QDir(dir.path()).entryList(QDir::Files) == QStringList{"full.gif"});  // no temporary file left
 }

@@ -9,10 +9,13 @@
 #include "ui/synthesis/candidate_table.h"
 #include "ui/synthesis/synthesis_forms.h"
 #include "ui/synthesis/synthesis_preview_item.h"
+#include "ui/synthesis/target_forms.h"
+#include "ui/synthesis/target_table.h"
 
 #include "ui/canvas/linkage_view.h"
 #include "ui/document/mechanism_document.h"
 
+#include "kinematics/io/document_json.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
@@ -311,4 +314,29 @@ TEST_CASE("targets are kept in the document: typed ones as one undo step, saved 
   doc.undoStack()->undo();
   CHECK(function->numberBox("x1")->value() == 4.0);
   CHECK(doc.design() == saved);
+}
+
+TEST_CASE("a target beyond the fields' range is refused in the designer, so what it keeps a document reads back",
+          "[ui][synthesis][file][errors]") {
+  ui::MechanismDocument doc;
+  doc.reset(testing::fourBar());
+  ui::SynthesisPanel panel(&doc, nullptr);
+  panel.setProblem(Problem::Motion);
+  auto* motion = dynamic_cast<ui::MotionForm*>(panel.form(Problem::Motion));
+  REQUIRE(motion != nullptr);
+  // A table cell took any finite number, and the document kept it: a pose at y = 1e300 that the
+  // document reader, which holds targets to the fields' range, would refuse.
+  motion->poses()->table()->item(1, 1)->setText(QStringLiteral("1e300"));
+  const auto poses = motion->poses()->values();
+  REQUIRE_FALSE(poses.ok());
+  CHECK(poses.error().message == "Pose 2, y: must be within ±1e9 (got 1e300)");
+  // The number fields' ends are the document's too.
+  crankRockerForm(panel).swingBox()->setValue(-1e9);
+  crankRockerForm(panel).lengthBox()->setValue(1e9);
+  REQUIRE(doc.design().synthesis.has_value());
+  for (const k::CouplerPose& pose : doc.design().synthesis->motion.poses) CHECK(std::abs(pose.point.y()) <= 1e9);
+  const auto back = k::io::readDocument(k::io::writeDocument(doc.design()));
+  INFO((back.ok() ? std::string() : back.error().message));
+  REQUIRE(back.ok());
+  CHECK(back->synthesis == doc.design().synthesis);
 }
