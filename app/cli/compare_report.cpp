@@ -201,7 +201,7 @@ void writeComparisonJson(std::ostream& out, const CompareContext& c, const kc::C
                         {"flagged", row.flagged},
                         {"outside_fit", row.outsideFit},
                         {"note", row.note}};
-      const std::string text = object.dump(2);
+      const std::string text = object.dump(2, ' ', false, json::error_handler_t::replace);
       indented.assign(r ? ",\n        " : "\n        ");
       for (const char ch : text) {
         indented += ch;
