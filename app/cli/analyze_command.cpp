@@ -137,7 +137,7 @@ ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err)
   std::optional<Error> refused;  // the core's, as opposed to the output's
   kinematics::SweepSummary summary;
   UndeterminedForces undetermined;
-  Progress progress(err, "analyze", "samples");
+  Progress progress(err, "analyze", "samples", progressShown(err, inv.outputFile ? nullptr : &out));
   const auto writeTable = [&](std::ostream& to) -> std::optional<std::string> {
     kinematics::io::SweepCsvWriter csv(to, m);
     SweepTableWriter table(to, m);

@@ -7,6 +7,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/compare_report.h"
 #include "app/cli/option_values.h"
+#include "app/cli/progress.h"
 
 #include "kinematics/compare/header_mapping.h"
 #include "kinematics/compare/table_comparison.h"
@@ -104,7 +105,11 @@ ExitCode runCompare(const Invocation& inv, std::ostream& out, std::ostream& err)
     return fail(option + e.message);
   }
   const CompareContext context{*inv.compareTable, resolved->source, *table, *drive, options, *mapping};
-  if (inv.json) writeComparisonJson(out, context, *comparison);
+  // A long table's JSON takes seconds to write: a person at a terminal sees how far it is.
+  Progress progress(err, "compare", "rows written", progressShown(err, &out));
+  if (inv.json)
+    writeComparisonJson(out, context, *comparison,
+                        [&progress](std::size_t done, std::size_t total) { progress.update(done, total); });
   else writeComparisonText(out, context, *comparison);
   return ExitCode::Success;
 }

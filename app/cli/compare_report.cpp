@@ -142,7 +142,8 @@ void writeComparisonText(std::ostream& out, const CompareContext& c, const kc::C
   else writeFlagged(out, cmp);
 }
 
-void writeComparisonJson(std::ostream& out, const CompareContext& c, const kc::Comparison& cmp) {
+void writeComparisonJson(std::ostream& out, const CompareContext& c, const kc::Comparison& cmp,
+                         const std::function<void(std::size_t done, std::size_t total)>& progress) {
   using nlohmann::json;
   const auto number = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
   // The document without its rows is small: it is laid out whole, and each column's rows are
@@ -186,6 +187,8 @@ void writeComparisonJson(std::ostream& out, const CompareContext& c, const kc::C
   const std::string empty = "\"rows\": []";
   std::size_t at = 0;
   std::string indented;
+  std::size_t total = 0, written = 0;
+  for (const kc::ColumnComparison& column : cmp.columns) total += column.rows.size();
   for (const kc::ColumnComparison& column : cmp.columns) {
     const std::size_t found = skeleton.find(empty, at);
     out.write(skeleton.data() + at, static_cast<std::streamsize>(found - at));
@@ -208,6 +211,7 @@ void writeComparisonJson(std::ostream& out, const CompareContext& c, const kc::C
         if (ch == '\n') indented += "        ";
       }
       out << indented;
+      if (progress && ++written % 4096 == 0) progress(written, total);
     }
     out << (column.rows.empty() ? "]" : "\n      ]");
     at = found + empty.size();

@@ -6,6 +6,8 @@
 
 #include "kinematics/compare/table_comparison.h"
 
+#include <cstddef>
+#include <functional>
 #include <iosfwd>
 #include <string>
 
@@ -25,8 +27,10 @@ struct CompareContext {
 void writeComparisonText(std::ostream& out, const CompareContext& context,
                          const kinematics::compare::Comparison& comparison);
 
-/// The comparison as JSON: the settings, each column's summary and all its rows.
+/// The comparison as JSON: the settings, each column's summary and all its rows; `progress`
+/// hears how many rows are written as they are.
 void writeComparisonJson(std::ostream& out, const CompareContext& context,
-                         const kinematics::compare::Comparison& comparison);
+                         const kinematics::compare::Comparison& comparison,
+                         const std::function<void(std::size_t done, std::size_t total)>& progress = {});
 
 }  // namespace linkwright::cli

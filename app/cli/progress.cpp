@@ -9,6 +9,11 @@ namespace linkwright::cli {
 
 bool isTerminal(const std::ostream& err) { return &err == &std::cerr && isatty(STDERR_FILENO) == 1; }
 
+bool progressShown(const std::ostream& err, const std::ostream* output) {
+  const bool outputOnTerminal = output == &std::cout && isatty(STDOUT_FILENO) == 1;
+  return isTerminal(err) && !outputOnTerminal;
+}
+
 Progress::Progress(std::ostream& err, std::string what, std::string unit, bool shown, std::chrono::milliseconds after)
     : m_err(err), m_what(std::move(what)), m_unit(std::move(unit)), m_shown(shown), m_after(after) {}
 

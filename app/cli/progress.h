@@ -14,6 +14,11 @@ namespace linkwright::cli {
 /// Whether `err` is the process's standard error and that is a terminal.
 bool isTerminal(const std::ostream& err);
 
+/// Whether progress is worth drawing for work that writes to `output` meanwhile (null: to a
+/// file): stderr is a terminal, and the output is not drawn on a terminal too, where the
+/// progress line would break it up.
+bool progressShown(const std::ostream& err, const std::ostream* output);
+
 class Progress {
 public:
   /// `what` names the work ("analyze"), `unit` what is counted ("samples"). `shown`: whether to

@@ -39,3 +39,10 @@ TEST_CASE("progress is drawn in place and cleared, only where it is shown", "[cl
   CHECK(run.code == 0);
   CHECK(run.err.empty());
 }
+
+TEST_CASE("progress is not drawn over output on the same terminal, nor where stderr is no terminal",
+          "[cli][progress]") {
+  std::ostringstream err, out;
+  CHECK_FALSE(cli::progressShown(err, &out));
+  CHECK_FALSE(cli::progressShown(err, nullptr));
+}
