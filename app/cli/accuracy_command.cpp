@@ -7,9 +7,9 @@
 #include "kinematics/analysis/sampling_accuracy.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/io/csv_writer.h"
-#include "kinematics/io/number_format.h"
 #include "kinematics/io/safe_file.h"
 #include "kinematics/model/constraint_form.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
 
@@ -23,7 +23,7 @@ namespace linkwright::cli {
 namespace {
 
 namespace k = kinematics;
-using k::io::formatDouble;
+using k::formatDouble;
 
 constexpr std::size_t kSampleCounts[] = {12, 36, 360, 3600};
 constexpr std::size_t kReferenceSamples = 7200;  // refined too: independent of every row's grid
@@ -81,7 +81,7 @@ k::Result<std::vector<Row>> measureNewton(const Subject& s) {
   if (!exact) return exact.error();
   std::vector<Row> rows{closed};
   for (const double tolerance : kNewtonTolerances) {
-    Row r{s.name, "newton-" + k::io::formatShort(tolerance, 1), kNewtonSamples, 0.0, {}, "closed-form"};
+    Row r{s.name, "newton-" + k::formatShort(tolerance, 1), kNewtonSamples, 0.0, {}, "closed-form"};
     const k::NewtonSettings settings{tolerance, 50};
     const auto read =
         timed([&] { return k::sampledPeaks(newton, s.omega, kNewtonSamples, k::DerivativeMethod::Exact, settings); },
@@ -125,10 +125,10 @@ std::string csv(const std::vector<Row>& rows) {
   table.push_back({"example", "method", "samples_per_rev", "time_us", "omega_rel_error", "alpha_rel_error",
                    "speed_rel_error", "acceleration_rel_error", "angle_error_deg", "reference"});
   for (const Row& r : rows)
-    table.push_back({r.example, r.method, std::to_string(r.samples), k::io::formatShort(r.microseconds, 4),
-                     k::io::formatShort(r.error.omega, 3), k::io::formatShort(r.error.alpha, 3),
-                     k::io::formatShort(r.error.speed, 3), k::io::formatShort(r.error.acceleration, 3),
-                     k::io::formatShort(k::radToDeg(r.error.angle), 3), r.reference});
+    table.push_back({r.example, r.method, std::to_string(r.samples), k::formatShort(r.microseconds, 4),
+                     k::formatShort(r.error.omega, 3), k::formatShort(r.error.alpha, 3),
+                     k::formatShort(r.error.speed, 3), k::formatShort(r.error.acceleration, 3),
+                     k::formatShort(k::radToDeg(r.error.angle), 3), r.reference});
   std::ostringstream out;
   for (const auto& cells : table) {
     for (std::size_t i = 0; i < cells.size(); ++i) out << (i ? "," : "") << k::io::csvField(cells[i]);

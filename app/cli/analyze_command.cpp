@@ -5,9 +5,9 @@
 #include "kinematics/design/design_analysis.h"
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/csv_writer.h"
-#include "kinematics/io/number_format.h"
 #include "kinematics/io/safe_file.h"
 #include "kinematics/model/driver.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
@@ -22,7 +22,7 @@ namespace {
 
 using kinematics::Error;
 using kinematics::ErrorCode;
-using kinematics::io::formatShort;
+using kinematics::formatShort;
 
 // An input value in the driver's display unit: "30°" for a crank, "12 mm" for a linear driver.
 std::string inputText(const kinematics::Mechanism& m, double q) {

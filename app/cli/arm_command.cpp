@@ -10,9 +10,9 @@
 #include "kinematics/analysis/two_link_arm.h"
 #include "kinematics/design/design.h"
 #include "kinematics/io/csv_writer.h"
-#include "kinematics/io/number_format.h"
 #include "kinematics/io/safe_file.h"
 #include "kinematics/model/driven_linkages.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/path_shape.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
@@ -27,7 +27,7 @@ namespace linkwright::cli {
 namespace {
 
 namespace k = kinematics;
-using k::io::formatShort;
+using k::formatShort;
 
 // Seed 004's arm is the example seed-arm: the same document analyze reads.
 constexpr const char* kSeedArmName = "seed-arm";
@@ -182,7 +182,7 @@ bool defined(const ArmColumn& c, const ArmRow& r) {
 // The time column is the requested grid: 12 significant digits print 0.03 as "0.03".
 std::string csvCell(const ArmColumn& c, const ArmRow& r) {
   if (!defined(c, r)) return {};
-  return c.kind == CellKind::Time ? formatShort(c.value(r), 12) : k::io::formatDouble(c.value(r));
+  return c.kind == CellKind::Time ? formatShort(c.value(r), 12) : k::formatDouble(c.value(r));
 }
 
 void writeCsv(std::ostream& out, const std::vector<ArmColumn>& columns, const std::vector<ArmRow>& rows) {
@@ -204,7 +204,7 @@ void writeTable(std::ostream& out, const std::vector<ArmColumn>& columns, const 
   out << "\n";
   for (const ArmRow& row : rows) {
     for (std::size_t c = 0; c < columns.size(); ++c) {
-      const std::string text = defined(columns[c], row) ? k::io::formatFixed(columns[c].value(row), kDecimals)
+      const std::string text = defined(columns[c], row)            ? k::formatFixed(columns[c].value(row), kDecimals)
                                : row.status == RowStatus::Singular ? "singular"
                                                                    : "unreachable";
       out << (c ? "  " : "") << std::setw(widths[c]) << text;

@@ -7,7 +7,7 @@
 
 #include "kinematics/analysis/advantage_sweep.h"
 #include "kinematics/analysis/instant_centres.h"
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
 
@@ -19,7 +19,7 @@ namespace linkwright::cli {
 namespace {
 
 namespace k = kinematics;
-using k::io::formatShort;
+using k::formatShort;
 
 constexpr int kDigits = 9;  // significant digits: ample for a drawing, short enough to read
 

@@ -4,8 +4,8 @@
 #include "kinematics/design/derived_design.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/io/json.h"
-#include "kinematics/io/number_format.h"
 #include "kinematics/model/fourbar.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 
@@ -15,8 +15,8 @@ namespace linkwright::cli {
 namespace {
 
 namespace k = kinematics;
-using k::io::formatFixed;
-using k::io::formatJsonNumber;
+using k::formatFixed;
+using k::formatJsonNumber;
 
 // Everything classify reports on a four-bar, computed once (the core's analyseDesign, as the
 // designer shows it) and printed as text or JSON.
@@ -46,7 +46,7 @@ std::string jsonOptional(const std::optional<T>& value, std::string (*format)(do
 void printText(const Classification& c, std::ostream& out) {
   const auto& l = c.fourBar.lengths;
   const std::string& u = c.lengthUnit;
-  const auto len = [&](double v) { return k::io::formatShort(v) + " " + u; };
+  const auto len = [&](double v) { return k::formatShort(v) + " " + u; };
   out << "four-bar             frame " << len(l.frame) << ", crank " << len(l.crank) << ", coupler " << len(l.coupler)
       << ", rocker " << len(l.rocker) << ", branch " << branchName(c.fourBar.branch) << "\n";
   out << "Grashof class        " << k::toString(c.grashof.category)
@@ -160,7 +160,7 @@ ExitCode classifyQuickReturn(const std::string& kind, const std::string& descrip
   }
   out << "time ratio           " << formatFixed(q->timeRatio, 4) << " (slow stroke " << deg(q->slowStrokeCrankArc)
       << ", quick stroke " << deg(q->quickStrokeCrankArc) << " of crank rotation)\n";
-  out << "ram stroke           " << k::io::formatShort(q->stroke, 8) << " " << mechanism.lengthUnit << "\n";
+  out << "ram stroke           " << k::formatShort(q->stroke, 8) << " " << mechanism.lengthUnit << "\n";
   return ExitCode::Success;
 }
 

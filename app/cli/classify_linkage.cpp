@@ -8,7 +8,7 @@
 #include "kinematics/analysis/mobility.h"
 #include "kinematics/design/derived_design.h"
 #include "kinematics/io/json.h"
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
 
@@ -19,8 +19,8 @@ namespace linkwright::cli {
 namespace {
 
 namespace k = kinematics;
-using k::io::formatFixed;
-using k::io::formatJsonNumber;
+using k::formatFixed;
+using k::formatJsonNumber;
 
 // A full turn every 0.25°: fine enough that a refined extremum's bracket is one step.
 constexpr std::size_t kSamples = 1441;

@@ -1,6 +1,6 @@
 #include "app/cli/compare_report.h"
 
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 
 #include <nlohmann/json.hpp>
@@ -15,7 +15,7 @@ namespace {
 
 namespace k = kinematics;
 namespace kc = kinematics::compare;
-using k::io::formatShort;
+using k::formatShort;
 
 using Rows = std::vector<std::vector<std::string>>;
 

@@ -2,8 +2,8 @@
 
 #include "kinematics/design/examples.h"
 #include "kinematics/design/fourbar_dimensions.h"
-#include "kinematics/io/number_format.h"
 #include "kinematics/model/driver.h"
+#include "kinematics/model/number_text.h"
 
 #include <ostream>
 
@@ -12,7 +12,7 @@ namespace linkwright::cli {
 namespace {
 
 namespace k = kinematics;
-using k::io::formatShort;
+using k::formatShort;
 
 // A value of the input in its own unit: "30°" for a crank, "0.3 m" for a linear driver.
 std::string inputValue(const k::Mechanism& m, double value) {

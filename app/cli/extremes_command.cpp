@@ -3,9 +3,9 @@
 
 #include "kinematics/analysis/extrema.h"
 #include "kinematics/io/column_extrema.h"
-#include "kinematics/io/number_format.h"
 #include "kinematics/io/sweep_columns.h"
 #include "kinematics/model/driver.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 
 #include <iomanip>
@@ -19,12 +19,12 @@ namespace k = kinematics;
 // Where an extremum is: the input (a crank's angle in degrees) on an input grid, the instant
 // on a time base.
 std::string whereText(const k::Mechanism& m, const k::Extremum& e, bool timeBase) {
-  return timeBase ? k::io::formatFixed(e.time, 6) : k::io::formatFixed(k::inputDisplayValue(m, e.inputAngle), 4);
+  return timeBase ? k::formatFixed(e.time, 6) : k::formatFixed(k::inputDisplayValue(m, e.inputAngle), 4);
 }
 
 void printRow(std::ostream& out, const k::Mechanism& m, const std::string& name, const k::Extrema& e, bool timeBase) {
-  out << std::left << std::setw(26) << name << std::right << std::setw(18) << k::io::formatShort(e.minimum.value, 9)
-      << std::setw(14) << whereText(m, e.minimum, timeBase) << std::setw(18) << k::io::formatShort(e.maximum.value, 9)
+  out << std::left << std::setw(26) << name << std::right << std::setw(18) << k::formatShort(e.minimum.value, 9)
+      << std::setw(14) << whereText(m, e.minimum, timeBase) << std::setw(18) << k::formatShort(e.maximum.value, 9)
       << std::setw(14) << whereText(m, e.maximum, timeBase) << "\n";
 }
 
@@ -74,19 +74,18 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
   const bool crank = k::inputKind(m) == k::InputKind::Angle;
   const std::string rateUnit = crank ? "rad/s" : m.lengthUnit + "/s";
   if (timeBase)
-    out << "extremes over times " << k::io::formatShort(spec->time->fromTime) << " s to "
-        << k::io::formatShort(spec->time->toTime) << " s, refined between " << spec->samples << " samples; the "
+    out << "extremes over times " << k::formatShort(spec->time->fromTime) << " s to "
+        << k::formatShort(spec->time->toTime) << " s, refined between " << spec->samples << " samples; the "
         << (crank ? "crank" : "driver") << " follows its motion law\n";
   else if (crank)
-    out << "extremes over crank angles " << k::io::formatShort(k::radToDeg(spec->fromAngle)) << "° to "
-        << k::io::formatShort(k::radToDeg(spec->toAngle)) << "°, refined between " << spec->samples
-        << " samples; crank " << k::io::formatShort(spec->omega) << " rad/s, " << k::io::formatShort(spec->alpha)
-        << " rad/s²\n";
+    out << "extremes over crank angles " << k::formatShort(k::radToDeg(spec->fromAngle)) << "° to "
+        << k::formatShort(k::radToDeg(spec->toAngle)) << "°, refined between " << spec->samples << " samples; crank "
+        << k::formatShort(spec->omega) << " rad/s, " << k::formatShort(spec->alpha) << " rad/s²\n";
   else
-    out << "extremes over " << k::inputName(m) << " " << k::io::formatShort(spec->fromAngle) << " to "
-        << k::io::formatShort(spec->toAngle) << " " << m.lengthUnit << ", refined between " << spec->samples
-        << " samples; driver " << k::io::formatShort(spec->omega) << " " << rateUnit << ", "
-        << k::io::formatShort(spec->alpha) << " " << rateUnit << "²\n";
+    out << "extremes over " << k::inputName(m) << " " << k::formatShort(spec->fromAngle) << " to "
+        << k::formatShort(spec->toAngle) << " " << m.lengthUnit << ", refined between " << spec->samples
+        << " samples; driver " << k::formatShort(spec->omega) << " " << rateUnit << ", " << k::formatShort(spec->alpha)
+        << " " << rateUnit << "²\n";
   const char* where = timeBase ? "at time_s" : crank ? "at crank_deg" : "at input";
   out << std::left << std::setw(26) << "quantity" << std::right << std::setw(18) << "minimum" << std::setw(14) << where
       << std::setw(18) << "maximum" << std::setw(14) << where << "\n";

@@ -6,8 +6,8 @@
 
 #include "kinematics/analysis/inversions.h"
 #include "kinematics/io/json.h"
-#include "kinematics/io/number_format.h"
 #include "kinematics/model/driver.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/recognise.h"
 
 #include <optional>
@@ -17,7 +17,7 @@ namespace linkwright::cli {
 namespace {
 
 namespace k = kinematics;
-using k::io::formatShort;
+using k::formatShort;
 
 ExitCode fourBar(const k::FourBarStructure& f, const std::string& unit, bool json, std::ostream& out,
                  std::ostream& err) {

@@ -2,7 +2,7 @@
 
 #include "kinematics/io/bounded_read.h"
 #include "kinematics/io/law_table_csv.h"
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 
@@ -66,13 +66,13 @@ kinematics::Result<kinematics::SweepSpec> timeSweepSpecFor(const Invocation& inv
   const auto end = inv.toTime ? inv.toTime : defaultEndTime(*law, omega);
   if (!end) return badValue("--to-time", "is needed: the crank does not turn, so no default end time follows");
   if (*end < from)
-    return badValue("--to-time", "must not be before --from-time (got " + k::io::formatShort(from) + " to " +
-                                     k::io::formatShort(*end) + " s)");
+    return badValue("--to-time", "must not be before --from-time (got " + k::formatShort(from) + " to " +
+                                     k::formatShort(*end) + " s)");
   long long samples = inv.samples.value_or(kDefaultTimeSamples);
   if (inv.stepTime) {
     const double intervals = std::floor((*end - from) / *inv.stepTime + 1e-9);
     if (intervals + 1.0 > static_cast<double>(k::kMaxSamples))
-      return badValue("--step-time", "is too small: it would give " + k::io::formatShort(intervals + 1.0) +
+      return badValue("--step-time", "is too small: it would give " + k::formatShort(intervals + 1.0) +
                                          " rows (at most " + std::to_string(k::kMaxSamples) + ")");
     samples = static_cast<long long>(intervals) + 1;
   }

@@ -7,7 +7,7 @@
 
 #include "kinematics/analysis/vector_polygon.h"
 #include "kinematics/io/json.h"
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 
@@ -18,7 +18,7 @@ namespace linkwright::cli {
 namespace {
 
 namespace k = kinematics;
-using k::io::formatShort;
+using k::formatShort;
 
 constexpr int kDigits = 9;  // significant digits, as centres prints
 

@@ -6,7 +6,7 @@
 
 #include "app/cli/commands.h"
 
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/report/report_pdf.h"
@@ -64,7 +64,7 @@ k::Result<double> timeStep(const Invocation& inv, const k::TimeBase& time) {
   const double step = inv.stepDeg.value_or(span / 12.0);
   if (!(std::isfinite(step) && step > 0.0 && step <= span))
     return k::Error{k::ErrorCode::InvalidValue, "--step",
-                    "--step must be more than 0 and at most " + k::io::formatShort(span) +
+                    "--step must be more than 0 and at most " + k::formatShort(span) +
                         " s (the time span) on a time base (got " + k::formatNumber(step) + ")"};
   return step;
 }
@@ -77,7 +77,7 @@ k::Result<double> tableStep(const Invocation& inv, const GridDefaults& d) {
   const double step = inv.stepDeg.value_or(crank ? kDefaultStepDeg : span / 12.0);
   if (!(std::isfinite(step) && step > 0.0 && step <= span))
     return k::Error{k::ErrorCode::InvalidValue, "--step",
-                    "--step must be more than 0 and at most " + k::io::formatShort(span) +
+                    "--step must be more than 0 and at most " + k::formatShort(span) +
                         (crank ? " degrees" : " " + d.lengthUnit + " (the input's range)") + " (got " +
                         k::formatNumber(step) + ")"};
   return d.toInput(step);
@@ -107,11 +107,10 @@ ExitCode runReport(const Invocation& inv, std::ostream& out, std::ostream& err) 
   if (!step) return fail(step.error());
   k::report::ReportRequest request;
   request.title = inv.documentPath ? std::filesystem::path(*inv.documentPath).filename().string()
-                  : inv.example
-                      ? *inv.example
-                      : "Four-bar " + k::io::formatShort(inv.fourBar->frame) + ", " +
-                            k::io::formatShort(inv.fourBar->crank) + ", " + k::io::formatShort(inv.fourBar->coupler) +
-                            ", " + k::io::formatShort(inv.fourBar->rocker) + " " + inv.lengthUnit;
+                  : inv.example    ? *inv.example
+                                   : "Four-bar " + k::formatShort(inv.fourBar->frame) + ", " +
+                                      k::formatShort(inv.fourBar->crank) + ", " + k::formatShort(inv.fourBar->coupler) +
+                                      ", " + k::formatShort(inv.fourBar->rocker) + " " + inv.lengthUnit;
   request.subtitle = resolved->description.empty() ? resolved->kind : resolved->description;
   request.date = today();
   request.grid = gridOf(d);
@@ -127,7 +126,7 @@ ExitCode runReport(const Invocation& inv, std::ostream& out, std::ostream& err) 
   if (auto e = k::report::writeReportPdf(*content, *paper, *inv.outputFile)) return fail(*e, ExitCode::IoError);
   out << "wrote " << *inv.outputFile << ": the lab report of " << resolved->source << " ("
       << (*paper == k::report::Paper::A4 ? "A4" : "Letter") << "), a table row every "
-      << (d.time ? k::io::formatShort(*step) + " s" : k::report::inputText(resolved->mechanism, *step, false)) << "\n";
+      << (d.time ? k::formatShort(*step) + " s" : k::report::inputText(resolved->mechanism, *step, false)) << "\n";
   return ExitCode::Success;
 }
 

@@ -1,6 +1,6 @@
 #include "app/cli/svg_plot.h"
 
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@ namespace {
 
 constexpr double kWidth = 720, kHeight = 440, kLeft = 80, kRight = 230, kTop = 40, kBottom = 60;
 
-std::string num(double v) { return kinematics::io::formatFixed(v, 1); }
+std::string num(double v) { return kinematics::formatFixed(v, 1); }
 
 std::string escaped(const std::string& text) {
   std::string out;

@@ -1,6 +1,6 @@
 #include "app/cli/commands.h"
 
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 
@@ -12,7 +12,7 @@ namespace {
 
 using kinematics::Error;
 using kinematics::ErrorCode;
-using kinematics::io::formatShort;
+using kinematics::formatShort;
 
 using kinematics::kMaxSamples;
 

@@ -4,7 +4,7 @@
 
 #include "app/cli/synthesize_report.h"
 
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/synthesis/function_generation.h"
 #include "kinematics/synthesis/motion_generation.h"
@@ -34,8 +34,8 @@ k::Error optionError(const k::Error& e, const FieldMap& fields, const std::strin
   return k::Error{e.code, "synthesize " + problem, "synthesize " + problem + ": " + e.message};
 }
 
-std::string deg(double degrees) { return k::io::formatShort(degrees) + "°"; }
-std::string len(double value, const std::string& unit) { return k::io::formatShort(value) + " " + unit; }
+std::string deg(double degrees) { return k::formatShort(degrees) + "°"; }
+std::string len(double value, const std::string& unit) { return k::formatShort(value) + " " + unit; }
 std::string branchName(k::Branch b) { return b == k::Branch::Open ? "open" : "crossed"; }
 
 k::DefectBounds boundsOf(const SynthesisRequest& r) { return targetsOf(r).bounds; }
@@ -84,9 +84,8 @@ k::Result<SynthesisReport> solveSwing(const SynthesisRequest& r) {
                         {"count", "--count"}},
                        "swing");
   SynthesisReport report = reportFor(r);
-  report.summary = "crank-rocker: rocker swing " + deg(*r.swingDeg) + ", time ratio " +
-                   k::io::formatShort(*r.timeRatio) + ", " + (rocker ? "rocker " : "frame ") +
-                   len(target.length, r.lengthUnit);
+  report.summary = "crank-rocker: rocker swing " + deg(*r.swingDeg) + ", time ratio " + k::formatShort(*r.timeRatio) +
+                   ", " + (rocker ? "rocker " : "frame ") + len(target.length, r.lengthUnit);
   // The family in order of its parameter, the best in its place among them.
   for (const k::CrankRockerCandidate& c : s->family) report.rows.push_back(swingRow(c));
   const auto at = std::find_if(report.rows.begin(), report.rows.end(),
@@ -94,7 +93,7 @@ k::Result<SynthesisReport> solveSwing(const SynthesisRequest& r) {
   report.best = static_cast<std::size_t>(at - report.rows.begin());
   report.rows.insert(at, swingRow(s->best));
   report.bestRule =
-      "the largest worst transmission angle with longest / shortest link <= " + k::io::formatShort(r.maxLinkRatio) +
+      "the largest worst transmission angle with longest / shortest link <= " + k::formatShort(r.maxLinkRatio) +
       " (or, if none meets that, of all)";
   return report;
 }
@@ -109,8 +108,7 @@ k::Result<SynthesisReport> solveSlider(const SynthesisRequest& r) {
         "slider");
   SynthesisReport report = reportFor(r);
   report.summary = "offset slider-crank: stroke " + len(*r.stroke, r.lengthUnit) + ", time ratio " +
-                   k::io::formatShort(*r.timeRatio) + ", " + (rod ? "rod " : "offset ") +
-                   len(target.value, r.lengthUnit);
+                   k::formatShort(*r.timeRatio) + ", " + (rod ? "rod " : "offset ") + len(target.value, r.lengthUnit);
   const k::SliderCrankGeometry& g = s->geometry;
   CandidateRow row{s->candidate, {{"crank", g.crank}, {"rod", g.rod}, {"offset", g.offset}}, std::nullopt, {}};
   row.details = {
@@ -140,7 +138,7 @@ k::Result<SynthesisReport> solveShaper(const SynthesisRequest& r) {
                        "shaper");
   SynthesisReport report = reportFor(r);
   report.summary = "crank-shaper: ram stroke " + len(*r.stroke, r.lengthUnit) + ", time ratio " +
-                   k::io::formatShort(*r.timeRatio) + ", crank " + len(*r.crank, r.lengthUnit) + ", link " +
+                   k::formatShort(*r.timeRatio) + ", crank " + len(*r.crank, r.lengthUnit) + ", link " +
                    len(*r.link, r.lengthUnit);
   const k::ShaperGeometry& g = s->geometry;
   CandidateRow row{s->candidate,
@@ -172,8 +170,8 @@ k::Result<SynthesisReport> solveFunction(const SynthesisRequest& r) {
                         {"points", r.at.empty() ? "--points" : "--at"}},
                        "function");
   SynthesisReport report = reportFor(r);
-  report.summary = "function generator: y = " + r.function + "(x), x from " + k::io::formatShort(*r.x0) + " to " +
-                   k::io::formatShort(*r.x1) + "; crank from " + deg(*r.inputStartDeg) + " through " +
+  report.summary = "function generator: y = " + r.function + "(x), x from " + k::formatShort(*r.x0) + " to " +
+                   k::formatShort(*r.x1) + "; crank from " + deg(*r.inputStartDeg) + " through " +
                    deg(*r.inputSpanDeg) + ", rocker from " + deg(*r.outputStartDeg) + " through " +
                    deg(*r.outputSpanDeg) + "; " + std::to_string(s->points.size()) +
                    (r.at.empty() ? " Chebyshev" : "") + " precision points" +

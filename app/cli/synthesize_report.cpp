@@ -1,10 +1,10 @@
 // Prints a synthesis report as an aligned text table or as JSON. Numbers are locale-independent
-// (std::to_chars through number_format.h); JSON strings go through the core's jsonQuote.
+// (std::to_chars through number_text.h); JSON strings go through the core's jsonQuote.
 
 #include "app/cli/synthesize_report.h"
 
 #include "kinematics/io/json.h"
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 
 #include <algorithm>
@@ -14,9 +14,9 @@ namespace linkwright::cli {
 namespace {
 
 namespace k = kinematics;
-using k::io::formatFixed;
-using k::io::formatJsonNumber;
-using k::io::formatShort;
+using k::formatFixed;
+using k::formatJsonNumber;
+using k::formatShort;
 using Kind = SynthesisDetail::Kind;
 
 std::string grashofName(const k::SynthesisCandidate& c) {

@@ -1,6 +1,6 @@
 #include "app/cli/text_table.h"
 
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 
 #include <algorithm>
 #include <iomanip>
@@ -36,13 +36,12 @@ void SweepTableWriter::write(const kinematics::SweepResult& r, const kinematics:
     for (std::size_t c = 0; c < m_columns.size(); ++c) {
       const bool defined = r.ok(j) || !m_columns[c].isRate();
       const std::string text =
-          defined ? kinematics::io::formatFixed(m_columns[c].value(r, j), m_decimals) : std::string("toggle");
+          defined ? kinematics::formatFixed(m_columns[c].value(r, j), m_decimals) : std::string("toggle");
       m_out << (c ? "  " : "") << std::setw(m_widths[c]) << text;
     }
     for (std::size_t c = 0; c < m_forceColumns.size(); ++c) {
-      const std::string text = forces->ok(j)
-                                   ? kinematics::io::formatFixed(m_forceColumns[c].value(*forces, j), m_decimals)
-                                   : std::string(r.ok(j) ? "singular" : "toggle");
+      const std::string text = forces->ok(j) ? kinematics::formatFixed(m_forceColumns[c].value(*forces, j), m_decimals)
+                                             : std::string(r.ok(j) ? "singular" : "toggle");
       m_out << "  " << std::setw(m_widths[m_columns.size() + c]) << text;
     }
     m_out << "\n";

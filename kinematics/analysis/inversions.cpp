@@ -1,7 +1,7 @@
 #include "kinematics/analysis/inversions.h"
 
-#include "kinematics/io/number_format.h"
 #include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/vec2.h"
 
 #include <array>
@@ -128,7 +128,7 @@ Result<std::vector<SliderCrankInversion>> sliderCrankInversions(const SliderCran
   // a = b puts C on O2 once a turn: the slot's direction is undetermined there.
   const bool equal = std::abs(a - b) <= 1e-12 * std::max(a, b);
   const bool offset = e != 0.0;
-  const std::string why = "the guide is offset " + io::formatShort(e) + " " + unit +
+  const std::string why = "the guide is offset " + kinematics::formatShort(e) + " " + unit +
                           " from O2, and a slotted link's slot passes through its pivot in this model";
   std::vector<SliderCrankInversion> out(4);
   out[0] = {SliderCrankLink::Frame, "slider-crank", "crank", a + std::abs(e) <= b, false, std::nullopt, {}};

@@ -1,6 +1,6 @@
 #include "kinematics/analysis/two_link_arm.h"
 
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/model/vec2.h"
 #include "kinematics/solve/rrr_dyad.h"
@@ -49,10 +49,10 @@ Result<ArmState> solveTwoLinkArm(const TwoLinkArm& arm, Branch elbow, const Eige
   const RrrCandidates c = rrrCandidates(Eigen::Vector2d::Zero(), arm.upper, p, arm.forearm);
   if (c.failure != AssemblyFailure::None)
     return Error{ErrorCode::NotAssemblable, "tip",
-                 "the tip at (" + io::formatShort(p.x()) + ", " + io::formatShort(p.y()) + ") is " +
-                     io::formatShort(p.norm()) + " from the shoulder, outside the workspace " +
-                     io::formatShort(std::abs(arm.upper - arm.forearm)) + " to " +
-                     io::formatShort(arm.upper + arm.forearm)};
+                 "the tip at (" + kinematics::formatShort(p.x()) + ", " + kinematics::formatShort(p.y()) + ") is " +
+                     kinematics::formatShort(p.norm()) + " from the shoulder, outside the workspace " +
+                     kinematics::formatShort(std::abs(arm.upper - arm.forearm)) + " to " +
+                     kinematics::formatShort(arm.upper + arm.forearm)};
   ArmState s;
   s.elbow = elbow == Branch::Open ? c.open : c.crossed;
   const Eigen::Vector2d e1 = s.elbow / arm.upper;
@@ -62,7 +62,8 @@ Result<ArmState> solveTwoLinkArm(const TwoLinkArm& arm, Branch elbow, const Eige
   if (v.isZero() && a.isZero()) return s;
   if (!solveJoints(arm.upper, e1, arm.forearm, e2, v, s.upperOmega, s.forearmOmega))
     return Error{ErrorCode::Singular, "tip",
-                 "the arm is stretched out or folded at (" + io::formatShort(p.x()) + ", " + io::formatShort(p.y()) +
+                 "the arm is stretched out or folded at (" + kinematics::formatShort(p.x()) + ", " +
+                     kinematics::formatShort(p.y()) +
                      "): the tip cannot move in every direction there, so joint rates are undefined"};
   const Eigen::Vector2d rhs =
       a + arm.upper * s.upperOmega * s.upperOmega * e1 + arm.forearm * s.forearmOmega * s.forearmOmega * e2;

@@ -1,6 +1,6 @@
 #include "kinematics/compare/column_mapping.h"
 
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 
 #include <charconv>
 #include <cmath>
@@ -29,9 +29,10 @@ std::optional<Error> checkMagnitudes(const io::NumericTable& table, std::size_t 
   for (const io::NumericRow& row : table.rows) {
     const std::optional<double>& value = row.cells[column];
     if (value && !(std::abs(*value) <= largest))
-      return mapError("map", columnName(column) + " holds " + io::formatShort(*value) + " " + unit.name + " on line " +
-                                 std::to_string(row.line) + ", beyond the ±" + io::formatShort(largest, 3) + " " +
-                                 unit.name + " any " + dimensionName(dimension) +
+      return mapError("map", columnName(column) + " holds " + kinematics::formatShort(*value) + " " + unit.name +
+                                 " on line " + std::to_string(row.line) + ", beyond the ±" +
+                                 kinematics::formatShort(largest, 3) + " " + unit.name + " any " +
+                                 dimensionName(dimension) +
                                  " of a linkage stays within: is it mapped to the right quantity and unit?");
   }
   return std::nullopt;

@@ -1,8 +1,8 @@
 #include "kinematics/compare/table_comparison.h"
 
-#include "kinematics/io/number_format.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
 
@@ -12,7 +12,7 @@
 namespace linkwright::kinematics::compare {
 namespace {
 
-using io::formatShort;
+using kinematics::formatShort;
 
 // The exact values of every mapped column at every row, for one offset.
 struct Evaluation {

@@ -1,6 +1,6 @@
 #include "kinematics/io/csv_writer.h"
 
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 
 namespace linkwright::kinematics::io {
 namespace {

@@ -5,9 +5,9 @@
 #include "kinematics/io/json_reader.h"
 #include "kinematics/io/law_json.h"
 #include "kinematics/io/mechanism_json.h"
-#include "kinematics/io/number_format.h"
 #include "kinematics/io/synthesis_json.h"
 #include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/validate.h"
 
 #include <cmath>

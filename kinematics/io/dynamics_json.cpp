@@ -1,7 +1,7 @@
 #include "kinematics/io/dynamics_json.h"
 
 #include "kinematics/io/json.h"
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 
 #include <cmath>
 

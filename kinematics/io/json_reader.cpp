@@ -1,6 +1,6 @@
 #include "kinematics/io/json_reader.h"
 
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 
 #include <cmath>
 

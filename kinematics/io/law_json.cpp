@@ -1,6 +1,6 @@
 #include "kinematics/io/law_json.h"
 
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 
 namespace linkwright::kinematics::io {
 namespace {

@@ -1,6 +1,6 @@
 #include "kinematics/io/mechanism_json.h"
 
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 
 #include <map>
 #include <sstream>

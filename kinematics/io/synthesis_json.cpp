@@ -1,7 +1,7 @@
 #include "kinematics/io/synthesis_json.h"
 
 #include "kinematics/design/synthesis_ranges.h"
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 

@@ -7,7 +7,7 @@
 namespace linkwright::kinematics {
 namespace {
 
-// A finite `value` as text: the shortest that reads back to it (as io::formatDouble writes
+// A finite `value` as text: the shortest that reads back to it (as kinematics::formatDouble writes
 // it), or to `significant` digits. The model formats its own messages, so that it depends on
 // nothing above it.
 std::string shortestText(double value, int significant = 0) {

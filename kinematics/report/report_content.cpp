@@ -3,9 +3,9 @@
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/column_extrema.h"
 #include "kinematics/io/force_columns.h"
-#include "kinematics/io/number_format.h"
 #include "kinematics/io/sweep_columns.h"
 #include "kinematics/model/driver.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/report/report_sections.h"
 #include "kinematics/solve/motion_law.h"
@@ -17,8 +17,8 @@ namespace linkwright::kinematics::report {
 namespace {
 
 using io::ColumnQuantity;
-using io::formatFixed;
 using io::SweepColumn;
+using kinematics::formatFixed;
 
 constexpr std::size_t kPlotSamples = 721;
 
@@ -63,8 +63,8 @@ ReportTable extremesTable(const Mechanism& m, const SweepSpec& spec, const Sweep
     // As `extremes` prints them: nine significant digits, the input to four decimals, a time
     // to six.
     const int decimals = timeBase ? 6 : 4;
-    table.cells.push_back({columnName(c, units), io::formatShort(lo, 9), formatFixed(minAt, decimals),
-                           io::formatShort(hi, 9), formatFixed(maxAt, decimals)});
+    table.cells.push_back({columnName(c, units), kinematics::formatShort(lo, 9), formatFixed(minAt, decimals),
+                           kinematics::formatShort(hi, 9), formatFixed(maxAt, decimals)});
     table.values.push_back({std::nullopt, lo, minAt, hi, maxAt});
   }
   return table;
@@ -158,29 +158,32 @@ std::optional<Error> checkRequest(const Mechanism& m, const ReportRequest& reque
   if (request.tableStep > 0.0 && std::floor(span / request.tableStep + 1e-9) + 1.0 > kMaxTableRows) {
     const bool time = request.grid.time.has_value();
     const auto shown = [&](double v) {
-      return time ? io::formatShort(v) + " s" : io::formatShort(inputDisplayValue(m, v) - inputDisplayValue(m, 0.0));
+      return time ? kinematics::formatShort(v) + " s"
+                  : kinematics::formatShort(inputDisplayValue(m, v) - inputDisplayValue(m, 0.0));
     };
     return Error{ErrorCode::InvalidValue, "tableStep",
-                 "the table step " + shown(request.tableStep) + " gives more than " + io::formatShort(kMaxTableRows) +
-                     " rows; a report's step must be at least " + shown(span / (kMaxTableRows - 1.0))};
+                 "the table step " + shown(request.tableStep) + " gives more than " +
+                     kinematics::formatShort(kMaxTableRows) + " rows; a report's step must be at least " +
+                     shown(span / (kMaxTableRows - 1.0))};
   }
   if (const auto& time = request.grid.time) {
     if (!(std::isfinite(request.tableStep) && request.tableStep > 0.0 && request.tableStep <= std::max(span, 1e-300)))
       return Error{ErrorCode::InvalidValue, "tableStep",
-                   "the table step must be positive and at most the time span tabulated, " + io::formatShort(span) +
-                       " s (got " + io::formatShort(request.tableStep) + " s)"};
+                   "the table step must be positive and at most the time span tabulated, " +
+                       kinematics::formatShort(span) + " s (got " + kinematics::formatShort(request.tableStep) + " s)"};
     if (!(request.drawAt >= time->fromTime && request.drawAt <= time->toTime))
       return Error{ErrorCode::InvalidValue, "time",
-                   "the drawn time (--at) must be within the time span, " + io::formatShort(time->fromTime) + " to " +
-                       io::formatShort(time->toTime) + " s (got " + io::formatShort(request.drawAt) + " s)"};
+                   "the drawn time (--at) must be within the time span, " + kinematics::formatShort(time->fromTime) +
+                       " to " + kinematics::formatShort(time->toTime) + " s (got " +
+                       kinematics::formatShort(request.drawAt) + " s)"};
     return std::nullopt;
   }
   if (!(std::isfinite(request.tableStep) && request.tableStep > 0.0 && request.tableStep <= std::max(span, 1e-300)))
     return Error{ErrorCode::InvalidValue, "tableStep",
                  "the table step must be positive and at most the range tabulated, " +
-                     io::formatShort(inputDisplayValue(m, request.grid.fromAngle + span) -
-                                     inputDisplayValue(m, request.grid.fromAngle)) +
-                     " (got " + io::formatShort(inputDisplayValue(m, request.tableStep)) + ")"};
+                     kinematics::formatShort(inputDisplayValue(m, request.grid.fromAngle + span) -
+                                             inputDisplayValue(m, request.grid.fromAngle)) +
+                     " (got " + kinematics::formatShort(inputDisplayValue(m, request.tableStep)) + ")"};
   return std::nullopt;
 }
 
@@ -213,7 +216,7 @@ Result<ReportContent> buildReport(const Mechanism& m, const LinkageDynamics& dyn
   const std::vector<SweepColumn> columns = reportColumns(m, *table);
   report.table = sweepTable(m, *table, columns, request.units);
   report.tableCaption =
-      tSpec.time ? timeCaption(m, tSpec, "every " + io::formatShort(request.tableStep) + " s")
+      tSpec.time ? timeCaption(m, tSpec, "every " + kinematics::formatShort(request.tableStep) + " s")
                  : gridCaption(m, tSpec, "every " + inputText(m, request.tableStep, false), request.units.rates);
   report.extremes = extremesTable(m, request.grid, *fine, columns, request.units);
   const std::string refined = "refined between " + std::to_string(request.grid.samples) + " samples";

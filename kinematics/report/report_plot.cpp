@@ -2,7 +2,7 @@
 // grid lines, one coloured curve per quantity (the palette of the CLI's SVG plots) and a
 // legend to the right of the plot area. Curves are broken where the quantity is undefined.
 
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/report/report_layout.h"
 
 #include <algorithm>
@@ -40,7 +40,7 @@ std::pair<Range, double> axisRange(double lo, double hi, int wanted) {
 
 std::string tickText(double v, double step) {
   const int decimals = step >= 1.0 ? 0 : static_cast<int>(std::ceil(-std::log10(step) - 1e-9));
-  return io::formatFixed(std::abs(v) < step * 1e-9 ? 0.0 : v, decimals);
+  return kinematics::formatFixed(std::abs(v) < step * 1e-9 ? 0.0 : v, decimals);
 }
 
 void dataBounds(const ReportPlot& plot, Range& x, Range& y) {

@@ -1,8 +1,8 @@
 #include "kinematics/report/report_sections.h"
 
 #include "kinematics/design/design_analysis.h"
-#include "kinematics/io/number_format.h"
 #include "kinematics/model/driver.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
@@ -13,8 +13,8 @@ namespace linkwright::kinematics::report {
 namespace {
 
 using io::ColumnQuantity;
-using io::formatFixed;
-using io::formatShort;
+using kinematics::formatFixed;
+using kinematics::formatShort;
 
 std::string deg(double radians) { return formatFixed(radToDeg(radians), 2) + "°"; }
 

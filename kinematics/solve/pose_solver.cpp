@@ -1,8 +1,8 @@
 #include "kinematics/solve/pose_solver.h"
 
-#include "kinematics/io/number_format.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/path_shape.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
@@ -496,8 +496,8 @@ std::string describeFreeGroup(const Mechanism& m, const PoseReport& report, cons
     where = ", worst at " + (link.empty() ? ends : link + " " + ends);
   }
   return names + " cannot be assembled" + at + ": Newton did not converge (residual " +
-         io::formatShort(report.residual, 3) + " " + m.lengthUnit + " after " + std::to_string(report.iterations) +
-         " iterations" + where + "); the linkage probably cannot close here";
+         kinematics::formatShort(report.residual, 3) + " " + m.lengthUnit + " after " +
+         std::to_string(report.iterations) + " iterations" + where + "); the linkage probably cannot close here";
 }
 
 // An actuator that cannot reach or is at a toggle: the dyad's sentence, with the actuator's
@@ -514,13 +514,13 @@ std::string describeActuator(const Mechanism& m, const PoseReport& report, const
            " are collinear, so the actuator cannot move it there";
   if (!(q > 0.0)) return name + " cannot be placed" + at + ": an actuator's length must be positive";
   const double apart = (pose.position[a.base.index] - pose.position[a.first.index]).norm();
-  const std::string gap = n1 + " and " + base + " are " + io::formatShort(apart) + unit + " apart, ";
+  const std::string gap = n1 + " and " + base + " are " + kinematics::formatShort(apart) + unit + " apart, ";
   if (report.failure == AssemblyFailure::TooFar)
     return name + " cannot be assembled" + at + ": " + gap + "more than " + len1 +
-           " + actuator = " + io::formatShort(a.length + q) + unit;
+           " + actuator = " + kinematics::formatShort(a.length + q) + unit;
   if (report.failure == AssemblyFailure::TooClose)
     return name + " cannot be assembled" + at + ": " + gap + "less than |" + len1 +
-           " − actuator| = " + io::formatShort(std::abs(a.length - q)) + unit;
+           " − actuator| = " + kinematics::formatShort(std::abs(a.length - q)) + unit;
   return name + " cannot be assembled" + at + ": " + n1 + " and " + base + " coincide, so " + name + " is undetermined";
 }
 
@@ -594,7 +594,7 @@ std::string describeFailure(const Mechanism& m, const PoseReport& report, const 
   const std::size_t i = report.culprit.index;
   const std::string& name = m.points[i].name;
   const std::string unit = inputUnit(m);
-  const std::string at = " at " + inputName(m) + " " + io::formatShort(inputDisplayValue(m, inputAngle)) +
+  const std::string at = " at " + inputName(m) + " " + kinematics::formatShort(inputDisplayValue(m, inputAngle)) +
                          (unit == "°" ? unit : " " + unit);
   if (std::holds_alternative<FreePoint>(m.points[i].definition) && report.status != PoseStatus::Ok)
     return describeFreeGroup(m, report, pose, at);
@@ -606,8 +606,9 @@ std::string describeFailure(const Mechanism& m, const PoseReport& report, const 
              " is at right angles to the guide, so velocity and acceleration are undefined there";
     const GuideLine line = guideLineAt(m, p->guide, pose);
     const double distance = std::abs(cross(line.direction, line.point - pose.position[p->first.index]));
-    return name + " cannot be assembled" + at + ": " + n1 + " is " + io::formatShort(distance) + " " + m.lengthUnit +
-           " from the guide, more than the " + rod + " length " + io::formatShort(p->length) + " " + m.lengthUnit;
+    return name + " cannot be assembled" + at + ": " + n1 + " is " + kinematics::formatShort(distance) + " " +
+           m.lengthUnit + " from the guide, more than the " + rod + " length " + kinematics::formatShort(p->length) +
+           " " + m.lengthUnit;
   }
   if (std::holds_alternative<PrpPoint>(m.points[i].definition) && report.status != PoseStatus::Ok)
     return name + (report.status == PoseStatus::Singular ? " is at a toggle position" : " cannot be assembled") + at +
@@ -629,14 +630,15 @@ std::string describeFailure(const Mechanism& m, const PoseReport& report, const 
     return name + " is at a toggle position" + at + ": " + len1 + " and " + len2 +
            " are collinear, so angular velocity and acceleration are undefined there";
   const double apart = (pose.position[r->second.index] - pose.position[r->first.index]).norm();
-  const std::string gap = n1 + " and " + n2 + " are " + io::formatShort(apart) + " " + m.lengthUnit + " apart, ";
+  const std::string gap =
+      n1 + " and " + n2 + " are " + kinematics::formatShort(apart) + " " + m.lengthUnit + " apart, ";
   switch (report.failure) {
   case AssemblyFailure::TooFar:
     return name + " cannot be assembled" + at + ": " + gap + "more than " + len1 + " + " + len2 + " = " +
-           io::formatShort(r->firstLength + r->secondLength) + " " + m.lengthUnit;
+           kinematics::formatShort(r->firstLength + r->secondLength) + " " + m.lengthUnit;
   case AssemblyFailure::TooClose:
     return name + " cannot be assembled" + at + ": " + gap + "less than |" + len1 + " − " + len2 +
-           "| = " + io::formatShort(std::abs(r->firstLength - r->secondLength)) + " " + m.lengthUnit;
+           "| = " + kinematics::formatShort(std::abs(r->firstLength - r->secondLength)) + " " + m.lengthUnit;
   case AssemblyFailure::Coincident:
   case AssemblyFailure::Parallel:
   case AssemblyFailure::NoConvergence:

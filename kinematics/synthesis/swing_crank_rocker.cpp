@@ -1,6 +1,6 @@
 #include "kinematics/synthesis/swing_crank_rocker.h"
 
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/model/vec2.h"
 #include "kinematics/synthesis/defects.h"
@@ -188,8 +188,8 @@ Result<CrankRockerCandidate> candidateAt(const SwingTarget& t, const Constructio
     e.field = "length";
     e.message = "the crank-rocker at parameter " + formatNumber(p) + " cannot be built: " + e.message;
     if (from <= to)
-      e.message += "; it can with a " + given + " length between " + io::formatShort(from, 3) + " and " +
-                   io::formatShort(to, 3) + " " + t.lengthUnit;
+      e.message += "; it can with a " + given + " length between " + kinematics::formatShort(from, 3) + " and " +
+                   kinematics::formatShort(to, 3) + " " + t.lengthUnit;
     return e;
   }
   const FourBarCheck check = checkFourBar(

@@ -19,8 +19,8 @@
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/force_columns.h"
-#include "kinematics/io/number_format.h"
 #include "kinematics/io/sweep_columns.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/sweep.h"
 
@@ -139,10 +139,10 @@ void formatTable(const Table& t, std::string& out, Format format) {
   }
 }
 
-// The writer's own cell texts (number_format.h), one std::string each: the CLI's bytes
+// The writer's own cell texts (number_text.h), one std::string each: the CLI's bytes
 // without the stream.
 void cliCells(std::string& out, double value, bool grid) {
-  out += grid ? io::formatShort(value, 12) : io::formatDouble(value);
+  out += grid ? formatShort(value, 12) : formatDouble(value);
 }
 
 void printf17g(std::string& out, double value, bool) {

@@ -8,8 +8,8 @@
 
 #include "kinematics/design/examples.h"
 #include "kinematics/dynamics/force_sweep.h"
-#include "kinematics/io/number_format.h"
 #include "kinematics/io/sweep_columns.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/report/report_content.h"
 #include "kinematics/solve/sweep.h"
@@ -72,7 +72,7 @@ bool hasRow(const std::string& text, const std::vector<std::string>& cells) {
   return false;
 }
 
-std::string fixed(double v) { return k::io::formatFixed(v, k::report::kTableDecimals); }
+std::string fixed(double v) { return k::formatFixed(v, k::report::kTableDecimals); }
 
 // The thesis crank-rocker's sweep every 30° from the example's own speed: what the table shows.
 k::SweepResult thesisEvery30(const k::Example& e) {

@@ -12,8 +12,8 @@
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/column_extrema.h"
 #include "kinematics/io/csv_writer.h"
-#include "kinematics/io/number_format.h"
 #include "kinematics/io/sweep_columns.h"
+#include "kinematics/model/number_text.h"
 
 #include "tests/support/catch.h"
 #include "tests/support/memory_limit.h"
@@ -106,8 +106,8 @@ TEST_CASE("extremes over many windows are the whole sweep's, and need no more me
     const auto at = run.out.find("\n" + column.name + " ");
     REQUIRE(at != std::string::npos);
     const std::string row = run.out.substr(at + 1, run.out.find('\n', at + 1) - at - 1);
-    CHECK(row.find(kinematics::io::formatShort(e->minimum.value, 9)) != std::string::npos);
-    CHECK(row.find(kinematics::io::formatShort(e->maximum.value, 9)) != std::string::npos);
+    CHECK(row.find(kinematics::formatShort(e->minimum.value, 9)) != std::string::npos);
+    CHECK(row.find(kinematics::formatShort(e->maximum.value, 9)) != std::string::npos);
     ++rows;
   }
   CHECK(rows > 30);

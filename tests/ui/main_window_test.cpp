@@ -24,8 +24,8 @@
 #include "kinematics/design/design.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/io/link_drawing.h"
-#include "kinematics/io/number_format.h"
 #include "kinematics/model/fourbar.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 
 #include "tests/ui/support/read_file.h"
@@ -55,7 +55,7 @@ namespace {
 
 // The linkwright-cli command line that describes the same table as the design.
 std::vector<std::string> cliArguments(const kinematics::Design& d) {
-  using kinematics::io::formatDouble;
+  using kinematics::formatDouble;
   const kinematics::FourBarStructure s = kinematics::asFourBar(d.mechanism).value();
   const auto& l = s.lengths;
   std::vector<std::string> args{"analyze",

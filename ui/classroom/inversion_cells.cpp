@@ -3,7 +3,7 @@
 #include "ui/colors.h"
 
 #include "kinematics/analysis/inversions.h"
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/recognise.h"
 
 #include <QCoreApplication>
@@ -18,7 +18,7 @@ namespace {
 
 QString tr(const char* text) { return QCoreApplication::translate("InversionCells", text); }
 
-QString number(double value) { return QString::fromStdString(k::io::formatShort(value)); }
+QString number(double value) { return QString::fromStdString(k::formatShort(value)); }
 
 QString fromStd(std::string_view text) { return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size())); }
 

@@ -1,7 +1,7 @@
 #include "ui/compare/column_map_editor.h"
 
 #include "kinematics/compare/header_mapping.h"
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -59,7 +59,7 @@ void ColumnMapEditor::setTable(const k::io::NumericTable& table, const k::Mechan
     std::string first;
     for (const k::io::NumericRow& r : table.rows)
       if (r.cells[c]) {
-        first = k::io::formatShort(*r.cells[c]);
+        first = k::formatShort(*r.cells[c]);
         break;
       }
     auto* value = new QTableWidgetItem(QString::fromStdString(first));

@@ -4,7 +4,7 @@
 
 #include "ui/compare/column_map_editor.h"
 
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -26,9 +26,7 @@ namespace {
 namespace k = kinematics;
 namespace kc = kinematics::compare;
 
-QString number(double value, int significant = 6) {
-  return QString::fromStdString(k::io::formatShort(value, significant));
-}
+QString number(double value, int significant = 6) { return QString::fromStdString(k::formatShort(value, significant)); }
 
 QTableWidget* resultTable(const QStringList& headers, QWidget* parent) {
   auto* table = new QTableWidget(0, static_cast<int>(headers.size()), parent);

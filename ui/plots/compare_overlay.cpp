@@ -1,6 +1,6 @@
 #include "ui/plots/compare_overlay.h"
 
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 
 #include <QCoreApplication>
 
@@ -14,7 +14,7 @@ namespace kc = kinematics::compare;
 
 QString tr(const char* text) { return QCoreApplication::translate("CompareOverlay", text); }
 
-QString number(double value) { return QString::fromStdString(k::io::formatShort(value, 4)); }
+QString number(double value) { return QString::fromStdString(k::formatShort(value, 4)); }
 
 // A row's place on x: its time on a time axis (only a time table has one), else its input.
 std::optional<double> rowX(const kc::Comparison& c, const kc::RowComparison& row, const PlotXAxis& x, AngleUnit unit) {

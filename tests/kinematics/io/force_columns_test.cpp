@@ -4,8 +4,8 @@
 #include "kinematics/io/force_columns.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/io/csv_writer.h"
-#include "kinematics/io/number_format.h"
 #include "kinematics/model/fourbar.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/shaper.h"
 #include "kinematics/model/units.h"
 

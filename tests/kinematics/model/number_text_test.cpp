@@ -1,8 +1,8 @@
-// Tests kinematics/io/number_format.h: shortest round-trip text (read back bit for bit), the
+// Tests kinematics/model/number_text.h: shortest round-trip text (read back bit for bit), the
 // folding of −0, non-finite spellings, short and fixed forms, and independence from the
 // global C++ locale.
 
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 
 #include "tests/support/catch.h"
 
@@ -16,7 +16,7 @@
 #include <sstream>
 #include <string>
 
-using namespace linkwright::kinematics::io;
+using namespace linkwright::kinematics;
 
 namespace {
 
@@ -38,7 +38,7 @@ struct CommaDecimal : std::numpunct<char> {
 
 }  // namespace
 
-TEST_CASE("formatDouble reads back to the same bits", "[number_format]") {
+TEST_CASE("formatDouble reads back to the same bits", "[number_text]") {
   const double values[] = {1.0,
                            -1.0,
                            0.1,
@@ -67,7 +67,7 @@ TEST_CASE("formatDouble reads back to the same bits", "[number_format]") {
   }
 }
 
-TEST_CASE("formatDouble round-trips random bit patterns", "[number_format]") {
+TEST_CASE("formatDouble round-trips random bit patterns", "[number_text]") {
   std::mt19937_64 rng(0x5eed1234u);
   int checked = 0;
   while (checked < 20000) {
@@ -80,7 +80,7 @@ TEST_CASE("formatDouble round-trips random bit patterns", "[number_format]") {
   SUCCEED("20000 random doubles read back exactly");
 }
 
-TEST_CASE("formatDouble is the shortest text, and never nan or inf", "[number_format]") {
+TEST_CASE("formatDouble is the shortest text, and never nan or inf", "[number_text]") {
   CHECK(formatDouble(70.0) == "70");
   CHECK(formatDouble(-70.0) == "-70");
   CHECK(formatDouble(0.1) == "0.1");
@@ -94,7 +94,7 @@ TEST_CASE("formatDouble is the shortest text, and never nan or inf", "[number_fo
   CHECK(formatDouble(-std::numeric_limits<double>::infinity()).empty());
 }
 
-TEST_CASE("the other writers spell a value that is not finite as null or undefined", "[number_format]") {
+TEST_CASE("the other writers spell a value that is not finite as null or undefined", "[number_text]") {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   CHECK(formatJsonNumber(0.25) == "0.25");
@@ -112,7 +112,7 @@ TEST_CASE("the other writers spell a value that is not finite as null or undefin
   CHECK(formatFixed(-1.7976931348623157e308, 2).size() == 1 + 309 + 3);
 }
 
-TEST_CASE("formatShort keeps the requested significant digits", "[number_format]") {
+TEST_CASE("formatShort keeps the requested significant digits", "[number_text]") {
   CHECK(formatShort(115.0) == "115");
   CHECK(formatShort(1.0 / 3.0) == "0.333333");
   CHECK(formatShort(1e-6) == "1e-06");
@@ -124,7 +124,7 @@ TEST_CASE("formatShort keeps the requested significant digits", "[number_format]
   CHECK(formatShort(123456789.0) == "1.23457e+08");
 }
 
-TEST_CASE("formatFixed rounds to the given decimals and drops a lone minus", "[number_format]") {
+TEST_CASE("formatFixed rounds to the given decimals and drops a lone minus", "[number_text]") {
   CHECK(formatFixed(25.2087, 2) == "25.21");
   CHECK(formatFixed(2.0 / 3.0, 3) == "0.667");
   CHECK(formatFixed(-1.5, 1) == "-1.5");
@@ -139,7 +139,7 @@ TEST_CASE("formatFixed rounds to the given decimals and drops a lone minus", "[n
   CHECK(formatFixed(1e6, 1) == "1000000.0");
 }
 
-TEST_CASE("Number formatting ignores the global C++ locale", "[number_format]") {
+TEST_CASE("Number formatting ignores the global C++ locale", "[number_text]") {
   const std::locale previous = std::locale::global(std::locale(std::locale::classic(), new CommaDecimal));
   // The facet is live: a stream in the global locale now writes a decimal comma.
   std::ostringstream probe;

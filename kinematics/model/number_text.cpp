@@ -1,10 +1,10 @@
-#include "kinematics/io/number_format.h"
+#include "kinematics/model/number_text.h"
 
 #include <array>
 #include <charconv>
 #include <cmath>
 
-namespace linkwright::kinematics::io {
+namespace linkwright::kinematics {
 
 namespace {
 const std::string kUndefined = "undefined";
@@ -44,4 +44,4 @@ std::string formatFixed(double value, int decimals) {
   return text;
 }
 
-}  // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics

@@ -7,7 +7,7 @@
 
 #include <string>
 
-namespace linkwright::kinematics::io {
+namespace linkwright::kinematics {
 
 /// Shortest round-trip decimal text of `value`, '.' as decimal point whatever the locale.
 /// Negative zero prints as "0"; NaN and infinities print as "" (an empty CSV cell).
@@ -24,4 +24,4 @@ std::string formatShort(double value, int significant = 6);
 /// "undefined" for NaN and infinities.
 std::string formatFixed(double value, int decimals);
 
-}  // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics
