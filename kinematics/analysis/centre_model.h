@@ -18,9 +18,9 @@
 //   coupler, a shaper's link), whose frame is its first link (first point → second).
 
 #include "kinematics/analysis/instant_centres.h"
-#include "kinematics/dynamics/rigid_bodies.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/model/result.h"
+#include "kinematics/solve/rigid_bodies.h"
 
 #include <cstddef>
 #include <optional>

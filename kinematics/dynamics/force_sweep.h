@@ -7,9 +7,9 @@
 
 #include "kinematics/dynamics/inverse_dynamics.h"
 #include "kinematics/dynamics/mass_properties.h"
-#include "kinematics/dynamics/rigid_bodies.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/model/result.h"
+#include "kinematics/solve/rigid_bodies.h"
 #include "kinematics/solve/sweep.h"
 
 #include <Eigen/Core>

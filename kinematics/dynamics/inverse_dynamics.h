@@ -58,10 +58,10 @@
 //       τ_elbow    = (P − E) × F   (on the forearm from the upper link), N·m, CCW +.
 
 #include "kinematics/dynamics/mass_properties.h"
-#include "kinematics/dynamics/rigid_bodies.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/model/result.h"
 #include "kinematics/solve/pose.h"
+#include "kinematics/solve/rigid_bodies.h"
 
 #include <Eigen/Core>
 #include <Eigen/LU>

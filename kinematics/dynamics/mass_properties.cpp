@@ -1,7 +1,7 @@
 #include "kinematics/dynamics/mass_properties.h"
 
-#include "kinematics/dynamics/rigid_bodies.h"
 #include "kinematics/model/validate.h"
+#include "kinematics/solve/rigid_bodies.h"
 
 #include <cmath>
 #include <set>

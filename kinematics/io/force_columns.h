@@ -26,7 +26,7 @@
 // several joints, and _<rpr point> or _1/_2 for slider blocks.
 
 #include "kinematics/dynamics/force_sweep.h"
-#include "kinematics/dynamics/rigid_bodies.h"
+#include "kinematics/solve/rigid_bodies.h"
 
 #include <string>
 #include <vector>

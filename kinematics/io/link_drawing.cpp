@@ -1,8 +1,8 @@
 #include "kinematics/io/link_drawing.h"
 
-#include "kinematics/dynamics/rigid_bodies.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/model/vec2.h"
+#include "kinematics/solve/rigid_bodies.h"
 
 #include <algorithm>
 #include <cctype>

@@ -6,7 +6,7 @@
 #include "ui/document/mechanism_document.h"
 #include "ui/geometry.h"
 
-#include "kinematics/dynamics/rigid_bodies.h"
+#include "kinematics/solve/rigid_bodies.h"
 
 #include <QCoreApplication>
 #include <QPainter>

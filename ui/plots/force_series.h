@@ -11,7 +11,7 @@
 #include "ui/plots/series_data.h"
 
 #include "kinematics/dynamics/force_sweep.h"
-#include "kinematics/dynamics/rigid_bodies.h"
+#include "kinematics/solve/rigid_bodies.h"
 #include "kinematics/solve/sweep.h"
 
 #include <QColor>

@@ -9,10 +9,10 @@
 #include "kinematics/analysis/centre_model.h"
 #include "kinematics/analysis/instant_centres.h"
 #include "kinematics/design/examples.h"
-#include "kinematics/dynamics/rigid_bodies.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/vec2.h"
 #include "kinematics/solve/pose_solver.h"
+#include "kinematics/solve/rigid_bodies.h"
 
 #include "tests/support/catch.h"
 

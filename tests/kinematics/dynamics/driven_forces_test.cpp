@@ -6,12 +6,12 @@
 
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/dynamics/inverse_dynamics.h"
-#include "kinematics/dynamics/rigid_bodies.h"
 #include "kinematics/io/force_columns.h"
 #include "kinematics/model/driven_linkages.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/path_shape.h"
 #include "kinematics/model/vec2.h"
+#include "kinematics/solve/rigid_bodies.h"
 #include "kinematics/solve/sweep.h"
 
 #include "tests/kinematics/dynamics/dynamics_cases.h"

@@ -7,12 +7,12 @@
 
 #include "kinematics/dynamics/inverse_dynamics.h"
 #include "kinematics/dynamics/mass_properties.h"
-#include "kinematics/dynamics/rigid_bodies.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/vec2.h"
 #include "kinematics/solve/guide_line.h"
 #include "kinematics/solve/pose.h"
+#include "kinematics/solve/rigid_bodies.h"
 
 #include <Eigen/Core>
 

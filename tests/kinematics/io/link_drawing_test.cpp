@@ -7,10 +7,10 @@
 #include "kinematics/io/link_drawing.h"
 
 #include "kinematics/design/examples.h"
-#include "kinematics/dynamics/rigid_bodies.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/motion_law.h"
 #include "kinematics/solve/pose_solver.h"
+#include "kinematics/solve/rigid_bodies.h"
 
 #include "tests/support/catch.h"
 

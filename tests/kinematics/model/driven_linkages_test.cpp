@@ -9,13 +9,13 @@
 #include "kinematics/analysis/two_link_arm.h"
 #include "kinematics/design/design.h"
 #include "kinematics/design/point_drag.h"
-#include "kinematics/dynamics/rigid_bodies.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/path_shape.h"
 #include "kinematics/model/slider_crank.h"
 #include "kinematics/model/units.h"
+#include "kinematics/solve/rigid_bodies.h"
 
 #include "tests/support/approx.h"
 

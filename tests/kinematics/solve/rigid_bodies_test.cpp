@@ -1,7 +1,7 @@
 // Bodies and joints found from point definitions (rigid_bodies.h): counts, which points each
 // body holds, the hub rule, the driven body and the Gruebler count of every kind of linkage.
 
-#include "kinematics/dynamics/rigid_bodies.h"
+#include "kinematics/solve/rigid_bodies.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/shaper.h"

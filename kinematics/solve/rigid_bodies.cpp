@@ -1,4 +1,4 @@
-#include "kinematics/dynamics/rigid_bodies.h"
+#include "kinematics/solve/rigid_bodies.h"
 
 #include "kinematics/model/driver.h"
 #include "kinematics/solve/guide_line.h"

@@ -1,6 +1,7 @@
 #pragma once
 // The rigid bodies and joints of a linkage, found from its point definitions: what inverse
-// dynamics (inverse_dynamics.h) writes Newton–Euler equations for. The Mechanism lists points
+// dynamics (dynamics/inverse_dynamics.h) writes Newton–Euler equations for and the instant
+// centres (analysis/centre_model.h) number. It sits in solve, below both. The Mechanism lists points
 // and the links it reports; forces need bodies, so the bars each definition implies are merged:
 //
 //   Bars. A crank joins its pivot and tip; an actuator's end C joins C to its first point (the
