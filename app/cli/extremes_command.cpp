@@ -3,10 +3,10 @@
 
 #include "kinematics/analysis/extrema.h"
 #include "kinematics/io/column_extrema.h"
-#include "kinematics/io/sweep_columns.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
+#include "kinematics/solve/sweep_columns.h"
 
 #include <iomanip>
 #include <ostream>
@@ -52,9 +52,8 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
   const auto summary =
       k::sweepInWindows(m, *spec, {}, kSweepWindowSamples, [&](const k::SweepResult& part, std::size_t first) {
         if (first == 0)
-          for (const k::io::SweepColumn& column : k::io::sweepColumns(m, part.request))
-            if (column.quantity != k::io::ColumnQuantity::InputAngle &&
-                column.quantity != k::io::ColumnQuantity::InputLength)
+          for (const k::SweepColumn& column : k::sweepColumns(m, part.request))
+            if (column.quantity != k::ColumnQuantity::InputAngle && column.quantity != k::ColumnQuantity::InputLength)
               columns.emplace_back(column);
         for (k::io::ColumnExtremaScan& scan : columns) scan.add(part, first);
         for (std::size_t p = 0; p < moving.size(); ++p) {

@@ -8,12 +8,12 @@
 namespace linkwright::cli {
 
 void SweepTableWriter::writeHeader(const kinematics::SweepResult& r, const kinematics::ForceSweep* forces) {
-  using kinematics::io::ColumnQuantity;
+  using kinematics::ColumnQuantity;
   const kinematics::Mechanism& m = m_mechanism;
-  for (auto& c : kinematics::io::sweepColumns(m, r.request, !r.time.empty())) {
+  for (auto& c : kinematics::sweepColumns(m, r.request, !r.time.empty())) {
     // The crank's own ω and α are the constant input: the CSV has them, the table need not.
     const bool crankRate = (c.quantity == ColumnQuantity::LinkOmega || c.quantity == ColumnQuantity::LinkAlpha) &&
-                           kinematics::io::isDrivenCrankLink(m, kinematics::LinkId{c.index});
+                           kinematics::isDrivenCrankLink(m, kinematics::LinkId{c.index});
     if (c.quantity <= ColumnQuantity::TransmissionAngle && !crankRate) m_columns.push_back(std::move(c));
   }
   if (forces)

@@ -8,9 +8,9 @@
 
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/force_columns.h"
-#include "kinematics/io/sweep_columns.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/solve/sweep.h"
+#include "kinematics/solve/sweep_columns.h"
 
 #include <ostream>
 #include <vector>
@@ -32,7 +32,7 @@ private:
   const kinematics::Mechanism& m_mechanism;
   int m_decimals;
   bool m_headerWritten = false;
-  std::vector<kinematics::io::SweepColumn> m_columns;
+  std::vector<kinematics::SweepColumn> m_columns;
   std::vector<kinematics::io::ForceColumn> m_forceColumns;
   std::vector<int> m_widths;
 };

@@ -1,11 +1,11 @@
 #include "kinematics/analysis/sampling_accuracy.h"
 
 #include "kinematics/analysis/extrema.h"
-#include "kinematics/io/sweep_columns.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/solve/sweep.h"
+#include "kinematics/solve/sweep_columns.h"
 
 #include <algorithm>
 #include <cmath>
@@ -74,7 +74,7 @@ Result<PeakSet> exactPeaks(const Mechanism& m, double omega, std::size_t n) {
     return refineExtrema(m, spec, values, valid, q, 1e-12);
   };
   for (std::size_t k = 0; k < links; ++k) {
-    if (io::isDrivenCrankLink(m, LinkId{k})) continue;
+    if (kinematics::isDrivenCrankLink(m, LinkId{k})) continue;
     if (const auto w = refine(full->linkOmega[k], [k](const Pose& x, double) { return x.linkOmega[k]; }))
       p.linkOmega[k] = maxAbs(*w);
     if (const auto a = refine(full->linkAlpha[k], [k](const Pose& x, double) { return x.linkAlpha[k]; }))
@@ -123,7 +123,7 @@ Result<PeakSet> sampledPeaks(const Mechanism& m, double omega, std::size_t n, De
   PeakSet p;
   const std::size_t links = allocate(m, p);
   for (std::size_t k = 0; k < links; ++k) {
-    if (io::isDrivenCrankLink(m, LinkId{k})) continue;
+    if (kinematics::isDrivenCrankLink(m, LinkId{k})) continue;
     const auto& a = s->linkAngle[k];
     for (std::size_t j = 0; j < n; ++j) {
       const double w = exact ? s->linkOmega[k][j] : wrap(a[next(j)] - a[prev(j)]) / (2.0 * dt);

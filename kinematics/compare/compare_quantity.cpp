@@ -7,7 +7,7 @@
 namespace linkwright::kinematics::compare {
 namespace {
 
-using io::ColumnQuantity;
+using kinematics::ColumnQuantity;
 
 struct Shape {
   Dimension dimension;
@@ -55,7 +55,7 @@ std::vector<UnitChoice> lengthUnits(const std::string& lengthUnit, const std::st
 
 std::vector<CompareQuantity> compareQuantities(const Mechanism& m) {
   std::vector<CompareQuantity> quantities;
-  for (const io::SweepColumn& column : io::sweepColumns(m, SolveRequest{true, true})) {
+  for (const kinematics::SweepColumn& column : kinematics::sweepColumns(m, SolveRequest{true, true})) {
     if (column.quantity == ColumnQuantity::Time) continue;
     const Shape shape = shapeOf(column.quantity, m.lengthUnit);
     std::string key = column.name;

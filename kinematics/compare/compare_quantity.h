@@ -1,14 +1,14 @@
 #pragma once
 // What a column of another tool's table can be compared with, and in which units. The
-// quantities are the columns `analyze` writes (kinematics/io/sweep_columns.h), named without
+// quantities are the columns `analyze` writes (kinematics/solve/sweep_columns.h), named without
 // their unit suffix: "coupler_angle", "rocker_omega", "rocker_alpha", "transmission_angle",
 // "C_x", "C_vx", "C_ax", the input "crank_angle". A slider's position, velocity and
 // acceleration are its point's x/y, vx/vy and ax/ay. Each quantity has a dimension, and each
 // dimension the units another tool may write it in, with the factor to the unit the sweep
 // columns use (degrees for angles, rad/s, rad/s², the linkage's length unit).
 
-#include "kinematics/io/sweep_columns.h"
 #include "kinematics/model/mechanism.h"
+#include "kinematics/solve/sweep_columns.h"
 
 #include <optional>
 #include <string>
@@ -23,7 +23,7 @@ enum class Dimension { Angle, AngularRate, AngularAcceleration, Length, Velocity
 /// unit ("rocker_omega" for "rocker_omega_rad_s").
 struct CompareQuantity {
   std::string key;
-  io::SweepColumn column;
+  kinematics::SweepColumn column;
   Dimension dimension = Dimension::Angle;
 };
 

@@ -6,7 +6,7 @@
 // extremes of 10⁷ samples need no more memory than those of 361.
 
 #include "kinematics/analysis/extrema.h"
-#include "kinematics/io/sweep_columns.h"
+#include "kinematics/solve/sweep_columns.h"
 
 #include <optional>
 

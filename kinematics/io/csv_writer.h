@@ -7,9 +7,9 @@
 
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/force_columns.h"
-#include "kinematics/io/sweep_columns.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/solve/sweep.h"
+#include "kinematics/solve/sweep_columns.h"
 
 #include <ostream>
 #include <string>

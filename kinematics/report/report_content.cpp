@@ -3,12 +3,12 @@
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/column_extrema.h"
 #include "kinematics/io/force_columns.h"
-#include "kinematics/io/sweep_columns.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/report/report_sections.h"
 #include "kinematics/solve/motion_law.h"
+#include "kinematics/solve/sweep_columns.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,9 +16,9 @@
 namespace linkwright::kinematics::report {
 namespace {
 
-using io::ColumnQuantity;
-using io::SweepColumn;
+using kinematics::ColumnQuantity;
 using kinematics::formatFixed;
+using kinematics::SweepColumn;
 
 constexpr std::size_t kPlotSamples = 721;
 

@@ -12,7 +12,7 @@
 namespace linkwright::kinematics::report {
 namespace {
 
-using io::ColumnQuantity;
+using kinematics::ColumnQuantity;
 using kinematics::formatFixed;
 using kinematics::formatShort;
 
@@ -61,7 +61,7 @@ void fourBarLines(const DesignAnalysis& a, const std::string& u, std::vector<Inf
 
 }  // namespace
 
-TableColumn columnHeading(const Mechanism& m, const io::SweepColumn& c, const ReportUnits& units) {
+TableColumn columnHeading(const Mechanism& m, const kinematics::SweepColumn& c, const ReportUnits& units) {
   const std::string& u = m.lengthUnit;
   const std::string angular = units.rates == RateUnit::Degrees ? "deg" : "rad";
   const std::string angle = units.angles == AngleUnit::Radians ? "rad" : "deg";
@@ -83,7 +83,7 @@ TableColumn columnHeading(const Mechanism& m, const io::SweepColumn& c, const Re
   return {c.name, ""};
 }
 
-double unitScale(const io::SweepColumn& c, const ReportUnits& units) {
+double unitScale(const kinematics::SweepColumn& c, const ReportUnits& units) {
   const bool linkRate = c.quantity == ColumnQuantity::LinkOmega || c.quantity == ColumnQuantity::LinkAlpha;
   const bool angle = c.quantity == ColumnQuantity::LinkAngle || c.quantity == ColumnQuantity::TransmissionAngle;
   if (linkRate && units.rates == RateUnit::Degrees) return radToDeg(1.0);
@@ -91,7 +91,7 @@ double unitScale(const io::SweepColumn& c, const ReportUnits& units) {
   return 1.0;
 }
 
-std::string columnName(const io::SweepColumn& c, const ReportUnits& units) {
+std::string columnName(const kinematics::SweepColumn& c, const ReportUnits& units) {
   if (unitScale(c, units) == 1.0) return c.name;
   // analyze's names end in _rad_s or _rad_s2 for a link's ω and α, in _deg for an angle.
   if (const std::size_t at = c.name.rfind("_rad_s"); at != std::string::npos)
@@ -100,13 +100,13 @@ std::string columnName(const io::SweepColumn& c, const ReportUnits& units) {
   return c.name;
 }
 
-std::vector<io::SweepColumn> reportColumns(const Mechanism& m, const SweepResult& r) {
-  std::vector<io::SweepColumn> columns;
+std::vector<kinematics::SweepColumn> reportColumns(const Mechanism& m, const SweepResult& r) {
+  std::vector<kinematics::SweepColumn> columns;
   const bool timeBase = !r.time.empty();
-  for (io::SweepColumn& c : io::sweepColumns(m, r.request, timeBase)) {
+  for (kinematics::SweepColumn& c : kinematics::sweepColumns(m, r.request, timeBase)) {
     const bool linkRate = c.quantity == ColumnQuantity::LinkOmega || c.quantity == ColumnQuantity::LinkAlpha;
     // On a grid the crank's ω and α are the grid's constants; on a time base the law's.
-    if (linkRate && !timeBase && io::isDrivenCrankLink(m, LinkId{c.index})) continue;
+    if (linkRate && !timeBase && kinematics::isDrivenCrankLink(m, LinkId{c.index})) continue;
     bool keep = c.quantity <= ColumnQuantity::TransmissionAngle;
     if (c.quantity > ColumnQuantity::TransmissionAngle && isSliderPin(m, c.index)) {
       const bool inY = c.quantity == ColumnQuantity::PointY || c.quantity == ColumnQuantity::PointVy ||

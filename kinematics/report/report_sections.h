@@ -4,8 +4,8 @@
 // analyseDesign, as `linkwright-cli classify` prints it), the drawing at one input, and the
 // notes on toggles and inputs that do not assemble.
 
-#include "kinematics/io/sweep_columns.h"
 #include "kinematics/report/report_content.h"
+#include "kinematics/solve/sweep_columns.h"
 
 #include <string>
 #include <vector>
@@ -14,28 +14,29 @@ namespace linkwright::kinematics::report {
 
 /// The heading of a sweep column: "rocker θ" in "deg" or "rad", "C vx" in "mm/s", "rocker ω" in
 /// "rad/s" or "deg/s", as `units` says.
-TableColumn columnHeading(const Mechanism& mechanism, const io::SweepColumn& column, const ReportUnits& units = {});
+TableColumn columnHeading(const Mechanism& mechanism, const kinematics::SweepColumn& column,
+                          const ReportUnits& units = {});
 
 /// What a value of `column` (in the sweep column's unit) is multiplied by to be in `units`:
 /// 180/π for a link's ω and α in degrees, π/180 for a link or transmission angle in radians,
 /// else 1.
-double unitScale(const io::SweepColumn& column, const ReportUnits& units);
+double unitScale(const kinematics::SweepColumn& column, const ReportUnits& units);
 
 /// The sweep column's name with its unit as `units` says: "rocker_omega_deg_s",
 /// "rocker_angle_rad".
-std::string columnName(const io::SweepColumn& column, const ReportUnits& units);
+std::string columnName(const kinematics::SweepColumn& column, const ReportUnits& units);
 
 /// The columns a report tabulates, in `analyze`'s CSV order: the time on a time base, the
 /// input, each moving link's angle, ω and α but the driven crank's angle (the input) and, on
 /// a grid, its ω and α (the grid's constants), the transmission angles and,
 /// for slider pins (RRP points), their x, vx, ax (and y, vy, ay where the pin moves in y).
-std::vector<io::SweepColumn> reportColumns(const Mechanism& mechanism, const SweepResult& sweep);
+std::vector<kinematics::SweepColumn> reportColumns(const Mechanism& mechanism, const SweepResult& sweep);
 
 /// One plot: its title, its value unit and the column quantities it draws.
 struct PlotKind {
   std::string title;
   std::string unit;
-  std::vector<io::ColumnQuantity> quantities;
+  std::vector<kinematics::ColumnQuantity> quantities;
 };
 
 /// The report's plots in order: angles, ω, α (in `units`), transmission angle, slider

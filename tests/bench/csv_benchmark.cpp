@@ -19,10 +19,10 @@
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/force_columns.h"
-#include "kinematics/io/sweep_columns.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/sweep.h"
+#include "kinematics/solve/sweep_columns.h"
 
 #include <benchmark/benchmark.h>
 
@@ -119,7 +119,7 @@ template <typename Format>
 void formatTable(const Table& t, std::string& out, Format format) {
   const Mechanism& m = t.example.mechanism;
   const SweepResult& r = t.kinematics;
-  const std::vector<io::SweepColumn> columns = io::sweepColumns(m, r.request, !r.time.empty());
+  const std::vector<SweepColumn> columns = sweepColumns(m, r.request, !r.time.empty());
   const std::vector<io::ForceColumn> forceCols = io::forceColumns(t.forces.bodies);
   out.clear();
   out.reserve(t.cliCsv.size() * 2);
@@ -128,7 +128,7 @@ void formatTable(const Table& t, std::string& out, Format format) {
     if (!r.assembled(j)) continue;
     for (std::size_t c = 0; c < columns.size(); ++c) {
       if (c) out += ',';
-      const bool grid = columns[c].quantity == io::ColumnQuantity::InputAngle;
+      const bool grid = columns[c].quantity == ColumnQuantity::InputAngle;
       if (r.ok(j) || !columns[c].isRate()) format(out, columns[c].value(r, j), grid);
     }
     for (const io::ForceColumn& c : forceCols) {

@@ -8,11 +8,11 @@
 
 #include "kinematics/design/examples.h"
 #include "kinematics/dynamics/force_sweep.h"
-#include "kinematics/io/sweep_columns.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/report/report_content.h"
 #include "kinematics/solve/sweep.h"
+#include "kinematics/solve/sweep_columns.h"
 
 #include "tests/support/catch.h"
 
@@ -234,7 +234,7 @@ TEST_CASE("report of a linkage on a motion-law time base tabulates every --step 
   rows.time = e.time;
   const auto swept = k::sweep(e.mechanism, rows);
   REQUIRE(swept.ok());
-  const auto columns = k::io::sweepColumns(e.mechanism, swept->request, true);
+  const auto columns = k::sweepColumns(e.mechanism, swept->request, true);
   for (std::size_t j = 0; j < 9; ++j) {
     CHECK(*report->table.values[j][0] == Approx(0.5 * static_cast<double>(j)).margin(1e-12));
     CHECK(hasRow(text, {fixed(0.5 * static_cast<double>(j))}));
@@ -244,7 +244,7 @@ TEST_CASE("report of a linkage on a motion-law time base tabulates every --step 
       const std::string& heading = report->table.columns[c].heading;
       INFO(heading << " at " << 0.5 * static_cast<double>(j) << " s");
       bool found = false;
-      for (const k::io::SweepColumn& column : columns)
+      for (const k::SweepColumn& column : columns)
         if (std::abs(column.value(*swept, j) - *report->table.values[j][c]) < 1e-9) found = true;
       CHECK(found);
     }

@@ -12,8 +12,8 @@
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/column_extrema.h"
 #include "kinematics/io/csv_writer.h"
-#include "kinematics/io/sweep_columns.h"
 #include "kinematics/model/number_text.h"
+#include "kinematics/solve/sweep_columns.h"
 
 #include "tests/support/catch.h"
 #include "tests/support/memory_limit.h"
@@ -98,8 +98,8 @@ TEST_CASE("extremes over many windows are the whole sweep's, and need no more me
   const auto whole = kinematics::sweep(resolved->mechanism, *spec);
   REQUIRE(whole);
   std::size_t rows = 0;
-  for (const auto& column : kinematics::io::sweepColumns(resolved->mechanism, whole->request)) {
-    if (column.quantity == kinematics::io::ColumnQuantity::InputAngle) continue;
+  for (const auto& column : kinematics::sweepColumns(resolved->mechanism, whole->request)) {
+    if (column.quantity == kinematics::ColumnQuantity::InputAngle) continue;
     const auto e = kinematics::io::columnExtrema(resolved->mechanism, *spec, *whole, column);
     REQUIRE(e);
     // The row names the column and both refined values, printed to 9 digits.

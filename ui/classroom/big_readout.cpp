@@ -20,7 +20,7 @@ namespace linkwright::ui {
 
 namespace k = kinematics;
 using Kind = ReadoutQuantity::Kind;
-using k::io::ColumnQuantity;
+using k::ColumnQuantity;
 
 namespace {
 
@@ -40,7 +40,7 @@ bool isGround(const k::Mechanism& m, k::PointId p) {
 QString inputSymbol(const k::Mechanism& m, const std::vector<std::size_t>& numbers) {
   if (k::inputKind(m) == k::InputKind::Angle) {
     for (std::size_t l = 0; l < m.links.size(); ++l)
-      if (k::io::isDrivenCrankLink(m, k::LinkId{l})) return QStringLiteral("θ") + QString::number(numbers[l]);
+      if (k::isDrivenCrankLink(m, k::LinkId{l})) return QStringLiteral("θ") + QString::number(numbers[l]);
     return QStringLiteral("θ");
   }
   const auto driver = k::driverPoint(m);
@@ -52,7 +52,7 @@ QString inputSymbol(const k::Mechanism& m, const std::vector<std::size_t>& numbe
 std::optional<std::size_t> outputLink(const k::Mechanism& m) {
   std::optional<std::size_t> output;
   for (std::size_t l = 0; l < m.links.size(); ++l)
-    if (!k::io::isDrivenCrankLink(m, k::LinkId{l}) && (isGround(m, m.links[l].first) || isGround(m, m.links[l].second)))
+    if (!k::isDrivenCrankLink(m, k::LinkId{l}) && (isGround(m, m.links[l].first) || isGround(m, m.links[l].second)))
       output = l;
   return output;
 }

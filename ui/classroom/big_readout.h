@@ -13,7 +13,7 @@
 #include "ui/document/mechanism_document.h"
 #include "ui/plots/angle_unit.h"
 
-#include "kinematics/io/sweep_columns.h"
+#include "kinematics/solve/sweep_columns.h"
 
 #include <QLabel>
 #include <QString>
@@ -26,7 +26,7 @@ namespace linkwright::ui {
 struct ReadoutQuantity {
   enum class Kind { Time, Input, Angle, AngularRate, Length, LengthRate };
   Kind kind = Kind::Input;
-  kinematics::io::SweepColumn column;  ///< for Angle, AngularRate, Length, LengthRate
+  kinematics::SweepColumn column;  ///< for Angle, AngularRate, Length, LengthRate
   QString symbol;
 };
 

@@ -14,7 +14,7 @@
 namespace linkwright::ui {
 
 namespace k = kinematics;
-using k::io::ColumnQuantity;
+using k::ColumnQuantity;
 
 namespace {
 
@@ -46,7 +46,7 @@ QuantityKind kindOf(ColumnQuantity c) {
 void addLinkCurves(std::vector<PlotCurve>& out, const k::Mechanism& m, const std::vector<std::size_t>& numbers,
                    ColumnQuantity column, const QString& symbol, const QString& suffix) {
   for (std::size_t l = 0; l < m.links.size(); ++l) {
-    if (k::io::isDrivenCrankLink(m, k::LinkId{l})) continue;  // the driver's own, constant or the input
+    if (k::isDrivenCrankLink(m, k::LinkId{l})) continue;  // the driver's own, constant or the input
     const QString name = QString::fromStdString(m.links[l].name);
     out.push_back(
         {{column, l}, name + suffix, QStringLiteral("%1 %2%3").arg(name, symbol).arg(numbers[l]), linkColor(l)});

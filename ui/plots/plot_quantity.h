@@ -1,6 +1,6 @@
 #pragma once
 // The quantities the plots can show for the current mechanism, read off its structure the way
-// the CSV columns are (kinematics/io/sweep_columns.h): the angle, ω and α of every moving link
+// the CSV columns are (kinematics/solve/sweep_columns.h): the angle, ω and α of every moving link
 // but the driven crank, the transmission angle at every dyad joint that has one, each
 // slider's position, velocity and acceleration along the axis its ground guide mostly runs,
 // and for a four-bar or a slider-crank its velocity ratio and mechanical advantage (from the
@@ -12,9 +12,9 @@
 #include "ui/plots/angle_unit.h"
 
 #include "kinematics/analysis/instant_centres.h"
-#include "kinematics/io/sweep_columns.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/solve/pose.h"
+#include "kinematics/solve/sweep_columns.h"
 
 #include <QColor>
 #include <QString>
@@ -43,7 +43,7 @@ enum class RatioQuantity { None, VelocityRatio, Advantage };
 
 /// One plottable quantity: a sweep column of a link or a point (its `index`), or a ratio.
 struct PlotQuantity {
-  kinematics::io::ColumnQuantity column = kinematics::io::ColumnQuantity::LinkAngle;
+  kinematics::ColumnQuantity column = kinematics::ColumnQuantity::LinkAngle;
   std::size_t index = 0;
   /// Not None: this ratio between the `bodies` of the linkage (then `column` and `index` are
   /// unused).
@@ -52,7 +52,7 @@ struct PlotQuantity {
   bool operator==(const PlotQuantity&) const = default;
 
   static PlotQuantity ofRatio(RatioQuantity ratio, kinematics::RatioBodies bodies) {
-    return {kinematics::io::ColumnQuantity::InputAngle, 0, ratio, bodies};
+    return {kinematics::ColumnQuantity::InputAngle, 0, ratio, bodies};
   }
 
   /// A four-bar's quantities (the ids of kinematics/model/fourbar.h).

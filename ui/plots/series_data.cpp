@@ -7,7 +7,7 @@ namespace linkwright::ui {
 namespace {
 
 namespace k = kinematics;
-using k::io::ColumnQuantity;
+using k::ColumnQuantity;
 
 // Reads one quantity's samples from the sweep, in the plot's units; empty if the sweep did
 // not compute its column.

@@ -23,7 +23,7 @@
 
 using namespace linkwright::ui;
 namespace k = linkwright::kinematics;
-using k::io::ColumnQuantity;
+using k::ColumnQuantity;
 
 namespace {
 

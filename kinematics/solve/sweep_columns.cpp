@@ -1,11 +1,11 @@
-#include "kinematics/io/sweep_columns.h"
+#include "kinematics/solve/sweep_columns.h"
 
 #include "kinematics/model/driver.h"
 #include "kinematics/model/units.h"
 
 #include <cmath>
 
-namespace linkwright::kinematics::io {
+namespace linkwright::kinematics {
 namespace {
 
 bool isDyad(const Point& p) { return hasAssemblyBranch(p.definition); }
@@ -123,4 +123,4 @@ std::vector<SweepColumn> sweepColumns(const Mechanism& m, const SolveRequest& re
   return columns;
 }
 
-}  // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics

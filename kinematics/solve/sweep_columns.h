@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace linkwright::kinematics::io {
+namespace linkwright::kinematics {
 
 enum class ColumnQuantity {
   Time,
@@ -58,4 +58,4 @@ bool isDrivenCrankLink(const Mechanism& mechanism, LinkId link);
 /// the sweep ran on a time base.
 std::vector<SweepColumn> sweepColumns(const Mechanism& mechanism, const SolveRequest& request, bool timeBase = false);
 
-}  // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics
