@@ -17,7 +17,7 @@ void SweepTableWriter::writeHeader(const kinematics::SweepResult& r, const kinem
     if (c.quantity <= ColumnQuantity::TransmissionAngle && !crankRate) m_columns.push_back(std::move(c));
   }
   if (forces)
-    for (auto& c : kinematics::io::forceColumns(forces->bodies))
+    for (auto& c : kinematics::forceColumns(forces->bodies))
       if (c.isSummary()) m_forceColumns.push_back(std::move(c));
   auto header = [&](const std::string& name) {
     m_widths.push_back(std::max(static_cast<int>(name.size()), m_decimals + 8));

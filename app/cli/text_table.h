@@ -6,8 +6,8 @@
 // CSV remains the format for tools. The column widths come from the header alone, so the
 // table is written window by window as the sweep is solved.
 
+#include "kinematics/dynamics/force_columns.h"
 #include "kinematics/dynamics/force_sweep.h"
-#include "kinematics/io/force_columns.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/solve/sweep.h"
 #include "kinematics/solve/sweep_columns.h"
@@ -33,7 +33,7 @@ private:
   int m_decimals;
   bool m_headerWritten = false;
   std::vector<kinematics::SweepColumn> m_columns;
-  std::vector<kinematics::io::ForceColumn> m_forceColumns;
+  std::vector<kinematics::ForceColumn> m_forceColumns;
   std::vector<int> m_widths;
 };
 

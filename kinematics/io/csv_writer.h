@@ -5,8 +5,8 @@
 // be assembled are left out; at a singular (toggle) sample the rate cells are empty, never NaN.
 // With a force sweep, its columns (force_columns.h) follow, empty where forces are undefined.
 
+#include "kinematics/dynamics/force_columns.h"
 #include "kinematics/dynamics/force_sweep.h"
-#include "kinematics/io/force_columns.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/solve/sweep.h"
 #include "kinematics/solve/sweep_columns.h"

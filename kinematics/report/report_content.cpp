@@ -1,8 +1,8 @@
 #include "kinematics/report/report_content.h"
 
+#include "kinematics/dynamics/force_columns.h"
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/column_extrema.h"
-#include "kinematics/io/force_columns.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
@@ -113,18 +113,18 @@ Result<ReportTable> forcesTable(const Mechanism& m, const LinkageDynamics& dynam
                                 const SweepColumn& input) {
   auto forces = sweepForces(m, dynamics, r);
   if (!forces) return Error{forces.error().code, "dynamics", "the forces: " + forces.error().message};
-  std::vector<io::ForceColumn> columns;
-  for (io::ForceColumn& c : io::forceColumns(forces->bodies))
+  std::vector<kinematics::ForceColumn> columns;
+  for (kinematics::ForceColumn& c : kinematics::forceColumns(forces->bodies))
     if (c.isSummary()) columns.push_back(std::move(c));
   ReportTable table;
   table.columns.push_back(columnHeading(m, input));
-  for (const io::ForceColumn& c : columns) table.columns.push_back(forceHeading(c.name));
+  for (const kinematics::ForceColumn& c : columns) table.columns.push_back(forceHeading(c.name));
   for (std::size_t j = 0; j < r.size(); ++j) {
     if (!r.assembled(j)) continue;
     std::vector<std::string>& cells = table.cells.emplace_back();
     std::vector<std::optional<double>>& values = table.values.emplace_back();
     cells.push_back(cellText(input, r, j, ReportUnits{}, values.emplace_back()));
-    for (const io::ForceColumn& c : columns) {
+    for (const kinematics::ForceColumn& c : columns) {
       if (!forces->ok(j)) {
         cells.push_back(r.ok(j) ? "singular" : "toggle");
         values.emplace_back();

@@ -16,9 +16,9 @@
 // bytes and exits 1 if not. docs/benchmarks.md ("CSV output") has the figures.
 
 #include "kinematics/design/examples.h"
+#include "kinematics/dynamics/force_columns.h"
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/csv_writer.h"
-#include "kinematics/io/force_columns.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/sweep.h"
@@ -120,7 +120,7 @@ void formatTable(const Table& t, std::string& out, Format format) {
   const Mechanism& m = t.example.mechanism;
   const SweepResult& r = t.kinematics;
   const std::vector<SweepColumn> columns = sweepColumns(m, r.request, !r.time.empty());
-  const std::vector<io::ForceColumn> forceCols = io::forceColumns(t.forces.bodies);
+  const std::vector<ForceColumn> forceCols = forceColumns(t.forces.bodies);
   out.clear();
   out.reserve(t.cliCsv.size() * 2);
   out.append(t.cliCsv, 0, t.cliCsv.find('\n') + 1);
@@ -131,7 +131,7 @@ void formatTable(const Table& t, std::string& out, Format format) {
       const bool grid = columns[c].quantity == ColumnQuantity::InputAngle;
       if (r.ok(j) || !columns[c].isRate()) format(out, columns[c].value(r, j), grid);
     }
-    for (const io::ForceColumn& c : forceCols) {
+    for (const ForceColumn& c : forceCols) {
       out += ',';
       if (t.forces.ok(j)) format(out, c.value(t.forces, j), false);
     }

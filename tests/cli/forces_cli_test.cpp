@@ -8,9 +8,9 @@
 
 #include "kinematics/design/design.h"
 #include "kinematics/design/examples.h"
+#include "kinematics/dynamics/force_columns.h"
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/document_json.h"
-#include "kinematics/io/force_columns.h"
 #include "kinematics/model/units.h"
 
 #include "tests/support/catch.h"
@@ -173,7 +173,7 @@ TEST_CASE("analyze FILE --forces: a path-driven arm and a cylinder-driven boom, 
     REQUIRE(f.ok(j));
     const auto row = split(rows[j + 1], ',');
     REQUIRE(row.size() == header.size());
-    for (const io::ForceColumn& column : io::forceColumns(f.bodies)) {
+    for (const kinematics::ForceColumn& column : kinematics::forceColumns(f.bodies)) {
       CAPTURE(column.name);
       CHECK(std::stod(row[columnOf(header, column.name)]) == column.value(f, j));
     }

@@ -4,9 +4,9 @@
 // equations, the force columns, and what forces still refuse. The power balance of the same
 // cases is in force_sweep_test.cpp.
 
+#include "kinematics/dynamics/force_columns.h"
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/dynamics/inverse_dynamics.h"
-#include "kinematics/io/force_columns.h"
 #include "kinematics/model/driven_linkages.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/path_shape.h"
@@ -35,7 +35,7 @@ DynamicsCase drivenCase(const std::string& name) {
   return {};
 }
 
-std::vector<std::string> names(const std::vector<io::ForceColumn>& columns) {
+std::vector<std::string> names(const std::vector<ForceColumn>& columns) {
   std::vector<std::string> out;
   for (const auto& c : columns) out.push_back(c.name);
   return out;
@@ -229,16 +229,16 @@ TEST_CASE("the arm's joint torques τ = JᵀF are the serial arm's own Newton–
 
 TEST_CASE("force columns name each driver's force with its unit", "[dynamics][driven][io]") {
   const auto arm = bodiesOf(drivenCase("seed-arm").mechanism).value();
-  CHECK(names(io::forceColumns(arm)) == Names{"F_O_x_N", "F_O_y_N", "F_O_N", "F_elbow_x_N", "F_elbow_y_N", "F_elbow_N",
-                                              "tip_drive_fx_N", "tip_drive_fy_N", "tip_drive_force_N",
-                                              "O_joint_torque_Nm", "elbow_joint_torque_Nm", "shaking_x_N",
-                                              "shaking_y_N", "shaking_N", "shaking_moment_Nm"});
+  CHECK(names(forceColumns(arm)) == Names{"F_O_x_N", "F_O_y_N", "F_O_N", "F_elbow_x_N", "F_elbow_y_N",
+                                                      "F_elbow_N", "tip_drive_fx_N", "tip_drive_fy_N",
+                                                      "tip_drive_force_N", "O_joint_torque_Nm", "elbow_joint_torque_Nm",
+                                                      "shaking_x_N", "shaking_y_N", "shaking_N", "shaking_moment_Nm"});
   const auto boom = bodiesOf(drivenCase("excavator-boom").mechanism).value();
-  CHECK(names(io::forceColumns(boom)) == Names{"F_O_x_N", "F_O_y_N", "F_O_N", "actuator_force_N", "shaking_x_N",
-                                               "shaking_y_N", "shaking_N", "shaking_moment_Nm"});
+  CHECK(names(forceColumns(boom)) == Names{"F_O_x_N", "F_O_y_N", "F_O_N", "actuator_force_N", "shaking_x_N",
+                                                       "shaking_y_N", "shaking_N", "shaking_moment_Nm"});
   // The short table keeps sizes, the drive's force along its input and the joint torques.
   Names summary;
-  for (const auto& column : io::forceColumns(arm))
+  for (const auto& column : forceColumns(arm))
     if (column.isSummary()) summary.push_back(column.name);
   CHECK(summary ==
         Names{"F_O_N", "F_elbow_N", "tip_drive_force_N", "O_joint_torque_Nm", "elbow_joint_torque_Nm", "shaking_N"});
@@ -246,7 +246,7 @@ TEST_CASE("force columns name each driver's force with its unit", "[dynamics][dr
   const DynamicsCase c = drivenCase("seed-arm");
   const auto s = sweep(c.mechanism, c.spec).value();
   const auto f = sweepForces(c.mechanism, c.dynamics, s).value();
-  const auto columns = io::forceColumns(f.bodies);
+  const auto columns = forceColumns(f.bodies);
   CHECK(columns[6].value(f, 5) == f.driveForce[5].x());
   CHECK(columns[7].value(f, 5) == f.driveForce[5].y());
   CHECK(columns[8].value(f, 5) == f.driveAlong[5]);

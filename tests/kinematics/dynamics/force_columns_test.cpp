@@ -1,7 +1,7 @@
 // Force columns (force_columns.h) and the CSV they make: names with units for pins, slider
 // blocks and the frame, values from the force sweep, empty cells where forces are undefined.
 
-#include "kinematics/io/force_columns.h"
+#include "kinematics/dynamics/force_columns.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/model/fourbar.h"
@@ -14,7 +14,6 @@
 #include <sstream>
 
 using namespace linkwright::kinematics;
-using namespace linkwright::kinematics::io;
 
 namespace {
 
@@ -44,7 +43,7 @@ TEST_CASE("the CSV with forces leaves force cells empty where they are undefined
   const auto s = sweep(m, {0.0, degToRad(90.0), 4, 10.0, 0.0}).value();
   const auto f = sweepForces(m, d, s).value();
   std::ostringstream out;
-  writeSweepCsv(out, m, s, f);
+  io::writeSweepCsv(out, m, s, f);
   std::vector<std::string> rows;
   std::stringstream text(out.str());
   for (std::string line; std::getline(text, line);) rows.push_back(line);

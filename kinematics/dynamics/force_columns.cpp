@@ -1,6 +1,6 @@
-#include "kinematics/io/force_columns.h"
+#include "kinematics/dynamics/force_columns.h"
 
-namespace linkwright::kinematics::io {
+namespace linkwright::kinematics {
 
 double ForceColumn::value(const ForceSweep& f, std::size_t j) const {
   switch (quantity) {
@@ -63,4 +63,4 @@ std::vector<ForceColumn> forceColumns(const BodyModel& bodies) {
   return columns;
 }
 
-}  // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics

@@ -31,7 +31,7 @@
 #include <string>
 #include <vector>
 
-namespace linkwright::kinematics::io {
+namespace linkwright::kinematics {
 
 enum class ForceQuantity {
   JointX,
@@ -67,4 +67,4 @@ struct ForceColumn {
 /// All force columns of a model, in CSV order.
 std::vector<ForceColumn> forceColumns(const BodyModel& bodies);
 
-}  // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics
