@@ -1,8 +1,8 @@
 #include "app/cli/commands.h"
 #include "app/cli/progress.h"
 
+#include "kinematics/analysis/column_extrema.h"
 #include "kinematics/analysis/extrema.h"
-#include "kinematics/io/column_extrema.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
@@ -43,7 +43,7 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
 
   // The sweep is scanned a window at a time: each column's and each point's best samples are
   // kept, never the columns, and refined between their neighbours afterwards.
-  std::vector<k::io::ColumnExtremaScan> columns;
+  std::vector<k::ColumnExtremaScan> columns;
   std::vector<std::size_t> moving;  // the moving points: their speeds and accelerations
   for (std::size_t i = 0; i < m.points.size(); ++i)
     if (!std::holds_alternative<k::GroundPoint>(m.points[i].definition)) moving.push_back(i);
@@ -55,7 +55,7 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
           for (const k::SweepColumn& column : k::sweepColumns(m, part.request))
             if (column.quantity != k::ColumnQuantity::InputAngle && column.quantity != k::ColumnQuantity::InputLength)
               columns.emplace_back(column);
-        for (k::io::ColumnExtremaScan& scan : columns) scan.add(part, first);
+        for (k::ColumnExtremaScan& scan : columns) scan.add(part, first);
         for (std::size_t p = 0; p < moving.size(); ++p) {
           const std::size_t i = moving[p];
           for (std::size_t j = 0; j < part.size(); ++j) {
@@ -88,7 +88,7 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
   const char* where = timeBase ? "at time_s" : crank ? "at crank_deg" : "at input";
   out << std::left << std::setw(26) << "quantity" << std::right << std::setw(18) << "minimum" << std::setw(14) << where
       << std::setw(18) << "maximum" << std::setw(14) << where << "\n";
-  for (const k::io::ColumnExtremaScan& scan : columns)
+  for (const k::ColumnExtremaScan& scan : columns)
     if (const auto e = scan.refine(m, *spec)) printRow(out, m, scan.column().name, *e, timeBase);
   // Speed and acceleration magnitudes of each moving point: what seed 003 reports.
   const std::string& u = m.lengthUnit;

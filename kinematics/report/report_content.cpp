@@ -1,8 +1,8 @@
 #include "kinematics/report/report_content.h"
 
+#include "kinematics/analysis/column_extrema.h"
 #include "kinematics/dynamics/force_columns.h"
 #include "kinematics/dynamics/force_sweep.h"
-#include "kinematics/io/column_extrema.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
@@ -54,7 +54,7 @@ ReportTable extremesTable(const Mechanism& m, const SweepSpec& spec, const Sweep
     if (c.quantity == ColumnQuantity::InputAngle || c.quantity == ColumnQuantity::InputLength ||
         c.quantity == ColumnQuantity::Time)
       continue;
-    const auto e = io::columnExtrema(m, spec, r, c);
+    const auto e = kinematics::columnExtrema(m, spec, r, c);
     if (!e) continue;
     const auto at = [&](const Extremum& x) { return timeBase ? x.time : inputDisplayValue(m, x.inputAngle); };
     const double minAt = at(e->minimum), maxAt = at(e->maximum);

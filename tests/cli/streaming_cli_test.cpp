@@ -9,8 +9,8 @@
 #include "app/cli/text_table.h"
 #include "tests/cli/run_cli.h"
 
+#include "kinematics/analysis/column_extrema.h"
 #include "kinematics/dynamics/force_sweep.h"
-#include "kinematics/io/column_extrema.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/solve/sweep_columns.h"
@@ -100,7 +100,7 @@ TEST_CASE("extremes over many windows are the whole sweep's, and need no more me
   std::size_t rows = 0;
   for (const auto& column : kinematics::sweepColumns(resolved->mechanism, whole->request)) {
     if (column.quantity == kinematics::ColumnQuantity::InputAngle) continue;
-    const auto e = kinematics::io::columnExtrema(resolved->mechanism, *spec, *whole, column);
+    const auto e = kinematics::columnExtrema(resolved->mechanism, *spec, *whole, column);
     REQUIRE(e);
     // The row names the column and both refined values, printed to 9 digits.
     const auto at = run.out.find("\n" + column.name + " ");

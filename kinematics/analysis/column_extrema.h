@@ -1,6 +1,6 @@
 #pragma once
 // The refined extremes of one tabulated column (sweep_columns.h) over a sweep: the samples
-// bracket each extreme and analysis/extrema.h's search refines it on poses solved between them.
+// bracket each extreme and extrema.h's search refines it on poses solved between them.
 // `linkwright-cli extremes` and the lab report (kinematics/report/) both print these, so the
 // two hold the same numbers. A column is scanned window by window (sweepInWindows), so the
 // extremes of 10⁷ samples need no more memory than those of 361.
@@ -10,7 +10,7 @@
 
 #include <optional>
 
-namespace linkwright::kinematics::io {
+namespace linkwright::kinematics {
 
 /// A column's samples gathered window by window; rates only where the samples are ok,
 /// positions where they assembled.
@@ -35,4 +35,4 @@ private:
 std::optional<Extrema> columnExtrema(const Mechanism& mechanism, const SweepSpec& spec, const SweepResult& sweep,
                                      const SweepColumn& column);
 
-}  // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics

@@ -1,6 +1,6 @@
-#include "kinematics/io/column_extrema.h"
+#include "kinematics/analysis/column_extrema.h"
 
-namespace linkwright::kinematics::io {
+namespace linkwright::kinematics {
 
 void ColumnExtremaScan::add(const SweepResult& r, std::size_t first) {
   for (std::size_t j = 0; j < r.size(); ++j) {
@@ -24,4 +24,4 @@ std::optional<Extrema> columnExtrema(const Mechanism& m, const SweepSpec& spec, 
   return scan.refine(m, spec);
 }
 
-}  // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics
