@@ -464,7 +464,7 @@ bool MainWindow::exportCsv(const QString& path) {
   return true;
 }
 
-bool MainWindow::exportDxf(const QString& path, const k::io::DrawingOptions& options) {
+bool MainWindow::exportDxf(const QString& path, const k::DrawingOptions& options) {
   if (auto why =
           k::io::exportLinkDrawingDxf(m_document->mechanism(), m_document->pose(), options, path.toStdString())) {
     showError(tr("DXF not written: %1").arg(QString::fromStdString(why->message)));
@@ -622,7 +622,7 @@ void MainWindow::exportCsvDialog() {
 
 void MainWindow::exportDxfDialog() {
   // The core's defaults for this linkage pre-fill the dialog (and say why there are none).
-  const auto drawing = k::io::linkDrawing(m_document->mechanism(), m_document->pose(), {});
+  const auto drawing = k::linkDrawing(m_document->mechanism(), m_document->pose(), {});
   if (!drawing) {
     showError(tr("DXF not written: %1").arg(QString::fromStdString(drawing.error().message)));
     return;

@@ -5,8 +5,8 @@
 // the document; it computes nothing itself. Each file and export action has a dialog-free
 // twin (openFile, saveTo, exportCsv, ...) that the menus call and the tests use.
 
+#include "kinematics/analysis/link_drawing.h"
 #include "kinematics/design/design.h"
-#include "kinematics/io/link_drawing.h"
 #include "kinematics/report/report_pdf.h"
 
 #include <QMainWindow>
@@ -80,7 +80,7 @@ public:
   bool exportCsv(const QString& path);
   /// Writes the links as a DXF drawing at the current pose (kinematics/io/dxf_export.h); on a
   /// refusal (a hole too large for a link, …) shows the core's reason and writes nothing.
-  bool exportDxf(const QString& path, const kinematics::io::DrawingOptions& options);
+  bool exportDxf(const QString& path, const kinematics::DrawingOptions& options);
   /// Writes an animated GIF of the canvas over one cycle (ui/export/cycle_animation.h) and
   /// puts the crank back; `showProgress` offers a cancellable progress dialog. On failure
   /// shows why in the banner and writes nothing.

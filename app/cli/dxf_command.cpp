@@ -1,5 +1,5 @@
 // `linkwright-cli dxf`: the links of a linkage as a DXF drawing at true size, at one input
-// (kinematics/io/link_drawing.h for what is drawn, dxf_export.h for the file). The drawing and
+// (kinematics/analysis/link_drawing.h for what is drawn, dxf_export.h for the file). The drawing and
 // the file come from one core call, the one the designer's File ▸ Export ▸ DXF makes.
 
 #include "app/cli/commands.h"
@@ -38,14 +38,13 @@ std::string optionMessage(const k::Error& e) {
   return e.message;
 }
 
-void printSummary(std::ostream& out, const std::string& path, const k::io::LinkDrawing& drawing,
-                  const std::string& at) {
+void printSummary(std::ostream& out, const std::string& path, const k::LinkDrawing& drawing, const std::string& at) {
   const int units = k::io::dxfInsUnits(drawing.lengthUnit);
   out << "wrote " << path << ": the links at " << at << ", holes " << k::formatNumber(drawing.holeDiameter) << " "
       << drawing.lengthUnit << ", plates " << k::formatNumber(drawing.plateWidth) << " " << drawing.lengthUnit
       << " wide\n";
   out << "layers:";
-  for (const k::io::DrawingLayer& layer : drawing.layers) out << " " << layer.name;
+  for (const k::DrawingLayer& layer : drawing.layers) out << " " << layer.name;
   out << "\n$INSUNITS " << units;
   if (units == 0) out << " (unitless: '" << drawing.lengthUnit << "' has no DXF unit code)";
   out << "\n";
@@ -73,8 +72,8 @@ ExitCode runDxf(const Invocation& inv, std::ostream& out, std::ostream& err) {
         << pose.error().message << "\n";
     return ExitCode::NotAssemblable;
   }
-  const k::io::DrawingOptions options{inv.holeDiameter, inv.plateWidth};
-  const auto drawing = k::io::linkDrawing(m, *pose, options);
+  const k::DrawingOptions options{inv.holeDiameter, inv.plateWidth};
+  const auto drawing = k::linkDrawing(m, *pose, options);
   if (!drawing) {
     err << "linkwright-cli: " << optionMessage(drawing.error()) << "\n";
     return ExitCode::BadInput;

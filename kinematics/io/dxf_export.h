@@ -7,7 +7,7 @@
 // "%.16f" keeps fewer than 17 significant digits below 1). Built as its own library
 // (linkwright_dxf) so the core stays free of dxflib; the CLI and the designer link it.
 
-#include "kinematics/io/link_drawing.h"
+#include "kinematics/analysis/link_drawing.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/model/result.h"
 #include "kinematics/solve/pose.h"

@@ -11,8 +11,8 @@
 // which tabulates every 30°.
 
 #include "kinematics/analysis/extrema.h"
+#include "kinematics/analysis/link_drawing.h"
 #include "kinematics/dynamics/mass_properties.h"
-#include "kinematics/io/link_drawing.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/model/result.h"
 #include "kinematics/solve/sweep.h"
@@ -109,7 +109,7 @@ struct Dimension {
 
 /// The linkage at the drawn input.
 struct ReportDrawing {
-  io::LinkDrawing parts;  ///< plates, holes and ground crosses, as the DXF export draws them
+  kinematics::LinkDrawing parts;  ///< plates, holes and ground crosses, as the DXF export draws them
   std::vector<Dimension> dimensions;
   std::vector<Eigen::Vector2d> groundPivots;
   std::vector<std::pair<Eigen::Vector2d, std::string>> pointLabels;  ///< each point's name at its position

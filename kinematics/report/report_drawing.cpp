@@ -54,7 +54,7 @@ View fit(const ReportDrawing& d, double left, double top, double width, double h
 }
 
 // One edge of an outline: straight, or an arc of bulge b (tan(θ/4), counter-clockwise if > 0).
-void edge(cairo_t* cr, const View& v, const io::OutlineVertex& a, const Eigen::Vector2d& b) {
+void edge(cairo_t* cr, const View& v, const kinematics::OutlineVertex& a, const Eigen::Vector2d& b) {
   if (std::abs(a.bulge) < 1e-12) {
     cairo_line_to(cr, v.x(b.x()), v.y(b.y()));
     return;
@@ -70,7 +70,7 @@ void edge(cairo_t* cr, const View& v, const io::OutlineVertex& a, const Eigen::V
   else cairo_arc(cr, v.x(centre.x()), v.y(centre.y()), radius, -from, -to);
 }
 
-void outline(cairo_t* cr, const View& v, const io::Outline& o) {
+void outline(cairo_t* cr, const View& v, const kinematics::Outline& o) {
   if (o.empty()) return;
   cairo_new_sub_path(cr);
   cairo_move_to(cr, v.x(o[0].point.x()), v.y(o[0].point.y()));
@@ -78,7 +78,7 @@ void outline(cairo_t* cr, const View& v, const io::Outline& o) {
   cairo_close_path(cr);
 }
 
-void parts(cairo_t* cr, const View& v, const io::LinkDrawing& d) {
+void parts(cairo_t* cr, const View& v, const kinematics::LinkDrawing& d) {
   cairo_set_line_width(cr, 0.8);
   for (const auto& layer : d.layers) {
     for (const auto& o : layer.outlines) outline(cr, v, o);

@@ -182,7 +182,7 @@ Result<ReportDrawing> reportDrawing(const Mechanism& m, double at) {
   if (!pose)
     return Error{ErrorCode::NotAssemblable, "--at",
                  "the linkage cannot be assembled at " + inputText(m, at) + ": " + pose.error().message};
-  auto parts = io::linkDrawing(m, *pose, {});
+  auto parts = kinematics::linkDrawing(m, *pose, {});
   if (!parts) return parts.error();
   ReportDrawing drawing{std::move(*parts), {}, {}, {}, "at " + inputText(m, at)};
   const std::string& u = m.lengthUnit;

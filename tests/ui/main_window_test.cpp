@@ -21,9 +21,9 @@
 #include "ui/settings.h"
 
 #include "app/cli/cli.h"
+#include "kinematics/analysis/link_drawing.h"
 #include "kinematics/design/design.h"
 #include "kinematics/design/examples.h"
-#include "kinematics/io/link_drawing.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
@@ -111,7 +111,7 @@ TEST_CASE("Export ▸ Links as DXF is byte-identical to linkwright-cli dxf at th
   window.document()->setCrankAngle(kinematics::degToRad(37.5));
   QTemporaryDir dir;
   const QString gui = dir.filePath("gui.dxf"), cli = dir.filePath("cli.dxf");
-  kinematics::io::DrawingOptions options;
+  kinematics::DrawingOptions options;
   options.holeDiameter = 3.0;
   options.plateWidth = 7.5;
   REQUIRE(window.exportDxf(gui, options));

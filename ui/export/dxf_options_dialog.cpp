@@ -40,8 +40,8 @@ DxfOptionsDialog::DxfOptionsDialog(double defaultHole, double defaultWidth, cons
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
 }
 
-kinematics::io::DrawingOptions DxfOptionsDialog::options() const {
-  kinematics::io::DrawingOptions o;
+kinematics::DrawingOptions DxfOptionsDialog::options() const {
+  kinematics::DrawingOptions o;
   o.holeDiameter = m_hole->value();
   o.plateWidth = m_width->value();
   return o;

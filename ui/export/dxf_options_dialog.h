@@ -5,7 +5,7 @@
 // drawing itself refuses a hole too large for a link or a plate no wider than its hole, and the
 // window shows that sentence.
 
-#include "kinematics/io/link_drawing.h"
+#include "kinematics/analysis/link_drawing.h"
 
 #include <QDialog>
 
@@ -21,7 +21,7 @@ public:
   DxfOptionsDialog(double defaultHole, double defaultWidth, const QString& lengthUnit, QWidget* parent = nullptr);
 
   /// What the user chose.
-  kinematics::io::DrawingOptions options() const;
+  kinematics::DrawingOptions options() const;
 
   QDoubleSpinBox* holeBox() const { return m_hole; }
   QDoubleSpinBox* widthBox() const { return m_width; }

@@ -31,7 +31,7 @@
 #include <string>
 #include <vector>
 
-namespace linkwright::kinematics::io {
+namespace linkwright::kinematics {
 
 /// What the drawing is made with (length unit). Left empty, the hole diameter is a fifth of
 /// the shortest distance between two points on one moving body, to two significant digits,
@@ -103,4 +103,4 @@ Outline roundedHull(const std::vector<Eigen::Vector2d>& centres, double radius);
 /// empty → "PART".
 std::string dxfLayerName(const std::string& name);
 
-}  // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics

@@ -1,4 +1,4 @@
-#include "kinematics/io/link_drawing.h"
+#include "kinematics/analysis/link_drawing.h"
 
 #include "kinematics/model/validate.h"
 #include "kinematics/model/vec2.h"
@@ -11,7 +11,7 @@
 #include <set>
 #include <utility>
 
-namespace linkwright::kinematics::io {
+namespace linkwright::kinematics {
 namespace {
 
 // Andrew's monotone chain, counter-clockwise, collinear and repeated points dropped.
@@ -210,4 +210,4 @@ std::string dxfLayerName(const std::string& name) {
   return out.empty() ? "PART" : out;
 }
 
-}  // namespace linkwright::kinematics::io
+}  // namespace linkwright::kinematics

@@ -1,10 +1,10 @@
-// Tests kinematics/io/link_drawing.h: for every built-in example, every hole sits exactly on
+// Tests kinematics/analysis/link_drawing.h: for every built-in example, every hole sits exactly on
 // its solved joint and every joint of a moving body has one; the outlines are the offset of
 // the joints' convex hull, so each hole lies inside its part with a web of (w − d)/2; a
 // two-joint link is a stadium; bad hole and plate sizes are refused with the field, the value
 // and the range; layer names are DXF-legal and unique.
 
-#include "kinematics/io/link_drawing.h"
+#include "kinematics/analysis/link_drawing.h"
 
 #include "kinematics/design/examples.h"
 #include "kinematics/model/units.h"
@@ -19,7 +19,7 @@
 #include <set>
 
 using namespace linkwright::kinematics;
-using namespace linkwright::kinematics::io;
+using namespace linkwright::kinematics;
 
 namespace {
 
