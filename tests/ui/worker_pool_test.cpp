@@ -1,7 +1,7 @@
-// Linkwright's background jobs run on threads of their own (ui/worker_pool.h). Qt 6.4's raster
+// Linkwright's background jobs run on threads of their own (ui/document/worker_pool.h). Qt 6.4's raster
 // engine splits a large fill into segments, runs them on Qt's global thread pool and waits for
 // them: with every worker busy, a paint still finishes.
-#include "ui/worker_pool.h"
+#include "ui/document/worker_pool.h"
 
 #include <QImage>
 #include <QPainter>

@@ -1,6 +1,6 @@
 #include "ui/document/display_sweeper.h"
 
-#include "ui/worker_pool.h"
+#include "ui/document/worker_pool.h"
 
 #include <QtConcurrent>
 

@@ -1,7 +1,8 @@
 #include "ui/document/force_results.h"
 
-#include "ui/number_text.h"
-#include "ui/worker_pool.h"
+#include "ui/document/worker_pool.h"
+
+#include "kinematics/model/number_text.h"
 
 #include <QCoreApplication>
 #include <QtConcurrent>
@@ -167,7 +168,7 @@ QString formatForce(double value) {
   const double size = std::abs(value);
   if (size == 0.0) return QStringLiteral("0");
   const int digits = static_cast<int>(std::floor(std::log10(size)));
-  return numberText(value, 'f', std::clamp(2 - digits, 0, 6));
+  return QString::fromStdString(kinematics::formatFixed(value, std::clamp(2 - digits, 0, 6)));
 }
 
 }  // namespace linkwright::ui

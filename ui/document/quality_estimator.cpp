@@ -1,6 +1,6 @@
 #include "ui/document/quality_estimator.h"
 
-#include "ui/worker_pool.h"
+#include "ui/document/worker_pool.h"
 
 #include <QtConcurrent>
 

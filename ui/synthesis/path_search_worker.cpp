@@ -1,6 +1,6 @@
 #include "ui/synthesis/path_search_worker.h"
 
-#include "ui/worker_pool.h"
+#include "ui/document/worker_pool.h"
 
 #include <QPointer>
 #include <QtConcurrent/QtConcurrentRun>

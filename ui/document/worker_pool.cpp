@@ -1,4 +1,4 @@
-#include "ui/worker_pool.h"
+#include "ui/document/worker_pool.h"
 
 #include <QCoreApplication>
 #include <QPointer>
