@@ -1,18 +1,19 @@
 #pragma once
-// Numbers as the GUI shows them. The last guard of the "never nan or inf" promise: a value
-// that is still not finite, whatever let it through, reads "undefined", never "nan" or "inf".
+// Numbers as the GUI shows them: the core's one number text (kinematics/model/number_text.h),
+// as a QString. Its rule is the GUI's last guard of "never nan or inf": a value that is still
+// not finite, whatever let it through, reads "undefined".
 
-#include <QCoreApplication>
+#include "kinematics/model/number_text.h"
+
 #include <QString>
-
-#include <cmath>
 
 namespace linkwright::ui {
 
-/// `value` in QString::number's `format` and `precision`, or "undefined" if it is not finite.
+/// `value` with `precision` significant digits ('g') or decimals ('f'), as formatShort and
+/// formatFixed write it; "undefined" if it is not finite.
 inline QString numberText(double value, char format = 'g', int precision = 6) {
-  if (!std::isfinite(value)) return QCoreApplication::translate("NumberText", "undefined");
-  return QString::number(value, format, precision);
+  return QString::fromStdString(format == 'f' ? kinematics::formatFixed(value, precision)
+                                              : kinematics::formatShort(value, precision));
 }
 
 }  // namespace linkwright::ui

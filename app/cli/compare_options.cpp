@@ -1,6 +1,7 @@
 #include "app/cli/compare_options.h"
 #include "app/cli/option_values.h"
 
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/validate.h"
 
 #include <cmath>

@@ -5,6 +5,7 @@
 #include "app/cli/commands.h"
 
 #include "kinematics/io/dxf_export.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/solve/motion_law.h"

@@ -5,6 +5,7 @@
 #include "app/cli/option_values.h"
 #include "app/cli/synthesize_options.h"
 
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/synthesis/named_function.h"

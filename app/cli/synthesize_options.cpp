@@ -1,6 +1,7 @@
 #include "app/cli/synthesize_options.h"
 #include "app/cli/option_values.h"
 
+#include "kinematics/model/number_text.h"
 #include "kinematics/synthesis/named_function.h"
 
 #include "kinematics/model/validate.h"

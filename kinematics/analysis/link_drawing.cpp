@@ -1,5 +1,6 @@
 #include "kinematics/analysis/link_drawing.h"
 
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/model/vec2.h"
 #include "kinematics/solve/rigid_bodies.h"

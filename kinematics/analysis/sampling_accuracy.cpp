@@ -2,6 +2,7 @@
 
 #include "kinematics/analysis/extrema.h"
 #include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/solve/sweep.h"

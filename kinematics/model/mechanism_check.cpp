@@ -2,6 +2,7 @@
 
 #include "kinematics/model/constraint_form.h"
 #include "kinematics/model/driver.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/path_shape.h"
 #include "kinematics/model/validate.h"
 

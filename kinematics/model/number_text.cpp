@@ -3,45 +3,48 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <optional>
 
 namespace linkwright::kinematics {
-
 namespace {
-const std::string kUndefined = "undefined";
+
+enum class Style { Shortest, Significant, Fixed };
+
+// The one conversion: the text of a finite `value`, or nothing for a value that is not finite
+// (each public routine then writes its medium's word for it). Zero of either sign is "0" in the
+// shortest and significant styles; a fixed "-0.00" reads as a sign that is not there, so it
+// prints as "0.00".
+std::optional<std::string> finiteText(double value, Style style, int precision = 0) {
+  if (!std::isfinite(value)) return std::nullopt;
+  if (value == 0.0 && style != Style::Fixed) return "0";
+  // Room for every double in fixed notation: 309 integer digits, a sign, a point, decimals.
+  std::array<char, 400> buffer{};
+  char* const first = buffer.data();
+  char* const last = first + buffer.size();
+  const auto [end, ec] = style == Style::Shortest ? std::to_chars(first, last, value)
+                         : style == Style::Significant
+                             ? std::to_chars(first, last, value, std::chars_format::general, precision)
+                             : std::to_chars(first, last, value, std::chars_format::fixed, precision);
+  if (ec != std::errc{}) return std::nullopt;  // only past 89 fixed decimals
+  std::string text(first, end);
+  if (text.front() == '-' && text.find_first_not_of("-0.") == std::string::npos) text.erase(0, 1);
+  return text;
 }
 
-std::string formatDouble(double value) {
-  if (!std::isfinite(value)) return "";
-  if (value == 0.0) return "0";  // also folds -0 into 0
-  std::array<char, 32> buffer{};
-  const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  if (ec != std::errc{}) return "";  // cannot happen: 32 characters hold any shortest double
-  return std::string(buffer.data(), end);
-}
+}  // namespace
 
-std::string formatJsonNumber(double value) { return std::isfinite(value) ? formatDouble(value) : "null"; }
+std::string formatDouble(double value) { return finiteText(value, Style::Shortest).value_or(""); }
+
+std::string formatJsonNumber(double value) { return finiteText(value, Style::Shortest).value_or("null"); }
+
+std::string formatNumber(double value) { return finiteText(value, Style::Shortest).value_or(kUndefinedText); }
 
 std::string formatShort(double value, int significant) {
-  if (!std::isfinite(value)) return kUndefined;
-  if (value == 0.0) return "0";
-  std::array<char, 64> buffer{};
-  const auto [end, ec] =
-      std::to_chars(buffer.data(), buffer.data() + buffer.size(), value, std::chars_format::general, significant);
-  if (ec != std::errc{}) return kUndefined;
-  return std::string(buffer.data(), end);
+  return finiteText(value, Style::Significant, significant).value_or(kUndefinedText);
 }
 
 std::string formatFixed(double value, int decimals) {
-  if (!std::isfinite(value)) return kUndefined;
-  // Room for every double in fixed notation: 309 integer digits, a sign, a point, decimals.
-  std::array<char, 400> buffer{};
-  const auto [end, ec] =
-      std::to_chars(buffer.data(), buffer.data() + buffer.size(), value, std::chars_format::fixed, decimals);
-  if (ec != std::errc{}) return kUndefined;  // more than 89 decimals
-  std::string text(buffer.data(), end);
-  // "-0.00" reads as a sign that is not there: print it as "0.00".
-  if (text.front() == '-' && text.find_first_not_of("-0.") == std::string::npos) text.erase(0, 1);
-  return text;
+  return finiteText(value, Style::Fixed, decimals).value_or(kUndefinedText);
 }
 
 }  // namespace linkwright::kinematics

@@ -1,13 +1,18 @@
 #pragma once
-// Locale-independent, round-trip number formatting for CSV, JSON and messages
-// (std::to_chars: the shortest text that reads back to the same double). The last guard of
-// "Linkwright never prints nan or inf": none of these writes either. A value that is still
-// not finite, whatever let it through the input domain, becomes an empty CSV cell, a JSON
-// null, or "undefined" in text meant for people.
+// Numbers as text, the one place the core turns a double into characters: for CSV, JSON and
+// messages alike. Locale-independent (std::to_chars), and round-trip where no precision is
+// asked for: the shortest text that reads back to the same double.
+//
+// One rule for a value that is not finite, whatever let it through: it is never written as
+// digits, "nan" or "inf". Where it would be, the medium's own word for "no value" stands: an
+// empty CSV cell, a JSON null, "undefined" in text meant for people (messages, tables).
 
 #include <string>
 
 namespace linkwright::kinematics {
+
+/// What text for people says in place of a value that is not finite.
+inline constexpr const char* kUndefinedText = "undefined";
 
 /// Shortest round-trip decimal text of `value`, '.' as decimal point whatever the locale.
 /// Negative zero prints as "0"; NaN and infinities print as "" (an empty CSV cell).
@@ -15,6 +20,10 @@ std::string formatDouble(double value);
 
 /// formatDouble for a JSON number: NaN and infinities print as "null".
 std::string formatJsonNumber(double value);
+
+/// formatDouble for people: a value a message quotes back at full precision ("70", "-0.5",
+/// "1e+160"); "undefined" for NaN and infinities.
+std::string formatNumber(double value);
 
 /// At most `significant` significant digits, trailing zeros dropped (for messages: "115",
 /// "0.333333", "1e-06"); "undefined" for NaN and infinities.

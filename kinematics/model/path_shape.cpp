@@ -1,5 +1,6 @@
 #include "kinematics/model/path_shape.h"
 
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/model/vec2.h"

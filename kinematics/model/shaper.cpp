@@ -1,6 +1,7 @@
 #include "kinematics/model/shaper.h"
 
 #include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/validate.h"
 
 #include <cmath>

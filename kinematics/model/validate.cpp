@@ -1,29 +1,17 @@
 #include "kinematics/model/validate.h"
 
-#include <array>
-#include <charconv>
+#include "kinematics/model/number_text.h"
+
 #include <cmath>
 
 namespace linkwright::kinematics {
 namespace {
 
-// A finite `value` as text: the shortest that reads back to it (as kinematics::formatDouble writes
-// it), or to `significant` digits. The model formats its own messages, so that it depends on
-// nothing above it.
-std::string shortestText(double value, int significant = 0) {
-  std::array<char, 64> buffer{};
-  char* const first = buffer.data();
-  char* const last = first + buffer.size();
-  const auto [end, ec] = significant > 0 ? std::to_chars(first, last, value, std::chars_format::general, significant)
-                                         : std::to_chars(first, last, value);
-  return ec == std::errc{} ? std::string(first, end) : std::string();
-}
-
 // Bounds are powers of ten: "1e6" reads better than to_chars' "1e+06".
 std::string boundText(double bound) {
   const double exponent = std::round(std::log10(bound));
   if (std::pow(10.0, exponent) == bound) return "1e" + std::to_string(static_cast<int>(exponent));
-  return shortestText(bound, 6);
+  return formatShort(bound, 6);
 }
 
 Error valueError(const std::string& field, const std::string& message) {
@@ -31,13 +19,6 @@ Error valueError(const std::string& field, const std::string& message) {
 }
 
 }  // namespace
-
-std::string formatNumber(double value) {
-  // The value the user gave, as they gave it: a message may quote "nan" or "inf" back.
-  if (std::isnan(value)) return "nan";
-  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  return value == 0.0 ? "0" : shortestText(value);
-}
 
 std::optional<Error> checkCoordinate(double value, const std::string& field) {
   if (!std::isfinite(value)) return valueError(field, field + " must be finite (got " + formatNumber(value) + ")");
@@ -81,7 +62,7 @@ std::optional<Error> checkScale(double shortest, const std::string& shortestName
   if (largest <= kMaxLengthRatio * shortest) return std::nullopt;
   return valueError("lengths", "lengths span too wide a range: " + shortestName + " is " + formatNumber(shortest) +
                                    " " + unit + " but " + largestName + " is " + formatNumber(largest) + " " + unit +
-                                   ", " + shortestText(largest / shortest, 3) + " times as much; a linkage's largest " +
+                                   ", " + formatShort(largest / shortest, 3) + " times as much; a linkage's largest " +
                                    "dimension may be at most " + boundText(kMaxLengthRatio) +
                                    " times its shortest link");
 }

@@ -44,10 +44,6 @@ inline constexpr double kMaxForce = 1e24;    ///< N
 inline constexpr double kMaxTorque = 1e33;   ///< N·m
 inline constexpr double kMaxGravity = 1e6;   ///< m/s²
 
-/// Formats a value the user gave, for messages quoting it, with round-trip precision ("70",
-/// "-0.5", and "nan" or "inf" as typed).
-std::string formatNumber(double value);
-
 /// Error unless `value` is finite and within ±kMaxLength: a coordinate, an offset, a point's
 /// place on a link, an angle.
 std::optional<Error> checkCoordinate(double value, const std::string& field);

@@ -1,5 +1,6 @@
 #include "kinematics/solve/motion_law.h"
 
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 

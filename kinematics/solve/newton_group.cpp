@@ -1,5 +1,6 @@
 #include "kinematics/solve/newton_group.h"
 
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/solve/rrr_dyad.h"
 #include "kinematics/solve/small_lu.h"

@@ -2,6 +2,7 @@
 
 #include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism_check.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/solve/guide_line.h"

@@ -2,6 +2,7 @@
 
 #include "kinematics/analysis/assembly_range.h"
 #include "kinematics/analysis/transmission.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/synthesis/message_text.h"
 
 #include <algorithm>
@@ -12,7 +13,6 @@ namespace linkwright::kinematics {
 namespace {
 
 using synthesis_text::degrees;
-using synthesis_text::number;
 
 // Angles within this of a range's edge count as inside it: the synthesis puts required
 // positions exactly on dead-centre edges only in degenerate cases, and round-off there is
@@ -132,13 +132,13 @@ std::optional<Defect> linkLengthDefect(const std::vector<double>& lengths, const
   const auto longest = static_cast<std::size_t>(std::max_element(lengths.begin(), lengths.end()) - lengths.begin());
   const auto shortest = static_cast<std::size_t>(std::min_element(lengths.begin(), lengths.end()) - lengths.begin());
   if (bounds.maxLinkLength && lengths[longest] > *bounds.maxLinkLength)
-    return Defect{DefectKind::LinkLength, "the " + names[longest] + " (" + number(lengths[longest]) +
-                                              ") is longer than the bound " + number(*bounds.maxLinkLength)};
+    return Defect{DefectKind::LinkLength, "the " + names[longest] + " (" + formatShort(lengths[longest]) +
+                                              ") is longer than the bound " + formatShort(*bounds.maxLinkLength)};
   const double ratio = lengths[longest] / lengths[shortest];
   if (bounds.maxLinkRatio && ratio > *bounds.maxLinkRatio)
-    return Defect{DefectKind::LinkLength, "the " + names[longest] + " is " + number(ratio) + " times the " +
+    return Defect{DefectKind::LinkLength, "the " + names[longest] + " is " + formatShort(ratio) + " times the " +
                                               names[shortest] + ", more than the bound " +
-                                              number(*bounds.maxLinkRatio)};
+                                              formatShort(*bounds.maxLinkRatio)};
   return std::nullopt;
 }
 

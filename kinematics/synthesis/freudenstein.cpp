@@ -1,5 +1,6 @@
 #include "kinematics/synthesis/freudenstein.h"
 
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/validate.h"
 
 #include <Eigen/Dense>

@@ -1,5 +1,6 @@
 #include "kinematics/synthesis/path_generation.h"
 
+#include "kinematics/model/number_text.h"
 #include "kinematics/synthesis/placed_fourbar.h"
 
 #include "kinematics/design/design.h"

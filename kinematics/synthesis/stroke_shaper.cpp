@@ -1,5 +1,6 @@
 #include "kinematics/synthesis/stroke_shaper.h"
 
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/synthesis/defects.h"
 #include "kinematics/synthesis/message_text.h"
@@ -10,8 +11,6 @@
 
 namespace linkwright::kinematics {
 namespace {
-
-using synthesis_text::number;
 
 Error invalid(const std::string& field, const std::string& message) {
   return Error{ErrorCode::InvalidValue, field, message};
@@ -34,7 +33,7 @@ Result<ShaperSynthesis> synthesiseShaper(const ShaperTarget& t, const DefectBoun
   const double most = t.stroke / (2.0 * (1.0 + std::sin(half)));
   if (!(t.crank < most))
     return invalid("crank",
-                   "crank must be shorter than " + number(most) +
+                   "crank must be shorter than " + formatShort(most) +
                        " for this stroke and time ratio, or the lever would not reach past the crank pin (got " +
                        formatNumber(t.crank) + ")");
   ShaperGeometry g;
@@ -48,7 +47,7 @@ Result<ShaperSynthesis> synthesiseShaper(const ShaperTarget& t, const DefectBoun
   g.guideHeight = t.guideHeight.value_or(0.5 * (low + high));
   const double reach = std::max(std::abs(g.guideHeight - low), std::abs(g.guideHeight - high));
   if (!(t.link > reach))
-    return invalid("link", "link must be longer than " + number(reach) +
+    return invalid("link", "link must be longer than " + formatShort(reach) +
                                " to reach the guide from every point of the lever tip's arc (got " +
                                formatNumber(t.link) + ")");
   auto m = makeShaper(g, Branch::Open, t.lengthUnit);

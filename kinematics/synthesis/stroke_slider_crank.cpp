@@ -1,5 +1,6 @@
 #include "kinematics/synthesis/stroke_slider_crank.h"
 
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/synthesis/defects.h"
 #include "kinematics/synthesis/message_text.h"
@@ -9,8 +10,6 @@
 
 namespace linkwright::kinematics {
 namespace {
-
-using synthesis_text::number;
 
 Error invalid(const std::string& field, const std::string& message) {
   return Error{ErrorCode::InvalidValue, field, message};
@@ -24,8 +23,8 @@ Result<SliderCrankGeometry> dimensions(const StrokeTarget& t, double alpha) {
     b = t.value;
     const double most = alpha > 0.0 ? h / (2.0 * std::sin(alpha / 2.0)) : INFINITY;
     if (!(b > h / 2.0 && b < most))
-      return invalid("rod", "rod must be longer than half the stroke (" + number(h / 2.0) + ")" +
-                                (alpha > 0.0 ? " and shorter than " + number(most) : std::string()) + " (got " +
+      return invalid("rod", "rod must be longer than half the stroke (" + formatShort(h / 2.0) + ")" +
+                                (alpha > 0.0 ? " and shorter than " + formatShort(most) : std::string()) + " (got " +
                                 formatNumber(b) + ")");
     e = (4.0 * b * b - h * h) * tanHalf / (2.0 * h);
   } else {
@@ -37,7 +36,7 @@ Result<SliderCrankGeometry> dimensions(const StrokeTarget& t, double alpha) {
     }
     const double most = h / (2.0 * tanHalf);
     if (!(e < most))
-      return invalid("offset", "offset must be smaller than " + number(most) +
+      return invalid("offset", "offset must be smaller than " + formatShort(most) +
                                    " in size for this stroke and time ratio (got " + formatNumber(t.value) + ")");
     b = 0.5 * std::sqrt(h * h + 2.0 * h * e / tanHalf);
   }
@@ -84,8 +83,8 @@ Result<SliderCrankSynthesis> synthesiseSliderCrank(const StrokeTarget& t, const 
     mu = kPi / 2.0 - std::asin((a + std::abs(e)) / b);
   } else {
     defects.push_back({DefectKind::NotGrashof, "the crank cannot turn fully: crank + offset (" +
-                                                   number(a + std::abs(e)) + ") is not shorter than the rod (" +
-                                                   number(b) + ")"});
+                                                   formatShort(a + std::abs(e)) + ") is not shorter than the rod (" +
+                                                   formatShort(b) + ")"});
   }
   if (auto defect = transmissionDefect(mu, bounds)) defects.push_back(*defect);
   if (auto defect = linkLengthDefect({a, b}, {"crank", "rod"}, bounds)) defects.push_back(*defect);

@@ -1,5 +1,6 @@
 #include "kinematics/synthesis/time_ratio.h"
 
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 

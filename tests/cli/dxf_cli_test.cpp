@@ -75,12 +75,12 @@ TEST_CASE("dxf refuses bad sizes and angles, naming the option, and writes nothi
   };
   const Case cases[] = {
       {{"--hole", "0"}, 2, "--hole must be positive and finite (got 0)"},
-      {{"--hole", "nan"}, 2, "--hole must be positive and finite (got nan)"},
+      {{"--hole", "nan"}, 2, "--hole must be positive and finite (got undefined)"},
       {{"--hole", "-3"}, 2, "--hole must be positive and finite (got -3)"},
       // The thesis crank is 25 mm between its pivot and its pin: the shortest spacing.
       {{"--hole", "25"}, 2, "--hole: hole diameter must be less than 25 mm"},
       {{"--hole", "4", "--width", "4"}, 2, "--width: plate width must be finite and more than the hole diameter 4 mm"},
-      {{"--width", "inf"}, 2, "--width must be positive and finite (got inf)"},
+      {{"--width", "inf"}, 2, "--width must be positive and finite (got undefined)"},
       {{"--at", "1,2"}, 2, "--at takes one value (got 2)"},
       {{"--at", "nan"}, 2, "--at must be finite"},
   };

@@ -327,7 +327,7 @@ TEST_CASE("report refuses bad options, naming them, and writes nothing", "[cli][
       {{"--step", "0", "-o", file}, 2, "--step must be more than 0 and at most 360 degrees (got 0)"},
       {{"--step", "-30", "-o", file}, 2, "--step must be more than 0 and at most 360 degrees (got -30)"},
       {{"--step", "400", "-o", file}, 2, "--step must be more than 0 and at most 360 degrees (got 400)"},
-      {{"--step", "nan", "-o", file}, 2, "--step must be more than 0 and at most 360 degrees (got nan)"},
+      {{"--step", "nan", "-o", file}, 2, "--step must be more than 0 and at most 360 degrees (got undefined)"},
       {{"--paper", "foo", "-o", file}, 2, "--paper must be a4 or letter (got 'foo')"},
       {{"--rates", "rpm", "-o", file}, 2, "--rates must be rad (rad/s, rad/s²) or deg (deg/s, deg/s²) (got 'rpm')"},
       {{"--angles", "grad", "-o", file}, 2, "--angles must be deg or rad (got 'grad')"},

@@ -4,6 +4,7 @@
 
 #include "kinematics/io/law_table_csv.h"
 #include "kinematics/io/numeric_table_csv.h"
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/solve/motion_law.h"
 

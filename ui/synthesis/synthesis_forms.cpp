@@ -6,6 +6,7 @@
 #include "kinematics/synthesis/named_function.h"
 
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QSignalBlocker>

@@ -152,10 +152,10 @@ TEST_CASE("hole and plate sizes outside their ranges are refused", "[link_drawin
   const Case cases[] = {
       {{0.0, std::nullopt}, "holeDiameter", "positive and finite (got 0)"},
       {{-1.0, std::nullopt}, "holeDiameter", "(got -1)"},
-      {{nan, std::nullopt}, "holeDiameter", "(got nan)"},
+      {{nan, std::nullopt}, "holeDiameter", "(got undefined)"},
       {{*spacing, std::nullopt}, "holeDiameter", "must be less than"},
       {{1.0, 1.0}, "plateWidth", "more than the hole diameter 1"},
-      {{1.0, std::numeric_limits<double>::infinity()}, "plateWidth", "(got inf)"},
+      {{1.0, std::numeric_limits<double>::infinity()}, "plateWidth", "(got undefined)"},
   };
   for (const Case& c : cases) {
     const auto drawing = linkDrawing(e.mechanism, pose, c.options);

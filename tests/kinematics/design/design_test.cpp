@@ -29,10 +29,10 @@ TEST_CASE("checkDesign names the first invalid field", "[model][design][errors]"
   expectField(bad, "lengths.rocker", "rocker length must be positive and finite (got -1)");
   bad = d;
   bad.omega = nan;
-  expectField(bad, "omega", "omega must be finite and within ±1e6 rad/s (got nan)");
+  expectField(bad, "omega", "omega must be finite and within ±1e6 rad/s (got undefined)");
   bad = d;
   bad.mechanism = withCouplerPoint(d.mechanism, s, CouplerPointSpec{1.0, INFINITY}).value();
-  expectField(bad, "points[4].across", "must be finite (got inf)");
+  expectField(bad, "points[4].across", "must be finite (got undefined)");
   bad = d;
   bad.toDeg = bad.fromDeg;
   expectField(bad, "toDeg", "toDeg must be greater than fromDeg");

@@ -139,5 +139,5 @@ TEST_CASE("checkDocumentDynamics maps every checkDynamics field to its member", 
   d.loads.forces = {{"crank", "B", 0, Eigen::Vector2d(0.0, std::numeric_limits<double>::infinity())}};
   e = checkDocumentDynamics(yoke, d);
   REQUIRE(e.has_value());
-  CHECK(e->message == "dynamics.forces[0].y_N must be finite and within ±1e24 N (got inf)");
+  CHECK(e->message == "dynamics.forces[0].y_N must be finite and within ±1e24 N (got undefined)");
 }

@@ -75,11 +75,13 @@ TEST_CASE("makeFourBar names the invalid length and its value", "[fourbar][error
   const double inf = std::numeric_limits<double>::infinity();
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const auto [field, value, shown] = GENERATE_COPY(table<std::string, double, std::string>({
-      {"frame", 0.0, "0"},      {"frame", -60.0, "-60"}, {"frame", nan, "nan"},     {"frame", inf, "inf"},
-      {"frame", -inf, "-inf"},  {"crank", 0.0, "0"},     {"crank", -25.0, "-25"},   {"crank", nan, "nan"},
-      {"crank", inf, "inf"},    {"crank", -inf, "-inf"}, {"coupler", 0.0, "0"},     {"coupler", -70.0, "-70"},
-      {"coupler", nan, "nan"},  {"coupler", inf, "inf"}, {"coupler", -inf, "-inf"}, {"rocker", 0.0, "0"},
-      {"rocker", -0.5, "-0.5"}, {"rocker", nan, "nan"},  {"rocker", inf, "inf"},    {"rocker", -inf, "-inf"},
+      {"frame", 0.0, "0"},           {"frame", -60.0, "-60"},       {"frame", nan, "undefined"},
+      {"frame", inf, "undefined"},   {"frame", -inf, "undefined"},  {"crank", 0.0, "0"},
+      {"crank", -25.0, "-25"},       {"crank", nan, "undefined"},   {"crank", inf, "undefined"},
+      {"crank", -inf, "undefined"},  {"coupler", 0.0, "0"},         {"coupler", -70.0, "-70"},
+      {"coupler", nan, "undefined"}, {"coupler", inf, "undefined"}, {"coupler", -inf, "undefined"},
+      {"rocker", 0.0, "0"},          {"rocker", -0.5, "-0.5"},      {"rocker", nan, "undefined"},
+      {"rocker", inf, "undefined"},  {"rocker", -inf, "undefined"},
   }));
   CAPTURE(field, shown);
   FourBarLengths lengths = kThesis;
@@ -111,12 +113,12 @@ TEST_CASE("makeFourBar rejects a non-finite coupler point", "[fourbar][errors]")
   const auto along = makeFourBar(kThesis, Branch::Open, "mm", CouplerPointSpec{nan, 1.0});
   REQUIRE_FALSE(along.ok());
   CHECK(along.error().field == "coupler point along");
-  CHECK(along.error().message == "coupler point along must be finite (got nan)");
+  CHECK(along.error().message == "coupler point along must be finite (got undefined)");
   const auto across =
       makeFourBar(kThesis, Branch::Open, "mm", CouplerPointSpec{1.0, std::numeric_limits<double>::infinity()});
   REQUIRE_FALSE(across.ok());
   CHECK(across.error().field == "coupler point across");
-  CHECK(across.error().message == "coupler point across must be finite (got inf)");
+  CHECK(across.error().message == "coupler point across must be finite (got undefined)");
 }
 
 TEST_CASE("The built-in examples carry the seeds' data", "[fourbar][examples]") {

@@ -46,7 +46,7 @@ TEST_CASE("each bound accepts its value and refuses the next double with the fie
   CHECK(checkLength(-70.0, "coupler")->message == "coupler length must be positive and finite (got -70)");
   CHECK_FALSE(checkCoordinate(-kMaxLength, "O4.x"));
   CHECK(checkCoordinate(above(kMaxLength), "O4.x")->message == "O4.x must be within ±1e9 (got 1000000000.0000001)");
-  CHECK(checkCoordinate(std::nan(""), "O4.x")->message == "O4.x must be finite (got nan)");
+  CHECK(checkCoordinate(std::nan(""), "O4.x")->message == "O4.x must be finite (got undefined)");
   CHECK_FALSE(checkMagnitude(-kMaxOmega, "omega", kMaxOmega, "rad/s"));
   CHECK(checkMagnitude(above(kMaxOmega), "omega", kMaxOmega, "rad/s")->field == "omega");
   CHECK_FALSE(checkNonNegative(kMaxMass, "mass", kMaxMass, "kg"));

@@ -127,15 +127,15 @@ TEST_CASE("checkMechanism names the first structural or numeric problem", "[mech
        ErrorCode::InvalidValue, "points[2].length", "points[2].length length must be positive and finite (got 0)"},
       {"a NaN ground coordinate",
        [nan](Mechanism& m) { std::get<GroundPoint>(m.points[1].definition).position.y() = nan; },
-       ErrorCode::InvalidValue, "points[1].y", "points[1].y must be finite (got nan)"},
+       ErrorCode::InvalidValue, "points[1].y", "points[1].y must be finite (got undefined)"},
       {"an infinite crank phase",
        [](Mechanism& m) {
          std::get<CrankPoint>(m.points[2].definition).phase = std::numeric_limits<double>::infinity();
        },
-       ErrorCode::InvalidValue, "points[2].phase", "points[2].phase must be finite (got inf)"},
+       ErrorCode::InvalidValue, "points[2].phase", "points[2].phase must be finite (got undefined)"},
       {"a NaN offset on the coupler",
        [nan](Mechanism& m) { std::get<AttachedPoint>(m.points[4].definition).across = nan; }, ErrorCode::InvalidValue,
-       "points[4].across", "points[4].across must be finite (got nan)"},
+       "points[4].across", "points[4].across must be finite (got undefined)"},
   };
   for (const BrokenCase& c : cases) {
     DYNAMIC_SECTION(c.what) {

@@ -101,6 +101,11 @@ TEST_CASE("the other writers spell a value that is not finite as null or undefin
   CHECK(formatJsonNumber(nan) == "null");
   CHECK(formatJsonNumber(-inf) == "null");
   CHECK(formatShort(inf) == "undefined");
+  CHECK(formatNumber(nan) == "undefined");
+  CHECK(formatNumber(-inf) == "undefined");
+  CHECK(formatNumber(0.1) == "0.1");
+  CHECK(formatNumber(-0.0) == "0");
+  CHECK(formatNumber(1e160) == "1e+160");
   CHECK(formatShort(nan, 3) == "undefined");
   CHECK(formatFixed(-inf, 4) == "undefined");
   CHECK(formatFixed(nan, 2) == "undefined");

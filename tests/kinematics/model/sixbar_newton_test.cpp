@@ -202,5 +202,5 @@ TEST_CASE("The Newton six-bar builders name a bad dimension", "[sixbar_newton][e
   CHECK(makeStephensonIINewton(two).error().field == "link5");
   two = kStephensonIINewton;
   two.j5.y() = std::numeric_limits<double>::quiet_NaN();
-  CHECK(makeStephensonIINewton(two).error().message == "j5.y must be finite (got nan)");
+  CHECK(makeStephensonIINewton(two).error().message == "j5.y must be finite (got undefined)");
 }

@@ -130,7 +130,7 @@ TEST_CASE("a law's computed peaks are never echoed as nan or inf as if typed", "
   REQUIRE(steep);
   CHECK(steep->message == "law peak acceleration would be 1e+13, beyond ±1e12 rad/s²");
   // Rows 1e-300 s apart: the spline overflows; std::max dropped its NaN and the time base then
-  // said "the law's angle at 0 s … (got nan)".
+  // said "the law's angle at 0 s … (got undefined)".
   const auto table = makeTableLaw({0.0, 1e-300, 2e-300, 3e-300}, {0.0, 0.1, 0.2, 0.3});
   if (table) {
     const auto e = checkMotionLaw(*table);

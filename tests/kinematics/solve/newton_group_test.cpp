@@ -355,7 +355,7 @@ TEST_CASE("checkMechanism names what is wrong with free points and distance cons
   check([](Mechanism& m) { m.constraints[1].length = -70.0; }, ErrorCode::InvalidValue, "constraints[1].length",
         "constraints[1].length must be positive and finite (got -70)");
   check([&](Mechanism& m) { m.constraints[1].length = nan; }, ErrorCode::InvalidValue, "constraints[1].length",
-        "constraints[1].length must be positive and finite (got nan)");
+        "constraints[1].length must be positive and finite (got undefined)");
   check(
       [](Mechanism& m) {
         m.constraints.push_back({PointId{0}, PointId{2}, 25.0});
@@ -364,7 +364,7 @@ TEST_CASE("checkMechanism names what is wrong with free points and distance cons
       "constraints[2] joins O2 and B, but the later of them, B, is not a free point: a distance constraint must "
       "close on a free point");
   check([&](Mechanism& m) { std::get<FreePoint>(m.points[3].definition).guess.y() = nan; }, ErrorCode::InvalidValue,
-        "points[3].guess.y", "points[3].guess.y must be finite (got nan)");
+        "points[3].guess.y", "points[3].guess.y must be finite (got undefined)");
   check(
       [](Mechanism& m) { m.constraints.pop_back(); }, ErrorCode::InvalidStructure, "constraints",
       "constraints must hold free points C (points[3..3]) with exactly 2 distance constraints, two per point (got 1)");

@@ -241,13 +241,13 @@ TEST_CASE("solvePose rejects a non-finite driver state or an invalid mechanism",
   const auto angle = solvePose(*m, {nan, 1.0, 0.0});
   REQUIRE_FALSE(angle.ok());
   CHECK(angle.error() == Error{ErrorCode::InvalidValue, "input angle",
-                               "input angle must be finite and within ±17453.3 rad (1e6 degrees) (got nan)"});
+                               "input angle must be finite and within ±17453.3 rad (1e6 degrees) (got undefined)"});
   const auto omega = solvePose(*m, {0.0, inf, 0.0});
   REQUIRE_FALSE(omega.ok());
   CHECK(omega.error().field == "input omega");
   const auto alpha = solvePose(*m, {0.0, 1.0, -inf});
   REQUIRE_FALSE(alpha.ok());
-  CHECK(alpha.error().message == "input alpha must be finite and within ±1e12 rad/s² (got -inf)");
+  CHECK(alpha.error().message == "input alpha must be finite and within ±1e12 rad/s² (got undefined)");
 
   Mechanism broken = *m;
   broken.points[3].name = "B";

@@ -53,11 +53,11 @@ TEST_CASE("checkSweepSpec names the bad field", "[sweep][errors]") {
     CHECK(e->message == message);
   };
   check({nan, 1.0, 10, 1.0, 0.0}, "from angle",
-        "from angle must be finite and within ±17453.3 rad (1e6 degrees) (got nan)");
+        "from angle must be finite and within ±17453.3 rad (1e6 degrees) (got undefined)");
   check({0.0, inf, 10, 1.0, 0.0}, "to angle",
-        "to angle must be finite and within ±17453.3 rad (1e6 degrees) (got inf)");
-  check({0.0, 1.0, 10, -inf, 0.0}, "omega", "omega must be finite and within ±1e6 rad/s (got -inf)");
-  check({0.0, 1.0, 10, 1.0, nan}, "alpha", "alpha must be finite and within ±1e12 rad/s² (got nan)");
+        "to angle must be finite and within ±17453.3 rad (1e6 degrees) (got undefined)");
+  check({0.0, 1.0, 10, -inf, 0.0}, "omega", "omega must be finite and within ±1e6 rad/s (got undefined)");
+  check({0.0, 1.0, 10, 1.0, nan}, "alpha", "alpha must be finite and within ±1e12 rad/s² (got undefined)");
   check({0.0, 1.0, 0, 1.0, 0.0}, "samples", "samples must be between 1 and 10000000 (got 0)");
 
   const auto viaSweep = sweep(fourBar(kThesis), {0.0, 1.0, 0, 1.0, 0.0});
