@@ -48,18 +48,25 @@ bool rocks(const std::vector<double>& angle, double lastStep) {
 
 double maxAbs(const Extrema& e) { return std::max(std::abs(e.minimum.value), std::abs(e.maximum.value)); }
 
+// What both ways of finding the peaks accept: a valid mechanism, a positive ω in its domain,
+// at least three samples a turn.
+std::optional<Error> checkPeakInputs(const Mechanism& m, double omega, std::size_t n) {
+  if (auto e = checkMechanism(m)) return e;
+  if (!(omega > 0.0))
+    return Error{ErrorCode::InvalidValue, "omega", "omega must be positive (got " + formatNumber(omega) + ")"};
+  if (auto e = checkMagnitude(omega, "omega", kMaxOmega, "rad/s")) return e;
+  if (n < 3)
+    return Error{ErrorCode::InvalidValue, "samples",
+                 "samples per revolution must be at least 3 (got " + std::to_string(n) + ")"};
+  return std::nullopt;
+}
+
 }  // namespace
 
 double PeakError::worstRate() const { return std::max({omega, alpha, speed, acceleration}); }
 
 Result<PeakSet> exactPeaks(const Mechanism& m, double omega, std::size_t n) {
-  if (auto e = checkMechanism(m)) return *e;
-  if (!(omega > 0.0))
-    return Error{ErrorCode::InvalidValue, "omega", "omega must be positive (got " + formatNumber(omega) + ")"};
-  if (auto e = checkMagnitude(omega, "omega", kMaxOmega, "rad/s")) return *e;
-  if (n < 3)
-    return Error{ErrorCode::InvalidValue, "samples",
-                 "samples per revolution must be at least 3 (got " + std::to_string(n) + ")"};
+  if (auto e = checkPeakInputs(m, omega, n)) return *e;
   const SweepSpec spec{0.0, kTurn, n + 1, omega, 0.0};
   const auto full = sweep(m, spec);
   if (!full) return full.error();
@@ -108,13 +115,7 @@ Result<PeakSet> exactPeaks(const Mechanism& m, double omega, std::size_t n) {
 
 Result<PeakSet> sampledPeaks(const Mechanism& m, double omega, std::size_t n, DerivativeMethod method,
                              const NewtonSettings& newton) {
-  if (auto e = checkMechanism(m)) return *e;
-  if (!(omega > 0.0))
-    return Error{ErrorCode::InvalidValue, "omega", "omega must be positive (got " + formatNumber(omega) + ")"};
-  if (auto e = checkMagnitude(omega, "omega", kMaxOmega, "rad/s")) return *e;
-  if (n < 3)
-    return Error{ErrorCode::InvalidValue, "samples",
-                 "samples per revolution must be at least 3 (got " + std::to_string(n) + ")"};
+  if (auto e = checkPeakInputs(m, omega, n)) return *e;
   const bool exact = method == DerivativeMethod::Exact;
   const auto s = oneTurn(m, omega, n, SolveRequest{exact, exact, newton});
   if (!s) return s.error();
