@@ -42,6 +42,9 @@ const std::set<std::string>& optionsOf(Command command) {
   static const std::set<std::string> compare{"--fourbar", "--example",   "--unit",  "--branch", "--coupler-point",
                                              "--rpm",     "--omega",     "--alpha", "--from",   "--map",
                                              "--offset",  "--tolerance", "--json"};
+  static const std::set<std::string> machine{"--example",     "--rpm",        "--omega",      "--samples",
+                                             "--cs",          "--gear-ratio", "--efficiency", "--rated-torque",
+                                             "--rated-speed", "--json"};
   static const std::set<std::string> none{};
   switch (command) {
   case Command::Analyze: return analyze;
@@ -55,6 +58,7 @@ const std::set<std::string>& optionsOf(Command command) {
   case Command::Dxf: return dxf;
   case Command::Report: return report;
   case Command::Compare: return compare;
+  case Command::Machine: return machine;
   default: return none;
   }
 }
@@ -73,6 +77,7 @@ const char* commandName(Command command) {
   case Command::Dxf: return "dxf";
   case Command::Report: return "report";
   case Command::Compare: return "compare";
+  case Command::Machine: return "machine";
   default: return "linkwright-cli";
   }
 }
@@ -215,7 +220,12 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
     inv.angles = value;
   } else if (option == "--map" || option == "--offset" || option == "--tolerance") {
     return applyCompareOption(inv, option, value);
-  } else if (option == "--svg") {
+  } else if (option == "--cs") return number(inv.speedFluctuation);
+  else if (option == "--gear-ratio") return number(inv.gearRatio);
+  else if (option == "--efficiency") return number(inv.efficiency);
+  else if (option == "--rated-torque") return number(inv.ratedTorque);
+  else if (option == "--rated-speed") return positive(inv.ratedRpm, option, value);
+  else if (option == "--svg") {
     if (value.empty()) return usage(option, option + " needs a file name");
     inv.svgFile = value;
   } else {
@@ -293,10 +303,13 @@ std::optional<Error> checkCombination(const Invocation& inv) {
   if ((inv.command == Command::Centres || inv.command == Command::Polygon) && inv.atDeg.empty())
     return usage("--at", std::string(commandName(inv.command)) +
                              " needs --at DEG (the crank angle, degrees; repeatable or DEG,DEG,...)");
-  const bool needsMechanism =
-      inv.command == Command::Analyze || inv.command == Command::Classify || inv.command == Command::Extremes ||
-      inv.command == Command::Centres || inv.command == Command::Polygon || inv.command == Command::Inversions ||
-      inv.command == Command::Dxf || inv.command == Command::Report || inv.command == Command::Compare;
+  if (inv.command == Command::Machine && !inv.example && !inv.documentPath)
+    return usage("--example", "machine needs FILE.json or --example NAME: a linkage with its masses");
+  const bool needsMechanism = inv.command == Command::Analyze || inv.command == Command::Classify ||
+                              inv.command == Command::Extremes || inv.command == Command::Centres ||
+                              inv.command == Command::Polygon || inv.command == Command::Inversions ||
+                              inv.command == Command::Dxf || inv.command == Command::Report ||
+                              inv.command == Command::Compare || inv.command == Command::Machine;
   if (needsMechanism && !inv.fourBar && !inv.example && !inv.documentPath)
     return usage("--fourbar", std::string(commandName(inv.command)) +
                                   " needs FILE.json, --fourbar FRAME,CRANK,COUPLER,ROCKER or --example NAME");
@@ -317,7 +330,7 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   if (args.empty())
     return usage("COMMAND",
                  "missing command (analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, "
-                 "report, compare, synthesize or examples; see --help)");
+                 "report, compare, machine, synthesize or examples; see --help)");
   const std::string& first = args[0];
   if (first == "--help" || first == "-h" || first == "help") {
     inv.command = Command::Help;
@@ -354,12 +367,13 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   else if (first == "dxf") inv.command = Command::Dxf;
   else if (first == "report") inv.command = Command::Report;
   else if (first == "compare") inv.command = Command::Compare;
+  else if (first == "machine") inv.command = Command::Machine;
   else if (!first.empty() && first[0] == '-')
     return usage(first, "unknown option '" + first + "' (see linkwright-cli --help)");
   else
     return usage(first, "unknown command '" + first +
                             "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, "
-                            "dxf, compare, synthesize, examples; see --help)");
+                            "dxf, report, compare, machine, synthesize, examples; see --help)");
   if (inv.command == Command::Arm) inv.lengthUnit = "m";  // the arm's seed (004) works in metres
 
   std::set<std::string> seen;
@@ -380,10 +394,10 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
       continue;
     }
     // A bare argument names a document, for the commands that analyse a linkage.
-    const bool takesDocument = inv.command == Command::Analyze || inv.command == Command::Extremes ||
-                               inv.command == Command::Classify || inv.command == Command::Centres ||
-                               inv.command == Command::Polygon || inv.command == Command::Inversions ||
-                               inv.command == Command::Dxf || inv.command == Command::Report;
+    const bool takesDocument =
+        inv.command == Command::Analyze || inv.command == Command::Extremes || inv.command == Command::Classify ||
+        inv.command == Command::Centres || inv.command == Command::Polygon || inv.command == Command::Inversions ||
+        inv.command == Command::Dxf || inv.command == Command::Report || inv.command == Command::Machine;
     if (takesDocument && !option.empty() && option[0] != '-' && !inlineValue) {
       if (inv.documentPath)
         return usage(option, "only one document can be analysed at a time (got '" + *inv.documentPath + "' and '" +

@@ -34,7 +34,8 @@ enum class Command {
   Synthesize,
   Dxf,
   Report,
-  Compare
+  Compare,
+  Machine
 };
 
 /// compare --offset: auto (fitted), none, or a value in degrees.
@@ -102,6 +103,12 @@ struct Invocation {
   std::optional<std::string> compareMap;  ///< --map text (kinematics/compare/column_mapping.h)
   std::optional<CompareOffsetOption> compareOffset;
   std::optional<CompareToleranceOption> compareTolerance;
+  // machine: a turn's duty (kinematics/dynamics/machine_duty.h); the core checks the ranges.
+  std::optional<double> speedFluctuation;  ///< --cs
+  std::optional<double> gearRatio;         ///< --gear-ratio, motor turns per crank turn
+  std::optional<double> efficiency;        ///< --efficiency, of the gearbox
+  std::optional<double> ratedTorque;       ///< --rated-torque, N·m at the motor
+  std::optional<double> ratedRpm;          ///< --rated-speed, rev/min at the motor
 };
 
 /// Parses the arguments after the program name.

@@ -36,6 +36,9 @@ Commands:
   compare    another tool's table (SolidWorks Motion, MATLAB, Excel, NX) against the
              exact solution at its own crank angles or times: worst and rms deviation
              per column, the rows beyond a tolerance flagged
+  machine    what a crank turn asks of the machine (needs masses): driving torque
+             (mean, RMS, peak), power, energy fluctuation and flywheel, peak shaking
+             force and moment, the motor's duty through a gearbox
   synthesize a linkage from the motion wanted: rocker swing and time ratio, slider or
              shaper stroke, function generator, coupler poses, coupler path; lists
              the candidates with their defects and writes the chosen one as a document
@@ -122,6 +125,21 @@ With --forces, then (world frame, N and N·m, CCW positive): F_<joint>_x_N, _y_N
 
 constexpr const char* kClassifyOptions = R"(Classify options:
   --json              machine-readable output
+)";
+
+constexpr const char* kMachineOptions = R"(machine options (FILE.json or --example NAME with masses; its speed and
+grid step are the defaults; one full turn from the grid's start):
+  --rpm RPM, --omega W  the crank's constant speed
+  --samples N           samples over the turn (4 to 10000000; default the grid's step)
+  --cs CS               size a flywheel for the coefficient of speed fluctuation
+                        Cs = (ω_max − ω_min)/ω, between 0 and 1 (e.g. 0.02)
+  --gear-ratio N        motor turns per crank turn (default 1)
+  --efficiency E        the gearbox's, above 0 and at most 1 (default 1)
+  --rated-torque T      the motor's rated torque, N·m: a verdict on its duty
+  --rated-speed RPM     the motor's rated speed, rev/min
+  --json                one JSON object, SI units (energy_fluctuation_J, flywheel_inertia_kg_m2,
+                        rms_torque_Nm, peak_torque_Nm, mean_power_W, peak_power_W,
+                        shaking_force_peak_N, shaking_moment_peak_Nm, motor {...})
 )";
 
 constexpr const char* kCentresOptions =
@@ -379,6 +397,7 @@ Examples:
       --map 2=time:s,3=coupler_omega:deg/s:abs,4=rocker_omega:deg/s:abs
   linkwright-cli polygon --example thesis-crank-rocker --at 30
   linkwright-cli inversions --fourbar 60,25,70,45
+  linkwright-cli machine --example funsho-fourbar --cs 0.02 --gear-ratio 10 --efficiency 0.9
   linkwright-cli synthesize swing --swing 60 --time-ratio 1.3 --rocker 50 -o design.json
 )";
 
@@ -399,6 +418,7 @@ std::string helpText(const std::string& topic) {
   if (topic.empty() || topic == "compare") text += std::string("\n") + kCompareOptions;
   if (topic.empty() || topic == "arm") text += std::string(topic.empty() ? "\n" : "") + kArmOptions;
   if (topic.empty() || topic == "accuracy") text += std::string("\n") + kAccuracyOptions;
+  if (topic.empty() || topic == "machine") text += std::string("\n") + kMachineOptions;
   if (topic.empty() || topic == "synthesize") text += std::string("\n") + kSynthesizeOptions;
   return text + "\n" + kExitCodes;
 }
@@ -418,10 +438,11 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
         inv.helpTopic != "extremes" && inv.helpTopic != "arm" && inv.helpTopic != "centres" &&
         inv.helpTopic != "polygon" && inv.helpTopic != "inversions" && inv.helpTopic != "dxf" &&
         inv.helpTopic != "report" && inv.helpTopic != "compare" && inv.helpTopic != "accuracy" &&
-        inv.helpTopic != "synthesize" && inv.helpTopic != "examples" && inv.helpTopic != "linkwright-cli") {
+        inv.helpTopic != "synthesize" && inv.helpTopic != "machine" && inv.helpTopic != "examples" &&
+        inv.helpTopic != "linkwright-cli") {
       err << "linkwright-cli: no help for '" << inv.helpTopic
           << "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, report, "
-             "compare, synthesize, examples)\n";
+             "compare, machine, synthesize, examples)\n";
       return toInt(ExitCode::BadInput);
     }
     out << helpText(inv.helpTopic == "linkwright-cli" || inv.helpTopic == "examples" ? "" : inv.helpTopic);
@@ -440,6 +461,7 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   case Command::Report: return toInt(runReport(inv, out, err));
   case Command::Compare: return toInt(runCompare(inv, out, err));
   case Command::Synthesize: return toInt(runSynthesize(inv, out, err));
+  case Command::Machine: return toInt(runMachine(inv, out, err));
   }
   return toInt(ExitCode::BadInput);
 }

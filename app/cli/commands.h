@@ -33,6 +33,7 @@ ExitCode runDxf(const Invocation& invocation, std::ostream& out, std::ostream& e
 ExitCode runReport(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runCompare(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runSynthesize(const Invocation& invocation, std::ostream& out, std::ostream& err);
+ExitCode runMachine(const Invocation& invocation, std::ostream& out, std::ostream& err);
 
 /// What an example brings besides the linkage: the driver's speed and the input grid.
 struct GridDefaults {

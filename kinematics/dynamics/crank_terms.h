@@ -1,0 +1,55 @@
+#pragma once
+// The crank's equation of motion over one turn, from inverse dynamics. A linkage driven by a
+// crank has one degree of freedom, so the torque it needs at the crank is
+//   T(θ, θ̇, θ̈) = T_s(θ) + I_eq(θ) θ̈ + ½ I_eq'(θ) θ̇²
+// (Lagrange: its kinetic energy is ½ I_eq(θ) θ̇²). Inverse dynamics (inverse_dynamics.h) gives
+// each term exactly at every sample of a turn, from three force sweeps: T_s, the static torque
+// (loads and gravity), with the crank at rest (ω = 0, α = 0); I_eq = T(0, α = 1) − T_s; and
+// ½ I_eq' = (T(ω, 0) − T_s)/ω² from the turn at its own speed ω. The flywheel (flywheel.h) is
+// sized and run with them.
+
+#include "kinematics/dynamics/force_sweep.h"
+#include "kinematics/dynamics/mass_properties.h"
+#include "kinematics/model/mechanism.h"
+#include "kinematics/model/result.h"
+#include "kinematics/solve/sweep.h"
+
+#include <optional>
+#include <vector>
+
+namespace linkwright::kinematics {
+
+/// Error naming "driver" unless `mechanism` is driven by a crank.
+std::optional<Error> checkCrankDriven(const Mechanism& mechanism);
+
+/// Error unless `mechanism` is driven by a crank (checkCrankDriven) and `turn` is one full turn at a constant
+/// ω ≠ 0 (fromAngle to fromAngle ± 2π, α = 0, no time base, at least 4 samples).
+std::optional<Error> checkCrankTurn(const Mechanism& mechanism, const SweepSpec& turn);
+
+/// The forces at every sample of `turn` with the crank at `omega` and `alpha` instead of the
+/// turn's own: every sample must solve (Ok), else an error naming the first angle that does
+/// not (a linkage that cannot turn fully, or a toggle where the forces are not determined).
+Result<ForceSweep> turnForces(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepSpec& turn,
+                              double omega, double alpha);
+
+/// The three terms at the turn's samples, ordered by increasing angle (a turn run backwards is
+/// reversed), and the torque at the turn's speed they add up to.
+struct CrankTerms {
+  double omega = 0.0;                ///< rad/s, the turn's speed
+  std::vector<double> angle;         ///< rad, increasing; the last is the first + 2π
+  std::vector<double> torque;        ///< N·m, T(θ, ω, 0)
+  std::vector<double> staticTorque;  ///< N·m, T_s
+  std::vector<double> inertia;       ///< kg·m², I_eq
+  std::vector<double> halfSlope;     ///< kg·m²/rad, ½ I_eq'
+  /// Linear interpolation of `column` at θ, folded into the turn.
+  double at(const std::vector<double>& column, double theta) const;
+  /// The mean of `column` over the turn (trapezoidal rule).
+  double mean(const std::vector<double>& column) const;
+};
+
+/// The terms of `turn` (checkCrankTurn), given its forces at its own speed (`moving`, from
+/// turnForces(…, turn.omega, 0)); solves the two others.
+Result<CrankTerms> crankTerms(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepSpec& turn,
+                              const ForceSweep& moving);
+
+}  // namespace linkwright::kinematics

@@ -1,0 +1,134 @@
+// linkwright-cli machine: a turn's duty in SI units, its energy fluctuation against an
+// independent integration of analyze --forces' torque column, and the refusals (no masses, a
+// driver that is not a crank, options out of range) with exit code 2, naming the option.
+
+#include "tests/cli/run_cli.h"
+
+#include "kinematics/io/json.h"
+
+#include "tests/support/catch.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace {
+
+using namespace linkwright;
+using test::runCliCommand;
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::stringstream s(text);
+  for (std::string part; std::getline(s, part, separator);) parts.push_back(part);
+  return parts;
+}
+
+// The T_drive_Nm column of analyze --forces over one turn at `stepDeg`.
+std::vector<double> torqueColumn(double stepDeg) {
+  const auto r =
+      runCliCommand({"analyze", "--example", "funsho-fourbar", "--forces", "--step", std::to_string(stepDeg)});
+  REQUIRE(r.code == 0);
+  const auto rows = split(r.out, '\n');
+  const auto header = split(rows[0], ',');
+  const auto column = static_cast<std::size_t>(std::find(header.begin(), header.end(), "T_drive_Nm") - header.begin());
+  REQUIRE(column < header.size());
+  std::vector<double> torque;
+  for (std::size_t i = 1; i < rows.size(); ++i) torque.push_back(std::stod(split(rows[i], ',')[column]));
+  return torque;
+}
+
+}  // namespace
+
+TEST_CASE("machine --json gives the turn's duty in SI units", "[cli][machine]") {
+  const auto r = runCliCommand({"machine", "--example", "funsho-fourbar", "--samples", "1441", "--cs", "0.05",
+                                "--gear-ratio", "10", "--efficiency", "0.9", "--json"});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const auto json = kinematics::io::parseJson(r.out).value();
+  for (const char* key :
+       {"energy_fluctuation_J", "flywheel_inertia_kg_m2", "textbook_flywheel_inertia_kg_m2", "rms_torque_Nm",
+        "peak_torque_Nm", "mean_power_W", "peak_power_W", "shaking_force_peak_N", "shaking_moment_peak_Nm"}) {
+    CAPTURE(key);
+    REQUIRE(json.contains(key));
+    CHECK(json[key].get<double>() >= 0.0);
+  }
+  CHECK(json["omega_rad_s"] == 100.0);
+  CHECK(json["motor"]["speed_rad_s"].get<double>() == Approx(1000.0));
+
+  // An independent integration of analyze --forces' torque column at 0.25°, by Simpson's rule:
+  // the surplus E(θ) = ∫(T̄ − T) dθ and its range ΔE; the RMS and the peak of the same column.
+  const std::vector<double> t = torqueColumn(0.25);
+  REQUIRE(t.size() == 1441);
+  const double h = 0.25 * M_PI / 180.0;
+  double mean = 0.0, square = 0.0, peak = 0.0;
+  for (std::size_t i = 0; i + 2 < t.size(); i += 2) {
+    mean += h / 3.0 * (t[i] + 4.0 * t[i + 1] + t[i + 2]);
+    square += h / 3.0 * (t[i] * t[i] + 4.0 * t[i + 1] * t[i + 1] + t[i + 2] * t[i + 2]);
+  }
+  mean /= 2.0 * M_PI;
+  square /= 2.0 * M_PI;
+  double energy = 0.0, low = 0.0, high = 0.0;
+  for (std::size_t i = 0; i + 2 < t.size(); i += 2) {
+    // E at the odd sample by the half-interval Simpson weights, then at the next even one.
+    const double mid = energy + h / 12.0 * (5.0 * (mean - t[i]) + 8.0 * (mean - t[i + 1]) - (mean - t[i + 2]));
+    energy += h / 3.0 * ((mean - t[i]) + 4.0 * (mean - t[i + 1]) + (mean - t[i + 2]));
+    low = std::min({low, mid, energy});
+    high = std::max({high, mid, energy});
+  }
+  for (const double v : t) peak = std::max(peak, std::abs(v));
+  // The trapezoidal rule against Simpson's at 0.25°: both within (0.25°)² of the integral.
+  CHECK(json["energy_fluctuation_J"].get<double>() == Approx(high - low).epsilon(1e-4));
+  CHECK(json["rms_torque_Nm"].get<double>() == Approx(std::sqrt(square)).epsilon(1e-6));
+  CHECK(json["peak_torque_Nm"].get<double>() == peak);
+  // No loads and no gravity: the linkage gives back all it takes, and the mean is 0.
+  CHECK(json["mean_torque_Nm"] == 0.0);
+  CHECK(std::abs(mean) < 1e-9 * peak);
+  // The flywheel that counts the linkage's own inertia is lighter than the textbook's.
+  CHECK(json["flywheel_inertia_kg_m2"].get<double>() < json["textbook_flywheel_inertia_kg_m2"].get<double>());
+  CHECK(json["textbook_flywheel_inertia_kg_m2"].get<double>() ==
+        Approx(json["energy_fluctuation_J"].get<double>() / (0.05 * 100.0 * 100.0)));
+}
+
+TEST_CASE("machine prints its figures for reading, with a motor verdict", "[cli][machine]") {
+  const auto r = runCliCommand({"machine", "--example", "funsho-fourbar", "--cs", "0.02", "--gear-ratio", "10",
+                                "--rated-torque", "0.01", "--rated-speed", "12000"});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.out.find("one crank turn at 100 rad/s (954.93 rpm), 73 samples") != std::string::npos);
+  CHECK(r.out.find("driving torque      mean 0 N·m, RMS ") != std::string::npos);
+  CHECK(r.out.find("kg·m² on the crank shaft for Cs 0.02") != std::string::npos);
+  CHECK(r.out.find("motor verdict       too weak: RMS torque") != std::string::npos);
+  CHECK(r.out.find("nan") == std::string::npos);
+}
+
+TEST_CASE("machine refuses what it cannot compute, naming the option", "[cli][machine]") {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"machine", "--example", "thesis-crank-rocker"},
+       "machine needs masses and loads, and the example thesis-crank-rocker has none"},
+      {{"machine"}, "machine needs FILE.json or --example NAME: a linkage with its masses"},
+      {{"machine", "--example", "funsho-fourbar", "--cs", "0"},
+       "--cs: the coefficient of speed fluctuation Cs must be between 0 and 1, exclusive (got 0)"},
+      {{"machine", "--example", "funsho-fourbar", "--efficiency", "1.2"},
+       "--efficiency: the gearbox efficiency must be above 0 and at most 1 (got 1.2)"},
+      {{"machine", "--example", "funsho-fourbar", "--gear-ratio", "-3"},
+       "--gear-ratio: the gear ratio must be between 1e-6 and 1e6 motor turns per crank turn (got -3)"},
+      {{"machine", "--example", "funsho-fourbar", "--rated-speed", "0"}, "--rated-speed must be positive and finite"},
+      {{"machine", "--example", "funsho-fourbar", "--samples", "3"},
+       "--samples must be between 4 and 10000000 for a turn (got 3)"},
+      {{"machine", "--example", "funsho-fourbar", "--omega", "0"},
+       "--omega: the crank's speed must not be 0 for a turn's duty"},
+      {{"machine", "--example", "seed-arm"}, "a flywheel, a motor and a turn's torque need a crank"},
+      {{"machine", "--example", "excavator-boom", "--rpm", "10"},
+       "a flywheel, a motor and a turn's torque need a crank: this linkage is driven by its actuator"},
+      {{"machine", "--example", "funsho-fourbar", "--forces"}, "unknown option '--forces' for 'machine'"},
+  };
+  for (const auto& [args, message] : cases) {
+    CAPTURE(args);
+    const auto r = runCliCommand(args);
+    CHECK(r.code == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err.find(message) != std::string::npos);
+    CHECK(r.err.find("nan") == std::string::npos);
+  }
+}
