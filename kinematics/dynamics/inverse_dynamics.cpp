@@ -6,6 +6,7 @@
 #include "kinematics/model/vec2.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace linkwright::kinematics {
 namespace {
@@ -31,15 +32,25 @@ Result<InverseDynamics> InverseDynamics::create(const Mechanism& mechanism, cons
   id.m_metres = *metres;
   if (auto e = id.resolve(dynamics)) return *e;
   const auto n = static_cast<Eigen::Index>(id.m_bodies.unknowns());
-  id.m_omega.assign(id.m_bodies.bodies.size(), 0.0);
-  id.m_alpha.assign(id.m_bodies.bodies.size(), 0.0);
+  const std::size_t bodyCount = id.m_bodies.bodies.size();
+  id.m_omega.assign(bodyCount, 0.0);
+  id.m_alpha.assign(bodyCount, 0.0);
+  id.m_reference.assign(bodyCount, Eigen::Vector2d::Zero());
+  id.m_load.assign(bodyCount, Eigen::Vector2d::Zero());
+  id.m_loadMoment.assign(bodyCount, 0.0);
   id.m_prismaticNormal.assign(id.m_bodies.prismatics.size(), Eigen::Vector2d::Zero());
+  for (const Body& b : id.m_bodies.bodies) {
+    std::optional<LinkId> link;
+    if (!b.links.empty()) link = b.links[0];
+    std::optional<std::size_t> turnsWith;
+    if (b.kind == BodyKind::Slider) turnsWith = b.turnsWith.index;
+    id.m_rates.push_back({b.reference, b.second, link, turnsWith});
+  }
   id.m_matrix.setZero(n, n);
   id.m_rhs.setZero(n);
   id.m_solution.setZero(n);
-  id.m_work.setZero(n);
-  id.m_workspace.setZero(1);
   id.m_lu = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
+  id.planChain();
   return id;
 }
 
@@ -52,11 +63,13 @@ std::optional<Error> InverseDynamics::resolve(const LinkageDynamics& d) {
     const double lengthMetres = length * m_metres;
     const LinkFramePoint centre = l.centre.value_or(LinkFramePoint{0.5 * length, 0.0});
     const double inertia = l.inertia.value_or(l.mass * lengthMetres * lengthMetres / 12.0);
-    m_masses.push_back({m_bodies.linkBody[link.index], link, l.mass, inertia, centre});
+    const Link& ends = m.links[link.index];
+    m_masses.push_back({m_bodies.linkBody[link.index], link, l.mass, inertia, centre, ends.first, ends.second});
   }
   for (const SliderMass& s : d.sliders) {
     const BodyId block = *m_bodies.findSlider({*m.findPoint(s.point), s.guide});
-    m_masses.push_back({block, std::nullopt, s.mass, s.inertia, {}});
+    const PointId pin = m_bodies.bodies[block.index].reference;
+    m_masses.push_back({block, std::nullopt, s.mass, s.inertia, {}, pin, pin});
   }
   for (const LinkTorque& t : d.loads.torques)
     m_torques.push_back({m_bodies.linkBody[m.findLink(t.link)->index], t.torque});
@@ -88,29 +101,239 @@ void InverseDynamics::prepare(PoseForces& f) const {
   f.shakingMoment = 0.0;
 }
 
-// Angular velocity and acceleration of every body: its first link's, else from two of its
-// points; a block's are those of the body it slides on (blocks come after rigid bodies).
+// The link-by-link order (header comment): repeatedly the crank once it has only its pin and
+// the torque left, else a dyad, until every body is solved. None if neither is found at some
+// point, or if an unknown is of a kind the closed forms do not take (an actuator's force).
+void InverseDynamics::planChain() {
+  using Kind = ChainUnknown::Kind;
+  const auto& rev = m_bodies.revolutes;
+  const auto& pri = m_bodies.prismatics;
+  for (std::size_t j = 0; j < rev.size(); ++j)
+    m_unknowns.push_back({Kind::Pin, static_cast<Eigen::Index>(2 * j), rev[j].point, rev[j].body, rev[j].hub});
+  for (std::size_t j = 0; j < pri.size(); ++j)
+    m_unknowns.push_back(
+        {Kind::Slide, static_cast<Eigen::Index>(2 * (rev.size() + j)), pri[j].pin, pri[j].block, pri[j].guide, j});
+  const Drive& d = m_bodies.drive;
+  const auto driveColumn = static_cast<Eigen::Index>(2 * (rev.size() + pri.size()));
+  if (d.kind == DriveKind::Actuator) return;
+  m_unknowns.push_back(
+      {d.kind == DriveKind::Crank ? Kind::Torque : Kind::Pin, driveColumn, d.point, d.body, kGroundBody});
+
+  std::vector<bool> known(m_unknowns.size(), false);
+  std::vector<bool> solved(m_bodies.bodies.size(), false);
+  const auto reaches = [&](std::size_t u, BodyId b) { return m_unknowns[u].body == b || m_unknowns[u].hub == b; };
+  const auto open = [&](BodyId b) {
+    std::vector<std::size_t> found;
+    for (std::size_t u = 0; u < m_unknowns.size(); ++u)
+      if (!known[u] && reaches(u, b)) found.push_back(u);
+    return found;
+  };
+  const auto kind = [&](std::size_t u) { return m_unknowns[u].kind; };
+  const auto add = [&](ChainStep step) {
+    const auto in = [&](BodyId b) { return b == step.body[0] || (step.dyad && b == step.body[1]); };
+    for (int i = 0; i < (step.dyad ? 3 : 2); ++i) {
+      const std::size_t u = step.unknown[i];
+      known[u] = true;
+      for (const BodyId b : {m_unknowns[u].body, m_unknowns[u].hub})
+        if (b != kGroundBody && !in(b)) step.passOn.emplace_back(u, b);
+    }
+    for (const BodyId b : step.body) solved[b.index] = true;
+    m_chain.push_back(std::move(step));
+  };
+
+  std::size_t left = m_bodies.movingBodies();
+  while (left > 0) {
+    bool found = false;
+    // The crank: its pin and the torque.
+    for (std::size_t k = 1; k < m_bodies.bodies.size() && !found; ++k) {
+      const BodyId b{k};
+      const auto list = open(b);
+      if (solved[k] || list.size() != 2) continue;
+      const bool torqueFirst = kind(list[0]) == Kind::Torque;
+      const std::size_t pin = torqueFirst ? list[1] : list[0];
+      const std::size_t torque = torqueFirst ? list[0] : list[1];
+      if (kind(pin) != Kind::Pin || kind(torque) != Kind::Torque) continue;
+      add({false, {b, b}, {pin, torque, 0}, {}});
+      left -= 1;
+      found = true;
+    }
+    // A dyad: a pin between two bodies, each held by one more pin or slide.
+    for (std::size_t k1 = 1; k1 < m_bodies.bodies.size() && !found; ++k1) {
+      for (std::size_t k2 = k1 + 1; k2 < m_bodies.bodies.size() && !found; ++k2) {
+        const BodyId b1{k1};
+        const BodyId b2{k2};
+        const auto list1 = open(b1);
+        const auto list2 = open(b2);
+        if (solved[k1] || solved[k2] || list1.size() != 2 || list2.size() != 2) continue;
+        const auto shared = [&](std::size_t u) { return reaches(u, b1) && reaches(u, b2); };
+        const std::size_t j = shared(list1[0]) ? list1[0] : list1[1];
+        const std::size_t j1 = j == list1[0] ? list1[1] : list1[0];
+        const std::size_t j2 = j == list2[0] ? list2[1] : list2[0];
+        // An outer slide is the block's (its guide outside the dyad): the block holds one
+        // point, its pin, where both joints act.
+        const auto outer = [&](std::size_t u, BodyId b) {
+          return !shared(u) && (kind(u) == Kind::Pin || (kind(u) == Kind::Slide && m_unknowns[u].body == b));
+        };
+        if (!shared(j) || kind(j) != Kind::Pin || (j != list2[0] && j != list2[1]) || !outer(j1, b1) || !outer(j2, b2))
+          continue;
+        add({true, {b1, b2}, {j1, j, j2}, {}});
+        left -= 2;
+        found = true;
+      }
+    }
+    if (!found) {
+      m_chain.clear();
+      return;
+    }
+  }
+}
+
+// Angular velocity and acceleration of every moving body: its first link's, else from two of
+// its points; a block's are those of the body it slides on (blocks come after rigid bodies). And
+// where its reference point is, which its moment equation is taken about.
 void InverseDynamics::bodyRates(const Pose& pose) {
-  for (std::size_t k = 0; k < m_bodies.bodies.size(); ++k) {
-    const Body& b = m_bodies.bodies[k];
-    double w = 0.0;
-    double a = 0.0;
-    if (b.kind == BodyKind::Slider) {
-      w = m_omega[b.turnsWith.index];
-      a = m_alpha[b.turnsWith.index];
-    } else if (b.kind == BodyKind::Rigid && !b.links.empty()) {
-      w = pose.linkOmega[b.links[0].index];
-      a = pose.linkAlpha[b.links[0].index];
-    } else if (b.kind == BodyKind::Rigid) {
+  for (std::size_t k = 1; k < m_bodies.bodies.size(); ++k) {
+    const BodyRate& b = m_rates[k];
+    m_reference[k] = at(pose, b.reference);
+    if (b.turnsWith) {
+      m_omega[k] = m_omega[*b.turnsWith];
+      m_alpha[k] = m_alpha[*b.turnsWith];
+    } else if (b.link) {
+      m_omega[k] = pose.linkOmega[b.link->index];
+      m_alpha[k] = pose.linkAlpha[b.link->index];
+    } else {
       const std::size_t p = b.reference.index;
       const std::size_t q = b.second.index;
       const Eigen::Vector2d r = pose.position[q] - pose.position[p];
-      w = cross(r, pose.velocity[q] - pose.velocity[p]) / r.squaredNorm();
-      a = cross(r, pose.acceleration[q] - pose.acceleration[p]) / r.squaredNorm();
+      m_omega[k] = cross(r, pose.velocity[q] - pose.velocity[p]) / r.squaredNorm();
+      m_alpha[k] = cross(r, pose.acceleration[q] - pose.acceleration[p]) / r.squaredNorm();
     }
-    m_omega[k] = w;
-    m_alpha[k] = a;
   }
+}
+
+// Every moving body's load, the right-hand side of its equations in SI: the inertia (and −m g)
+// of its mass elements, external loads with their sign changed; the resultant and the moment
+// about its reference point.
+void InverseDynamics::bodyLoads(const Pose& pose) {
+  std::fill(m_load.begin(), m_load.end(), Eigen::Vector2d::Zero());
+  std::fill(m_loadMoment.begin(), m_loadMoment.end(), 0.0);
+  const Eigen::Vector2d g = m_gravity.value_or(Eigen::Vector2d::Zero());
+  for (const MassElement& e : m_masses) {
+    const std::size_t k = e.body.index;
+    const double w = m_omega[k];
+    const double alpha = m_alpha[k];
+    Eigen::Vector2d r = Eigen::Vector2d::Zero();  // from the body's reference point to the centre, m
+    Eigen::Vector2d accel = m_metres * pose.acceleration[e.first.index];
+    if (e.link) {
+      // G − A = along·u + across·u⊥, u = d/|d| along the link, in metres.
+      const Eigen::Vector2d d = pose.position[e.second.index] - pose.position[e.first.index];
+      const Eigen::Vector2d c = (m_metres / d.norm()) * (e.centre.along * d + e.centre.across * perp(d));
+      accel += alpha * perp(c) - w * w * c;
+      r = (at(pose, e.first) - m_reference[k]) + c;
+    }
+    const Eigen::Vector2d inertiaForce = e.mass * (accel - g);
+    m_load[k] += inertiaForce;
+    m_loadMoment[k] += e.inertia * alpha + cross(r, inertiaForce);
+  }
+  for (const BodyTorque& t : m_torques) m_loadMoment[t.body.index] -= t.torque;
+  for (const BodyForce& f : m_forces) {
+    m_load[f.body.index] -= f.force;
+    m_loadMoment[f.body.index] -= cross(at(pose, f.point) - m_reference[f.body.index], f.force);
+  }
+}
+
+void InverseDynamics::prismaticNormals(const Pose& pose) {
+  for (std::size_t j = 0; j < m_bodies.prismatics.size(); ++j)
+    m_prismaticNormal[j] = perp(prismaticDirection(m_mechanism, m_bodies.prismatics[j], pose));
+}
+
+// A solved unknown's force and couple on `body`, a later step's, moved into its load.
+void InverseDynamics::passOn(const Pose& pose, const ChainUnknown& u, BodyId body) {
+  const double sign = u.sign(body);
+  const Eigen::Vector2d r = at(pose, u.point) - m_reference[body.index];
+  Eigen::Vector2d force;
+  double couple = 0.0;
+  if (u.kind == ChainUnknown::Kind::Slide) {
+    force = sign * m_solution(u.column) * m_prismaticNormal[u.slide];
+    couple = sign * m_solution(u.column + 1);
+  } else {
+    force = sign * m_solution.segment<2>(u.column);
+  }
+  m_load[body.index] -= force;
+  m_loadMoment[body.index] -= cross(r, force) + couple;
+}
+
+// A dyad in closed form (header comment). False, nothing decided, within kChainMargin of its
+// toggle.
+bool InverseDynamics::solveDyad(const Pose& pose, const ChainStep& step) {
+  const ChainUnknown& pin = m_unknowns[step.unknown[1]];
+  const Eigen::Vector2d q = at(pose, pin.point);
+  std::array<Eigen::Vector2d, 2> row;
+  std::array<double, 2> rhs{};
+  std::array<Eigen::Vector2d, 2> point;
+  for (int k = 0; k < 2; ++k) {
+    const BodyId b = step.body[k];
+    const ChainUnknown& outer = m_unknowns[step.unknown[2 * k]];
+    const double sign = pin.sign(b);
+    point[k] = at(pose, outer.point);
+    if (outer.kind == ChainUnknown::Kind::Pin) {
+      // Moments about the outer pin: (Q − P) × G = M − (P − O) × R.
+      const Eigen::Vector2d w = q - point[k];
+      row[k] = sign * Eigen::Vector2d(-w.y(), w.x());
+      rhs[k] = m_loadMoment[b.index] - cross(point[k] - m_reference[b.index], m_load[b.index]);
+    } else {
+      // Forces along the slide u (n = u⊥, so u = −n⊥): G·u = R·u.
+      const Eigen::Vector2d& n = m_prismaticNormal[outer.slide];
+      const Eigen::Vector2d u(n.y(), -n.x());
+      row[k] = sign * u;
+      rhs[k] = m_load[b.index].dot(u);
+    }
+  }
+  const double det = cross(row[0], row[1]);
+  if (!(det * det > kChainMargin * kChainMargin * row[0].squaredNorm() * row[1].squaredNorm())) return false;
+  // G: the pin's force on its body from its hub.
+  const Eigen::Vector2d g =
+      Eigen::Vector2d(rhs[0] * row[1].y() - row[0].y() * rhs[1], row[0].x() * rhs[1] - rhs[0] * row[1].x()) / det;
+  m_solution.segment<2>(pin.column) = g;
+  for (int k = 0; k < 2; ++k) {
+    const BodyId b = step.body[k];
+    const ChainUnknown& outer = m_unknowns[step.unknown[2 * k]];
+    const Eigen::Vector2d onBody = pin.sign(b) * g;
+    const Eigen::Vector2d f = m_load[b.index] - onBody;  // what the outer joint exerts on b
+    const double sign = outer.sign(b);
+    if (outer.kind == ChainUnknown::Kind::Pin) {
+      m_solution.segment<2>(outer.column) = sign * f;
+    } else {
+      // A block: f = N·n, and with every force at its pin, its reference point, the couple is
+      // all of its moment.
+      m_solution(outer.column) = sign * f.dot(m_prismaticNormal[outer.slide]);
+      m_solution(outer.column + 1) = sign * m_loadMoment[b.index];
+    }
+  }
+  return true;
+}
+
+// The steps of m_chain in order, into m_solution. False (nothing decided) if a dyad is within
+// kChainMargin of its toggle or a number is not finite: the LU then decides.
+bool InverseDynamics::solveLinkByLink(const Pose& pose) {
+  bodyRates(pose);
+  bodyLoads(pose);
+  prismaticNormals(pose);
+  for (const ChainStep& step : m_chain) {
+    if (step.dyad) {
+      if (!solveDyad(pose, step)) return false;
+    } else {
+      // The crank: F = R from its pin, T = M − (P − O) × R.
+      const BodyId b = step.body[0];
+      const ChainUnknown& pin = m_unknowns[step.unknown[0]];
+      const Eigen::Vector2d& load = m_load[b.index];
+      m_solution.segment<2>(pin.column) = pin.sign(b) * load;
+      m_solution(m_unknowns[step.unknown[1]].column) =
+          m_loadMoment[b.index] - cross(at(pose, pin.point) - m_reference[b.index], load);
+    }
+    for (const auto& [u, body] : step.passOn) passOn(pose, m_unknowns[u], body);
+  }
+  return std::isfinite(m_solution.sum());
 }
 
 void InverseDynamics::addJoints(const Pose& pose) {
@@ -122,7 +345,7 @@ void InverseDynamics::addJoints(const Pose& pose) {
     for (const auto& [body, sign] : {std::pair{rev[j].body, 1.0}, std::pair{rev[j].hub, -1.0}}) {
       if (body == kGroundBody) continue;
       const Eigen::Index row = rowOf(body);
-      const Eigen::Vector2d r = p - at(pose, m_bodies.bodies[body.index].reference);
+      const Eigen::Vector2d r = p - m_reference[body.index];
       m_matrix(row, c) += sign;
       m_matrix(row + 1, c + 1) += sign;
       m_matrix(row + 2, c) -= sign * r.y() / L;
@@ -131,14 +354,13 @@ void InverseDynamics::addJoints(const Pose& pose) {
   }
   const auto& pri = m_bodies.prismatics;
   for (std::size_t j = 0; j < pri.size(); ++j) {
-    const Eigen::Vector2d n = perp(prismaticDirection(m_mechanism, pri[j], pose));
-    m_prismaticNormal[j] = n;
+    const Eigen::Vector2d& n = m_prismaticNormal[j];
     const Eigen::Vector2d p = at(pose, pri[j].pin);
     const auto c = static_cast<Eigen::Index>(2 * (rev.size() + j));
     for (const auto& [body, sign] : {std::pair{pri[j].block, 1.0}, std::pair{pri[j].guide, -1.0}}) {
       if (body == kGroundBody) continue;
       const Eigen::Index row = rowOf(body);
-      const Eigen::Vector2d r = p - at(pose, m_bodies.bodies[body.index].reference);
+      const Eigen::Vector2d r = p - m_reference[body.index];
       m_matrix(row, c) += sign * n.x();
       m_matrix(row + 1, c) += sign * n.y();
       m_matrix(row + 2, c) += sign * cross(r, n) / L;
@@ -149,11 +371,11 @@ void InverseDynamics::addJoints(const Pose& pose) {
 
 // A force of unit size along `direction` at `point` on `body`, times `sign`, per unit of the
 // unknown in `column` (a force: no scaling, its moment row divided by L like every other).
-void InverseDynamics::addForceColumn(const Pose& pose, BodyId body, const Eigen::Vector2d& point,
-                                     const Eigen::Vector2d& direction, double sign, Eigen::Index column) {
+void InverseDynamics::addForceColumn(BodyId body, const Eigen::Vector2d& point, const Eigen::Vector2d& direction,
+                                     double sign, Eigen::Index column) {
   if (body == kGroundBody) return;
   const Eigen::Index row = rowOf(body);
-  const Eigen::Vector2d r = point - at(pose, m_bodies.bodies[body.index].reference);
+  const Eigen::Vector2d r = point - m_reference[body.index];
   m_matrix(row, column) += sign * direction.x();
   m_matrix(row + 1, column) += sign * direction.y();
   m_matrix(row + 2, column) += sign * cross(r, direction) / m_scale;
@@ -169,53 +391,36 @@ void InverseDynamics::addDrive(const Pose& pose) {
     const Eigen::Vector2d tip = at(pose, d.point);
     const Eigen::Vector2d base = at(pose, d.pivot);
     m_actuatorAxis = (tip - base).normalized();
-    addForceColumn(pose, d.body, tip, m_actuatorAxis, 1.0, c);
-    addForceColumn(pose, d.base, base, m_actuatorAxis, -1.0, c);
+    addForceColumn(d.body, tip, m_actuatorAxis, 1.0, c);
+    addForceColumn(d.base, base, m_actuatorAxis, -1.0, c);
     break;
   }
   case DriveKind::Path: {
     const Eigen::Vector2d p = at(pose, d.point);
-    addForceColumn(pose, d.body, p, Eigen::Vector2d::UnitX(), 1.0, c);
-    addForceColumn(pose, d.body, p, Eigen::Vector2d::UnitY(), 1.0, c + 1);
+    addForceColumn(d.body, p, Eigen::Vector2d::UnitX(), 1.0, c);
+    addForceColumn(d.body, p, Eigen::Vector2d::UnitY(), 1.0, c + 1);
     break;
   }
   }
 }
 
-// Inertia (and −m g) on the right, external loads moved to it with their sign changed.
-void InverseDynamics::addRightHandSide(const Pose& pose) {
-  const double L = m_scale;
-  const Eigen::Vector2d g = m_gravity.value_or(Eigen::Vector2d::Zero());
-  for (const MassElement& e : m_masses) {
-    const Eigen::Index row = rowOf(e.body);
-    const double w = m_omega[e.body.index];
-    const double alpha = m_alpha[e.body.index];
-    Eigen::Vector2d centre;
-    Eigen::Vector2d accel;
-    if (e.link) {
-      const Link& link = m_mechanism.links[e.link->index];
-      const Eigen::Vector2d a = at(pose, link.first);
-      const Eigen::Vector2d u = (at(pose, link.second) - a).normalized();
-      const Eigen::Vector2d r = m_metres * (e.centre.along * u + e.centre.across * perp(u));
-      centre = a + r;
-      accel = m_metres * pose.acceleration[link.first.index] + alpha * perp(r) - w * w * r;
-    } else {
-      centre = at(pose, m_bodies.bodies[e.body.index].reference);
-      accel = m_metres * pose.acceleration[m_bodies.bodies[e.body.index].reference.index];
-    }
-    const Eigen::Vector2d inertiaForce = e.mass * (accel - g);
-    const Eigen::Vector2d r = centre - at(pose, m_bodies.bodies[e.body.index].reference);
-    m_rhs(row) += inertiaForce.x();
-    m_rhs(row + 1) += inertiaForce.y();
-    m_rhs(row + 2) += (e.inertia * alpha + cross(r, inertiaForce)) / L;
-  }
-  for (const BodyTorque& t : m_torques) m_rhs(rowOf(t.body) + 2) -= t.torque / L;
-  for (const BodyForce& f : m_forces) {
-    const Eigen::Index row = rowOf(f.body);
-    const Eigen::Vector2d r = at(pose, f.point) - at(pose, m_bodies.bodies[f.body.index].reference);
-    m_rhs(row) -= f.force.x();
-    m_rhs(row + 1) -= f.force.y();
-    m_rhs(row + 2) -= cross(r, f.force) / L;
+// The whole scaled system: joints' and driver's columns, the loads on the right (moments / L).
+void InverseDynamics::assemble(const Pose& pose) {
+  const Eigen::Vector2d o = momentOrigin(pose);
+  double size2 = 0.0;  // the largest squared distance: one square root, the same L
+  for (const Eigen::Vector2d& p : pose.position) size2 = std::max(size2, (m_metres * p - o).squaredNorm());
+  m_scale = size2 > 0.0 ? std::sqrt(size2) : 1.0;
+  m_matrix.setZero();
+  bodyRates(pose);
+  bodyLoads(pose);
+  prismaticNormals(pose);
+  addJoints(pose);
+  addDrive(pose);
+  for (std::size_t k = 1; k < m_bodies.bodies.size(); ++k) {
+    const Eigen::Index row = rowOf(BodyId{k});
+    m_rhs(row) = m_load[k].x();
+    m_rhs(row + 1) = m_load[k].y();
+    m_rhs(row + 2) = m_loadMoment[k] / m_scale;
   }
 }
 
@@ -223,21 +428,7 @@ Eigen::Vector2d InverseDynamics::momentOrigin(const Pose& pose) const {
   return m_bodies.momentPoint ? at(pose, *m_bodies.momentPoint) : Eigen::Vector2d::Zero();
 }
 
-void InverseDynamics::assemble(const Pose& pose) {
-  const Eigen::Vector2d o = momentOrigin(pose);
-  double size = 0.0;
-  for (const Eigen::Vector2d& p : pose.position) size = std::max(size, (m_metres * p - o).norm());
-  m_scale = size > 0.0 ? size : 1.0;
-  m_matrix.setZero();
-  m_rhs.setZero();
-  bodyRates(pose);
-  addJoints(pose);
-  addDrive(pose);
-  addRightHandSide(pose);
-}
-
 void InverseDynamics::extract(const Pose& pose, std::optional<double> input, PoseForces& f) const {
-  const double L = m_scale;
   const Eigen::Vector2d o = momentOrigin(pose);
   f.shakingForce.setZero();
   f.shakingMoment = 0.0;
@@ -252,7 +443,7 @@ void InverseDynamics::extract(const Pose& pose, std::optional<double> input, Pos
   for (std::size_t j = 0; j < pri.size(); ++j) {
     const auto c = static_cast<Eigen::Index>(2 * (rev.size() + j));
     f.normal[j] = m_solution(c);
-    f.moment[j] = m_solution(c + 1) * L;
+    f.moment[j] = m_solution(c + 1);
     if (pri[j].guide != kGroundBody) continue;
     const Eigen::Vector2d onBlock = f.normal[j] * m_prismaticNormal[j];
     f.shakingForce -= onBlock;
@@ -273,7 +464,7 @@ void InverseDynamics::extractDrive(const Pose& pose, std::optional<double> input
   f.jointTorque.setZero();
   switch (d.kind) {
   case DriveKind::Crank:
-    f.driveTorque = m_solution(c) * m_scale;
+    f.driveTorque = m_solution(c);
     f.shakingMoment -= f.driveTorque;
     return;
   case DriveKind::Actuator:
@@ -300,6 +491,14 @@ void InverseDynamics::extractDrive(const Pose& pose, std::optional<double> input
 }
 
 PoseStatus InverseDynamics::solveInto(const Pose& pose, PoseForces& forces, std::optional<double> input) {
+  if (m_chain.empty() || !solveLinkByLink(pose)) return solveByLuInto(pose, forces, input);
+  m_lastMethod = Method::LinkByLink;
+  extract(pose, input, forces);
+  return PoseStatus::Ok;
+}
+
+PoseStatus InverseDynamics::solveByLuInto(const Pose& pose, PoseForces& forces, std::optional<double> input) {
+  m_lastMethod = Method::Lu;
   assemble(pose);
   m_lu.compute(m_matrix);
   // The pivots of U, against the largest: below kForceRankThreshold the system is singular.
@@ -316,6 +515,10 @@ PoseStatus InverseDynamics::solveInto(const Pose& pose, PoseForces& forces, std:
     prepare(forces);
     return PoseStatus::Singular;
   }
+  // The couples were solved as M / L: back to N·m.
+  const auto first = static_cast<Eigen::Index>(2 * m_bodies.revolutes.size());
+  for (std::size_t j = 0; j < m_bodies.prismatics.size(); ++j) m_solution(first + 2 * j + 1) *= m_scale;
+  if (m_bodies.drive.kind == DriveKind::Crank) m_solution(first + 2 * m_bodies.prismatics.size()) *= m_scale;
   extract(pose, input, forces);
   return PoseStatus::Ok;
 }
