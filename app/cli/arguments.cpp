@@ -45,6 +45,7 @@ const std::set<std::string>& optionsOf(Command command) {
   static const std::set<std::string> machine{"--example",     "--rpm",        "--omega",      "--samples",
                                              "--cs",          "--gear-ratio", "--efficiency", "--rated-torque",
                                              "--rated-speed", "--json"};
+  static const std::set<std::string> balance{"--example", "-o", "--output", "--fraction", "--radius"};
   static const std::set<std::string> none{};
   switch (command) {
   case Command::Analyze: return analyze;
@@ -59,6 +60,7 @@ const std::set<std::string>& optionsOf(Command command) {
   case Command::Report: return report;
   case Command::Compare: return compare;
   case Command::Machine: return machine;
+  case Command::Balance: return balance;
   default: return none;
   }
 }
@@ -78,6 +80,7 @@ const char* commandName(Command command) {
   case Command::Report: return "report";
   case Command::Compare: return "compare";
   case Command::Machine: return "machine";
+  case Command::Balance: return "balance";
   default: return "linkwright-cli";
   }
 }
@@ -225,6 +228,8 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
   else if (option == "--efficiency") return number(inv.efficiency);
   else if (option == "--rated-torque") return number(inv.ratedTorque);
   else if (option == "--rated-speed") return positive(inv.ratedRpm, option, value);
+  else if (option == "--fraction") return number(inv.reciprocatingFraction);
+  else if (option == "--radius") return number(inv.counterweightRadius);
   else if (option == "--svg") {
     if (value.empty()) return usage(option, option + " needs a file name");
     inv.svgFile = value;
@@ -303,8 +308,11 @@ std::optional<Error> checkCombination(const Invocation& inv) {
   if ((inv.command == Command::Centres || inv.command == Command::Polygon) && inv.atDeg.empty())
     return usage("--at", std::string(commandName(inv.command)) +
                              " needs --at DEG (the crank angle, degrees; repeatable or DEG,DEG,...)");
-  if (inv.command == Command::Machine && !inv.example && !inv.documentPath)
-    return usage("--example", "machine needs FILE.json or --example NAME: a linkage with its masses");
+  if ((inv.command == Command::Machine || inv.command == Command::Balance) && !inv.example && !inv.documentPath)
+    return usage("--example", std::string(commandName(inv.command)) +
+                                  " needs FILE.json or --example NAME: a linkage with its masses");
+  if (inv.command == Command::Balance && !inv.outputFile)
+    return usage("--output", "balance needs -o FILE.linkwright (where to write the balanced design)");
   const bool needsMechanism = inv.command == Command::Analyze || inv.command == Command::Classify ||
                               inv.command == Command::Extremes || inv.command == Command::Centres ||
                               inv.command == Command::Polygon || inv.command == Command::Inversions ||
@@ -330,7 +338,7 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   if (args.empty())
     return usage("COMMAND",
                  "missing command (analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, "
-                 "report, compare, machine, synthesize or examples; see --help)");
+                 "report, compare, machine, balance, synthesize or examples; see --help)");
   const std::string& first = args[0];
   if (first == "--help" || first == "-h" || first == "help") {
     inv.command = Command::Help;
@@ -368,12 +376,13 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   else if (first == "report") inv.command = Command::Report;
   else if (first == "compare") inv.command = Command::Compare;
   else if (first == "machine") inv.command = Command::Machine;
+  else if (first == "balance") inv.command = Command::Balance;
   else if (!first.empty() && first[0] == '-')
     return usage(first, "unknown option '" + first + "' (see linkwright-cli --help)");
   else
     return usage(first, "unknown command '" + first +
                             "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, "
-                            "dxf, report, compare, machine, synthesize, examples; see --help)");
+                            "dxf, report, compare, machine, balance, synthesize, examples; see --help)");
   if (inv.command == Command::Arm) inv.lengthUnit = "m";  // the arm's seed (004) works in metres
 
   std::set<std::string> seen;
@@ -394,10 +403,11 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
       continue;
     }
     // A bare argument names a document, for the commands that analyse a linkage.
-    const bool takesDocument =
-        inv.command == Command::Analyze || inv.command == Command::Extremes || inv.command == Command::Classify ||
-        inv.command == Command::Centres || inv.command == Command::Polygon || inv.command == Command::Inversions ||
-        inv.command == Command::Dxf || inv.command == Command::Report || inv.command == Command::Machine;
+    const bool takesDocument = inv.command == Command::Analyze || inv.command == Command::Extremes ||
+                               inv.command == Command::Classify || inv.command == Command::Centres ||
+                               inv.command == Command::Polygon || inv.command == Command::Inversions ||
+                               inv.command == Command::Dxf || inv.command == Command::Report ||
+                               inv.command == Command::Machine || inv.command == Command::Balance;
     if (takesDocument && !option.empty() && option[0] != '-' && !inlineValue) {
       if (inv.documentPath)
         return usage(option, "only one document can be analysed at a time (got '" + *inv.documentPath + "' and '" +

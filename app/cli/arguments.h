@@ -35,7 +35,8 @@ enum class Command {
   Dxf,
   Report,
   Compare,
-  Machine
+  Machine,
+  Balance
 };
 
 /// compare --offset: auto (fitted), none, or a value in degrees.
@@ -109,6 +110,9 @@ struct Invocation {
   std::optional<double> efficiency;        ///< --efficiency, of the gearbox
   std::optional<double> ratedTorque;       ///< --rated-torque, N·m at the motor
   std::optional<double> ratedRpm;          ///< --rated-speed, rev/min at the motor
+  // balance (kinematics/dynamics/force_balance.h); the core checks the ranges.
+  std::optional<double> reciprocatingFraction;  ///< --fraction, slider-cranks
+  std::optional<double> counterweightRadius;    ///< --radius, in link lengths
 };
 
 /// Parses the arguments after the program name.

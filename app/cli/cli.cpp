@@ -39,6 +39,9 @@ Commands:
   machine    what a crank turn asks of the machine (needs masses): driving torque
              (mean, RMS, peak), power, energy fluctuation and flywheel, peak shaking
              force and moment, the motor's duty through a gearbox
+  balance    counterweights that balance the shaking force (four-bars completely,
+             slider-cranks in part), written as a new document, with the shaking,
+             torque and bearing loads before and after
   synthesize a linkage from the motion wanted: rocker swing and time ratio, slider or
              shaper stroke, function generator, coupler poses, coupler path; lists
              the candidates with their defects and writes the chosen one as a document
@@ -140,6 +143,15 @@ grid step are the defaults; one full turn from the grid's start):
   --json                one JSON object, SI units (energy_fluctuation_J, flywheel_inertia_kg_m2,
                         rms_torque_Nm, peak_torque_Nm, mean_power_W, peak_power_W,
                         shaking_force_peak_N, shaking_moment_peak_Nm, motor {...})
+)";
+
+constexpr const char* kBalanceOptions =
+    R"(balance options (FILE.json or --example NAME with masses; a four-bar or a slider-crank):
+  -o, --output FILE     where to write the balanced design (required)
+  --fraction K          slider-crank: the share of the reciprocating mass the crank's
+                        counterweight balances, 0 to 1 (default 0.5)
+  --radius R            each counterweight's distance from its pivot, in lengths of its
+                        link, 0.1 to 10 (default 1)
 )";
 
 constexpr const char* kCentresOptions =
@@ -398,6 +410,7 @@ Examples:
   linkwright-cli polygon --example thesis-crank-rocker --at 30
   linkwright-cli inversions --fourbar 60,25,70,45
   linkwright-cli machine --example funsho-fourbar --cs 0.02 --gear-ratio 10 --efficiency 0.9
+  linkwright-cli balance --example funsho-fourbar -o balanced.linkwright
   linkwright-cli synthesize swing --swing 60 --time-ratio 1.3 --rocker 50 -o design.json
 )";
 
@@ -419,6 +432,7 @@ std::string helpText(const std::string& topic) {
   if (topic.empty() || topic == "arm") text += std::string(topic.empty() ? "\n" : "") + kArmOptions;
   if (topic.empty() || topic == "accuracy") text += std::string("\n") + kAccuracyOptions;
   if (topic.empty() || topic == "machine") text += std::string("\n") + kMachineOptions;
+  if (topic.empty() || topic == "balance") text += std::string("\n") + kBalanceOptions;
   if (topic.empty() || topic == "synthesize") text += std::string("\n") + kSynthesizeOptions;
   return text + "\n" + kExitCodes;
 }
@@ -438,11 +452,11 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
         inv.helpTopic != "extremes" && inv.helpTopic != "arm" && inv.helpTopic != "centres" &&
         inv.helpTopic != "polygon" && inv.helpTopic != "inversions" && inv.helpTopic != "dxf" &&
         inv.helpTopic != "report" && inv.helpTopic != "compare" && inv.helpTopic != "accuracy" &&
-        inv.helpTopic != "synthesize" && inv.helpTopic != "machine" && inv.helpTopic != "examples" &&
-        inv.helpTopic != "linkwright-cli") {
+        inv.helpTopic != "synthesize" && inv.helpTopic != "machine" && inv.helpTopic != "balance" &&
+        inv.helpTopic != "examples" && inv.helpTopic != "linkwright-cli") {
       err << "linkwright-cli: no help for '" << inv.helpTopic
           << "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, report, "
-             "compare, machine, synthesize, examples)\n";
+             "compare, machine, balance, synthesize, examples)\n";
       return toInt(ExitCode::BadInput);
     }
     out << helpText(inv.helpTopic == "linkwright-cli" || inv.helpTopic == "examples" ? "" : inv.helpTopic);
@@ -462,6 +476,7 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   case Command::Compare: return toInt(runCompare(inv, out, err));
   case Command::Synthesize: return toInt(runSynthesize(inv, out, err));
   case Command::Machine: return toInt(runMachine(inv, out, err));
+  case Command::Balance: return toInt(runBalance(inv, out, err));
   }
   return toInt(ExitCode::BadInput);
 }

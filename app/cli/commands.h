@@ -11,6 +11,7 @@
 #include "app/cli/arguments.h"
 #include "app/cli/exit_codes.h"
 
+#include "kinematics/design/design.h"
 #include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism.h"
@@ -34,6 +35,7 @@ ExitCode runReport(const Invocation& invocation, std::ostream& out, std::ostream
 ExitCode runCompare(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runSynthesize(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runMachine(const Invocation& invocation, std::ostream& out, std::ostream& err);
+ExitCode runBalance(const Invocation& invocation, std::ostream& out, std::ostream& err);
 
 /// What an example brings besides the linkage: the driver's speed and the input grid.
 struct GridDefaults {
@@ -64,6 +66,10 @@ struct ResolvedMechanism {
   std::string description;               ///< the example's description; "" otherwise
 };
 kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& invocation);
+
+/// The document or the example an invocation names, whole, for the commands that write a new
+/// design from it.
+kinematics::Result<kinematics::Design> resolveDesign(const Invocation& invocation);
 
 /// The sweep the speed and range options ask for, with `defaults` for what they leave out.
 kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Invocation& invocation, const GridDefaults& defaults);

@@ -77,6 +77,7 @@ void printJson(std::ostream& out, const k::MachineDuty& d, const k::DutyOptions&
   }
   json["shaking_force_peak_N"] = d.shakingForcePeak;
   json["shaking_moment_peak_Nm"] = d.shakingMomentPeak;
+  json["bearing_load_peak_N"] = d.bearingLoadPeak;
   k::io::JsonValue motor{
       {"gear_ratio", o.gearRatio},          {"efficiency", o.efficiency},           {"speed_rad_s", d.motor.speed},
       {"rms_torque_Nm", d.motor.rmsTorque}, {"peak_torque_Nm", d.motor.peakTorque}, {"mean_power_W", d.motor.meanPower},
@@ -100,7 +101,8 @@ void printText(std::ostream& out, const k::MachineDuty& d, const k::DutyOptions&
         << n(*o.speedFluctuation) << " (the linkage's own inertia counted; the textbook ΔE/(Cs ω²) gives "
         << n(*d.textbookFlywheelInertia) << " kg·m²)\n";
   out << "frame               shaking force peak " << n(d.shakingForcePeak) << " N, shaking moment peak "
-      << n(d.shakingMomentPeak) << " N·m (about the crank's pivot)\n";
+      << n(d.shakingMomentPeak) << " N·m (about the crank's pivot); bearing load peak " << n(d.bearingLoadPeak)
+      << " N\n";
   out << "motor               gear ratio " << n(o.gearRatio) << ", efficiency " << n(o.efficiency) << ": "
       << n(k::radPerSecToRpm(d.motor.speed)) << " rpm, RMS torque " << n(d.motor.rmsTorque) << " N·m, peak "
       << n(d.motor.peakTorque) << " N·m, mean power " << n(d.motor.meanPower) << " W, peak " << n(d.motor.peakPower)

@@ -34,14 +34,16 @@ k::Result<k::Design> readDocumentFile(const std::string& path) {
   return design;
 }
 
+k::Error unknownExample(const std::string& name) {
+  std::string names;
+  for (const k::Example& x : k::examples()) names += (names.empty() ? "" : ", ") + x.name;
+  return k::Error{k::ErrorCode::InvalidValue, "--example",
+                  "--example: no example named '" + name + "' (available: " + names + ")"};
+}
+
 k::Result<ResolvedMechanism> resolveExample(const std::string& name) {
   auto e = k::findExample(name);
-  if (!e) {
-    std::string names;
-    for (const k::Example& x : k::examples()) names += (names.empty() ? "" : ", ") + x.name;
-    return k::Error{k::ErrorCode::InvalidValue, "--example",
-                    "--example: no example named '" + name + "' (available: " + names + ")"};
-  }
+  if (!e) return unknownExample(name);
   return ResolvedMechanism{
       std::move(e->mechanism),
       {e->omega, e->alpha, e->fromDeg, e->toDeg, e->stepDeg, e->time, static_cast<long long>(e->timeSamples)},
@@ -89,6 +91,16 @@ std::optional<k::Error> applyFourBarOptions(const Invocation& inv, ResolvedMecha
 }
 
 }  // namespace
+
+kinematics::Result<kinematics::Design> resolveDesign(const Invocation& inv) {
+  if (inv.documentPath) return readDocumentFile(*inv.documentPath);
+  if (inv.example) {
+    auto design = k::designForExample(*inv.example);
+    if (!design) return unknownExample(*inv.example);
+    return std::move(*design);
+  }
+  return k::Error{k::ErrorCode::InvalidValue, "--example", "a document or --example NAME is needed"};
+}
 
 kinematics::Result<ResolvedMechanism> resolveMechanism(const Invocation& inv) {
   auto r = resolveSource(inv);

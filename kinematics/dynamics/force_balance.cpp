@@ -39,6 +39,12 @@ Complex inFrame(const Frame& f, const Eigen::Vector2d& world) {
 
 Eigen::Vector2d toWorld(const Frame& f, Complex z) { return f.origin + z.real() * f.axis + z.imag() * perp(f.axis); }
 
+// A link-frame point with round-off (below 1e-12 of the link's length) written as 0.
+LinkFramePoint cleaned(double along, double across, double length) {
+  const auto clean = [&](double v) { return std::abs(v) <= 1e-12 * length ? 0.0 : v; };
+  return {clean(along), clean(across)};
+}
+
 // A body's mass (kg) and first moment about its frame's origin (kg·length unit, in its frame).
 struct MassSum {
   double mass = 0.0;
@@ -112,7 +118,8 @@ Result<std::optional<Counterweight>> counterweight(const Mechanism& m, const Bod
   const Link& link = m.links[b.links.front().index];
   const Frame lf = frameOf(pose, link.first, link.second);
   const Complex at = inFrame(lf, world);
-  return std::optional<Counterweight>{Counterweight{link.name, std::abs(change) / r, {at.real(), at.imag()}}};
+  return std::optional<Counterweight>{
+      Counterweight{link.name, std::abs(change) / r, cleaned(at.real(), at.imag(), lf.length)}};
 }
 
 // `link`'s mass properties with the point mass `c` added: the masses summed, the centre their
@@ -128,7 +135,7 @@ LinkMass withCounterweight(const Mechanism& m, const std::optional<LinkMass>& li
   const Eigen::Vector2d centre = (link->mass * a + c.mass * b) / total;
   const double inertia =
       ownInertia + metres * metres * (link->mass * (a - centre).squaredNorm() + c.mass * (b - centre).squaredNorm());
-  return {c.link, total, LinkFramePoint{centre.x(), centre.y()}, inertia};
+  return {c.link, total, cleaned(centre.x(), centre.y(), length), inertia};
 }
 
 }  // namespace

@@ -129,6 +129,7 @@ Result<MachineDuty> machineDuty(const Mechanism& mechanism, const LinkageDynamic
   for (std::size_t j = 0; j < forces->size(); ++j) {
     d.shakingForcePeak = std::max(d.shakingForcePeak, forces->shakingForce[j].norm());
     d.shakingMomentPeak = std::max(d.shakingMomentPeak, std::abs(forces->shakingMoment[j]));
+    for (const auto& joint : forces->revolute) d.bearingLoadPeak = std::max(d.bearingLoadPeak, joint[j].norm());
   }
   d.motor = motorDuty(d, options);
   return d;

@@ -19,7 +19,8 @@
 //     N ω; where it drives (T ω > 0) it gives T/(N η), where the linkage drives it back T η/N.
 //   A mean within 1e-12 of the turn's peak is round-off and given as 0 (a linkage without loads
 //   or gravity takes back over the turn all it is given).
-//   Frame. The peak shaking force max |F_s| and moment max |M_s| (about the crank's pivot).
+//   Frame. The peak shaking force max |F_s| and moment max |M_s| (about the crank's pivot); and
+//   the largest force through any pin joint, the bearing load a balance trades against.
 
 #include "kinematics/dynamics/crank_terms.h"
 #include "kinematics/dynamics/mass_properties.h"
@@ -73,6 +74,7 @@ struct MachineDuty {
   std::optional<double> textbookFlywheelInertia;  ///< kg·m², ΔE/(Cs ω²), with Cs given
   double shakingForcePeak = 0.0;                  ///< N
   double shakingMomentPeak = 0.0;                 ///< N·m
+  double bearingLoadPeak = 0.0;                   ///< N, the largest force through any pin joint
   MotorDuty motor;
 };
 

@@ -1,0 +1,83 @@
+// `linkwright-cli balance`: the design with counterweights that balance its shaking force
+// (kinematics/dynamics/force_balance.h), written as a new document, and what the balance gains
+// and costs over one crank turn: the shaking force and moment, the driving torque and the
+// bearing loads before and after (kinematics/dynamics/machine_duty.h).
+
+#include "app/cli/commands.h"
+
+#include "kinematics/dynamics/force_balance.h"
+#include "kinematics/dynamics/machine_duty.h"
+#include "kinematics/io/document_json.h"
+#include "kinematics/io/safe_file.h"
+#include "kinematics/model/number_text.h"
+#include "kinematics/model/units.h"
+
+#include <numbers>
+#include <ostream>
+
+namespace linkwright::cli {
+namespace {
+
+namespace k = kinematics;
+using k::formatShort;
+
+// One turn at the design's speed on its grid's step, from its start: what the figures compare.
+k::SweepSpec turnOf(const k::Design& d) {
+  const double from = k::degToRad(d.fromDeg);
+  return {from, from + 2.0 * std::numbers::pi, d.samples < 361 ? 361 : d.samples, d.omega == 0.0 ? 1.0 : d.omega, 0.0};
+}
+
+void printComparison(std::ostream& out, const k::MachineDuty& before, const k::MachineDuty& after) {
+  const auto row = [&](const std::string& name, double a, double b, const std::string& unit) {
+    const std::string change = a > 0.0 ? " (" + formatShort(100.0 * (b - a) / a, 3) + " %)" : "";
+    out << "  " << name << formatShort(a, 5) << " → " << formatShort(b, 5) << " " << unit << change << "\n";
+  };
+  out << "over one crank turn at " << formatShort(before.omega, 5) << " rad/s, before → after:\n";
+  row("shaking force peak    ", before.shakingForcePeak, after.shakingForcePeak, "N");
+  row("shaking moment peak   ", before.shakingMomentPeak, after.shakingMomentPeak, "N·m");
+  row("driving torque RMS    ", before.rmsTorque, after.rmsTorque, "N·m");
+  row("driving torque peak   ", before.peakTorque, after.peakTorque, "N·m");
+  row("bearing load peak     ", before.bearingLoadPeak, after.bearingLoadPeak, "N");
+}
+
+}  // namespace
+
+ExitCode runBalance(const Invocation& inv, std::ostream& out, std::ostream& err) {
+  const auto resolved = resolveDesign(inv);
+  if (!resolved) {
+    err << "linkwright-cli: " << resolved.error().message << "\n";
+    return ExitCode::BadInput;
+  }
+  k::Design design = *resolved;
+  k::BalanceOptions options;
+  options.reciprocatingFraction = inv.reciprocatingFraction.value_or(options.reciprocatingFraction);
+  options.radius = inv.counterweightRadius.value_or(options.radius);
+  const auto balance = k::balanceShakingForce(design.mechanism, design.dynamics, options);
+  if (!balance) {
+    const std::string& field = balance.error().field;
+    const std::string option = field == "fraction" ? "--fraction: " : field == "radius" ? "--radius: " : "";
+    err << "linkwright-cli: " << option << balance.error().message << "\n";
+    return ExitCode::BadInput;
+  }
+  const k::LinkageDynamics original = design.dynamics;
+  design.dynamics = balance->balanced;
+  if (auto e = k::io::writeFileSafely(*inv.outputFile, k::io::writeDocument(design))) {
+    err << "linkwright-cli: " << e->message << "\n";
+    return ExitCode::IoError;
+  }
+  const std::string& unit = design.mechanism.lengthUnit;
+  out << balance->method << "; written to " << *inv.outputFile << "\n";
+  for (const k::Counterweight& c : balance->counterweights)
+    out << "  counterweight on " << c.link << ": " << formatShort(c.mass, 6) << " kg at "
+        << formatShort(c.centre.along, 6) << " " << unit << " along and " << formatShort(c.centre.across, 6) << " "
+        << unit << " across the link, joined to its mass\n";
+  if (balance->counterweights.empty()) out << "  no counterweight needed: it is balanced already\n";
+  const k::SweepSpec turn = turnOf(design);
+  const auto before = k::machineDuty(design.mechanism, original, turn, {});
+  const auto after = k::machineDuty(design.mechanism, design.dynamics, turn, {});
+  if (before && after) printComparison(out, *before, *after);
+  else out << "no turn to compare over: " << (before ? after.error() : before.error()).message << "\n";
+  return ExitCode::Success;
+}
+
+}  // namespace linkwright::cli

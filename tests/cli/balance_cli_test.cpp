@@ -1,0 +1,95 @@
+// linkwright-cli balance: the balanced design is written as a document whose shaking force
+// analyze --forces finds gone, the figures before and after are printed, and every refusal
+// (no masses, a linkage it cannot balance, options out of range, a file it cannot write) exits
+// with its code and writes nothing.
+
+#include "tests/cli/run_cli.h"
+
+#include "tests/support/catch.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <random>
+#include <sstream>
+
+namespace {
+
+using linkwright::test::runCliCommand;
+namespace fs = std::filesystem;
+
+fs::path scratchDir() {
+  std::random_device random;
+  const fs::path dir = fs::temp_directory_path() / ("linkwright-balance-cli-" + std::to_string(random()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::stringstream s(text);
+  for (std::string part; std::getline(s, part, separator);) parts.push_back(part);
+  return parts;
+}
+
+// The largest shaking force in analyze --forces' shaking_N column.
+double peakShaking(const std::vector<std::string>& source) {
+  std::vector<std::string> args{"analyze"};
+  args.insert(args.end(), source.begin(), source.end());
+  args.insert(args.end(), {"--forces", "--step", "1"});
+  const auto r = runCliCommand(args);
+  REQUIRE(r.code == 0);
+  const auto rows = split(r.out, '\n');
+  const auto header = split(rows[0], ',');
+  const auto column = static_cast<std::size_t>(std::find(header.begin(), header.end(), "shaking_N") - header.begin());
+  REQUIRE(column < header.size());
+  double peak = 0.0;
+  for (std::size_t i = 1; i < rows.size(); ++i) peak = std::max(peak, std::stod(split(rows[i], ',')[column]));
+  return peak;
+}
+
+}  // namespace
+
+TEST_CASE("balance writes a design whose shaking force analyze --forces finds gone", "[cli][balance]") {
+  const fs::path dir = scratchDir();
+  const std::string out = (dir / "balanced.linkwright").string();
+  const auto r = runCliCommand({"balance", "--example", "funsho-fourbar", "-o", out});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.out.find("four-bar: complete shaking-force balance (Berkof and Lowen)") != std::string::npos);
+  CHECK(r.out.find("counterweight on crank: 0.4 kg at -10 mm along and 0 mm across the link") != std::string::npos);
+  CHECK(r.out.find("counterweight on rocker: 0.5 kg at -20 mm along and 0 mm across the link") != std::string::npos);
+  CHECK(r.out.find("bearing load peak") != std::string::npos);
+  const double before = peakShaking({"--example", "funsho-fourbar"});
+  const double after = peakShaking({out});
+  CHECK(before > 100.0);
+  CHECK(after <= 1e-9 * before);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("balance refuses what it cannot balance, and writes nothing", "[cli][balance]") {
+  const fs::path dir = scratchDir();
+  const std::string out = (dir / "out.linkwright").string();
+  const std::string data = LINKWRIGHT_TEST_DATA;
+  const std::vector<std::tuple<std::vector<std::string>, int, std::string>> cases{
+      {{"balance", "--example", "funsho-fourbar"}, 2, "balance needs -o FILE.linkwright"},
+      {{"balance", "-o", out}, 2, "balance needs FILE.json or --example NAME"},
+      {{"balance", "--example", "thesis-crank-rocker", "-o", out}, 2, "there are no masses to balance"},
+      {{"balance", data + "/watt-ii-masses.linkwright", "-o", out},
+       2,
+       "shaking-force balance by counterweights is for a four-bar or a slider-crank"},
+      {{"balance", "--example", "funsho-fourbar", "--fraction", "2", "-o", out},
+       2,
+       "--fraction: the fraction of the reciprocating mass to balance must be between 0 and 1 (got 2)"},
+      {{"balance", "--example", "funsho-fourbar", "--radius", "0", "-o", out}, 2, "--radius: the counterweight's"},
+      {{"balance", "--example", "funsho-fourbar", "-o", (dir / "missing" / "out.linkwright").string()}, 1, ""},
+  };
+  for (const auto& [args, code, message] : cases) {
+    CAPTURE(args);
+    const auto r = runCliCommand(args);
+    CHECK(r.code == code);
+    CHECK(r.err.find(message) != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+  }
+  CHECK(fs::is_empty(dir));
+  fs::remove_all(dir);
+}
