@@ -141,9 +141,7 @@ void formatTable(const Table& t, std::string& out, Format format) {
 
 // The writer's own cell texts (number_text.h), one std::string each: the CLI's bytes
 // without the stream.
-void cliCells(std::string& out, double value, bool grid) {
-  out += grid ? formatShort(value, 12) : formatDouble(value);
-}
+void cliCells(std::string& out, double value, bool grid) { out += grid ? formatShort(value, 12) : formatDouble(value); }
 
 void printf17g(std::string& out, double value, bool) {
   char buffer[32];

@@ -229,13 +229,13 @@ TEST_CASE("the arm's joint torques τ = JᵀF are the serial arm's own Newton–
 
 TEST_CASE("force columns name each driver's force with its unit", "[dynamics][driven][io]") {
   const auto arm = bodiesOf(drivenCase("seed-arm").mechanism).value();
-  CHECK(names(forceColumns(arm)) == Names{"F_O_x_N", "F_O_y_N", "F_O_N", "F_elbow_x_N", "F_elbow_y_N",
-                                                      "F_elbow_N", "tip_drive_fx_N", "tip_drive_fy_N",
-                                                      "tip_drive_force_N", "O_joint_torque_Nm", "elbow_joint_torque_Nm",
-                                                      "shaking_x_N", "shaking_y_N", "shaking_N", "shaking_moment_Nm"});
+  CHECK(names(forceColumns(arm)) == Names{"F_O_x_N", "F_O_y_N", "F_O_N", "F_elbow_x_N", "F_elbow_y_N", "F_elbow_N",
+                                          "tip_drive_fx_N", "tip_drive_fy_N", "tip_drive_force_N", "O_joint_torque_Nm",
+                                          "elbow_joint_torque_Nm", "shaking_x_N", "shaking_y_N", "shaking_N",
+                                          "shaking_moment_Nm"});
   const auto boom = bodiesOf(drivenCase("excavator-boom").mechanism).value();
   CHECK(names(forceColumns(boom)) == Names{"F_O_x_N", "F_O_y_N", "F_O_N", "actuator_force_N", "shaking_x_N",
-                                                       "shaking_y_N", "shaking_N", "shaking_moment_Nm"});
+                                           "shaking_y_N", "shaking_N", "shaking_moment_Nm"});
   // The short table keeps sizes, the drive's force along its input and the joint torques.
   Names summary;
   for (const auto& column : forceColumns(arm))
