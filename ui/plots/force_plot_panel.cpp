@@ -3,6 +3,7 @@
 #include "ui/colors.h"
 #include "ui/document/force_results.h"
 #include "ui/document/mechanism_document.h"
+#include "ui/number_text.h"
 #include "ui/plots/axis_range.h"
 #include "ui/plots/chart_colors.h"
 #include "ui/plots/chart_scale.h"
@@ -32,7 +33,9 @@ constexpr int kPolarMinimumWidth = 260;
 ForcePlotPanel::ForcePlotPanel(MechanismDocument* document, ForceResults* forces, QWidget* parent)
     : QWidget(parent), m_document(document), m_forces(forces), m_status(new QLabel(this)),
       m_torque(new ForceChartView(tr("Driving torque"), false)), m_joints(new ForceChartView(tr("Joint forces"), true)),
-      m_selector(new QComboBox), m_polar(new PolarLoadView), m_charts(new QWidget(this)) {
+      m_shaking(new ForceChartView(tr("Shaking force on the frame"), false)),
+      m_shakingMoment(new ForceChartView(tr("Shaking moment"), false)), m_shakingPeaks(new QLabel),
+      m_pages(new QTabWidget), m_selector(new QComboBox), m_polar(new PolarLoadView), m_charts(new QWidget(this)) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   m_settleTimer.setSingleShot(true);
@@ -45,7 +48,7 @@ ForcePlotPanel::ForcePlotPanel(MechanismDocument* document, ForceResults* forces
 
   // Two pages, each with the pane's full width: the curves against crank angle, and the polar
   // diagrams (side by side they were too narrow to read in the default window).
-  auto* pages = new QTabWidget(m_charts);
+  QTabWidget* pages = m_pages;
   pages->setDocumentMode(true);
   auto* chartsLayout = new QVBoxLayout(m_charts);
   chartsLayout->setContentsMargins(0, 0, 0, 0);
@@ -61,19 +64,33 @@ ForcePlotPanel::ForcePlotPanel(MechanismDocument* document, ForceResults* forces
   auto* right = new QVBoxLayout(polar);
   right->setContentsMargins(0, 0, 0, 0);
   auto* selectorRow = new QHBoxLayout;
-  auto* selectorLabel = new QLabel(tr("Polar load diagram of joint"));
+  auto* selectorLabel = new QLabel(tr("Polar diagram of"));
   selectorLabel->setBuddy(m_selector);
   selectorRow->addWidget(selectorLabel);
   selectorRow->addWidget(m_selector, 1);
   right->addLayout(selectorRow);
   m_polar->setMinimumWidth(kPolarMinimumWidth);
   right->addWidget(m_polar, 1);
+  // The frame's share: what the linkage shakes its mounting with (the forces the moving bodies
+  // exert on the ground, and their moment about the first ground pivot).
+  auto* shaking = new QWidget;
+  auto* frame = new QVBoxLayout(shaking);
+  frame->setContentsMargins(0, 0, 0, 0);
+  m_shaking->setMinimumHeight(kChartMinimumHeight);
+  m_shakingMoment->setMinimumHeight(kChartMinimumHeight);
+  m_shakingPeaks->setObjectName(QStringLiteral("shakingPeaks"));
+  m_shakingPeaks->setWordWrap(true);
+  m_shakingPeaks->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  frame->addWidget(m_shakingPeaks);
+  frame->addWidget(m_shaking, 1);
+  frame->addWidget(m_shakingMoment, 1);
   pages->addTab(curves, tr("Torque and joint forces"));
-  pages->addTab(polar, tr("Polar load diagrams"));
+  pages->addTab(shaking, tr("Shaking"));
+  pages->addTab(polar, tr("Polar diagrams"));
   layout->addWidget(m_charts, 1);
 
   // The two charts share the crank axis: same plot-area edges, so the cursors line up.
-  for (ForceChartView* chart : {m_torque, m_joints})
+  for (ForceChartView* chart : {m_torque, m_joints, m_shaking, m_shakingMoment})
     connect(chart, &ForceChartView::resized, this, &ForcePlotPanel::alignCharts);
   connect(m_selector, &QComboBox::currentIndexChanged, this, [this] { refreshPolar(); });
   connect(forces, &ForceResults::changed, this, [this](bool cycle) {
@@ -93,16 +110,22 @@ void ForcePlotPanel::setAngleUnit(AngleUnit unit) {
 }
 
 void ForcePlotPanel::setPresentationScale(double factor) {
-  for (QChart* chart : {m_torque->chart(), m_joints->chart(), m_polar->chart()}) setChartScale(chart, factor);
+  for (QChart* chart :
+       {m_torque->chart(), m_joints->chart(), m_shaking->chart(), m_shakingMoment->chart(), m_polar->chart()})
+    setChartScale(chart, factor);
   alignCharts();
 }
 
 void ForcePlotPanel::refreshColors() {
-  for (QChart* chart : {m_torque->chart(), m_joints->chart(), m_polar->chart()}) applyChartColors(chart);
+  for (QChart* chart :
+       {m_torque->chart(), m_joints->chart(), m_shaking->chart(), m_shakingMoment->chart(), m_polar->chart()})
+    applyChartColors(chart);
   refreshAll();
 }
 
 QString ForcePlotPanel::statusText() const { return m_status->text(); }
+
+QString ForcePlotPanel::shakingPeakText() const { return m_shakingPeaks->text(); }
 
 void ForcePlotPanel::setOnScreen(bool onScreen) {
   if (onScreen == m_onScreen) return;
@@ -150,13 +173,15 @@ void ForcePlotPanel::refreshAll() {
   for (std::size_t i = 0; i < joints.size(); ++i)
     buildJointForceRuns(*sweep, *cycle, joints[i], m_unit, m_runs[i], x.source);
   relayout |= m_joints->setData(m_runs, tr("|F| [N]"), x, flow);
+  refreshShaking(x, flow, relayout);
 
-  if (joints != m_jointList) {
+  if (joints != m_jointList || m_selector->count() == 0) {
     const QString kept = m_selector->currentText();
     const QSignalBlocker block(m_selector);
     m_selector->clear();
     for (const ForceJoint& j : joints)
-      if (!j.prismatic) m_selector->addItem(j.name);
+      if (!j.prismatic) m_selector->addItem(tr("joint %1").arg(j.name));
+    m_selector->addItem(tr("the shaking force"));
     m_selector->setCurrentIndex(std::max(0, m_selector->findText(kept)));
     m_jointList = joints;
   }
@@ -166,13 +191,53 @@ void ForcePlotPanel::refreshAll() {
   m_settleTimer.start();
 }
 
+void ForcePlotPanel::refreshShaking(const PlotXAxis& x, DataFlow flow, bool& relayout) {
+  const k::ForceSweep& cycle = *m_forces->cycleForces();
+  const k::SweepResult& sweep = *m_forces->cycleSweep();
+  m_shaking->setCurves({{QStringLiteral("shaking_x"), tr("Fx"), linkColor(0)},
+                        {QStringLiteral("shaking_y"), tr("Fy"), linkColor(1)},
+                        {QStringLiteral("shaking"), tr("|F|"), linkColor(2)}});
+  m_runs.resize(3);
+  for (const auto& [i, curve] : {std::pair{0, ShakingCurve::X}, {1, ShakingCurve::Y}, {2, ShakingCurve::Magnitude}})
+    buildShakingForceRuns(sweep, cycle, curve, m_unit, m_runs[static_cast<std::size_t>(i)], x.source);
+  relayout |= m_shaking->setData(m_runs, tr("force [N]"), x, flow);
+
+  const k::Mechanism& m = m_document->design().mechanism;
+  const auto pivot = cycle.bodies.momentPoint;
+  const QString about = pivot && pivot->index < m.points.size()
+                            ? tr("about %1").arg(QString::fromStdString(m.points[pivot->index].name))
+                            : tr("about the origin");
+  const QString title = tr("Shaking moment %1").arg(about);
+  if (m_shakingMoment->chart()->title() != title) m_shakingMoment->chart()->setTitle(title);
+  m_shakingMoment->setCurves({{QStringLiteral("shaking_moment"), tr("M"), linkColor(3)}});
+  m_runs.resize(1);
+  buildShakingMomentRuns(sweep, cycle, m_unit, m_runs[0], x.source);
+  relayout |= m_shakingMoment->setData(m_runs, tr("moment [N·m]"), x, flow);
+
+  const ShakingPeaks peaks = shakingPeaks(cycle);
+  m_shakingPeaks->setText(peaks.any
+                              ? tr("Peak shaking force %1 N at %2; peak shaking moment %3 N·m %4 at %5.")
+                                    .arg(numberText(peaks.force, 'g', 4),
+                                         xReadoutText(sampleX(sweep, peaks.forceSample, x.source, m_unit), x, m_unit),
+                                         numberText(peaks.moment, 'g', 4), about,
+                                         xReadoutText(sampleX(sweep, peaks.momentSample, x.source, m_unit), x, m_unit))
+                              : tr("No sample of the cycle has its forces solved."));
+}
+
+bool ForcePlotPanel::shakingSelected() const { return m_selector->currentIndex() == m_selector->count() - 1; }
+
 void ForcePlotPanel::settleValueRanges() {
-  const bool torque = m_torque->settleValueRange();
-  if (m_joints->settleValueRange() || torque) alignCharts();
+  bool changed = m_torque->settleValueRange();
+  changed |= m_joints->settleValueRange();
+  changed |= m_shaking->settleValueRange();
+  changed |= m_shakingMoment->settleValueRange();
+  if (changed) alignCharts();
 }
 
 void ForcePlotPanel::alignCharts() {
-  if (m_charts->isVisible()) alignPlotAreas({m_torque->chart(), m_joints->chart()});
+  if (!m_charts->isVisible()) return;
+  alignPlotAreas({m_torque->chart(), m_joints->chart()});
+  alignPlotAreas({m_shaking->chart(), m_shakingMoment->chart()});
 }
 
 std::optional<double> ForcePlotPanel::cursorX() const { return ui::cursorX(*m_document, m_x, m_unit); }
@@ -183,11 +248,12 @@ void ForcePlotPanel::refreshCursor() {
     return;
   }
   const std::optional<double> x = m_forces->cycleForces() != nullptr ? cursorX() : std::nullopt;
-  m_torque->setCursorX(x);
-  m_joints->setCursorX(x);
+  for (ForceChartView* chart : {m_torque, m_joints, m_shaking, m_shakingMoment}) chart->setCursorX(x);
   const k::PoseForces* pose = m_forces->poseForces();
   const int joint = m_selector->currentIndex();
-  if (pose != nullptr && joint >= 0 && static_cast<std::size_t>(joint) < pose->revolute.size()) {
+  if (pose != nullptr && shakingSelected()) {
+    m_polar->setCurrent(QPointF(pose->shakingForce.x(), pose->shakingForce.y()));
+  } else if (pose != nullptr && joint >= 0 && static_cast<std::size_t>(joint) < pose->revolute.size()) {
     const Eigen::Vector2d& f = pose->revolute[static_cast<std::size_t>(joint)];
     m_polar->setCurrent(QPointF(f.x(), f.y()));
   } else {
@@ -199,6 +265,13 @@ void ForcePlotPanel::refreshPolar() {
   const k::ForceSweep* cycle = m_forces->cycleForces();
   const int joint = m_selector->currentIndex();
   if (cycle == nullptr || joint < 0) return;
+  if (shakingSelected()) {
+    SeriesRuns locus;
+    buildShakingPolarRuns(*cycle, locus);
+    m_polar->setLocus(locus, tr("Shaking force on the frame"), linkColor(2));
+    refreshCursor();
+    return;
+  }
   // Revolute joints come first in forceJoints, so the selector's index is the revolute index.
   const auto index = static_cast<std::size_t>(joint);
   SeriesRuns locus;
@@ -206,7 +279,7 @@ void ForcePlotPanel::refreshPolar() {
   m_polar->setLocus(
       locus,
       tr("Joint %1: force on %2 from %3")
-          .arg(m_selector->currentText(),
+          .arg(QString::fromStdString(cycle->bodies.revolutes[index].name),
                QString::fromStdString(cycle->bodies.bodies[cycle->bodies.revolutes[index].body.index].name),
                QString::fromStdString(cycle->bodies.bodies[cycle->bodies.revolutes[index].hub.index].name)),
       m_jointList.empty() ? QColor(Qt::black) : m_jointList[index].color);

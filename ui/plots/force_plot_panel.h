@@ -1,7 +1,8 @@
 #pragma once
 // The force plots: the driving torque and the joint reaction magnitudes against time or crank
-// angle (the document's plotAxis()), and the polar load diagram of the pin joint the combo box
-// picks. Everything comes from a ForceResults (the core's inverse dynamics on the document's
+// angle (the document's plotAxis()); the shaking force on the frame (x, y, magnitude) and its
+// moment, with their peaks; and the polar diagram of the pin joint, or the shaking force, the
+// combo box picks. Everything comes from a ForceResults (the core's inverse dynamics on the document's
 // cycle); a crank move moves the cursors and the polar dot only. When there are no forces (no masses or loads, an unknown
 // length unit) the charts hide and a line says why.
 
@@ -16,6 +17,7 @@
 
 class QComboBox;
 class QLabel;
+class QTabWidget;
 
 namespace linkwright::ui {
 
@@ -43,6 +45,12 @@ public:
 
   ForceChartView* torqueChart() const { return m_torque; }
   ForceChartView* jointChart() const { return m_joints; }
+  ForceChartView* shakingChart() const { return m_shaking; }
+  ForceChartView* shakingMomentChart() const { return m_shakingMoment; }
+  /// The line under the shaking charts with the peaks and where they are.
+  QString shakingPeakText() const;
+  /// The pages: curves, shaking, polar diagrams.
+  QTabWidget* pages() const { return m_pages; }
   PolarLoadView* polarView() const { return m_polar; }
   QComboBox* jointSelector() const { return m_selector; }
   /// The line that says why there are no forces, or where they are missing.
@@ -54,6 +62,8 @@ private:
   void refreshAll();
   void refreshCursor();
   void refreshPolar();
+  void refreshShaking(const PlotXAxis& x, DataFlow flow, bool& relayout);
+  bool shakingSelected() const;
   void alignCharts();
   void settleValueRanges();
   std::optional<double> cursorX() const;
@@ -64,6 +74,10 @@ private:
   QLabel* m_status;
   ForceChartView* m_torque;
   ForceChartView* m_joints;
+  ForceChartView* m_shaking;
+  ForceChartView* m_shakingMoment;
+  QLabel* m_shakingPeaks;
+  QTabWidget* m_pages;
   QComboBox* m_selector;
   PolarLoadView* m_polar;
   QWidget* m_charts;

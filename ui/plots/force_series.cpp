@@ -110,4 +110,48 @@ void buildPolarRuns(const k::ForceSweep& forces, std::size_t revolute, SeriesRun
       [&](std::size_t j) { return forces.revolute[revolute][j].y(); }, out);
 }
 
+void buildShakingForceRuns(const k::SweepResult& sweep, const k::ForceSweep& forces, ShakingCurve curve, AngleUnit unit,
+                           SeriesRuns& out, const XSource& x) {
+  const auto value = [&](std::size_t j) {
+    const Eigen::Vector2d& f = forces.shakingForce[j];
+    return curve == ShakingCurve::X ? f.x() : curve == ShakingCurve::Y ? f.y() : f.norm();
+  };
+  buildRuns(
+      samplesOf(sweep, forces), [&](std::size_t j) { return forces.ok(j); },
+      [&](std::size_t j) { return sampleX(sweep, j, x, unit); }, value, out);
+}
+
+void buildShakingMomentRuns(const k::SweepResult& sweep, const k::ForceSweep& forces, AngleUnit unit, SeriesRuns& out,
+                            const XSource& x) {
+  buildRuns(
+      samplesOf(sweep, forces), [&](std::size_t j) { return forces.ok(j); },
+      [&](std::size_t j) { return sampleX(sweep, j, x, unit); }, [&](std::size_t j) { return forces.shakingMoment[j]; },
+      out);
+}
+
+ShakingPeaks shakingPeaks(const k::ForceSweep& forces) {
+  ShakingPeaks p;
+  for (std::size_t j = 0; j < forces.size(); ++j) {
+    if (!forces.ok(j)) continue;
+    const double f = forces.shakingForce[j].norm();
+    if (!p.any || f > p.force) {
+      p.force = f;
+      p.forceSample = j;
+    }
+    if (!p.any || std::abs(forces.shakingMoment[j]) > std::abs(p.moment)) {
+      p.moment = forces.shakingMoment[j];
+      p.momentSample = j;
+    }
+    p.any = true;
+  }
+  return p;
+}
+
+void buildShakingPolarRuns(const k::ForceSweep& forces, SeriesRuns& out) {
+  buildRuns(
+      forces.size(), [&](std::size_t j) { return forces.ok(j); },
+      [&](std::size_t j) { return forces.shakingForce[j].x(); },
+      [&](std::size_t j) { return forces.shakingForce[j].y(); }, out);
+}
+
 }  // namespace linkwright::ui

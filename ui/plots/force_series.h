@@ -53,6 +53,31 @@ void buildDriveRuns(const kinematics::SweepResult& sweep, const kinematics::Forc
 void buildJointForceRuns(const kinematics::SweepResult& sweep, const kinematics::ForceSweep& forces,
                          const ForceJoint& joint, AngleUnit unit, SeriesRuns& out, const XSource& x = {});
 
+/// The shaking force on the frame (ForceSweep::shakingForce, N): its x and y components and its
+/// magnitude.
+enum class ShakingCurve { X, Y, Magnitude };
+
+/// x as for buildDriveRuns, y = the shaking force's `curve` (N).
+void buildShakingForceRuns(const kinematics::SweepResult& sweep, const kinematics::ForceSweep& forces,
+                           ShakingCurve curve, AngleUnit unit, SeriesRuns& out, const XSource& x = {});
+
+/// x as for buildDriveRuns, y = the shaking moment about BodyModel::momentPoint (N·m).
+void buildShakingMomentRuns(const kinematics::SweepResult& sweep, const kinematics::ForceSweep& forces, AngleUnit unit,
+                            SeriesRuns& out, const XSource& x = {});
+
+/// The largest shaking force (N) and moment (N·m, by size) over the Ok samples, and where.
+struct ShakingPeaks {
+  double force = 0.0;
+  std::size_t forceSample = 0;
+  double moment = 0.0;  ///< signed, the one largest in size
+  std::size_t momentSample = 0;
+  bool any = false;  ///< false when no sample is Ok
+};
+ShakingPeaks shakingPeaks(const kinematics::ForceSweep& forces);
+
+/// The polar diagram of the shaking force: x = Fx, y = Fy (N), one point per Ok sample.
+void buildShakingPolarRuns(const kinematics::ForceSweep& forces, SeriesRuns& out);
+
 /// The polar load diagram of revolute joint `revolute`: x = Fx, y = Fy (N, world frame; the
 /// force on the joint's body from its hub), one point per Ok sample, in sweep order.
 void buildPolarRuns(const kinematics::ForceSweep& forces, std::size_t revolute, SeriesRuns& out);

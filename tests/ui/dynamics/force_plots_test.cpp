@@ -70,8 +70,9 @@ TEST_CASE("the force plots show the core's torque, joint magnitudes and polar lo
     CHECK(static_cast<std::size_t>(panel.jointChart()->samples(i).size()) == okSamples(f));
 
   SECTION("the polar diagram has one point per Ok sample, on equal scales") {
-    REQUIRE(panel.jointSelector()->count() == static_cast<int>(f.bodies.revolutes.size()));
-    for (int joint = 0; joint < panel.jointSelector()->count(); ++joint) {
+    // Each pin joint, then the shaking force.
+    REQUIRE(panel.jointSelector()->count() == static_cast<int>(f.bodies.revolutes.size()) + 1);
+    for (int joint = 0; joint + 1 < panel.jointSelector()->count(); ++joint) {
       panel.jointSelector()->setCurrentIndex(joint);
       CHECK(static_cast<std::size_t>(panel.polarView()->pointCount()) == okSamples(f));
       const QList<QPointF> locus = plotted(*panel.polarView()->locus());
@@ -79,6 +80,33 @@ TEST_CASE("the force plots show the core's torque, joint magnitudes and polar lo
                                      f.revolute[static_cast<std::size_t>(joint)][0].y()));
     }
     CHECK(panel.polarView()->xScale() == Approx(panel.polarView()->yScale()).epsilon(1e-6));
+    panel.jointSelector()->setCurrentIndex(panel.jointSelector()->count() - 1);
+    CHECK(panel.jointSelector()->currentText() == "the shaking force");
+    CHECK(static_cast<std::size_t>(panel.polarView()->pointCount()) == okSamples(f));
+    CHECK(plotted(*panel.polarView()->locus()).front() == QPointF(f.shakingForce[0].x(), f.shakingForce[0].y()));
+  }
+  SECTION("the shaking charts hold the core's shaking force and moment, and their peaks") {
+    for (std::size_t curve = 0; curve < 3; ++curve)
+      REQUIRE(static_cast<std::size_t>(panel.shakingChart()->samples(curve).size()) == okSamples(f));
+    double peak = 0.0, moment = 0.0;
+    std::size_t at = 0;
+    for (std::size_t j = 0; j < f.size(); ++j) {
+      CHECK(panel.shakingChart()->samples(0)[static_cast<qsizetype>(j)].y() == f.shakingForce[j].x());
+      CHECK(panel.shakingChart()->samples(1)[static_cast<qsizetype>(j)].y() == f.shakingForce[j].y());
+      CHECK(panel.shakingChart()->samples(2)[static_cast<qsizetype>(j)].y() == f.shakingForce[j].norm());
+      CHECK(panel.shakingMomentChart()->samples(0)[static_cast<qsizetype>(j)].y() == f.shakingMoment[j]);
+      if (f.shakingForce[j].norm() > peak) {
+        peak = f.shakingForce[j].norm();
+        at = j;
+      }
+      if (std::abs(f.shakingMoment[j]) > std::abs(moment)) moment = f.shakingMoment[j];
+    }
+    CHECK(panel.shakingMomentChart()->chart()->title() == "Shaking moment about O2");
+    const QString text = panel.shakingPeakText();
+    CHECK(text.startsWith(
+        QStringLiteral("Peak shaking force %1 N at crank %2°")
+            .arg(QString::number(peak, 'g', 4), QString::number(k::radToDeg(s.inputAngle[at]), 'f', 1))));
+    CHECK(text.contains(QStringLiteral("peak shaking moment %1 N·m about O2").arg(QString::number(moment, 'g', 4))));
   }
   SECTION("the cursor and the polar dot follow the crank") {
     doc.setCrankAngle(k::degToRad(90.0));

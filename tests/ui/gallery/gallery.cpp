@@ -11,6 +11,7 @@
 #include "ui/compare/compare_dialog.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/main_window.h"
+#include "ui/plots/force_plot_panel.h"
 #include "ui/plots/plot_panel.h"
 #include "ui/plots/plot_quantity.h"
 
@@ -18,6 +19,8 @@
 #include "kinematics/model/units.h"
 
 #include <QAction>
+#include <QComboBox>
+#include <QTabWidget>
 #include <QApplication>
 #include <QDir>
 #include <QFile>
@@ -79,6 +82,18 @@ const std::vector<View>& views() {
       {"designer", [](MainWindow&) {}},
       {"centres", [](MainWindow& w) { viewAction(w, "Instant centres and centrodes")->setChecked(true); }},
       {"forces", [](MainWindow& w) { w.showForces(); }},
+      {"shaking",
+       [](MainWindow& w) {
+         w.showForces();
+         w.forcePlots()->pages()->setCurrentIndex(1);
+       }},
+      {"shaking-polar",
+       [](MainWindow& w) {
+         w.showForces();
+         w.forcePlots()->pages()->setCurrentIndex(2);
+         QComboBox* of = w.forcePlots()->jointSelector();
+         of->setCurrentIndex(of->count() - 1);
+       }},
       {"polygons", [](MainWindow& w) { viewAction(w, "Velocity and acceleration polygons")->trigger(); }},
       {"plots", showEveryPlot},
       {"ratios", showRatios},
@@ -126,6 +141,7 @@ constexpr DocImage kDocImages[] = {
     {"ls3-engine.png", "ls3-engine", "designer", 40.0},
     {"watt-ii.png", "watt-ii", "designer", 30.0},
     {"forces.png", "funsho-fourbar", "forces", 60.0},
+    {"shaking.png", "funsho-fourbar", "shaking", 60.0},
     {"instant_centres.png", "thesis-crank-rocker", "centres", 250.0},
     {"instant_centres_shaper.png", "shaper", "centres-ratios", 30.0},
     {"ratios.png", "thesis-crank-rocker", "ratios", 30.0},

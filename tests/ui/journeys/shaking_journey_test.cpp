@@ -1,0 +1,93 @@
+// The shaking force as a person looks for it: a linkage with masses, View ▸ Forces and masses,
+// a click on the Shaking tab, then a typed crank length, the polar diagram of the shaking force
+// picked with the keyboard, and another example without masses. After every step the
+// journeys' invariants hold, and the charts hold the core's shaking force of the design on
+// screen, never an earlier one's.
+
+#include "tests/ui/journeys/journey.h"
+
+#include "ui/document/mechanism_document.h"
+#include "ui/panels/dimensions_panel.h"
+#include "ui/plots/force_chart_view.h"
+#include "ui/plots/force_plot_panel.h"
+#include "ui/plots/polar_load_view.h"
+
+#include "kinematics/design/design.h"
+#include "kinematics/dynamics/inverse_dynamics.h"
+#include "kinematics/model/units.h"
+#include "kinematics/solve/pose_solver.h"
+#include "tests/support/catch.h"
+
+#include <QChart>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTabBar>
+#include <QTabWidget>
+#include <QTest>
+
+using namespace linkwright;
+
+namespace {
+
+// Checks the chart's |F| curve point by point against the core's for the design on screen,
+// solved afresh at each plotted crank angle (a pose and its forces, not the window's sweep).
+void checkShakingCurve(ui::MainWindow& window) {
+  const kinematics::Design& d = window.document()->design();
+  const QList<QPointF> plotted = window.forcePlots()->shakingChart()->samples(2);
+  REQUIRE(plotted.size() > 100);
+  for (const QPointF& p : plotted) {
+    const auto pose = kinematics::solvePose(d.mechanism, {kinematics::degToRad(p.x()), d.omega, d.alpha});
+    REQUIRE(pose.ok());
+    const auto forces = kinematics::forcesAtPose(d.mechanism, d.dynamics, *pose);
+    REQUIRE(forces.ok());
+    CHECK(p.y() == Approx(forces->shakingForce.norm()).epsilon(1e-9));
+  }
+}
+
+void clickTab(QTabWidget* pages, int index) {
+  QTabBar* bar = pages->tabBar();
+  QTest::mouseClick(bar, Qt::LeftButton, {}, bar->tabRect(index).center());
+}
+
+}  // namespace
+
+TEST_CASE("look at a linkage's shaking force, change the linkage, look at its polar diagram", "[journey][forces]") {
+  test::Journey journey;
+  ui::MainWindow& window = journey.window();
+  journey.example("funsho-fourbar");
+  journey.menu({"View", "Forces and masses"});
+  journey.check("Examples ▸ funsho-fourbar, View ▸ Forces and masses");
+  ui::ForcePlotPanel* forces = window.forcePlots();
+  clickTab(forces->pages(), 1);
+  journey.settle();
+  REQUIRE(forces->pages()->currentIndex() == 1);
+  CHECK(forces->shakingChart()->isVisible());
+  CHECK(forces->shakingPeakText().startsWith("Peak shaking force 179.4 N at crank"));
+  checkShakingCurve(window);
+  journey.check("the Shaking tab");
+
+  journey.type(window.dimensionsPanel()->editor(kinematics::ParameterSlot::CrankLength), "12");
+  CHECK(window.document()->fourBar()->lengths.crank == 12.0);
+  checkShakingCurve(window);  // the new crank's, not the old one's
+  CHECK_FALSE(forces->shakingPeakText().startsWith("Peak shaking force 179.4 N"));
+  journey.check("Crank 12");
+
+  clickTab(forces->pages(), 2);
+  QComboBox* of = forces->jointSelector();
+  of->setFocus();
+  journey.key(Qt::Key_End);
+  CHECK(of->currentText() == "the shaking force");
+  CHECK(forces->polarView()->chart()->title() == "Shaking force on the frame");
+  CHECK(forces->polarView()->pointCount() == forces->shakingChart()->samples(2).size());
+  journey.check("the polar diagram of the shaking force");
+
+  // No masses: nothing of funsho's may stay. The edited design is not kept.
+  journey.whenDialogOpens<QMessageBox>([](QMessageBox* ask) { ask->button(QMessageBox::Discard)->click(); });
+  journey.example("thesis-crank-rocker");
+  CHECK_FALSE(forces->shakingChart()->isVisibleTo(&window));
+  CHECK_FALSE(forces->polarView()->isVisibleTo(&window));
+  CHECK(forces->statusText().contains("no masses"));
+  journey.check("Examples ▸ thesis-crank-rocker");
+}
