@@ -19,13 +19,13 @@
 #include "kinematics/model/units.h"
 
 #include <QAction>
-#include <QComboBox>
-#include <QTabWidget>
 #include <QApplication>
+#include <QComboBox>
 #include <QDir>
 #include <QFile>
 #include <QMenu>
 #include <QMenuBar>
+#include <QTabWidget>
 
 #include <functional>
 #include <iostream>
