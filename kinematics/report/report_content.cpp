@@ -137,6 +137,27 @@ Result<ReportTable> forcesTable(const Mechanism& m, const LinkageDynamics& dynam
   return table;
 }
 
+// Where the shaking force and moment peak over the fine sweep, for the forces' caption.
+Result<std::string> shakingPeaks(const Mechanism& m, const LinkageDynamics& dynamics, const SweepResult& fine) {
+  auto forces = sweepForces(m, dynamics, fine);
+  if (!forces) return Error{forces.error().code, "dynamics", "the forces: " + forces.error().message};
+  std::optional<std::size_t> force, moment;
+  for (std::size_t j = 0; j < forces->size(); ++j) {
+    if (!forces->ok(j)) continue;
+    if (!force || forces->shakingForce[j].norm() > forces->shakingForce[*force].norm()) force = j;
+    if (!moment || std::abs(forces->shakingMoment[j]) > std::abs(forces->shakingMoment[*moment])) moment = j;
+  }
+  if (!force) return std::string();
+  const auto at = [&](std::size_t j) {
+    const std::string unit = inputUnit(m);
+    return fine.time.empty() ? formatShort(inputDisplayValue(m, fine.inputAngle[j])) + (unit == "°" ? unit : " " + unit)
+                             : formatShort(fine.time[j]) + " s";
+  };
+  return " Over the cycle's " + std::to_string(fine.size()) + " samples the shaking force peaks at " +
+         formatShort(forces->shakingForce[*force].norm(), 4) + " N (at " + at(*force) + ") and the shaking moment at " +
+         formatShort(forces->shakingMoment[*moment], 4) + " N·m (at " + at(*moment) + ").";
+}
+
 // The span the table runs over: the grid's inputs, or its time base's times.
 double spanOf(const SweepSpec& grid) {
   return grid.time ? grid.time->toTime - grid.time->fromTime : grid.toAngle - grid.fromAngle;
@@ -227,7 +248,10 @@ Result<ReportContent> buildReport(const Mechanism& m, const LinkageDynamics& dyn
     auto forces = forcesTable(m, dynamics, *table, columns.front());
     if (!forces) return forces.error();
     report.forces = std::move(*forces);
-    report.forcesCaption = "Joint force sizes, driving torque or force, shaking force (N, N·m), at the table's inputs";
+    const auto peaks = shakingPeaks(m, dynamics, *fine);
+    if (!peaks) return peaks.error();
+    report.forcesCaption =
+        "Joint force sizes, driving torque or force, shaking force (N, N·m), at the table's inputs." + *peaks;
   }
   report.notes = sweepNotes(m, *fine);
   return report;

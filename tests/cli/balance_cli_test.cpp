@@ -3,6 +3,7 @@
 // (no masses, a linkage it cannot balance, options out of range, a file it cannot write) exits
 // with its code and writes nothing.
 
+#include "tests/cli/csv_column.h"
 #include "tests/cli/run_cli.h"
 
 #include "tests/support/catch.h"
@@ -10,7 +11,6 @@
 #include <algorithm>
 #include <filesystem>
 #include <random>
-#include <sstream>
 
 namespace {
 
@@ -24,13 +24,6 @@ fs::path scratchDir() {
   return dir;
 }
 
-std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> parts;
-  std::stringstream s(text);
-  for (std::string part; std::getline(s, part, separator);) parts.push_back(part);
-  return parts;
-}
-
 // The largest shaking force in analyze --forces' shaking_N column.
 double peakShaking(const std::vector<std::string>& source) {
   std::vector<std::string> args{"analyze"};
@@ -38,13 +31,8 @@ double peakShaking(const std::vector<std::string>& source) {
   args.insert(args.end(), {"--forces", "--step", "1"});
   const auto r = runCliCommand(args);
   REQUIRE(r.code == 0);
-  const auto rows = split(r.out, '\n');
-  const auto header = split(rows[0], ',');
-  const auto column = static_cast<std::size_t>(std::find(header.begin(), header.end(), "shaking_N") - header.begin());
-  REQUIRE(column < header.size());
-  double peak = 0.0;
-  for (std::size_t i = 1; i < rows.size(); ++i) peak = std::max(peak, std::stod(split(rows[i], ',')[column]));
-  return peak;
+  const std::vector<double> shaking = linkwright::test::csvColumn(r.out, "shaking_N");
+  return *std::max_element(shaking.begin(), shaking.end());
 }
 
 }  // namespace

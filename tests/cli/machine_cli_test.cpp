@@ -2,6 +2,7 @@
 // independent integration of analyze --forces' torque column, and the refusals (no masses, a
 // driver that is not a crank, options out of range) with exit code 2, naming the option.
 
+#include "tests/cli/csv_column.h"
 #include "tests/cli/run_cli.h"
 
 #include "kinematics/io/json.h"
@@ -10,32 +11,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace {
 
 using namespace linkwright;
 using test::runCliCommand;
 
-std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> parts;
-  std::stringstream s(text);
-  for (std::string part; std::getline(s, part, separator);) parts.push_back(part);
-  return parts;
-}
-
 // The T_drive_Nm column of analyze --forces over one turn at `stepDeg`.
 std::vector<double> torqueColumn(double stepDeg) {
   const auto r =
       runCliCommand({"analyze", "--example", "funsho-fourbar", "--forces", "--step", std::to_string(stepDeg)});
   REQUIRE(r.code == 0);
-  const auto rows = split(r.out, '\n');
-  const auto header = split(rows[0], ',');
-  const auto column = static_cast<std::size_t>(std::find(header.begin(), header.end(), "T_drive_Nm") - header.begin());
-  REQUIRE(column < header.size());
-  std::vector<double> torque;
-  for (std::size_t i = 1; i < rows.size(); ++i) torque.push_back(std::stod(split(rows[i], ',')[column]));
-  return torque;
+  return test::csvColumn(r.out, "T_drive_Nm");
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "tests/support/catch.h"
 
 #include <array>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -288,6 +289,16 @@ TEST_CASE("report shows the forces of a linkage with masses", "[cli][report]") {
     INFO("crank angle " << 45 * j);
     CHECK(hasRow(text, {fixed(45.0 * static_cast<double>(j)), fixed(forces->driveTorque[j])}));
   }
+  // The peaks over the example's own grid, every 5°.
+  const auto grid = k::sweep(e.mechanism, {0.0, 2.0 * k::kPi, 73, e.omega, e.alpha}).value();
+  const auto all = k::sweepForces(e.mechanism, e.dynamics, grid).value();
+  double peak = 0.0;
+  for (std::size_t j = 0; j < all.size(); ++j) peak = std::max(peak, all.shakingForce[j].norm());
+  std::string flat;  // the caption may wrap: words joined by single spaces
+  for (const char c : text)
+    if (!(std::isspace(static_cast<unsigned char>(c)) && (flat.empty() || flat.back() == ' ')))
+      flat += std::isspace(static_cast<unsigned char>(c)) ? ' ' : c;
+  CHECK_THAT(flat, Catch::Contains("the shaking force peaks at " + k::formatShort(peak, 4) + " N"));
   fs::remove_all(dir);
 }
 
