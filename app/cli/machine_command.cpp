@@ -78,6 +78,7 @@ void printJson(std::ostream& out, const k::MachineDuty& d, const k::DutyOptions&
   json["shaking_force_peak_N"] = d.shakingForcePeak;
   json["shaking_moment_peak_Nm"] = d.shakingMomentPeak;
   json["bearing_load_peak_N"] = d.bearingLoadPeak;
+  json["virtual_work_difference_Nm"] = d.virtualWorkDifference;
   k::io::JsonValue motor{
       {"gear_ratio", o.gearRatio},          {"efficiency", o.efficiency},           {"speed_rad_s", d.motor.speed},
       {"rms_torque_Nm", d.motor.rmsTorque}, {"peak_torque_Nm", d.motor.peakTorque}, {"mean_power_W", d.motor.meanPower},
@@ -103,6 +104,8 @@ void printText(std::ostream& out, const k::MachineDuty& d, const k::DutyOptions&
   out << "frame               shaking force peak " << n(d.shakingForcePeak) << " N, shaking moment peak "
       << n(d.shakingMomentPeak) << " N·m (about the crank's pivot); bearing load peak " << n(d.bearingLoadPeak)
       << " N\n";
+  out << "virtual-work check  the driving torque by virtual work is within " << formatShort(d.virtualWorkDifference, 2)
+      << " N·m of the Newton–Euler one at every sample\n";
   out << "motor               gear ratio " << n(o.gearRatio) << ", efficiency " << n(o.efficiency) << ": "
       << n(k::radPerSecToRpm(d.motor.speed)) << " rpm, RMS torque " << n(d.motor.rmsTorque) << " N·m, peak "
       << n(d.motor.peakTorque) << " N·m, mean power " << n(d.motor.meanPower) << " W, peak " << n(d.motor.peakPower)

@@ -43,8 +43,8 @@ std::optional<Error> checkCrankTurn(const Mechanism& mechanism, const SweepSpec&
   return std::nullopt;
 }
 
-Result<ForceSweep> turnForces(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepSpec& turn,
-                              double omega, double alpha) {
+Result<TurnSweep> turnForces(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepSpec& turn,
+                             double omega, double alpha) {
   SweepSpec spec = turn;
   spec.omega = omega;
   spec.alpha = alpha;
@@ -62,7 +62,7 @@ Result<ForceSweep> turnForces(const Mechanism& mechanism, const LinkageDynamics&
       return Error{ErrorCode::Singular, "range",
                    "the forces are not determined at " + degreesText(kinematics->inputAngle[j]) +
                        " (a toggle or a redundant structure)"};
-  return forces;
+  return TurnSweep{std::move(*kinematics), std::move(*forces)};
 }
 
 double CrankTerms::at(const std::vector<double>& column, double theta) const {
@@ -93,11 +93,11 @@ Result<CrankTerms> crankTerms(const Mechanism& mechanism, const LinkageDynamics&
   CrankTerms terms;
   terms.omega = turn.omega;
   for (std::size_t j = 0; j < turn.samples; ++j) {
-    const double ts = resting->driveTorque[j];
+    const double ts = resting->forces.driveTorque[j];
     terms.angle.push_back(sweepAngle(turn, j));
     terms.torque.push_back(moving.driveTorque[j]);
     terms.staticTorque.push_back(ts);
-    terms.inertia.push_back(accelerating->driveTorque[j] - ts);
+    terms.inertia.push_back(accelerating->forces.driveTorque[j] - ts);
     terms.halfSlope.push_back((moving.driveTorque[j] - ts) / (turn.omega * turn.omega));
   }
   if (terms.angle.back() < terms.angle.front())

@@ -26,11 +26,17 @@ std::optional<Error> checkCrankDriven(const Mechanism& mechanism);
 /// ω ≠ 0 (fromAngle to fromAngle ± 2π, α = 0, no time base, at least 4 samples).
 std::optional<Error> checkCrankTurn(const Mechanism& mechanism, const SweepSpec& turn);
 
+/// A turn's kinematics and the forces solved on them.
+struct TurnSweep {
+  SweepResult kinematics;
+  ForceSweep forces;
+};
+
 /// The forces at every sample of `turn` with the crank at `omega` and `alpha` instead of the
 /// turn's own: every sample must solve (Ok), else an error naming the first angle that does
 /// not (a linkage that cannot turn fully, or a toggle where the forces are not determined).
-Result<ForceSweep> turnForces(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepSpec& turn,
-                              double omega, double alpha);
+Result<TurnSweep> turnForces(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepSpec& turn,
+                             double omega, double alpha);
 
 /// The three terms at the turn's samples, ordered by increasing angle (a turn run backwards is
 /// reversed), and the torque at the turn's speed they add up to.

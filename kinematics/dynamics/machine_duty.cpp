@@ -1,6 +1,7 @@
 #include "kinematics/dynamics/machine_duty.h"
 
 #include "kinematics/dynamics/flywheel.h"
+#include "kinematics/dynamics/virtual_work.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
@@ -91,8 +92,9 @@ Result<MachineDuty> machineDuty(const Mechanism& mechanism, const LinkageDynamic
                                 const DutyOptions& options) {
   if (auto e = checkCrankTurn(mechanism, turn)) return *e;
   if (auto e = checkDutyOptions(options)) return *e;
-  const auto forces = turnForces(mechanism, dynamics, turn, turn.omega, 0.0);
-  if (!forces) return forces.error();
+  const auto moving = turnForces(mechanism, dynamics, turn, turn.omega, 0.0);
+  if (!moving) return moving.error();
+  const ForceSweep* forces = &moving->forces;
 
   MachineDuty d;
   d.omega = turn.omega;
@@ -120,13 +122,16 @@ Result<MachineDuty> machineDuty(const Mechanism& mechanism, const LinkageDynamic
   d.energyFluctuation = *high - *low;
   if (options.speedFluctuation) {
     d.textbookFlywheelInertia = d.energyFluctuation / (*options.speedFluctuation * d.omega * d.omega);
-    const auto terms = crankTerms(mechanism, dynamics, turn, *forces);
+    const auto terms = crankTerms(mechanism, dynamics, turn, moving->forces);
     if (!terms) return terms.error();
     const auto flywheel = sizeFlywheel(*terms, *options.speedFluctuation);
     if (!flywheel) return flywheel.error();
     d.flywheelInertia = *flywheel;
   }
+  const auto byVirtualWork = virtualWorkTorques(mechanism, dynamics, moving->kinematics, moving->forces);
+  if (!byVirtualWork) return byVirtualWork.error();
   for (std::size_t j = 0; j < forces->size(); ++j) {
+    d.virtualWorkDifference = std::max(d.virtualWorkDifference, std::abs((*byVirtualWork)[j] - forces->driveTorque[j]));
     d.shakingForcePeak = std::max(d.shakingForcePeak, forces->shakingForce[j].norm());
     d.shakingMomentPeak = std::max(d.shakingMomentPeak, std::abs(forces->shakingMoment[j]));
     for (const auto& joint : forces->revolute) d.bearingLoadPeak = std::max(d.bearingLoadPeak, joint[j].norm());

@@ -17,6 +17,8 @@
 //     turn: it is the first one again).
 //   Motor and gearbox, ratio N (motor turns per crank turn) and efficiency η: the motor turns at
 //     N ω; where it drives (T ω > 0) it gives T/(N η), where the linkage drives it back T η/N.
+//   Check. The driving torque by virtual work beside the Newton–Euler one at every sample; the
+//   largest difference is reported (it must be round-off).
 //   A mean within 1e-12 of the turn's peak is round-off and given as 0 (a linkage without loads
 //   or gravity takes back over the turn all it is given).
 //   Frame. The peak shaking force max |F_s| and moment max |M_s| (about the crank's pivot); and
@@ -74,7 +76,10 @@ struct MachineDuty {
   std::optional<double> textbookFlywheelInertia;  ///< kg·m², ΔE/(Cs ω²), with Cs given
   double shakingForcePeak = 0.0;                  ///< N
   double shakingMomentPeak = 0.0;                 ///< N·m
-  double bearingLoadPeak = 0.0;                   ///< N, the largest force through any pin joint
+  /// N·m, the largest |T by virtual work − T by Newton–Euler| over the turn (virtual_work.h):
+  /// round-off when both are right
+  double virtualWorkDifference = 0.0;
+  double bearingLoadPeak = 0.0;  ///< N, the largest force through any pin joint
   MotorDuty motor;
 };
 

@@ -71,6 +71,8 @@ TEST_CASE("machine --json gives the turn's duty in SI units", "[cli][machine]") 
   // No loads and no gravity: the linkage gives back all it takes, and the mean is 0.
   CHECK(json["mean_torque_Nm"] == 0.0);
   CHECK(std::abs(mean) < 1e-9 * peak);
+  // Virtual work and Newton–Euler agree to round-off of the peak torque.
+  CHECK(json["virtual_work_difference_Nm"].get<double>() <= 1e-9 * json["peak_torque_Nm"].get<double>());
   // The flywheel that counts the linkage's own inertia is lighter than the textbook's.
   CHECK(json["flywheel_inertia_kg_m2"].get<double>() < json["textbook_flywheel_inertia_kg_m2"].get<double>());
   CHECK(json["textbook_flywheel_inertia_kg_m2"].get<double>() ==

@@ -43,7 +43,7 @@ WeightedCrank weightedCrank(double mass) {
 CrankTerms terms(const Mechanism& m, const LinkageDynamics& d, const SweepSpec& turn) {
   const auto moving = turnForces(m, d, turn, turn.omega, 0.0);
   REQUIRE(moving.ok());
-  auto t = crankTerms(m, d, turn, *moving);
+  auto t = crankTerms(m, d, turn, moving->forces);
   REQUIRE(t.ok());
   return *t;
 }
@@ -63,6 +63,7 @@ TEST_CASE("a weighted crank's duty matches its closed form", "[dynamics][machine
   CHECK(d->meanTorque == Approx(0.0).margin(1e-12 * w.mgr));
   CHECK(d->peakTorque == Approx(w.mgr).epsilon(1e-12));
   CHECK(d->peakPower == Approx(w.mgr * omega).epsilon(1e-12));
+  CHECK(d->virtualWorkDifference <= 1e-12 * w.mgr);
   // The trapezoidal rule at 1° is within h²/12 ≈ 2.5e-5 of the integrals.
   CHECK(d->rmsTorque == Approx(w.mgr / std::sqrt(2.0)).epsilon(3e-5));
   CHECK(d->energyFluctuation == Approx(2.0 * w.mgr).epsilon(3e-5));
