@@ -45,7 +45,7 @@ const std::set<std::string>& optionsOf(Command command) {
   static const std::set<std::string> machine{"--example",     "--rpm",        "--omega",      "--samples",
                                              "--cs",          "--gear-ratio", "--efficiency", "--rated-torque",
                                              "--rated-speed", "--json"};
-  static const std::set<std::string> balance{"--example", "-o", "--output", "--fraction", "--radius"};
+  static const std::set<std::string> balance{"--example", "-o", "--output", "--fraction", "--radius", "--spring"};
   static const std::set<std::string> none{};
   switch (command) {
   case Command::Analyze: return analyze;
@@ -230,7 +230,13 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
   else if (option == "--rated-speed") return positive(inv.ratedRpm, option, value);
   else if (option == "--fraction") return number(inv.reciprocatingFraction);
   else if (option == "--radius") return number(inv.counterweightRadius);
-  else if (option == "--svg") {
+  else if (option == "--spring") {
+    if (value.find(',') == std::string::npos)
+      return usage(
+          option,
+          option + " needs two ends, LINK:POINT,LINK:POINT (a ground point alone for the frame; got '" + value + "')");
+    inv.springEnds = value;
+  } else if (option == "--svg") {
     if (value.empty()) return usage(option, option + " needs a file name");
     inv.svgFile = value;
   } else {

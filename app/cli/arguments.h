@@ -113,6 +113,7 @@ struct Invocation {
   // balance (kinematics/dynamics/force_balance.h); the core checks the ranges.
   std::optional<double> reciprocatingFraction;  ///< --fraction, slider-cranks
   std::optional<double> counterweightRadius;    ///< --radius, in link lengths
+  std::optional<std::string> springEnds;        ///< --spring LINK:POINT,POINT (balance by a spring)
 };
 
 /// Parses the arguments after the program name.

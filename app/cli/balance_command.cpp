@@ -1,12 +1,15 @@
 // `linkwright-cli balance`: the design with counterweights that balance its shaking force
 // (kinematics/dynamics/force_balance.h), written as a new document, and what the balance gains
 // and costs over one crank turn: the shaking force and moment, the driving torque and the
-// bearing loads before and after (kinematics/dynamics/machine_duty.h).
+// bearing loads before and after (kinematics/dynamics/machine_duty.h). With --spring, the
+// spring between two points that makes the RMS driving torque least
+// (kinematics/dynamics/spring_balance.h) instead.
 
 #include "app/cli/commands.h"
 
 #include "kinematics/dynamics/force_balance.h"
 #include "kinematics/dynamics/machine_duty.h"
+#include "kinematics/dynamics/spring_balance.h"
 #include "kinematics/io/document_json.h"
 #include "kinematics/io/safe_file.h"
 #include "kinematics/model/number_text.h"
@@ -40,6 +43,42 @@ void printComparison(std::ostream& out, const k::MachineDuty& before, const k::M
   row("bearing load peak     ", before.bearingLoadPeak, after.bearingLoadPeak, "N");
 }
 
+// "crank:B" is a point on a link's body; "S" alone a ground point (the frame).
+k::SpringEnd springEnd(const std::string& text) {
+  const auto colon = text.find(':');
+  if (colon == std::string::npos) return {"", text};
+  return {text.substr(0, colon), text.substr(colon + 1)};
+}
+
+std::string endText(const k::SpringEnd& end) {
+  return end.link.empty() ? "the frame at " + end.point : end.point + " on " + end.link;
+}
+
+ExitCode balanceBySpring(const Invocation& inv, k::Design design, std::ostream& out, std::ostream& err) {
+  const std::string& ends = *inv.springEnds;
+  const auto comma = ends.find(',');
+  const k::SpringEnd first = springEnd(ends.substr(0, comma)), second = springEnd(ends.substr(comma + 1));
+  const auto balance = k::balanceBySpring(design.mechanism, design.dynamics, turnOf(design), first, second);
+  if (!balance) {
+    err << "linkwright-cli: --spring: " << balance.error().message << "\n";
+    return ExitCode::BadInput;
+  }
+  design.dynamics = balance->balanced;
+  if (auto e = k::io::writeFileSafely(*inv.outputFile, k::io::writeDocument(design))) {
+    err << "linkwright-cli: " << e->message << "\n";
+    return ExitCode::IoError;
+  }
+  const k::Spring& s = balance->spring;
+  out << "spring balance: the spring from " << endText(first) << " to " << endText(second)
+      << " that makes the RMS driving torque least; written to " << *inv.outputFile << "\n";
+  out << "  stiffness " << formatShort(s.stiffness, 6) << " N/m, free length " << formatShort(s.freeLength, 6) << " "
+      << design.mechanism.lengthUnit << ", preload " << formatShort(s.preload, 6) << " N\n";
+  out << "over one crank turn at " << formatShort(design.omega, 5) << " rad/s, before → after:\n";
+  out << "  driving torque RMS    " << formatShort(balance->rmsBefore, 5) << " → " << formatShort(balance->rmsAfter, 5)
+      << " N·m\n";
+  return ExitCode::Success;
+}
+
 }  // namespace
 
 ExitCode runBalance(const Invocation& inv, std::ostream& out, std::ostream& err) {
@@ -49,6 +88,7 @@ ExitCode runBalance(const Invocation& inv, std::ostream& out, std::ostream& err)
     return ExitCode::BadInput;
   }
   k::Design design = *resolved;
+  if (inv.springEnds) return balanceBySpring(inv, std::move(design), out, err);
   k::BalanceOptions options;
   options.reciprocatingFraction = inv.reciprocatingFraction.value_or(options.reciprocatingFraction);
   options.radius = inv.counterweightRadius.value_or(options.radius);

@@ -152,6 +152,9 @@ constexpr const char* kBalanceOptions =
                         counterweight balances, 0 to 1 (default 0.5)
   --radius R            each counterweight's distance from its pivot, in lengths of its
                         link, 0.1 to 10 (default 1)
+  --spring A,B          instead, the linear spring from A to B that makes the RMS driving
+                        torque least (any crank-driven linkage): each end LINK:POINT, a
+                        point on that link's body, or a ground point alone (the frame)
 )";
 
 constexpr const char* kCentresOptions =

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace linkwright::kinematics {
 namespace {
@@ -81,6 +82,16 @@ std::optional<Error> InverseDynamics::resolve(const LinkageDynamics& d) {
       m_forces.push_back({m_bodies.linkBody[m.findLink(f.link)->index], *m.findPoint(f.point), f.force});
     }
   }
+  const auto endBody = [&](const SpringEnd& end) {
+    return end.link.empty() ? kGroundBody : m_bodies.linkBody[m.findLink(end.link)->index];
+  };
+  for (const Spring& sp : d.loads.springs) {
+    const BodySpring spring{
+        endBody(sp.first), *m.findPoint(sp.first.point), endBody(sp.second), *m.findPoint(sp.second.point),
+        sp.stiffness,      sp.freeLength * m_metres,     sp.preload};
+    // Between two points of one body (the frame's or a link's) a spring only strains it.
+    if (spring.firstBody != spring.secondBody) m_springs.push_back(spring);
+  }
   m_gravity = d.loads.gravity;
   // Loads on a link fixed to the ground go straight into the frame: nothing to solve for.
   std::erase_if(m_masses, [](const MassElement& e) { return e.body == kGroundBody; });
@@ -153,6 +164,24 @@ void InverseDynamics::bodyLoads(const Pose& pose) {
     m_load[f.body.index] -= f.force;
     m_loadMoment[f.body.index] -= cross(at(pose, f.point) - m_reference[f.body.index], f.force);
   }
+  for (const BodySpring& sp : m_springs) {
+    const Eigen::Vector2d pull = springPull(pose, sp);
+    for (const auto& [body, point, force] :
+         {std::tuple{sp.firstBody, sp.first, pull}, {sp.secondBody, sp.second, -pull}}) {
+      if (body == kGroundBody) continue;
+      m_load[body.index] -= force;
+      m_loadMoment[body.index] -= cross(at(pose, point) - m_reference[body.index], force);
+    }
+  }
+}
+
+// Tension k (L − L0) + preload along the line from the first end to the second; no direction,
+// and so no force, when the ends meet.
+Eigen::Vector2d InverseDynamics::springPull(const Pose& pose, const BodySpring& s) const {
+  const Eigen::Vector2d d = at(pose, s.second) - at(pose, s.first);
+  const double length = d.norm();
+  if (length == 0.0) return Eigen::Vector2d::Zero();
+  return (s.stiffness * (length - s.freeLength) + s.preload) * (d / length);
 }
 
 void InverseDynamics::prismaticNormals(const Pose& pose) {
@@ -273,6 +302,14 @@ void InverseDynamics::extract(const Pose& pose, std::optional<double> input, Pos
     f.shakingForce -= onBlock;
     f.shakingMoment -= cross(at(pose, pri[j].pin) - o, onBlock) + f.moment[j];
   }
+  // A spring anchored on the frame pulls it too.
+  for (const BodySpring& sp : m_springs)
+    for (const auto& [body, point, force] : {std::tuple{sp.firstBody, sp.first, springPull(pose, sp)},
+                                             {sp.secondBody, sp.second, -springPull(pose, sp)}}) {
+      if (body != kGroundBody) continue;
+      f.shakingForce += force;
+      f.shakingMoment += cross(at(pose, point) - o, force);
+    }
   extractDrive(pose, input, f);
 }
 

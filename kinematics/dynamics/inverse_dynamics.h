@@ -185,6 +185,18 @@ private:
     PointId point;
     Eigen::Vector2d force = Eigen::Vector2d::Zero();
   };
+  /// A spring's ends (kGroundBody for one on the frame), in SI.
+  struct BodySpring {
+    BodyId firstBody;
+    PointId first;
+    BodyId secondBody;
+    PointId second;
+    double stiffness = 0.0;   ///< N/m
+    double freeLength = 0.0;  ///< m
+    double preload = 0.0;     ///< N
+  };
+  /// A spring's pull on its first end at `pose` (N; the second end feels the opposite).
+  Eigen::Vector2d springPull(const Pose& pose, const BodySpring& s) const;
   /// Where a body's ω, α and reference point come from (bodyRates).
   struct BodyRate {
     PointId reference;
@@ -241,6 +253,7 @@ private:
   std::vector<MassElement> m_masses;
   std::vector<BodyTorque> m_torques;
   std::vector<BodyForce> m_forces;
+  std::vector<BodySpring> m_springs;
   std::vector<BodyRate> m_rates;         ///< per body
   std::vector<ChainUnknown> m_unknowns;  ///< the link-by-link solve's, in column order
   std::vector<ChainStep> m_chain;        ///< empty: no link-by-link order, the LU always

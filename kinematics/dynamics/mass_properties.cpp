@@ -1,10 +1,12 @@
 #include "kinematics/dynamics/mass_properties.h"
 
+#include "kinematics/model/number_text.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/solve/rigid_bodies.h"
 
 #include <cmath>
 #include <set>
+#include <variant>
 
 namespace linkwright::kinematics {
 namespace {
@@ -102,10 +104,36 @@ std::optional<Error> checkForce(const Mechanism& m, const PointForce& f, const s
   return std::nullopt;
 }
 
+std::optional<Error> checkSpringEnd(const Mechanism& m, const SpringEnd& end, const std::string& field) {
+  const auto point = m.findPoint(end.point);
+  if (!point) return valueError(field + ".point", "names no point of this mechanism (got \"" + end.point + "\")");
+  if (end.link.empty()) {
+    if (!std::holds_alternative<GroundPoint>(m.points[point->index].definition))
+      return valueError(field + ".point", "must be a ground point for an end on the frame (got \"" + end.point + "\")");
+    return std::nullopt;
+  }
+  if (auto e = checkLinkName(m, end.link, field + ".link")) return e;
+  const auto bodies = bodiesOf(m);
+  if (bodies && !bodies->holds(bodies->linkBody[m.findLink(end.link)->index], *point))
+    return valueError(field + ".point", "must lie on the body of link " + end.link + " (got \"" + end.point + "\")");
+  return std::nullopt;
+}
+
+std::optional<Error> checkSpring(const Mechanism& m, const Spring& s, const std::string& field) {
+  if (auto e = checkSpringEnd(m, s.first, field + ".first")) return e;
+  if (auto e = checkSpringEnd(m, s.second, field + ".second")) return e;
+  if (!(s.stiffness >= 0.0 && s.stiffness <= kMaxStiffness))
+    return valueError(field + ".stiffness", "must be between 0 and 1e15 N/m (got " + formatNumber(s.stiffness) + ")");
+  if (!(s.freeLength >= 0.0 && s.freeLength <= kMaxLength))
+    return valueError(field + ".freeLength", "must be between 0 and 1e9 (got " + formatNumber(s.freeLength) + ")");
+  return checkMagnitude(s.preload, field + ".preload", kMaxForce, "N");
+}
+
 }  // namespace
 
 bool LinkageDynamics::empty() const {
-  return links.empty() && sliders.empty() && !loads.gravity && loads.torques.empty() && loads.forces.empty();
+  return links.empty() && sliders.empty() && !loads.gravity && loads.torques.empty() && loads.forces.empty() &&
+         loads.springs.empty();
 }
 
 std::optional<Error> checkDynamics(const Mechanism& m, const LinkageDynamics& d) {
@@ -120,6 +148,8 @@ std::optional<Error> checkDynamics(const Mechanism& m, const LinkageDynamics& d)
   }
   for (std::size_t k = 0; k < d.loads.forces.size(); ++k)
     if (auto e = checkForce(m, d.loads.forces[k], "loads.forces[" + std::to_string(k) + "]")) return e;
+  for (std::size_t k = 0; k < d.loads.springs.size(); ++k)
+    if (auto e = checkSpring(m, d.loads.springs[k], "loads.springs[" + std::to_string(k) + "]")) return e;
   return std::nullopt;
 }
 

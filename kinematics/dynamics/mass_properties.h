@@ -67,12 +67,38 @@ struct PointForce {
   bool operator==(const PointForce&) const = default;
 };
 
+/// Largest accepted spring stiffness, N/m.
+inline constexpr double kMaxStiffness = 1e15;
+
+/// One end of a spring: a point on a link's body, or a point fixed to the frame (a ground point;
+/// `link` empty).
+struct SpringEnd {
+  std::string link;   ///< the link whose body holds it, or empty for the frame
+  std::string point;  ///< by name
+  bool operator==(const SpringEnd&) const = default;
+};
+
+/// A linear spring between two points. Its tension k (L − L0) + preload (N; negative pushes)
+/// acts along the line between its ends, pulling each toward the other; L is the distance
+/// between them at the pose. Its force enters the inverse dynamics as a load that changes with
+/// the pose; where an end is on the frame, the frame feels it (the shaking force counts it).
+struct Spring {
+  std::string name;
+  SpringEnd first;
+  SpringEnd second;
+  double stiffness = 0.0;   ///< k, N/m, in [0, 1e15]
+  double freeLength = 0.0;  ///< L0, length unit, in [0, 1e9]
+  double preload = 0.0;     ///< N, the tension at the free length
+  bool operator==(const Spring&) const = default;
+};
+
 /// External loads. Gravity is off unless given.
 struct Loads {
   /// Gravitational acceleration, m/s², world frame (e.g. (0, −kStandardGravity)); off if empty.
   std::optional<Eigen::Vector2d> gravity;
   std::vector<LinkTorque> torques;
   std::vector<PointForce> forces;
+  std::vector<Spring> springs;
   bool operator==(const Loads&) const = default;
 };
 

@@ -80,6 +80,16 @@ VirtualWork virtualWork(const Mechanism& m, const LinkageDynamics& d, const Pose
     w.loads += work;
     w.scale += std::abs(work);
   }
+  for (const Spring& sp : d.loads.springs) {
+    const PointId a = *m.findPoint(sp.first.point), b = *m.findPoint(sp.second.point);
+    const Eigen::Vector2d between = s * (motion.position[b.index] - motion.position[a.index]);
+    const double length = between.norm();
+    if (length == 0.0) continue;
+    const Eigen::Vector2d pull = (sp.stiffness * (length - s * sp.freeLength) + sp.preload) * (between / length);
+    const double work = pull.dot(s * (rates.velocity[a.index] - rates.velocity[b.index]));
+    w.loads += work;
+    w.scale += std::abs(work);
+  }
   return w;
 }
 

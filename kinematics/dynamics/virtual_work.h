@@ -4,6 +4,7 @@
 // so for a virtual motion δq of the input, with every point moving δr = v̂ δq and every body
 // turning δφ = ω̂ δq (v̂, ω̂: the velocities per unit input rate, from the pose's positions),
 //   Q = Σ_masses [ m (a_G − g)·v̂_G + I α ω̂ ] − Σ_torques τ ω̂ − Σ_forces F·v̂_P
+//       − Σ_springs P·(v̂_1 − v̂_2)    (P the spring's pull on its first end)
 // (SI; a crank's Q is its torque T in N·m). With v̂ = v/q̇ this is the power balance
 // Q q̇ + loads' power + gravity's power = dE/dt; with the unit-rate velocities it also holds at
 // rest (q̇ = 0), where the power balance says nothing. A link mass's centre moves as
@@ -26,7 +27,7 @@ namespace linkwright::kinematics {
 struct VirtualWork {
   double inertial = 0.0;  ///< Σ m a_G·v̂_G + I α ω̂
   double gravity = 0.0;   ///< Σ m g·v̂_G
-  double loads = 0.0;     ///< Σ τ ω̂ + Σ F·v̂_P
+  double loads = 0.0;     ///< Σ τ ω̂ + Σ F·v̂_P + Σ P·(v̂_1 − v̂_2)
   double scale = 0.0;
   /// Q, the driver's generalized force: inertial − gravity − loads.
   double generalizedForce() const { return inertial - gravity - loads; }

@@ -176,10 +176,11 @@ std::optional<Error> checkRead(const Design& d) {
 }
 
 // Version 3 added "dynamics", version 4 the driver's "law", version 5 drivers other than a
-// crank (points driven along a path, linear actuators) and version 6 the synthesis targets: a
-// design is written as the oldest version that holds it, so older Linkwrights still open it,
-// or refuse it rather than drop what they do not know.
+// crank (points driven along a path, linear actuators), version 6 the synthesis targets and
+// version 7 springs among the loads: a design is written as the oldest version that holds it,
+// so older Linkwrights still open it, or refuse it rather than drop what they do not know.
 int versionFor(const Design& design) {
+  if (!design.dynamics.loads.springs.empty()) return 7;
   if (design.synthesis) return 6;
   if (inputKind(design.mechanism) != InputKind::Angle) return 5;
   if (design.time) return 4;

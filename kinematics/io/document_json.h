@@ -35,7 +35,7 @@ namespace linkwright::kinematics::io {
 /// The newest document version this build reads, and writes for a design that keeps synthesis
 /// targets (one driven other than by a crank is written as version 5, one with a motion law as
 /// version 4, one with dynamics only as version 3, one with none of these as version 2).
-inline constexpr int kDocumentVersion = 6;
+inline constexpr int kDocumentVersion = 7;
 
 /// The document text for a design (UTF-8, LF line ends, trailing newline).
 std::string writeDocument(const Design& design);

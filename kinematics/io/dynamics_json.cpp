@@ -107,6 +107,9 @@ std::string renamed(const std::string& member) {
   if (member == "torque") return "torque_N_m";
   if (member == "force.x") return "x_N";
   if (member == "force.y") return "y_N";
+  if (member == "stiffness") return "stiffness_N_m";
+  if (member == "freeLength") return "free_length";
+  if (member == "preload") return "preload_N";
   return member;
 }
 
@@ -128,7 +131,25 @@ std::string documentPath(const std::string& field, const LinkageDynamics& d) {
     const bool slider = d.loads.forces[k].link.empty();
     return "dynamics.forces[" + std::to_string(k) + "]." + (slider && member == "point" ? "slider" : renamed(member));
   }
+  if (field.rfind("loads.springs[", 0) == 0) {
+    const auto [k, member] = indexed(field, 13);
+    return "dynamics.springs[" + std::to_string(k) + "]." + renamed(member);
+  }
   return "dynamics." + field;
+}
+
+std::string springEnd(const SpringEnd& end) {
+  return "{" + (end.link.empty() ? std::string() : "\"link\": " + jsonQuote(end.link) + ", ") +
+         "\"point\": " + jsonQuote(end.point) + "}";
+}
+
+SpringEnd readSpringEnd(const JsonValue& spring, const std::string& key, const std::string& path, JsonReader& r) {
+  const JsonValue* end = r.object(spring, key, path + "." + key);
+  if (end == nullptr) return {};
+  SpringEnd out;
+  if (JsonReader::has(*end, "link")) out.link = r.string(*end, "link", path + "." + key + ".link").value_or("");
+  out.point = r.string(*end, "point", path + "." + key + ".point").value_or("");
+  return out;
 }
 
 }  // namespace
@@ -150,6 +171,12 @@ void writeDynamicsMember(std::ostream& out, const LinkageDynamics& d) {
     return "{\"link\": " + jsonQuote(t.link) + ", \"torque_N_m\": " + formatJsonNumber(t.torque) + "}";
   });
   writeList(out, first, "forces", d.loads.forces, forceMember);
+  writeList(out, first, "springs", d.loads.springs, [](const Spring& sp) {
+    return "{\"name\": " + jsonQuote(sp.name) + ", \"first\": " + springEnd(sp.first) +
+           ", \"second\": " + springEnd(sp.second) + ", \"stiffness_N_m\": " + formatJsonNumber(sp.stiffness) +
+           ", \"free_length\": " + formatJsonNumber(sp.freeLength) +
+           ", \"preload_N\": " + formatJsonNumber(sp.preload) + "}";
+  });
   out << "\n  }";
 }
 
@@ -174,6 +201,16 @@ LinkageDynamics readDynamicsMember(const JsonValue& root, JsonReader& r) {
   });
   readArray(*d, "forces", r,
             [&](const JsonValue& v, const std::string& path) { out.loads.forces.push_back(readForce(v, path, r)); });
+  readArray(*d, "springs", r, [&](const JsonValue& v, const std::string& path) {
+    Spring sp;
+    if (JsonReader::has(v, "name")) sp.name = r.string(v, "name", path + ".name").value_or("");
+    sp.first = readSpringEnd(v, "first", path, r);
+    sp.second = readSpringEnd(v, "second", path, r);
+    sp.stiffness = r.number(v, "stiffness_N_m", path + ".stiffness_N_m").value_or(0.0);
+    sp.freeLength = r.number(v, "free_length", path + ".free_length").value_or(0.0);
+    if (JsonReader::has(v, "preload_N")) sp.preload = r.number(v, "preload_N", path + ".preload_N").value_or(0.0);
+    out.loads.springs.push_back(sp);
+  });
   return out;
 }
 

@@ -81,3 +81,32 @@ TEST_CASE("balance refuses what it cannot balance, and writes nothing", "[cli][b
   CHECK(fs::is_empty(dir));
   fs::remove_all(dir);
 }
+
+TEST_CASE("balance --spring writes the spring that lowers the RMS torque, and machine finds it there",
+          "[cli][balance][springs]") {
+  const fs::path dir = scratchDir();
+  const std::string out = (dir / "sprung.linkwright").string();
+  const auto r = runCliCommand({"balance", "--example", "funsho-fourbar", "--spring", "rocker:C,O2", "-o", out});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.out.find("the spring from C on rocker to the frame at O2") != std::string::npos);
+  CHECK(r.out.find("driving torque RMS    0.67087 → 0.55503 N·m") != std::string::npos);
+  // The written document's own inverse dynamics give the RMS the balance predicted.
+  const auto machine = runCliCommand({"machine", out});
+  REQUIRE(machine.code == 0);
+  CHECK(machine.out.find("RMS 0.55503 N·m") != std::string::npos);
+  const std::vector<std::pair<std::string, std::string>> refused{
+      {"rocker:C", "--spring needs two ends"},
+      {"rocker:C,X", "--spring: loads.springs[0].second.point names no point of this mechanism (got \"X\")"},
+      {"rocker:C,O4", "--spring: a spring from C to O4 cannot change the driving torque"},
+  };
+  for (const auto& [ends, message] : refused) {
+    CAPTURE(ends);
+    const auto bad = runCliCommand(
+        {"balance", "--example", "funsho-fourbar", "--spring", ends, "-o", (dir / "bad.linkwright").string()});
+    CHECK(bad.code == 2);
+    CHECK(bad.err.find(message) != std::string::npos);
+    CHECK_FALSE(fs::exists(dir / "bad.linkwright"));
+  }
+  fs::remove_all(dir);
+}

@@ -24,6 +24,8 @@ class QGraphicsPolygonItem;
 
 namespace linkwright::ui {
 
+class SpringsItem;
+
 class ArrowItem;
 class CouplerPathItem;
 class FeasibleRangeItem;
@@ -95,6 +97,7 @@ public:
   const SlidewayItem* slideway(kinematics::PointId joint) const;
   const FeasibleRangeItem* feasibleRangeItem() const { return m_range; }
   const InstantCentresItem* instantCentresItem() const { return m_centres; }
+  const SpringsItem* springsItem() const { return m_springs; }
   /// Arrows at every moving point; nullptr for ground pivots.
   const ArrowItem* velocityArrow(kinematics::PointId point) const;
   const ArrowItem* accelerationArrow(kinematics::PointId point) const;
@@ -116,6 +119,7 @@ private:
   std::vector<DragHandle> m_handles;
   FeasibleRangeItem* m_range;
   InstantCentresItem* m_centres;
+  SpringsItem* m_springs;
   std::vector<ArrowItem*> m_velocityArrows;  // per point; null for ground pivots
   std::vector<ArrowItem*> m_accelerationArrows;
   LabelItem* m_message;

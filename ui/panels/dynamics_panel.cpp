@@ -229,10 +229,15 @@ void DynamicsPanel::refreshLoads() {
 
   const std::size_t extra = (loads.torques.size() > 1 ? loads.torques.size() - 1 : 0) +
                             (loads.forces.size() > 1 ? loads.forces.size() - 1 : 0);
-  m_extraLoads->setText(
-      extra > 0 ? tr("%n more load(s) from the file are kept but not shown here.", nullptr, static_cast<int>(extra))
-                : QString());
-  m_extraLoads->setVisible(extra > 0);
+  QStringList notes;
+  if (extra > 0)
+    notes << tr("%n more load(s) from the file are kept but not shown here.", nullptr, static_cast<int>(extra));
+  // Springs come from a document or linkwright-cli balance --spring; the canvas draws them.
+  if (!loads.springs.empty())
+    notes << tr("%n spring(s) from the file act on the linkage (drawn on the canvas; edit them in the document).",
+                nullptr, static_cast<int>(loads.springs.size()));
+  m_extraLoads->setText(notes.join(QLatin1Char(' ')));
+  m_extraLoads->setVisible(!notes.isEmpty());
 }
 
 void DynamicsPanel::submit(const QString& description, const std::function<void(k::LinkageDynamics&)>& change) {

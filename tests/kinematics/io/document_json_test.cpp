@@ -199,8 +199,8 @@ TEST_CASE("bad documents are refused with the member named", "[io][document][err
       {"not json", "not valid JSON: line 1, column 2: syntax error while parsing value - invalid literal"},
       {"[1, 2]", "document must be a JSON object"},
       {replaced(good, "\"linkwright\"", "\"solvespace\""), "not a Linkwright document"},
-      {replaced(good, "\"version\": 2", "\"version\": 7"),
-       "this file is document version 7, written by a newer Linkwright; this one reads up to version 6"},
+      {replaced(good, "\"version\": 2", "\"version\": 8"),
+       "this file is document version 8, written by a newer Linkwright; this one reads up to version 7"},
       {replaced(good, "\"version\": 2", "\"version\": 1.5"), "version must be a whole number"},
       {replaced(good, "\"version\": 2", "\"version\": \"1\""), "version must be a number"},
       {replaced(good, "\"four-bar\"", "\"six-bar\""),
@@ -227,8 +227,8 @@ TEST_CASE("a damaged four-bar saved in the linkage form is refused with the memb
   const std::string good = writeDocument(sampleDesign());
   auto [text, expected] = GENERATE_COPY(table<std::string, std::string>({
       {replaced(good, "\"linkwright\"", "\"solvespace\""), "not a Linkwright document"},
-      {replaced(good, "\"version\": 2", "\"version\": 7"),
-       "this file is document version 7, written by a newer Linkwright; this one reads up to version 6"},
+      {replaced(good, "\"version\": 2", "\"version\": 8"),
+       "this file is document version 8, written by a newer Linkwright; this one reads up to version 7"},
       {replaced(good, "\"version\": 2", "\"version\": 1"),
        "must be \"four-bar\" in a version 1 document (got \"linkage\")"},
       {replaced(good, "\"first_length\": 70", "\"first_length\": -70"),

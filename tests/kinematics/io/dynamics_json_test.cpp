@@ -141,3 +141,28 @@ TEST_CASE("checkDocumentDynamics maps every checkDynamics field to its member", 
   REQUIRE(e.has_value());
   CHECK(e->message == "dynamics.forces[0].y_N must be finite and within ±1e24 N (got undefined)");
 }
+
+TEST_CASE("springs round-trip as version 7, and a bad one is refused naming its member", "[io][document][springs]") {
+  Design d = *designForExample("funsho-fourbar");
+  d.mechanism.points.push_back({"S", GroundPoint{Eigen::Vector2d(-10.0, 25.0)}});
+  d.dynamics.loads.springs = {{"lift", {"rocker", "C"}, {"", "S"}, 2400.0, 12.5, -3.0},
+                              {"", {"crank", "B"}, {"coupler", "C"}, 0.5, 0.0, 0.0}};
+  REQUIRE_FALSE(checkDesign(d).has_value());
+  const std::string text = writeDocument(d);
+  CHECK_THAT(text, Catch::Contains("\"version\": 7,"));
+  CHECK_THAT(text, Catch::Contains("\"springs\": [\n      {\"name\": \"lift\", \"first\": {\"link\": \"rocker\", "
+                                   "\"point\": \"C\"}, \"second\": {\"point\": \"S\"}, \"stiffness_N_m\": 2400, "
+                                   "\"free_length\": 12.5, \"preload_N\": -3}"));
+  const auto back = readDocument(text);
+  INFO((back.ok() ? std::string() : back.error().message));
+  REQUIRE(back.ok());
+  CHECK(*back == d);
+  CHECK(writeDocument(*back) == text);
+  const auto bad = readDocument(replaced(text, "\"stiffness_N_m\": 2400", "\"stiffness_N_m\": -5"));
+  REQUIRE_FALSE(bad.ok());
+  CHECK(bad.error().message == "dynamics.springs[0].stiffness_N_m must be between 0 and 1e15 N/m (got -5)");
+  const auto ground = readDocument(replaced(text, "\"second\": {\"point\": \"S\"}", "\"second\": {\"point\": \"C\"}"));
+  REQUIRE_FALSE(ground.ok());
+  CHECK(ground.error().message ==
+        "dynamics.springs[0].second.point must be a ground point for an end on the frame (got \"C\")");
+}

@@ -9,6 +9,7 @@
 #include "ui/canvas/drag_handles.h"
 #include "ui/canvas/feasible_range_item.h"
 #include "ui/canvas/link_item.h"
+#include "ui/canvas/springs_item.h"
 
 #include "kinematics/model/units.h"
 
@@ -171,4 +172,25 @@ TEST_CASE("presentation scale thickens links and enlarges pins", "[canvas][scene
   CHECK(v.scene().handleItem(fourbar::kB)->scale() == 2.0);
   CHECK(v.scene().handleItem(fourbar::kO2)->scale() == 2.0);
   CHECK(v.scene().linkItem(fourbar::kCrank)->pen().isCosmetic());
+}
+
+TEST_CASE("a spring is drawn between its ends at the pose, and leaves with the design", "[canvas][scene][springs]") {
+  k::Design design = *k::designForExample("funsho-fourbar");
+  design.mechanism.points.push_back({"S", k::GroundPoint{Eigen::Vector2d(-10.0, 25.0)}});
+  design.dynamics.loads.springs = {{"lift", {"rocker", "C"}, {"", "S"}, 500.0, 10.0, 0.0}};
+  ShownView v(design);
+  const auto* springs = v.scene().springsItem();
+  REQUIRE(springs->isVisible());
+  const auto ends = [&] {
+    const QPainterPath& path = springs->path();
+    REQUIRE(path.elementCount() == 2 * 8 + 4);  // a lead, sixteen coil corners, a lead
+    return std::pair{QPointF(path.elementAt(0)), QPointF(path.elementAt(path.elementCount() - 1))};
+  };
+  const k::PointId c = *design.mechanism.findPoint("C"), s = *design.mechanism.findPoint("S");
+  CHECK(ends() == std::pair{v.point(c), v.point(s)});
+  v.document.setCrankAngle(k::degToRad(120.0));
+  CHECK(ends() == std::pair{v.point(c), v.point(s)});  // it follows the crank
+  v.document.reset(*k::designForExample("funsho-fourbar"));
+  CHECK_FALSE(springs->isVisible());
+  CHECK(springs->path().isEmpty());
 }

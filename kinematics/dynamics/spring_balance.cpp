@@ -1,0 +1,84 @@
+#include "kinematics/dynamics/spring_balance.h"
+
+#include "kinematics/dynamics/crank_terms.h"
+#include "kinematics/model/units.h"
+#include "kinematics/solve/pose_solver.h"
+
+#include <cmath>
+
+namespace linkwright::kinematics {
+namespace {
+
+// ∮ f dθ by the trapezoidal rule over samples whose last closes the turn (either way round).
+template <typename F>
+double integral(const std::vector<double>& angle, F f) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i + 1 < angle.size(); ++i) sum += 0.5 * (f(i) + f(i + 1)) * std::abs(angle[i + 1] - angle[i]);
+  return sum;
+}
+
+}  // namespace
+
+double rmsOverTurn(const std::vector<double>& angle, const std::vector<double>& torque) {
+  return std::sqrt(integral(angle, [&](std::size_t i) { return torque[i] * torque[i]; }) /
+                   std::abs(angle.back() - angle.front()));
+}
+
+Result<SpringBalance> balanceBySpring(const Mechanism& m, const LinkageDynamics& d, const SweepSpec& turn,
+                                      const SpringEnd& first, const SpringEnd& second, const std::string& name) {
+  if (auto e = checkCrankTurn(m, turn)) return *e;
+  LinkageDynamics probe = d;  // the ends checked as a spring of the design would be
+  probe.loads.springs.push_back({name, first, second, 0.0, 0.0, 0.0});
+  if (auto e = checkDynamics(m, probe)) return *e;
+  const double metres = *metresPerLengthUnit(m.lengthUnit);
+  const auto moving = turnForces(m, d, turn, turn.omega, 0.0);
+  if (!moving) return moving.error();
+  const SweepResult& s = moving->kinematics;
+  const PointId a = *m.findPoint(first.point), b = *m.findPoint(second.point);
+
+  // L and L' = dL/dθ (m, m/rad) at each sample, from its positions and velocities per unit rate.
+  std::vector<double> length(s.size()), slope(s.size());
+  for (std::size_t j = 0; j < s.size(); ++j) {
+    const Eigen::Vector2d between = metres * (s.position[b.index][j] - s.position[a.index][j]);
+    const Eigen::Vector2d rate = metres * (s.velocity[b.index][j] - s.velocity[a.index][j]) / turn.omega;
+    length[j] = between.norm();
+    slope[j] = length[j] > 0.0 ? between.dot(rate) / length[j] : 0.0;
+  }
+  const std::vector<double>& t0 = moving->forces.driveTorque;
+  std::vector<double> angle(s.size());
+  for (std::size_t j = 0; j < s.size(); ++j) angle[j] = s.inputAngle[j];
+  // J(k, c) = ∮ (T0 + k a + c b)² dθ with a = L L', b = −L': least where both derivatives vanish,
+  //   k ∮a² + c ∮ab = −∮a T0,   k ∮ab + c ∮b² = −∮b T0.
+  const auto A = [&](std::size_t i) { return length[i] * slope[i]; };
+  const auto B = [&](std::size_t i) { return -slope[i]; };
+  const double aa = integral(angle, [&](std::size_t i) { return A(i) * A(i); });
+  const double bb = integral(angle, [&](std::size_t i) { return B(i) * B(i); });
+  const double ab = integral(angle, [&](std::size_t i) { return A(i) * B(i); });
+  const double at0 = integral(angle, [&](std::size_t i) { return A(i) * t0[i]; });
+  const double bt0 = integral(angle, [&](std::size_t i) { return B(i) * t0[i]; });
+  const double det = aa * bb - ab * ab;
+  if (!(det > 1e-14 * aa * bb) || aa == 0.0)
+    return Error{ErrorCode::InvalidValue, "spring",
+                 "a spring from " + first.point + " to " + second.point +
+                     " cannot change the driving torque enough to be sized (its length barely changes over the turn)"};
+  const double k = (-at0 * bb + bt0 * ab) / det;
+  const double c = (-bt0 * aa + at0 * ab) / det;
+  if (!(k > 0.0))
+    return Error{ErrorCode::InvalidValue, "spring",
+                 "no spring from " + first.point + " to " + second.point + " lowers the RMS driving torque"};
+
+  SpringBalance r;
+  const double freeLength = c / k;  // m
+  r.spring = {name, first, second, k, freeLength >= 0.0 ? freeLength / metres : 0.0, freeLength >= 0.0 ? 0.0 : -c};
+  r.balanced = d;
+  r.balanced.loads.springs.push_back(r.spring);
+  r.angle = angle;
+  r.torqueBefore = t0;
+  r.torqueAfter.resize(t0.size());
+  for (std::size_t j = 0; j < t0.size(); ++j) r.torqueAfter[j] = t0[j] + (k * length[j] - c) * slope[j];
+  r.rmsBefore = rmsOverTurn(angle, r.torqueBefore);
+  r.rmsAfter = rmsOverTurn(angle, r.torqueAfter);
+  return r;
+}
+
+}  // namespace linkwright::kinematics
