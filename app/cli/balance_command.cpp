@@ -15,6 +15,7 @@
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 
+#include <algorithm>
 #include <numbers>
 #include <ostream>
 
@@ -27,7 +28,8 @@ using k::formatShort;
 // One turn at the design's speed on its grid's step, from its start: what the figures compare.
 k::SweepSpec turnOf(const k::Design& d) {
   const double from = k::degToRad(d.fromDeg);
-  return {from, from + 2.0 * std::numbers::pi, d.samples < 361 ? 361 : d.samples, d.omega == 0.0 ? 1.0 : d.omega, 0.0};
+  const std::size_t samples = std::clamp<std::size_t>(d.samples, 361, k::kMaxTurnSamples);
+  return {from, from + 2.0 * std::numbers::pi, samples, d.omega == 0.0 ? 1.0 : d.omega, 0.0};
 }
 
 void printComparison(std::ostream& out, const k::MachineDuty& before, const k::MachineDuty& after) {

@@ -133,7 +133,7 @@ constexpr const char* kClassifyOptions = R"(Classify options:
 constexpr const char* kMachineOptions = R"(machine options (FILE.json or --example NAME with masses; its speed and
 grid step are the defaults; one full turn from the grid's start):
   --rpm RPM, --omega W  the crank's constant speed
-  --samples N           samples over the turn (4 to 10000000; default the grid's step)
+  --samples N           samples over the turn (4 to 100000; default the grid's step)
   --cs CS               size a flywheel for the coefficient of speed fluctuation
                         Cs = (ω_max − ω_min)/ω, between 0 and 1 (e.g. 0.02)
   --gear-ratio N        motor turns per crank turn (default 1)

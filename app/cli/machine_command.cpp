@@ -12,6 +12,8 @@
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -47,10 +49,12 @@ k::Result<k::SweepSpec> turnFor(const Invocation& inv, const GridDefaults& d) {
   turn.omega = inv.rpm ? k::rpmToRadPerSec(*inv.rpm) : inv.omega.value_or(d.omega);
   turn.fromAngle = k::degToRad(d.fromDeg);
   turn.toAngle = turn.fromAngle + 2.0 * std::numbers::pi;
-  const long long samples = inv.samples.value_or(std::llround(360.0 / d.stepDeg) + 1);
-  if (samples < 4 || samples > k::kMaxSamples)
+  // The grid's step, up to the most a turn holds; --samples exactly as asked.
+  const auto limit = static_cast<long long>(k::kMaxTurnSamples);
+  const long long samples = inv.samples.value_or(std::min(std::llround(360.0 / d.stepDeg) + 1, limit));
+  if (samples < 4 || samples > limit)
     return k::Error{k::ErrorCode::InvalidValue, "--samples",
-                    "--samples must be between 4 and 10000000 for a turn (got " + std::to_string(samples) + ")"};
+                    "--samples must be between 4 and 100000 for a turn (got " + std::to_string(samples) + ")"};
   turn.samples = static_cast<std::size_t>(samples);
   return turn;
 }

@@ -38,8 +38,8 @@ std::optional<Error> checkCrankTurn(const Mechanism& mechanism, const SweepSpec&
   const double span = turn.toAngle - turn.fromAngle;
   if (std::abs(std::abs(span) - kTurn) > 1e-9 * kTurn)
     return invalid("range", "a turn's duty needs the grid to span one full turn, 360° (got " + degreesText(span) + ")");
-  if (turn.samples < 4)
-    return invalid("samples", "a turn's duty needs at least 4 samples (got " + std::to_string(turn.samples) + ")");
+  if (turn.samples < 4 || turn.samples > kMaxTurnSamples)
+    return invalid("samples", "a turn's duty needs 4 to 100000 samples (got " + std::to_string(turn.samples) + ")");
   return std::nullopt;
 }
 

@@ -19,11 +19,15 @@
 
 namespace linkwright::kinematics {
 
+/// The most samples a turn may have: its duty holds the whole turn (three force sweeps) in
+/// memory, about 2 kB a sample for a four-bar; 100000 is a sample every 0.0036°.
+inline constexpr std::size_t kMaxTurnSamples = 100'000;
+
 /// Error naming "driver" unless `mechanism` is driven by a crank.
 std::optional<Error> checkCrankDriven(const Mechanism& mechanism);
 
 /// Error unless `mechanism` is driven by a crank (checkCrankDriven) and `turn` is one full turn at a constant
-/// ω ≠ 0 (fromAngle to fromAngle ± 2π, α = 0, no time base, at least 4 samples).
+/// ω ≠ 0 (fromAngle to fromAngle ± 2π, α = 0, no time base, 4 to kMaxTurnSamples samples).
 std::optional<Error> checkCrankTurn(const Mechanism& mechanism, const SweepSpec& turn);
 
 /// A turn's kinematics and the forces solved on them.

@@ -189,6 +189,7 @@ TEST_CASE("a turn's duty refuses what it cannot compute, naming the field", "[dy
   CHECK(refused(SweepSpec{0.0, kTurn / 2.0, 181, 1.0, 0.0}, {}).message ==
         "a turn's duty needs the grid to span one full turn, 360° (got 180°)");
   CHECK(refused(turnAt(0.0), {}).field == "omega");
+  CHECK(refused(turnAt(1.0, 100'001), {}).message == "a turn's duty needs 4 to 100000 samples (got 100001)");
   CHECK(refused(SweepSpec{0.0, kTurn, 361, 1.0, 2.0}, {}).field == "alpha");
   // A crank that cannot turn fully (a triple rocker) names where it stops.
   const Mechanism rocker = makeFourBar({60.0, 50.0, 20.0, 45.0}, Branch::Open).value();
