@@ -22,6 +22,7 @@
 #include "ui/export/report_options_dialog.h"
 #include "ui/export/view_image.h"
 #include "ui/message_banner.h"
+#include "ui/number_text.h"
 #include "ui/panels/analysis_panel.h"
 #include "ui/panels/dimensions_panel.h"
 #include "ui/panels/drive_panel.h"
@@ -35,8 +36,11 @@
 #include "ui/undo_keys.h"
 #include "ui/wheel_guard.h"
 
+#include "kinematics/design/design.h"
 #include "kinematics/design/dyad_request.h"
 #include "kinematics/design/examples.h"
+#include "kinematics/dynamics/force_balance.h"
+#include "kinematics/dynamics/machine_duty.h"
 #include "kinematics/io/bounded_read.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/dxf_export.h"
@@ -281,6 +285,20 @@ void MainWindow::buildMenus() {
   edit->addAction(redo);
   edit->addSeparator();
   edit->addAction(tr("Attach &dyad…"), QKeySequence(Qt::CTRL | Qt::Key_D), this, &MainWindow::openAttachDyadDialog);
+  edit->setToolTipsVisible(true);  // why Balance is disabled
+  m_balanceAction = edit->addAction(tr("&Balance the shaking force"), this, &MainWindow::balanceShakingForce);
+  const auto followBalance = [this] {
+    const k::Design& d = m_document->design();
+    const auto balance = k::balanceShakingForce(d.mechanism, d.dynamics);
+    m_balanceAction->setEnabled(balance.ok() && !balance->counterweights.empty());
+    m_balanceAction->setToolTip(!balance.ok()                     ? QString::fromStdString(balance.error().message)
+                                : balance->counterweights.empty() ? tr("Its shaking force is balanced already")
+                                                                  : QString::fromStdString(balance->method));
+  };
+  connect(m_document, &MechanismDocument::changed, this, [followBalance](Changes what) {
+    if (what & Change::Design) followBalance();
+  });
+  followBalance();
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
   view->addAction(tr("&Fit to view"), QKeySequence(Qt::CTRL | Qt::Key_0), m_canvas, &LinkageView::fitToView);
@@ -775,6 +793,33 @@ bool MainWindow::maybeSave() {
                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
   if (answer == QMessageBox::Save) return save();
   return answer == QMessageBox::Discard;
+}
+
+void MainWindow::balanceShakingForce() {
+  k::Design design = m_document->design();
+  const auto balance = k::balanceShakingForce(design.mechanism, design.dynamics);
+  if (!balance || balance->counterweights.empty()) return;  // the action is disabled then
+  const k::LinkageDynamics before = design.dynamics;
+  design.dynamics = balance->balanced;
+  if (const auto why = m_document->edit(design, tr("Balance the shaking force"))) {
+    showError(*why);
+    return;
+  }
+  // What the balance gained and cost over a turn, as the CLI's balance says it.
+  const k::SweepSpec turn = k::designTurn(design);
+  const auto was = k::machineDuty(design.mechanism, before, turn, {});
+  const auto is = k::machineDuty(design.mechanism, design.dynamics, turn, {});
+  if (!was || !is) return;
+  const auto change = [](double a, double b, const QString& unit) {
+    return tr("%1 → %2 %3").arg(numberText(a, 'g', 4), numberText(b, 'g', 4), unit);
+  };
+  statusBar()->showMessage(tr("Balanced (Ctrl+Z undoes): shaking force peak %1, shaking moment peak %2, driving "
+                              "torque RMS %3, bearing load peak %4")
+                               .arg(change(was->shakingForcePeak, is->shakingForcePeak, tr("N")),
+                                    change(was->shakingMomentPeak, is->shakingMomentPeak, tr("N·m")),
+                                    change(was->rmsTorque, is->rmsTorque, tr("N·m")),
+                                    change(was->bearingLoadPeak, is->bearingLoadPeak, tr("N"))),
+                           20000);
 }
 
 void MainWindow::showError(const QString& message) { m_banner->showMessage(message, MessageBanner::Kind::Error); }

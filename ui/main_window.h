@@ -106,6 +106,7 @@ public:
   /// slider-crank (the action is disabled then, its tooltip saying why).
   InversionsWindow* showInversions();
   QAction* inversionsAction() const { return m_inversionsAction; }
+  QAction* balanceAction() const { return m_balanceAction; }
   /// View ▸ Instant centres and centrodes, as if chosen from the menu.
   void setShowInstantCentres(bool show);
   /// Large fonts and lines, full screen, side panels hidden: for the lecture hall.
@@ -130,6 +131,7 @@ private:
   void buildNewMenu(QMenu* menu);
   void buildExamplesMenu(QMenu* menu);
   void openAttachDyadDialog();
+  void balanceShakingForce();
   QWidget* buildAnalysisTabs();
   void updateForcesNeeded();
   void showForcesTab();
@@ -179,6 +181,7 @@ private:
   QSplitter* m_forcesSplitter =
       nullptr;  // the masses and loads over the force plots      // the window's, put back on leaving
   QAction* m_inversionsAction = nullptr;
+  QAction* m_balanceAction = nullptr;
   InversionsWindow* m_inversions = nullptr;
   bool m_presentation = false;
   QString m_unsavedName;  ///< what the title calls a document not saved yet

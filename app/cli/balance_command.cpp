@@ -15,8 +15,6 @@
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 
-#include <algorithm>
-#include <numbers>
 #include <ostream>
 
 namespace linkwright::cli {
@@ -24,13 +22,6 @@ namespace {
 
 namespace k = kinematics;
 using k::formatShort;
-
-// One turn at the design's speed on its grid's step, from its start: what the figures compare.
-k::SweepSpec turnOf(const k::Design& d) {
-  const double from = k::degToRad(d.fromDeg);
-  const std::size_t samples = std::clamp<std::size_t>(d.samples, 361, k::kMaxTurnSamples);
-  return {from, from + 2.0 * std::numbers::pi, samples, d.omega == 0.0 ? 1.0 : d.omega, 0.0};
-}
 
 void printComparison(std::ostream& out, const k::MachineDuty& before, const k::MachineDuty& after) {
   const auto row = [&](const std::string& name, double a, double b, const std::string& unit) {
@@ -60,7 +51,7 @@ ExitCode balanceBySpring(const Invocation& inv, k::Design design, std::ostream& 
   const std::string& ends = *inv.springEnds;
   const auto comma = ends.find(',');
   const k::SpringEnd first = springEnd(ends.substr(0, comma)), second = springEnd(ends.substr(comma + 1));
-  const auto balance = k::balanceBySpring(design.mechanism, design.dynamics, turnOf(design), first, second);
+  const auto balance = k::balanceBySpring(design.mechanism, design.dynamics, k::designTurn(design), first, second);
   if (!balance) {
     err << "linkwright-cli: --spring: " << balance.error().message << "\n";
     return ExitCode::BadInput;
@@ -114,7 +105,7 @@ ExitCode runBalance(const Invocation& inv, std::ostream& out, std::ostream& err)
         << formatShort(c.centre.along, 6) << " " << unit << " along and " << formatShort(c.centre.across, 6) << " "
         << unit << " across the link, joined to its mass\n";
   if (balance->counterweights.empty()) out << "  no counterweight needed: it is balanced already\n";
-  const k::SweepSpec turn = turnOf(design);
+  const k::SweepSpec turn = k::designTurn(design);
   const auto before = k::machineDuty(design.mechanism, original, turn, {});
   const auto after = k::machineDuty(design.mechanism, design.dynamics, turn, {});
   if (before && after) printComparison(out, *before, *after);

@@ -1,5 +1,7 @@
 #include "kinematics/design/design.h"
 
+#include "kinematics/dynamics/crank_terms.h"
+
 #include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/number_text.h"
@@ -7,6 +9,7 @@
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace linkwright::kinematics {
@@ -58,6 +61,12 @@ std::optional<Error> checkDriveAndGrid(double omega, double alpha, double fromDe
 
 std::size_t samplesEveryHalfDegree(double fromDeg, double toDeg) {
   return static_cast<std::size_t>(std::lround((toDeg - fromDeg) / 0.5)) + 1;
+}
+
+SweepSpec designTurn(const Design& d) {
+  const double from = degToRad(d.fromDeg);
+  const std::size_t samples = std::clamp<std::size_t>(d.samples, 361, kMaxTurnSamples);
+  return {from, from + 2.0 * kPi, samples, d.omega == 0.0 ? 1.0 : d.omega, 0.0};
 }
 
 SweepSpec designSweepSpec(const Design& d) {

@@ -59,6 +59,11 @@ std::size_t samplesEveryHalfDegree(double fromDeg, double toDeg);
 /// The design's analysis grid: its angles at its crank speed, or its time base.
 SweepSpec designSweepSpec(const Design& design);
 
+/// One full crank turn from the grid's start at the design's ω (1 rad/s if it is 0), with the
+/// grid's samples, at least 361 and at most kMaxTurnSamples: what a turn's machine figures
+/// (machine_duty.h) are computed over for a design.
+SweepSpec designTurn(const Design& design);
+
 /// A four-bar design (makeFourBar's points O2, O4, B, C and P, links crank, coupler,
 /// rocker) at ω = 1 rad/s over a full turn every 0.5°. Fails, naming the field, as makeFourBar.
 Result<Design> fourBarDesign(const FourBarLengths& lengths, Branch branch = Branch::Open,
