@@ -77,10 +77,7 @@ double CrankTerms::at(const std::vector<double>& column, double theta) const {
 }
 
 double CrankTerms::mean(const std::vector<double>& column) const {
-  double sum = 0.0;
-  for (std::size_t i = 0; i + 1 < angle.size(); ++i)
-    sum += 0.5 * (column[i] + column[i + 1]) * (angle[i + 1] - angle[i]);
-  return sum / (angle.back() - angle.front());
+  return turnMean(angle, [&](std::size_t i) { return column[i]; });
 }
 
 Result<CrankTerms> crankTerms(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepSpec& turn,

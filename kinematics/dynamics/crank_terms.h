@@ -42,6 +42,25 @@ struct TurnSweep {
 Result<TurnSweep> turnForces(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepSpec& turn,
                              double omega, double alpha);
 
+/// ∮ f dθ over a turn's samples `angle` by the trapezoidal rule; the last sample closes the
+/// turn, which may run either way (the weights are |Δθ|). `f(i)` is the integrand at sample i.
+template <typename F>
+double turnIntegral(const std::vector<double>& angle, F f) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i + 1 < angle.size(); ++i) {
+    const double step = angle[i + 1] - angle[i];
+    sum += 0.5 * (f(i) + f(i + 1)) * (step < 0.0 ? -step : step);
+  }
+  return sum;
+}
+
+/// The mean of f over the turn: turnIntegral over the turn's span.
+template <typename F>
+double turnMean(const std::vector<double>& angle, F f) {
+  const double span = angle.back() - angle.front();
+  return turnIntegral(angle, f) / (span < 0.0 ? -span : span);
+}
+
 /// The three terms at the turn's samples, ordered by increasing angle (a turn run backwards is
 /// reversed), and the torque at the turn's speed they add up to.
 struct CrankTerms {

@@ -19,14 +19,6 @@ Error invalid(const std::string& field, const std::string& message) {
   return Error{ErrorCode::InvalidValue, field, message};
 }
 
-// ∮ f dθ / 2π by the trapezoidal rule over samples whose last closes the turn.
-template <typename F>
-double turnMean(const std::vector<double>& angle, F f) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i + 1 < angle.size(); ++i) sum += 0.5 * (f(i) + f(i + 1)) * (angle[i + 1] - angle[i]);
-  return sum / (angle.back() - angle.front());
-}
-
 // A mean that is round-off beside the turn's peak (a linkage without loads or gravity takes
 // back all it is given) is 0, not 1e-17.
 double roundOffToZero(double mean, double peak) { return std::abs(mean) <= 1e-12 * std::abs(peak) ? 0.0 : mean; }

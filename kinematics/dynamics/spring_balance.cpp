@@ -7,21 +7,9 @@
 #include <cmath>
 
 namespace linkwright::kinematics {
-namespace {
-
-// ∮ f dθ by the trapezoidal rule over samples whose last closes the turn (either way round).
-template <typename F>
-double integral(const std::vector<double>& angle, F f) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i + 1 < angle.size(); ++i) sum += 0.5 * (f(i) + f(i + 1)) * std::abs(angle[i + 1] - angle[i]);
-  return sum;
-}
-
-}  // namespace
 
 double rmsOverTurn(const std::vector<double>& angle, const std::vector<double>& torque) {
-  return std::sqrt(integral(angle, [&](std::size_t i) { return torque[i] * torque[i]; }) /
-                   std::abs(angle.back() - angle.front()));
+  return std::sqrt(turnMean(angle, [&](std::size_t i) { return torque[i] * torque[i]; }));
 }
 
 Result<SpringBalance> balanceBySpring(const Mechanism& m, const LinkageDynamics& d, const SweepSpec& turn,
@@ -51,11 +39,11 @@ Result<SpringBalance> balanceBySpring(const Mechanism& m, const LinkageDynamics&
   //   k ∮a² + c ∮ab = −∮a T0,   k ∮ab + c ∮b² = −∮b T0.
   const auto A = [&](std::size_t i) { return length[i] * slope[i]; };
   const auto B = [&](std::size_t i) { return -slope[i]; };
-  const double aa = integral(angle, [&](std::size_t i) { return A(i) * A(i); });
-  const double bb = integral(angle, [&](std::size_t i) { return B(i) * B(i); });
-  const double ab = integral(angle, [&](std::size_t i) { return A(i) * B(i); });
-  const double at0 = integral(angle, [&](std::size_t i) { return A(i) * t0[i]; });
-  const double bt0 = integral(angle, [&](std::size_t i) { return B(i) * t0[i]; });
+  const double aa = turnIntegral(angle, [&](std::size_t i) { return A(i) * A(i); });
+  const double bb = turnIntegral(angle, [&](std::size_t i) { return B(i) * B(i); });
+  const double ab = turnIntegral(angle, [&](std::size_t i) { return A(i) * B(i); });
+  const double at0 = turnIntegral(angle, [&](std::size_t i) { return A(i) * t0[i]; });
+  const double bt0 = turnIntegral(angle, [&](std::size_t i) { return B(i) * t0[i]; });
   const double det = aa * bb - ab * ab;
   if (!(det > 1e-14 * aa * bb) || aa == 0.0)
     return Error{ErrorCode::InvalidValue, "spring",
