@@ -4,7 +4,7 @@
 // `linkwright-cli classify` prints it), a table of the link angles, ω and α every N degrees
 // (every N seconds on a time base; sweep_columns.h, the columns and numbers of `analyze`), the
 // refined extremes
-// (io/column_extrema.h, as `extremes`), the curves of the plots and, when the linkage has masses
+// (analysis/column_extrema.h, as `extremes`), the curves of the plots and, when the linkage has masses
 // and loads, the joint forces and driving torque (force_sweep.h, as `analyze --forces`).
 // Nothing here draws: report_pdf.h lays this out on pages, so a test can check the numbers
 // against the solver without reading a PDF. The table step follows the thesis (seed 000),

@@ -1,5 +1,5 @@
 // The linkage on the report's first page: the DXF export's plates, holes and ground crosses
-// (io/link_drawing.h) scaled to fit a box, y up, with a hatched ground symbol under each ground
+// (analysis/link_drawing.h) scaled to fit a box, y up, with a hatched ground symbol under each ground
 // pivot, each point's name, and each link's length written along it.
 
 #include "kinematics/report/report_layout.h"
