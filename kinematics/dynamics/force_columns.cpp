@@ -10,6 +10,8 @@ double ForceColumn::value(const ForceSweep& f, std::size_t j) const {
   case ForceQuantity::Normal: return f.normal[index][j];
   case ForceQuantity::Moment: return f.moment[index][j];
   case ForceQuantity::DriveTorque: return f.driveTorque[j];
+  case ForceQuantity::VirtualWorkTorque: return f.virtualWorkTorque[j];
+  case ForceQuantity::VirtualWorkDifference: return f.driveTorque[j] - f.virtualWorkTorque[j];
   case ForceQuantity::DriveAlong: return f.driveAlong[j];
   case ForceQuantity::DriveX: return f.driveForce[j].x();
   case ForceQuantity::DriveY: return f.driveForce[j].y();
@@ -44,7 +46,11 @@ std::vector<ForceColumn> forceColumns(const BodyModel& bodies) {
   }
   const Drive& drive = bodies.drive;
   switch (drive.kind) {
-  case DriveKind::Crank: columns.push_back({"T_drive_Nm", Q::DriveTorque, 0}); break;
+  case DriveKind::Crank:
+    columns.push_back({"T_drive_Nm", Q::DriveTorque, 0});
+    columns.push_back({"T_drive_virtual_work_Nm", Q::VirtualWorkTorque, 0});
+    columns.push_back({"T_drive_difference_Nm", Q::VirtualWorkDifference, 0});
+    break;
   case DriveKind::Actuator: columns.push_back({"actuator_force_N", Q::DriveAlong, 0}); break;
   case DriveKind::Path:
     columns.push_back({drive.name + "_drive_fx_N", Q::DriveX, 0});

@@ -9,6 +9,8 @@
 //                                               turned 90° CCW) and couple on the block
 //   the driver's generalized force, by driver:
 //     T_drive_Nm                                a crank: the motor torque on it, CCW positive
+//     T_drive_virtual_work_Nm,                  the same by virtual work (virtual_work.h), and
+//     T_drive_difference_Nm                     Newton–Euler less virtual work: round-off
 //     actuator_force_N                          a linear actuator: its axial force, positive
 //                                               pushing its end away from its base
 //     <point>_drive_fx_N, <point>_drive_fy_N,   a point driven along a path: the drive's force
@@ -40,6 +42,8 @@ enum class ForceQuantity {
   Normal,
   Moment,
   DriveTorque,
+  VirtualWorkTorque,
+  VirtualWorkDifference,
   DriveAlong,
   DriveX,
   DriveY,

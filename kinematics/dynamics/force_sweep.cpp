@@ -1,6 +1,9 @@
 #include "kinematics/dynamics/force_sweep.h"
 
+#include "kinematics/dynamics/virtual_work.h"
 #include "kinematics/solve/pose_solver.h"
+
+#include <optional>
 
 #include <string>
 
@@ -26,6 +29,7 @@ void allocate(ForceSweep& out, std::size_t samples) {
   out.normal.assign(out.bodies.prismatics.size(), std::vector<double>(samples, 0.0));
   out.moment.assign(out.bodies.prismatics.size(), std::vector<double>(samples, 0.0));
   out.driveTorque.assign(samples, 0.0);
+  out.virtualWorkTorque.assign(samples, 0.0);
   out.driveAlong.assign(samples, 0.0);
   out.driveForce.assign(samples, Eigen::Vector2d::Zero());
   out.jointTorque.assign(samples, Eigen::Vector2d::Zero());
@@ -82,6 +86,12 @@ Result<ForceSweep> sweepForces(const Mechanism& mechanism, const LinkageDynamics
   preparePose(mechanism, pose);
   PoseForces forces;
   solve.prepare(forces);
+  std::optional<CrankVirtualWork> virtualWork;
+  if (out.bodies.drive.kind == DriveKind::Crank) {
+    auto created = CrankVirtualWork::create(mechanism, dynamics);
+    if (!created) return created.error();
+    virtualWork.emplace(std::move(created.value()));
+  }
   for (std::size_t j = 0; j < sweep.size(); ++j) {
     if (cancel != nullptr && cancel->load(std::memory_order_relaxed))
       return Error{ErrorCode::Cancelled, "forces", "the force solve was cancelled at sample " + std::to_string(j)};
@@ -91,7 +101,9 @@ Result<ForceSweep> sweepForces(const Mechanism& mechanism, const LinkageDynamics
     }
     copySampleToPose(sweep, j, pose);
     out.status[j] = solve.solveInto(pose, forces, sweep.inputAngle[j]);
-    if (out.status[j] == PoseStatus::Ok) store(forces, j, out);
+    if (out.status[j] != PoseStatus::Ok) continue;
+    store(forces, j, out);
+    if (virtualWork) out.virtualWorkTorque[j] = virtualWork->torque(pose, sweep.inputAngle[j]);
   }
   return out;
 }

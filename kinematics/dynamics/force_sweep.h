@@ -3,7 +3,8 @@
 // kinematic sweep (sweep.h), stored one column per quantity like SweepResult, for the CSV
 // columns, the plots and the polar load diagrams. The driver's rates are the sweep's, so a
 // sweep with α ≠ 0 (or on a time base) gives the forces of an accelerating crank, cylinder or
-// path drive.
+// path drive. A crank's driving torque is also found by virtual work, the independent check
+// every table carries beside it.
 
 #include "kinematics/dynamics/inverse_dynamics.h"
 #include "kinematics/dynamics/mass_properties.h"
@@ -30,6 +31,7 @@ struct ForceSweep {
   std::vector<std::vector<double>> normal;             ///< N, per prismatic joint (PoseForces::normal)
   std::vector<std::vector<double>> moment;             ///< N·m, per prismatic joint
   std::vector<double> driveTorque;                     ///< N·m, a crank's, on the driven body, CCW +
+  std::vector<double> virtualWorkTorque;               ///< N·m, a crank's by virtual work (virtual_work.h)
   std::vector<double> driveAlong;                      ///< N, a linear driver's along its input (PoseForces)
   std::vector<Eigen::Vector2d> driveForce;             ///< N, a linear driver's on the driven body
   std::vector<Eigen::Vector2d> jointTorque;            ///< N·m, a serial arm's shoulder (x) and elbow (y)

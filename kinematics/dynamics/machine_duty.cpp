@@ -1,7 +1,6 @@
 #include "kinematics/dynamics/machine_duty.h"
 
 #include "kinematics/dynamics/flywheel.h"
-#include "kinematics/dynamics/virtual_work.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
@@ -120,10 +119,9 @@ Result<MachineDuty> machineDuty(const Mechanism& mechanism, const LinkageDynamic
     if (!flywheel) return flywheel.error();
     d.flywheelInertia = *flywheel;
   }
-  const auto byVirtualWork = virtualWorkTorques(mechanism, dynamics, moving->kinematics, moving->forces);
-  if (!byVirtualWork) return byVirtualWork.error();
   for (std::size_t j = 0; j < forces->size(); ++j) {
-    d.virtualWorkDifference = std::max(d.virtualWorkDifference, std::abs((*byVirtualWork)[j] - forces->driveTorque[j]));
+    d.virtualWorkDifference =
+        std::max(d.virtualWorkDifference, std::abs(forces->virtualWorkTorque[j] - forces->driveTorque[j]));
     d.shakingForcePeak = std::max(d.shakingForcePeak, forces->shakingForce[j].norm());
     d.shakingMomentPeak = std::max(d.shakingMomentPeak, std::abs(forces->shakingMoment[j]));
     for (const auto& joint : forces->revolute) d.bearingLoadPeak = std::max(d.bearingLoadPeak, joint[j].norm());

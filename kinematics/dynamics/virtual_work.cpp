@@ -4,6 +4,7 @@
 #include "kinematics/model/units.h"
 #include "kinematics/model/vec2.h"
 #include "kinematics/solve/pose_solver.h"
+#include "kinematics/solve/rigid_bodies.h"
 
 #include <cmath>
 #include <optional>
@@ -35,9 +36,10 @@ PointId blockPin(const Mechanism& m, PointId point) {
   return point;
 }
 
-}  // namespace
-
-VirtualWork virtualWork(const Mechanism& m, const LinkageDynamics& d, const Pose& motion, const Pose& rates) {
+// The virtual work with the velocities of `rates` times `perRate` (1/q̇ turns a moving pose's
+// velocities into those per unit input rate without copying them).
+VirtualWork scaledVirtualWork(const Mechanism& m, const LinkageDynamics& d, const Pose& motion, const Pose& rates,
+                              double perRate) {
   const double s = *metresPerLengthUnit(m.lengthUnit);
   const Eigen::Vector2d g = d.loads.gravity.value_or(Eigen::Vector2d::Zero());
   VirtualWork w;
@@ -57,8 +59,8 @@ VirtualWork virtualWork(const Mechanism& m, const LinkageDynamics& d, const Pose
     const LinkFramePoint c = l.centre.value_or(LinkFramePoint{0.5 * length / s, 0.0});
     const Eigen::Vector2d r = s * (c.along * u + c.across * perp(u));
     const double omega = motion.linkOmega[k.index], alpha = motion.linkAlpha[k.index];
-    const double unitOmega = rates.linkOmega[k.index];
-    const Eigen::Vector2d v = s * rates.velocity[link.first.index] + unitOmega * perp(r);
+    const double unitOmega = perRate * rates.linkOmega[k.index];
+    const Eigen::Vector2d v = s * perRate * rates.velocity[link.first.index] + unitOmega * perp(r);
     const Eigen::Vector2d a = s * motion.acceleration[link.first.index] + alpha * perp(r) - omega * omega * r;
     addMass(l.mass, l.inertia.value_or(l.mass * length * length / 12.0), unitOmega, alpha, v, a);
   }
@@ -66,17 +68,18 @@ VirtualWork virtualWork(const Mechanism& m, const LinkageDynamics& d, const Pose
     const SliderKey key{*m.findPoint(sm.point), sm.guide};
     const PointId pin = blockPin(m, key.point);
     const double alpha = blockRates(m, key, motion).second;
-    const double unitOmega = blockRates(m, key, rates).first;
-    addMass(sm.mass, sm.inertia, unitOmega, alpha, s * rates.velocity[pin.index], s * motion.acceleration[pin.index]);
+    const double unitOmega = perRate * blockRates(m, key, rates).first;
+    addMass(sm.mass, sm.inertia, unitOmega, alpha, s * perRate * rates.velocity[pin.index],
+            s * motion.acceleration[pin.index]);
   }
   for (const LinkTorque& t : d.loads.torques) {
-    const double work = t.torque * rates.linkOmega[m.findLink(t.link)->index];
+    const double work = t.torque * perRate * rates.linkOmega[m.findLink(t.link)->index];
     w.loads += work;
     w.scale += std::abs(work);
   }
   for (const PointForce& f : d.loads.forces) {
     const PointId at = f.link.empty() ? blockPin(m, *m.findPoint(f.point)) : *m.findPoint(f.point);
-    const double work = f.force.dot(s * rates.velocity[at.index]);
+    const double work = f.force.dot(s * perRate * rates.velocity[at.index]);
     w.loads += work;
     w.scale += std::abs(work);
   }
@@ -86,44 +89,41 @@ VirtualWork virtualWork(const Mechanism& m, const LinkageDynamics& d, const Pose
     const double length = between.norm();
     if (length == 0.0) continue;
     const Eigen::Vector2d pull = (sp.stiffness * (length - s * sp.freeLength) + sp.preload) * (between / length);
-    const double work = pull.dot(s * (rates.velocity[a.index] - rates.velocity[b.index]));
+    const double work = pull.dot(s * perRate * (rates.velocity[a.index] - rates.velocity[b.index]));
     w.loads += work;
     w.scale += std::abs(work);
   }
   return w;
 }
 
-Result<std::vector<double>> virtualWorkTorques(const Mechanism& m, const LinkageDynamics& d, const SweepResult& sweep,
-                                               const ForceSweep& forces) {
-  if (inputKind(m) != InputKind::Angle || !driverPoint(m) || forces.bodies.arm)
+}  // namespace
+
+VirtualWork virtualWork(const Mechanism& m, const LinkageDynamics& d, const Pose& motion, const Pose& rates) {
+  return scaledVirtualWork(m, d, motion, rates, 1.0);
+}
+
+Result<CrankVirtualWork> CrankVirtualWork::create(const Mechanism& m, const LinkageDynamics& d) {
+  if (inputKind(m) != InputKind::Angle || !driverPoint(m))
     return Error{ErrorCode::InvalidValue, "driver",
                  "the driving torque by virtual work is for a linkage driven by a crank (this one is driven by its " +
                      inputName(m) + ")"};
   const PointId tip = *driverPoint(m);
-  const PointId pivot = std::get<CrankPoint>(m.points[tip.index].definition).pivot;
-  std::vector<double> torque(sweep.size(), 0.0);
-  Pose motion, rates;
-  preparePose(m, motion);
-  preparePose(m, rates);
-  for (std::size_t j = 0; j < sweep.size() && j < forces.size(); ++j) {
-    if (!forces.ok(j)) continue;
-    copySampleToPose(sweep, j, motion);
-    // The velocities per unit crank rate: the pose's own, divided by its rate, or solved afresh
-    // at rate 1 on the same branches when the crank is at rest.
-    const Eigen::Vector2d arm = motion.position[tip.index] - motion.position[pivot.index];
-    const double rate = cross(arm, motion.velocity[tip.index] - motion.velocity[pivot.index]) / arm.squaredNorm();
-    if (rate != 0.0) {
-      rates = motion;
-      for (auto& v : rates.velocity) v /= rate;
-      for (double& omega : rates.linkOmega) omega /= rate;
-    } else {
-      BranchGuide guide;
-      guide.predicted = motion.position;
-      solvePoseInto(m, {sweep.inputAngle[j], 1.0, 0.0}, SolveRequest{true, false}, rates, guide);
-    }
-    torque[j] = virtualWork(m, d, motion, rates).generalizedForce();
-  }
-  return torque;
+  return CrankVirtualWork(m, d, tip, std::get<CrankPoint>(m.points[tip.index].definition).pivot);
+}
+
+CrankVirtualWork::CrankVirtualWork(const Mechanism& m, const LinkageDynamics& d, PointId tip, PointId pivot)
+    : m_mechanism(&m), m_dynamics(&d), m_tip(tip), m_pivot(pivot) {
+  preparePose(m, m_rates);
+}
+
+double CrankVirtualWork::torque(const Pose& motion, double inputAngle) {
+  const Eigen::Vector2d arm = motion.position[m_tip.index] - motion.position[m_pivot.index];
+  const double rate = cross(arm, motion.velocity[m_tip.index] - motion.velocity[m_pivot.index]) / arm.squaredNorm();
+  if (rate != 0.0) return scaledVirtualWork(*m_mechanism, *m_dynamics, motion, motion, 1.0 / rate).generalizedForce();
+  BranchGuide guide;
+  guide.predicted = motion.position;
+  solvePoseInto(*m_mechanism, {inputAngle, 1.0, 0.0}, SolveRequest{true, false}, m_rates, guide);
+  return virtualWork(*m_mechanism, *m_dynamics, motion, m_rates).generalizedForce();
 }
 
 }  // namespace linkwright::kinematics

@@ -11,14 +11,10 @@
 // v_G = v_A + ω (G − A)⊥, a_G = a_A + α (G − A)⊥ − ω² (G − A) from its link's first point A; a
 // slider block's mass sits at its pin and turns with the body it slides on.
 
-#include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/model/result.h"
 #include "kinematics/solve/pose.h"
-#include "kinematics/solve/sweep.h"
-
-#include <vector>
 
 namespace linkwright::kinematics {
 
@@ -40,10 +36,27 @@ struct VirtualWork {
 VirtualWork virtualWork(const Mechanism& mechanism, const LinkageDynamics& dynamics, const Pose& motion,
                         const Pose& rates);
 
-/// A crank's driving torque by virtual work (N·m) at every sample of `sweep` (which must hold
-/// accelerations) where `forces` (solved on it) is Ok; 0 elsewhere. Error naming "driver" for
-/// a linkage not driven by a crank, or a two-link arm (two joint torques, not one).
-Result<std::vector<double>> virtualWorkTorques(const Mechanism& mechanism, const LinkageDynamics& dynamics,
-                                               const SweepResult& sweep, const ForceSweep& forces);
+/// A crank's driving torque by virtual work, sample by sample: the model's names resolved once,
+/// so sweepForces can give it beside the Newton–Euler torque at every sample
+/// (ForceSweep::virtualWorkTorque) for the cost of a sum over the masses and loads.
+class CrankVirtualWork {
+public:
+  /// Error naming "driver" for a linkage not driven by a crank. The mechanism and dynamics must
+  /// have passed checkMechanism and checkDynamics, with a known length unit; both must outlive
+  /// this object.
+  static Result<CrankVirtualWork> create(const Mechanism& mechanism, const LinkageDynamics& dynamics);
+
+  /// The driving torque (N·m) at `motion`, an assembled pose with velocities and accelerations
+  /// at crank angle `inputAngle` (rad). The velocities per unit crank rate are the pose's own
+  /// divided by its rate, or solved afresh at rate 1 on the same branches when the crank is at rest.
+  double torque(const Pose& motion, double inputAngle);
+
+private:
+  CrankVirtualWork(const Mechanism& mechanism, const LinkageDynamics& dynamics, PointId tip, PointId pivot);
+  const Mechanism* m_mechanism;
+  const LinkageDynamics* m_dynamics;
+  PointId m_tip, m_pivot;
+  Pose m_rates;  ///< scratch for the unit-rate solve at rest
+};
 
 }  // namespace linkwright::kinematics

@@ -137,13 +137,17 @@ Result<ReportTable> forcesTable(const Mechanism& m, const LinkageDynamics& dynam
   return table;
 }
 
-// Where the shaking force and moment peak over the fine sweep, for the forces' caption.
-Result<std::string> shakingPeaks(const Mechanism& m, const LinkageDynamics& dynamics, const SweepResult& fine) {
+// Where the shaking force and moment peak over the fine sweep, and for a crank how far the
+// driving torque by virtual work is from Newton–Euler's, for the forces' caption.
+Result<std::string> forcesOverCycle(const Mechanism& m, const LinkageDynamics& dynamics, const SweepResult& fine) {
   auto forces = sweepForces(m, dynamics, fine);
   if (!forces) return Error{forces.error().code, "dynamics", "the forces: " + forces.error().message};
   std::optional<std::size_t> force, moment;
+  double torquePeak = 0.0, torqueDifference = 0.0;
   for (std::size_t j = 0; j < forces->size(); ++j) {
     if (!forces->ok(j)) continue;
+    torquePeak = std::max(torquePeak, std::abs(forces->driveTorque[j]));
+    torqueDifference = std::max(torqueDifference, std::abs(forces->driveTorque[j] - forces->virtualWorkTorque[j]));
     if (!force || forces->shakingForce[j].norm() > forces->shakingForce[*force].norm()) force = j;
     if (!moment || std::abs(forces->shakingMoment[j]) > std::abs(forces->shakingMoment[*moment])) moment = j;
   }
@@ -153,9 +157,15 @@ Result<std::string> shakingPeaks(const Mechanism& m, const LinkageDynamics& dyna
     return fine.time.empty() ? formatShort(inputDisplayValue(m, fine.inputAngle[j])) + (unit == "°" ? unit : " " + unit)
                              : formatShort(fine.time[j]) + " s";
   };
-  return " Over the cycle's " + std::to_string(fine.size()) + " samples the shaking force peaks at " +
-         formatShort(forces->shakingForce[*force].norm(), 4) + " N (at " + at(*force) + ") and the shaking moment at " +
-         formatShort(forces->shakingMoment[*moment], 4) + " N·m (at " + at(*moment) + ").";
+  std::string text = " Over the cycle's " + std::to_string(fine.size()) + " samples the shaking force peaks at " +
+                     formatShort(forces->shakingForce[*force].norm(), 4) + " N (at " + at(*force) +
+                     ") and the shaking moment at " + formatShort(forces->shakingMoment[*moment], 4) + " N·m (at " +
+                     at(*moment) + ").";
+  if (forces->bodies.drive.kind == DriveKind::Crank && torquePeak > 0.0)
+    text += " The driving torque by virtual work differs from Newton–Euler's by at most " +
+            formatShort(torqueDifference, 2) + " N·m (" + formatShort(torqueDifference / torquePeak, 2) +
+            " of its peak).";
+  return text;
 }
 
 // The span the table runs over: the grid's inputs, or its time base's times.
@@ -248,7 +258,7 @@ Result<ReportContent> buildReport(const Mechanism& m, const LinkageDynamics& dyn
     auto forces = forcesTable(m, dynamics, *table, columns.front());
     if (!forces) return forces.error();
     report.forces = std::move(*forces);
-    const auto peaks = shakingPeaks(m, dynamics, *fine);
+    const auto peaks = forcesOverCycle(m, dynamics, *fine);
     if (!peaks) return peaks.error();
     report.forcesCaption =
         "Joint force sizes, driving torque or force, shaking force (N, N·m), at the table's inputs." + *peaks;

@@ -58,10 +58,25 @@ TEST_CASE("analyze --forces appends the force columns with their units", "[cli][
   const auto rows = lines(r.out);
   REQUIRE(rows.size() == 14);  // header and 0°, 30°, …, 360°
   const auto header = split(rows[0], ',');
-  const std::vector<std::string> forceNames{
-      "F_O2_x_N",   "F_O2_y_N",    "F_O2_N",      "F_O4_x_N",  "F_O4_y_N",         "F_O4_N",
-      "F_B_x_N",    "F_B_y_N",     "F_B_N",       "F_C_x_N",   "F_C_y_N",          "F_C_N",
-      "T_drive_Nm", "shaking_x_N", "shaking_y_N", "shaking_N", "shaking_moment_Nm"};
+  const std::vector<std::string> forceNames{"F_O2_x_N",
+                                            "F_O2_y_N",
+                                            "F_O2_N",
+                                            "F_O4_x_N",
+                                            "F_O4_y_N",
+                                            "F_O4_N",
+                                            "F_B_x_N",
+                                            "F_B_y_N",
+                                            "F_B_N",
+                                            "F_C_x_N",
+                                            "F_C_y_N",
+                                            "F_C_N",
+                                            "T_drive_Nm",
+                                            "T_drive_virtual_work_Nm",
+                                            "T_drive_difference_Nm",
+                                            "shaking_x_N",
+                                            "shaking_y_N",
+                                            "shaking_N",
+                                            "shaking_moment_Nm"};
   REQUIRE(header.size() > forceNames.size());
   CHECK(std::vector<std::string>(header.end() - static_cast<std::ptrdiff_t>(forceNames.size()), header.end()) ==
         forceNames);
@@ -74,9 +89,17 @@ TEST_CASE("analyze --forces appends the force columns with their units", "[cli][
   const auto s = sweep(m, {0.0, degToRad(360.0), 13, example.omega, 0.0}).value();
   const auto f = sweepForces(m, example.dynamics, s).value();
   const std::size_t torque = columnOf(header, "T_drive_Nm");
+  const std::size_t byVirtualWork = columnOf(header, "T_drive_virtual_work_Nm");
+  const std::size_t difference = columnOf(header, "T_drive_difference_Nm");
+  double peak = 0.0;
+  for (const double t : f.driveTorque) peak = std::max(peak, std::abs(t));
   for (std::size_t j = 0; j < 13; ++j) {
     CAPTURE(j);
-    CHECK(std::stod(split(rows[j + 1], ',')[torque]) == f.driveTorque[j]);
+    const auto cells = split(rows[j + 1], ',');
+    CHECK(std::stod(cells[torque]) == f.driveTorque[j]);
+    // Virtual work beside it, and their difference at round-off.
+    CHECK(std::stod(cells[byVirtualWork]) == f.virtualWorkTorque[j]);
+    CHECK(std::abs(std::stod(cells[difference])) <= 1e-9 * peak);
   }
 }
 

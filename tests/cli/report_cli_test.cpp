@@ -299,6 +299,13 @@ TEST_CASE("report shows the forces of a linkage with masses", "[cli][report]") {
     if (!(std::isspace(static_cast<unsigned char>(c)) && (flat.empty() || flat.back() == ' ')))
       flat += std::isspace(static_cast<unsigned char>(c)) ? ' ' : c;
   CHECK_THAT(flat, Catch::Contains("the shaking force peaks at " + k::formatShort(peak, 4) + " N"));
+  // The virtual-work check over the same grid, at round-off.
+  const std::string check = "by virtual work differs from Newton–Euler's by at most ";
+  const std::size_t at = flat.find(check);
+  REQUIRE(at != std::string::npos);
+  double torquePeak = 0.0;
+  for (const double t : all.driveTorque) torquePeak = std::max(torquePeak, std::abs(t));
+  CHECK(std::stod(flat.substr(at + check.size())) <= 1e-9 * torquePeak);
   fs::remove_all(dir);
 }
 
