@@ -78,6 +78,7 @@ void printJson(std::ostream& out, const k::MachineDuty& d, const k::DutyOptions&
     json["cs"] = *o.speedFluctuation;
     json["flywheel_inertia_kg_m2"] = *d.flywheelInertia;
     json["textbook_flywheel_inertia_kg_m2"] = *d.textbookFlywheelInertia;
+    json["cs_by_forward_dynamics"] = d.flywheelRun->speedFluctuation;
   }
   json["shaking_force_peak_N"] = d.shakingForcePeak;
   json["shaking_moment_peak_Nm"] = d.shakingMomentPeak;
@@ -104,7 +105,10 @@ void printText(std::ostream& out, const k::MachineDuty& d, const k::DutyOptions&
   if (d.flywheelInertia)
     out << "flywheel            " << n(*d.flywheelInertia) << " kg·m² on the crank shaft for Cs "
         << n(*o.speedFluctuation) << " (the linkage's own inertia counted; the textbook ΔE/(Cs ω²) gives "
-        << n(*d.textbookFlywheelInertia) << " kg·m²)\n";
+        << n(*d.textbookFlywheelInertia) << " kg·m²)\n"
+        << "forward dynamics    a turn run in time with that flywheel and the mean torque: the speed varies by Cs "
+        << n(d.flywheelRun->speedFluctuation) << " between " << n(k::radPerSecToRpm(d.flywheelRun->slowest()))
+        << " and " << n(k::radPerSecToRpm(d.flywheelRun->fastest())) << " rpm\n";
   out << "frame               shaking force peak " << n(d.shakingForcePeak) << " N, shaking moment peak "
       << n(d.shakingMomentPeak) << " N·m (about the crank's pivot); bearing load peak " << n(d.bearingLoadPeak)
       << " N\n";

@@ -70,6 +70,19 @@ double speedFluctuation(const std::vector<double>& speeds) {
   return (*high - *low) / std::abs(mid);
 }
 
+double FlywheelRun::slowest() const {
+  if (speed.empty()) return 0.0;
+  double least = std::abs(speed.front());
+  for (const double v : speed) least = std::min(least, std::abs(v));
+  return least;
+}
+
+double FlywheelRun::fastest() const {
+  double most = 0.0;
+  for (const double v : speed) most = std::max(most, std::abs(v));
+  return most;
+}
+
 std::optional<Error> checkSpeedFluctuation(double cs) {
   if (cs > 0.0 && cs < 1.0) return std::nullopt;
   return Error{

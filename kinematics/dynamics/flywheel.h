@@ -29,6 +29,8 @@ struct FlywheelRun {
   std::vector<double> speed;      ///< rad/s, the crank's
   double meanSpeed = 0.0;         ///< rad/s, (ω_max + ω_min)/2, signed as ω
   double speedFluctuation = 0.0;  ///< Cs = (ω_max − ω_min)/|mean speed|, as run
+  double slowest() const;         ///< rad/s, the least |speed| of the run
+  double fastest() const;         ///< rad/s, the largest |speed| of the run
 };
 
 /// Error naming "cs" unless 0 < `cs` < 1.

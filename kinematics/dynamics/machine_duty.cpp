@@ -118,6 +118,9 @@ Result<MachineDuty> machineDuty(const Mechanism& mechanism, const LinkageDynamic
     const auto flywheel = sizeFlywheel(*terms, *options.speedFluctuation);
     if (!flywheel) return flywheel.error();
     d.flywheelInertia = *flywheel;
+    auto run = runFlywheel(*terms, *flywheel);
+    if (!run) return run.error();
+    d.flywheelRun = std::move(*run);
   }
   for (std::size_t j = 0; j < forces->size(); ++j) {
     d.virtualWorkDifference =

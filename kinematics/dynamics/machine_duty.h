@@ -12,7 +12,7 @@
 //     ΔE = ½ I (ω_max² − ω_min²) = I ω² Cs, Cs = (ω_max − ω_min)/ω, ω = (ω_max + ω_min)/2, so
 //     I = ΔE / (Cs ω²), the textbook flywheel. It neglects the linkage's own inertia beside the
 //     flywheel's; flywheel.h sizes it with both by the energy equation, which is what Linkwright
-//     gives as the flywheel, and checks that by forward dynamics.
+//     gives as the flywheel, and checks that by forward dynamics (the run is returned).
 //   Integrals by the trapezoidal rule over the turn's samples (the grid's last sample closes the
 //     turn: it is the first one again).
 //   Motor and gearbox, ratio N (motor turns per crank turn) and efficiency η: the motor turns at
@@ -25,6 +25,7 @@
 //   the largest force through any pin joint, the bearing load a balance trades against.
 
 #include "kinematics/dynamics/crank_terms.h"
+#include "kinematics/dynamics/flywheel.h"
 #include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/model/result.h"
@@ -74,8 +75,11 @@ struct MachineDuty {
   /// inertia counted (flywheel.h)
   std::optional<double> flywheelInertia;
   std::optional<double> textbookFlywheelInertia;  ///< kg·m², ΔE/(Cs ω²), with Cs given
-  double shakingForcePeak = 0.0;                  ///< N
-  double shakingMomentPeak = 0.0;                 ///< N·m
+  /// One turn with that flywheel and the mean torque, integrated in time (flywheel.h): the
+  /// check that the speed varies by Cs; with Cs given
+  std::optional<FlywheelRun> flywheelRun;
+  double shakingForcePeak = 0.0;   ///< N
+  double shakingMomentPeak = 0.0;  ///< N·m
   /// N·m, the largest |T by virtual work − T by Newton–Euler| over the turn (virtual_work.h):
   /// round-off when both are right
   double virtualWorkDifference = 0.0;

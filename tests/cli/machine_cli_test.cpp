@@ -77,6 +77,8 @@ TEST_CASE("machine --json gives the turn's duty in SI units", "[cli][machine]") 
   CHECK(json["flywheel_inertia_kg_m2"].get<double>() < json["textbook_flywheel_inertia_kg_m2"].get<double>());
   CHECK(json["textbook_flywheel_inertia_kg_m2"].get<double>() ==
         Approx(json["energy_fluctuation_J"].get<double>() / (0.05 * 100.0 * 100.0)));
+  // The forward-dynamics check: the speed varies by the Cs asked, within 2 %.
+  CHECK(json["cs_by_forward_dynamics"].get<double>() == Approx(0.05).epsilon(0.02));
 }
 
 TEST_CASE("machine prints its figures for reading, with a motor verdict", "[cli][machine]") {
@@ -87,6 +89,12 @@ TEST_CASE("machine prints its figures for reading, with a motor verdict", "[cli]
   CHECK(r.out.find("one crank turn at 100 rad/s (954.93 rpm), 73 samples") != std::string::npos);
   CHECK(r.out.find("driving torque      mean 0 N·m, RMS ") != std::string::npos);
   CHECK(r.out.find("kg·m² on the crank shaft for Cs 0.02") != std::string::npos);
+  const std::string run =
+      "forward dynamics    a turn run in time with that flywheel and the mean torque: the speed "
+      "varies by Cs ";
+  const std::size_t at = r.out.find(run);
+  REQUIRE(at != std::string::npos);
+  CHECK(std::stod(r.out.substr(at + run.size())) == Approx(0.02).epsilon(0.02));
   CHECK(r.out.find("motor verdict       too weak: RMS torque") != std::string::npos);
   CHECK(r.out.find("nan") == std::string::npos);
 }

@@ -8,6 +8,7 @@
 #include "ui/plots/chart_colors.h"
 #include "ui/plots/chart_scale.h"
 #include "ui/plots/force_chart_view.h"
+#include "ui/plots/machine_page.h"
 #include "ui/plots/plot_area_alignment.h"
 #include "ui/plots/plot_panel.h"
 #include "ui/plots/plot_x_axis.h"
@@ -35,7 +36,8 @@ ForcePlotPanel::ForcePlotPanel(MechanismDocument* document, ForceResults* forces
       m_torque(new ForceChartView(tr("Driving torque"), false)), m_joints(new ForceChartView(tr("Joint forces"), true)),
       m_shaking(new ForceChartView(tr("Shaking force on the frame"), false)),
       m_shakingMoment(new ForceChartView(tr("Shaking moment"), false)), m_shakingPeaks(new QLabel),
-      m_pages(new QTabWidget), m_selector(new QComboBox), m_polar(new PolarLoadView), m_charts(new QWidget(this)) {
+      m_pages(new QTabWidget), m_selector(new QComboBox), m_polar(new PolarLoadView),
+      m_machine(new MachinePage(document)), m_charts(new QWidget(this)) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   m_settleTimer.setSingleShot(true);
@@ -87,6 +89,8 @@ ForcePlotPanel::ForcePlotPanel(MechanismDocument* document, ForceResults* forces
   pages->addTab(curves, tr("Torque and joint forces"));
   pages->addTab(shaking, tr("Shaking"));
   pages->addTab(polar, tr("Polar diagrams"));
+  pages->addTab(m_machine, tr("Flywheel and motor"));
+  connect(pages, &QTabWidget::currentChanged, this, &ForcePlotPanel::showMachinePage);
   layout->addWidget(m_charts, 1);
 
   // The two charts share the crank axis: same plot-area edges, so the cursors line up.
@@ -94,8 +98,9 @@ ForcePlotPanel::ForcePlotPanel(MechanismDocument* document, ForceResults* forces
     connect(chart, &ForceChartView::resized, this, &ForcePlotPanel::alignCharts);
   connect(m_selector, &QComboBox::currentIndexChanged, this, [this] { refreshPolar(); });
   connect(forces, &ForceResults::changed, this, [this](bool cycle) {
-    if (cycle) refreshAll();
-    else refreshCursor();
+    if (!cycle) return refreshCursor();
+    refreshAll();
+    m_machine->designChanged();
   });
   connect(document, &MechanismDocument::changed, this, [this](Changes what) {
     if (what & Change::PlotAxis) refreshAll();
@@ -106,20 +111,22 @@ ForcePlotPanel::ForcePlotPanel(MechanismDocument* document, ForceResults* forces
 void ForcePlotPanel::setAngleUnit(AngleUnit unit) {
   if (unit == m_unit) return;
   m_unit = unit;
+  m_machine->setAngleUnit(unit);
   refreshAll();
 }
 
 void ForcePlotPanel::setPresentationScale(double factor) {
-  for (QChart* chart :
-       {m_torque->chart(), m_joints->chart(), m_shaking->chart(), m_shakingMoment->chart(), m_polar->chart()})
+  for (QChart* chart : {m_torque->chart(), m_joints->chart(), m_shaking->chart(), m_shakingMoment->chart(),
+                        m_polar->chart(), m_machine->speedChart()->chart()})
     setChartScale(chart, factor);
   alignCharts();
 }
 
 void ForcePlotPanel::refreshColors() {
-  for (QChart* chart :
-       {m_torque->chart(), m_joints->chart(), m_shaking->chart(), m_shakingMoment->chart(), m_polar->chart()})
+  for (QChart* chart : {m_torque->chart(), m_joints->chart(), m_shaking->chart(), m_shakingMoment->chart(),
+                        m_polar->chart(), m_machine->speedChart()->chart()})
     applyChartColors(chart);
+  m_machine->designChanged();
   refreshAll();
 }
 
@@ -127,9 +134,12 @@ QString ForcePlotPanel::statusText() const { return m_status->text(); }
 
 QString ForcePlotPanel::shakingPeakText() const { return m_shakingPeaks->text(); }
 
+void ForcePlotPanel::showMachinePage() { m_machine->setOnScreen(m_onScreen && m_pages->currentWidget() == m_machine); }
+
 void ForcePlotPanel::setOnScreen(bool onScreen) {
   if (onScreen == m_onScreen) return;
   m_onScreen = onScreen;
+  showMachinePage();
   if (onScreen && m_stale) {
     m_stale = false;
     refreshAll();

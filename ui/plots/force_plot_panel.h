@@ -1,8 +1,8 @@
 #pragma once
 // The force plots: the driving torque and the joint reaction magnitudes against time or crank
 // angle (the document's plotAxis()); the shaking force on the frame (x, y, magnitude) and its
-// moment, with their peaks; and the polar diagram of the pin joint, or the shaking force, the
-// combo box picks. Everything comes from a ForceResults (the core's inverse dynamics on the document's
+// moment, with their peaks; the polar diagram of the pin joint, or the shaking force, the
+// combo box picks; and a turn's flywheel and motor figures (machine_page.h). Everything comes from a ForceResults (the core's inverse dynamics on the document's
 // cycle); a crank move moves the cursors and the polar dot only. When there are no forces (no masses or loads, an unknown
 // length unit) the charts hide and a line says why.
 
@@ -23,6 +23,7 @@ namespace linkwright::ui {
 
 class ForceChartView;
 class ForceResults;
+class MachinePage;
 class MechanismDocument;
 class PolarLoadView;
 
@@ -49,8 +50,9 @@ public:
   ForceChartView* shakingMomentChart() const { return m_shakingMoment; }
   /// The line under the shaking charts with the peaks and where they are.
   QString shakingPeakText() const;
-  /// The pages: curves, shaking, polar diagrams.
+  /// The pages: curves, shaking, polar diagrams, flywheel and motor.
   QTabWidget* pages() const { return m_pages; }
+  MachinePage* machinePage() const { return m_machine; }
   PolarLoadView* polarView() const { return m_polar; }
   QComboBox* jointSelector() const { return m_selector; }
   /// The line that says why there are no forces, or where they are missing.
@@ -66,6 +68,7 @@ private:
   bool shakingSelected() const;
   void alignCharts();
   void settleValueRanges();
+  void showMachinePage();
   std::optional<double> cursorX() const;
 
   MechanismDocument* m_document;
@@ -80,6 +83,7 @@ private:
   QTabWidget* m_pages;
   QComboBox* m_selector;
   PolarLoadView* m_polar;
+  MachinePage* m_machine;
   QWidget* m_charts;
   QTimer m_settleTimer;
   bool m_onScreen = true;

@@ -152,6 +152,13 @@ TEST_CASE("the funsho four-bar's flywheel, run by forward dynamics, holds the sp
     REQUIRE(run.ok());
     CHECK(run->meanSpeed == Approx(e.omega).epsilon(1e-3));
     CHECK(run->speedFluctuation == Approx(cs).epsilon(0.02));
+    // The duty carries the same run, and its range is its Cs.
+    REQUIRE(d->flywheelRun);
+    CHECK(d->flywheelRun->speed == run->speed);
+    CHECK((d->flywheelRun->fastest() - d->flywheelRun->slowest()) / std::abs(d->flywheelRun->meanSpeed) ==
+          Approx(d->flywheelRun->speedFluctuation).epsilon(1e-12));
+    CHECK(d->flywheelRun->slowest() < e.omega);
+    CHECK(d->flywheelRun->fastest() > e.omega);
     // The textbook flywheel, which neglects the linkage's inertia, misses Cs by more.
     const auto textbook = runFlywheel(t, *d->textbookFlywheelInertia);
     CHECK(std::abs(textbook->speedFluctuation - cs) > std::abs(run->speedFluctuation - cs));

@@ -60,8 +60,10 @@ void shoot(const std::string& example, double crankDeg, const QString& dir, bool
   ForcePlotPanel plots(&doc, &forces);
   save(plots, dir, tag + "_plots.png", {1000, 560});
   if (auto* tabs = plots.findChild<QTabWidget*>()) {
-    tabs->setCurrentIndex(tabs->count() - 1);  // the polar load diagrams
+    tabs->setCurrentIndex(2);  // the polar load diagrams
     save(plots, dir, tag + "_polar.png", {1000, 560});
+    tabs->setCurrentIndex(3);  // the flywheel and motor
+    save(plots, dir, tag + "_flywheel.png", {1000, 560});
   }
 
   LinkageView view(&doc);

@@ -94,6 +94,11 @@ const std::vector<View>& views() {
          QComboBox* of = w.forcePlots()->jointSelector();
          of->setCurrentIndex(of->count() - 1);
        }},
+      {"flywheel",
+       [](MainWindow& w) {
+         w.showForces();
+         w.forcePlots()->pages()->setCurrentIndex(3);
+       }},
       {"polygons", [](MainWindow& w) { viewAction(w, "Velocity and acceleration polygons")->trigger(); }},
       {"plots", showEveryPlot},
       {"ratios", showRatios},
@@ -142,6 +147,7 @@ constexpr DocImage kDocImages[] = {
     {"watt-ii.png", "watt-ii", "designer", 30.0},
     {"forces.png", "funsho-fourbar", "forces", 60.0},
     {"shaking.png", "funsho-fourbar", "shaking", 60.0},
+    {"flywheel.png", "funsho-fourbar", "flywheel", 60.0},
     {"instant_centres.png", "thesis-crank-rocker", "centres", 250.0},
     {"instant_centres_shaper.png", "shaper", "centres-ratios", 30.0},
     {"ratios.png", "thesis-crank-rocker", "ratios", 30.0},
