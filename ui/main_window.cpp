@@ -805,6 +805,8 @@ void MainWindow::balanceShakingForce() {
     showError(*why);
     return;
   }
+  // The forces from before, dashed beside the new ones until the design changes again.
+  m_forcePlots->setBefore(m_document->design(), before);
   // What the balance gained and cost over a turn, as the CLI's balance says it.
   const k::SweepSpec turn = k::designTurn(design);
   const auto was = k::machineDuty(design.mechanism, before, turn, {});
@@ -814,7 +816,7 @@ void MainWindow::balanceShakingForce() {
     return tr("%1 → %2 %3").arg(numberText(a, 'g', 4), numberText(b, 'g', 4), unit);
   };
   statusBar()->showMessage(tr("Balanced (Ctrl+Z undoes): shaking force peak %1, shaking moment peak %2, driving "
-                              "torque RMS %3, bearing load peak %4")
+                              "torque RMS %3, bearing load peak %4; the Forces tab shows before dashed")
                                .arg(change(was->shakingForcePeak, is->shakingForcePeak, tr("N")),
                                     change(was->shakingMomentPeak, is->shakingMomentPeak, tr("N·m")),
                                     change(was->rmsTorque, is->rmsTorque, tr("N·m")),

@@ -162,14 +162,22 @@ void ForcePlotPanel::refreshAll() {
 
   const PlotXAxis x = plotXAxis(m_document->design(), *sweep, m_document->plotAxis(), m_unit);
   m_x = x;
+  const k::ForceSweep* before = beforeForces();
   const DriveChart drive = driveChart(cycle->bodies);
   std::vector<ForceChartView::Curve> driveCurves;
   for (std::size_t i = 0; i < drive.curves.size(); ++i)
     driveCurves.push_back({QStringLiteral("drive_%1").arg(i), drive.curves[i], i == 0 ? linkColor(0) : linkColor(1)});
+  const std::size_t driven = driveCurves.size();
+  if (before != nullptr)
+    for (std::size_t i = 0; i < driven; ++i)
+      driveCurves.push_back({QStringLiteral("drive_%1_before").arg(i), tr("%1 before balancing").arg(drive.curves[i]),
+                             driveCurves[i].color, Qt::DashLine});
   m_torque->setCurves(driveCurves);
   if (m_torque->chart()->title() != drive.title) m_torque->chart()->setTitle(drive.title);
-  m_runs.resize(drive.curves.size());
-  for (std::size_t i = 0; i < drive.curves.size(); ++i) buildDriveRuns(*sweep, *cycle, i, m_unit, m_runs[i], x.source);
+  m_runs.resize(driveCurves.size());
+  for (std::size_t i = 0; i < driven; ++i) buildDriveRuns(*sweep, *cycle, i, m_unit, m_runs[i], x.source);
+  if (before != nullptr)
+    for (std::size_t i = 0; i < driven; ++i) buildDriveRuns(*sweep, *before, i, m_unit, m_runs[driven + i], x.source);
   // Data that came before the last ones settled are a drag's, or an animation's.
   const DataFlow flow = m_settleTimer.isActive() ? DataFlow::Changing : DataFlow::Settled;
   bool relayout = m_torque->setData(m_runs, drive.valueTitle, x, flow);
@@ -178,10 +186,16 @@ void ForcePlotPanel::refreshAll() {
   std::vector<ForceChartView::Curve> curves;
   for (const ForceJoint& j : joints)
     curves.push_back({QStringLiteral("joint_") + j.name, j.prismatic ? tr("%1 |N|").arg(j.name) : j.name, j.color});
+  if (before != nullptr)
+    for (std::size_t i = 0; i < joints.size(); ++i)
+      curves.push_back({curves[i].key + QStringLiteral("_before"), tr("%1 before").arg(curves[i].name), curves[i].color,
+                        Qt::DashLine});
   m_joints->setCurves(curves);
-  m_runs.resize(joints.size());
-  for (std::size_t i = 0; i < joints.size(); ++i)
+  m_runs.resize(curves.size());
+  for (std::size_t i = 0; i < joints.size(); ++i) {
     buildJointForceRuns(*sweep, *cycle, joints[i], m_unit, m_runs[i], x.source);
+    if (before != nullptr) buildJointForceRuns(*sweep, *before, joints[i], m_unit, m_runs[joints.size() + i], x.source);
+  }
   relayout |= m_joints->setData(m_runs, tr("|F| [N]"), x, flow);
   refreshShaking(x, flow, relayout);
 
@@ -204,12 +218,17 @@ void ForcePlotPanel::refreshAll() {
 void ForcePlotPanel::refreshShaking(const PlotXAxis& x, DataFlow flow, bool& relayout) {
   const k::ForceSweep& cycle = *m_forces->cycleForces();
   const k::SweepResult& sweep = *m_forces->cycleSweep();
-  m_shaking->setCurves({{QStringLiteral("shaking_x"), tr("Fx"), linkColor(0)},
-                        {QStringLiteral("shaking_y"), tr("Fy"), linkColor(1)},
-                        {QStringLiteral("shaking"), tr("|F|"), linkColor(2)}});
-  m_runs.resize(3);
+  const k::ForceSweep* before = beforeForces();
+  std::vector<ForceChartView::Curve> shaking{{QStringLiteral("shaking_x"), tr("Fx"), linkColor(0)},
+                                             {QStringLiteral("shaking_y"), tr("Fy"), linkColor(1)},
+                                             {QStringLiteral("shaking"), tr("|F|"), linkColor(2)}};
+  if (before != nullptr)
+    shaking.push_back({QStringLiteral("shaking_before"), tr("|F| before balancing"), linkColor(2), Qt::DashLine});
+  m_shaking->setCurves(shaking);
+  m_runs.resize(shaking.size());
   for (const auto& [i, curve] : {std::pair{0, ShakingCurve::X}, {1, ShakingCurve::Y}, {2, ShakingCurve::Magnitude}})
     buildShakingForceRuns(sweep, cycle, curve, m_unit, m_runs[static_cast<std::size_t>(i)], x.source);
+  if (before != nullptr) buildShakingForceRuns(sweep, *before, ShakingCurve::Magnitude, m_unit, m_runs[3], x.source);
   relayout |= m_shaking->setData(m_runs, tr("force [N]"), x, flow);
 
   const k::Mechanism& m = m_document->design().mechanism;
@@ -219,9 +238,13 @@ void ForcePlotPanel::refreshShaking(const PlotXAxis& x, DataFlow flow, bool& rel
                             : tr("about the origin");
   const QString title = tr("Shaking moment %1").arg(about);
   if (m_shakingMoment->chart()->title() != title) m_shakingMoment->chart()->setTitle(title);
-  m_shakingMoment->setCurves({{QStringLiteral("shaking_moment"), tr("M"), linkColor(3)}});
-  m_runs.resize(1);
+  std::vector<ForceChartView::Curve> moment{{QStringLiteral("shaking_moment"), tr("M"), linkColor(3)}};
+  if (before != nullptr)
+    moment.push_back({QStringLiteral("shaking_moment_before"), tr("M before balancing"), linkColor(3), Qt::DashLine});
+  m_shakingMoment->setCurves(moment);
+  m_runs.resize(moment.size());
   buildShakingMomentRuns(sweep, cycle, m_unit, m_runs[0], x.source);
+  if (before != nullptr) buildShakingMomentRuns(sweep, *before, m_unit, m_runs[1], x.source);
   relayout |= m_shakingMoment->setData(m_runs, tr("moment [N·m]"), x, flow);
 
   const ShakingPeaks peaks = shakingPeaks(cycle);
@@ -232,6 +255,35 @@ void ForcePlotPanel::refreshShaking(const PlotXAxis& x, DataFlow flow, bool& rel
                                          numberText(peaks.moment, 'g', 4), about,
                                          xReadoutText(sampleX(sweep, peaks.momentSample, x.source, m_unit), x, m_unit))
                               : tr("No sample of the cycle has its forces solved."));
+  if (before != nullptr && peaks.any) {
+    const ShakingPeaks was = shakingPeaks(*before);
+    m_shakingPeaks->setText(m_shakingPeaks->text() +
+                            tr(" Before balancing (dashed): %1 N and %2 N·m.")
+                                .arg(numberText(was.force, 'g', 4), numberText(was.moment, 'g', 4)));
+  }
+}
+
+void ForcePlotPanel::setBefore(const k::Design& after, const k::LinkageDynamics& before) {
+  m_before = Before{after, before, std::nullopt};
+  refreshAll();
+}
+
+const k::ForceSweep* ForcePlotPanel::beforeForces() {
+  if (!m_before) return nullptr;
+  // Only beside the design the balance made: any other design, an undo included, drops them.
+  if (m_before->after != m_document->design()) {
+    m_before.reset();
+    return nullptr;
+  }
+  if (!m_before->forces) {
+    auto forces = k::sweepForces(m_before->after.mechanism, m_before->dynamics, *m_forces->cycleSweep());
+    if (!forces) {
+      m_before.reset();
+      return nullptr;
+    }
+    m_before->forces = std::move(*forces);
+  }
+  return &*m_before->forces;
 }
 
 bool ForcePlotPanel::shakingSelected() const { return m_selector->currentIndex() == m_selector->count() - 1; }

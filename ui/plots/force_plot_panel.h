@@ -10,9 +10,13 @@
 #include "ui/plots/force_series.h"
 #include "ui/plots/plot_x_axis.h"
 
+#include "kinematics/design/design.h"
+#include "kinematics/dynamics/force_sweep.h"
+
 #include <QTimer>
 #include <QWidget>
 
+#include <optional>
 #include <vector>
 
 class QComboBox;
@@ -33,6 +37,13 @@ public:
   /// Reads `forces` (solved from `document`); both must outlive the panel. It does not enable
   /// `forces`: whoever shows the panel does.
   ForcePlotPanel(MechanismDocument* document, ForceResults* forces, QWidget* parent = nullptr);
+
+  /// Draws, dashed beside the curves, those of the same linkage with the dynamics `before` (the
+  /// driving torque, each joint's force, the shaking force and moment, "before balancing"), for
+  /// as long as the document's design is `after`: any other edit or an undo drops them.
+  void setBefore(const kinematics::Design& after, const kinematics::LinkageDynamics& before);
+  /// Whether the curves from before are drawn.
+  bool showsBefore() const { return m_before.has_value() && m_before->forces.has_value(); }
 
   /// Unit of the crank-angle axis (when the plots show the input). Degrees by default.
   void setAngleUnit(AngleUnit unit);
@@ -89,6 +100,14 @@ private:
   bool m_onScreen = true;
   bool m_stale =
       false;  // a change came while off screen: refreshAll when back  // the value axes fit the data once they stay put (PlotPanel's too)
+  // The design a balance made, the dynamics it had before, and their forces on its cycle.
+  struct Before {
+    kinematics::Design after;
+    kinematics::LinkageDynamics dynamics;
+    std::optional<kinematics::ForceSweep> forces;
+  };
+  const kinematics::ForceSweep* beforeForces();
+  std::optional<Before> m_before;
   std::vector<ForceJoint> m_jointList;
   std::vector<SeriesRuns> m_runs;  // reused between updates
   PlotXAxis m_x;                   // of the last refreshAll

@@ -22,7 +22,9 @@ SegmentedLine::SegmentedLine(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis
     : m_chart(chart), m_xAxis(xAxis), m_yAxis(yAxis), m_style(std::move(style)), m_legendEntry(new QLineSeries) {
   m_legendEntry->setObjectName(m_style.key);
   m_legendEntry->setName(m_style.name);
-  m_legendEntry->setPen(QPen(m_style.color, scaledPenWidth(m_chart, kCurveWidth)));
+  QPen pen(m_style.color, scaledPenWidth(m_chart, kCurveWidth));
+  pen.setStyle(m_style.dash);
+  m_legendEntry->setPen(pen);
   m_chart->addSeries(m_legendEntry);
   m_legendEntry->attachAxis(m_xAxis);
   m_legendEntry->attachAxis(m_yAxis);

@@ -29,6 +29,7 @@ public:
     QString key;
     QString name;
     QColor color;
+    Qt::PenStyle dash = Qt::SolidLine;  ///< dashed for a curve shown for comparison
     bool operator==(const Style&) const = default;
   };
 

@@ -94,6 +94,17 @@ const std::vector<View>& views() {
          QComboBox* of = w.forcePlots()->jointSelector();
          of->setCurrentIndex(of->count() - 1);
        }},
+      {"balanced",
+       [](MainWindow& w) {
+         w.showForces();
+         w.balanceAction()->trigger();
+         w.forcePlots()->pages()->setCurrentIndex(1);
+       }},
+      {"balanced-forces",
+       [](MainWindow& w) {
+         w.showForces();
+         w.balanceAction()->trigger();
+       }},
       {"flywheel",
        [](MainWindow& w) {
          w.showForces();
@@ -148,6 +159,8 @@ constexpr DocImage kDocImages[] = {
     {"forces.png", "funsho-fourbar", "forces", 60.0},
     {"shaking.png", "funsho-fourbar", "shaking", 60.0},
     {"flywheel.png", "funsho-fourbar", "flywheel", 60.0},
+    {"balanced.png", "funsho-fourbar", "balanced", 60.0},
+    {"balanced_forces.png", "funsho-fourbar", "balanced-forces", 60.0},
     {"instant_centres.png", "thesis-crank-rocker", "centres", 250.0},
     {"instant_centres_shaper.png", "shaper", "centres-ratios", 30.0},
     {"ratios.png", "thesis-crank-rocker", "ratios", 30.0},

@@ -113,6 +113,22 @@ TEST_CASE("balance a four-bar's shaking force from the Edit menu, see it gone, u
   for (const QPointF& p : forces->shakingChart()->samples(2)) peak = std::max(peak, p.y());
   CHECK(peak <= 1e-9 * 179.4);
   checkShakingCurve(window);
+  // Before and after: the dashed curves are the unbalanced design's, solved afresh.
+  REQUIRE(forces->showsBefore());
+  const QList<QPointF> was = forces->shakingChart()->samples(3);
+  REQUIRE(was.size() > 100);
+  double wasPeak = 0.0;
+  for (const QPointF& p : was) wasPeak = std::max(wasPeak, p.y());
+  CHECK(wasPeak == Approx(179.4).epsilon(1e-3));
+  for (const QPointF& p : {was.front(), was[was.size() / 3]}) {
+    const auto pose =
+        kinematics::solvePose(before.mechanism, {kinematics::degToRad(p.x()), before.omega, before.alpha});
+    const auto unbalanced = kinematics::forcesAtPose(before.mechanism, before.dynamics, *pose);
+    CHECK(p.y() == Approx(unbalanced->shakingForce.norm()).epsilon(1e-9));
+  }
+  CHECK(forces->shakingPeakText().contains("Before balancing (dashed): 179.4 N"));
+  CHECK(forces->torqueChart()->samples(1).size() == forces->torqueChart()->samples(0).size());
+  CHECK(forces->shakingMomentChart()->samples(1).size() > 100);
   CHECK(window.document()->design().dynamics.links.size() == 3);  // counterweights joined to their links
   CHECK_FALSE(window.balanceAction()->isEnabled());               // nothing left to balance
   journey.check("Edit ▸ Balance the shaking force");
@@ -120,6 +136,10 @@ TEST_CASE("balance a four-bar's shaking force from the Edit menu, see it gone, u
   journey.key(Qt::Key_Z, Qt::ControlModifier);
   CHECK(window.document()->design() == before);
   CHECK(forces->shakingPeakText().startsWith("Peak shaking force 179.4 N"));
+  // Nothing from the balanced design is left: no dashed curves, no "before" in the peaks.
+  CHECK_FALSE(forces->showsBefore());
+  CHECK_FALSE(forces->shakingPeakText().contains("Before"));
+  CHECK(forces->shakingChart()->samples(3).isEmpty());
   checkShakingCurve(window);
   CHECK(window.balanceAction()->isEnabled());
   journey.check("Ctrl+Z");
