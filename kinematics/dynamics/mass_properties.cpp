@@ -153,4 +153,12 @@ std::optional<Error> checkDynamics(const Mechanism& m, const LinkageDynamics& d)
   return std::nullopt;
 }
 
+Eigen::Vector2d massCentreAt(const LinkMass& mass, const Eigen::Vector2d& first, const Eigen::Vector2d& second) {
+  const Eigen::Vector2d e = second - first;
+  const double length = e.norm();
+  if (!mass.centre || length == 0.0) return first + 0.5 * e;
+  const Eigen::Vector2d u = e / length;
+  return first + mass.centre->along * u + mass.centre->across * Eigen::Vector2d(-u.y(), u.x());
+}
+
 }  // namespace linkwright::kinematics

@@ -40,6 +40,10 @@ struct LinkMass {
   bool operator==(const LinkMass&) const = default;
 };
 
+/// Where `mass`'s centre of mass is (length unit, world frame) on a link from `first` to `second`
+/// (its joints' positions): its centre in the link's frame, or the midpoint by default.
+Eigen::Vector2d massCentreAt(const LinkMass& mass, const Eigen::Vector2d& first, const Eigen::Vector2d& second);
+
 /// Mass of one slider block, whose centre of mass is its pin.
 struct SliderMass {
   std::string point;     ///< the slider's defining point (an rrp, rpr or prp point), by name

@@ -1,5 +1,6 @@
 #include "ui/canvas/linkage_scene.h"
 
+#include "ui/canvas/mass_centres_item.h"
 #include "ui/canvas/springs_item.h"
 
 #include "ui/number_text.h"
@@ -41,7 +42,7 @@ QString formatMagnitude(double value) {
 
 LinkageScene::LinkageScene(QObject* parent)
     : QGraphicsScene(parent), m_range(new FeasibleRangeItem), m_centres(new InstantCentresItem),
-      m_springs(new SpringsItem), m_message(new LabelItem) {
+      m_springs(new SpringsItem), m_massCentres(new MassCentresItem), m_message(new LabelItem) {
   setBackgroundBrush(colors().canvasBackground);
   // The links and labels move on every frame of a drag, and Qt rebuilds its BSP index for
   // each move; a plain search serves a few dozen items as fast (Qt's advice for moving scenes).
@@ -50,6 +51,7 @@ LinkageScene::LinkageScene(QObject* parent)
   addItem(m_centres);
   m_centres->setVisible(false);
   addItem(m_springs);
+  addItem(m_massCentres);
   addItem(m_message);
   m_message->setBoxed(true);
   m_message->setMaximumWidth(kMessageWidthPx);
@@ -85,6 +87,7 @@ void LinkageScene::updateDesign(const MechanismDocument& document) {
   if (const QRectF extra = m_items->extraExtent(); !extra.isNull()) m_bounds = m_bounds.united(extra);
   computeArrowScales(document);
   m_springs->setSprings(m, document.design().dynamics.loads.springs, 0.04 * linkageSize());
+  m_massCentres->setMasses(m, document.design().dynamics.links, 0.025 * linkageSize());
   if (m_centres->isVisible()) m_centres->setCentrodes(document.centrodes());
   const double margin = 0.1 * linkageSize();
   setSceneRect(m_bounds.adjusted(-margin, -margin, margin, margin));  // what an export shows
@@ -164,6 +167,7 @@ void LinkageScene::computeArrowScales(const MechanismDocument& document) {
 void LinkageScene::updatePose(const MechanismDocument& document) {
   m_items->setPose(document.mechanism(), document.pose());
   m_springs->setPose(document.pose());
+  m_massCentres->setPose(document.pose());
   if (m_centres->isVisible()) m_centres->setCentres(document.centresAtPose());
   updateArrows(document);
 }
@@ -201,6 +205,7 @@ void LinkageScene::setPresentationScale(double factor) {
   m_range->setPresentationScale(factor);
   m_centres->setPresentationScale(factor);
   m_springs->setPresentationScale(factor);
+  m_massCentres->setPresentationScale(factor);
   m_message->setScale(factor);
   for (auto* arrows : {&m_velocityArrows, &m_accelerationArrows})
     for (ArrowItem* arrow : *arrows)

@@ -24,6 +24,7 @@ class QGraphicsPolygonItem;
 
 namespace linkwright::ui {
 
+class MassCentresItem;
 class SpringsItem;
 
 class ArrowItem;
@@ -98,6 +99,7 @@ public:
   const FeasibleRangeItem* feasibleRangeItem() const { return m_range; }
   const InstantCentresItem* instantCentresItem() const { return m_centres; }
   const SpringsItem* springsItem() const { return m_springs; }
+  const MassCentresItem* massCentresItem() const { return m_massCentres; }
   /// Arrows at every moving point; nullptr for ground pivots.
   const ArrowItem* velocityArrow(kinematics::PointId point) const;
   const ArrowItem* accelerationArrow(kinematics::PointId point) const;
@@ -120,6 +122,7 @@ private:
   FeasibleRangeItem* m_range;
   InstantCentresItem* m_centres;
   SpringsItem* m_springs;
+  MassCentresItem* m_massCentres;
   std::vector<ArrowItem*> m_velocityArrows;  // per point; null for ground pivots
   std::vector<ArrowItem*> m_accelerationArrows;
   LabelItem* m_message;

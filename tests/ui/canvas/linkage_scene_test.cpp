@@ -9,8 +9,10 @@
 #include "ui/canvas/drag_handles.h"
 #include "ui/canvas/feasible_range_item.h"
 #include "ui/canvas/link_item.h"
+#include "ui/canvas/mass_centres_item.h"
 #include "ui/canvas/springs_item.h"
 
+#include "kinematics/dynamics/force_balance.h"
 #include "kinematics/model/units.h"
 
 #include <QGraphicsPolygonItem>
@@ -193,4 +195,32 @@ TEST_CASE("a spring is drawn between its ends at the pose, and leaves with the d
   v.document.reset(*k::designForExample("funsho-fourbar"));
   CHECK_FALSE(springs->isVisible());
   CHECK(springs->path().isEmpty());
+}
+
+TEST_CASE("each link's centre of mass is drawn where the core puts it, a counterweight's behind its pivot",
+          "[canvas][scene][masses]") {
+  k::Design design = *k::designForExample("funsho-fourbar");
+  design.dynamics = k::balanceShakingForce(design.mechanism, design.dynamics)->balanced;
+  ShownView v(design);
+  const auto* masses = v.scene().massCentresItem();
+  REQUIRE(masses->isVisible());
+  const auto expected = [&](std::size_t k) {
+    const k::LinkMass& mass = design.dynamics.links[k];
+    const k::Link& link = design.mechanism.links[design.mechanism.findLink(mass.link)->index];
+    const Eigen::Vector2d c = k::massCentreAt(mass, v.document.pose().position[link.first.index],
+                                              v.document.pose().position[link.second.index]);
+    return QPointF(c.x(), c.y());
+  };
+  for (const double deg : {0.0, 120.0}) {
+    v.document.setCrankAngle(k::degToRad(deg));
+    REQUIRE(masses->centres().size() == 3);
+    for (std::size_t k = 0; k < 3; ++k) CHECK(masses->centres()[k] == expected(k));
+  }
+  // The crank's counterweight puts its centre behind O2, away from B.
+  const k::PointId o2 = *design.mechanism.findPoint("O2"), b = *design.mechanism.findPoint("B");
+  const QPointF toB = v.point(b) - v.point(o2), toCentre = masses->centres()[0] - v.point(o2);
+  CHECK(QPointF::dotProduct(toB, toCentre) < 0.0);
+  v.document.reset(*k::designForExample("thesis-crank-rocker"));  // no masses
+  CHECK_FALSE(masses->isVisible());
+  CHECK(masses->centres().empty());
 }
