@@ -220,9 +220,10 @@ TEST_CASE("The thesis four-bar's cognates trace its coupler curve, and it theirs
   // angle from its frame line: μ is symmetric in coupler and rocker, so it is the original's.
   REQUIRE(set.cognates[1].worstTransmission.has_value());
   CHECK(*set.cognates[1].worstTransmission == Approx(*set.original.worstTransmission).epsilon(1e-12));
-  // Cognate 1's crank reverses where its coupler and rocker fold: μ reaches 0 there.
+  // Cognate 1's crank turns back where its coupler and rocker fold: μ reaches 0 there, at the
+  // edges of its assembly range, which its sampled swing falls short of by a little.
   REQUIRE(set.cognates[0].worstTransmission.has_value());
-  CHECK(radToDeg(*set.cognates[0].worstTransmission) < 1.0);
+  CHECK(radToDeg(*set.cognates[0].worstTransmission) < 1e-5);
   // Speeds: cognate 2's crank turns at the original crank's ω, cognate 1's at the coupler's ω3.
   CHECK(set.cognates[1].turnsWith[0] == OriginalLink::Crank);
   CHECK(set.cognates[1].crankSpeedRatioMin == 1.0);
