@@ -46,6 +46,8 @@ const std::set<std::string>& optionsOf(Command command) {
                                              "--cs",          "--gear-ratio", "--efficiency", "--rated-torque",
                                              "--rated-speed", "--json"};
   static const std::set<std::string> balance{"--example", "-o", "--output", "--fraction", "--radius", "--spring"};
+  static const std::set<std::string> cognates{"--fourbar", "--example", "--unit", "--coupler-point",
+                                              "-o",        "--output",  "--json"};
   static const std::set<std::string> none{};
   switch (command) {
   case Command::Analyze: return analyze;
@@ -61,6 +63,7 @@ const std::set<std::string>& optionsOf(Command command) {
   case Command::Compare: return compare;
   case Command::Machine: return machine;
   case Command::Balance: return balance;
+  case Command::Cognates: return cognates;
   default: return none;
   }
 }
@@ -81,6 +84,7 @@ const char* commandName(Command command) {
   case Command::Compare: return "compare";
   case Command::Machine: return "machine";
   case Command::Balance: return "balance";
+  case Command::Cognates: return "cognates";
   default: return "linkwright-cli";
   }
 }
@@ -164,6 +168,9 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
     const kinematics::FourBarLengths lengths{v[0], v[1], v[2], v[3]};
     if (auto e = kinematics::checkFourBarLengths(lengths)) return usage(option, option + ": " + e->message);
     inv.fourBar = lengths;
+  } else if (option == "--coupler-point" && inv.command == Command::Cognates && value.find(',') == std::string::npos) {
+    if (value.empty()) return usage(option, option + " needs a point's name, or U,V");
+    inv.couplerPointName = value;
   } else if (option == "--coupler-point") {
     auto list = parseList(option, value, 2, "U,V (along and across the coupler)");
     if (!list) return list.error();
@@ -319,11 +326,14 @@ std::optional<Error> checkCombination(const Invocation& inv) {
                                   " needs FILE.json or --example NAME: a linkage with its masses");
   if (inv.command == Command::Balance && !inv.outputFile)
     return usage("--output", "balance needs -o FILE.linkwright (where to write the balanced design)");
-  const bool needsMechanism = inv.command == Command::Analyze || inv.command == Command::Classify ||
-                              inv.command == Command::Extremes || inv.command == Command::Centres ||
-                              inv.command == Command::Polygon || inv.command == Command::Inversions ||
-                              inv.command == Command::Dxf || inv.command == Command::Report ||
-                              inv.command == Command::Compare || inv.command == Command::Machine;
+  if (inv.command == Command::Cognates && !inv.outputFile)
+    return usage("--output",
+                 "cognates needs -o PREFIX (the cognates are written to PREFIX-1.linkwright and PREFIX-2.linkwright)");
+  const bool needsMechanism =
+      inv.command == Command::Analyze || inv.command == Command::Classify || inv.command == Command::Extremes ||
+      inv.command == Command::Centres || inv.command == Command::Polygon || inv.command == Command::Inversions ||
+      inv.command == Command::Dxf || inv.command == Command::Report || inv.command == Command::Compare ||
+      inv.command == Command::Machine || inv.command == Command::Cognates;
   if (needsMechanism && !inv.fourBar && !inv.example && !inv.documentPath)
     return usage("--fourbar", std::string(commandName(inv.command)) +
                                   " needs FILE.json, --fourbar FRAME,CRANK,COUPLER,ROCKER or --example NAME");
@@ -344,7 +354,7 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   if (args.empty())
     return usage("COMMAND",
                  "missing command (analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, "
-                 "report, compare, machine, balance, synthesize or examples; see --help)");
+                 "report, compare, machine, balance, cognates, synthesize or examples; see --help)");
   const std::string& first = args[0];
   if (first == "--help" || first == "-h" || first == "help") {
     inv.command = Command::Help;
@@ -383,12 +393,13 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   else if (first == "compare") inv.command = Command::Compare;
   else if (first == "machine") inv.command = Command::Machine;
   else if (first == "balance") inv.command = Command::Balance;
+  else if (first == "cognates") inv.command = Command::Cognates;
   else if (!first.empty() && first[0] == '-')
     return usage(first, "unknown option '" + first + "' (see linkwright-cli --help)");
   else
     return usage(first, "unknown command '" + first +
                             "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, "
-                            "dxf, report, compare, machine, balance, synthesize, examples; see --help)");
+                            "dxf, report, compare, machine, balance, cognates, synthesize, examples; see --help)");
   if (inv.command == Command::Arm) inv.lengthUnit = "m";  // the arm's seed (004) works in metres
 
   std::set<std::string> seen;
@@ -409,11 +420,11 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
       continue;
     }
     // A bare argument names a document, for the commands that analyse a linkage.
-    const bool takesDocument = inv.command == Command::Analyze || inv.command == Command::Extremes ||
-                               inv.command == Command::Classify || inv.command == Command::Centres ||
-                               inv.command == Command::Polygon || inv.command == Command::Inversions ||
-                               inv.command == Command::Dxf || inv.command == Command::Report ||
-                               inv.command == Command::Machine || inv.command == Command::Balance;
+    const bool takesDocument =
+        inv.command == Command::Analyze || inv.command == Command::Extremes || inv.command == Command::Classify ||
+        inv.command == Command::Centres || inv.command == Command::Polygon || inv.command == Command::Inversions ||
+        inv.command == Command::Dxf || inv.command == Command::Report || inv.command == Command::Machine ||
+        inv.command == Command::Balance || inv.command == Command::Cognates;
     if (takesDocument && !option.empty() && option[0] != '-' && !inlineValue) {
       if (inv.documentPath)
         return usage(option, "only one document can be analysed at a time (got '" + *inv.documentPath + "' and '" +

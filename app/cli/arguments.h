@@ -36,7 +36,8 @@ enum class Command {
   Report,
   Compare,
   Machine,
-  Balance
+  Balance,
+  Cognates
 };
 
 /// compare --offset: auto (fitted), none, or a value in degrees.
@@ -78,6 +79,7 @@ struct Invocation {
   std::optional<double> toTime;         ///< s
   std::optional<kinematics::Branch> branch;
   std::optional<kinematics::CouplerPointSpec> couplerPoint;
+  std::optional<std::string> couplerPointName;  ///< cognates --coupler-point NAME: a point on the coupler
   std::optional<std::string> outputFile;
   bool json = false;
   bool tableFormat = false;  ///< --format table: aligned text instead of CSV (analyze, arm)

@@ -42,6 +42,9 @@ Commands:
   balance    counterweights that balance the shaking force (four-bars completely,
              slider-cranks in part), written as a new document, with the shaking,
              torque and bearing loads before and after
+  cognates   a four-bar's two Roberts–Chebyshev cognates: the linkages whose coupler
+             point traces the same curve, written as two documents, with their
+             Grashof class, worst transmission angle and crank speeds
   synthesize a linkage from the motion wanted: rocker swing and time ratio, slider or
              shaper stroke, function generator, coupler poses, coupler path; lists
              the candidates with their defects and writes the chosen one as a document
@@ -155,6 +158,25 @@ constexpr const char* kBalanceOptions =
   --spring A,B          instead, the linear spring from A to B that makes the RMS driving
                         torque least (any crank-driven linkage): each end LINK:POINT, a
                         point on that link's body, or a ground point alone (the frame)
+)";
+
+constexpr const char* kCognatesOptions =
+    R"(cognates options (FILE.json, --example NAME or --fourbar FRAME,CRANK,COUPLER,ROCKER [--unit
+NAME]: a four-bar with a point on its coupler; see docs/cognates.md):
+  -o, --output PREFIX   write the cognates to PREFIX-1.linkwright and PREFIX-2.linkwright
+                        (required), each a four-bar with its coupler point named P
+  --coupler-point NAME  the point on the coupler whose curve they trace (default: the first)
+  --coupler-point U,V   put P there first, U along B→C and V 90° CCW from it (as analyze)
+  --json                one JSON object instead of the table (z, third_pivot, linkages
+                        [{name, file, crank_pivot, rocker_pivot, lengths, class,
+                        worst_transmission_deg, crank_turns_with, coupler_turns_with,
+                        rocker_turns_with, crank_speed_ratio_min, crank_speed_ratio_max}])
+Output: for the original and each cognate its ground pivots, lengths, Grashof class, worst
+  transmission angle min(μ, 180° − μ) over the motion it makes in the original's cycle (its
+  grid), and the speed its crank must turn at for the three to move together: cognate 2's
+  crank turns with the original's crank (ω2, 1:1); cognate 1's with the original's coupler
+  (ω3, which varies: its range over the cycle as a multiple of ω2). Cognate 2's document has
+  the original's grid and speed; cognate 1's the range its crank sweeps in the cycle.
 )";
 
 constexpr const char* kCentresOptions =
@@ -398,7 +420,8 @@ constexpr const char* kExitCodes = R"(Exit codes:
      still written; the message gives the ranges that do not and the range that does);
      for arm: the tip path leaves the workspace (the message gives the exact times);
      for centres, dxf and report: a requested input cannot be assembled; for polygon: a crank
-     angle cannot be assembled or is a toggle; for synthesize path: no
+     angle cannot be assembled or is a toggle; for cognates: the four-bar at its grid's
+     start, where they are built; for synthesize path: no
      start found a four-bar that assembles at every target
 
 Examples:
@@ -414,6 +437,7 @@ Examples:
   linkwright-cli inversions --fourbar 60,25,70,45
   linkwright-cli machine --example funsho-fourbar --cs 0.02 --gear-ratio 10 --efficiency 0.9
   linkwright-cli balance --example funsho-fourbar -o balanced.linkwright
+  linkwright-cli cognates --example thesis-crank-rocker --coupler-point 35,20 -o thesis
   linkwright-cli synthesize swing --swing 60 --time-ratio 1.3 --rocker 50 -o design.json
 )";
 
@@ -436,6 +460,7 @@ std::string helpText(const std::string& topic) {
   if (topic.empty() || topic == "accuracy") text += std::string("\n") + kAccuracyOptions;
   if (topic.empty() || topic == "machine") text += std::string("\n") + kMachineOptions;
   if (topic.empty() || topic == "balance") text += std::string("\n") + kBalanceOptions;
+  if (topic.empty() || topic == "cognates") text += std::string("\n") + kCognatesOptions;
   if (topic.empty() || topic == "synthesize") text += std::string("\n") + kSynthesizeOptions;
   return text + "\n" + kExitCodes;
 }
@@ -456,10 +481,10 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
         inv.helpTopic != "polygon" && inv.helpTopic != "inversions" && inv.helpTopic != "dxf" &&
         inv.helpTopic != "report" && inv.helpTopic != "compare" && inv.helpTopic != "accuracy" &&
         inv.helpTopic != "synthesize" && inv.helpTopic != "machine" && inv.helpTopic != "balance" &&
-        inv.helpTopic != "examples" && inv.helpTopic != "linkwright-cli") {
+        inv.helpTopic != "cognates" && inv.helpTopic != "examples" && inv.helpTopic != "linkwright-cli") {
       err << "linkwright-cli: no help for '" << inv.helpTopic
           << "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, report, "
-             "compare, machine, balance, synthesize, examples)\n";
+             "compare, machine, balance, cognates, synthesize, examples)\n";
       return toInt(ExitCode::BadInput);
     }
     out << helpText(inv.helpTopic == "linkwright-cli" || inv.helpTopic == "examples" ? "" : inv.helpTopic);
@@ -480,6 +505,7 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   case Command::Synthesize: return toInt(runSynthesize(inv, out, err));
   case Command::Machine: return toInt(runMachine(inv, out, err));
   case Command::Balance: return toInt(runBalance(inv, out, err));
+  case Command::Cognates: return toInt(runCognates(inv, out, err));
   }
   return toInt(ExitCode::BadInput);
 }

@@ -5,8 +5,8 @@
 // mechanical advantage at given crank angles), polygon (velocity and acceleration polygons at
 // given crank angles), inversions (a four-bar's or slider-crank's inversions), dxf (the links
 // as a DXF drawing), report (the lab-report PDF), compare (another tool's table against the
-// exact solution), synthesize (linkages from the motion wanted: kinematics/synthesis/) and
-// examples (the built-ins).
+// exact solution), synthesize (linkages from the motion wanted: kinematics/synthesis/),
+// cognates (a four-bar's Roberts–Chebyshev cognates) and examples (the built-ins).
 
 #include "app/cli/arguments.h"
 #include "app/cli/exit_codes.h"
@@ -36,6 +36,7 @@ ExitCode runCompare(const Invocation& invocation, std::ostream& out, std::ostrea
 ExitCode runSynthesize(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runMachine(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runBalance(const Invocation& invocation, std::ostream& out, std::ostream& err);
+ExitCode runCognates(const Invocation& invocation, std::ostream& out, std::ostream& err);
 
 /// What an example brings besides the linkage: the driver's speed and the input grid.
 struct GridDefaults {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace linkwright::kinematics {
 namespace {
@@ -44,6 +45,19 @@ std::optional<TransmissionRange> fourBarTransmissionRange(const FourBarLengths& 
   r.maximumAtCrank = crankForDiagonal(l, std::max(low, high));
   r.worstDeviation = std::max(std::abs(r.minimum - kPi / 2.0), std::abs(r.maximum - kPi / 2.0));
   return r;
+}
+
+std::optional<double> worstTransmissionBetween(const FourBarLengths& l, double from, double to) {
+  const double lo = std::min(from, to), hi = std::max(from, to);
+  std::vector<double> at{lo, hi};
+  for (double k = std::ceil(lo / kPi); k * kPi < hi; k += 1.0) at.push_back(k * kPi);
+  double worst = kPi / 2.0;
+  for (const double theta : at) {
+    const auto mu = fourBarTransmissionAngle(l, theta);
+    if (!mu) return std::nullopt;
+    worst = std::min(worst, std::min(*mu, kPi - *mu));
+  }
+  return worst;
 }
 
 }  // namespace linkwright::kinematics

@@ -26,4 +26,10 @@ std::optional<double> fourBarTransmissionAngle(const FourBarLengths& lengths, do
 /// Extremes over all assemblable crank angles, or nullopt if the linkage never assembles.
 std::optional<TransmissionRange> fourBarTransmissionRange(const FourBarLengths& lengths);
 
+/// The worst min(μ, π − μ) (rad) over the crank angles from `from` to `to` (rad, from the frame
+/// line, either order): exact, from μ at the two ends and at every θ = kπ between them; nullopt
+/// if one of those angles cannot be assembled. Whether every angle between assembles is the
+/// caller's to know (a range the linkage was seen to move through, or assembly_range.h).
+std::optional<double> worstTransmissionBetween(const FourBarLengths& lengths, double from, double to);
+
 }  // namespace linkwright::kinematics

@@ -102,16 +102,7 @@ std::optional<Defect> orderDefect(const FourBarTask& task, const GrashofReport& 
 
 std::optional<double> worstTransmissionOver(const FourBarLengths& l, const CrankSpan& span) {
   if (!spanAssembles(l, span)) return std::nullopt;
-  const double lo = std::min(span.from, span.to), hi = std::max(span.from, span.to);
-  std::vector<double> at{lo, hi};
-  for (double k = std::ceil(lo / kPi); k * kPi < hi; k += 1.0) at.push_back(k * kPi);
-  double worst = kPi / 2.0;
-  for (const double theta : at) {
-    const auto mu = fourBarTransmissionAngle(l, theta);
-    if (!mu) return std::nullopt;
-    worst = std::min(worst, std::min(*mu, kPi - *mu));
-  }
-  return worst;
+  return worstTransmissionBetween(l, span.from, span.to);
 }
 
 std::optional<double> worstTransmission(const FourBarLengths& l) {

@@ -133,3 +133,26 @@ TEST_CASE("The exact extremes bound a fine sweep's transmission angles", "[trans
     CHECK(pose->transmissionAngle[fourbar::kC.index] == within(value, 1e-7));
   }
 }
+
+TEST_CASE("worstTransmissionBetween is the worst of a fine sampling over the span, and no better", "[transmission]") {
+  // The thesis crank-rocker over spans that do and do not hold θ = 0 or π.
+  const auto [fromDeg, toDeg] =
+      GENERATE(table<double, double>({{20, 70}, {-30, 40}, {100, 260}, {250, 20}, {-400, -10}}));
+  CAPTURE(fromDeg, toDeg);
+  const double from = degToRad(fromDeg), to = degToRad(toDeg);
+  const auto worst = worstTransmissionBetween(kThesis, from, to);
+  REQUIRE(worst.has_value());
+  double sampled = kPi / 2.0;
+  for (int i = 0; i <= 20000; ++i) {
+    const double mu = fourBarTransmissionAngle(kThesis, from + (to - from) * i / 20000.0).value();
+    sampled = std::min(sampled, std::min(mu, kPi - mu));
+  }
+  CHECK(*worst <= sampled + 1e-12);
+  CHECK(*worst >= sampled - 1e-6);
+}
+
+TEST_CASE("worstTransmissionBetween: nullopt where an end cannot be assembled", "[transmission]") {
+  // Frame 80, crank 60, coupler and rocker 30: at θ = 3 rad B is 140 from O4, beyond their 60.
+  const FourBarLengths l{80.0, 60.0, 30.0, 30.0};
+  CHECK_FALSE(worstTransmissionBetween(l, 0.5, 3.0).has_value());
+}
