@@ -45,7 +45,8 @@ const std::set<std::string>& optionsOf(Command command) {
   static const std::set<std::string> machine{"--example",     "--rpm",        "--omega",      "--samples",
                                              "--cs",          "--gear-ratio", "--efficiency", "--rated-torque",
                                              "--rated-speed", "--json"};
-  static const std::set<std::string> balance{"--example", "-o", "--output", "--fraction", "--radius", "--spring"};
+  static const std::set<std::string> balance{"--example", "-o",       "--output",       "--fraction",
+                                             "--radius",  "--spring", "--spring-search"};
   static const std::set<std::string> cognates{"--fourbar", "--example", "--unit", "--coupler-point",
                                               "-o",        "--output",  "--json"};
   static const std::set<std::string> none{};
@@ -243,6 +244,9 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
           option,
           option + " needs two ends, LINK:POINT,LINK:POINT (a ground point alone for the frame; got '" + value + "')");
     inv.springEnds = value;
+  } else if (option == "--spring-search") {
+    if (value.empty()) return usage(option, option + " needs the name of the link the spring's end goes on");
+    inv.springSearchLink = value;
   } else if (option == "--svg") {
     if (value.empty()) return usage(option, option + " needs a file name");
     inv.svgFile = value;

@@ -116,6 +116,7 @@ struct Invocation {
   std::optional<double> reciprocatingFraction;  ///< --fraction, slider-cranks
   std::optional<double> counterweightRadius;    ///< --radius, in link lengths
   std::optional<std::string> springEnds;        ///< --spring LINK:POINT,POINT (balance by a spring)
+  std::optional<std::string> springSearchLink;  ///< --spring-search LINK (the spring's ends searched)
 };
 
 /// Parses the arguments after the program name.

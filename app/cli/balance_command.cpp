@@ -10,6 +10,7 @@
 #include "kinematics/dynamics/force_balance.h"
 #include "kinematics/dynamics/machine_duty.h"
 #include "kinematics/dynamics/spring_balance.h"
+#include "kinematics/dynamics/spring_search.h"
 #include "kinematics/io/document_json.h"
 #include "kinematics/io/safe_file.h"
 #include "kinematics/model/number_text.h"
@@ -72,6 +73,45 @@ ExitCode balanceBySpring(const Invocation& inv, k::Design design, std::ostream& 
   return ExitCode::Success;
 }
 
+ExitCode balanceBySearchedSpring(const Invocation& inv, k::Design design, std::ostream& out, std::ostream& err) {
+  if (inv.springEnds) {
+    err << "linkwright-cli: --spring-search: give the spring's ends (--spring) or have them searched "
+           "(--spring-search), not both\n";
+    return ExitCode::BadInput;
+  }
+  const auto found =
+      k::searchSpringBalance(design.mechanism, design.dynamics, k::designTurn(design), *inv.springSearchLink);
+  if (!found) {
+    err << "linkwright-cli: --spring-search: " << found.error().message << "\n";
+    return ExitCode::BadInput;
+  }
+  design.mechanism = found->mechanism;
+  design.dynamics = found->balance.balanced;
+  if (auto e = k::io::writeFileSafely(*inv.outputFile, k::io::writeDocument(design))) {
+    err << "linkwright-cli: " << e->message << "\n";
+    return ExitCode::IoError;
+  }
+  const k::SpringBalance& b = found->balance;
+  const std::string& unit = design.mechanism.lengthUnit;
+  out << "spring balance: the spring from a point on " << *inv.springSearchLink
+      << " to a point on the frame, both searched, that makes the RMS driving torque least; written to "
+      << *inv.outputFile << "\n";
+  out << "  on " << *inv.springSearchLink << ": " << b.spring.first.point << " at "
+      << formatShort(found->onLink.along, 6) << " " << unit << " along and " << formatShort(found->onLink.across, 6)
+      << " " << unit << " across the link\n";
+  out << "  on the frame: " << b.spring.second.point << " at (" << formatShort(found->onFrame.x(), 6) << ", "
+      << formatShort(found->onFrame.y(), 6) << ") " << unit << "\n";
+  if (found->atBound)
+    out << "  (an end is at the edge of the search, half the link's length off it or a quarter of the linkage's "
+           "size outside the box it sweeps: an end allowed further out might do better)\n";
+  out << "  stiffness " << formatShort(b.spring.stiffness, 6) << " N/m, free length "
+      << formatShort(b.spring.freeLength, 6) << " " << unit << ", preload " << formatShort(b.spring.preload, 6)
+      << " N\n";
+  out << "over one crank turn at " << formatShort(design.omega, 5) << " rad/s, before → after:\n";
+  out << "  driving torque RMS    " << formatShort(b.rmsBefore, 5) << " → " << formatShort(b.rmsAfter, 5) << " N·m\n";
+  return ExitCode::Success;
+}
+
 }  // namespace
 
 ExitCode runBalance(const Invocation& inv, std::ostream& out, std::ostream& err) {
@@ -81,6 +121,7 @@ ExitCode runBalance(const Invocation& inv, std::ostream& out, std::ostream& err)
     return ExitCode::BadInput;
   }
   k::Design design = *resolved;
+  if (inv.springSearchLink) return balanceBySearchedSpring(inv, std::move(design), out, err);
   if (inv.springEnds) return balanceBySpring(inv, std::move(design), out, err);
   k::BalanceOptions options;
   options.reciprocatingFraction = inv.reciprocatingFraction.value_or(options.reciprocatingFraction);

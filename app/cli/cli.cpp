@@ -158,6 +158,9 @@ constexpr const char* kBalanceOptions =
   --spring A,B          instead, the linear spring from A to B that makes the RMS driving
                         torque least (any crank-driven linkage): each end LINK:POINT, a
                         point on that link's body, or a ground point alone (the frame)
+  --spring-search LINK  instead, the spring from a point on LINK to a point on the frame,
+                        both searched, that makes the RMS driving torque least; the two
+                        points are added to the design as spring_link and spring_frame
 )";
 
 constexpr const char* kCognatesOptions =

@@ -37,6 +37,18 @@ Result<SpringBalance> balanceBySpring(const Mechanism& mechanism, const LinkageD
                                       const SweepSpec& turn, const SpringEnd& first, const SpringEnd& second,
                                       const std::string& name = "balance");
 
+/// The least-squares spring of the comment above for one placement: its L (m) and L' (m/rad)
+/// and the torque T0 (N·m) at the turn's samples `angle` (rad). `sized` is false when the
+/// spring's length barely changes over the turn.
+struct SpringFit {
+  bool sized = false;
+  double stiffness = 0.0;  ///< k, N/m
+  double pull = 0.0;       ///< c = k L0 − preload, N
+  double rms = 0.0;        ///< N·m, the RMS torque with that spring
+};
+SpringFit fitSpring(const std::vector<double>& angle, const std::vector<double>& t0, const std::vector<double>& length,
+                    const std::vector<double>& slope);
+
 /// The RMS over the turn of `torque` sampled at `angle` (trapezoidal rule).
 double rmsOverTurn(const std::vector<double>& angle, const std::vector<double>& torque);
 

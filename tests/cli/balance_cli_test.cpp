@@ -110,3 +110,41 @@ TEST_CASE("balance --spring writes the spring that lowers the RMS torque, and ma
   }
   fs::remove_all(dir);
 }
+
+TEST_CASE("balance --spring-search adds the spring's two ends and a spring at least as good as given ends",
+          "[cli][balance][springs]") {
+  const fs::path dir = scratchDir();
+  const std::string out = (dir / "searched.linkwright").string();
+  const auto r = runCliCommand({"balance", "--example", "funsho-fourbar", "--spring-search", "rocker", "-o", out});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.out.find("on rocker: spring_link at ") != std::string::npos);
+  CHECK(r.out.find("on the frame: spring_frame at (") != std::string::npos);
+  const std::string rms = "driving torque RMS    0.67087 → ";
+  const std::size_t at = r.out.find(rms);
+  REQUIRE(at != std::string::npos);
+  const double after = std::stod(r.out.substr(at + rms.size()));
+  CHECK(after < 0.55503);  // the ends given by hand above (C to O2) reach 0.55503 N·m
+  CHECK(r.out.find("at the edge of the search") != std::string::npos);  // 10 mm across a 20 mm rocker
+  // The written document, read back, holds both points and gives that RMS by its own forces.
+  const auto machine = runCliCommand({"machine", out, "--json"});
+  REQUIRE(machine.code == 0);
+  const double rmsWritten = std::stod(machine.out.substr(machine.out.find("\"rms_torque_Nm\": ") + 17));
+  CHECK(rmsWritten == Approx(after).epsilon(1e-4));
+
+  const std::vector<std::pair<std::vector<std::string>, std::string>> refused{
+      {{"--spring-search", "boom"},
+       "--spring-search: the spring's link must be one of the linkage's (crank, coupler, "
+       "rocker); got \"boom\""},
+      {{"--spring-search", "rocker", "--spring", "rocker:C,O2"}, "not both"},
+  };
+  for (const auto& [options, message] : refused) {
+    std::vector<std::string> args{"balance", "--example", "funsho-fourbar", "-o", (dir / "bad.linkwright").string()};
+    args.insert(args.end(), options.begin(), options.end());
+    const auto bad = runCliCommand(args);
+    CHECK(bad.code == 2);
+    CHECK(bad.err.find(message) != std::string::npos);
+    CHECK_FALSE(fs::exists(dir / "bad.linkwright"));
+  }
+  fs::remove_all(dir);
+}

@@ -6,6 +6,7 @@
 #include "kinematics/design/examples.h"
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/dynamics/spring_balance.h"
+#include "kinematics/dynamics/spring_search.h"
 #include "kinematics/dynamics/virtual_work.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/vec2.h"
@@ -155,4 +156,74 @@ TEST_CASE("springs are refused with the field named", "[dynamics][springs][error
   const auto none = balanceBySpring(m, masses, {0.0, kTurn, 73, 1.0, 0.0}, {"rocker", "C"}, {"", "O4"});
   REQUIRE_FALSE(none.ok());
   CHECK(none.error().field == "spring");
+}
+
+TEST_CASE("a searched spring's ends cancel a weighted crank, the search needing no ends given",
+          "[dynamics][springs][search]") {
+  const double mass = 2.0;
+  const Mechanism m = withAnchor(40.0);
+  LinkageDynamics d;
+  d.links = {{"crank", mass, LinkFramePoint{25.0, 0.0}, 0.0}};
+  d.loads.gravity = standardGravity();
+  const auto found = searchSpringBalance(m, d, {0.0, kTurn, 361, 0.5, 0.0}, "crank");
+  REQUIRE(found.ok());
+  CHECK(found->balance.rmsAfter <= 1e-6 * found->balance.rmsBefore);
+  REQUIRE(found->mechanism.points.size() == m.points.size() + 2);
+  CHECK(found->mechanism.points[m.points.size()].name == "spring_link");
+  CHECK(found->mechanism.points.back().name == "spring_frame");
+}
+
+TEST_CASE("a searched spring beats given ends, and moving either end any way raises the RMS",
+          "[dynamics][springs][search]") {
+  const auto e = findExample("funsho-fourbar").value();
+  LinkageDynamics d = e.dynamics;
+  d.loads.gravity = standardGravity();
+  d.loads.torques = {{"rocker", -0.3}};
+  const SweepSpec turn{0.0, kTurn, 361, 20.0, 0.0};
+  const auto found = searchSpringBalance(e.mechanism, d, turn, "rocker", "lift");
+  REQUIRE(found.ok());
+  const SpringBalance& b = found->balance;
+  CHECK(b.spring.name == "lift");
+  CHECK(b.rmsAfter < 0.5 * b.rmsBefore);
+
+  // Better than the ends the test above gives by hand (C to a frame point S).
+  Mechanism given = e.mechanism;
+  given.points.push_back({"S", GroundPoint{Eigen::Vector2d(-10.0, 25.0)}});
+  CHECK(b.rmsAfter <= balanceBySpring(given, d, turn, {"rocker", "C"}, {"", "S"})->rmsAfter);
+
+  // The balanced design's own inverse dynamics gives the torque predicted.
+  const auto s = sweep(found->mechanism, turn).value();
+  const auto f = sweepForces(found->mechanism, b.balanced, s).value();
+  for (std::size_t j = 0; j < s.size(); ++j)
+    CHECK(f.driveTorque[j] == Approx(b.torqueAfter[j]).margin(1e-9 * b.rmsBefore));
+
+  // A minimum over the placement: each end moved 0.5 mm along either axis, the spring sized
+  // again for its new ends, gives a higher RMS.
+  const std::size_t onLink = e.mechanism.points.size(), onFrame = onLink + 1;
+  int compared = 0;
+  for (std::size_t axis = 0; axis < 4; ++axis)
+    for (const double sign : {1.0, -1.0}) {
+      CAPTURE(axis, sign);
+      Mechanism moved = found->mechanism;
+      if (axis < 2) {
+        auto& a = std::get<AttachedPoint>(moved.points[onLink].definition);
+        (axis == 0 ? a.along : a.across) += 0.5 * sign;
+      } else {
+        auto& g = std::get<GroundPoint>(moved.points[onFrame].definition);
+        g.position[static_cast<Eigen::Index>(axis - 2)] += 0.5 * sign;
+      }
+      const auto other = balanceBySpring(moved, d, turn, b.spring.first, b.spring.second, "lift");
+      if (!other) continue;
+      CHECK(other->rmsAfter > b.rmsAfter);
+      ++compared;
+    }
+  CHECK(compared == 8);
+}
+
+TEST_CASE("a spring search names the link it cannot use", "[dynamics][springs][search][errors]") {
+  const auto e = findExample("funsho-fourbar").value();
+  const auto r = searchSpringBalance(e.mechanism, e.dynamics, {0.0, kTurn, 361, 20.0, 0.0}, "boom");
+  REQUIRE_FALSE(r.ok());
+  CHECK(r.error().field == "link");
+  CHECK(r.error().message == "the spring's link must be one of the linkage's (crank, coupler, rocker); got \"boom\"");
 }
