@@ -2,7 +2,9 @@
 
 #include "ui/colors.h"
 #include "ui/document/mechanism_document.h"
+#include "ui/panels/link_points.h"
 #include "ui/panels/mass_table.h"
+#include "ui/panels/springs_editor.h"
 #include "ui/quiet_update.h"
 
 #include <QCheckBox>
@@ -58,7 +60,13 @@ DynamicsPanel::DynamicsPanel(MechanismDocument* document, QWidget* parent)
       m_gravity(new QCheckBox(tr("Gravity, g ="))), m_g(numberSpin(tr(" m/s²"), 0.0, 1e4, this)),
       m_torqueLink(new QComboBox), m_torque(numberSpin(tr(" N·m"), -1e9, 1e9, this)), m_forceTarget(new QComboBox),
       m_forceX(numberSpin(tr(" N"), -1e9, 1e9, this)), m_forceY(numberSpin(tr(" N"), -1e9, 1e9, this)),
-      m_extraLoads(new QLabel) {
+      m_extraLoads(new QLabel),
+      m_springs(new SpringsEditor(
+          document,
+          [this](const QString& description, const std::function<void(k::LinkageDynamics&)>& change) {
+            submit(description, change);
+          },
+          [this](const QString& reason) { refuse(reason); })) {
   auto* layout = new QVBoxLayout(this);
   m_refusal->setWordWrap(true);
   m_refusal->setStyleSheet(QStringLiteral("color: %1").arg(colors().refusal.name()));
@@ -103,6 +111,7 @@ DynamicsPanel::DynamicsPanel(MechanismDocument* document, QWidget* parent)
   m_extraLoads->setEnabled(false);
   form->addRow(m_extraLoads);
   layout->addWidget(loads);
+  layout->addWidget(m_springs);
   layout->addStretch(1);
 
   m_torque->setToolTip(tr("Counter-clockwise positive, the same at every crank angle"));
@@ -133,6 +142,7 @@ QString DynamicsPanel::refusalMessage() const { return m_refusal->text(); }
 void DynamicsPanel::refresh() {
   refreshTables();
   refreshLoads();
+  m_springs->refresh();
 }
 
 void DynamicsPanel::refreshTables() {
@@ -204,16 +214,9 @@ void DynamicsPanel::refreshLoads() {
     targets << (tr("slider block at %1").arg(QString::fromStdString(key.point)) +
                 (key.guide > 0 ? tr(" (guide %1)").arg(key.guide + 1) : QString()));
   }
-  for (std::size_t li = 0; li < m.links.size(); ++li) {
-    const k::Link& link = m.links[li];
-    std::vector<k::PointId> on = {link.first, link.second};
-    for (std::size_t p = 0; p < m.points.size(); ++p)
-      if (const auto* a = std::get_if<k::AttachedPoint>(&m.points[p].definition); a != nullptr && a->link.index == li)
-        on.push_back(k::PointId{p});
-    for (const k::PointId p : on) {
-      m_targets.push_back({link.name, m.points[p.index].name, 0});
-      targets << tr("%1 on %2").arg(QString::fromStdString(m.points[p.index].name), QString::fromStdString(link.name));
-    }
+  for (const LinkPoint& p : pointsOnLinks(m)) {
+    m_targets.push_back({p.link, p.point, 0});
+    targets << tr("%1 on %2").arg(QString::fromStdString(p.point), QString::fromStdString(p.link));
   }
   setComboItems(m_forceTarget, targets);
   const k::PointForce* force = loads.forces.empty() ? nullptr : &loads.forces.front();
@@ -232,10 +235,6 @@ void DynamicsPanel::refreshLoads() {
   QStringList notes;
   if (extra > 0)
     notes << tr("%n more load(s) from the file are kept but not shown here.", nullptr, static_cast<int>(extra));
-  // Springs come from a document or linkwright-cli balance --spring; the canvas draws them.
-  if (!loads.springs.empty())
-    notes << tr("%n spring(s) from the file act on the linkage (drawn on the canvas; edit them in the document).",
-                nullptr, static_cast<int>(loads.springs.size()));
   m_extraLoads->setText(notes.join(QLatin1Char(' ')));
   m_extraLoads->setVisible(!notes.isEmpty());
 }

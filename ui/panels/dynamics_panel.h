@@ -1,7 +1,7 @@
 #pragma once
 // The properties panel for forces: each link's mass (kg), centre of mass (along and across
 // the link, in the length unit) and moment of inertia (kg·m²), each slider block's mass,
-// gravity, a load torque on a link and a force on a slider or a link's point. It shows the
+// gravity, a load torque on a link, a force on a slider or a link's point, and springs. It shows the
 // design's values only; an unset centre or inertia reads as the core's default ("midpoint",
 // "m·L²/12"). Every edit is a new design through MechanismDocument::edit, so it is undoable;
 // an edit the core refuses (checkDesign names the field) changes nothing and is shown.
@@ -26,6 +26,7 @@ namespace linkwright::ui {
 
 class MassTable;
 class MechanismDocument;
+class SpringsEditor;
 
 class DynamicsPanel : public QWidget {
   Q_OBJECT
@@ -43,6 +44,7 @@ public:
   QComboBox* forceTargetBox() const { return m_forceTarget; }
   QDoubleSpinBox* forceXSpin() const { return m_forceX; }
   QDoubleSpinBox* forceYSpin() const { return m_forceY; }
+  SpringsEditor* springsEditor() const { return m_springs; }
   /// Why the last edit was refused; empty after an accepted one.
   QString refusalMessage() const;
 
@@ -79,6 +81,7 @@ private:
   QDoubleSpinBox* m_forceX;
   QDoubleSpinBox* m_forceY;
   QLabel* m_extraLoads;
+  SpringsEditor* m_springs;
   std::vector<kinematics::SliderMass> m_sliderKeys;  // point and guide of each slider row
   std::vector<ForceTarget> m_targets;                // per force-target item after "none"
 };

@@ -16,6 +16,7 @@
 #include "ui/plots/plot_quantity.h"
 
 #include "kinematics/design/examples.h"
+#include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/model/units.h"
 
 #include <QAction>
@@ -105,6 +106,19 @@ const std::vector<View>& views() {
          w.showForces();
          w.balanceAction()->trigger();
        }},
+      {"boom-spring",
+       [](MainWindow& w) {
+         // A 200 kg boom under gravity with a spring from its eye C to a frame point S above O
+         // that carries part of its weight: the spring drawn as coils, its force in the cylinder's.
+         k::Design d = w.document()->design();
+         if (!d.mechanism.findLink("boom")) return;  // the view is the boom's alone
+         d.mechanism.points.push_back({"S", k::GroundPoint{Eigen::Vector2d(0.0, 1.2)}});
+         d.dynamics.links = {{"boom", 200.0, std::nullopt, std::nullopt}};
+         d.dynamics.loads.gravity = k::standardGravity();
+         d.dynamics.loads.springs = {{"lift", {"boom", "C"}, {"", "S"}, 20000.0, 0.4, 0.0}};
+         if (w.document()->edit(d, "spring")) std::cerr << "linkwright_gallery: the boom's spring was refused\n";
+         w.showForces();
+       }},
       {"flywheel",
        [](MainWindow& w) {
          w.showForces();
@@ -159,6 +173,7 @@ constexpr DocImage kDocImages[] = {
     {"forces.png", "funsho-fourbar", "forces", 60.0},
     {"shaking.png", "funsho-fourbar", "shaking", 60.0},
     {"flywheel.png", "funsho-fourbar", "flywheel", 60.0},
+    {"boom_spring.png", "excavator-boom", "boom-spring", 0.0},
     {"balanced.png", "funsho-fourbar", "balanced", 60.0},
     {"balanced_forces.png", "funsho-fourbar", "balanced-forces", 60.0},
     {"instant_centres.png", "thesis-crank-rocker", "centres", 250.0},
