@@ -41,6 +41,7 @@
 #include "kinematics/design/examples.h"
 #include "kinematics/dynamics/force_balance.h"
 #include "kinematics/dynamics/machine_duty.h"
+#include "kinematics/dynamics/spring_search.h"
 #include "kinematics/io/bounded_read.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/dxf_export.h"
@@ -287,8 +288,17 @@ void MainWindow::buildMenus() {
   edit->addAction(tr("Attach &dyad…"), QKeySequence(Qt::CTRL | Qt::Key_D), this, &MainWindow::openAttachDyadDialog);
   edit->setToolTipsVisible(true);  // why Balance is disabled
   m_balanceAction = edit->addAction(tr("&Balance the shaking force"), this, &MainWindow::balanceShakingForce);
+  m_springBalanceAction = edit->addAction(tr("Balance the torque by a &spring…"), this, &MainWindow::balanceBySpring);
   const auto followBalance = [this] {
     const k::Design& d = m_document->design();
+    const auto crank = k::checkCrankDriven(d.mechanism);
+    m_springBalanceAction->setEnabled(!crank && !d.dynamics.empty());
+    m_springBalanceAction->setToolTip(
+        crank ? QString::fromStdString(crank->message)
+        : d.dynamics.empty()
+            ? tr("Give masses or loads first (Forces tab): a spring balances the torque they ask of the crank")
+            : tr("The spring from a point on a link to a point on the frame, both searched, that makes the RMS "
+                 "driving torque over a turn least"));
     const auto balance = k::balanceShakingForce(d.mechanism, d.dynamics);
     m_balanceAction->setEnabled(balance.ok() && !balance->counterweights.empty());
     m_balanceAction->setToolTip(!balance.ok()                     ? QString::fromStdString(balance.error().message)
@@ -822,6 +832,38 @@ void MainWindow::balanceShakingForce() {
                                     change(was->rmsTorque, is->rmsTorque, tr("N·m")),
                                     change(was->bearingLoadPeak, is->bearingLoadPeak, tr("N"))),
                            20000);
+}
+
+void MainWindow::balanceBySpring() {
+  k::Design design = m_document->design();
+  QStringList links;
+  for (const k::Link& link : design.mechanism.links) links << QString::fromStdString(link.name);
+  bool chosen = false;
+  const QString link = QInputDialog::getItem(this, tr("Balance the torque by a spring"),
+                                             tr("The spring's moving end goes on link:"), links, 0, false, &chosen);
+  if (!chosen) return;
+  const auto found =
+      k::searchSpringBalance(design.mechanism, design.dynamics, k::designTurn(design), link.toStdString());
+  if (!found) {
+    showError(QString::fromStdString(found.error().message));
+    return;
+  }
+  const k::LinkageDynamics before = design.dynamics;
+  design.mechanism = found->mechanism;
+  design.dynamics = found->balance.balanced;
+  if (const auto why = m_document->edit(design, tr("Balance the torque by a spring on %1").arg(link))) {
+    showError(*why);
+    return;
+  }
+  m_forcePlots->setBefore(m_document->design(), before);
+  const k::SpringBalance& b = found->balance;
+  statusBar()->showMessage(
+      tr("Spring %1 N/m from %2 on %3 to %4 on the frame (Ctrl+Z undoes): driving torque RMS %5 → %6 N·m%7; the "
+         "Forces tab shows before dashed")
+          .arg(numberText(b.spring.stiffness, 'g', 4), QString::fromStdString(b.spring.first.point), link,
+               QString::fromStdString(b.spring.second.point), numberText(b.rmsBefore, 'g', 4),
+               numberText(b.rmsAfter, 'g', 4), found->atBound ? tr(" (an end is at the search's edge)") : QString()),
+      20000);
 }
 
 void MainWindow::showError(const QString& message) { m_banner->showMessage(message, MessageBanner::Kind::Error); }

@@ -107,6 +107,7 @@ public:
   InversionsWindow* showInversions();
   QAction* inversionsAction() const { return m_inversionsAction; }
   QAction* balanceAction() const { return m_balanceAction; }
+  QAction* springBalanceAction() const { return m_springBalanceAction; }
   /// View ▸ Instant centres and centrodes, as if chosen from the menu.
   void setShowInstantCentres(bool show);
   /// Large fonts and lines, full screen, side panels hidden: for the lecture hall.
@@ -132,6 +133,7 @@ private:
   void buildExamplesMenu(QMenu* menu);
   void openAttachDyadDialog();
   void balanceShakingForce();
+  void balanceBySpring();
   QWidget* buildAnalysisTabs();
   void updateForcesNeeded();
   void showForcesTab();
@@ -182,6 +184,7 @@ private:
       nullptr;  // the masses and loads over the force plots      // the window's, put back on leaving
   QAction* m_inversionsAction = nullptr;
   QAction* m_balanceAction = nullptr;
+  QAction* m_springBalanceAction = nullptr;
   InversionsWindow* m_inversions = nullptr;
   bool m_presentation = false;
   QString m_unsavedName;  ///< what the title calls a document not saved yet

@@ -97,6 +97,12 @@ void Journey::example(const std::string& name) {
 }
 
 void Journey::key(int key, Qt::KeyboardModifiers modifiers) {
+  // A closed dialog leaves no active window on the offscreen platform, where a window system
+  // would give the main window back its activation (and its shortcuts).
+  if (QApplication::activeWindow() == nullptr) {
+    m_window.activateWindow();
+    REQUIRE(QTest::qWaitForWindowActive(&m_window));
+  }
   QWidget* target = QApplication::focusWidget() != nullptr ? QApplication::focusWidget() : &m_window;
   QTest::keyClick(target, static_cast<Qt::Key>(key), modifiers);
   settle();
