@@ -216,15 +216,15 @@ Result<CognateSet> cognates(const Design& original, const std::optional<std::str
     return couplerPointError(
         "cognate 1's crank turns with the original's coupler, which does not turn in the cycle "
         "(it moves parallel to itself, as a parallelogram's does): cognate 1 cannot be driven");
-  auto firstDesign = cognateDesign(std::move(*first), original, "cognate 1", grid);
+  auto firstDesign = cognateDesign(std::move(first).value(), original, "cognate 1", grid);
   if (!firstDesign) return firstDesign.error();
-  auto secondDesign = cognateDesign(std::move(*second), original, "cognate 2", std::nullopt);
+  auto secondDesign = cognateDesign(std::move(second).value(), original, "cognate 2", std::nullopt);
   if (!secondDesign) return secondDesign.error();
 
   using L = OriginalLink;
   set.original = fourBarOf(original, {L::Crank, L::Coupler, L::Rocker});
-  set.cognates[0] = fourBarOf(std::move(*firstDesign), {L::Coupler, L::Crank, L::Rocker});
-  set.cognates[1] = fourBarOf(std::move(*secondDesign), {L::Crank, L::Rocker, L::Coupler});
+  set.cognates[0] = fourBarOf(std::move(firstDesign).value(), {L::Coupler, L::Crank, L::Rocker});
+  set.cognates[1] = fourBarOf(std::move(secondDesign).value(), {L::Crank, L::Rocker, L::Coupler});
   const std::array<CognateFourBar*, 3> bars{&set.original, &set.cognates[0], &set.cognates[1]};
   for (std::size_t k = 0; k < 3; ++k) {
     bars[k]->worstTransmission = worstTransmissionOverRuns(bars[k]->fourBar.lengths, motion.runs[k]);

@@ -120,7 +120,7 @@ Result<MachineDuty> machineDuty(const Mechanism& mechanism, const LinkageDynamic
     d.flywheelInertia = *flywheel;
     auto run = runFlywheel(*terms, *flywheel);
     if (!run) return run.error();
-    d.flywheelRun = std::move(*run);
+    d.flywheelRun = std::move(run).value();
   }
   for (std::size_t j = 0; j < forces->size(); ++j) {
     d.virtualWorkDifference =

@@ -149,7 +149,7 @@ Result<SpringPlacement> searchSpringBalance(const Mechanism& m, const LinkageDyn
   r.mechanism.points.push_back({onFrame, GroundPoint{r.onFrame}});
   auto balance = balanceBySpring(r.mechanism, d, turn, {linkName, onLink}, {"", onFrame}, name);
   if (!balance) return balance.error();
-  r.balance = std::move(*balance);
+  r.balance = std::move(balance).value();
   return r;
 }
 
