@@ -4,6 +4,7 @@
 #include "ui/canvas/force_arrows_item.h"
 #include "ui/canvas/linkage_view.h"
 #include "ui/classroom/big_readout.h"
+#include "ui/classroom/cognates_window.h"
 #include "ui/classroom/inversion_cells.h"
 #include "ui/classroom/inversions_window.h"
 #include "ui/classroom/polygon_panel.h"
@@ -257,6 +258,14 @@ InversionsWindow* MainWindow::showInversions() {
   return m_inversions;
 }
 
+CognatesWindow* MainWindow::showCognates() {
+  if (m_cognates == nullptr) m_cognates = new CognatesWindow(m_document, this);
+  m_cognates->show();
+  m_cognates->raise();
+  m_cognates->activateWindow();
+  return m_cognates;
+}
+
 void MainWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
   buildNewMenu(file->addMenu(tr("&New")));
@@ -333,6 +342,8 @@ void MainWindow::buildMenus() {
                   &MainWindow::showPolygonsTab);
   view->setToolTipsVisible(true);  // why Inversions… is disabled
   m_inversionsAction = view->addAction(tr("I&nversions…"), this, &MainWindow::showInversions);
+  view->addAction(tr("&Cognates…"), this, &MainWindow::showCognates)
+      ->setToolTip(tr("A four-bar's two Roberts–Chebyshev cognates, tracing its coupler curve with it"));
   const auto followLinkage = [this] {
     const std::optional<QString> why = inversionsUnavailable(m_document->design());
     m_inversionsAction->setEnabled(!why);

@@ -41,6 +41,7 @@ class MotionPanel;
 class PlotPanel;
 class PolygonPanel;
 class CompareDialog;
+class CognatesWindow;
 class InversionsWindow;
 class Settings;
 class SynthesisPanel;
@@ -105,6 +106,8 @@ public:
   /// once and kept; nullptr, changing nothing, when the linkage is neither a four-bar nor a
   /// slider-crank (the action is disabled then, its tooltip saying why).
   InversionsWindow* showInversions();
+  /// View ▸ Cognates…: shows (and raises) the window of the four-bar's cognates.
+  CognatesWindow* showCognates();
   QAction* inversionsAction() const { return m_inversionsAction; }
   QAction* balanceAction() const { return m_balanceAction; }
   QAction* springBalanceAction() const { return m_springBalanceAction; }
@@ -186,6 +189,7 @@ private:
   QAction* m_balanceAction = nullptr;
   QAction* m_springBalanceAction = nullptr;
   InversionsWindow* m_inversions = nullptr;
+  CognatesWindow* m_cognates = nullptr;
   bool m_presentation = false;
   QString m_unsavedName;  ///< what the title calls a document not saved yet
   QFont m_normalFont;
