@@ -26,6 +26,9 @@ public:
   /// The three four-bars at one pose (original first), or none to draw only the curve.
   void setJoints(const std::optional<std::array<kinematics::FourBarJoints, 3>>& joints);
   const std::optional<std::array<kinematics::FourBarJoints, 3>>& joints() const { return m_joints; }
+  const QPolygonF& curve() const { return m_curve; }
+  /// The frame the drawing fits; empty when there is nothing to draw.
+  const QRectF& extent() const { return m_extent; }
 
   /// The colour each of the three is drawn in.
   static QColor colorOf(int fourBar);

@@ -7,9 +7,12 @@
 #include "kinematics/model/units.h"
 
 #include <QHBoxLayout>
+
 #include <QLabel>
 #include <QPushButton>
 #include <QVBoxLayout>
+#include <algorithm>
+#include <limits>
 
 namespace linkwright::ui {
 
@@ -104,6 +107,7 @@ void CognatesWindow::rebuild() {
   if (!any) {
     m_set.reset();
     m_timer.stop();
+    m_figures->setTextFormat(Qt::PlainText);
     m_figures->setText(tr("No cognates: %1").arg(QString::fromStdString(set.error().message)));
     m_view->setCurve({}, {});
     m_view->setJoints(std::nullopt);
@@ -116,29 +120,42 @@ void CognatesWindow::rebuild() {
   const auto p = m.findPoint(m_set->couplerPoint);
   QPolygonF curve;
   QRectF extent;
-  const auto grow = [&extent](const Eigen::Vector2d& q) {
-    const QRectF dot(q.x(), q.y(), 0.0, 0.0);
-    extent = extent.isNull() ? dot : extent.united(dot);
+  // Bounds by hand: QRectF::united ignores a rectangle of no size, as one point is.
+  Eigen::Vector2d low = Eigen::Vector2d::Constant(std::numeric_limits<double>::max()), high = -low;
+  const auto grow = [&](const Eigen::Vector2d& q) {
+    low = low.cwiseMin(q);
+    high = high.cwiseMax(q);
   };
   const k::FourBarStructure& f = m_set->original.fourBar;
+  // The moving joints from the sweep's columns; the ground pivots, which a sweep need not
+  // store, from the pose (they do not move).
   const auto hasColumn = [&](k::PointId id) {
     return id.index < sweep.position.size() && sweep.position[id.index].size() == sweep.size();
   };
-  const bool complete = p && hasColumn(f.o2) && hasColumn(f.o4) && hasColumn(f.b) && hasColumn(f.c) && hasColumn(*p);
+  const k::Pose& pose = m_document->pose();
+  const bool complete =
+      p && hasColumn(f.b) && hasColumn(f.c) && hasColumn(*p) && std::max(f.o2.index, f.o4.index) < pose.position.size();
   for (std::size_t j = 0; complete && j < sweep.size(); ++j) {
     if (!sweep.assembled(j)) continue;
-    const k::FourBarJoints at{sweep.position[f.o2.index][j], sweep.position[f.o4.index][j],
-                              sweep.position[f.b.index][j], sweep.position[f.c.index][j], sweep.position[p->index][j]};
+    const k::FourBarJoints at{pose.position[f.o2.index], pose.position[f.o4.index], sweep.position[f.b.index][j],
+                              sweep.position[f.c.index][j], sweep.position[p->index][j]};
     curve << QPointF(at.p.x(), at.p.y());
     const k::CognateJoints c = k::cognateJoints(at);
     for (const k::FourBarJoints& four : {at, c.first, c.second})
       for (const Eigen::Vector2d& q : {four.o2, four.o4, four.b, four.c, four.p}) grow(q);
   }
+  if (!curve.isEmpty()) extent = QRectF(QPointF(low.x(), low.y()), QPointF(high.x(), high.y()));
   m_view->setCurve(curve, extent);
   const QString unit = QString::fromStdString(m.lengthUnit);
-  m_figures->setText(figures(m_set->original, tr("Original (drawn in the first colour)"), unit) + "\n" +
-                     figures(m_set->cognates[0], tr("Cognate 1 (pivots O2 and the third pivot O6)"), unit) + "\n" +
-                     figures(m_set->cognates[1], tr("Cognate 2 (pivots O6 and O4)"), unit));
+  // Each line keyed by a square of the colour its four-bar is drawn in.
+  const auto line = [&](int i, const k::CognateFourBar& f, const QString& title) {
+    return QStringLiteral("<span style=\"color:%1\">&#9632;</span> ").arg(CognatesView::colorOf(i).name()) +
+           figures(f, title, unit).toHtmlEscaped();
+  };
+  m_figures->setTextFormat(Qt::RichText);
+  m_figures->setText(line(0, m_set->original, tr("Original")) + "<br>" +
+                     line(1, m_set->cognates[0], tr("Cognate 1 (pivots O2 and the third pivot O6)")) + "<br>" +
+                     line(2, m_set->cognates[1], tr("Cognate 2 (pivots O6 and O4)")));
   followPose();
 }
 
@@ -161,7 +178,7 @@ void CognatesWindow::keep(int cognate) {
   if (!m_set) return;
   const k::Design design = m_set->cognates[static_cast<std::size_t>(cognate)].design;
   if (const auto why = m_document->edit(design, tr("Keep cognate %1").arg(cognate + 1)))
-    m_figures->setText(m_figures->text() + "\n" + *why);
+    m_figures->setText(m_figures->text() + "<br>" + why->toHtmlEscaped());
 }
 
 }  // namespace linkwright::ui

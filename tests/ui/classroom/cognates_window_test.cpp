@@ -56,6 +56,14 @@ TEST_CASE("the cognates window draws the three four-bars on one coupler point as
   CHECK(window.figuresText().contains("its crank turns with the original's, 1:1."));
   CHECK(window.figuresText().contains("its crank turns with the original's coupler, at "));
   checkDrawn(window, doc);
+  // The curve is P over the designer's cycle, and the frame holds every joint of the three.
+  const k::SweepResult& sweep = doc.sweep();
+  const std::size_t p = doc.mechanism().findPoint("P")->index;
+  REQUIRE(static_cast<std::size_t>(window.view()->curve().size()) == sweep.size());
+  CHECK(window.view()->curve().back() == QPointF(sweep.position[p].back().x(), sweep.position[p].back().y()));
+  for (const k::FourBarJoints& j : *window.view()->joints())
+    for (const Eigen::Vector2d& q : {j.o2, j.o4, j.b, j.c, j.p})
+      CHECK(window.view()->extent().adjusted(-1e-9, -1e-9, 1e-9, 1e-9).contains(QPointF(q.x(), q.y())));
   doc.setCrankAngle(k::degToRad(130.0));
   checkDrawn(window, doc);
 
@@ -82,6 +90,7 @@ TEST_CASE("the cognates window draws the three four-bars on one coupler point as
   CHECK_FALSE(window.cognates().has_value());
   CHECK(window.figuresText().startsWith("No cognates: "));
   CHECK_FALSE(window.view()->joints().has_value());
+  CHECK(window.view()->curve().isEmpty());
   CHECK_FALSE(window.keepButton(0)->isEnabled());
   CHECK_FALSE(window.playButton()->isEnabled());
 }

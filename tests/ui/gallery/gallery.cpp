@@ -8,6 +8,7 @@
 // and docs/compare.md give the commands for the presentation, inversion, polygon and compare
 // images, which need their own screen size or tool.
 
+#include "ui/classroom/cognates_window.h"
 #include "ui/compare/compare_dialog.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/main_window.h"
@@ -15,6 +16,7 @@
 #include "ui/plots/plot_panel.h"
 #include "ui/plots/plot_quantity.h"
 
+#include "kinematics/design/design.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/model/units.h"
@@ -119,6 +121,17 @@ const std::vector<View>& views() {
          if (w.document()->edit(d, "spring")) std::cerr << "linkwright_gallery: the boom's spring was refused\n";
          w.showForces();
        }},
+      {"cognates",
+       [](MainWindow& w) {
+         // The Miranda four-bar with its coupler point lifted off the coupler line.
+         if (w.windowTitle().contains("miranda")) {
+           auto lifted =
+               k::fourBarDesign({250.0, 100.0, 225.0, 150.0}, k::Branch::Open, "mm", k::CouplerPointSpec{112.5, 80.0});
+           if (lifted) w.document()->edit(*lifted, "coupler point");
+         }
+         w.document()->setCrankAngle(k::degToRad(60.0));
+         w.showCognates();
+       }},
       {"flywheel",
        [](MainWindow& w) {
          w.showForces();
@@ -145,7 +158,11 @@ bool render(const std::string& example, const View& view, double crankDeg, const
   view.show(window);
   if (crankDeg != 0.0) window.document()->setCrankAngle(k::degToRad(crankDeg));
   settle(window);
-  if (!window.grab().save(path, "PNG")) {
+  // A view that opens a window of its own (View ▸ Cognates…) is pictured by that window.
+  QWidget* shown = &window;
+  if (auto* cognates = window.findChild<linkwright::ui::CognatesWindow*>(); cognates && cognates->isVisible())
+    shown = cognates;
+  if (!shown->grab().save(path, "PNG")) {
     std::cerr << "linkwright_gallery: cannot write " << path.toStdString() << "\n";
     return false;
   }
@@ -173,6 +190,7 @@ constexpr DocImage kDocImages[] = {
     {"forces.png", "funsho-fourbar", "forces", 60.0},
     {"shaking.png", "funsho-fourbar", "shaking", 60.0},
     {"flywheel.png", "funsho-fourbar", "flywheel", 60.0},
+    {"cognates.png", "miranda-fourbar", "cognates", 0.0},
     {"boom_spring.png", "excavator-boom", "boom-spring", 0.0},
     {"balanced.png", "funsho-fourbar", "balanced", 60.0},
     {"balanced_forces.png", "funsho-fourbar", "balanced-forces", 60.0},
