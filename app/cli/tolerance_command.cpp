@@ -96,8 +96,10 @@ void printText(std::ostream& out, const Study& st, const std::string& source) {
     const auto [d, value] = mostSensitive(s, c);
     out << pad(b.column.name, width + 2) << pad(n(b.worstDeviation), 12)
         << pad(mc.used > 0 ? n(st.input.at(mc.nominal, b.worstGridSample)) : std::string(k::kUndefinedText), 22)
-        << pad(n(s.firstOrderWorst(c, mc.spec.tolerance)), 13) << s.dimensions[d].name << " (" << n(value) << " "
-        << unitOf(b.column, u) << "/" << u << ")\n";
+        << pad(n(s.firstOrderWorst(c, mc.spec.tolerance)), 13);
+    // The driven crank's ω and α are the driver's: sensitive to nothing.
+    if (value > 0.0) out << s.dimensions[d].name << " (" << n(value) << " " << unitOf(b.column, u) << "/" << u << ")\n";
+    else out << "none\n";
   }
   const k::SweepSensitivities& table = st.at ? *st.at : s;
   out << "\nsensitivities, "
