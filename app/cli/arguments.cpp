@@ -49,6 +49,10 @@ const std::set<std::string>& optionsOf(Command command) {
                                              "--radius",  "--spring", "--spring-search"};
   static const std::set<std::string> cognates{"--fourbar", "--example", "--unit", "--coupler-point",
                                               "-o",        "--output",  "--json"};
+  static const std::set<std::string> tolerance{"--fourbar", "--example", "--unit",  "--branch",    "--coupler-point",
+                                               "--rpm",     "--omega",   "--alpha", "--from",      "--to",
+                                               "--step",    "--samples", "--at",    "--tolerance", "--mc-samples",
+                                               "--seed",    "--json",    "-o",      "--output"};
   static const std::set<std::string> none{};
   switch (command) {
   case Command::Analyze: return analyze;
@@ -65,6 +69,7 @@ const std::set<std::string>& optionsOf(Command command) {
   case Command::Machine: return machine;
   case Command::Balance: return balance;
   case Command::Cognates: return cognates;
+  case Command::Tolerance: return tolerance;
   default: return none;
   }
 }
@@ -86,6 +91,7 @@ const char* commandName(Command command) {
   case Command::Machine: return "machine";
   case Command::Balance: return "balance";
   case Command::Cognates: return "cognates";
+  case Command::Tolerance: return "tolerance";
   default: return "linkwright-cli";
   }
 }
@@ -229,6 +235,17 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
     inv.rates = value;
   } else if (option == "--angles") {
     inv.angles = value;
+  } else if (option == "--tolerance" && inv.command == Command::Tolerance) {
+    return number(inv.tolerance);
+  } else if (option == "--mc-samples" || option == "--seed") {
+    long long n = 0;
+    const auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), n);
+    if (ec != std::errc{} || ptr != value.data() + value.size() || value.empty())
+      return usage(option, option + ": '" + value + "' is not a whole number");
+    if (option == "--seed" && n < 0)
+      return usage(option, option + " must be a whole number from 0 (got " + value + ")");
+    if (option == "--seed") inv.seed = static_cast<unsigned long long>(n);
+    else inv.monteCarloSamples = n;
   } else if (option == "--map" || option == "--offset" || option == "--tolerance") {
     return applyCompareOption(inv, option, value);
   } else if (option == "--cs") return number(inv.speedFluctuation);
@@ -330,6 +347,11 @@ std::optional<Error> checkCombination(const Invocation& inv) {
                                   " needs FILE.json or --example NAME: a linkage with its masses");
   if (inv.command == Command::Balance && !inv.outputFile)
     return usage("--output", "balance needs -o FILE.linkwright (where to write the balanced design)");
+  if (inv.command == Command::Tolerance && !inv.tolerance)
+    return usage("--tolerance", "tolerance needs --tolerance T (± on every length and pivot, in the length unit)");
+  if (inv.command == Command::Tolerance && inv.atDeg.size() > 1)
+    return usage("--at", "tolerance lists the sensitivities at one input: --at takes one value (got " +
+                             std::to_string(inv.atDeg.size()) + ")");
   if (inv.command == Command::Cognates && !inv.outputFile)
     return usage("--output",
                  "cognates needs -o PREFIX (the cognates are written to PREFIX-1.linkwright and PREFIX-2.linkwright)");
@@ -337,7 +359,7 @@ std::optional<Error> checkCombination(const Invocation& inv) {
       inv.command == Command::Analyze || inv.command == Command::Classify || inv.command == Command::Extremes ||
       inv.command == Command::Centres || inv.command == Command::Polygon || inv.command == Command::Inversions ||
       inv.command == Command::Dxf || inv.command == Command::Report || inv.command == Command::Compare ||
-      inv.command == Command::Machine || inv.command == Command::Cognates;
+      inv.command == Command::Machine || inv.command == Command::Cognates || inv.command == Command::Tolerance;
   if (needsMechanism && !inv.fourBar && !inv.example && !inv.documentPath)
     return usage("--fourbar", std::string(commandName(inv.command)) +
                                   " needs FILE.json, --fourbar FRAME,CRANK,COUPLER,ROCKER or --example NAME");
@@ -358,7 +380,7 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   if (args.empty())
     return usage("COMMAND",
                  "missing command (analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, "
-                 "report, compare, machine, balance, cognates, synthesize or examples; see --help)");
+                 "report, compare, machine, balance, cognates, tolerance, synthesize or examples; see --help)");
   const std::string& first = args[0];
   if (first == "--help" || first == "-h" || first == "help") {
     inv.command = Command::Help;
@@ -398,12 +420,14 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   else if (first == "machine") inv.command = Command::Machine;
   else if (first == "balance") inv.command = Command::Balance;
   else if (first == "cognates") inv.command = Command::Cognates;
+  else if (first == "tolerance") inv.command = Command::Tolerance;
   else if (!first.empty() && first[0] == '-')
     return usage(first, "unknown option '" + first + "' (see linkwright-cli --help)");
   else
     return usage(first, "unknown command '" + first +
                             "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, "
-                            "dxf, report, compare, machine, balance, cognates, synthesize, examples; see --help)");
+                            "dxf, report, compare, machine, balance, cognates, tolerance, synthesize, examples; see "
+                            "--help)");
   if (inv.command == Command::Arm) inv.lengthUnit = "m";  // the arm's seed (004) works in metres
 
   std::set<std::string> seen;
@@ -428,7 +452,7 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
         inv.command == Command::Analyze || inv.command == Command::Extremes || inv.command == Command::Classify ||
         inv.command == Command::Centres || inv.command == Command::Polygon || inv.command == Command::Inversions ||
         inv.command == Command::Dxf || inv.command == Command::Report || inv.command == Command::Machine ||
-        inv.command == Command::Balance || inv.command == Command::Cognates;
+        inv.command == Command::Balance || inv.command == Command::Cognates || inv.command == Command::Tolerance;
     if (takesDocument && !option.empty() && option[0] != '-' && !inlineValue) {
       if (inv.documentPath)
         return usage(option, "only one document can be analysed at a time (got '" + *inv.documentPath + "' and '" +

@@ -37,7 +37,8 @@ enum class Command {
   Compare,
   Machine,
   Balance,
-  Cognates
+  Cognates,
+  Tolerance
 };
 
 /// compare --offset: auto (fitted), none, or a value in degrees.
@@ -117,6 +118,10 @@ struct Invocation {
   std::optional<double> counterweightRadius;    ///< --radius, in link lengths
   std::optional<std::string> springEnds;        ///< --spring LINK:POINT,POINT (balance by a spring)
   std::optional<std::string> springSearchLink;  ///< --spring-search LINK (the spring's ends searched)
+  // tolerance (kinematics/design/tolerance_monte_carlo.h); the core checks the ranges.
+  std::optional<double> tolerance;             ///< --tolerance, ± on every dimension, length unit
+  std::optional<long long> monteCarloSamples;  ///< --mc-samples
+  std::optional<unsigned long long> seed;      ///< --seed
 };
 
 /// Parses the arguments after the program name.

@@ -45,6 +45,9 @@ Commands:
   cognates   a four-bar's two Roberts–Chebyshev cognates: the linkages whose coupler
              point traces the same curve, written as two documents, with their
              Grashof class, worst transmission angle and crank speeds
+  tolerance  ± a tolerance on every length and pivot: a Monte-Carlo band of the output
+             curves with the worst deviation per column, the first-order worst case
+             and the exact sensitivities ∂y/∂p beside it
   synthesize a linkage from the motion wanted: rocker swing and time ratio, slider or
              shaper stroke, function generator, coupler poses, coupler path; lists
              the candidates with their defects and writes the chosen one as a document
@@ -414,6 +417,29 @@ Output: the table, x, offset and tolerance used; per mapped column its worst dev
   ran, 2 for a bad table, mapping or option.
 )";
 
+constexpr const char* kToleranceOptions =
+    R"(tolerance options (FILE.json, --example NAME or --fourbar ...; its speed and grid are the
+defaults, and --rpm, --omega, --alpha, --from, --to, --step and --samples change them; see
+docs/tolerances.md):
+  --tolerance T         ± T on every length and pivot coordinate, in the length unit
+                        (required; 0 ≤ T < the shortest length)
+  --mc-samples N        Monte-Carlo samples, 1 to 100000 (default 1000), each a linkage
+                        with every dimension uniform within ±T, swept over the grid
+  --seed S              the samples' seed, a whole number (default 46): the same seed
+                        gives the same study on every machine
+  --at X                list every sensitivity at this one input (degrees, or the length
+                        unit, or seconds on a time base) instead of the largest over the grid
+  --json                the study as JSON: per column the worst deviation and where, the
+                        first-order worst case Σ|∂y/∂p|·T and the sensitivities
+  -o, --output FILE.csv the band: the input, then per column its nominal value and the
+                        lowest and highest of the samples (low_NAME, high_NAME)
+Output: per output column (each link's angle, ω and α, each moving point's x and y) the
+  Monte-Carlo worst deviation from the nominal curve and the input where, the first-order
+  worst case from the exact sensitivities (the chain rule through the solver, not finite
+  differences), and the dimension the column is most sensitive to; samples that do not
+  assemble at every input, or meet a toggle, are counted and left out of the band.
+)";
+
 constexpr const char* kExitCodes = R"(Exit codes:
   0  success
   1  the output file could not be written, or memory ran out (the old file is kept)
@@ -441,6 +467,7 @@ Examples:
   linkwright-cli machine --example funsho-fourbar --cs 0.02 --gear-ratio 10 --efficiency 0.9
   linkwright-cli balance --example funsho-fourbar -o balanced.linkwright
   linkwright-cli cognates --example thesis-crank-rocker --coupler-point 35,20 -o thesis
+  linkwright-cli tolerance --example thesis-crank-rocker --tolerance 0.05 --json
   linkwright-cli synthesize swing --swing 60 --time-ratio 1.3 --rocker 50 -o design.json
 )";
 
@@ -450,7 +477,7 @@ std::string helpText(const std::string& topic) {
   std::string text = kUsage;
   const bool sweeps = topic.empty() || topic == "analyze" || topic == "extremes";
   if (sweeps || topic == "classify" || topic == "centres" || topic == "polygon" || topic == "inversions" ||
-      topic == "dxf" || topic == "report" || topic == "compare")
+      topic == "dxf" || topic == "report" || topic == "compare" || topic == "tolerance")
     text += kMechanismOptions;
   if (sweeps) text += std::string("\n") + kAnalyzeOptions;
   if (topic.empty() || topic == "classify") text += std::string("\n") + kClassifyOptions;
@@ -464,6 +491,7 @@ std::string helpText(const std::string& topic) {
   if (topic.empty() || topic == "machine") text += std::string("\n") + kMachineOptions;
   if (topic.empty() || topic == "balance") text += std::string("\n") + kBalanceOptions;
   if (topic.empty() || topic == "cognates") text += std::string("\n") + kCognatesOptions;
+  if (topic.empty() || topic == "tolerance") text += std::string("\n") + kToleranceOptions;
   if (topic.empty() || topic == "synthesize") text += std::string("\n") + kSynthesizeOptions;
   return text + "\n" + kExitCodes;
 }
@@ -484,10 +512,11 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
         inv.helpTopic != "polygon" && inv.helpTopic != "inversions" && inv.helpTopic != "dxf" &&
         inv.helpTopic != "report" && inv.helpTopic != "compare" && inv.helpTopic != "accuracy" &&
         inv.helpTopic != "synthesize" && inv.helpTopic != "machine" && inv.helpTopic != "balance" &&
-        inv.helpTopic != "cognates" && inv.helpTopic != "examples" && inv.helpTopic != "linkwright-cli") {
+        inv.helpTopic != "cognates" && inv.helpTopic != "tolerance" && inv.helpTopic != "examples" &&
+        inv.helpTopic != "linkwright-cli") {
       err << "linkwright-cli: no help for '" << inv.helpTopic
           << "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, report, "
-             "compare, machine, balance, cognates, synthesize, examples)\n";
+             "compare, machine, balance, cognates, tolerance, synthesize, examples)\n";
       return toInt(ExitCode::BadInput);
     }
     out << helpText(inv.helpTopic == "linkwright-cli" || inv.helpTopic == "examples" ? "" : inv.helpTopic);
@@ -509,6 +538,7 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   case Command::Machine: return toInt(runMachine(inv, out, err));
   case Command::Balance: return toInt(runBalance(inv, out, err));
   case Command::Cognates: return toInt(runCognates(inv, out, err));
+  case Command::Tolerance: return toInt(runTolerance(inv, out, err));
   }
   return toInt(ExitCode::BadInput);
 }

@@ -6,7 +6,8 @@
 // given crank angles), inversions (a four-bar's or slider-crank's inversions), dxf (the links
 // as a DXF drawing), report (the lab-report PDF), compare (another tool's table against the
 // exact solution), synthesize (linkages from the motion wanted: kinematics/synthesis/),
-// cognates (a four-bar's Roberts–Chebyshev cognates) and examples (the built-ins).
+// cognates (a four-bar's Roberts–Chebyshev cognates), tolerance (sensitivities and a Monte-Carlo
+// tolerance study) and examples (the built-ins).
 
 #include "app/cli/arguments.h"
 #include "app/cli/exit_codes.h"
@@ -37,6 +38,7 @@ ExitCode runSynthesize(const Invocation& invocation, std::ostream& out, std::ost
 ExitCode runMachine(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runBalance(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runCognates(const Invocation& invocation, std::ostream& out, std::ostream& err);
+ExitCode runTolerance(const Invocation& invocation, std::ostream& out, std::ostream& err);
 
 /// What an example brings besides the linkage: the driver's speed and the input grid.
 struct GridDefaults {

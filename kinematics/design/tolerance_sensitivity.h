@@ -1,0 +1,50 @@
+#pragma once
+// The exact sensitivities of a linkage's outputs to its dimensions over a sweep: at every
+// sample of the grid, ∂y/∂p for each output column y (each moving link's angle other than the
+// input's, its ω and α, each moving point's x and y: sweep_columns.h's names and units) and
+// each dimension p (tolerance_dimensions.h, per length unit). They come from the pose
+// differentiated in jet arithmetic (analysis/pose_jet.h: the chain rule through the solver's
+// closed forms, nothing differenced), at the sweep's own poses and branches. From them, the
+// first-order worst case of a column under ± t on every dimension is max over the grid of
+// Σ_p |∂y/∂p|·t: what the Monte Carlo's worst deviation (tolerance_monte_carlo.h) tends to
+// as t shrinks, and bounds it to first order.
+
+#include "kinematics/design/tolerance_dimensions.h"
+#include "kinematics/model/result.h"
+#include "kinematics/solve/sweep.h"
+#include "kinematics/solve/sweep_columns.h"
+
+#include <vector>
+
+namespace linkwright::kinematics {
+
+/// The output columns a tolerance study reports for `mechanism`, in sweepColumns' order:
+/// link angles (not the input's), ω and α, then points' x and y.
+std::vector<SweepColumn> toleranceColumns(const Mechanism& mechanism);
+
+/// The value of an output column from a sweep's sample, with a link's angle unwrapped to
+/// the turn nearest `near` (degrees) so that two sweeps' angles compare.
+double toleranceColumnValue(const SweepColumn& column, const SweepResult& sweep, std::size_t sample, double near);
+
+struct SweepSensitivities {
+  std::vector<ToleranceDimension> dimensions;
+  std::vector<SweepColumn> columns;
+  SweepResult sweep;  ///< the nominal sweep: inputs, reports, values
+  /// derivative[c][d][j]: ∂(column c)/∂(dimension d) at sample j, in the column's unit per
+  /// length unit (deg/unit for angles); NaN where it is undefined: a rate at a toggle
+  /// (the report Singular), anything where the linkage is not assembled.
+  std::vector<std::vector<std::vector<double>>> derivative;
+
+  /// max over the samples of |∂(column)/∂(dimension)|; NaN if it is defined nowhere.
+  double largest(std::size_t column, std::size_t dimension) const;
+  /// Σ_d |∂(column)/∂d|·tolerance at `sample` (NaN where undefined).
+  double firstOrderDeviation(std::size_t column, std::size_t sample, double tolerance) const;
+  /// max over the samples of firstOrderDeviation, and where.
+  double firstOrderWorst(std::size_t column, double tolerance, std::size_t* sample = nullptr) const;
+};
+
+/// The sensitivities of `mechanism` over `spec`. Fails as sweep() does for an invalid
+/// mechanism or spec.
+Result<SweepSensitivities> sweepSensitivities(const Mechanism& mechanism, const SweepSpec& spec);
+
+}  // namespace linkwright::kinematics

@@ -1,0 +1,166 @@
+// The Monte-Carlo tolerance study (kinematics/design/tolerance_monte_carlo.h): every sampled
+// curve, rebuilt alone from its seed and index and swept again, lies in the band, which it
+// reaches; the worst deviation is the samples' own; a seed repeats and another seed differs;
+// for a small tolerance each sample's deviation is the sensitivities' first-order prediction
+// and the worst stays within the first-order worst case; failed samples are counted; bad
+// specs are refused with the field and the range named.
+
+#include "kinematics/design/tolerance_monte_carlo.h"
+#include "kinematics/design/examples.h"
+#include "kinematics/design/tolerance_sensitivity.h"
+#include "kinematics/model/fourbar.h"
+#include "kinematics/model/units.h"
+
+#include "tests/support/catch.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using namespace linkwright::kinematics;
+
+namespace {
+
+SweepSpec grid(std::size_t samples) {
+  SweepSpec spec;
+  spec.toAngle = 2.0 * kPi;
+  spec.samples = samples;
+  spec.omega = 2.0;
+  spec.alpha = 1.0;
+  return spec;
+}
+
+Mechanism thesisWithP() {
+  return makeFourBar(kThesisCrankRocker, Branch::Open, "mm", CouplerPointSpec{35.0, 20.0}).value();
+}
+
+// Sweeps each sample again from its offsets alone and checks it against the bands.
+void checkBandsHoldEverySample(const Mechanism& m, const SweepSpec& spec, const MonteCarloResult& r) {
+  std::vector<double> worst(r.bands.size(), 0.0);
+  std::vector<std::vector<double>> low(r.bands.size()), high(r.bands.size());
+  for (std::size_t b = 0; b < r.bands.size(); ++b) {
+    low[b].assign(spec.samples, std::numeric_limits<double>::infinity());
+    high[b].assign(spec.samples, -std::numeric_limits<double>::infinity());
+  }
+  std::size_t used = 0;
+  for (std::size_t k = 0; k < r.spec.samples; ++k) {
+    const auto offsets = toleranceSampleOffsets(r.spec, r.dimensions.size(), k);
+    for (const double o : offsets) REQUIRE(std::abs(o) <= r.spec.tolerance);
+    const SweepResult s = sweep(offsetDimensions(m, r.dimensions, offsets), spec).value();
+    if (!std::all_of(s.report.begin(), s.report.end(), [](const auto& p) { return p.status == PoseStatus::Ok; }))
+      continue;
+    ++used;
+    for (std::size_t b = 0; b < r.bands.size(); ++b) {
+      const ToleranceBand& band = r.bands[b];
+      for (std::size_t j = 0; j < s.size(); ++j) {
+        const double v = toleranceColumnValue(band.column, s, j, band.nominal[j]);
+        INFO(band.column.name << " sample " << k << " at " << j);
+        CHECK(v >= band.low[j]);
+        CHECK(v <= band.high[j]);
+        low[b][j] = std::min(low[b][j], v);
+        high[b][j] = std::max(high[b][j], v);
+        worst[b] = std::max(worst[b], std::abs(v - band.nominal[j]));
+      }
+    }
+  }
+  CHECK(used == r.used);
+  for (std::size_t b = 0; b < r.bands.size(); ++b) {
+    INFO(r.bands[b].column.name);
+    CHECK(r.bands[b].low == low[b]);  // the band is the samples' own envelope, not wider
+    CHECK(r.bands[b].high == high[b]);
+    CHECK(r.bands[b].worstDeviation == worst[b]);
+  }
+}
+
+std::size_t band(const MonteCarloResult& r, const std::string& name) {
+  for (std::size_t b = 0; b < r.bands.size(); ++b)
+    if (r.bands[b].column.name == name) return b;
+  FAIL("no column " << name);
+  return 0;
+}
+
+}  // namespace
+
+TEST_CASE("the Monte-Carlo band holds every sampled curve of a four-bar and of a six-bar, and is their envelope",
+          "[tolerance][monte-carlo]") {
+  for (const Mechanism& m : {thesisWithP(), findExample("watt-ii")->mechanism}) {
+    const SweepSpec spec = grid(37);
+    const MonteCarloResult r = toleranceMonteCarlo(m, spec, {0.5, 60, 7}).value();
+    CHECK(r.used == 60);
+    CHECK(r.bands.size() == toleranceColumns(m).size());
+    checkBandsHoldEverySample(m, spec, r);
+  }
+}
+
+TEST_CASE("the same seed gives the same study and another seed another", "[tolerance][monte-carlo]") {
+  const Mechanism m = findExample("ls3-engine")->mechanism;
+  const auto a = toleranceMonteCarlo(m, grid(25), {0.2, 40, 1}).value();
+  const auto b = toleranceMonteCarlo(m, grid(25), {0.2, 40, 1}).value();
+  const auto c = toleranceMonteCarlo(m, grid(25), {0.2, 40, 2}).value();
+  for (std::size_t i = 0; i < a.bands.size(); ++i) {
+    CHECK(a.bands[i].low == b.bands[i].low);
+    CHECK(a.bands[i].worstDeviation == b.bands[i].worstDeviation);
+  }
+  const std::size_t piston = band(a, "C_x_mm");
+  CHECK(a.bands[piston].worstDeviation != c.bands[piston].worstDeviation);
+  CHECK(a.bands[piston].low != c.bands[piston].low);
+}
+
+TEST_CASE(
+    "for a small tolerance each sample deviates as the sensitivities predict, and the worst stays within the "
+    "first-order worst case",
+    "[tolerance][monte-carlo]") {
+  const Mechanism m = thesisWithP();
+  const SweepSpec spec = grid(73);
+  const double t = 1e-3;
+  const MonteCarloResult r = toleranceMonteCarlo(m, spec, {t, 200, kDefaultToleranceSeed}).value();
+  const SweepSensitivities s = sweepSensitivities(m, spec).value();
+  REQUIRE(s.columns.size() == r.bands.size());
+  for (std::size_t c = 0; c < s.columns.size(); ++c) {
+    const double firstOrder = s.firstOrderWorst(c, t);
+    INFO(s.columns[c].name << ": Monte Carlo " << r.bands[c].worstDeviation << ", first order " << firstOrder);
+    CHECK(r.bands[c].worstDeviation <= firstOrder * (1 + 1e-3));
+    // 200 corners of a 9-dimensional box reach a good part of the furthest one (the crank's
+    // ω and α are the driver's: no deviation, round-off in the first order).
+    CHECK(r.bands[c].worstDeviation >= 0.4 * firstOrder - 1e-12);
+  }
+  // Each sample's deviation is Σ ∂y/∂p·δp to second order in t.
+  const std::size_t py = band(r, "P_y_mm");
+  for (std::size_t k = 0; k < 20; ++k) {
+    const auto offsets = toleranceSampleOffsets(r.spec, r.dimensions.size(), k);
+    const SweepResult sample = sweep(offsetDimensions(m, r.dimensions, offsets), spec).value();
+    for (std::size_t j = 0; j < sample.size(); ++j) {
+      double predicted = 0.0;
+      for (std::size_t d = 0; d < offsets.size(); ++d) predicted += s.derivative[py][d][j] * offsets[d];
+      const double actual = s.columns[py].value(sample, j) - r.bands[py].nominal[j];
+      CHECK(actual == Approx(predicted).margin(1e-3 * s.firstOrderWorst(py, t)));
+    }
+  }
+}
+
+TEST_CASE("samples that do not assemble are counted and left out of the band", "[tolerance][monte-carlo]") {
+  // 60/25/70/45 turns fully by 10 mm of Grashof margin: ± 4 mm on four lengths can take it away.
+  const MonteCarloResult r = toleranceMonteCarlo(thesisWithP(), grid(73), {4.0, 200, 3}).value();
+  CHECK(r.notAssembled > 0);
+  CHECK(r.used > 0);
+  CHECK(r.used + r.notAssembled + r.singular == 200);
+}
+
+TEST_CASE("a bad tolerance or sample count is refused with its field and range", "[tolerance][monte-carlo]") {
+  const Mechanism m = thesisWithP();
+  const auto message = [&](MonteCarloSpec spec) {
+    const auto r = toleranceMonteCarlo(m, grid(13), spec);
+    REQUIRE_FALSE(r.ok());
+    return r.error().field + ": " + r.error().message;
+  };
+  CHECK(message({-0.1, 10, 1}) ==
+        "tolerance: tolerance must be finite, at least 0 and less than the shortest length (crank length, 25 mm) "
+        "(got -0.1 mm)");
+  CHECK(message({std::numeric_limits<double>::quiet_NaN(), 10, 1}) ==
+        "tolerance: tolerance must be finite, at least 0 and less than the shortest length (crank length, 25 mm) "
+        "(got undefined)");
+  CHECK(message({25.0, 10, 1}).find("(got 25 mm)") != std::string::npos);
+  CHECK(message({0.1, 0, 1}) == "samples: samples must be between 1 and 100000 (got 0)");
+  CHECK(message({0.1, kMaxToleranceSamples + 1, 1}) == "samples: samples must be between 1 and 100000 (got 100001)");
+  CHECK(toleranceMonteCarlo(m, grid(13), {0.0, 3, 1}).value().bands[0].worstDeviation == 0.0);
+}

@@ -1,0 +1,138 @@
+// The exact sensitivities (kinematics/design/tolerance_sensitivity.h) against a second method:
+// central differences of the real solver, each dimension moved ±h and ±h/2, extrapolated by
+// Richardson (R = (4·D(h/2) − D(h))/3, whose error the difference |R − D(h/2)| bounds), for a
+// four-bar with a coupler point, a slider-crank, a dyadic six-bar and a six-bar Newton solves.
+
+#include "kinematics/design/tolerance_sensitivity.h"
+#include "kinematics/design/examples.h"
+#include "kinematics/model/fourbar.h"
+#include "kinematics/model/units.h"
+
+#include "tests/support/catch.h"
+
+#include <algorithm>
+#include <cmath>
+
+using namespace linkwright::kinematics;
+
+namespace {
+
+// Every 20° of a turn, with a crank acceleration so that α's sensitivities see it.
+SweepSpec grid(double stepDeg = 20.0) {
+  SweepSpec spec;
+  spec.fromAngle = degToRad(5.0);
+  spec.toAngle = degToRad(365.0);
+  spec.samples = static_cast<std::size_t>(std::lround(360.0 / stepDeg)) + 1;
+  spec.omega = 2.0;
+  spec.alpha = 3.0;
+  return spec;
+}
+
+// The column at every sample of the linkage with dimension d moved by `offset`.
+std::vector<double> moved(const Mechanism& m, const SweepSensitivities& s, std::size_t d, std::size_t c,
+                          const SweepSpec& spec, double offset) {
+  std::vector<double> offsets(s.dimensions.size(), 0.0);
+  offsets[d] = offset;
+  const SweepResult r = sweep(offsetDimensions(m, s.dimensions, offsets), spec).value();
+  std::vector<double> out(r.size());
+  for (std::size_t j = 0; j < r.size(); ++j)
+    out[j] = toleranceColumnValue(s.columns[c], r, j, s.columns[c].value(s.sweep, j));
+  return out;
+}
+
+// Checks every column's derivative with respect to every dimension at every sample against
+// Richardson's extrapolation of central differences; returns how many were compared.
+std::size_t checkAgainstRichardson(const Mechanism& m, const SweepSpec& spec, double h) {
+  const SweepSensitivities s = sweepSensitivities(m, spec).value();
+  REQUIRE(!s.dimensions.empty());
+  REQUIRE(!s.columns.empty());
+  std::size_t compared = 0;
+  for (std::size_t d = 0; d < s.dimensions.size(); ++d) {
+    for (std::size_t c = 0; c < s.columns.size(); ++c) {
+      const auto plus = moved(m, s, d, c, spec, h), minus = moved(m, s, d, c, spec, -h);
+      const auto plusHalf = moved(m, s, d, c, spec, h / 2), minusHalf = moved(m, s, d, c, spec, -h / 2);
+      double scale = 0.0;  // the column's size, for the round-off floor
+      for (std::size_t j = 0; j < s.sweep.size(); ++j) scale = std::max(scale, std::abs(plus[j]));
+      for (std::size_t j = 0; j < s.sweep.size(); ++j) {
+        const double exact = s.derivative[c][d][j];
+        REQUIRE(std::isfinite(exact));
+        const double coarse = (plus[j] - minus[j]) / (2 * h);
+        const double fine = (plusHalf[j] - minusHalf[j]) / h;
+        const double richardson = (4 * fine - coarse) / 3;
+        const double estimate = std::abs(richardson - fine);
+        const double roundOff = 1e-9 * scale / h;
+        INFO(s.columns[c].name << " by " << s.dimensions[d].name << " at sample " << j << ": exact " << exact
+                               << ", Richardson " << richardson << " ± " << estimate);
+        CHECK(std::abs(exact - richardson) <= estimate + roundOff);
+        ++compared;
+      }
+    }
+  }
+  return compared;
+}
+
+Mechanism example(const std::string& name) { return findExample(name).value().mechanism; }
+
+}  // namespace
+
+TEST_CASE("a four-bar's sensitivities, coupler point and rates included, are Richardson's limit of central differences",
+          "[tolerance][sensitivity]") {
+  const Mechanism m = makeFourBar(kThesisCrankRocker, Branch::Open, "mm", CouplerPointSpec{35.0, 20.0}).value();
+  const SweepSensitivities s = sweepSensitivities(m, grid()).value();
+  // Frame, crank, coupler, rocker lengths, O2's x and y, O4 across the frame line, P's two offsets.
+  std::vector<std::string> names;
+  for (const auto& d : s.dimensions) names.push_back(d.name);
+  CHECK(names == std::vector<std::string>{"frame length", "crank length", "coupler length", "rocker length", "O2 x",
+                                          "O2 y", "O4 across the frame line", "P along its link", "P across its link"});
+  CHECK(checkAgainstRichardson(m, grid(), 0.01) > 1000);
+}
+
+TEST_CASE("a slider-crank's sensitivities are Richardson's limit of central differences", "[tolerance][sensitivity]") {
+  const Mechanism m = example("ls3-engine");
+  CHECK(checkAgainstRichardson(m, grid(), 0.01) > 100);
+}
+
+TEST_CASE("a six-bar's sensitivities are Richardson's limit of central differences", "[tolerance][sensitivity]") {
+  CHECK(checkAgainstRichardson(example("watt-ii"), grid(30.0), 0.01) > 1000);
+}
+
+TEST_CASE("a six-bar that Newton solves has sensitivities that are Richardson's limit of central differences",
+          "[tolerance][sensitivity]") {
+  CHECK(checkAgainstRichardson(example("stephenson-ii"), grid(45.0), 0.01) > 100);
+}
+
+TEST_CASE("a dimension the outputs do not depend on has zero sensitivity, and the first-order worst case sums them",
+          "[tolerance][sensitivity]") {
+  const Mechanism m = makeFourBar(kThesisCrankRocker, Branch::Open, "mm", CouplerPointSpec{35.0, 20.0}).value();
+  const SweepSensitivities s = sweepSensitivities(m, grid()).value();
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(
+        std::find_if(s.columns.begin(), s.columns.end(), [&](const SweepColumn& c) { return c.name == name; }) -
+        s.columns.begin());
+  };
+  const auto dimension = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find_if(s.dimensions.begin(), s.dimensions.end(),
+                                                 [&](const ToleranceDimension& d) { return d.name == name; }) -
+                                    s.dimensions.begin());
+  };
+  // The rocker's angle does not depend on where P sits on the coupler. O2's x and the frame's
+  // length (O4 along the frame line, here +x) together move the whole linkage along x: P's x
+  // one for one, its y and every angle not at all.
+  CHECK(s.largest(column("rocker_angle_deg"), dimension("P along its link")) == 0.0);
+  const auto alongX = [&](const std::string& name, std::size_t j) {
+    return s.derivative[column(name)][dimension("O2 x")][j] + s.derivative[column(name)][dimension("frame length")][j];
+  };
+  for (std::size_t j = 0; j < s.sweep.size(); ++j) {
+    CHECK(alongX("P_x_mm", j) == Approx(1.0).margin(1e-12));
+    CHECK(alongX("P_y_mm", j) == Approx(0.0).margin(1e-12));
+    CHECK(alongX("coupler_angle_deg", j) == Approx(0.0).margin(1e-12));
+    CHECK(alongX("rocker_alpha_rad_s2", j) == Approx(0.0).margin(1e-12));
+    CHECK(s.derivative[column("P_x_mm")][dimension("O2 x")][j] != Approx(1.0).margin(1e-3));  // O2 alone is not
+  }
+  std::size_t at = 0;
+  const double worst = s.firstOrderWorst(column("P_y_mm"), 0.1, &at);
+  double sum = 0.0;
+  for (std::size_t d = 0; d < s.dimensions.size(); ++d) sum += std::abs(s.derivative[column("P_y_mm")][d][at]) * 0.1;
+  CHECK(worst == Approx(sum).epsilon(1e-14));
+  CHECK(worst > 0.1);  // at least O2's own y
+}
