@@ -50,8 +50,8 @@ void benchMonteCarlo(benchmark::State& state) {
     benchmark::DoNotOptimize(r->bands.data());
   }
   state.SetLabel(linkageName(static_cast<int>(state.range(0))));
-  state.counters["linkages_per_s"] =
-      benchmark::Counter(static_cast<double>(mc.samples) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["linkages_per_s"] = benchmark::Counter(
+      static_cast<double>(mc.samples) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
 void benchSensitivities(benchmark::State& state) {

@@ -148,9 +148,9 @@ void CognatesWindow::rebuild() {
   m_view->setCurve(curve, extent);
   const QString unit = QString::fromStdString(m.lengthUnit);
   // Each line keyed by a square of the colour its four-bar is drawn in.
-  const auto line = [&](int i, const k::CognateFourBar& f, const QString& title) {
+  const auto line = [&](int i, const k::CognateFourBar& fourBar, const QString& title) {
     return QStringLiteral("<span style=\"color:%1\">&#9632;</span> ").arg(CognatesView::colorOf(i).name()) +
-           figures(f, title, unit).toHtmlEscaped();
+           figures(fourBar, title, unit).toHtmlEscaped();
   };
   m_figures->setTextFormat(Qt::RichText);
   m_figures->setText(line(0, m_set->original, tr("Original")) + "<br>" +
