@@ -32,6 +32,7 @@
 #include "ui/plots/force_plot_panel.h"
 #include "ui/plots/plot_panel.h"
 #include "ui/plots/quality_bar.h"
+#include "ui/plots/tolerance_window.h"
 #include "ui/settings.h"
 #include "ui/synthesis/synthesis_panel.h"
 #include "ui/undo_keys.h"
@@ -266,6 +267,14 @@ CognatesWindow* MainWindow::showCognates() {
   return m_cognates;
 }
 
+ToleranceWindow* MainWindow::showTolerances() {
+  if (m_tolerances == nullptr) m_tolerances = new ToleranceWindow(m_document, this);
+  m_tolerances->show();
+  m_tolerances->raise();
+  m_tolerances->activateWindow();
+  return m_tolerances;
+}
+
 void MainWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
   buildNewMenu(file->addMenu(tr("&New")));
@@ -344,6 +353,8 @@ void MainWindow::buildMenus() {
   m_inversionsAction = view->addAction(tr("I&nversions…"), this, &MainWindow::showInversions);
   view->addAction(tr("&Cognates…"), this, &MainWindow::showCognates)
       ->setToolTip(tr("A four-bar's two Roberts–Chebyshev cognates, tracing its coupler curve with it"));
+  view->addAction(tr("&Tolerances…"), this, &MainWindow::showTolerances)
+      ->setToolTip(tr("How far the motion moves with every length and pivot made ± a tolerance"));
   const auto followLinkage = [this] {
     const std::optional<QString> why = inversionsUnavailable(m_document->design());
     m_inversionsAction->setEnabled(!why);

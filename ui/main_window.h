@@ -42,6 +42,7 @@ class PlotPanel;
 class PolygonPanel;
 class CompareDialog;
 class CognatesWindow;
+class ToleranceWindow;
 class InversionsWindow;
 class Settings;
 class SynthesisPanel;
@@ -108,6 +109,8 @@ public:
   InversionsWindow* showInversions();
   /// View ▸ Cognates…: shows (and raises) the window of the four-bar's cognates.
   CognatesWindow* showCognates();
+  /// View ▸ Tolerances…: shows (and raises) the window of the design's tolerance study.
+  ToleranceWindow* showTolerances();
   QAction* inversionsAction() const { return m_inversionsAction; }
   QAction* balanceAction() const { return m_balanceAction; }
   QAction* springBalanceAction() const { return m_springBalanceAction; }
@@ -190,6 +193,7 @@ private:
   QAction* m_springBalanceAction = nullptr;
   InversionsWindow* m_inversions = nullptr;
   CognatesWindow* m_cognates = nullptr;
+  ToleranceWindow* m_tolerances = nullptr;
   bool m_presentation = false;
   QString m_unsavedName;  ///< what the title calls a document not saved yet
   QFont m_normalFont;

@@ -15,6 +15,7 @@
 #include "ui/plots/force_plot_panel.h"
 #include "ui/plots/plot_panel.h"
 #include "ui/plots/plot_quantity.h"
+#include "ui/plots/tolerance_window.h"
 
 #include "kinematics/design/design.h"
 #include "kinematics/design/examples.h"
@@ -132,6 +133,7 @@ const std::vector<View>& views() {
          w.document()->setCrankAngle(k::degToRad(60.0));
          w.showCognates();
        }},
+      {"tolerances", [](MainWindow& w) { w.showTolerances(); }},
       {"flywheel",
        [](MainWindow& w) {
          w.showForces();
@@ -162,6 +164,8 @@ bool render(const std::string& example, const View& view, double crankDeg, const
   QWidget* shown = &window;
   if (auto* cognates = window.findChild<linkwright::ui::CognatesWindow*>(); cognates && cognates->isVisible())
     shown = cognates;
+  if (auto* tolerances = window.findChild<linkwright::ui::ToleranceWindow*>(); tolerances && tolerances->isVisible())
+    shown = tolerances;
   if (!shown->grab().save(path, "PNG")) {
     std::cerr << "linkwright_gallery: cannot write " << path.toStdString() << "\n";
     return false;
@@ -191,6 +195,7 @@ constexpr DocImage kDocImages[] = {
     {"shaking.png", "funsho-fourbar", "shaking", 60.0},
     {"flywheel.png", "funsho-fourbar", "flywheel", 60.0},
     {"cognates.png", "miranda-fourbar", "cognates", 0.0},
+    {"tolerances.png", "thesis-crank-rocker", "tolerances", 0.0},
     {"boom_spring.png", "excavator-boom", "boom-spring", 0.0},
     {"balanced.png", "funsho-fourbar", "balanced", 60.0},
     {"balanced_forces.png", "funsho-fourbar", "balanced-forces", 60.0},

@@ -1,0 +1,79 @@
+// View ▸ Tolerances… against the core (kinematics/design/tolerance_*.h): the band chart holds
+// the Monte-Carlo result's nominal, lowest and highest curves, the sensitivity chart the exact
+// derivatives, the summary its figures; an edit drops them at once and the study is redone for
+// the new design; a tolerance the core refuses leaves the window saying why with nothing drawn.
+#include "ui/plots/tolerance_window.h"
+
+#include "ui/document/mechanism_document.h"
+#include "ui/number_text.h"
+#include "ui/plots/force_chart_view.h"
+
+#include "kinematics/design/design.h"
+#include "kinematics/design/examples.h"
+
+#include "tests/support/catch.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QSpinBox>
+
+using namespace linkwright::ui;
+namespace k = linkwright::kinematics;
+
+TEST_CASE("the tolerance window draws the core's band and sensitivities, and follows the design",
+          "[plots][tolerance]") {
+  MechanismDocument doc;
+  doc.reset(*k::designForExample("thesis-crank-rocker"));
+  ToleranceWindow window(&doc);
+  window.samplesField()->setValue(200);
+  window.show();
+  window.refresh();
+  const int rocker = window.outputBox()->findText("rocker_angle_deg");
+  REQUIRE(rocker >= 0);
+  window.outputBox()->setCurrentIndex(rocker);
+
+  const k::Design& design = doc.design();
+  k::MonteCarloSpec spec;
+  spec.tolerance = 0.05;
+  spec.samples = 200;
+  const auto mc = k::toleranceMonteCarlo(design.mechanism, k::designSweepSpec(design), spec).value();
+  const auto& band = mc.bands[static_cast<std::size_t>(rocker)];
+  // The band about the nominal: highest − nominal ≥ 0 ≥ lowest − nominal, the core's values.
+  const QList<QPointF> high = window.bandChart()->samples(0), low = window.bandChart()->samples(1);
+  REQUIRE(static_cast<std::size_t>(high.size()) == band.nominal.size());
+  REQUIRE(low.size() == high.size());
+  for (qsizetype j = 0; j < high.size(); ++j) {
+    const auto i = static_cast<std::size_t>(j);
+    CHECK(high[j].y() == band.high[i] - band.nominal[i]);
+    CHECK(low[j].y() == band.low[i] - band.nominal[i]);
+    CHECK(low[j].y() <= 0.0);
+    CHECK(high[j].y() >= 0.0);
+  }
+  CHECK(window.summaryText().contains("worst deviation " + numberText(band.worstDeviation, 'g', 4)));
+
+  const auto sens = k::sweepSensitivities(design.mechanism, k::designSweepSpec(design)).value();
+  std::size_t column = 0;
+  while (sens.columns[column].name != "rocker_angle_deg") ++column;
+  REQUIRE(window.sensitivityChart()->samples(sens.dimensions.size() - 1).size() > 0);
+  CHECK(window.sensitivityChart()->samples(0).front().y() == sens.derivative[column][0].front());
+
+  // An edit drops the study at once (nothing from the old design stays drawn), then redoes it.
+  const k::Design longer = k::fourBarDesign({60.0, 25.0, 70.0, 50.0}).value();
+  REQUIRE_FALSE(doc.edit(longer, "rocker"));
+  CHECK_FALSE(window.bandChart()->isVisible());
+  window.refresh();
+  REQUIRE(window.bandChart()->isVisible());
+  const auto again = k::toleranceMonteCarlo(longer.mechanism, k::designSweepSpec(longer), spec).value();
+  const int index = window.outputBox()->currentIndex();
+  REQUIRE(window.outputBox()->currentText() == "rocker_angle_deg");  // the chosen output kept
+  const auto& newBand = again.bands[static_cast<std::size_t>(index)];
+  CHECK(window.bandChart()->samples(0).back().y() == newBand.high.back() - newBand.nominal.back());
+
+  // A tolerance as long as the crank: the core's refusal, and nothing drawn.
+  window.toleranceField()->setValue(25.0);
+  window.refresh();
+  CHECK(window.summaryText().startsWith("No tolerance study: "));
+  CHECK(window.summaryText().contains("25"));
+  CHECK_FALSE(window.bandChart()->isVisible());
+  CHECK(window.outputBox()->count() == 0);
+}

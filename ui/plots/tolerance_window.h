@@ -1,0 +1,67 @@
+#pragma once
+// View ▸ Tolerances… (issue 46): how much the motion moves when the parts are made a little
+// wrong. For the ± typed (one tolerance on every length and pivot coordinate, in the length
+// unit), the Monte-Carlo band of the chosen output over the design's grid (nominal, lowest and
+// highest of the samples: kinematics/design/tolerance_monte_carlo.h) and the exact sensitivity of
+// that output to each dimension against the input (tolerance_sensitivity.h), with the worst
+// deviation, the first-order worst case and the samples that did not assemble. It computes
+// while shown, once an edit has settled; a design it cannot study leaves it saying why, with
+// nothing drawn from before. Not modal.
+
+#include "ui/plots/angle_unit.h"
+
+#include "kinematics/design/tolerance_monte_carlo.h"
+#include "kinematics/design/tolerance_sensitivity.h"
+
+#include <QTimer>
+#include <QWidget>
+
+#include <optional>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QSpinBox;
+
+namespace linkwright::ui {
+
+class ForceChartView;
+class MechanismDocument;
+
+class ToleranceWindow : public QWidget {
+  Q_OBJECT
+public:
+  explicit ToleranceWindow(MechanismDocument* document, QWidget* parent = nullptr);
+
+  QDoubleSpinBox* toleranceField() const { return m_tolerance; }
+  QSpinBox* samplesField() const { return m_samples; }
+  QSpinBox* seedField() const { return m_seed; }
+  QComboBox* outputBox() const { return m_output; }
+  ForceChartView* bandChart() const { return m_band; }
+  ForceChartView* sensitivityChart() const { return m_sensitivity; }
+  /// The figures of the chosen output, or why there are none.
+  QString summaryText() const;
+  /// Computes now for the design and fields as they are (tests; the settle timer's end).
+  void refresh();
+
+protected:
+  void showEvent(QShowEvent* event) override;
+
+private:
+  void scheduleRefresh();
+  void redraw();
+
+  MechanismDocument* m_document;
+  QDoubleSpinBox* m_tolerance;
+  QSpinBox* m_samples;
+  QSpinBox* m_seed;
+  QComboBox* m_output;
+  QLabel* m_summary;
+  ForceChartView* m_band;
+  ForceChartView* m_sensitivity;
+  QTimer m_settle;
+  std::optional<kinematics::MonteCarloResult> m_monteCarlo;
+  std::optional<kinematics::SweepSensitivities> m_sensitivities;
+};
+
+}  // namespace linkwright::ui
