@@ -76,9 +76,14 @@ kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Invocation& inv, co
         return badValue(option,
                         "does not apply: this linkage's driver follows a motion law in time (give --law "
                         "to replace it)");
+    // The count checked as typed, before it becomes unsigned (-5 read as 18446744073709551611).
+    const long long samples = inv.samples.value_or(d.timeSamples);
+    if (samples < 1 || samples > kMaxSamples)
+      return badValue("--samples", "must be between 1 and " + std::to_string(kMaxSamples) + " (got " +
+                                       std::to_string(samples) + ")");
     kinematics::SweepSpec spec;
     spec.time = d.time;
-    spec.samples = static_cast<std::size_t>(inv.samples.value_or(d.timeSamples));
+    spec.samples = static_cast<std::size_t>(samples);
     if (auto e = kinematics::checkSweepSpec(spec, d.input)) return badValue("--samples", e->message);
     return spec;
   }

@@ -143,6 +143,17 @@ TEST_CASE("a linear driver's grid options are refused while its law applies", "[
   CHECK_THAT(r.err, Catch::Contains("--to does not apply: this linkage's driver follows a motion law in time"));
 }
 
+TEST_CASE("a law's --samples out of range is quoted as typed, once named", "[cli][driven][errors]") {
+  // It was read as unsigned: -5 came back as 18446744073709551611, and "--samples samples".
+  for (const std::string count : {"-5", "0", "10000001"}) {
+    CAPTURE(count);
+    const auto r = runCliCommand({"analyze", "--example", "excavator-boom", "--samples", count});
+    CHECK(r.code == 2);
+    CHECK(r.err == "linkwright-cli: --samples must be between 1 and 10000000 (got " + count + ")\n");
+  }
+  CHECK(runCliCommand({"analyze", "--example", "excavator-boom", "--samples", "3"}).code == 0);
+}
+
 TEST_CASE("a cylinder follows a measured s(t) table in metres", "[cli][driven][law]") {
   const std::string path = (std::filesystem::temp_directory_path() / "linkwright_cylinder_table.csv").string();
   {
