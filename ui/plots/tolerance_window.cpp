@@ -186,8 +186,8 @@ void ToleranceWindow::redraw() {
   }
   m_band->setCurves({{QStringLiteral("high"), tr("highest − nominal"), linkColor(2)},
                      {QStringLiteral("low"), tr("lowest − nominal"), linkColor(1)},
-                     {QStringLiteral("bound"), tr("± first-order worst case"), linkColor(0), Qt::DashLine},
-                     {QStringLiteral("bound_low"), tr("(its negative)"), linkColor(0), Qt::DashLine}});
+                     {QStringLiteral("bound"), tr("+ first-order worst case"), linkColor(0), Qt::DashLine},
+                     {QStringLiteral("bound_low"), tr("− first-order worst case"), linkColor(0), Qt::DashLine}});
   m_band->setData({runsOf(nominal, x.source, above), runsOf(nominal, x.source, below), runsOf(nominal, x.source, bound),
                    runsOf(nominal, x.source, negative)},
                   tr("deviation of %1").arg(name), x);
