@@ -250,30 +250,29 @@ void MainWindow::showForces() {
 
 MainWindow::~MainWindow() = default;
 
+namespace {
+
+// A window of the designer's own (inversions, cognates, tolerances): made on first ask, then
+// shown, raised and given the focus each time.
+template <typename Window>
+Window* showOwnWindow(Window*& window, MechanismDocument* document, QWidget* parent) {
+  if (window == nullptr) window = new Window(document, parent);
+  window->show();
+  window->raise();
+  window->activateWindow();
+  return window;
+}
+
+}  // namespace
+
 InversionsWindow* MainWindow::showInversions() {
   if (inversionsUnavailable(m_document->design())) return nullptr;
-  if (m_inversions == nullptr) m_inversions = new InversionsWindow(m_document, this);
-  m_inversions->show();
-  m_inversions->raise();
-  m_inversions->activateWindow();
-  return m_inversions;
+  return showOwnWindow(m_inversions, m_document, this);
 }
 
-CognatesWindow* MainWindow::showCognates() {
-  if (m_cognates == nullptr) m_cognates = new CognatesWindow(m_document, this);
-  m_cognates->show();
-  m_cognates->raise();
-  m_cognates->activateWindow();
-  return m_cognates;
-}
+CognatesWindow* MainWindow::showCognates() { return showOwnWindow(m_cognates, m_document, this); }
 
-ToleranceWindow* MainWindow::showTolerances() {
-  if (m_tolerances == nullptr) m_tolerances = new ToleranceWindow(m_document, this);
-  m_tolerances->show();
-  m_tolerances->raise();
-  m_tolerances->activateWindow();
-  return m_tolerances;
-}
+ToleranceWindow* MainWindow::showTolerances() { return showOwnWindow(m_tolerances, m_document, this); }
 
 void MainWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
