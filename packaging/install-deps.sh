@@ -34,6 +34,10 @@ packages=(
   libbenchmark-dev           # Google Benchmark: the core's speed benchmarks (docs/benchmarks.md)
   help2man                   # the manual pages, made from each program's --help
   dpkg-dev file              # cpack -G DEB: dpkg-shlibdeps finds the package's dependencies
+  pybind11-dev python3-dev   # the Python module (python/, docs/python.md): pybind11 2.10 on
+                             # Debian 12, 2.13 on Debian 13, and the Python headers it builds on
+  python3-numpy              # the module returns a sweep's columns as NumPy arrays
+  python3-pytest             # the module's tests (python/tests), run by CTest
 )
 
 package_check_packages=(
