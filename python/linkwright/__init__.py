@@ -1,0 +1,14 @@
+"""Linkwright's kinematics core in Python: planar linkages swept to NumPy columns.
+
+    >>> import linkwright
+    >>> crank_rocker = linkwright.example("thesis-crank-rocker")
+    >>> table = crank_rocker.sweep()            # dict: CLI column name -> numpy.ma.MaskedArray
+    >>> table["rocker_omega_rad_s"].max()
+
+The numbers are the core's, the column names and units are linkwright-cli's, and every refusal
+is a linkwright.Error (a ValueError) carrying the core's sentence. See docs/python.md.
+"""
+
+from ._linkwright import Error, Linkage, example, examples, four_bar, load
+
+__all__ = ["Error", "Linkage", "example", "examples", "four_bar", "load"]

@@ -1,0 +1,80 @@
+#pragma once
+// What the Python module holds for one linkage, and the sweep it tabulates, in plain C++ (no
+// pybind11 here, so this part reads as the core does). A Linkage is a mechanism with the grid
+// `linkwright-cli analyze` would use for the same source: an example's own speed and step, a
+// document's grid, or the CLI's defaults for a four-bar given by its lengths (ω = 1 rad/s,
+// 0° to 360° every 1°). The sweep is solved in windows and written through the core's
+// SweepCsvWriter, so the module's CSV is the CLI's byte for byte, and its columns are the
+// CSV's: the same rows (samples that assembled), the same names, the values the cells hold.
+
+#include "kinematics/dynamics/mass_properties.h"
+#include "kinematics/model/fourbar.h"
+#include "kinematics/model/mechanism.h"
+#include "kinematics/model/result.h"
+#include "kinematics/solve/sweep.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace linkwright::python {
+
+/// The input grid a sweep uses when the caller gives nothing, as the CLI's GridDefaults: in
+/// the input's display unit (degrees for a crank, the length unit for a linear driver).
+struct Grid {
+  double omega = 1.0;                        ///< the driver's rate: a crank's rad/s
+  double alpha = 0.0;                        ///< the driver's acceleration: a crank's rad/s²
+  double fromDeg = 0.0;                      ///< grid start: a crank's degrees
+  double toDeg = 360.0;                      ///< grid end: a crank's degrees
+  double stepDeg = 1.0;                      ///< grid step: a crank's degrees
+  std::optional<kinematics::TimeBase> time;  ///< a motion law in time, when the source has one
+  long long timeSamples = 0;                 ///< the instants of that time base
+};
+
+struct Linkage {
+  kinematics::Mechanism mechanism;
+  Grid grid;
+  kinematics::LinkageDynamics dynamics;  ///< masses and loads, if the source gives them
+  std::string kind;                      ///< "four-bar", "slider-crank", …; "" when not known
+  std::string source;                    ///< "the example NAME", a path, "four_bar()": for messages
+};
+
+/// The built-in example `name`; an unknown name is an error listing the names.
+kinematics::Result<Linkage> exampleLinkage(const std::string& name);
+
+/// A four-bar from its lengths (one length unit), on `branch` ("open" or "crossed"), with a
+/// coupler point P if given; errors name the length as typed ("coupler").
+kinematics::Result<Linkage> fourBarLinkage(const kinematics::FourBarLengths& lengths, const std::string& unit,
+                                           const std::string& branch,
+                                           std::optional<kinematics::CouplerPointSpec> couplerPoint);
+
+/// A Linkwright document, read through the core's bounded reader; errors name the file.
+kinematics::Result<Linkage> loadLinkage(const std::string& path);
+
+/// What a sweep call asks for; anything left out is the linkage's grid.
+struct SweepOptions {
+  std::optional<double> startDeg;  ///< grid start, degrees (a linear driver: its length unit)
+  std::optional<double> stopDeg;   ///< grid end, likewise; included when the step lands on it
+  std::optional<long long> samples;
+  std::optional<double> omega;  ///< rad/s (a linear driver: length unit per s)
+  std::optional<double> alpha;  ///< rad/s² (a linear driver: length unit per s²)
+};
+
+/// The sweep the options ask for: the CLI's sweepSpecFor with the Python parameter names in
+/// every refusal ("start_deg", "samples", …).
+kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Linkage& linkage, const SweepOptions& options);
+
+/// A swept table: the CSV text, and the same table as columns.
+struct SweepTable {
+  std::vector<std::string> names;           ///< CSV header, in order
+  std::vector<std::vector<double>> values;  ///< per column, per written row; 0 where `defined` is false
+  std::vector<std::vector<bool>> defined;   ///< per column, per row: false where the CSV cell is empty
+  std::string csv;                          ///< the CSV text (only when asked for)
+  kinematics::SweepSummary summary;         ///< what the sweep found besides its rows
+};
+
+/// Solves the sweep; `withCsv` also writes the CSV text, `withColumns` the columns.
+kinematics::Result<SweepTable> sweepTable(const Linkage& linkage, const kinematics::SweepSpec& spec, bool withCsv,
+                                          bool withColumns);
+
+}  // namespace linkwright::python

@@ -1,0 +1,263 @@
+// The pybind11 binding: `import linkwright` (python/linkwright/__init__.py re-exports this
+// extension, _linkwright). It converts and nothing more: every number comes from the core
+// (python/src/linkage.h), every refusal is the core's Error raised as linkwright.Error (a
+// ValueError) with the core's sentence, and no NaN or infinity reaches Python: a CSV cell the
+// core leaves empty is a masked entry of a numpy.ma.MaskedArray (docs/python.md).
+
+#include "python/src/linkage.h"
+
+#include "kinematics/design/design_analysis.h"
+#include "kinematics/design/examples.h"
+#include "kinematics/model/driver.h"
+#include "kinematics/model/units.h"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <exception>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace py = pybind11;
+namespace k = linkwright::kinematics;
+namespace lp = linkwright::python;
+
+namespace {
+
+// The core's refusal on its way to Python (translated in PYBIND11_MODULE below).
+struct CoreError : std::exception {
+  k::Error error;
+  explicit CoreError(k::Error e) : error(std::move(e)) {}
+  const char* what() const noexcept override { return error.message.c_str(); }
+};
+
+template <typename T>
+T valueOrThrow(k::Result<T> result) {
+  if (!result) throw CoreError(result.error());
+  return std::move(result).value();
+}
+
+const char* codeName(k::ErrorCode code) {
+  switch (code) {
+  case k::ErrorCode::InvalidValue: return "invalid-value";
+  case k::ErrorCode::InvalidStructure: return "invalid-structure";
+  case k::ErrorCode::NotAssemblable: return "not-assemblable";
+  case k::ErrorCode::Singular: return "singular";
+  case k::ErrorCode::Cancelled: return "cancelled";
+  }
+  return "invalid-value";
+}
+
+// A number for Python: None where the core has none, so no NaN or infinity is handed out.
+py::object number(double value) {
+  return std::isfinite(value) ? py::object(py::float_(value)) : py::object(py::none());
+}
+py::object degrees(double radians) { return number(k::radToDeg(radians)); }
+
+lp::SweepOptions sweepOptions(std::optional<double> startDeg, std::optional<double> stopDeg,
+                              std::optional<long long> samples, std::optional<double> omega,
+                              std::optional<double> alpha) {
+  return {startDeg, stopDeg, samples, omega, alpha};
+}
+
+py::dict sweepColumns(const lp::Linkage& linkage, const lp::SweepOptions& options) {
+  const k::SweepSpec spec = valueOrThrow(lp::sweepSpecFor(linkage, options));
+  lp::SweepTable table;
+  {
+    py::gil_scoped_release unlocked;  // the sweep is the core's alone
+    table = valueOrThrow(lp::sweepTable(linkage, spec, false, true));
+  }
+  const py::object maskedArray = py::module_::import("numpy.ma").attr("MaskedArray");
+  py::dict columns;
+  for (std::size_t c = 0; c < table.names.size(); ++c) {
+    const std::vector<double>& values = table.values[c];
+    py::array_t<double> data(static_cast<py::ssize_t>(values.size()));
+    py::array_t<bool> mask(static_cast<py::ssize_t>(values.size()));
+    auto d = data.mutable_unchecked<1>();
+    auto m = mask.mutable_unchecked<1>();
+    for (std::size_t j = 0; j < values.size(); ++j) {
+      d(static_cast<py::ssize_t>(j)) = values[j];
+      m(static_cast<py::ssize_t>(j)) = !table.defined[c][j];
+    }
+    columns[py::str(table.names[c])] = maskedArray(data, py::arg("mask") = mask);
+  }
+  return columns;
+}
+
+std::string sweepCsv(const lp::Linkage& linkage, const lp::SweepOptions& options) {
+  const k::SweepSpec spec = valueOrThrow(lp::sweepSpecFor(linkage, options));
+  py::gil_scoped_release unlocked;
+  return valueOrThrow(lp::sweepTable(linkage, spec, true, false)).csv;
+}
+
+py::dict classify(const lp::Linkage& linkage) {
+  const k::Mechanism& m = linkage.mechanism;
+  const k::SweepSpec spec = valueOrThrow(lp::sweepSpecFor(linkage, {}));
+  k::SolveRequest positions;
+  positions.velocities = false;
+  positions.accelerations = false;
+  positions.transmissionAngles = false;
+  const k::SweepResult grid = valueOrThrow(k::sweep(m, spec, positions));
+  const k::DesignAnalysis a = k::analyseDesign(m, grid);
+  const bool angle = k::inputKind(m) == k::InputKind::Angle;
+  const auto input = [angle](double q) { return angle ? degrees(q) : number(q); };
+
+  py::dict out;
+  out["kind"] = linkage.kind;
+  out["length_unit"] = m.lengthUnit;
+  out["input"] = k::inputName(m);
+  out["input_unit"] = k::inputUnit(m);
+  out["mobility"] = a.mobility.mobility;
+  out["links"] = a.mobility.links;
+  out["full_joints"] = a.mobility.fullJoints;
+  out["half_joints"] = a.mobility.halfJoints;
+  out["input_fully_rotates"] = a.inputRange.fullRotation;
+  py::list ranges;
+  for (const k::AngleRange& r : a.inputRange.ranges) ranges.append(py::make_tuple(input(r.from), input(r.to)));
+  out["input_ranges"] = ranges;
+  if (a.grashof) {
+    py::dict g;
+    g["class"] = std::string(k::toString(a.grashof->category));
+    g["shortest"] = std::string(k::toString(a.grashof->shortest));
+    g["longest"] = std::string(k::toString(a.grashof->longest));
+    g["s_plus_l"] = number(a.grashof->sPlusL);
+    g["p_plus_q"] = number(a.grashof->pPlusQ);
+    g["input_fully_rotates"] = a.grashof->inputFullyRotates;
+    g["output_fully_rotates"] = a.grashof->outputFullyRotates;
+    out["grashof"] = g;
+  } else {
+    out["grashof"] = py::none();
+  }
+  if (a.transmission) {
+    py::dict t;
+    t["minimum_deg"] = degrees(a.transmission->minimum);
+    t["minimum_at_crank_deg"] = degrees(a.transmission->minimumAtCrank);
+    t["maximum_deg"] = degrees(a.transmission->maximum);
+    t["maximum_at_crank_deg"] = degrees(a.transmission->maximumAtCrank);
+    t["worst_deviation_deg"] = degrees(a.transmission->worstDeviation);
+    out["transmission"] = t;
+  } else {
+    out["transmission"] = py::none();
+  }
+  if (a.quickReturn) {
+    py::dict q;
+    q["time_ratio"] = number(a.quickReturn->timeRatio);
+    q["slow_stroke_crank_arc_deg"] = degrees(a.quickReturn->slowStrokeCrankArc);
+    q["quick_stroke_crank_arc_deg"] = degrees(a.quickReturn->quickStrokeCrankArc);
+    q["rocker_swing_deg"] = degrees(a.quickReturn->rockerSwing);
+    q["stroke"] = number(a.quickReturn->stroke);
+    q["whitworth"] = a.quickReturn->whitworth;
+    out["quick_return"] = q;
+  } else {
+    out["quick_return"] = py::none();
+  }
+  return out;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_linkwright, module) {
+  module.doc() = "Linkwright's kinematics core: planar linkages swept to NumPy columns (docs/python.md).";
+
+  static py::exception<CoreError> error(module, "Error", PyExc_ValueError);
+  error.doc() =
+      "A refusal of Linkwright's core: the message names the field, the value and the accepted range. "
+      "Attributes: field (str), code (str).";
+  py::register_exception_translator([](std::exception_ptr thrown) {
+    try {
+      if (thrown) std::rethrow_exception(thrown);
+    } catch (const CoreError& e) {
+      const auto type = py::reinterpret_borrow<py::object>(error);
+      py::object instance = type(e.error.message);
+      instance.attr("field") = e.error.field;
+      instance.attr("code") = codeName(e.error.code);
+      PyErr_SetObject(error.ptr(), instance.ptr());
+    }
+  });
+
+  py::class_<lp::Linkage>(module, "Linkage", "A planar linkage with the input grid linkwright-cli analyze uses for it.")
+      .def_property_readonly(
+          "kind", [](const lp::Linkage& l) { return l.kind; }, "Its label: 'four-bar', 'slider-crank', …")
+      .def_property_readonly(
+          "source", [](const lp::Linkage& l) { return l.source; }, "Where it came from, as messages name it.")
+      .def_property_readonly(
+          "length_unit", [](const lp::Linkage& l) { return l.mechanism.lengthUnit; }, "The unit of every length.")
+      .def_property_readonly(
+          "points",
+          [](const lp::Linkage& l) {
+            std::vector<std::string> names;
+            for (const k::Point& p : l.mechanism.points) names.push_back(p.name);
+            return names;
+          },
+          "The points' names, in the model's order.")
+      .def_property_readonly(
+          "links",
+          [](const lp::Linkage& l) {
+            std::vector<std::string> names;
+            for (const k::Link& link : l.mechanism.links) names.push_back(link.name);
+            return names;
+          },
+          "The links' names, in the model's order.")
+      .def(
+          "sweep",
+          [](const lp::Linkage& l, std::optional<double> startDeg, std::optional<double> stopDeg,
+             std::optional<long long> samples, std::optional<double> omega, std::optional<double> alpha) {
+            return sweepColumns(l, sweepOptions(startDeg, stopDeg, samples, omega, alpha));
+          },
+          py::arg("start_deg") = py::none(), py::arg("stop_deg") = py::none(), py::arg("samples") = py::none(),
+          py::arg("omega") = py::none(), py::arg("alpha") = py::none(),
+          "Sweeps the linkage over an input grid and returns its table as a dict of column name to "
+          "numpy.ma.MaskedArray, with exactly linkwright-cli analyze's column names and rows. What is not given "
+          "is the linkage's own grid (an example's step, a document's grid; 0° to 360° every 1° at 1 rad/s for "
+          "four_bar()). start_deg and stop_deg are degrees for a crank (the length unit for a linear driver); "
+          "samples replaces the step; omega in rad/s, alpha in rad/s². Rows where the linkage cannot be "
+          "assembled are left out; at a toggle position the rate entries are masked (the CSV's empty cells).")
+      .def(
+          "sweep_csv",
+          [](const lp::Linkage& l, std::optional<double> startDeg, std::optional<double> stopDeg,
+             std::optional<long long> samples, std::optional<double> omega, std::optional<double> alpha) {
+            return sweepCsv(l, sweepOptions(startDeg, stopDeg, samples, omega, alpha));
+          },
+          py::arg("start_deg") = py::none(), py::arg("stop_deg") = py::none(), py::arg("samples") = py::none(),
+          py::arg("omega") = py::none(), py::arg("alpha") = py::none(),
+          "The same sweep as CSV text, written by the core's CSV writer: byte for byte linkwright-cli analyze's "
+          "output (CRLF line ends).")
+      .def("classify", &classify,
+           "What the linkage is: mobility, the input ranges where it assembles, and for a four-bar its Grashof "
+           "class and transmission-angle range, for a quick return its time ratio and stroke. Angles in degrees.")
+      .def("__repr__", [](const lp::Linkage& l) {
+        return "<linkwright.Linkage " + (l.kind.empty() ? std::string("linkage") : l.kind) + " from " + l.source + ">";
+      });
+
+  module.def(
+      "examples",
+      [] {
+        std::vector<std::string> names;
+        for (const k::Example& e : k::examples()) names.push_back(e.name);
+        return names;
+      },
+      "The names of the built-in examples, in display order (linkwright-cli examples).");
+  module.def(
+      "example", [](const std::string& name) { return valueOrThrow(lp::exampleLinkage(name)); }, py::arg("name"),
+      "The built-in example `name`, with its own speed and grid.");
+  module.def(
+      "four_bar",
+      [](double frame, double crank, double coupler, double rocker, const std::string& unit, const std::string& branch,
+         std::optional<std::pair<double, double>> couplerPoint) {
+        std::optional<k::CouplerPointSpec> point;
+        if (couplerPoint) point = k::CouplerPointSpec{couplerPoint->first, couplerPoint->second};
+        return valueOrThrow(lp::fourBarLinkage({frame, crank, coupler, rocker}, unit, branch, point));
+      },
+      py::arg("frame"), py::arg("crank"), py::arg("coupler"), py::arg("rocker"), py::arg("unit") = "mm",
+      py::arg("branch") = "open", py::arg("coupler_point") = py::none(),
+      "A four-bar from its lengths (one unit): ground pivots O2 at the origin and O4 at (frame, 0), crank "
+      "O2→B, coupler B→C, rocker O4→C, on the 'open' or 'crossed' branch; coupler_point=(along, across) adds "
+      "P on the coupler (along B→C, across 90° CCW from it).");
+  module.def(
+      "load", [](const std::string& path) { return valueOrThrow(lp::loadLinkage(path)); }, py::arg("path"),
+      "A Linkwright document (.linkwright JSON), read as linkwright-cli reads it.");
+}
