@@ -190,7 +190,6 @@ k::Result<SweepTable> sweepTable(const Linkage& linkage, const k::SweepSpec& spe
   });
   if (!swept) return swept.error();
   table.summary = std::move(swept).value();
-  if (withColumns && columns.empty()) table.names = k::io::sweepCsvHeader(m, {});
   table.csv = std::move(csvText).str();
   return table;
 }
