@@ -6,9 +6,10 @@
     >>> table["rocker_omega_rad_s"].max()
 
 The numbers are the core's, the column names and units are linkwright-cli's, and every refusal
-is a linkwright.Error (a ValueError) carrying the core's sentence. See docs/python.md.
+is a linkwright.Error (a ValueError) carrying the core's sentence; what linkwright-cli notes on
+stderr about a sweep is a linkwright.SweepWarning. See docs/python.md.
 """
 
-from ._linkwright import Error, Linkage, example, examples, four_bar, load
+from ._linkwright import Error, Linkage, SweepWarning, example, examples, four_bar, load
 
-__all__ = ["Error", "Linkage", "example", "examples", "four_bar", "load"]
+__all__ = ["Error", "Linkage", "SweepWarning", "example", "examples", "four_bar", "load"]

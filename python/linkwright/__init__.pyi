@@ -10,6 +10,9 @@ class Error(ValueError):
     field: str
     code: Literal["invalid-value", "invalid-structure", "not-assemblable", "singular", "cancelled"]
 
+class SweepWarning(UserWarning):
+    """What linkwright-cli analyze notes on stderr: rows left out, toggles, locks."""
+
 class Linkage:
     """A planar linkage with the input grid linkwright-cli analyze uses for it."""
 

@@ -159,6 +159,46 @@ k::Result<k::SweepSpec> sweepSpecFor(const Linkage& linkage, const SweepOptions&
   return spec;
 }
 
+namespace {
+
+// "30°" for a crank, "12 mm" for a linear driver, as the CLI writes an input.
+std::string inputText(const k::Mechanism& m, double q) {
+  const std::string unit = k::inputUnit(m);
+  return k::formatShort(k::inputDisplayValue(m, q)) + (unit == "°" ? unit : " " + unit);
+}
+
+// "crank angles", "tip path positions", "actuator A–C lengths".
+std::string inputsName(const k::Mechanism& m) {
+  std::string name = k::inputName(m);
+  return name.ends_with("position") || name.ends_with("length") || name.ends_with("angle") ? name + "s" : name;
+}
+
+}  // namespace
+
+std::vector<std::string> sweepNotes(const k::Mechanism& m, const k::SweepSummary& summary) {
+  std::vector<std::string> notes;
+  if (!summary.notAssembled.empty()) {
+    std::string ranges;
+    for (const k::AngleRange& r : summary.notAssembled) {
+      if (!ranges.empty()) ranges += ", ";
+      ranges += r.from == r.to ? inputText(m, r.from) : inputText(m, r.from) + " to " + inputText(m, r.to);
+    }
+    std::string note =
+        "the linkage cannot be assembled at " + std::to_string(summary.samples - summary.assembledSamples) + " of " +
+        std::to_string(summary.samples) + " requested " + inputsName(m) + " (" + ranges + "); those rows are left out";
+    if (summary.firstFailure) note += ". " + *summary.firstFailure;
+    notes.push_back(note);
+  }
+  for (const double q : summary.singularAngles)
+    notes.push_back("toggle position at " + k::inputName(m) + " " + inputText(m, q) +
+                    ": the rates are undefined there (masked)");
+  for (const k::AngleRange& step : summary.lockedBetween)
+    notes.push_back("the linkage locks between " + inputsName(m) + " " + inputText(m, step.from) + " and " +
+                    inputText(m, step.to) + "; from " + inputText(m, step.to) +
+                    " on it is assembled afresh on the chosen branches, so points jump there");
+  return notes;
+}
+
 k::Result<SweepTable> sweepTable(const Linkage& linkage, const k::SweepSpec& spec, bool withCsv, bool withColumns) {
   const k::Mechanism& m = linkage.mechanism;
   SweepTable table;

@@ -73,6 +73,11 @@ struct SweepTable {
   kinematics::SweepSummary summary;         ///< what the sweep found besides its rows
 };
 
+/// What linkwright-cli analyze notes on stderr about a sweep, as sentences: the samples that
+/// cannot be assembled (their rows left out), toggle positions (their rates masked) and locks
+/// between samples. Empty when the sweep went through cleanly.
+std::vector<std::string> sweepNotes(const kinematics::Mechanism& mechanism, const kinematics::SweepSummary& summary);
+
 /// Solves the sweep; `withCsv` also writes the CSV text, `withColumns` the columns.
 kinematics::Result<SweepTable> sweepTable(const Linkage& linkage, const kinematics::SweepSpec& spec, bool withCsv,
                                           bool withColumns);

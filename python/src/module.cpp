@@ -64,6 +64,15 @@ lp::SweepOptions sweepOptions(std::optional<double> startDeg, std::optional<doub
   return {startDeg, stopDeg, samples, omega, alpha};
 }
 
+// The CLI's notes on stderr, as Python warnings (linkwright.SweepWarning): a warning filter
+// set to "error" makes them exceptions.
+py::handle sweepWarning;
+
+void warnAbout(const lp::Linkage& linkage, const k::SweepSummary& summary) {
+  for (const std::string& note : lp::sweepNotes(linkage.mechanism, summary))
+    if (PyErr_WarnEx(sweepWarning.ptr(), note.c_str(), 2) != 0) throw py::error_already_set();
+}
+
 py::dict sweepColumns(const lp::Linkage& linkage, const lp::SweepOptions& options) {
   const k::SweepSpec spec = valueOrThrow(lp::sweepSpecFor(linkage, options));
   lp::SweepTable table;
@@ -71,6 +80,7 @@ py::dict sweepColumns(const lp::Linkage& linkage, const lp::SweepOptions& option
     py::gil_scoped_release unlocked;  // the sweep is the core's alone
     table = valueOrThrow(lp::sweepTable(linkage, spec, false, true));
   }
+  warnAbout(linkage, table.summary);
   const py::object maskedArray = py::module_::import("numpy.ma").attr("MaskedArray");
   py::dict columns;
   for (std::size_t c = 0; c < table.names.size(); ++c) {
@@ -90,8 +100,13 @@ py::dict sweepColumns(const lp::Linkage& linkage, const lp::SweepOptions& option
 
 std::string sweepCsv(const lp::Linkage& linkage, const lp::SweepOptions& options) {
   const k::SweepSpec spec = valueOrThrow(lp::sweepSpecFor(linkage, options));
-  py::gil_scoped_release unlocked;
-  return valueOrThrow(lp::sweepTable(linkage, spec, true, false)).csv;
+  lp::SweepTable table;
+  {
+    py::gil_scoped_release unlocked;
+    table = valueOrThrow(lp::sweepTable(linkage, spec, true, false));
+  }
+  warnAbout(linkage, table.summary);
+  return std::move(table.csv);
 }
 
 py::dict classify(const lp::Linkage& linkage) {
@@ -178,6 +193,13 @@ PYBIND11_MODULE(_linkwright, module) {
       PyErr_SetObject(error.ptr(), instance.ptr());
     }
   });
+
+  sweepWarning = PyErr_NewExceptionWithDoc("linkwright.SweepWarning",
+                                           "What linkwright-cli analyze notes on stderr about a sweep: samples that "
+                                           "cannot be assembled (rows left out), toggles (rates masked), locks.",
+                                           PyExc_UserWarning, nullptr);
+  if (!sweepWarning) throw py::error_already_set();
+  module.add_object("SweepWarning", sweepWarning);
 
   py::class_<lp::Linkage>(module, "Linkage", "A planar linkage with the input grid linkwright-cli analyze uses for it.")
       .def_property_readonly(

@@ -3,6 +3,7 @@
 import csv
 import io
 import subprocess
+import warnings
 
 import numpy
 import pytest
@@ -75,7 +76,8 @@ def test_no_nan_or_infinity_is_returned(name):
 def test_a_toggle_masks_the_rates_not_the_positions():
     # A change-point four-bar (S + L = P + Q) passes a toggle at 0°: its rates are undefined
     # there, its positions are not.
-    table = linkwright.four_bar(40, 20, 40, 20).sweep(start_deg=0, stop_deg=90, samples=4)
+    with pytest.warns(linkwright.SweepWarning):
+        table = linkwright.four_bar(40, 20, 40, 20).sweep(start_deg=0, stop_deg=90, samples=4)
     assert numpy.ma.getmaskarray(table["rocker_omega_rad_s"])[0]
     assert not numpy.ma.getmaskarray(table["C_x_mm"]).any()
     assert numpy.isfinite(table["rocker_omega_rad_s"].data).all()
@@ -87,11 +89,31 @@ def test_the_grid_columns_hold_the_grid_as_asked():
     assert not numpy.ma.getmaskarray(table["crank_angle_deg"]).any()
 
 
-def test_rows_that_cannot_be_assembled_are_left_out():
+def test_rows_that_cannot_be_assembled_are_left_out_with_a_warning():
     # A crank longer than frame + rocker − coupler allows: only part of the turn assembles.
     linkage = linkwright.four_bar(60, 40, 30, 45)
-    table = linkage.sweep(start_deg=0, stop_deg=359, samples=360)
+    with pytest.warns(linkwright.SweepWarning, match=r"cannot be assembled at \d+ of 360 requested crank angles"):
+        table = linkage.sweep(start_deg=0, stop_deg=359, samples=360)
     angles = table["crank_angle_deg"]
     assert 0 < len(angles) < 360
-    header, rows = parse(linkage.sweep_csv(start_deg=0, stop_deg=359, samples=360))
+    with pytest.warns(linkwright.SweepWarning, match="those rows are left out"):
+        header, rows = parse(linkage.sweep_csv(start_deg=0, stop_deg=359, samples=360))
     assert len(rows) == len(angles)
+
+
+def test_a_toggle_is_a_warning_too():
+    with pytest.warns(linkwright.SweepWarning, match="toggle position at crank angle 0°"):
+        linkwright.four_bar(40, 20, 40, 20).sweep(start_deg=0, stop_deg=90, samples=4)
+
+
+def test_warnings_can_be_errors():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", linkwright.SweepWarning)
+        with pytest.raises(linkwright.SweepWarning):
+            linkwright.four_bar(40, 20, 40, 20).sweep(start_deg=0, stop_deg=90, samples=4)
+
+
+def test_a_clean_sweep_warns_nothing():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        linkwright.example("thesis-crank-rocker").sweep()
