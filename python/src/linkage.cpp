@@ -63,6 +63,10 @@ k::Result<Linkage> exampleLinkage(const std::string& name) {
 
 k::Result<Linkage> fourBarLinkage(const k::FourBarLengths& lengths, const std::string& unit, const std::string& branch,
                                   std::optional<k::CouplerPointSpec> couplerPoint) {
+  // As the CLI's --unit: the unit is part of every column name.
+  if (unit.empty() ||
+      unit.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ") != std::string::npos)
+    return badValue("unit", "must be a unit name made of letters, e.g. mm, m, in (got '" + unit + "')");
   if (branch != "open" && branch != "crossed")
     return badValue("branch", "must be \"open\" or \"crossed\" (got \"" + branch + "\")");
   if (couplerPoint) {

@@ -42,6 +42,14 @@ def test_unknown_example_lists_the_names():
     assert "thesis-crank-rocker" in message
 
 
+@pytest.mark.parametrize("unit", ["", "m m", "mm,", "µm"])
+def test_a_unit_is_letters(unit):
+    with pytest.raises(linkwright.Error) as caught:
+        linkwright.four_bar(60, 25, 70, 45, unit=unit)
+    assert caught.value.field == "unit"
+    assert str(caught.value) == "unit must be a unit name made of letters, e.g. mm, m, in (got '%s')" % unit
+
+
 def test_unknown_branch():
     with pytest.raises(linkwright.Error, match=r'branch must be "open" or "crossed" \(got "sideways"\)'):
         linkwright.four_bar(60, 25, 70, 45, branch="sideways")
