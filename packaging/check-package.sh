@@ -3,7 +3,7 @@
 # Debian release it was built for (its version ends +deb12 or +deb13), with that release's tools:
 #   1. `apt-get install ./linkwright_*.deb` pulls in no -dev package, linkwright-cli classifies
 #      the thesis crank-rocker and the designer renders a window offscreen; the picture is
-#      copied to SCREENSHOT;
+#      copied to SCREENSHOT; `import linkwright` sweeps the crank-rocker, if the package has it;
 #   2. then, in the same root, the release's lintian finds no error (warnings are printed), and
 #      the installed AppStream data passes appstreamcli validate --pedantic and the desktop
 #      entry desktop-file-validate.
@@ -27,6 +27,11 @@ case "$version" in
   *) echo "check-package: version $version names no Debian release we build for (+deb12 or +deb13)" >&2; exit 2 ;;
 esac
 
+# The Python module (python/), when the build made it: installed, it imports and sweeps.
+python_module=no
+contents=$(dpkg-deb -c "$deb")  # whole, not piped into grep -q: pipefail would see a SIGPIPE
+if grep -q '/dist-packages/linkwright/__init__.py$' <<<"$contents"; then python_module=yes; fi
+
 step "install $(basename "$deb") on a fresh $release root"
 "$here/fresh-root.sh" create "$root" "$release"
 cp "$deb" "$root/tmp/"
@@ -47,6 +52,9 @@ deb_in_root=/tmp/$(basename "$deb")
   grep -q 'crank-rocker' /tmp/classify.txt
   QT_QPA_PLATFORM=offscreen linkwright --screenshot /tmp/shot.png
   test -s /tmp/shot.png
+  if [[ $python_module == yes ]]; then
+    python3 -c 'import linkwright; t = linkwright.example(\"thesis-crank-rocker\").sweep(); print(\"import linkwright:\", len(t), \"columns of\", t[\"crank_angle_deg\"].size, \"rows\")'
+  fi
 "
 cp "$root/tmp/shot.png" "$screenshot"
 if [[ "$(head -c 8 "$screenshot" | od -An -tx1 | tr -d ' \n')" != 89504e470d0a1a0a ]]; then

@@ -91,4 +91,9 @@ if(TARGET linkwright)
   # only recommends them and the offscreen one alone cannot open a window.
   set(CPACK_DEBIAN_PACKAGE_DEPENDS "${CPACK_DEBIAN_PACKAGE_DEPENDS}, qt6-qpa-plugins")
 endif()
+if(LINKWRIGHT_PYTHON_DEPENDS)
+  # import linkwright (python/CMakeLists.txt): its interpreter version and NumPy, which
+  # dpkg-shlibdeps cannot see (an extension links no libpython).
+  set(CPACK_DEBIAN_PACKAGE_DEPENDS "${CPACK_DEBIAN_PACKAGE_DEPENDS}, ${LINKWRIGHT_PYTHON_DEPENDS}")
+endif()
 include(CPack)
