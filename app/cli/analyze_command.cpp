@@ -2,13 +2,12 @@
 #include "app/cli/progress.h"
 #include "app/cli/text_table.h"
 
-#include "kinematics/design/design_analysis.h"
+#include "kinematics/design/sweep_notes.h"
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/safe_file.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/number_text.h"
-#include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 
@@ -24,37 +23,14 @@ using kinematics::Error;
 using kinematics::ErrorCode;
 using kinematics::formatShort;
 
-// An input value in the driver's display unit: "30°" for a crank, "12 mm" for a linear driver.
-std::string inputText(const kinematics::Mechanism& m, double q) {
-  const std::string unit = kinematics::inputUnit(m);
-  return formatShort(kinematics::inputDisplayValue(m, q)) + (unit == "°" ? unit : " " + unit);
-}
-
-std::string rangesText(const kinematics::Mechanism& m, const std::vector<kinematics::AngleRange>& ranges) {
-  std::string text;
-  for (const auto& r : ranges) {
-    if (!text.empty()) text += ", ";
-    text += r.from == r.to ? inputText(m, r.from) : inputText(m, r.from) + " to " + inputText(m, r.to);
+// The samples left out, as the core words them (kinematics/design/sweep_notes.h): the first
+// sentence after the program's name, the rest indented beneath it.
+void reportUnassembled(const kinematics::SweepSummary& summary, const kinematics::Mechanism& m, std::ostream& err) {
+  bool first = true;
+  for (const std::string& sentence : kinematics::notAssembledNote(m, summary)) {
+    err << (first ? "linkwright-cli: " : "  ") << sentence << "\n";
+    first = false;
   }
-  return text;
-}
-
-// "crank angles", "tip path positions", "actuator A–C lengths".
-std::string inputsName(const kinematics::Mechanism& m) {
-  std::string name = kinematics::inputName(m);
-  return name.ends_with("position") || name.ends_with("length") || name.ends_with("angle") ? name + "s" : name;
-}
-
-void reportUnassembled(const kinematics::SweepSummary& summary, const ResolvedMechanism& resolved, std::ostream& err) {
-  const kinematics::Mechanism& m = resolved.mechanism;
-  const std::size_t failed = summary.samples - summary.assembledSamples;
-  err << "linkwright-cli: the linkage cannot be assembled at " << failed << " of " << summary.samples << " requested "
-      << inputsName(m) << " (" << rangesText(m, summary.notAssembled) << "); those rows are left out.\n";
-  if (summary.firstFailure) err << "  " << *summary.firstFailure << ".\n";
-  if (!kinematics::asFourBar(resolved.mechanism)) return;
-  const kinematics::InputRange range = kinematics::analyseDesign(resolved.mechanism, {}).inputRange;
-  if (range.ranges.empty()) err << "  It cannot be assembled at any " << kinematics::inputName(m) << ".\n";
-  else err << "  It can be assembled for " << inputsName(m) << " " << rangesText(m, range.ranges) << " (exact).\n";
 }
 
 // A sample in the driver's own words: "crank angle 30°", "C path position 12 mm", with its
@@ -66,19 +42,6 @@ std::string sampleText(const kinematics::Mechanism& m, const kinematics::SweepRe
                             (unit == "°" ? unit : " " + unit);
   if (result.time.empty()) return input;
   return "time " + formatShort(result.time[j]) + " s (" + input + ")";
-}
-
-// Why a toggle has no rates: a four-bar's coupler and output link (its rocker, or its crank
-// when driven from the rocker) are collinear; any other linkage has a dyad stretched or folded.
-std::string toggleText(const kinematics::Mechanism& m) {
-  const auto linkName = [&m](kinematics::PointId a, kinematics::PointId b) -> std::string {
-    for (const kinematics::Link& link : m.links)
-      if ((link.first == a && link.second == b) || (link.first == b && link.second == a)) return link.name;
-    return m.points[a.index].name + "–" + m.points[b.index].name;
-  };
-  if (const auto f = kinematics::asFourBar(m))
-    return linkName(f->b, f->c) + " and " + linkName(f->o4, f->c) + " are collinear, ω and α are undefined";
-  return "a dyad is stretched straight or folded, its rates are undefined";
 }
 
 // Samples whose kinematics exist but whose forces do not (a structure that locks there),
@@ -112,9 +75,7 @@ private:
 void noteLocks(const kinematics::Mechanism& m, const std::vector<kinematics::AngleRange>& lockedBetween,
                std::ostream& err) {
   for (const kinematics::AngleRange& step : lockedBetween)
-    err << "linkwright-cli: note: the linkage locks between " << inputsName(m) << " " << inputText(m, step.from)
-        << " and " << inputText(m, step.to) << " (a dyad passes its assembly limit between these samples); from "
-        << inputText(m, step.to) << " on it is assembled afresh on the chosen branches, so points jump there\n";
+    err << "linkwright-cli: note: " << kinematics::lockNote(m, step) << "\n";
 }
 
 ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err) {
@@ -175,13 +136,11 @@ ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err)
     out << std::flush;
     if (refused) return fail(*refused);
   }
-  for (const double q : summary.singularAngles)
-    err << "linkwright-cli: note: toggle position at " << kinematics::inputName(m) << " " << inputText(m, q) << ": "
-        << toggleText(m) << " (cells left empty)\n";
+  for (const double q : summary.singularAngles) err << "linkwright-cli: note: " << kinematics::toggleNote(m, q) << "\n";
   noteLocks(m, summary.lockedBetween, err);
   undetermined.report(err);
   if (!summary.notAssembled.empty()) {
-    reportUnassembled(summary, *resolved, err);
+    reportUnassembled(summary, m, err);
     return ExitCode::NotAssemblable;
   }
   return ExitCode::Success;

@@ -13,6 +13,7 @@
 #include "app/cli/exit_codes.h"
 
 #include "kinematics/design/design.h"
+#include "kinematics/design/sweep_grid.h"
 #include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism.h"
@@ -40,22 +41,9 @@ ExitCode runBalance(const Invocation& invocation, std::ostream& out, std::ostrea
 ExitCode runCognates(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runTolerance(const Invocation& invocation, std::ostream& out, std::ostream& err);
 
-/// What an example brings besides the linkage: the driver's speed and the input grid.
-struct GridDefaults {
-  double omega = 1.0;  ///< rad/s
-  double alpha = 0.0;  ///< rad/s²
-  double fromDeg = 0.0;
-  double toDeg = 360.0;
-  double stepDeg = 1.0;
-  std::optional<kinematics::TimeBase> time;  ///< a document's time base: its crank's motion law
-  long long timeSamples = 0;                 ///< the instants of that time base
-  /// What --from, --to, --step and a law's start are in: degrees for a crank, the length
-  /// unit for a path or actuator driver.
-  kinematics::InputKind input = kinematics::InputKind::Angle;
-  std::string lengthUnit = "mm";  ///< the linkage's: a linear driver's table names it
-  /// The grid value `value` (degrees or length) as the driver's coordinate (rad or length).
-  double toInput(double value) const;
-};
+/// What an example or a document brings besides the linkage: the driver's speed and the input
+/// grid (kinematics/design/sweep_grid.h, shared with the Python module).
+using GridDefaults = kinematics::SweepGrid;
 
 /// The linkage an invocation describes (--fourbar lengths, an --example or a document),
 /// built, with --branch and --coupler-point applied where it is a four-bar. What it is (a

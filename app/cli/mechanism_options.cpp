@@ -2,6 +2,7 @@
 
 #include "kinematics/design/design.h"
 #include "kinematics/design/fourbar_dimensions.h"
+#include "kinematics/design/sweep_grid.h"
 #include "kinematics/io/bounded_read.h"
 #include "kinematics/io/document_json.h"
 #include "kinematics/model/driver.h"
@@ -13,17 +14,6 @@ namespace linkwright::cli {
 namespace k = kinematics;
 
 namespace {
-
-// A design's grid as defaults: its samples become the step that reproduces them.
-GridDefaults gridOf(const k::Design& d) {
-  return {d.omega,
-          d.alpha,
-          d.fromDeg,
-          d.toDeg,
-          (d.toDeg - d.fromDeg) / static_cast<double>(d.samples - 1),
-          d.time,
-          static_cast<long long>(d.samples)};
-}
 
 // The document named on the command line; errors name the file.
 k::Result<k::Design> readDocumentFile(const std::string& path) {
@@ -45,11 +35,7 @@ k::Result<ResolvedMechanism> resolveExample(const std::string& name) {
   auto e = k::findExample(name);
   if (!e) return unknownExample(name);
   return ResolvedMechanism{
-      std::move(e->mechanism),
-      {e->omega, e->alpha, e->fromDeg, e->toDeg, e->stepDeg, e->time, static_cast<long long>(e->timeSamples)},
-      std::move(e->dynamics),
-      "the example " + e->name,
-      e->kind,
+      std::move(e->mechanism), k::sweepGridOf(*e), std::move(e->dynamics), "the example " + e->name, e->kind,
       e->description};
 }
 
@@ -58,7 +44,7 @@ k::Result<ResolvedMechanism> resolveSource(const Invocation& inv) {
     auto design = readDocumentFile(*inv.documentPath);
     if (!design) return design.error();
     return ResolvedMechanism{std::move(design->mechanism),
-                             gridOf(*design),
+                             k::sweepGridOf(*design),
                              std::move(design->dynamics),
                              *inv.documentPath,
                              design->kind,

@@ -7,6 +7,7 @@
 // SweepCsvWriter, so the module's CSV is the CLI's byte for byte, and its columns are the
 // CSV's: the same rows (samples that assembled), the same names, the values the cells hold.
 
+#include "kinematics/design/sweep_grid.h"
 #include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/mechanism.h"
@@ -19,21 +20,9 @@
 
 namespace linkwright::python {
 
-/// The input grid a sweep uses when the caller gives nothing, as the CLI's GridDefaults: in
-/// the input's display unit (degrees for a crank, the length unit for a linear driver).
-struct Grid {
-  double omega = 1.0;                        ///< the driver's rate: a crank's rad/s
-  double alpha = 0.0;                        ///< the driver's acceleration: a crank's rad/s²
-  double fromDeg = 0.0;                      ///< grid start: a crank's degrees
-  double toDeg = 360.0;                      ///< grid end: a crank's degrees
-  double stepDeg = 1.0;                      ///< grid step: a crank's degrees
-  std::optional<kinematics::TimeBase> time;  ///< a motion law in time, when the source has one
-  long long timeSamples = 0;                 ///< the instants of that time base
-};
-
 struct Linkage {
   kinematics::Mechanism mechanism;
-  Grid grid;
+  kinematics::SweepGrid grid;            ///< the source's speed and grid (the CLI's, kinematics/design/sweep_grid.h)
   kinematics::LinkageDynamics dynamics;  ///< masses and loads, if the source gives them
   std::string kind;                      ///< "four-bar", "slider-crank", …; "" when not known
   std::string source;                    ///< "the example NAME", a path, "four_bar()": for messages
@@ -60,8 +49,8 @@ struct SweepOptions {
   std::optional<double> alpha;  ///< rad/s² (a linear driver: length unit per s²)
 };
 
-/// The sweep the options ask for: the CLI's sweepSpecFor with the Python parameter names in
-/// every refusal ("start_deg", "samples", …).
+/// The sweep the options ask for: the core's grid rule (kinematics/design/sweep_grid.h), as
+/// linkwright-cli's, with the Python parameter names in every refusal ("start_deg", "samples", …).
 kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Linkage& linkage, const SweepOptions& options);
 
 /// A swept table: the CSV text, and the same table as columns.
@@ -72,11 +61,6 @@ struct SweepTable {
   std::string csv;                          ///< the CSV text (only when asked for)
   kinematics::SweepSummary summary;         ///< what the sweep found besides its rows
 };
-
-/// What linkwright-cli analyze notes on stderr about a sweep, as sentences: the samples that
-/// cannot be assembled (their rows left out), toggle positions (their rates masked) and locks
-/// between samples. Empty when the sweep went through cleanly.
-std::vector<std::string> sweepNotes(const kinematics::Mechanism& mechanism, const kinematics::SweepSummary& summary);
 
 /// Solves the sweep; `withCsv` also writes the CSV text, `withColumns` the columns.
 kinematics::Result<SweepTable> sweepTable(const Linkage& linkage, const kinematics::SweepSpec& spec, bool withCsv,

@@ -8,6 +8,7 @@
 
 #include "kinematics/design/design_analysis.h"
 #include "kinematics/design/examples.h"
+#include "kinematics/design/sweep_notes.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/units.h"
 
@@ -69,7 +70,7 @@ lp::SweepOptions sweepOptions(std::optional<double> startDeg, std::optional<doub
 py::handle sweepWarning;
 
 void warnAbout(const lp::Linkage& linkage, const k::SweepSummary& summary) {
-  for (const std::string& note : lp::sweepNotes(linkage.mechanism, summary))
+  for (const std::string& note : k::sweepNoteSentences(linkage.mechanism, summary))
     if (PyErr_WarnEx(sweepWarning.ptr(), note.c_str(), 2) != 0) throw py::error_already_set();
 }
 

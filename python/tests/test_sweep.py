@@ -106,6 +106,43 @@ def test_a_toggle_is_a_warning_too():
         linkwright.four_bar(40, 20, 40, 20).sweep(start_deg=0, stop_deg=90, samples=4)
 
 
+def cli_notes(stderr):
+    # analyze's notes on stderr as the module's warnings: "linkwright-cli: " (and "note: ")
+    # before each, its further sentences indented on the lines beneath.
+    notes = []
+    for line in stderr.splitlines():
+        if line.startswith("  "):
+            notes[-1] += " " + line.strip()
+            continue
+        assert line.startswith("linkwright-cli: "), line
+        text = line[len("linkwright-cli: "):]
+        notes.append(text[len("note: "):] if text.startswith("note: ") else text)
+    return notes
+
+
+@pytest.mark.parametrize("lengths,start,stop,samples", [
+    ((60, 40, 30, 45), 0, 359, 360),  # rows left out
+    ((40, 20, 40, 20), 0, 90, 4),  # a toggle at 0°
+    ((40, 20, 40, 20), 0, 359, 360),  # two toggles
+])
+def test_warnings_are_the_clis_notes_word_for_word(cli, lengths, start, stop, samples):
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        linkwright.four_bar(*lengths).sweep(start_deg=start, stop_deg=stop, samples=samples)
+    ours = [str(w.message) for w in caught if issubclass(w.category, linkwright.SweepWarning)]
+    run = subprocess.run([cli, "analyze", "--fourbar", ",".join(str(x) for x in lengths), "--from", str(start),
+                          "--to", str(stop), "--samples", str(samples)], capture_output=True, check=False)
+    assert run.returncode in (0, 3), run.stderr.decode()
+    assert ours
+    assert ours == cli_notes(run.stderr.decode("utf-8"))
+
+
+def test_rows_left_out_name_a_four_bars_exact_range():
+    with pytest.warns(linkwright.SweepWarning,
+                      match=r"those rows are left out\. .*It can be assembled for crank angles .* \(exact\)\.$"):
+        linkwright.four_bar(60, 40, 30, 45).sweep(start_deg=0, stop_deg=359, samples=360)
+
+
 def test_warnings_can_be_errors():
     with warnings.catch_warnings():
         warnings.simplefilter("error", linkwright.SweepWarning)

@@ -1,0 +1,173 @@
+#include "kinematics/design/sweep_grid.h"
+
+#include "kinematics/model/number_text.h"
+#include "kinematics/model/units.h"
+#include "kinematics/model/validate.h"
+
+#include <cmath>
+#include <tuple>
+
+namespace linkwright::kinematics {
+namespace {
+
+Error badValue(GridField field, const GridFieldNames& names, const std::string& why) {
+  return Error{ErrorCode::InvalidValue, gridFieldKey(field), names[field] + " " + why};
+}
+
+std::optional<Error> checkSampleCount(long long samples, const GridFieldNames& names) {
+  if (samples >= 1 && samples <= kMaxSamples) return std::nullopt;
+  return badValue(GridField::Samples, names,
+                  "must be between 1 and " + std::to_string(kMaxSamples) + " (got " + std::to_string(samples) + ")");
+}
+
+}  // namespace
+
+double SweepGrid::toInput(double value) const { return input == InputKind::Angle ? degToRad(value) : value; }
+
+SweepGrid sweepGridOf(const Example& e) {
+  SweepGrid grid;
+  grid.omega = e.omega;
+  grid.alpha = e.alpha;
+  grid.fromDeg = e.fromDeg;
+  grid.toDeg = e.toDeg;
+  grid.stepDeg = e.stepDeg;
+  grid.time = e.time;
+  grid.timeSamples = static_cast<long long>(e.timeSamples);
+  return grid;
+}
+
+SweepGrid sweepGridOf(const Design& d) {
+  SweepGrid grid;
+  grid.omega = d.omega;
+  grid.alpha = d.alpha;
+  grid.fromDeg = d.fromDeg;
+  grid.toDeg = d.toDeg;
+  grid.stepDeg = (d.toDeg - d.fromDeg) / static_cast<double>(d.samples - 1);
+  grid.time = d.time;
+  grid.timeSamples = static_cast<long long>(d.samples);
+  return grid;
+}
+
+const char* gridFieldKey(GridField field) {
+  switch (field) {
+  case GridField::Rpm: return "rpm";
+  case GridField::Omega: return "omega";
+  case GridField::Alpha: return "alpha";
+  case GridField::Start: return "start";
+  case GridField::Stop: return "stop";
+  case GridField::Step: return "step";
+  case GridField::Samples: return "samples";
+  case GridField::Law: return "law";
+  }
+  return "";
+}
+
+const std::string& GridFieldNames::operator[](GridField field) const {
+  switch (field) {
+  case GridField::Rpm: return rpm;
+  case GridField::Omega: return omega;
+  case GridField::Alpha: return alpha;
+  case GridField::Start: return start;
+  case GridField::Stop: return stop;
+  case GridField::Step: return step;
+  case GridField::Samples: return samples;
+  case GridField::Law: return law;
+  }
+  return samples;
+}
+
+std::optional<Error> checkGridRequest(const SweepGridRequest& r, InputKind kind, const GridFieldNames& names) {
+  // The bound in whole rev/min, rounded down so that every speed it states is accepted.
+  if (r.rpm && !(std::isfinite(*r.rpm) && std::abs(rpmToRadPerSec(*r.rpm)) <= kMaxOmega))
+    return badValue(GridField::Rpm, names,
+                    "must be finite and within ±" + formatNumber(std::floor(kMaxOmega * 60.0 / (2.0 * kPi))) +
+                        " rev/min, which is 1e6 rad/s (got " + formatNumber(*r.rpm) + ")");
+  const InputDomain d = inputDomain(kind);
+  const bool angle = kind == InputKind::Angle;
+  const double grid = angle ? kMaxAngleDeg : d.position;
+  const char* gridUnit = angle ? "degrees" : d.positionUnit;
+  for (const auto& [value, field, max, unit] : {std::tuple{r.omega, GridField::Omega, d.rate, d.rateUnit},
+                                                {r.alpha, GridField::Alpha, d.acceleration, d.accelerationUnit},
+                                                {r.start, GridField::Start, grid, gridUnit},
+                                                {r.stop, GridField::Stop, grid, gridUnit},
+                                                {r.step, GridField::Step, 2.0 * grid, gridUnit}})
+    if (value)
+      if (auto e = checkMagnitude(*value, names[field], max, unit)) {
+        e->field = gridFieldKey(field);
+        return e;
+      }
+  return std::nullopt;
+}
+
+Result<SweepSpec> sweepGridSpec(const SweepGridRequest& r, const SweepGrid& d, const GridFieldNames& names) {
+  if (auto e = checkGridRequest(r, d.input, names)) return *e;
+  if (d.time) {
+    // A document or example whose driver follows a law: its time base, at `samples` instants
+    // if given.
+    const std::string replace = names.law.empty() ? "" : " (give " + names.law + " to replace it)";
+    for (const auto& [given, field] : {std::pair{r.rpm.has_value(), GridField::Rpm},
+                                       {r.omega.has_value(), GridField::Omega},
+                                       {r.alpha.has_value(), GridField::Alpha},
+                                       {r.start.has_value(), GridField::Start},
+                                       {r.stop.has_value(), GridField::Stop},
+                                       {r.step.has_value(), GridField::Step}})
+      if (given)
+        return badValue(field, names, "does not apply: this linkage's driver follows a motion law in time" + replace);
+    // The count checked as typed, before it becomes unsigned (-5 read as 18446744073709551611).
+    const long long samples = r.samples.value_or(d.timeSamples);
+    if (auto e = checkSampleCount(samples, names)) return *e;
+    SweepSpec spec;
+    spec.time = d.time;
+    spec.samples = static_cast<std::size_t>(samples);
+    if (auto e = checkSweepSpec(spec, d.input)) return badValue(GridField::Samples, names, e->message);
+    return spec;
+  }
+  SweepSpec spec;
+  spec.omega = r.rpm ? rpmToRadPerSec(*r.rpm) : r.omega.value_or(d.omega);
+  spec.alpha = r.alpha.value_or(d.alpha);
+  const double from = r.start.value_or(d.fromDeg);
+  const double to = r.stop.value_or(d.toDeg);
+  if (to < from)
+    return badValue(GridField::Stop, names,
+                    "must not be less than " + names.start + " (got " + names.start + " " + formatShort(from) + ", " +
+                        names.stop + " " + formatShort(to) + ")");
+  double last = to;
+  long long samples = 0;
+  if (r.samples) {
+    samples = *r.samples;
+    if (auto e = checkSampleCount(samples, names)) return *e;
+    if (samples > 1 && to == from)
+      return badValue(GridField::Samples, names,
+                      "needs " + names.stop + " greater than " + names.start + " for more than one sample");
+  } else {
+    // The step given, else the source's. Where the front end offers no step, the way out of a
+    // step that does not fit is a sample count, and the message says so.
+    const double step = r.step.value_or(d.stepDeg);
+    const bool ownStep = names.step.empty();
+    if (!(step > 0.0)) {
+      if (ownStep)
+        return badValue(GridField::Samples, names,
+                        "is needed: the linkage's step is not positive (" + formatShort(step) + ")");
+      return badValue(GridField::Step, names, "must be positive (got " + formatShort(step) + ")");
+    }
+    // The grid includes the stop when it lands on it, allowing for round-off in (to − from)/step.
+    const double intervals = std::floor((to - from) / step + 1e-9);
+    if (intervals + 1.0 > static_cast<double>(kMaxSamples)) {
+      if (ownStep)
+        return badValue(GridField::Samples, names,
+                        "is needed: the linkage's step would give " + formatShort(intervals + 1.0) + " rows (at most " +
+                            std::to_string(kMaxSamples) + ")");
+      return badValue(GridField::Step, names,
+                      "is too small: it would give " + formatShort(intervals + 1.0) + " rows (at most " +
+                          std::to_string(kMaxSamples) + ")");
+    }
+    samples = static_cast<long long>(intervals) + 1;
+    last = from + intervals * step;
+  }
+  spec.fromAngle = d.toInput(from);
+  spec.toAngle = d.toInput(last);
+  spec.samples = static_cast<std::size_t>(samples);
+  return spec;
+}
+
+}  // namespace linkwright::kinematics

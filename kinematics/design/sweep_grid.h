@@ -1,0 +1,79 @@
+#pragma once
+// The input grid a sweep runs over: what a front end's options ask for (a speed, a range, a
+// step or a sample count), with what the linkage's source brings for the rest (an example's
+// speed and step, a document's grid, the defaults for a four-bar given by its lengths). One
+// rule for linkwright-cli and the Python module, so they agree by construction
+// (docs/style.md). Each front end passes its own spelling of the fields ("--from",
+// "start_deg") for the messages; an error's field is the neutral key (gridFieldKey).
+
+#include "kinematics/design/design.h"
+#include "kinematics/design/examples.h"
+#include "kinematics/model/driver.h"
+#include "kinematics/model/result.h"
+#include "kinematics/solve/sweep.h"
+
+#include <optional>
+#include <string>
+
+namespace linkwright::kinematics {
+
+/// What an example or a document brings besides the linkage: the driver's speed and the input
+/// grid, in the input's display unit (degrees for a crank, the length unit for a linear driver).
+struct SweepGrid {
+  double omega = 1.0;  ///< rad/s
+  double alpha = 0.0;  ///< rad/s²
+  double fromDeg = 0.0;
+  double toDeg = 360.0;
+  double stepDeg = 1.0;
+  std::optional<TimeBase> time;  ///< a document's time base: its crank's motion law
+  long long timeSamples = 0;     ///< the instants of that time base
+  /// What fromDeg, toDeg, stepDeg and a law's start are in: degrees for a crank, the length
+  /// unit for a path or actuator driver.
+  InputKind input = InputKind::Angle;
+  std::string lengthUnit = "mm";  ///< the linkage's: a linear driver's table names it
+  /// The grid value `value` (degrees or length) as the driver's coordinate (rad or length).
+  double toInput(double value) const;
+};
+
+/// An example's own speed and grid.
+SweepGrid sweepGridOf(const Example& example);
+/// A document's grid: its samples become the step that reproduces them.
+SweepGrid sweepGridOf(const Design& design);
+
+/// The fields of a grid request.
+enum class GridField { Rpm, Omega, Alpha, Start, Stop, Step, Samples, Law };
+
+/// The neutral key an error's field holds: "rpm", "omega", "alpha", "start", "stop", "step",
+/// "samples", "law".
+const char* gridFieldKey(GridField field);
+
+/// How a front end spells each field in its messages ("--from", "start_deg"); an empty name is
+/// a field the front end does not offer (no rpm, no step, no law).
+struct GridFieldNames {
+  std::string rpm, omega, alpha, start, stop, step, samples, law;
+  const std::string& operator[](GridField field) const;
+};
+
+/// What the caller gives; anything left out is the source's grid (SweepGrid).
+struct SweepGridRequest {
+  std::optional<double> rpm;    ///< rev/min, instead of omega
+  std::optional<double> omega;  ///< rad/s (a linear driver: length unit per s)
+  std::optional<double> alpha;  ///< rad/s² (a linear driver: length unit per s²)
+  std::optional<double> start;  ///< grid start, degrees (a linear driver: its length unit)
+  std::optional<double> stop;   ///< grid end, likewise; included when the step lands on it
+  std::optional<double> step;   ///< grid step, likewise
+  std::optional<long long> samples;
+};
+
+/// The speed and range fields against the input's domain (kinematics/model/validate.h,
+/// driver.h), each refusal naming the field as the front end spells it, its value and the range
+/// in that field's unit; nullopt when all fit.
+std::optional<Error> checkGridRequest(const SweepGridRequest& request, InputKind kind, const GridFieldNames& names);
+
+/// The sweep the request asks for, with `defaults` for what it leaves out: on a time base (a
+/// motion law) its instants, else the input grid from start to stop (the last grid value not
+/// past stop) every step or at `samples` points.
+Result<SweepSpec> sweepGridSpec(const SweepGridRequest& request, const SweepGrid& defaults,
+                                const GridFieldNames& names);
+
+}  // namespace linkwright::kinematics
