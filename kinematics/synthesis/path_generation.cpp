@@ -17,6 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <random>
+#include <tuple>
 
 namespace linkwright::kinematics {
 namespace {
@@ -93,18 +94,21 @@ std::optional<Error> checkOptions(const PathOptions& o) {
   return std::nullopt;
 }
 
-// One local minimum, in normalised units.
-struct Minimum {
-  Linkage linkage;
-  Branch branch = Branch::Open;
-  std::vector<double> angles;  // absolute crank angle at each target
-  double worst = 0.0;          // the optimiser's worst distance
-  int start = 0;
-  double seconds = 0.0;
-};
+Linkage linkageOf(const PathMinimum& m) {
+  Linkage l;
+  l.o2 = m.o2;
+  l.beta = m.beta;
+  l.frame = m.frame;
+  l.crank = m.crank;
+  l.coupler = m.coupler;
+  l.rocker = m.rocker;
+  l.along = m.along;
+  l.across = m.across;
+  return l;
+}
 
-bool sameMinimum(const Minimum& a, const Minimum& b) {
-  const Linkage &p = a.linkage, &q = b.linkage;
+bool sameMinimum(const PathMinimum& a, const PathMinimum& b) {
+  const Linkage p = linkageOf(a), q = linkageOf(b);
   const double differ =
       std::max({(p.o2 - q.o2).cwiseAbs().maxCoeff(), (p.o4() - q.o4()).cwiseAbs().maxCoeff(),
                 std::abs(p.crank - q.crank), std::abs(p.coupler - q.coupler), std::abs(p.rocker - q.rocker),
@@ -113,15 +117,16 @@ bool sameMinimum(const Minimum& a, const Minimum& b) {
 }
 
 // Keeps the best `keep` distinct minima, best first.
-void offer(std::vector<Minimum>& kept, Minimum m, std::size_t keep) {
-  for (Minimum& k : kept)
+void offer(std::vector<PathMinimum>& kept, PathMinimum m, std::size_t keep) {
+  for (PathMinimum& k : kept)
     if (sameMinimum(k, m)) {
       if (m.worst < k.worst) k = std::move(m);
-      std::stable_sort(kept.begin(), kept.end(), [](const Minimum& a, const Minimum& b) { return a.worst < b.worst; });
+      std::stable_sort(kept.begin(), kept.end(),
+                       [](const PathMinimum& a, const PathMinimum& b) { return a.worst < b.worst; });
       return;
     }
   const auto at =
-      std::upper_bound(kept.begin(), kept.end(), m.worst, [](double w, const Minimum& k) { return w < k.worst; });
+      std::upper_bound(kept.begin(), kept.end(), m.worst, [](double w, const PathMinimum& k) { return w < k.worst; });
   kept.insert(at, std::move(m));
   if (kept.size() > keep) kept.pop_back();
 }
@@ -237,8 +242,8 @@ Eigen::VectorXd drawStart(std::mt19937& rng, const std::vector<Eigen::Vector2d>&
 }
 
 // Runs LM from x; the minimum, or nullopt if it does not assemble at every target.
-std::optional<Minimum> refine(Eigen::VectorXd x, Branch branch, const std::vector<Eigen::Vector2d>& targets,
-                              const Timing& timing, int maxEvaluations) {
+std::optional<PathMinimum> refine(Eigen::VectorXd x, Branch branch, const std::vector<Eigen::Vector2d>& targets,
+                                  const Timing& timing, int maxEvaluations) {
   path_model::Residual residual{&targets, &timing, branch};
   Eigen::LevenbergMarquardt<path_model::Residual> lm(residual);
   lm.setMaxfev(maxEvaluations);
@@ -250,15 +255,23 @@ std::optional<Minimum> refine(Eigen::VectorXd x, Branch branch, const std::vecto
   if (status != Eigen::LevenbergMarquardtSpace::ImproperInputParameters) do
       status = lm.minimizeOneStep(x);
     while (status == Eigen::LevenbergMarquardtSpace::Running && lm.fnorm() > kExactFit);
-  Minimum m;
-  m.linkage = path_model::decode(x);
+  const Linkage l = path_model::decode(x);
+  PathMinimum m;
+  m.o2 = l.o2;
+  m.beta = l.beta;
+  m.frame = l.frame;
+  m.crank = l.crank;
+  m.coupler = l.coupler;
+  m.rocker = l.rocker;
+  m.along = l.along;
+  m.across = l.across;
   m.branch = branch;
-  const Eigen::Vector2d o4 = m.linkage.o4();
+  const Eigen::Vector2d o4 = l.o4();
   for (std::size_t i = 0; i < targets.size(); ++i) {
     const double angle = path_model::crankAngle(x, timing, i);
-    const auto p = path_model::couplerPosition(m.linkage, o4, angle, branch);
+    const auto p = path_model::couplerPosition(l, o4, angle, branch);
     if (!(p.gap <= kAssembledGap) || !p.point.allFinite()) return std::nullopt;
-    m.angles.push_back(wrapAngle(angle));
+    m.crankAngles.push_back(wrapAngle(angle));
     m.worst = std::max(m.worst, (p.point - targets[i]).norm());
   }
   return m;
@@ -266,17 +279,17 @@ std::optional<Minimum> refine(Eigen::VectorXd x, Branch branch, const std::vecto
 
 // The minimum in the user's units, measured with the pose solver and checked for defects;
 // nullopt if the solver cannot assemble it at some target (it then reaches no target there).
-std::optional<PathCandidate> candidateFrom(const Minimum& m, const PathTarget& t, const Eigen::Vector2d& centre,
+std::optional<PathCandidate> candidateFrom(const PathMinimum& m, const PathTarget& t, const Eigen::Vector2d& centre,
                                            double scale, const DefectBounds& bounds) {
   PathCandidate c;
-  const Linkage& l = m.linkage;
+  const Linkage l = linkageOf(m);
   c.o2 = centre + scale * l.o2;
   c.o4 = centre + scale * l.o4();
   // The frame as the mechanism has it (its pivots' distance), not as scaled: they differ in ulps.
   c.lengths = {(c.o4 - c.o2).norm(), scale * l.crank, scale * l.coupler, scale * l.rocker};
   c.couplerPoint = {scale * l.along, scale * l.across};
   c.branch = m.branch;
-  c.crankAngles = m.angles;
+  c.crankAngles = m.crankAngles;
   c.start = m.start;
   c.secondsToFind = m.seconds;
   Design d;
@@ -313,7 +326,116 @@ std::optional<PathCandidate> candidateFrom(const Minimum& m, const PathTarget& t
   return c;
 }
 
+// The targets in the search's normalised frame.
+struct Normalised {
+  Eigen::Vector2d centre;
+  double scale = 0.0;
+  std::vector<Eigen::Vector2d> targets;
+  Timing timing;
+};
+
+Normalised normalised(const PathTarget& target) {
+  Normalised n;
+  std::tie(n.centre, n.scale) = boundingBox(target.points);
+  for (const Eigen::Vector2d& p : target.points) n.targets.push_back((p - n.centre) / n.scale);
+  if (!target.timing.empty()) {
+    n.timing.reference = target.timingReference;
+    n.timing.tau = target.timing;
+  }
+  return n;
+}
+
+// Start s's own generator: a pure function of the seed and s.
+std::mt19937 startGenerator(std::uint32_t seed, int start) {
+  std::seed_seq seeds{seed, static_cast<std::uint32_t>(start)};
+  return std::mt19937(seeds);
+}
+
+PathStartBlock runBlock(const Normalised& n, const PathOptions& options, int block, const std::atomic<bool>* cancel,
+                        const PathProgress& progress) {
+  using Clock = std::chrono::steady_clock;
+  const auto began = Clock::now();
+  PathStartBlock out;
+  out.block = block;
+  const int first = block * kPathStartsPerBlock;
+  const int count = std::min(kPathStartsPerBlock, options.starts - first);
+  for (int s = first; s < first + count; ++s) {
+    if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) {
+      out.cancelled = true;
+      break;
+    }
+    std::mt19937 rng = startGenerator(options.seed, s);
+    Branch branch = Branch::Open;
+    const Eigen::VectorXd x = drawStart(rng, n.targets, n.timing, branch);
+    if (auto m = refine(x, branch, n.targets, n.timing, options.maxEvaluations)) {
+      m->start = s;
+      m->seconds = std::chrono::duration<double>(Clock::now() - began).count();
+      offer(out.kept, std::move(*m), options.keep);
+    } else {
+      ++out.startsNotAssembled;
+    }
+    ++out.startsRun;
+    if (progress) progress(out.startsRun, count);
+  }
+  return out;
+}
+
+PathSynthesis merged(const PathTarget& target, const Normalised& n, const PathOptions& options,
+                     const DefectBounds& bounds, std::vector<PathStartBlock> blocks) {
+  std::sort(blocks.begin(), blocks.end(),
+            [](const PathStartBlock& a, const PathStartBlock& b) { return a.block < b.block; });
+  PathSynthesis out;
+  out.scale = n.scale;
+  out.cancelled = static_cast<int>(blocks.size()) < pathStartBlockCount(options);
+  std::vector<PathMinimum> kept;
+  for (PathStartBlock& b : blocks) {
+    out.startsRun += b.startsRun;
+    out.startsNotAssembled += b.startsNotAssembled;
+    out.cancelled = out.cancelled || b.cancelled;
+    for (PathMinimum& m : b.kept) offer(kept, std::move(m), options.keep);
+  }
+  for (const PathMinimum& m : kept) {
+    if (auto c = candidateFrom(m, target, n.centre, n.scale, bounds)) out.candidates.push_back(std::move(*c));
+    else ++out.startsNotAssembled;
+  }
+  std::stable_sort(out.candidates.begin(), out.candidates.end(),
+                   [](const PathCandidate& a, const PathCandidate& b) { return a.worstDistance < b.worstDistance; });
+  return out;
+}
+
 }  // namespace
+
+int pathStartBlockCount(const PathOptions& options) {
+  return (std::max(options.starts, 0) + kPathStartsPerBlock - 1) / kPathStartsPerBlock;
+}
+
+Result<PathStartBlock> runPathStartBlock(const PathTarget& target, const PathOptions& options, int block,
+                                         const std::atomic<bool>* cancel, const PathProgress& progress) {
+  if (auto e = checkTargets(target)) return *e;
+  if (auto e = checkOptions(options)) return *e;
+  const int blocks = pathStartBlockCount(options);
+  if (block < 0 || block >= blocks)
+    return invalid(
+        "block", "block must be between 0 and " + std::to_string(blocks - 1) + " (got " + std::to_string(block) + ")");
+  return runBlock(normalised(target), options, block, cancel, progress);
+}
+
+Result<PathSynthesis> pathSynthesisFromBlocks(const PathTarget& target, const PathOptions& options,
+                                              const DefectBounds& bounds, std::vector<PathStartBlock> blocks) {
+  if (auto e = checkTargets(target)) return *e;
+  if (auto e = checkOptions(options)) return *e;
+  const int count = pathStartBlockCount(options);
+  std::vector<bool> seen(static_cast<std::size_t>(count), false);
+  for (const PathStartBlock& b : blocks) {
+    if (b.block < 0 || b.block >= count)
+      return invalid("blocks", "a block numbered " + std::to_string(b.block) + " is not one of this search's 0 to " +
+                                   std::to_string(count - 1));
+    if (seen[static_cast<std::size_t>(b.block)])
+      return invalid("blocks", "block " + std::to_string(b.block) + " is given twice");
+    seen[static_cast<std::size_t>(b.block)] = true;
+  }
+  return merged(target, normalised(target), options, bounds, std::move(blocks));
+}
 
 Result<PathSynthesis> synthesisePath(const PathTarget& target, const PathOptions& options, const DefectBounds& bounds,
                                      const std::atomic<bool>* cancel, const PathProgress& progress) {
@@ -323,43 +445,20 @@ Result<PathSynthesis> synthesisePath(const PathTarget& target, const PathOptions
   if (auto e = checkTargets(target)) return *e;
   if (auto e = checkOptions(options)) return *e;
 
-  PathSynthesis out;
-  const auto [centre, scale] = boundingBox(target.points);
-  out.scale = scale;
-  std::vector<Eigen::Vector2d> targets;
-  for (const Eigen::Vector2d& p : target.points) targets.push_back((p - centre) / scale);
-  Timing timing;
-  if (!target.timing.empty()) {
-    timing.reference = target.timingReference;
-    timing.tau = target.timing;
+  const Normalised n = normalised(target);
+  std::vector<PathStartBlock> blocks;
+  int done = 0;
+  for (int b = 0; b < pathStartBlockCount(options); ++b) {
+    const double blockBegan = elapsed();
+    const int before = done;
+    blocks.push_back(runBlock(n, options, b, cancel, [&](int inBlock, int) {
+      done = before + inBlock;
+      if (progress) progress(done, options.starts);
+    }));
+    for (PathMinimum& m : blocks.back().kept) m.seconds += blockBegan;  // from the search's start
+    if (blocks.back().cancelled) break;
   }
-
-  std::mt19937 rng(options.seed);
-  std::vector<Minimum> kept;
-  for (int s = 0; s < options.starts; ++s) {
-    if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) {
-      out.cancelled = true;
-      break;
-    }
-    Branch branch = Branch::Open;
-    const Eigen::VectorXd x = drawStart(rng, targets, timing, branch);
-    if (auto m = refine(x, branch, targets, timing, options.maxEvaluations)) {
-      m->start = s;
-      m->seconds = elapsed();
-      offer(kept, std::move(*m), options.keep);
-    } else {
-      ++out.startsNotAssembled;
-    }
-    ++out.startsRun;
-    if (progress) progress(out.startsRun, options.starts);
-  }
-
-  for (const Minimum& m : kept) {
-    if (auto c = candidateFrom(m, target, centre, scale, bounds)) out.candidates.push_back(std::move(*c));
-    else ++out.startsNotAssembled;
-  }
-  std::stable_sort(out.candidates.begin(), out.candidates.end(),
-                   [](const PathCandidate& a, const PathCandidate& b) { return a.worstDistance < b.worstDistance; });
+  PathSynthesis out = merged(target, n, options, bounds, std::move(blocks));
   out.seconds = elapsed();
   return out;
 }

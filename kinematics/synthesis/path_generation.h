@@ -21,7 +21,9 @@
 // libeigen3-dev), so it adds no dependency; MINPACK's trust-region LM is the well-kept standard
 // for small dense nonlinear least squares, and this problem has at most 19 unknowns and 30
 // residuals. LM finds a local minimum only, so it runs from many deterministic pseudo-random
-// starts (std::mt19937 seeded by the caller; the default seed is fixed, so results repeat).
+// starts (each start's std::mt19937 seeded by the caller's seed and the start's index, through
+// std::seed_seq, whose mixing the standard fixes; the default seed is fixed, so results repeat
+// on every machine and a start can be run alone).
 // Each start draws a random linkage and spread of crank angles, then places it by the
 // similarity transform (rotation, translation, scale; a reflection too, which swaps the branch,
 // without timing) that best fits its points to the targets (Procrustes), so LM starts near.
@@ -55,7 +57,7 @@ inline constexpr std::uint32_t kDefaultPathSeed = PathSearch{}.seed;
 /// How hard to search.
 struct PathOptions {
   int starts = kDefaultPathStarts;        ///< LM runs from random starts, in [1, 100000]
-  std::uint32_t seed = kDefaultPathSeed;  ///< std::mt19937 seed
+  std::uint32_t seed = kDefaultPathSeed;  ///< with a start's index, seeds its std::mt19937
   std::size_t keep = 10;                  ///< distinct local minima kept, in [1, 1000]
   int maxEvaluations = 200;               ///< residual evaluations per LM run, in [10, 100000]
 };
@@ -92,6 +94,51 @@ struct PathSynthesis {
 
 /// Progress after each start: (starts done, starts in all).
 using PathProgress = std::function<void(int done, int total)>;
+
+// A search split into blocks. The starts run in blocks of kPathStartsPerBlock, each start from a
+// generator seeded by (seed, start index) alone, each block keeping its own best distinct
+// minima; the blocks' lists are then merged in block order. synthesisePath does exactly this,
+// so blocks run anywhere (the Python module's linkwright.batch runs them as Dask tasks) and
+// merged by pathSynthesisFromBlocks give its answer to the last bit.
+
+/// Starts per block.
+inline constexpr int kPathStartsPerBlock = 100;
+
+/// One start's local minimum, in the search's normalised frame: the targets moved to their
+/// bounding box's centre and divided by its diagonal (PathSynthesis::scale).
+struct PathMinimum {
+  Eigen::Vector2d o2 = Eigen::Vector2d::Zero();                  ///< crank pivot (normalised)
+  double beta = 0.0;                                             ///< frame direction O2→O4 (rad, CCW from +x)
+  double frame = 1.0, crank = 1.0, coupler = 1.0, rocker = 1.0;  ///< lengths (normalised)
+  double along = 0.0, across = 0.0;                              ///< P on the coupler B→C (normalised)
+  Branch branch = Branch::Open;
+  std::vector<double> crankAngles;  ///< the crank's angle at each target (rad, absolute, in (−π, π])
+  double worst = 0.0;               ///< the optimiser's largest distance to a target (normalised)
+  int start = 0;                    ///< which start found it (0-based, over the whole search)
+  double seconds = 0.0;             ///< wall time from its block's (or search's) start to its end (s)
+};
+
+/// A block's outcome.
+struct PathStartBlock {
+  int block = 0;                  ///< 0-based: starts block·kPathStartsPerBlock onwards
+  int startsRun = 0;              ///< starts completed
+  int startsNotAssembled = 0;     ///< starts whose minimum does not assemble at every target
+  bool cancelled = false;         ///< stopped by the cancel flag before its last start
+  std::vector<PathMinimum> kept;  ///< its best distinct minima, best first, at most options.keep
+};
+
+/// How many blocks options.starts makes.
+int pathStartBlockCount(const PathOptions& options);
+
+/// Runs block `block` of the search (errors as synthesisePath's, and "block" outside
+/// [0, pathStartBlockCount)). `progress` gets the block's starts done and its size.
+Result<PathStartBlock> runPathStartBlock(const PathTarget& target, const PathOptions& options, int block,
+                                         const std::atomic<bool>* cancel = nullptr, const PathProgress& progress = {});
+
+/// The search's outcome from its blocks, merged in block order (any order given); a missing
+/// block counts as cancelled. Candidates measured and checked as synthesisePath's.
+Result<PathSynthesis> pathSynthesisFromBlocks(const PathTarget& target, const PathOptions& options,
+                                              const DefectBounds& bounds, std::vector<PathStartBlock> blocks);
 
 /// Searches for four-bars whose coupler point passes through the targets. Error naming the
 /// field ("points", "points[2].x", "points[3]", "timing", "timing[1]", "starts", "keep",

@@ -156,6 +156,64 @@ TEST_CASE("The search repeats for a seed and reports its progress", "[synthesis]
   checkReportedDistances(*a, targets);
 }
 
+TEST_CASE("Blocks of starts run apart and merged give the search's answer to the last bit", "[synthesis][path]") {
+  const auto targets = thesisCurve({10.0, 50.0, 100.0, 160.0, 220.0, 280.0});
+  PathOptions options;
+  options.starts = 2 * kPathStartsPerBlock + 17;  // a short last block
+  options.keep = 6;
+  const auto whole = synthesisePath({targets}, options);
+  REQUIRE(whole.ok());
+  REQUIRE(pathStartBlockCount(options) == 3);
+  // Run in reverse order, as a cluster may finish them, each block alone.
+  std::vector<PathStartBlock> blocks;
+  for (int b = 2; b >= 0; --b) {
+    auto block = runPathStartBlock({targets}, options, b);
+    REQUIRE(block.ok());
+    CHECK(block->startsRun == (b == 2 ? 17 : kPathStartsPerBlock));
+    for (const PathMinimum& m : block->kept) CHECK(m.start / kPathStartsPerBlock == b);
+    blocks.push_back(std::move(block).value());
+  }
+  const auto split = pathSynthesisFromBlocks({targets}, options, {}, blocks);
+  REQUIRE(split.ok());
+  CHECK(split->startsRun == whole->startsRun);
+  CHECK(split->startsNotAssembled == whole->startsNotAssembled);
+  CHECK_FALSE(split->cancelled);
+  REQUIRE(split->candidates.size() == whole->candidates.size());
+  REQUIRE(whole->candidates.size() >= 2);
+  for (std::size_t k = 0; k < whole->candidates.size(); ++k) {
+    CAPTURE(k);
+    CHECK(split->candidates[k].candidate == whole->candidates[k].candidate);
+    CHECK(split->candidates[k].start == whole->candidates[k].start);
+    CHECK(split->candidates[k].distances == whole->candidates[k].distances);
+    CHECK(split->candidates[k].crankAngles == whole->candidates[k].crankAngles);
+  }
+  // A start depends on the seed and its index alone: block 1 of a longer search is the same.
+  PathOptions longer = options;
+  longer.starts = 10 * kPathStartsPerBlock;
+  const auto again = runPathStartBlock({targets}, longer, 1);
+  REQUIRE(again.ok());
+  REQUIRE(again->kept.size() == blocks[1].kept.size());
+  for (std::size_t k = 0; k < again->kept.size(); ++k) {
+    CHECK(again->kept[k].start == blocks[1].kept[k].start);
+    CHECK(again->kept[k].worst == blocks[1].kept[k].worst);
+    CHECK(again->kept[k].crankAngles == blocks[1].kept[k].crankAngles);
+  }
+  // A block missing is a search cut short; one outside the search or given twice is refused.
+  blocks.pop_back();
+  const auto partial = pathSynthesisFromBlocks({targets}, options, {}, blocks);
+  REQUIRE(partial.ok());
+  CHECK(partial->cancelled);
+  CHECK(partial->startsRun == kPathStartsPerBlock + 17);
+  blocks.push_back(blocks.front());
+  const auto twice = pathSynthesisFromBlocks({targets}, options, {}, blocks);
+  REQUIRE_FALSE(twice.ok());
+  CHECK(twice.error().message == "block 2 is given twice");
+  const auto outside = runPathStartBlock({targets}, options, 3);
+  REQUIRE_FALSE(outside.ok());
+  CHECK(outside.error().field == "block");
+  CHECK(outside.error().message == "block must be between 0 and 2 (got 3)");
+}
+
 TEST_CASE("Cancelling returns what was found so far", "[synthesis][path]") {
   const auto targets = thesisCurve({0.0, 45.0, 90.0, 135.0, 180.0, 225.0, 270.0});
   std::atomic<bool> cancel{false};
