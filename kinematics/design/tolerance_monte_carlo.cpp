@@ -47,6 +47,10 @@ std::optional<Error> checkMonteCarloSpec(const MonteCarloSpec& spec, const Mecha
     return Error{ErrorCode::InvalidValue, "samples",
                  "samples must be between 1 and " + std::to_string(kMaxToleranceSamples) + " (got " +
                      std::to_string(spec.samples) + ")"};
+  if (spec.firstSample > kMaxToleranceFirstSample)
+    return Error{ErrorCode::InvalidValue, "firstSample",
+                 "firstSample must be between 0 and " + std::to_string(kMaxToleranceFirstSample) + " (got " +
+                     std::to_string(spec.firstSample) + ")"};
   return std::nullopt;
 }
 
@@ -84,8 +88,9 @@ Result<MonteCarloResult> toleranceMonteCarlo(const Mechanism& mechanism, const S
   }
   SweepResult sample;
   for (std::size_t k = 0; k < monteCarlo.samples; ++k) {
+    const std::size_t index = static_cast<std::size_t>(monteCarlo.firstSample) + k;
     const Mechanism m =
-        offsetDimensions(mechanism, out.dimensions, toleranceSampleOffsets(monteCarlo, out.dimensions.size(), k));
+        offsetDimensions(mechanism, out.dimensions, toleranceSampleOffsets(monteCarlo, out.dimensions.size(), index));
     if (auto e = sweepInto(m, spec, SolveRequest{}, sample)) return *e;
     if (!sample.notAssembled.empty()) {
       ++out.notAssembled;

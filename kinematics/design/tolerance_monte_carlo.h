@@ -23,6 +23,8 @@ namespace linkwright::kinematics {
 
 /// The most samples one study runs.
 inline constexpr std::size_t kMaxToleranceSamples = 100'000;
+/// The largest first sample index (2^53: exact as a double, so as a Python or JSON number).
+inline constexpr std::uint64_t kMaxToleranceFirstSample = std::uint64_t{1} << 53;
 /// The seed when none is given.
 inline constexpr std::uint64_t kDefaultToleranceSeed = 46;
 
@@ -30,12 +32,17 @@ struct MonteCarloSpec {
   double tolerance = 0.0;      ///< ± on every dimension, length unit, ≥ 0 and below the shortest length
   std::size_t samples = 1000;  ///< 1 … kMaxToleranceSamples
   std::uint64_t seed = kDefaultToleranceSeed;
+  /// The first sample's index, 0 … kMaxToleranceFirstSample: a study run in shards (samples
+  /// [first, first + samples) each) has the samples of one run, and its bands are the shards'
+  /// lowest and highest values.
+  std::uint64_t firstSample = 0;
   bool operator==(const MonteCarloSpec&) const = default;
 };
 
-/// Error naming "tolerance" or "samples", the value and the accepted range, unless the spec
-/// fits `mechanism`: a finite tolerance ≥ 0 below its shortest length dimension (so every
-/// length stays positive), 1 ≤ samples ≤ kMaxToleranceSamples.
+/// Error naming "tolerance", "samples" or "firstSample", the value and the accepted range, unless
+/// the spec fits `mechanism`: a finite tolerance ≥ 0 below its shortest length dimension (so
+/// every length stays positive), 1 ≤ samples ≤ kMaxToleranceSamples, firstSample ≤
+/// kMaxToleranceFirstSample.
 std::optional<Error> checkMonteCarloSpec(const MonteCarloSpec& spec, const Mechanism& mechanism);
 
 /// Sample k's offset of each of `dimensions` dimensions (length unit), uniform in ±tolerance.

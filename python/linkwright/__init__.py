@@ -10,6 +10,8 @@ is a linkwright.Error (a ValueError) carrying the core's sentence; what linkwrig
 stderr about a sweep is a linkwright.SweepWarning. See docs/python.md.
 """
 
-from ._linkwright import Error, Linkage, SweepWarning, example, examples, four_bar, load
+from ._linkwright import (PATH_STARTS_PER_BLOCK, Error, Linkage, PathSearch, PathStartBlock, SweepWarning, example,
+                          examples, four_bar, load)
 
-__all__ = ["Error", "Linkage", "SweepWarning", "example", "examples", "four_bar", "load"]
+__all__ = ["PATH_STARTS_PER_BLOCK", "Error", "Linkage", "PathSearch", "PathStartBlock", "SweepWarning", "example",
+           "examples", "four_bar", "load"]

@@ -1,5 +1,5 @@
 # Type stubs for linkwright (the extension _linkwright, re-exported). See docs/python.md.
-from typing import Literal, Optional
+from typing import Any, Literal, Optional, Sequence
 
 import numpy
 import numpy.ma
@@ -33,8 +33,10 @@ class Linkage:
         samples: Optional[int] = None,
         omega: Optional[float] = None,
         alpha: Optional[float] = None,
+        forces: bool = False,
     ) -> dict[str, numpy.ma.MaskedArray]:
-        """The sweep as columns named as linkwright-cli analyze's; undefined entries masked."""
+        """The sweep as columns named as linkwright-cli analyze's; undefined entries masked.
+        forces=True adds analyze --forces's columns (a linkage with masses)."""
     def sweep_csv(
         self,
         start_deg: Optional[float] = None,
@@ -42,10 +44,34 @@ class Linkage:
         samples: Optional[int] = None,
         omega: Optional[float] = None,
         alpha: Optional[float] = None,
+        forces: bool = False,
     ) -> str:
-        """The sweep as CSV text, byte for byte linkwright-cli analyze's."""
+        """The sweep as CSV text, byte for byte linkwright-cli analyze's (analyze --forces's with forces)."""
     def classify(self) -> dict[str, object]:
         """Mobility, assembly ranges, Grashof class, transmission range, quick-return figures."""
+    def extremes(
+        self,
+        start_deg: Optional[float] = None,
+        stop_deg: Optional[float] = None,
+        samples: Optional[int] = None,
+        omega: Optional[float] = None,
+        alpha: Optional[float] = None,
+    ) -> dict[str, dict[str, Optional[float]]]:
+        """Each column's refined min and max and where: {min, min_at_deg, max, max_at_deg}."""
+    def tolerance_study(
+        self,
+        tolerance: float,
+        *,
+        mc_samples: int = 1000,
+        seed: int = 46,
+        first_sample: int = 0,
+        start_deg: Optional[float] = None,
+        stop_deg: Optional[float] = None,
+        samples: Optional[int] = None,
+        omega: Optional[float] = None,
+        alpha: Optional[float] = None,
+    ) -> dict[str, Any]:
+        """The seeded Monte-Carlo tolerance study over samples [first_sample, first_sample + mc_samples)."""
 
 def examples() -> list[str]:
     """The built-in examples' names."""
@@ -66,3 +92,40 @@ def four_bar(
 
 def load(path: str) -> Linkage:
     """A Linkwright document."""
+
+PATH_STARTS_PER_BLOCK: int
+
+class PathStartBlock:
+    """One block of a path search's starts; picklable."""
+
+    @property
+    def block(self) -> int: ...
+    @property
+    def starts_run(self) -> int: ...
+    @property
+    def kept(self) -> int: ...
+
+class PathSearch:
+    """A path synthesis (linkwright-cli synthesize path), whole or in blocks; picklable."""
+
+    def __init__(
+        self,
+        points: Sequence[tuple[float, float]],
+        *,
+        timing_deg: Optional[Sequence[float]] = None,
+        timing_from: Literal["start", "frame"] = "start",
+        full_rotation: bool = False,
+        unit: str = "mm",
+        starts: int = 400,
+        seed: int = 19,
+        keep: int = 10,
+        max_evaluations: int = 200,
+    ) -> None: ...
+    @property
+    def blocks(self) -> int: ...
+    def run(self) -> dict[str, Any]:
+        """The whole search: candidates best first, scale, starts_run, starts_not_assembled, cancelled."""
+    def run_block(self, block: int) -> PathStartBlock:
+        """Block `block` of the search, alone."""
+    def merge(self, blocks: Sequence[PathStartBlock]) -> dict[str, Any]:
+        """run()'s answer from its blocks, to the last bit."""

@@ -3,6 +3,8 @@
 #include "kinematics/design/design.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/design/sweep_grid.h"
+#include "kinematics/dynamics/force_columns.h"
+#include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/io/bounded_read.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/document_json.h"
@@ -81,8 +83,11 @@ k::Result<Linkage> loadLinkage(const std::string& path) {
   if (!text) return k::Error{text.error().code, path, text.error().message};
   auto design = k::io::readDocument(*text);
   if (!design) return k::Error{design.error().code, path, path + ": " + design.error().message};
-  const k::SweepGrid grid = k::sweepGridOf(*design);  // as the CLI reads a document
-  return Linkage{std::move(design->mechanism), grid, std::move(design->dynamics), design->kind, path};
+  return designLinkage(*design, path);
+}
+
+Linkage designLinkage(const k::Design& design, std::string source) {
+  return Linkage{design.mechanism, k::sweepGridOf(design), design.dynamics, design.kind, std::move(source)};
 }
 
 k::Result<k::SweepSpec> sweepSpecFor(const Linkage& linkage, const SweepOptions& o) {
@@ -108,35 +113,58 @@ k::Result<k::SweepSpec> sweepSpecFor(const Linkage& linkage, const SweepOptions&
   return spec;
 }
 
-k::Result<SweepTable> sweepTable(const Linkage& linkage, const k::SweepSpec& spec, bool withCsv, bool withColumns) {
+k::Result<SweepTable> sweepTable(const Linkage& linkage, const k::SweepSpec& spec, const TableRequest& request) {
   const k::Mechanism& m = linkage.mechanism;
+  if (request.forces && linkage.dynamics.empty())
+    return badValue("forces", "needs masses and loads, and " + linkage.source +
+                                  " has none: give them in a document's \"dynamics\" (see docs/document_format.md), "
+                                  "or try linkwright.example(\"funsho-fourbar\")");
   SweepTable table;
   std::ostringstream csvText;
   k::io::SweepCsvWriter csv(csvText, m);
   std::vector<k::SweepColumn> columns;
+  std::vector<k::ForceColumn> forceColumns;
+  std::optional<k::Error> refused;
   auto swept = k::sweepInWindows(m, spec, {}, kWindowSamples, [&](const k::SweepResult& part, std::size_t) {
-    if (withCsv) csv.write(part);
-    if (!withColumns) return true;
+    std::optional<k::ForceSweep> forces;
+    if (request.forces) {
+      auto solved = k::sweepForces(m, linkage.dynamics, part);
+      if (!solved) {
+        refused = k::Error{solved.error().code, "forces", solved.error().message};
+        return false;
+      }
+      forces = std::move(solved).value();
+    }
+    if (request.csv) csv.write(part, forces ? &*forces : nullptr);
+    if (!request.columns) return true;
     if (columns.empty()) {
       columns = k::sweepColumns(m, part.request, !part.time.empty());
+      if (forces) forceColumns = k::forceColumns(forces->bodies);
       for (const k::SweepColumn& c : columns) table.names.push_back(c.name);
-      table.values.resize(columns.size());
-      table.defined.resize(columns.size());
+      for (const k::ForceColumn& c : forceColumns) table.names.push_back(c.name);
+      table.values.resize(table.names.size());
+      table.defined.resize(table.names.size());
     }
     for (std::size_t j = 0; j < part.size(); ++j) {
       if (!part.assembled(j)) continue;  // as the CSV: the row is left out
+      // The CSV's empty cells: rates at a toggle, forces where they are not determined, and (by
+      // number_text's one rule) anything not finite.
+      const auto add = [&](std::size_t c, double value, bool defined) {
+        defined = defined && std::isfinite(value);
+        table.values[c].push_back(defined ? value : 0.0);
+        table.defined[c].push_back(defined);
+      };
       for (std::size_t c = 0; c < columns.size(); ++c) {
         const k::SweepColumn& column = columns[c];
-        // The CSV's empty cells: rates at a toggle, and (by number_text's one rule) anything
-        // not finite.
         const double value = column.value(part, j);
-        const bool defined = (part.ok(j) || !column.isRate()) && std::isfinite(value);
-        table.values[c].push_back(!defined ? 0.0 : isGridColumn(column) ? gridCellValue(value) : value);
-        table.defined[c].push_back(defined);
+        add(c, isGridColumn(column) ? gridCellValue(value) : value, part.ok(j) || !column.isRate());
       }
+      for (std::size_t c = 0; c < forceColumns.size(); ++c)
+        add(columns.size() + c, forceColumns[c].value(*forces, j), forces->ok(j));
     }
     return true;
   });
+  if (refused) return *refused;
   if (!swept) return swept.error();
   table.summary = std::move(swept).value();
   table.csv = std::move(csvText).str();

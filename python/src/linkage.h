@@ -7,6 +7,7 @@
 // SweepCsvWriter, so the module's CSV is the CLI's byte for byte, and its columns are the
 // CSV's: the same rows (samples that assembled), the same names, the values the cells hold.
 
+#include "kinematics/design/design.h"
 #include "kinematics/design/sweep_grid.h"
 #include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/model/fourbar.h"
@@ -37,6 +38,10 @@ kinematics::Result<Linkage> fourBarLinkage(const kinematics::FourBarLengths& len
                                            const std::string& branch,
                                            std::optional<kinematics::CouplerPointSpec> couplerPoint);
 
+/// A design (a document's, a synthesis's) with its own grid, as linkwright-cli reads a document;
+/// `source` names it in messages.
+Linkage designLinkage(const kinematics::Design& design, std::string source);
+
 /// A Linkwright document, read through the core's bounded reader; errors name the file.
 kinematics::Result<Linkage> loadLinkage(const std::string& path);
 
@@ -62,8 +67,16 @@ struct SweepTable {
   kinematics::SweepSummary summary;         ///< what the sweep found besides its rows
 };
 
-/// Solves the sweep; `withCsv` also writes the CSV text, `withColumns` the columns.
-kinematics::Result<SweepTable> sweepTable(const Linkage& linkage, const kinematics::SweepSpec& spec, bool withCsv,
-                                          bool withColumns);
+/// What a sweep call delivers.
+struct TableRequest {
+  bool csv = false;      ///< the CSV text
+  bool columns = false;  ///< the columns
+  bool forces = false;   ///< the force columns too (analyze --forces): needs the linkage's dynamics
+};
+
+/// Solves the sweep (and its forces, if asked for); errors name "forces" when the linkage has
+/// no masses or a window's forces cannot be solved.
+kinematics::Result<SweepTable> sweepTable(const Linkage& linkage, const kinematics::SweepSpec& spec,
+                                          const TableRequest& request);
 
 }  // namespace linkwright::python

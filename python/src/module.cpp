@@ -4,6 +4,8 @@
 // ValueError) with the core's sentence, and no NaN or infinity reaches Python: a CSV cell the
 // core leaves empty is a masked entry of a numpy.ma.MaskedArray (docs/python.md).
 
+#include "python/src/bindings.h"
+#include "python/src/convert.h"
 #include "python/src/linkage.h"
 
 #include "kinematics/design/design_analysis.h"
@@ -26,21 +28,12 @@
 namespace py = pybind11;
 namespace k = linkwright::kinematics;
 namespace lp = linkwright::python;
+using lp::CoreError;
+using lp::degrees;
+using lp::number;
+using lp::valueOrThrow;
 
 namespace {
-
-// The core's refusal on its way to Python (translated in PYBIND11_MODULE below).
-struct CoreError : std::exception {
-  k::Error error;
-  explicit CoreError(k::Error e) : error(std::move(e)) {}
-  const char* what() const noexcept override { return error.message.c_str(); }
-};
-
-template <typename T>
-T valueOrThrow(k::Result<T> result) {
-  if (!result) throw CoreError(result.error());
-  return std::move(result).value();
-}
 
 const char* codeName(k::ErrorCode code) {
   switch (code) {
@@ -52,12 +45,6 @@ const char* codeName(k::ErrorCode code) {
   }
   return "invalid-value";
 }
-
-// A number for Python: None where the core has none, so no NaN or infinity is handed out.
-py::object number(double value) {
-  return std::isfinite(value) ? py::object(py::float_(value)) : py::object(py::none());
-}
-py::object degrees(double radians) { return number(k::radToDeg(radians)); }
 
 lp::SweepOptions sweepOptions(std::optional<double> startDeg, std::optional<double> stopDeg,
                               std::optional<long long> samples, std::optional<double> omega,
@@ -74,37 +61,26 @@ void warnAbout(const lp::Linkage& linkage, const k::SweepSummary& summary) {
     if (PyErr_WarnEx(sweepWarning.ptr(), note.c_str(), 2) != 0) throw py::error_already_set();
 }
 
-py::dict sweepColumns(const lp::Linkage& linkage, const lp::SweepOptions& options) {
+py::dict sweepColumns(const lp::Linkage& linkage, const lp::SweepOptions& options, bool forces) {
   const k::SweepSpec spec = valueOrThrow(lp::sweepSpecFor(linkage, options));
   lp::SweepTable table;
   {
     py::gil_scoped_release unlocked;  // the sweep is the core's alone
-    table = valueOrThrow(lp::sweepTable(linkage, spec, false, true));
+    table = valueOrThrow(lp::sweepTable(linkage, spec, {false, true, forces}));
   }
   warnAbout(linkage, table.summary);
-  const py::object maskedArray = py::module_::import("numpy.ma").attr("MaskedArray");
   py::dict columns;
-  for (std::size_t c = 0; c < table.names.size(); ++c) {
-    const std::vector<double>& values = table.values[c];
-    py::array_t<double> data(static_cast<py::ssize_t>(values.size()));
-    py::array_t<bool> mask(static_cast<py::ssize_t>(values.size()));
-    auto d = data.mutable_unchecked<1>();
-    auto m = mask.mutable_unchecked<1>();
-    for (std::size_t j = 0; j < values.size(); ++j) {
-      d(static_cast<py::ssize_t>(j)) = values[j];
-      m(static_cast<py::ssize_t>(j)) = !table.defined[c][j];
-    }
-    columns[py::str(table.names[c])] = maskedArray(data, py::arg("mask") = mask);
-  }
+  for (std::size_t c = 0; c < table.names.size(); ++c)
+    columns[py::str(table.names[c])] = lp::maskedArray(table.values[c], table.defined[c]);
   return columns;
 }
 
-std::string sweepCsv(const lp::Linkage& linkage, const lp::SweepOptions& options) {
+std::string sweepCsv(const lp::Linkage& linkage, const lp::SweepOptions& options, bool forces) {
   const k::SweepSpec spec = valueOrThrow(lp::sweepSpecFor(linkage, options));
   lp::SweepTable table;
   {
     py::gil_scoped_release unlocked;
-    table = valueOrThrow(lp::sweepTable(linkage, spec, true, false));
+    table = valueOrThrow(lp::sweepTable(linkage, spec, {true, false, forces}));
   }
   warnAbout(linkage, table.summary);
   return std::move(table.csv);
@@ -202,7 +178,9 @@ PYBIND11_MODULE(_linkwright, module) {
   if (!sweepWarning) throw py::error_already_set();
   module.add_object("SweepWarning", sweepWarning);
 
-  py::class_<lp::Linkage>(module, "Linkage", "A planar linkage with the input grid linkwright-cli analyze uses for it.")
+  py::class_<lp::Linkage> linkage(module, "Linkage",
+                                  "A planar linkage with the input grid linkwright-cli analyze uses for it.");
+  linkage
       .def_property_readonly(
           "kind", [](const lp::Linkage& l) { return l.kind; }, "Its label: 'four-bar', 'slider-crank', …")
       .def_property_readonly(
@@ -228,33 +206,36 @@ PYBIND11_MODULE(_linkwright, module) {
       .def(
           "sweep",
           [](const lp::Linkage& l, std::optional<double> startDeg, std::optional<double> stopDeg,
-             std::optional<long long> samples, std::optional<double> omega, std::optional<double> alpha) {
-            return sweepColumns(l, sweepOptions(startDeg, stopDeg, samples, omega, alpha));
-          },
+             std::optional<long long> samples, std::optional<double> omega, std::optional<double> alpha,
+             bool forces) { return sweepColumns(l, sweepOptions(startDeg, stopDeg, samples, omega, alpha), forces); },
           py::arg("start_deg") = py::none(), py::arg("stop_deg") = py::none(), py::arg("samples") = py::none(),
-          py::arg("omega") = py::none(), py::arg("alpha") = py::none(),
+          py::arg("omega") = py::none(), py::arg("alpha") = py::none(), py::arg("forces") = false,
           "Sweeps the linkage over an input grid and returns its table as a dict of column name to "
           "numpy.ma.MaskedArray, with exactly linkwright-cli analyze's column names and rows. What is not given "
           "is the linkage's own grid (an example's step, a document's grid; 0° to 360° every 1° at 1 rad/s for "
           "four_bar()). start_deg and stop_deg are degrees for a crank (the length unit for a linear driver); "
           "samples replaces the step; omega in rad/s, alpha in rad/s². Rows where the linkage cannot be "
-          "assembled are left out; at a toggle position the rate entries are masked (the CSV's empty cells).")
+          "assembled are left out; at a toggle position the rate entries are masked (the CSV's empty cells). "
+          "forces=True adds linkwright-cli analyze --forces's columns (joint forces in N, the driving torque in "
+          "N·m, the shaking force and moment), for a linkage with masses; masked where they are not determined.")
       .def(
           "sweep_csv",
           [](const lp::Linkage& l, std::optional<double> startDeg, std::optional<double> stopDeg,
-             std::optional<long long> samples, std::optional<double> omega, std::optional<double> alpha) {
-            return sweepCsv(l, sweepOptions(startDeg, stopDeg, samples, omega, alpha));
-          },
+             std::optional<long long> samples, std::optional<double> omega, std::optional<double> alpha,
+             bool forces) { return sweepCsv(l, sweepOptions(startDeg, stopDeg, samples, omega, alpha), forces); },
           py::arg("start_deg") = py::none(), py::arg("stop_deg") = py::none(), py::arg("samples") = py::none(),
-          py::arg("omega") = py::none(), py::arg("alpha") = py::none(),
+          py::arg("omega") = py::none(), py::arg("alpha") = py::none(), py::arg("forces") = false,
           "The same sweep as CSV text, written by the core's CSV writer: byte for byte linkwright-cli analyze's "
-          "output (CRLF line ends).")
+          "output (CRLF line ends); with forces=True, analyze --forces's.")
       .def("classify", &classify,
            "What the linkage is: mobility, the input ranges where it assembles, and for a four-bar its Grashof "
            "class and transmission-angle range, for a quick return its time ratio and stroke. Angles in degrees.")
       .def("__repr__", [](const lp::Linkage& l) {
         return "<linkwright.Linkage " + (l.kind.empty() ? std::string("linkage") : l.kind) + " from " + l.source + ">";
       });
+  lp::bindExtremes(linkage);
+  lp::bindTolerance(linkage);
+  lp::bindSynthesis(module);
 
   module.def(
       "examples",

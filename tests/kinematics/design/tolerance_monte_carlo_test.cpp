@@ -138,6 +138,29 @@ TEST_CASE(
   }
 }
 
+TEST_CASE("a study run in shards of samples has the one run's bands to the last bit", "[tolerance][monte-carlo]") {
+  // ± 4 mm: some samples fail, so the counts are checked too.
+  const Mechanism m = thesisWithP();
+  const auto whole = toleranceMonteCarlo(m, grid(37), {4.0, 90, 5}).value();
+  const auto first = toleranceMonteCarlo(m, grid(37), {4.0, 50, 5, 0}).value();
+  const auto second = toleranceMonteCarlo(m, grid(37), {4.0, 40, 5, 50}).value();
+  CHECK(first.used + second.used == whole.used);
+  CHECK(first.notAssembled + second.notAssembled == whole.notAssembled);
+  CHECK(whole.notAssembled > 0);
+  for (std::size_t b = 0; b < whole.bands.size(); ++b) {
+    const ToleranceBand &w = whole.bands[b], &x = first.bands[b], &y = second.bands[b];
+    CAPTURE(w.column.name);
+    for (std::size_t j = 0; j < w.low.size(); ++j) {
+      CHECK(w.low[j] == std::min(x.low[j], y.low[j]));
+      CHECK(w.high[j] == std::max(x.high[j], y.high[j]));
+    }
+    CHECK(w.worstDeviation == std::max(x.worstDeviation, y.worstDeviation));
+  }
+  // The second shard differs from the first 40 samples: its indices are its own.
+  const auto early = toleranceMonteCarlo(m, grid(37), {4.0, 40, 5, 0}).value();
+  CHECK(early.bands[band(early, "P_x_mm")].low != second.bands[band(second, "P_x_mm")].low);
+}
+
 TEST_CASE("samples that do not assemble are counted and left out of the band", "[tolerance][monte-carlo]") {
   // 60/25/70/45 turns fully by 10 mm of Grashof margin: ± 4 mm on four lengths can take it away.
   const MonteCarloResult r = toleranceMonteCarlo(thesisWithP(), grid(73), {4.0, 200, 3}).value();
@@ -162,5 +185,7 @@ TEST_CASE("a bad tolerance or sample count is refused with its field and range",
   CHECK(message({25.0, 10, 1}).find("(got 25 mm)") != std::string::npos);
   CHECK(message({0.1, 0, 1}) == "samples: samples must be between 1 and 100000 (got 0)");
   CHECK(message({0.1, kMaxToleranceSamples + 1, 1}) == "samples: samples must be between 1 and 100000 (got 100001)");
+  CHECK(message({0.1, 10, 1, kMaxToleranceFirstSample + 1}) ==
+        "firstSample: firstSample must be between 0 and 9007199254740992 (got 9007199254740993)");
   CHECK(toleranceMonteCarlo(m, grid(13), {0.0, 3, 1}).value().bands[0].worstDeviation == 0.0);
 }

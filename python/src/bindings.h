@@ -1,0 +1,19 @@
+#pragma once
+// The parts of `import linkwright` each file binds (module.cpp calls them in turn).
+
+#include "python/src/linkage.h"
+
+#include <pybind11/pybind11.h>
+
+namespace linkwright::python {
+
+/// linkwright.PathSearch and PATH_STARTS_PER_BLOCK (synthesis.cpp).
+void bindSynthesis(pybind11::module_& module);
+
+/// Linkage.tolerance_study (tolerance.cpp).
+void bindTolerance(pybind11::class_<Linkage>& linkage);
+
+/// Linkage.extremes (extremes.cpp).
+void bindExtremes(pybind11::class_<Linkage>& linkage);
+
+}  // namespace linkwright::python

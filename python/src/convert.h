@@ -1,0 +1,54 @@
+#pragma once
+// What every binding file shares (python/src/*.cpp): the core's refusal on its way to Python,
+// raised as linkwright.Error by the translator module.cpp registers, and numbers handed to
+// Python with None where the core has none, so no NaN or infinity is handed out.
+
+#include "kinematics/model/result.h"
+#include "kinematics/model/units.h"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cmath>
+#include <exception>
+#include <utility>
+#include <vector>
+
+namespace linkwright::python {
+
+namespace py = pybind11;
+
+struct CoreError : std::exception {
+  kinematics::Error error;
+  explicit CoreError(kinematics::Error e) : error(std::move(e)) {}
+  const char* what() const noexcept override { return error.message.c_str(); }
+};
+
+template <typename T>
+T valueOrThrow(kinematics::Result<T> result) {
+  if (!result) throw CoreError(result.error());
+  return std::move(result).value();
+}
+
+inline py::object number(double value) {
+  return std::isfinite(value) ? py::object(py::float_(value)) : py::object(py::none());
+}
+
+inline py::object degrees(double radians) { return number(kinematics::radToDeg(radians)); }
+
+/// A numpy.ma.MaskedArray of `values`, masked where `defined` is false or a value is not finite
+/// (those entries hold 0).
+inline py::object maskedArray(const std::vector<double>& values, const std::vector<bool>& defined) {
+  py::array_t<double> data(static_cast<py::ssize_t>(values.size()));
+  py::array_t<bool> mask(static_cast<py::ssize_t>(values.size()));
+  auto d = data.mutable_unchecked<1>();
+  auto m = mask.mutable_unchecked<1>();
+  for (std::size_t j = 0; j < values.size(); ++j) {
+    const bool ok = (defined.empty() || defined[j]) && std::isfinite(values[j]);
+    d(static_cast<py::ssize_t>(j)) = ok ? values[j] : 0.0;
+    m(static_cast<py::ssize_t>(j)) = !ok;
+  }
+  return py::module_::import("numpy.ma").attr("MaskedArray")(data, py::arg("mask") = mask);
+}
+
+}  // namespace linkwright::python

@@ -1,0 +1,104 @@
+// Linkage.tolerance_study (kinematics/design/tolerance_monte_carlo.h): the seeded Monte-Carlo
+// study linkwright-cli tolerance runs, over samples [first_sample, first_sample + mc_samples),
+// so linkwright.batch can run a study of any size as shards whose bands it combines by their
+// lowest and highest values (exactly the one run's).
+
+#include "python/src/bindings.h"
+#include "python/src/convert.h"
+
+#include "kinematics/design/tolerance_monte_carlo.h"
+
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
+
+namespace linkwright::python {
+namespace {
+
+namespace k = kinematics;
+
+// The Python keywords for the fields the core names.
+k::Error spelled(k::Error e) {
+  for (const auto& [core, keyword] :
+       {std::pair<std::string, std::string>{"samples", "mc_samples"}, {"firstSample", "first_sample"}})
+    if (e.field == core) {
+      e.field = keyword;
+      e.message.replace(0, core.size(), keyword);
+    }
+  return e;
+}
+
+py::dict study(const Linkage& linkage, const SweepOptions& grid, double tolerance, long long samples,
+               std::uint64_t seed, long long firstSample) {
+  // Checked as typed, before they become unsigned.
+  if (samples < 1 || samples > static_cast<long long>(k::kMaxToleranceSamples))
+    throw CoreError(k::Error{k::ErrorCode::InvalidValue, "mc_samples",
+                             "mc_samples must be between 1 and " + std::to_string(k::kMaxToleranceSamples) + " (got " +
+                                 std::to_string(samples) + ")"});
+  if (firstSample < 0)
+    throw CoreError(k::Error{k::ErrorCode::InvalidValue, "first_sample",
+                             "first_sample must be between 0 and " + std::to_string(k::kMaxToleranceFirstSample) +
+                                 " (got " + std::to_string(firstSample) + ")"});
+  const k::SweepSpec spec = valueOrThrow(sweepSpecFor(linkage, grid));
+  const k::MonteCarloSpec mc{tolerance, static_cast<std::size_t>(samples), seed,
+                             static_cast<std::uint64_t>(firstSample)};
+  auto ran = [&] {
+    py::gil_scoped_release unlocked;
+    return k::toleranceMonteCarlo(linkage.mechanism, spec, mc);
+  }();
+  if (!ran) throw CoreError(spelled(ran.error()));
+  const k::MonteCarloResult r = std::move(ran).value();
+
+  py::dict out;
+  const k::SweepColumn input = k::sweepColumns(linkage.mechanism, r.nominal.request, !r.nominal.time.empty()).front();
+  std::vector<double> inputs;
+  for (std::size_t j = 0; j < r.nominal.size(); ++j) inputs.push_back(input.value(r.nominal, j));
+  out["input_name"] = input.name;
+  out["input"] = maskedArray(inputs, {});
+  py::dict columns;
+  for (const k::ToleranceBand& band : r.bands) {
+    py::dict b;
+    b["nominal"] = maskedArray(band.nominal, {});
+    b["low"] = maskedArray(band.low, {});
+    b["high"] = maskedArray(band.high, {});
+    b["worst_deviation"] = number(band.worstDeviation);
+    b["worst_at"] = std::isfinite(band.worstDeviation) ? py::object(py::int_(band.worstGridSample)) : py::none();
+    columns[py::str(band.column.name)] = b;
+  }
+  out["columns"] = columns;
+  py::list dimensions;
+  for (const k::ToleranceDimension& d : r.dimensions) dimensions.append(d.name);
+  out["dimensions"] = dimensions;
+  out["tolerance"] = number(tolerance);
+  out["seed"] = seed;
+  out["first_sample"] = firstSample;
+  out["mc_samples"] = samples;
+  out["used"] = r.used;
+  out["not_assembled"] = r.notAssembled;
+  out["singular"] = r.singular;
+  return out;
+}
+
+}  // namespace
+
+void bindTolerance(py::class_<Linkage>& linkage) {
+  linkage.def(
+      "tolerance_study",
+      [](const Linkage& l, double tolerance, long long mcSamples, std::uint64_t seed, long long firstSample,
+         std::optional<double> startDeg, std::optional<double> stopDeg, std::optional<long long> samples,
+         std::optional<double> omega, std::optional<double> alpha) {
+        return study(l, {startDeg, stopDeg, samples, omega, alpha}, tolerance, mcSamples, seed, firstSample);
+      },
+      py::arg("tolerance"), py::kw_only(), py::arg("mc_samples") = 1000, py::arg("seed") = k::kDefaultToleranceSeed,
+      py::arg("first_sample") = 0, py::arg("start_deg") = py::none(), py::arg("stop_deg") = py::none(),
+      py::arg("samples") = py::none(), py::arg("omega") = py::none(), py::arg("alpha") = py::none(),
+      "linkwright-cli tolerance's Monte-Carlo study: every length and pivot coordinate moved by a uniform offset "
+      "in ±tolerance (the length unit), mc_samples linkages (samples first_sample onwards: sample k's offsets "
+      "depend on the seed and k alone) swept over the grid (keywords as sweep's). Returns a dict: input_name, "
+      "input (the grid), columns (per output column: nominal, low, high as masked arrays over the grid, "
+      "worst_deviation, worst_at, its grid index), dimensions, used, not_assembled, singular and the study's "
+      "tolerance, seed, first_sample, mc_samples.");
+}
+
+}  // namespace linkwright::python
