@@ -55,7 +55,7 @@ deb_in_root=/tmp/$(basename "$deb")
   QT_QPA_PLATFORM=offscreen linkwright --screenshot /tmp/shot.png
   test -s /tmp/shot.png
   if [[ $python_module == yes ]]; then
-    python3 -c 'import linkwright; t = linkwright.example(\"thesis-crank-rocker\").sweep(); print(\"import linkwright:\", len(t), \"columns of\", t[\"crank_angle_deg\"].size, \"rows\")'
+    python3 -c 'import linkwright, linkwright.batch; t = linkwright.example(\"thesis-crank-rocker\").sweep(); print(\"import linkwright:\", len(t), \"columns of\", t[\"crank_angle_deg\"].size, \"rows\")'
   fi
 "
 cp "$root/tmp/shot.png" "$screenshot"

@@ -95,5 +95,7 @@ if(LINKWRIGHT_PYTHON_DEPENDS)
   # import linkwright (python/CMakeLists.txt): its interpreter version and NumPy, which
   # dpkg-shlibdeps cannot see (an extension links no libpython).
   set(CPACK_DEBIAN_PACKAGE_DEPENDS "${CPACK_DEBIAN_PACKAGE_DEPENDS}, ${LINKWRIGHT_PYTHON_DEPENDS}")
+  # linkwright.batch imports Dask only when called: the module works without it.
+  set(CPACK_DEBIAN_PACKAGE_SUGGESTS "python3-distributed")
 endif()
 include(CPack)

@@ -38,6 +38,7 @@ packages=(
                              # Debian 12, 2.13 on Debian 13, and the Python headers it builds on
   python3-numpy              # the module returns a sweep's columns as NumPy arrays
   python3-pytest             # the module's tests (python/tests), run by CTest
+  python3-distributed        # linkwright.batch runs on Dask; its tests start a LocalCluster
 )
 
 package_check_packages=(

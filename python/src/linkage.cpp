@@ -16,6 +16,7 @@
 #include "kinematics/solve/sweep_columns.h"
 
 #include <charconv>
+#include <cstdlib>
 #include <cmath>
 #include <sstream>
 #include <tuple>
@@ -88,6 +89,48 @@ k::Result<Linkage> loadLinkage(const std::string& path) {
 
 Linkage designLinkage(const k::Design& design, std::string source) {
   return Linkage{design.mechanism, k::sweepGridOf(design), design.dynamics, design.kind, std::move(source)};
+}
+
+std::string linkageState(const Linkage& linkage) {
+  k::Design d;
+  d.kind = linkage.kind;
+  d.mechanism = linkage.mechanism;
+  d.dynamics = linkage.dynamics;
+  d.time = linkage.grid.time;
+  if (d.time) d.samples = static_cast<std::size_t>(linkage.grid.timeSamples);
+  // The grid's numbers as hexadecimal floats (exact), then the source's name, then the document.
+  const k::SweepGrid& g = linkage.grid;
+  std::ostringstream out;
+  out << std::hexfloat << g.omega << ' ' << g.alpha << ' ' << g.fromDeg << ' ' << g.toDeg << ' ' << g.stepDeg << ' '
+      << g.timeSamples << '\n'
+      << linkage.source << '\n'
+      << k::io::writeDocument(d);
+  return std::move(out).str();
+}
+
+k::Result<Linkage> linkageFromState(const std::string& state) {
+  std::istringstream in(state);
+  std::string numbers, source;
+  std::getline(in, numbers);
+  std::getline(in, source);
+  const auto documentAt = static_cast<std::size_t>(in.tellg());
+  std::istringstream values(numbers);
+  std::string omega, alpha, from, to, step;
+  long long timeSamples = 0;
+  values >> omega >> alpha >> from >> to >> step >> timeSamples;
+  if (!values || documentAt > state.size())
+    return k::Error{k::ErrorCode::InvalidValue, "state", "not a pickled linkwright.Linkage"};
+  auto design = k::io::readDocument(std::string_view(state).substr(documentAt));
+  if (!design) return k::Error{design.error().code, "state", "a pickled Linkage: " + design.error().message};
+  Linkage l = designLinkage(*design, source);
+  // std::strtod reads hexadecimal floats exactly (operator>> does not, in libstdc++).
+  l.grid.omega = std::strtod(omega.c_str(), nullptr);
+  l.grid.alpha = std::strtod(alpha.c_str(), nullptr);
+  l.grid.fromDeg = std::strtod(from.c_str(), nullptr);
+  l.grid.toDeg = std::strtod(to.c_str(), nullptr);
+  l.grid.stepDeg = std::strtod(step.c_str(), nullptr);
+  l.grid.timeSamples = timeSamples;
+  return l;
 }
 
 k::Result<k::SweepSpec> sweepSpecFor(const Linkage& linkage, const SweepOptions& o) {

@@ -42,6 +42,11 @@ kinematics::Result<Linkage> fourBarLinkage(const kinematics::FourBarLengths& len
 /// `source` names it in messages.
 Linkage designLinkage(const kinematics::Design& design, std::string source);
 
+/// The linkage as text, for pickle: its mechanism, masses and time base as a document (the
+/// document writer keeps every double to the bit) and its grid's numbers; and back.
+std::string linkageState(const Linkage& linkage);
+kinematics::Result<Linkage> linkageFromState(const std::string& state);
+
 /// A Linkwright document, read through the core's bounded reader; errors name the file.
 kinematics::Result<Linkage> loadLinkage(const std::string& path);
 

@@ -230,6 +230,8 @@ PYBIND11_MODULE(_linkwright, module) {
       .def("classify", &classify,
            "What the linkage is: mobility, the input ranges where it assembles, and for a four-bar its Grashof "
            "class and transmission-angle range, for a quick return its time ratio and stroke. Angles in degrees.")
+      .def(py::pickle([](const lp::Linkage& l) { return py::bytes(lp::linkageState(l)); },
+                      [](const py::bytes& state) { return valueOrThrow(lp::linkageFromState(state)); }))
       .def("__repr__", [](const lp::Linkage& l) {
         return "<linkwright.Linkage " + (l.kind.empty() ? std::string("linkage") : l.kind) + " from " + l.source + ">";
       });

@@ -1,0 +1,83 @@
+"""linkwright.batch on a real Dask cluster (a LocalCluster of 2 worker processes):
+sharded jobs give exactly the serial answers, also when a worker is killed mid-run."""
+
+import concurrent.futures
+import os
+import pickle
+import signal
+import time
+
+import numpy
+import pytest
+
+distributed = pytest.importorskip("distributed")  # python3-distributed; install-deps.sh installs it
+
+import linkwright
+import linkwright.batch
+
+from test_path_search import POINTS, comparable
+
+
+@pytest.fixture(scope="module")
+def client():
+    # Worker processes, as on a real cluster: every task's arguments and results are pickled.
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None)
+    with distributed.Client(cluster) as client:
+        yield client
+    cluster.close()
+
+
+def test_a_linkage_pickles_as_the_same_linkage():
+    for name in linkwright.examples():
+        linkage = linkwright.example(name)
+        again = pickle.loads(pickle.dumps(linkage))
+        assert again.sweep_csv() == linkage.sweep_csv(), name
+        assert again.source == linkage.source and again.kind == linkage.kind
+    mine = linkwright.four_bar(60, 25, 70, 45, branch="crossed", coupler_point=(35, 20), unit="in")
+    assert pickle.loads(pickle.dumps(mine)).sweep_csv(omega=2) == mine.sweep_csv(omega=2)
+
+
+def test_a_sharded_path_search_is_the_serial_one(client):
+    search = linkwright.PathSearch(POINTS, starts=5 * linkwright.PATH_STARTS_PER_BLOCK, keep=6, seed=8)
+    serial = search.run()
+    for per_task in (1, 2):
+        sharded = linkwright.batch.path_synthesis(search, client, blocks_per_task=per_task)
+        assert comparable(sharded) == comparable(serial)
+        assert sharded["starts_run"] == serial["starts_run"] and not sharded["cancelled"]
+
+
+def test_a_sharded_tolerance_study_is_the_serial_one(client):
+    linkage = linkwright.four_bar(60, 25, 70, 45, coupler_point=(35, 20))
+    serial = linkage.tolerance_study(4.0, mc_samples=300, seed=5, samples=37)
+    sharded = linkwright.batch.tolerance_study(linkage, 4.0, client, mc_samples=300, seed=5, shard_samples=70,
+                                               samples=37)
+    assert serial["not_assembled"] > 0
+    for count in ("used", "not_assembled", "singular", "mc_samples"):
+        assert sharded[count] == serial[count]
+    for name, band in serial["columns"].items():
+        mine = sharded["columns"][name]
+        for part in ("low", "high", "nominal"):
+            assert numpy.array_equal(numpy.ma.getdata(mine[part]), numpy.ma.getdata(band[part])), (name, part)
+            assert numpy.array_equal(numpy.ma.getmaskarray(mine[part]), numpy.ma.getmaskarray(band[part]))
+        assert (mine["worst_deviation"], mine["worst_at"]) == (band["worst_deviation"], band["worst_at"])
+
+
+def test_a_worker_killed_mid_run_still_gives_the_serial_answer(client):
+    search = linkwright.PathSearch(POINTS, starts=20 * linkwright.PATH_STARTS_PER_BLOCK, keep=6, seed=9)
+    serial = search.run()
+    pids = client.run(os.getpid)  # worker address -> its process
+    with concurrent.futures.ThreadPoolExecutor(1) as pool:
+        running = pool.submit(linkwright.batch.path_synthesis, search, client)
+        # Wait until both workers are busy, then kill one as a machine dies: no goodbye.
+        deadline = time.monotonic() + 60
+        while not all(client.processing().get(address) for address in pids):
+            assert time.monotonic() < deadline, "the workers never both got a task"
+            time.sleep(0.05)
+        victim = sorted(pids)[0]
+        os.kill(pids[victim], signal.SIGKILL)
+        assert not running.done()
+        sharded = running.result(timeout=300)
+    assert comparable(sharded) == comparable(serial)
+    assert sharded["starts_run"] == serial["starts_run"]
+    # The nanny started a fresh worker process in its place.
+    assert pids[victim] not in client.run(os.getpid).values()
