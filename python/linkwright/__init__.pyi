@@ -58,6 +58,8 @@ class Linkage:
         alpha: Optional[float] = None,
     ) -> dict[str, dict[str, Optional[float]]]:
         """Each column's refined min and max and where: {min, min_at_deg, max, max_at_deg}."""
+    def instant_centres(self, at: float) -> dict[str, Any]:
+        """Every pair of bodies' instant centre at input `at`, the velocity ratio and mechanical advantage."""
     def tolerance_study(
         self,
         tolerance: float,

@@ -13,6 +13,9 @@ void bindSynthesis(pybind11::module_& module);
 /// Linkage.tolerance_study (tolerance.cpp).
 void bindTolerance(pybind11::class_<Linkage>& linkage);
 
+/// Linkage.instant_centres (centres.cpp).
+void bindCentres(pybind11::class_<Linkage>& linkage);
+
 /// Linkage.extremes (extremes.cpp).
 void bindExtremes(pybind11::class_<Linkage>& linkage);
 

@@ -16,8 +16,8 @@
 #include "kinematics/solve/sweep_columns.h"
 
 #include <charconv>
-#include <cstdlib>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 #include <tuple>
 

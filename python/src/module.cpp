@@ -235,6 +235,7 @@ PYBIND11_MODULE(_linkwright, module) {
       .def("__repr__", [](const lp::Linkage& l) {
         return "<linkwright.Linkage " + (l.kind.empty() ? std::string("linkage") : l.kind) + " from " + l.source + ">";
       });
+  lp::bindCentres(linkage);
   lp::bindExtremes(linkage);
   lp::bindTolerance(linkage);
   lp::bindSynthesis(module);

@@ -108,3 +108,33 @@ def test_a_bad_study_is_refused_naming_the_keyword(keywords, field, message):
         linkwright.example("thesis-crank-rocker").tolerance_study(0.05, **keywords)
     assert refused.value.field == field
     assert str(refused.value) == message
+
+
+@pytest.mark.parametrize("deg", [0.0, 37.0, 135.0, 250.0])
+def test_the_couplers_instant_centre_is_where_its_velocity_field_vanishes(deg):
+    # A second method: I13 = B + perp(v_B)/ω3, from the sweep's velocities; and the velocity
+    # ratio is ω4/ω2 from the same row.
+    thesis = linkwright.example("thesis-crank-rocker")
+    found = thesis.instant_centres(deg)
+    assert found["bodies"][0] == "frame" and len(found["bodies"]) == 4
+    row = thesis.sweep(start_deg=deg, stop_deg=deg, samples=1)
+    v = numpy.array([row["B_vx_mm_s"][0], row["B_vy_mm_s"][0]])
+    b = numpy.array([row["B_x_mm"][0], row["B_y_mm"][0]])
+    omega3 = row["coupler_omega_rad_s"][0]
+    expected = b + numpy.array([-v[1], v[0]]) / omega3
+    bodies = found["bodies"]
+    coupler = bodies.index("coupler") + 1
+    i13 = found["centres"][f"I1{coupler}"]
+    assert i13["kind"] == "finite" and i13["found_by"].startswith("Kennedy")
+    assert (i13["x"], i13["y"]) == pytest.approx(tuple(expected), abs=1e-9 * 100)
+    assert found["centres"]["I12"]["found_by"] == "pin O2"
+    assert found["velocity_ratio"] == pytest.approx(row["rocker_omega_rad_s"][0] / row["crank_omega_rad_s"][0],
+                                                    rel=1e-9)
+    assert found["mechanical_advantage"] == pytest.approx(1 / found["velocity_ratio"], rel=1e-12)
+
+
+def test_instant_centres_refuse_a_bad_input():
+    with pytest.raises(linkwright.Error) as refused:
+        linkwright.example("thesis-crank-rocker").instant_centres(float("nan"))
+    assert refused.value.field == "at"
+    assert "(got undefined)" in str(refused.value)
