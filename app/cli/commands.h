@@ -75,11 +75,10 @@ std::optional<kinematics::Error> checkDriveOptions(const Invocation& invocation,
 /// assembled (exit 3), for every command that takes it.
 std::optional<kinematics::Error> checkAtOption(const Invocation& invocation, const GridDefaults& defaults);
 
-/// The time base --law asks for: the law from --law and its options, starting at --from
-/// (degrees) at the speed of --rpm / --omega; times from --from-time to --to-time (defaults:
-/// the table's span, a rise's duration, a ramp and one turn, one turn) every --step-time
-/// seconds or at --samples instants (default 361).
-kinematics::Result<kinematics::SweepSpec> timeSweepSpecFor(const Invocation& invocation, const GridDefaults& defaults);
+/// `request` with --law and its options added (the core's grid rule makes them a time base:
+/// kinematics/design/sweep_grid.h), the --law-table file read; errors name --law-table.
+kinematics::Result<kinematics::SweepGridRequest> lawRequest(const Invocation& invocation, const GridDefaults& defaults,
+                                                            kinematics::SweepGridRequest request);
 
 /// Samples a command solves at a time when it sweeps in windows (sweepInWindows: analyze,
 /// extremes): a few megabytes of columns for a six-bar with forces, whatever the sample count.

@@ -10,8 +10,9 @@ namespace {
 using kinematics::Error;
 
 // The grid fields as the options spell them.
-const kinematics::GridFieldNames kOptionNames{"--rpm", "--omega", "--alpha",   "--from",
-                                              "--to",  "--step",  "--samples", "--law"};
+const kinematics::GridFieldNames kOptionNames{"--rpm",      "--omega",     "--alpha",     "--from",      "--to",
+                                              "--step",     "--samples",   "--law",       "--ramp-time", "--rise",
+                                              "--duration", "--law-table", "--from-time", "--to-time",   "--step-time"};
 
 kinematics::SweepGridRequest gridRequest(const Invocation& inv) {
   return {inv.rpm, inv.omega, inv.alpha, inv.fromDeg, inv.toDeg, inv.stepDeg, inv.samples};
@@ -19,9 +20,9 @@ kinematics::SweepGridRequest gridRequest(const Invocation& inv) {
 
 // The core names a field by its neutral key; the CLI's errors name the option.
 Error spelled(Error e) {
-  for (const auto field : {kinematics::GridField::Rpm, kinematics::GridField::Omega, kinematics::GridField::Alpha,
-                           kinematics::GridField::Start, kinematics::GridField::Stop, kinematics::GridField::Step,
-                           kinematics::GridField::Samples, kinematics::GridField::Law})
+  using F = kinematics::GridField;
+  for (const auto field : {F::Rpm, F::Omega, F::Alpha, F::Start, F::Stop, F::Step, F::Samples, F::Law, F::RampTime,
+                           F::Rise, F::Duration, F::LawTable, F::FromTime, F::ToTime, F::StepTime})
     if (e.field == kinematics::gridFieldKey(field)) {
       e.field = kOptionNames[field];
       break;
@@ -50,13 +51,15 @@ std::optional<Error> checkAtOption(const Invocation& inv, const GridDefaults& d)
   return std::nullopt;
 }
 
-// The grid rule is the core's (kinematics/design/sweep_grid.h); --law's time base is the CLI's.
+// The grid rule is the core's (kinematics/design/sweep_grid.h), --law's time base included.
 kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Invocation& inv, const GridDefaults& d) {
+  auto request = gridRequest(inv);
   if (inv.law) {
-    if (auto e = checkDriveOptions(inv, d.input)) return *e;
-    return timeSweepSpecFor(inv, d);
+    auto withLaw = lawRequest(inv, d, std::move(request));
+    if (!withLaw) return withLaw.error();
+    request = std::move(withLaw).value();
   }
-  auto spec = kinematics::sweepGridSpec(gridRequest(inv), d, kOptionNames);
+  auto spec = kinematics::sweepGridSpec(request, d, kOptionNames);
   if (!spec) return spelled(spec.error());
   return spec;
 }

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <tuple>
+#include <variant>
 
 namespace linkwright::kinematics {
 namespace {
@@ -58,6 +59,13 @@ const char* gridFieldKey(GridField field) {
   case GridField::Step: return "step";
   case GridField::Samples: return "samples";
   case GridField::Law: return "law";
+  case GridField::RampTime: return "rampTime";
+  case GridField::Rise: return "rise";
+  case GridField::Duration: return "duration";
+  case GridField::LawTable: return "lawTable";
+  case GridField::FromTime: return "fromTime";
+  case GridField::ToTime: return "toTime";
+  case GridField::StepTime: return "stepTime";
   }
   return "";
 }
@@ -72,6 +80,13 @@ const std::string& GridFieldNames::operator[](GridField field) const {
   case GridField::Step: return step;
   case GridField::Samples: return samples;
   case GridField::Law: return law;
+  case GridField::RampTime: return rampTime;
+  case GridField::Rise: return rise;
+  case GridField::Duration: return duration;
+  case GridField::LawTable: return lawTable;
+  case GridField::FromTime: return fromTime;
+  case GridField::ToTime: return toTime;
+  case GridField::StepTime: return stepTime;
   }
   return samples;
 }
@@ -101,6 +116,7 @@ std::optional<Error> checkGridRequest(const SweepGridRequest& r, InputKind kind,
 
 Result<SweepSpec> sweepGridSpec(const SweepGridRequest& r, const SweepGrid& d, const GridFieldNames& names) {
   if (auto e = checkGridRequest(r, d.input, names)) return *e;
+  if (r.law) return lawGridSpec(r, d, names);
   if (d.time) {
     // A document or example whose driver follows a law: its time base, at `samples` instants
     // if given.
@@ -167,6 +183,106 @@ Result<SweepSpec> sweepGridSpec(const SweepGridRequest& r, const SweepGrid& d, c
   spec.fromAngle = d.toInput(from);
   spec.toAngle = d.toInput(last);
   spec.samples = static_cast<std::size_t>(samples);
+  return spec;
+}
+
+namespace {
+
+// The law the request names, starting at `start` (the driver's coordinate) at `omega`.
+Result<MotionLaw> lawOf(const SweepGridRequest& r, const SweepGrid& d, const GridFieldNames& names, double start,
+                        double omega) {
+  const std::string& name = *r.law;
+  const auto needs = [&](GridField field) {
+    return badValue(field, names, "is needed: " + names.law + " " + name + " takes it");
+  };
+  if (name == "constant") return MotionLaw{ConstantVelocity{start, omega}};
+  if (name == "ramp") {
+    if (!r.rampTime) return needs(GridField::RampTime);
+    return MotionLaw{RampToSpeed{start, omega, *r.rampTime}};
+  }
+  if (name == "cycloidal" || name == "345") {
+    if (!r.rise) return needs(GridField::Rise);
+    if (!r.duration) return needs(GridField::Duration);
+    const double rise = d.toInput(*r.rise);
+    if (name == "cycloidal") return MotionLaw{CycloidalRise{start, rise, *r.duration}};
+    return MotionLaw{PolynomialRise{start, rise, *r.duration}};
+  }
+  if (name == "table") {
+    if (!r.table) return needs(GridField::LawTable);
+    return MotionLaw{*r.table};
+  }
+  std::string known;
+  for (const char* law : kMotionLawNames) known += (known.empty() ? "" : ", ") + std::string(law);
+  return badValue(GridField::Law, names, "must be one of " + known + " (got \"" + name + "\")");
+}
+
+// Where a law's time base ends by default: a rise's end, a ramp and one turn at speed, one turn.
+std::optional<double> defaultEndTime(const MotionLaw& law, double omega) {
+  if (const auto span = lawTimeSpan(law)) return span->second;
+  if (const auto* rise = std::get_if<CycloidalRise>(&law)) return rise->duration;
+  if (const auto* rise = std::get_if<PolynomialRise>(&law)) return rise->duration;
+  if (omega == 0.0) return std::nullopt;
+  const double turn = 2.0 * kPi / std::abs(omega);
+  if (const auto* ramp = std::get_if<RampToSpeed>(&law)) return ramp->rampTime + turn;
+  return turn;
+}
+
+// The figures of one law given with another, and the angle grid's fields beside a law.
+std::optional<Error> checkLawFields(const SweepGridRequest& r, const GridFieldNames& names) {
+  const std::string& law = *r.law;
+  for (const auto& [given, field, owner] :
+       {std::tuple{r.rampTime.has_value(), GridField::RampTime, law == "ramp"},
+        {r.rise.has_value(), GridField::Rise, law == "cycloidal" || law == "345"},
+        {r.duration.has_value(), GridField::Duration, law == "cycloidal" || law == "345"},
+        {r.table.has_value(), GridField::LawTable, law == "table"}})
+    if (given && !owner) return badValue(field, names, "does not apply to " + names.law + " " + law);
+  for (const auto& [given, field] : {std::pair{r.stop.has_value(), GridField::Stop},
+                                     {r.step.has_value(), GridField::Step},
+                                     {r.alpha.has_value(), GridField::Alpha}})
+    if (given)
+      return badValue(field, names,
+                      "sets the angle grid; with " + names.law + " the driver follows the law in time (give " +
+                          names.fromTime + ", " + names.toTime + " and " + names.samples + " instead)");
+  if (r.stepTime && r.samples)
+    return badValue(GridField::Samples, names, "and " + names.stepTime + " cannot be given together");
+  if (r.stepTime && !(std::isfinite(*r.stepTime) && *r.stepTime > 0.0))
+    return badValue(GridField::StepTime, names, "must be positive and finite (got " + formatNumber(*r.stepTime) + ")");
+  return std::nullopt;
+}
+
+}  // namespace
+
+Result<SweepSpec> lawGridSpec(const SweepGridRequest& r, const SweepGrid& d, const GridFieldNames& names) {
+  if (auto e = checkLawFields(r, names)) return *e;
+  const double omega = r.rpm ? rpmToRadPerSec(*r.rpm) : r.omega.value_or(d.omega);
+  auto law = lawOf(r, d, names, d.toInput(r.start.value_or(d.fromDeg)), omega);
+  if (!law) return law.error();
+  if (auto e = checkMotionLaw(*law, d.input)) return badValue(GridField::Law, names, "gives " + e->message);
+  const auto span = lawTimeSpan(*law);
+  const double from = r.fromTime.value_or(span ? span->first : 0.0);
+  const auto end = r.toTime ? r.toTime : defaultEndTime(*law, omega);
+  if (!end)
+    return badValue(GridField::ToTime, names, "is needed: the crank does not turn, so no default end time follows");
+  if (*end < from)
+    return badValue(
+        GridField::ToTime, names,
+        "must not be before " + names.fromTime + " (got " + formatShort(from) + " to " + formatShort(*end) + " s)");
+  long long samples = r.samples.value_or(kDefaultLawSamples);
+  if (r.stepTime) {
+    const double intervals = std::floor((*end - from) / *r.stepTime + 1e-9);
+    if (!(intervals + 1.0 <= static_cast<double>(kMaxSamples)))
+      return badValue(GridField::StepTime, names,
+                      "is too small: it would give " + formatShort(intervals + 1.0) + " rows (at most " +
+                          std::to_string(kMaxSamples) + ")");
+    samples = static_cast<long long>(intervals) + 1;
+  }
+  if (auto e = checkSampleCount(samples, names)) return *e;
+  SweepSpec spec;
+  spec.samples = static_cast<std::size_t>(samples);
+  const double last = r.stepTime ? from + static_cast<double>(samples - 1) * *r.stepTime : *end;
+  spec.time = TimeBase{std::move(*law), from, last};
+  if (auto e = checkSweepSpec(spec, d.input))
+    return badValue(GridField::FromTime, names, "/ " + names.toTime + ": " + e->message);
   return spec;
 }
 

@@ -41,16 +41,33 @@ SweepGrid sweepGridOf(const Example& example);
 SweepGrid sweepGridOf(const Design& design);
 
 /// The fields of a grid request.
-enum class GridField { Rpm, Omega, Alpha, Start, Stop, Step, Samples, Law };
+enum class GridField {
+  Rpm,
+  Omega,
+  Alpha,
+  Start,
+  Stop,
+  Step,
+  Samples,
+  Law,
+  RampTime,
+  Rise,
+  Duration,
+  LawTable,
+  FromTime,
+  ToTime,
+  StepTime
+};
 
 /// The neutral key an error's field holds: "rpm", "omega", "alpha", "start", "stop", "step",
-/// "samples", "law".
+/// "samples", "law", "rampTime", "rise", "duration", "lawTable", "fromTime", "toTime", "stepTime".
 const char* gridFieldKey(GridField field);
 
 /// How a front end spells each field in its messages ("--from", "start_deg"); an empty name is
 /// a field the front end does not offer (no rpm, no step, no law).
 struct GridFieldNames {
   std::string rpm, omega, alpha, start, stop, step, samples, law;
+  std::string rampTime, rise, duration, lawTable, fromTime, toTime, stepTime;
   const std::string& operator[](GridField field) const;
 };
 
@@ -63,17 +80,39 @@ struct SweepGridRequest {
   std::optional<double> stop;   ///< grid end, likewise; included when the step lands on it
   std::optional<double> step;   ///< grid step, likewise
   std::optional<long long> samples;
+  // A motion law in time instead of the grid (kinematics/solve/motion_law.h): `start` is where
+  // it starts, omega (or rpm) its speed, `samples` or stepTime the instants.
+  std::optional<std::string> law;  ///< "constant", "ramp", "cycloidal", "345" or "table"
+  std::optional<double> rampTime;  ///< s: ramp
+  std::optional<double> rise;      ///< degrees (a linear driver: its length unit): cycloidal, 345
+  std::optional<double> duration;  ///< s: cycloidal, 345
+  std::optional<TableLaw> table;   ///< table: q(t) read by the front end (io/law_table_csv.h)
+  std::optional<double> fromTime;  ///< s: the first instant (default: the table's first, or 0)
+  std::optional<double> toTime;    ///< s: the last (default: the rise's end, a ramp and a turn, a turn)
+  std::optional<double> stepTime;  ///< s: between instants, instead of samples
 };
+
+/// The laws `law` may name, in the order messages list them.
+inline constexpr const char* kMotionLawNames[] = {"constant", "ramp", "cycloidal", "345", "table"};
+/// The instants of a law's time base when neither samples nor stepTime is given.
+inline constexpr long long kDefaultLawSamples = 361;
 
 /// The speed and range fields against the input's domain (kinematics/model/validate.h,
 /// driver.h), each refusal naming the field as the front end spells it, its value and the range
 /// in that field's unit; nullopt when all fit.
 std::optional<Error> checkGridRequest(const SweepGridRequest& request, InputKind kind, const GridFieldNames& names);
 
-/// The sweep the request asks for, with `defaults` for what it leaves out: on a time base (a
-/// motion law) its instants, else the input grid from start to stop (the last grid value not
-/// past stop) every step or at `samples` points.
+/// The sweep the request asks for, with `defaults` for what it leaves out: with `law`, that law's
+/// time base (lawGridSpec); on the source's own time base its instants; else the input grid from
+/// start to stop (the last grid value not past stop) every step or at `samples` points.
 Result<SweepSpec> sweepGridSpec(const SweepGridRequest& request, const SweepGrid& defaults,
                                 const GridFieldNames& names);
+
+/// The time base `request.law` asks for (law_grid.cpp): the law by name with its figures,
+/// starting at `start` (else the source's grid start) at omega (rpm, else the source's speed),
+/// from fromTime to toTime at `samples` or every stepTime. Refused: a law without its figures,
+/// figures of another law, the angle grid's stop, step or alpha beside it, stepTime with
+/// samples, an end before the start, too many instants.
+Result<SweepSpec> lawGridSpec(const SweepGridRequest& request, const SweepGrid& defaults, const GridFieldNames& names);
 
 }  // namespace linkwright::kinematics

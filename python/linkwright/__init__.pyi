@@ -34,6 +34,15 @@ class Linkage:
         omega: Optional[float] = None,
         alpha: Optional[float] = None,
         forces: bool = False,
+        *,
+        law: Optional[Literal["constant", "ramp", "cycloidal", "345", "table"]] = None,
+        ramp_time_s: Optional[float] = None,
+        rise_deg: Optional[float] = None,
+        duration_s: Optional[float] = None,
+        law_table: Optional[str] = None,
+        from_time_s: Optional[float] = None,
+        to_time_s: Optional[float] = None,
+        step_time_s: Optional[float] = None,
     ) -> dict[str, numpy.ma.MaskedArray]:
         """The sweep as columns named as linkwright-cli analyze's; undefined entries masked.
         forces=True adds analyze --forces's columns (a linkage with masses)."""
@@ -45,6 +54,15 @@ class Linkage:
         omega: Optional[float] = None,
         alpha: Optional[float] = None,
         forces: bool = False,
+        *,
+        law: Optional[Literal["constant", "ramp", "cycloidal", "345", "table"]] = None,
+        ramp_time_s: Optional[float] = None,
+        rise_deg: Optional[float] = None,
+        duration_s: Optional[float] = None,
+        law_table: Optional[str] = None,
+        from_time_s: Optional[float] = None,
+        to_time_s: Optional[float] = None,
+        step_time_s: Optional[float] = None,
     ) -> str:
         """The sweep as CSV text, byte for byte linkwright-cli analyze's (analyze --forces's with forces)."""
     def classify(self) -> dict[str, object]:

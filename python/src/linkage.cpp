@@ -8,6 +8,7 @@
 #include "kinematics/io/bounded_read.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/document_json.h"
+#include "kinematics/io/law_table_csv.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/number_text.h"
@@ -134,18 +135,35 @@ k::Result<Linkage> linkageFromState(const std::string& state) {
 }
 
 k::Result<k::SweepSpec> sweepSpecFor(const Linkage& linkage, const SweepOptions& o) {
-  // The keyword arguments; the module offers no rpm, step or law, so their names are empty.
-  static const k::GridFieldNames names{"", "omega", "alpha", "start_deg", "stop_deg", "", "samples", ""};
+  // The keyword arguments; the module offers no rpm or step, so their names are empty.
+  static const k::GridFieldNames names{"",           "omega",     "alpha",       "start_deg",   "stop_deg",
+                                       "",           "samples",   "law",         "ramp_time_s", "rise_deg",
+                                       "duration_s", "law_table", "from_time_s", "to_time_s",   "step_time_s"};
   k::SweepGrid grid = linkage.grid;
   grid.input = k::inputKind(linkage.mechanism);
   grid.lengthUnit = linkage.mechanism.lengthUnit;
-  auto spec =
-      k::sweepGridSpec({std::nullopt, o.omega, o.alpha, o.startDeg, o.stopDeg, std::nullopt, o.samples}, grid, names);
+  k::SweepGridRequest request{std::nullopt, o.omega, o.alpha, o.startDeg, o.stopDeg, std::nullopt, o.samples};
+  request.law = o.law;
+  request.rampTime = o.rampTimeS;
+  request.rise = o.riseDeg;
+  request.duration = o.durationS;
+  request.fromTime = o.fromTimeS;
+  request.toTime = o.toTimeS;
+  request.stepTime = o.stepTimeS;
+  if (o.lawTable) {
+    const auto text = k::io::readFileBounded(*o.lawTable, k::io::kMaxLawTableBytes, "a table");
+    if (!text) return badValue("law_table", text.error().message);
+    auto table = k::io::readLawTableCsv(*text, grid.input, grid.lengthUnit);
+    if (!table) return badValue("law_table", *o.lawTable + ": " + table.error().message);
+    request.table = std::move(table).value();
+  }
+  auto spec = k::sweepGridSpec(request, grid, names);
   if (!spec) {
     // The core names a field by its neutral key; a refusal here names the keyword.
     k::Error e = spec.error();
-    for (const auto field :
-         {k::GridField::Omega, k::GridField::Alpha, k::GridField::Start, k::GridField::Stop, k::GridField::Samples})
+    using F = k::GridField;
+    for (const auto field : {F::Omega, F::Alpha, F::Start, F::Stop, F::Samples, F::Law, F::RampTime, F::Rise,
+                             F::Duration, F::LawTable, F::FromTime, F::ToTime, F::StepTime})
       if (e.field == k::gridFieldKey(field)) {
         e.field = names[field];
         break;

@@ -57,10 +57,21 @@ struct SweepOptions {
   std::optional<long long> samples;
   std::optional<double> omega;  ///< rad/s (a linear driver: length unit per s)
   std::optional<double> alpha;  ///< rad/s² (a linear driver: length unit per s²)
+  // A motion law in time instead of the grid, as linkwright-cli analyze --law: startDeg is
+  // where it starts, omega its speed, samples or stepTimeS its instants.
+  std::optional<std::string> law;  ///< "constant", "ramp", "cycloidal", "345", "table"
+  std::optional<double> rampTimeS;
+  std::optional<double> riseDeg;  ///< degrees (a linear driver: its length unit)
+  std::optional<double> durationS;
+  std::optional<std::string> lawTable;  ///< a CSV of time_s and the input (law "table")
+  std::optional<double> fromTimeS;
+  std::optional<double> toTimeS;
+  std::optional<double> stepTimeS;
 };
 
 /// The sweep the options ask for: the core's grid rule (kinematics/design/sweep_grid.h), as
-/// linkwright-cli's, with the Python parameter names in every refusal ("start_deg", "samples", …).
+/// linkwright-cli's, a law's table read through the core's bounded reader, with the Python
+/// parameter names in every refusal ("start_deg", "samples", "ramp_time_s", …).
 kinematics::Result<kinematics::SweepSpec> sweepSpecFor(const Linkage& linkage, const SweepOptions& options);
 
 /// A swept table: the CSV text, and the same table as columns.

@@ -46,10 +46,26 @@ const char* codeName(k::ErrorCode code) {
   return "invalid-value";
 }
 
-lp::SweepOptions sweepOptions(std::optional<double> startDeg, std::optional<double> stopDeg,
-                              std::optional<long long> samples, std::optional<double> omega,
-                              std::optional<double> alpha) {
-  return {startDeg, stopDeg, samples, omega, alpha};
+// Linkage.sweep and Linkage.sweep_csv: one signature, the grid's or a law's keywords.
+template <typename Sweep>
+void defSweep(py::class_<lp::Linkage>& linkage, const char* name, Sweep sweep, const char* doc) {
+  linkage.def(
+      name,
+      [sweep](const lp::Linkage& l, std::optional<double> startDeg, std::optional<double> stopDeg,
+              std::optional<long long> samples, std::optional<double> omega, std::optional<double> alpha, bool forces,
+              std::optional<std::string> law, std::optional<double> rampTime, std::optional<double> riseDeg,
+              std::optional<double> duration, std::optional<std::string> lawTable, std::optional<double> fromTime,
+              std::optional<double> toTime, std::optional<double> stepTime) {
+        return sweep(l,
+                     lp::SweepOptions{startDeg, stopDeg, samples, omega, alpha, std::move(law), rampTime, riseDeg,
+                                      duration, std::move(lawTable), fromTime, toTime, stepTime},
+                     forces);
+      },
+      py::arg("start_deg") = py::none(), py::arg("stop_deg") = py::none(), py::arg("samples") = py::none(),
+      py::arg("omega") = py::none(), py::arg("alpha") = py::none(), py::arg("forces") = false, py::kw_only(),
+      py::arg("law") = py::none(), py::arg("ramp_time_s") = py::none(), py::arg("rise_deg") = py::none(),
+      py::arg("duration_s") = py::none(), py::arg("law_table") = py::none(), py::arg("from_time_s") = py::none(),
+      py::arg("to_time_s") = py::none(), py::arg("step_time_s") = py::none(), doc);
 }
 
 // The CLI's notes on stderr, as Python warnings (linkwright.SweepWarning): a warning filter
@@ -203,30 +219,6 @@ PYBIND11_MODULE(_linkwright, module) {
             return names;
           },
           "The links' names, in the model's order.")
-      .def(
-          "sweep",
-          [](const lp::Linkage& l, std::optional<double> startDeg, std::optional<double> stopDeg,
-             std::optional<long long> samples, std::optional<double> omega, std::optional<double> alpha,
-             bool forces) { return sweepColumns(l, sweepOptions(startDeg, stopDeg, samples, omega, alpha), forces); },
-          py::arg("start_deg") = py::none(), py::arg("stop_deg") = py::none(), py::arg("samples") = py::none(),
-          py::arg("omega") = py::none(), py::arg("alpha") = py::none(), py::arg("forces") = false,
-          "Sweeps the linkage over an input grid and returns its table as a dict of column name to "
-          "numpy.ma.MaskedArray, with exactly linkwright-cli analyze's column names and rows. What is not given "
-          "is the linkage's own grid (an example's step, a document's grid; 0° to 360° every 1° at 1 rad/s for "
-          "four_bar()). start_deg and stop_deg are degrees for a crank (the length unit for a linear driver); "
-          "samples replaces the step; omega in rad/s, alpha in rad/s². Rows where the linkage cannot be "
-          "assembled are left out; at a toggle position the rate entries are masked (the CSV's empty cells). "
-          "forces=True adds linkwright-cli analyze --forces's columns (joint forces in N, the driving torque in "
-          "N·m, the shaking force and moment), for a linkage with masses; masked where they are not determined.")
-      .def(
-          "sweep_csv",
-          [](const lp::Linkage& l, std::optional<double> startDeg, std::optional<double> stopDeg,
-             std::optional<long long> samples, std::optional<double> omega, std::optional<double> alpha,
-             bool forces) { return sweepCsv(l, sweepOptions(startDeg, stopDeg, samples, omega, alpha), forces); },
-          py::arg("start_deg") = py::none(), py::arg("stop_deg") = py::none(), py::arg("samples") = py::none(),
-          py::arg("omega") = py::none(), py::arg("alpha") = py::none(), py::arg("forces") = false,
-          "The same sweep as CSV text, written by the core's CSV writer: byte for byte linkwright-cli analyze's "
-          "output (CRLF line ends); with forces=True, analyze --forces's.")
       .def("classify", &classify,
            "What the linkage is: mobility, the input ranges where it assembles, and for a four-bar its Grashof "
            "class and transmission-angle range, for a quick return its time ratio and stroke. Angles in degrees.")
@@ -235,6 +227,22 @@ PYBIND11_MODULE(_linkwright, module) {
       .def("__repr__", [](const lp::Linkage& l) {
         return "<linkwright.Linkage " + (l.kind.empty() ? std::string("linkage") : l.kind) + " from " + l.source + ">";
       });
+  defSweep(linkage, "sweep", &sweepColumns,
+           "Sweeps the linkage over an input grid and returns its table as a dict of column name to "
+           "numpy.ma.MaskedArray, with exactly linkwright-cli analyze's column names and rows. What is not given "
+           "is the linkage's own grid (an example's step, a document's grid; 0° to 360° every 1° at 1 rad/s for "
+           "four_bar()). start_deg and stop_deg are degrees for a crank (the length unit for a linear driver); "
+           "samples replaces the step; omega in rad/s, alpha in rad/s². Rows where the linkage cannot be "
+           "assembled are left out; at a toggle position the rate entries are masked (the CSV's empty cells). "
+           "forces=True adds linkwright-cli analyze --forces's columns (joint forces in N, the driving torque in "
+           "N·m, the shaking force and moment), for a linkage with masses; masked where they are not determined. "
+           "law= makes the driver follow a motion law in time instead, as analyze --law: 'constant' (at omega), "
+           "'ramp' (to omega in ramp_time_s), 'cycloidal' or '345' (a rise of rise_deg in duration_s) or 'table' "
+           "(law_table: a CSV of time_s and the input), starting at start_deg, at `samples` instants (default "
+           "361) or every step_time_s from from_time_s to to_time_s.");
+  defSweep(linkage, "sweep_csv", &sweepCsv,
+           "The same sweep as CSV text, written by the core's CSV writer: byte for byte linkwright-cli analyze's "
+           "output (CRLF line ends); with forces=True, analyze --forces's; with law=, analyze --law's.");
   lp::bindCentres(linkage);
   lp::bindExtremes(linkage);
   lp::bindTolerance(linkage);
