@@ -11,7 +11,9 @@ stderr about a sweep is a linkwright.SweepWarning. See docs/python.md.
 """
 
 from ._linkwright import (PATH_STARTS_PER_BLOCK, Error, Linkage, PathSearch, PathStartBlock, SweepWarning, example,
-                          examples, four_bar, load)
+                          examples, four_bar, load, synthesize_crank_rocker, synthesize_function, synthesize_shaper,
+                          synthesize_slider_crank)
 
 __all__ = ["PATH_STARTS_PER_BLOCK", "Error", "Linkage", "PathSearch", "PathStartBlock", "SweepWarning", "example",
-           "examples", "four_bar", "load"]
+           "examples", "four_bar", "load", "synthesize_crank_rocker", "synthesize_function", "synthesize_shaper",
+           "synthesize_slider_crank"]

@@ -149,3 +149,21 @@ class PathSearch:
         """Block `block` of the search, alone."""
     def merge(self, blocks: Sequence[PathStartBlock]) -> dict[str, Any]:
         """run()'s answer from its blocks, to the last bit."""
+
+def synthesize_crank_rocker(swing_deg: float, *, time_ratio: float = 1.0, length: float = 1.0,
+                            scale: Literal["rocker", "frame"] = "rocker", unit: str = "mm") -> dict[str, Any]:
+    """A crank-rocker for a swing and time ratio (linkwright-cli synthesize swing)."""
+
+def synthesize_slider_crank(stroke: float, *, time_ratio: float = 1.0, rod: Optional[float] = None,
+                            offset: Optional[float] = None, unit: str = "mm") -> dict[str, Any]:
+    """A slider-crank for a stroke and time ratio, its rod or offset given (synthesize slider)."""
+
+def synthesize_shaper(stroke: float, *, time_ratio: float = 1.5, crank: float, link: float,
+                      guide_height: Optional[float] = None, unit: str = "mm") -> dict[str, Any]:
+    """A crank-shaper for a stroke and time ratio (synthesize shaper)."""
+
+def synthesize_function(function: str, *, x0: float, x1: float, input_start_deg: float, input_span_deg: float,
+                        output_start_deg: float, output_span_deg: float, frame: float = 100.0,
+                        points: Optional[Sequence[float]] = None, count: int = 3,
+                        unit: str = "mm") -> dict[str, Any]:
+    """A Freudenstein function generator (synthesize function)."""

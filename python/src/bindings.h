@@ -10,6 +10,10 @@ namespace linkwright::python {
 /// linkwright.PathSearch and PATH_STARTS_PER_BLOCK (synthesis.cpp).
 void bindSynthesis(pybind11::module_& module);
 
+/// synthesize_crank_rocker, synthesize_slider_crank, synthesize_shaper, synthesize_function
+/// (problems.cpp).
+void bindProblems(pybind11::module_& module);
+
 /// Linkage.tolerance_study (tolerance.cpp).
 void bindTolerance(pybind11::class_<Linkage>& linkage);
 

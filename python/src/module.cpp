@@ -247,6 +247,7 @@ PYBIND11_MODULE(_linkwright, module) {
   lp::bindExtremes(linkage);
   lp::bindTolerance(linkage);
   lp::bindSynthesis(module);
+  lp::bindProblems(module);
 
   module.def(
       "examples",
