@@ -249,12 +249,11 @@ OptimiseConstraintState stateOf(const Design& start, const Design& result, const
     if (values[d] < dims[d].lo || values[d] > dims[d].hi) s.withinRanges = false;
     if (dims[d].fixed && values[d] != dims[d].dimension.value) s.pivotsKept = false;
   }
-  for (std::size_t p = 0; p < start.mechanism.points.size(); ++p)
-    if (std::holds_alternative<GroundPoint>(start.mechanism.points[p].definition))
-      for (const OptimiseDimension& d : dims)
-        if (d.fixed && d.dimension.parameter.point.index == p &&
-            start.mechanism.points[p].definition != result.mechanism.points[p].definition)
-          s.pivotsKept = false;
+  // A fixed pivot is where it was to the bit: none of its numbers is offset.
+  for (const OptimiseDimension& d : dims) {
+    const std::size_t p = d.dimension.parameter.point.index;
+    if (d.fixed && start.mechanism.points[p].definition != result.mechanism.points[p].definition) s.pivotsKept = false;
+  }
   return s;
 }
 
