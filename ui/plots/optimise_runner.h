@@ -31,7 +31,7 @@ public:
   void start(kinematics::Design design, kinematics::OptimiseRequest request);
   /// Asks the run to stop; finished() still comes, with the best found before.
   void cancel();
-  /// Stops the run; finished() does not come for it.
+  /// Stops the run; finished() does not come for it, droppedEnded() does.
   void drop();
   bool running() const { return m_running; }
   /// The last run's outcome (valid after finished()).
@@ -41,6 +41,8 @@ signals:
   /// Designs measured so far, of the budget.
   void progressed(int done, int total);
   void finished();
+  /// A dropped run has ended: a new one may start without waiting.
+  void droppedEnded();
 
 private:
   struct Shared {
@@ -51,7 +53,8 @@ private:
   void poll();
   void onFinished();
 
-  QFutureWatcher<Outcome> m_watcher;
+  // One watcher a run: a replaced run's watcher goes with its undelivered signals.
+  std::unique_ptr<QFutureWatcher<Outcome>> m_watcher;
   QTimer m_poll;
   std::shared_ptr<Shared> m_shared;
   std::optional<Outcome> m_outcome;

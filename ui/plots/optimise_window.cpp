@@ -163,6 +163,7 @@ OptimiseWindow::OptimiseWindow(MechanismDocument* document, QWidget* parent)
     m_progress->setValue(std::min(done, total));
   });
   connect(m_runner, &OptimiseRunner::finished, this, &OptimiseWindow::onFinished);
+  connect(m_runner, &OptimiseRunner::droppedEnded, this, &OptimiseWindow::updateFields);
   connect(document, &MechanismDocument::changed, this, [this](Changes what) {
     if (what & Change::Design) followDesign();
   });
@@ -274,6 +275,8 @@ void OptimiseWindow::cancelRun() {
 }
 
 void OptimiseWindow::onFinished() {
+  // A run whose simplexes shrank before the budget was spent has ended all the same.
+  m_progress->setValue(m_progress->maximum());
   const auto& outcome = m_runner->outcome();
   if (!outcome || !outcome->ok()) {
     m_summary->setText(tr("No optimisation: %1")

@@ -2,7 +2,8 @@
 // menu, the rocker's peak α chosen, Run, the progress bar filling while it runs in the
 // background, then Accept: the design is the core's result for the same request, the chart
 // holds the objective's curve before and after; Ctrl+Z restores the start exactly. Cancel
-// mid-run leaves the design as it was; an edit of the design while a result is shown drops it.
+// mid-run leaves the design as it was; an edit of the design while a result is shown drops it,
+// and one while it runs stops the run.
 // After every step the journeys' invariants hold.
 
 #include "tests/ui/journeys/journey.h"
@@ -58,11 +59,12 @@ TEST_CASE("Edit > Optimise runs in the background, Accept applies the core's res
   journey.check("Edit ▸ Optimise…");
   window->objectiveBox()->setCurrentIndex(0);  // peak |α|
   window->linkBox()->setCurrentText("rocker");
-  window->evaluationsField()->setValue(150);
   CHECK_FALSE(window->acceptButton()->isEnabled());
 
   runAndWait(journey, window);
   REQUIRE(window->result().has_value());
+  // The simplexes shrank before the budget was spent: the bar is full all the same.
+  CHECK(window->result()->evaluations < window->evaluationsField()->value());
   CHECK(window->progressBar()->value() == window->progressBar()->maximum());
   CHECK(window->acceptButton()->isEnabled());
   CHECK(document->design() == start);  // nothing changes before Accept
@@ -134,4 +136,20 @@ TEST_CASE("Cancel mid-run leaves the design, and an edit drops a result made for
   CHECK_FALSE(window->chart()->isVisible());
   CHECK(window->summaryText().contains("dropped"));
   journey.check("edited while a result was shown");
+
+  // An edit while it runs stops the run: no result comes for the design before, and Run is
+  // offered again once the worker has stopped.
+  window->evaluationsField()->setValue(100000);
+  QTest::mouseClick(window->runButton(), Qt::LeftButton);
+  REQUIRE(window->running());
+  REQUIRE_FALSE(document->edit(start, "speed back"));
+  CHECK(window->summaryText().contains("the run was stopped"));
+  for (int i = 0; i < 3000 && window->running(); ++i) QTest::qWait(10);
+  journey.settle();
+  CHECK_FALSE(window->running());
+  CHECK_FALSE(window->result().has_value());
+  CHECK(window->runButton()->isEnabled());
+  CHECK_FALSE(window->cancelButton()->isEnabled());
+  CHECK(document->design() == start);
+  journey.check("edited while running");
 }
