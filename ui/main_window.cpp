@@ -30,6 +30,7 @@
 #include "ui/panels/dynamics_panel.h"
 #include "ui/panels/motion_panel.h"
 #include "ui/plots/force_plot_panel.h"
+#include "ui/plots/optimise_window.h"
 #include "ui/plots/plot_panel.h"
 #include "ui/plots/quality_bar.h"
 #include "ui/plots/tolerance_window.h"
@@ -252,7 +253,7 @@ MainWindow::~MainWindow() = default;
 
 namespace {
 
-// A window of the designer's own (inversions, cognates, tolerances): made on first ask, then
+// A window of the designer's own (inversions, cognates, tolerances, optimise): made on first ask, then
 // shown, raised and given the focus each time.
 template <typename Window>
 Window* showOwnWindow(Window*& window, MechanismDocument* document, QWidget* parent) {
@@ -273,6 +274,8 @@ InversionsWindow* MainWindow::showInversions() {
 CognatesWindow* MainWindow::showCognates() { return showOwnWindow(m_cognates, m_document, this); }
 
 ToleranceWindow* MainWindow::showTolerances() { return showOwnWindow(m_tolerances, m_document, this); }
+
+OptimiseWindow* MainWindow::showOptimise() { return showOwnWindow(m_optimise, m_document, this); }
 
 void MainWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
@@ -306,6 +309,9 @@ void MainWindow::buildMenus() {
   edit->setToolTipsVisible(true);  // why Balance is disabled
   m_balanceAction = edit->addAction(tr("&Balance the shaking force"), this, &MainWindow::balanceShakingForce);
   m_springBalanceAction = edit->addAction(tr("Balance the torque by a &spring…"), this, &MainWindow::balanceBySpring);
+  edit->addAction(tr("&Optimise…"), this, &MainWindow::showOptimise)
+      ->setToolTip(tr("A better linkage by one measure (peak α, transmission angle, a path, the torque), its "
+                      "lengths within ranges; accepted as one undoable edit"));
   const auto followBalance = [this] {
     const k::Design& d = m_document->design();
     const auto crank = k::checkCrankDriven(d.mechanism);

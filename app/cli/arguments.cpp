@@ -53,6 +53,9 @@ const std::set<std::string>& optionsOf(Command command) {
                                                "--rpm",     "--omega",   "--alpha", "--from",      "--to",
                                                "--step",    "--samples", "--at",    "--tolerance", "--mc-samples",
                                                "--seed",    "--json",    "-o",      "--output"};
+  static const std::set<std::string> optimise{"--example",      "--objective",  "--point", "--path-measure",
+                                              "--length-range", "--fix-pivots", "--seed",  "--evaluations",
+                                              "--starts",       "--json",       "-o",      "--output"};
   static const std::set<std::string> none{};
   switch (command) {
   case Command::Analyze: return analyze;
@@ -70,6 +73,7 @@ const std::set<std::string>& optionsOf(Command command) {
   case Command::Balance: return balance;
   case Command::Cognates: return cognates;
   case Command::Tolerance: return tolerance;
+  case Command::Optimise: return optimise;
   default: return none;
   }
 }
@@ -92,6 +96,7 @@ const char* commandName(Command command) {
   case Command::Balance: return "balance";
   case Command::Cognates: return "cognates";
   case Command::Tolerance: return "tolerance";
+  case Command::Optimise: return "optimise";
   default: return "linkwright-cli";
   }
 }
@@ -237,14 +242,28 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
     inv.angles = value;
   } else if (option == "--tolerance" && inv.command == Command::Tolerance) {
     return number(inv.tolerance);
-  } else if (option == "--mc-samples" || option == "--seed") {
+  } else if (option == "--objective" || option == "--point" || option == "--path-measure" || option == "--fix-pivots") {
+    if (value.empty()) return usage(option, option + " needs a value");
+    (option == "--objective"      ? inv.objective
+     : option == "--point"        ? inv.objectivePoint
+     : option == "--path-measure" ? inv.pathMeasure
+                                  : inv.fixPivots) = value;
+  } else if (option == "--length-range") {
+    if (auto e = positive(inv.lengthRangePercent, option, value)) return e;
+    if (*inv.lengthRangePercent > 95.0)
+      return usage(option, option + " must be above 0 and at most 95, a percentage of each length (got " + value + ")");
+  } else if (option == "--mc-samples" || option == "--seed" || option == "--evaluations" || option == "--starts") {
     long long n = 0;
     const auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), n);
     if (ec != std::errc{} || ptr != value.data() + value.size() || value.empty())
       return usage(option, option + ": '" + value + "' is not a whole number");
     if (option == "--seed" && n < 0)
       return usage(option, option + " must be a whole number from 0 (got " + value + ")");
+    if (option == "--seed" && inv.command == Command::Optimise && n > 4294967295LL)
+      return usage(option, option + " must be a whole number from 0 to 4294967295 (got " + value + ")");
     if (option == "--seed") inv.seed = static_cast<unsigned long long>(n);
+    else if (option == "--evaluations") inv.evaluations = n;
+    else if (option == "--starts") inv.starts = n;
     else inv.monteCarloSamples = n;
   } else if (option == "--map" || option == "--offset" || option == "--tolerance") {
     return applyCompareOption(inv, option, value);
@@ -352,6 +371,13 @@ std::optional<Error> checkCombination(const Invocation& inv) {
   if (inv.command == Command::Tolerance && inv.atDeg.size() > 1)
     return usage("--at", "tolerance lists the sensitivities at one input: --at takes one value (got " +
                              std::to_string(inv.atDeg.size()) + ")");
+  if (inv.command == Command::Optimise && !inv.objective)
+    return usage("--objective",
+                 "optimise needs --objective peak-alpha:LINK, transmission, path:TARGETS.csv or rms-torque");
+  if (inv.command == Command::Optimise && !inv.example && !inv.documentPath)
+    return usage("--example", "optimise needs FILE.json or --example NAME: the linkage to optimise");
+  if (inv.command == Command::Optimise && !inv.outputFile)
+    return usage("--output", "optimise needs -o FILE.linkwright (where to write the optimised design)");
   if (inv.command == Command::Cognates && !inv.outputFile)
     return usage("--output",
                  "cognates needs -o PREFIX (the cognates are written to PREFIX-1.linkwright and PREFIX-2.linkwright)");
@@ -378,9 +404,10 @@ std::optional<Error> checkCombination(const Invocation& inv) {
 kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& args) {
   Invocation inv;
   if (args.empty())
-    return usage("COMMAND",
-                 "missing command (analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, "
-                 "report, compare, machine, balance, cognates, tolerance, synthesize or examples; see --help)");
+    return usage(
+        "COMMAND",
+        "missing command (analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, "
+        "report, compare, machine, balance, cognates, tolerance, optimise, synthesize or examples; see --help)");
   const std::string& first = args[0];
   if (first == "--help" || first == "-h" || first == "help") {
     inv.command = Command::Help;
@@ -421,13 +448,15 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   else if (first == "balance") inv.command = Command::Balance;
   else if (first == "cognates") inv.command = Command::Cognates;
   else if (first == "tolerance") inv.command = Command::Tolerance;
+  else if (first == "optimise") inv.command = Command::Optimise;
   else if (!first.empty() && first[0] == '-')
     return usage(first, "unknown option '" + first + "' (see linkwright-cli --help)");
   else
-    return usage(first, "unknown command '" + first +
-                            "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, "
-                            "dxf, report, compare, machine, balance, cognates, tolerance, synthesize, examples; see "
-                            "--help)");
+    return usage(first,
+                 "unknown command '" + first +
+                     "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, "
+                     "dxf, report, compare, machine, balance, cognates, tolerance, optimise, synthesize, examples; see "
+                     "--help)");
   if (inv.command == Command::Arm) inv.lengthUnit = "m";  // the arm's seed (004) works in metres
 
   std::set<std::string> seen;
@@ -452,7 +481,8 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
         inv.command == Command::Analyze || inv.command == Command::Extremes || inv.command == Command::Classify ||
         inv.command == Command::Centres || inv.command == Command::Polygon || inv.command == Command::Inversions ||
         inv.command == Command::Dxf || inv.command == Command::Report || inv.command == Command::Machine ||
-        inv.command == Command::Balance || inv.command == Command::Cognates || inv.command == Command::Tolerance;
+        inv.command == Command::Balance || inv.command == Command::Cognates || inv.command == Command::Tolerance ||
+        inv.command == Command::Optimise;
     if (takesDocument && !option.empty() && option[0] != '-' && !inlineValue) {
       if (inv.documentPath)
         return usage(option, "only one document can be analysed at a time (got '" + *inv.documentPath + "' and '" +

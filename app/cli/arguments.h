@@ -38,7 +38,8 @@ enum class Command {
   Machine,
   Balance,
   Cognates,
-  Tolerance
+  Tolerance,
+  Optimise
 };
 
 /// compare --offset: auto (fitted), none, or a value in degrees.
@@ -122,6 +123,14 @@ struct Invocation {
   std::optional<double> tolerance;             ///< --tolerance, ± on every dimension, length unit
   std::optional<long long> monteCarloSamples;  ///< --mc-samples
   std::optional<unsigned long long> seed;      ///< --seed
+  // optimise (kinematics/synthesis/optimise_linkage.h); the core checks the ranges.
+  std::optional<std::string> objective;       ///< --objective KIND[:ARGUMENT], parsed by the command
+  std::optional<std::string> objectivePoint;  ///< --point, the path objective's point (default P)
+  std::optional<std::string> pathMeasure;     ///< --path-measure worst|rms
+  std::optional<double> lengthRangePercent;   ///< --length-range, ± percent of each length, in (0, 95]
+  std::optional<std::string> fixPivots;       ///< --fix-pivots NAME,NAME|all|none
+  std::optional<long long> evaluations;       ///< --evaluations
+  std::optional<long long> starts;            ///< --starts
 };
 
 /// Parses the arguments after the program name.

@@ -48,6 +48,9 @@ Commands:
   tolerance  ± a tolerance on every length and pivot: a Monte-Carlo band of the output
              curves with the worst deviation per column, the first-order worst case
              and the exact sensitivities ∂y/∂p beside it
+  optimise   a better linkage by one measure (peak |α| of a link, worst transmission
+             angle, distance from a target path, RMS driving torque), its lengths in
+             ranges, its pivots, Grashof class and branch kept; written as a document
   synthesize a linkage from the motion wanted: rocker swing and time ratio, slider or
              shaper stroke, function generator, coupler poses, coupler path; lists
              the candidates with their defects and writes the chosen one as a document
@@ -440,6 +443,35 @@ Output: per output column (each link's angle, ω and α, each moving point's x a
   assemble at every input, or meet a toggle, are counted and left out of the band.
 )";
 
+constexpr const char* kOptimiseOptions =
+    R"(optimise options (FILE.json or --example NAME; the design's own grid is the cycle every
+objective is measured over; see docs/optimisation.md):
+  --objective KIND      what to improve (required):
+                          peak-alpha:LINK   the peak |α| of LINK over the cycle, lowered
+                          transmission      the worst transmission angle, raised
+                          path:TARGETS.csv  the distance of a point's path from the targets
+                                            (x, y in the length unit, the first two columns),
+                                            lowered
+                          rms-torque        the RMS driving torque over a turn, lowered
+                                            (needs the design's masses)
+  --point NAME          the point whose path is compared (path; default P)
+  --path-measure M      worst (default): the largest target's distance from the path;
+                        rms: the root mean square of those distances
+  --length-range PCT    each length within ±PCT % of its start, coordinates within ±PCT % of
+                        the linkage's longest length (default 50, at most 95)
+  --fix-pivots LIST     the ground pivots kept where they are: names, comma-separated, or
+                        all (default) or none
+  --seed S              the seed of the starts after the first (default 46): the same seed
+                        gives the same design on every machine
+  --evaluations N       designs measured in all, 10 to 1000000 (default 1500)
+  --starts N            Nelder–Mead runs, the first from the design itself (default 4)
+  --json                the result as JSON
+  -o, --output FILE     where the optimised design is written (required)
+Output: the objective before → after, the designs measured, what was kept (Grashof class,
+  branch, assembly over the whole grid, ranges, fixed pivots) and each dimension's start,
+  optimised value and range. The design is kept whole: its grid, speed and masses.
+)";
+
 constexpr const char* kExitCodes = R"(Exit codes:
   0  success
   1  the output file could not be written, or memory ran out (the old file is kept)
@@ -468,6 +500,7 @@ Examples:
   linkwright-cli balance --example funsho-fourbar -o balanced.linkwright
   linkwright-cli cognates --example thesis-crank-rocker --coupler-point 35,20 -o thesis
   linkwright-cli tolerance --example thesis-crank-rocker --tolerance 0.05 --json
+  linkwright-cli optimise --example thesis-crank-rocker --objective peak-alpha:rocker -o better.linkwright
   linkwright-cli synthesize swing --swing 60 --time-ratio 1.3 --rocker 50 -o design.json
 )";
 
@@ -492,6 +525,7 @@ std::string helpText(const std::string& topic) {
   if (topic.empty() || topic == "balance") text += std::string("\n") + kBalanceOptions;
   if (topic.empty() || topic == "cognates") text += std::string("\n") + kCognatesOptions;
   if (topic.empty() || topic == "tolerance") text += std::string("\n") + kToleranceOptions;
+  if (topic.empty() || topic == "optimise") text += std::string("\n") + kOptimiseOptions;
   if (topic.empty() || topic == "synthesize") text += std::string("\n") + kSynthesizeOptions;
   return text + "\n" + kExitCodes;
 }
@@ -512,11 +546,11 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
         inv.helpTopic != "polygon" && inv.helpTopic != "inversions" && inv.helpTopic != "dxf" &&
         inv.helpTopic != "report" && inv.helpTopic != "compare" && inv.helpTopic != "accuracy" &&
         inv.helpTopic != "synthesize" && inv.helpTopic != "machine" && inv.helpTopic != "balance" &&
-        inv.helpTopic != "cognates" && inv.helpTopic != "tolerance" && inv.helpTopic != "examples" &&
-        inv.helpTopic != "linkwright-cli") {
+        inv.helpTopic != "cognates" && inv.helpTopic != "tolerance" && inv.helpTopic != "optimise" &&
+        inv.helpTopic != "examples" && inv.helpTopic != "linkwright-cli") {
       err << "linkwright-cli: no help for '" << inv.helpTopic
           << "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, report, "
-             "compare, machine, balance, cognates, tolerance, synthesize, examples)\n";
+             "compare, machine, balance, cognates, tolerance, optimise, synthesize, examples)\n";
       return toInt(ExitCode::BadInput);
     }
     out << helpText(inv.helpTopic == "linkwright-cli" || inv.helpTopic == "examples" ? "" : inv.helpTopic);
@@ -539,6 +573,7 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   case Command::Balance: return toInt(runBalance(inv, out, err));
   case Command::Cognates: return toInt(runCognates(inv, out, err));
   case Command::Tolerance: return toInt(runTolerance(inv, out, err));
+  case Command::Optimise: return toInt(runOptimise(inv, out, err));
   }
   return toInt(ExitCode::BadInput);
 }

@@ -13,6 +13,7 @@
 #include "ui/document/mechanism_document.h"
 #include "ui/main_window.h"
 #include "ui/plots/force_plot_panel.h"
+#include "ui/plots/optimise_window.h"
 #include "ui/plots/plot_panel.h"
 #include "ui/plots/plot_quantity.h"
 #include "ui/plots/tolerance_window.h"
@@ -21,14 +22,19 @@
 #include "kinematics/design/examples.h"
 #include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/model/units.h"
+#include "kinematics/solve/pose_solver.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
+#include <QEventLoop>
 #include <QFile>
+#include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
+#include <QPushButton>
+#include <QSpinBox>
 #include <QTabWidget>
 
 #include <functional>
@@ -134,6 +140,41 @@ const std::vector<View>& views() {
          w.showCognates();
        }},
       {"tolerances", [](MainWindow& w) { w.showTolerances(); }},
+      {"optimise",
+       [](MainWindow& w) {
+         // Edit ▸ Optimise…: the rocker's peak α, run to its end, before and after shown.
+         auto* optimise = w.showOptimise();
+         optimise->linkBox()->setCurrentText("rocker");
+         optimise->evaluationsField()->setValue(400);
+         QEventLoop loop;
+         QObject::connect(optimise, &linkwright::ui::OptimiseWindow::runEnded, &loop, &QEventLoop::quit);
+         optimise->runButton()->click();
+         loop.exec();
+       }},
+      {"optimise-path",
+       [](MainWindow& w) {
+         // Edit ▸ Optimise… on a coupler point's path: targets on the curve of P lifted 30 mm
+         // off the coupler, typed as a person would; the path before and after, the targets.
+         const auto lifted =
+             k::fourBarDesign({250.0, 100.0, 225.0, 150.0}, k::Branch::Open, "mm", k::CouplerPointSpec{112.5, 30.0});
+         if (!lifted || !w.document()->design().mechanism.findPoint("P")) return;
+         QStringList targets;
+         for (const double deg : {0.0, 72.0, 144.0, 216.0, 288.0}) {
+           const Eigen::Vector2d p = k::solvePose(lifted->mechanism, {k::degToRad(deg), 0.0, 0.0})
+                                         .value()
+                                         .position[lifted->mechanism.findPoint("P")->index];
+           targets << QString::number(p.x(), 'f', 2) + ", " + QString::number(p.y(), 'f', 2);
+         }
+         auto* optimise = w.showOptimise();
+         optimise->objectiveBox()->setCurrentIndex(2);
+         optimise->pointBox()->setCurrentText("P");
+         optimise->targetsField()->setText(targets.join("; "));
+         optimise->evaluationsField()->setValue(600);
+         QEventLoop loop;
+         QObject::connect(optimise, &linkwright::ui::OptimiseWindow::runEnded, &loop, &QEventLoop::quit);
+         optimise->runButton()->click();
+         loop.exec();
+       }},
       {"flywheel",
        [](MainWindow& w) {
          w.showForces();
@@ -166,6 +207,8 @@ bool render(const std::string& example, const View& view, double crankDeg, const
     shown = cognates;
   if (auto* tolerances = window.findChild<linkwright::ui::ToleranceWindow*>(); tolerances && tolerances->isVisible())
     shown = tolerances;
+  if (auto* optimise = window.findChild<linkwright::ui::OptimiseWindow*>(); optimise && optimise->isVisible())
+    shown = optimise;
   if (!shown->grab().save(path, "PNG")) {
     std::cerr << "linkwright_gallery: cannot write " << path.toStdString() << "\n";
     return false;
@@ -196,6 +239,8 @@ constexpr DocImage kDocImages[] = {
     {"flywheel.png", "funsho-fourbar", "flywheel", 60.0},
     {"cognates.png", "miranda-fourbar", "cognates", 0.0},
     {"tolerances.png", "thesis-crank-rocker", "tolerances", 0.0},
+    {"optimise.png", "thesis-crank-rocker", "optimise", 0.0},
+    {"optimise_path.png", "miranda-fourbar", "optimise-path", 0.0},
     {"boom_spring.png", "excavator-boom", "boom-spring", 0.0},
     {"balanced.png", "funsho-fourbar", "balanced", 60.0},
     {"balanced_forces.png", "funsho-fourbar", "balanced-forces", 60.0},
@@ -218,7 +263,8 @@ int main(int argc, char** argv) {
   int written = 0;
   for (const k::Example& example : k::examples())
     for (const View& view : views()) {
-      if (std::string(view.name) == "centres-ratios") continue;  // for the docs only
+      // For the docs only: the ratios beside the centres, and an optimisation (a run per example).
+      if (std::string(view.name) == "centres-ratios" || std::string(view.name).rfind("optimise", 0) == 0) continue;
       const QString path = out.filePath(QString::fromStdString(example.name) + "-" + view.name + ".png");
       if (!render(example.name, view, 30.0, path)) return 1;
       ++written;
