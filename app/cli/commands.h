@@ -7,7 +7,7 @@
 // as a DXF drawing), report (the lab-report PDF), compare (another tool's table against the
 // exact solution), synthesize (linkages from the motion wanted: kinematics/synthesis/),
 // cognates (a four-bar's Roberts–Chebyshev cognates), tolerance (sensitivities and a Monte-Carlo
-// tolerance study) and examples (the built-ins).
+// tolerance study), atlas (a classified grid of coupler curves) and examples (the built-ins).
 
 #include "app/cli/arguments.h"
 #include "app/cli/exit_codes.h"
@@ -39,6 +39,7 @@ ExitCode runMachine(const Invocation& invocation, std::ostream& out, std::ostrea
 ExitCode runBalance(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runCognates(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runTolerance(const Invocation& invocation, std::ostream& out, std::ostream& err);
+ExitCode runAtlas(const AtlasOptions& options, std::ostream& out, std::ostream& err);
 
 /// What an example brings besides the linkage: the driver's speed and the input grid.
 struct GridDefaults {
