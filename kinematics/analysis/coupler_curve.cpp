@@ -27,20 +27,15 @@ CurvePiece curvePiece(const CouplerCurve& curve, std::size_t i) {
   piece.p0 = curve.point[i];
   piece.p1 = curve.point[j];
   piece.theta0 = curve.crankAngle[i];
-  double theta1 = curve.crankAngle[j];
-  // The closing piece of a full turn runs from the last angle on to the first plus a turn.
-  if (curve.closed && j == 0 && i != 0) {
-    const double step = curve.size() > 1 ? curve.crankAngle[1] - curve.crankAngle[0] : 0.0;
-    const double turn = 2.0 * kPi;
-    if (step != 0.0 && std::abs(theta1 + std::copysign(turn, step) - piece.theta0 - step) < std::abs(step) * 1e-6)
-      theta1 += std::copysign(turn, step);
-  }
-  piece.theta1 = theta1;
-  const double dTheta = theta1 - piece.theta0;
-  piece.cubic = curve.rateOk[i] && curve.rateOk[j] && dTheta != 0.0;
+  piece.theta1 = curve.crankAngle[j];
+  // The closing piece runs on to the first sample a turn of u later (and of θ on a full turn).
+  const bool closing = curve.closed && j == 0;
+  piece.du = curve.parameter[j] + (closing ? 2.0 * kPi : 0.0) - curve.parameter[i];
+  if (closing && std::abs(piece.theta1 + 2.0 * kPi - piece.theta0 - piece.du) < 1e-9) piece.theta1 += 2.0 * kPi;
+  piece.cubic = curve.rateOk[i] && curve.rateOk[j] && piece.du > 0.0;
   if (piece.cubic) {
-    piece.m0 = dTheta * curve.derivative[i];
-    piece.m1 = dTheta * curve.derivative[j];
+    piece.m0 = piece.du * curve.derivative[i];
+    piece.m1 = piece.du * curve.derivative[j];
   }
   return piece;
 }

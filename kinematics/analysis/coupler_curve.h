@@ -1,15 +1,17 @@
 #pragma once
 // A coupler curve as the atlas and its classifier (coupler_curve_features.h) read it: the
-// solver's samples of a point's path, each with the crank angle it was solved at and the
-// point's exact derivative with respect to that angle, dP/dθ (a sweep at ω = 1 rad/s, α = 0
-// gives it as the point's velocity). Between two samples the curve is the cubic Hermite
-// interpolant of the ends' positions and derivatives,
-//   P(s) = h00(s) P0 + h10(s) Δθ P0' + h01(s) P1 + h11(s) Δθ P1',  s ∈ [0, 1], Δθ = θ1 − θ0,
-// whose error is O(Δθ⁴): at 1° a step that is 1e-8 of the curve's size, so what is refined
+// solver's samples of a point's path over a parameter u, each with the crank angle it was
+// solved at and the point's exact derivative dP/du. For a crank that turns fully u is the crank
+// angle θ, and dP/dθ is the point's velocity at ω = 1 rad/s. For a crank that rocks between the
+// edges of its range, θ = c − r cos u (c the range's middle, r its half-width): u runs once round
+// as the crank goes across on one assembly branch and back on the other, and P(u) is smooth
+// through the edges, where dP/dθ is infinite but dP/du = dP/dθ · r sin u is not. Between two
+// samples the curve is the cubic Hermite interpolant of the ends' positions and derivatives,
+//   P(s) = h00(s) P0 + h10(s) Δu P0' + h01(s) P1 + h11(s) Δu P1',  s ∈ [0, 1], Δu = u1 − u0,
+// whose error is O(Δu⁴): at 1° a step that is 1e-8 of the curve's size, so what is refined
 // between samples (a cusp, a crossing) is placed to that accuracy without solving again.
-// Where a derivative does not exist (a toggle, where the solver reports a singular pose) or
-// two samples share a crank angle (the two assembly branches meeting at a rocking crank's
-// limit), the piece is the straight chord.
+// Where a derivative does not exist (a toggle, where the solver reports a singular pose), the
+// piece is the straight chord. The crank angle between samples is interpolated linearly in u.
 
 #include <Eigen/Core>
 
@@ -21,11 +23,12 @@ namespace linkwright::kinematics {
 /// A sampled coupler curve. All columns have one entry per sample, in the order the linkage
 /// moves through them.
 struct CouplerCurve {
+  std::vector<double> parameter;            ///< u, rad, increasing; a closed curve's spans less than 2π
   std::vector<double> crankAngle;           ///< rad, the crank's angle the sample was solved at
   std::vector<Eigen::Vector2d> point;       ///< length unit, the mechanism's frame
-  std::vector<Eigen::Vector2d> derivative;  ///< dP/dθ, length unit per rad; zero where !rateOk
-  std::vector<char> rateOk;                 ///< 1 where dP/dθ exists (not a toggle)
-  bool closed = true;                       ///< the last sample joins the first
+  std::vector<Eigen::Vector2d> derivative;  ///< dP/du, length unit per rad; zero where !rateOk
+  std::vector<char> rateOk;                 ///< 1 where dP/du exists (not a toggle)
+  bool closed = true;                       ///< the last sample joins the first, at u + 2π
   bool operator==(const CouplerCurve&) const = default;
 
   std::size_t size() const { return point.size(); }
@@ -39,10 +42,11 @@ struct CouplerCurve {
 struct CurvePiece {
   Eigen::Vector2d p0 = Eigen::Vector2d::Zero();
   Eigen::Vector2d p1 = Eigen::Vector2d::Zero();
-  Eigen::Vector2d m0 = Eigen::Vector2d::Zero();  ///< Δθ · dP/dθ at the start (length unit)
-  Eigen::Vector2d m1 = Eigen::Vector2d::Zero();  ///< Δθ · dP/dθ at the end (length unit)
-  double theta0 = 0.0;                           ///< rad
-  double theta1 = 0.0;                           ///< rad
+  Eigen::Vector2d m0 = Eigen::Vector2d::Zero();  ///< Δu · dP/du at the start (length unit)
+  Eigen::Vector2d m1 = Eigen::Vector2d::Zero();  ///< Δu · dP/du at the end (length unit)
+  double du = 0.0;                               ///< Δu, rad
+  double theta0 = 0.0;                           ///< crank angle at the start, rad
+  double theta1 = 0.0;                           ///< crank angle at the end, rad
   bool cubic = false;                            ///< false: the straight chord
 
   /// The point at s ∈ [0, 1] (length unit).

@@ -15,7 +15,7 @@ namespace {
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
-// |dP/dθ|² at u ∈ [−1, 1] across the pieces before and after a sample (u = 0 at the sample).
+// |dP/du|² at u ∈ [−1, 1] across the pieces before and after a sample (u = 0 at the sample).
 struct SpeedAround {
   const CurvePiece* before = nullptr;
   const CurvePiece* after = nullptr;
@@ -24,8 +24,7 @@ struct SpeedAround {
   Eigen::Vector2d point(double u) const { return u < 0 ? before->at(1 + u) : after->at(u); }
   double speedSquared(double u) const {
     const CurvePiece& p = u < 0 ? *before : *after;
-    const double dTheta = p.theta1 - p.theta0;
-    return (u < 0 ? p.tangent(1 + u) : p.tangent(u)).squaredNorm() / (dTheta * dTheta);
+    return (u < 0 ? p.tangent(1 + u) : p.tangent(u)).squaredNorm() / (p.du * p.du);
   }
 };
 
@@ -127,12 +126,16 @@ std::vector<Crunode> findCrunodes(const CouplerCurve& curve, double size) {
       const auto chord = chordCrossing(pieces[i], pieces[j]);
       if (!chord) continue;
       auto [s, t] = *chord;
+      bool refined = false;
       if (pieces[i].cubic && pieces[j].cubic)
-        if (const auto refined = refinedCrossing(pieces[i], pieces[j], s, t, size)) std::tie(s, t) = *refined;
+        if (const auto on = refinedCrossing(pieces[i], pieces[j], s, t, size)) {
+          std::tie(s, t) = *on;
+          refined = true;
+        }
       // A curve that runs back over itself (a point on the rocker, whose path is an arc
       // traced there and back) touches itself along a stretch: not a crossing.
       const Eigen::Vector2d ti = pieces[i].tangent(s).normalized(), tj = pieces[j].tangent(t).normalized();
-      if (std::abs(cross(ti, tj)) < kMinCrossingSine) continue;
+      if (std::abs(cross(ti, tj)) < (refined ? kMinCrossingSine : kMinChordCrossingSine)) continue;
       const Eigen::Vector2d point = pieces[i].at(s);
       const bool seen = std::any_of(found.begin(), found.end(),
                                     [&](const Crunode& c) { return (c.point - point).norm() <= kSamePoint * size; });

@@ -5,17 +5,19 @@
 // bounding box, so the verdicts do not depend on the length unit or the linkage's scale.
 //
 // Cusp: the point stops while the crank turns, dP/dθ = 0 (it happens where the point lies on
-//   the moving centrode: it is then the coupler's instant centre). Over each piece between
-//   samples |dP/dθ|² is followed on the Hermite cubic; a local minimum of it, found by golden
-//   section, is a cusp when |dP/dθ| ≤ kCuspSpeed · S per rad. Reported: the crank angle and the
+//   the moving centrode: it is then the coupler's instant centre), and so dP/du = 0. Over the
+//   pieces about each sample |dP/du|² is followed on the Hermite cubics; a local minimum of it,
+//   found by golden section, is a cusp when |dP/du| ≤ kCuspSpeed · S per rad. Reported: the crank angle and the
 //   point there, and the least speed found.
 // Crunode: the curve crosses itself. Every two pieces that are not neighbours are tested for a
 //   crossing of their chords; each crossing is then refined on the two cubics by Newton's
 //   method (P_i(s) = P_j(t)), and crossings within kSamePoint · S of one found are the same.
-//   The two passages must cross at an angle whose sine is at least kMinCrossingSine (3°): a
-//   curve that runs back over itself (a point on the rocker traces an arc there and back, and
-//   so does any point of a rocking crank's coupler at the crank itself) touches itself along a
-//   stretch, which is not a crunode.
+//   The two passages must cross at an angle whose sine is at least kMinCrossingSine (0.6°) on
+//   the cubics, or kMinChordCrossingSine (3°) where a piece is a chord (at a toggle): a curve
+//   that runs back over itself (a point on the rocker traces an arc there and back, and so does
+//   B of a rocking crank) touches itself along a stretch, which is not a crunode. Its two
+//   passages' cubics agree to about 1e-8 of S, so where they meet they run parallel to far
+//   less than 0.6°, while two chords of one arc cross at up to a piece's turn.
 //   Reported: the point and the two crank angles the point passes it at.
 // Symmetric (curve_symmetry.h): the curve is its own mirror image about a line, to
 //   kSymmetryTolerance · S.
@@ -38,21 +40,22 @@
 
 namespace linkwright::kinematics {
 
-inline constexpr double kCuspSpeed = 2e-3;                ///< of S per rad: |dP/dθ| at a cusp
-inline constexpr double kSamePoint = 1e-6;                ///< of S: two crossings found are one
-inline constexpr double kMinCrossingSine = 0.05;          ///< sin of the least crossing angle (about 3°)
-inline constexpr double kSymmetryTolerance = 1e-3;        ///< of S: worst distance of the mirror image
-inline constexpr double kStraightTolerance = 2e-3;        ///< of S: worst distance from the line
-inline constexpr double kCircularTolerance = 1e-3;        ///< of S: worst distance from the circle
-inline constexpr double kMinStraightLength = 0.4;         ///< of S: a straight run's chord
-inline constexpr double kMinArcLength = 0.25;             ///< of S: a circular run's length
-inline constexpr double kMinArcTurn = 0.785398163397448;  ///< rad (45°): an arc's least turn
+inline constexpr double kCuspSpeed = 2e-3;                 ///< of S per rad: |dP/du| at a cusp
+inline constexpr double kSamePoint = 1e-6;                 ///< of S: two crossings found are one
+inline constexpr double kMinCrossingSine = 0.01;           ///< sin of the least crossing angle on the cubics (0.6°)
+inline constexpr double kMinChordCrossingSine = 0.05;      ///< the same where a piece is a chord (3°)
+inline constexpr double kSymmetryTolerance = 1e-3;         ///< of S: worst distance of the mirror image
+inline constexpr double kStraightTolerance = 2e-3;         ///< of S: worst distance from the line
+inline constexpr double kCircularTolerance = 5e-4;         ///< of S: worst distance from the circle
+inline constexpr double kMinStraightLength = 0.4;          ///< of S: a straight run's chord
+inline constexpr double kMinArcLength = 0.25;              ///< of S: a circular run's length
+inline constexpr double kMinArcTurn = 1.0471975511965976;  ///< rad (60°): an arc's least turn
 
 /// A cusp: the point at rest while the crank turns.
 struct Cusp {
   double crankAngle = 0.0;                          ///< rad
   Eigen::Vector2d point = Eigen::Vector2d::Zero();  ///< length unit
-  double speed = 0.0;                               ///< least |dP/dθ| found, length unit per rad
+  double speed = 0.0;                               ///< least |dP/du| found, length unit per rad
   bool operator==(const Cusp&) const = default;
 };
 

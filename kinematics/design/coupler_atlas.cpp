@@ -3,8 +3,10 @@
 #include "kinematics/analysis/assembly_range.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
+#include "kinematics/solve/pose_solver.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace linkwright::kinematics {
@@ -39,19 +41,6 @@ SweepSpec gridOver(double from, double to, std::size_t samples) {
   return spec;
 }
 
-// Appends the swept path of P, forwards or backwards, keeping the assembled samples.
-void appendPath(const SweepResult& s, bool backwards, CouplerCurve& curve) {
-  const std::size_t n = s.size(), p = fourbar::kCouplerPoint.index;
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t j = backwards ? n - 1 - k : k;
-    if (!s.assembled(j)) continue;
-    curve.crankAngle.push_back(s.inputAngle[j]);
-    curve.point.push_back(s.position[p][j]);
-    curve.derivative.push_back(s.ok(j) ? s.velocity[p][j] : Eigen::Vector2d::Zero());
-    curve.rateOk.push_back(s.ok(j) ? 1 : 0);
-  }
-}
-
 SolveRequest pathRequest() {
   SolveRequest request;
   request.accelerations = false;
@@ -60,6 +49,59 @@ SolveRequest pathRequest() {
 }
 
 Branch otherBranch(Branch b) { return b == Branch::Open ? Branch::Crossed : Branch::Open; }
+
+// A full turn's curve: P swept at n angles 2πk/n (the last one step short of closing).
+std::optional<Error> fullTurnPath(const AtlasCellKey& key, std::size_t n, CouplerCurve& curve,
+                                  const std::atomic<bool>* cancel) {
+  auto mechanism = atlasMechanism(key, key.branch);
+  if (!mechanism) return mechanism.error();
+  SweepResult s;
+  const double last = 2.0 * kPi * static_cast<double>(n - 1) / static_cast<double>(n);
+  if (auto e = sweepInto(*mechanism, gridOver(0.0, last, n), pathRequest(), s, cancel)) return e;
+  const std::size_t p = fourbar::kCouplerPoint.index;
+  for (std::size_t j = 0; j < s.size(); ++j) {
+    if (!s.assembled(j)) continue;
+    curve.parameter.push_back(s.inputAngle[j]);
+    curve.crankAngle.push_back(s.inputAngle[j]);
+    curve.point.push_back(s.position[p][j]);
+    curve.derivative.push_back(s.ok(j) ? s.velocity[p][j] : Eigen::Vector2d::Zero());
+    curve.rateOk.push_back(s.ok(j) ? 1 : 0);
+  }
+  return std::nullopt;
+}
+
+// A rocking crank's curve: θ = c − r cos u at u = 2π(k + ½)/n, the cell's branch for u < π and
+// the other for u > π, each pose solved alone on its branch (no toggle lies between two of one
+// branch's samples, so it is the sweep's path); dP/du = dP/dθ · r sin u.
+std::optional<Error> rockingPath(const AtlasCellKey& key, const AngleRange& range, std::size_t n, CouplerCurve& curve,
+                                 const std::atomic<bool>* cancel) {
+  const double c = 0.5 * (range.from + range.to), r = 0.5 * (range.to - range.from);
+  std::array<Mechanism, 2> mechanisms;
+  std::array<Pose, 2> poses;
+  for (std::size_t b = 0; b < 2; ++b) {
+    auto m = atlasMechanism(key, b == 0 ? key.branch : otherBranch(key.branch));
+    if (!m) return m.error();
+    mechanisms[b] = std::move(m).value();
+    preparePose(mechanisms[b], poses[b]);
+  }
+  const std::size_t p = fourbar::kCouplerPoint.index;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (cancel && cancel->load(std::memory_order_relaxed))
+      return Error{ErrorCode::Cancelled, "atlas", "the atlas was cancelled"};
+    const double u = rockingParameter(k, n);
+    const std::size_t b = u < kPi ? 0 : 1;
+    const double theta = c - r * std::cos(u);
+    const PoseReport report = solvePoseInto(mechanisms[b], {theta, 1.0, 0.0}, pathRequest(), poses[b]);
+    if (report.status == PoseStatus::NotAssemblable) continue;
+    const bool ok = report.status == PoseStatus::Ok;
+    curve.parameter.push_back(u);
+    curve.crankAngle.push_back(theta);
+    curve.point.push_back(poses[b].position[p]);
+    curve.derivative.push_back(ok ? Eigen::Vector2d(poses[b].velocity[p] * r * std::sin(u)) : Eigen::Vector2d::Zero());
+    curve.rateOk.push_back(ok ? 1 : 0);
+  }
+  return std::nullopt;
+}
 
 // The crank angles the cell traces: a full turn, or its first range less the edge margin.
 AngleRange tracedRange(const InputRange& range) {
@@ -70,6 +112,10 @@ AngleRange tracedRange(const InputRange& range) {
 }
 
 }  // namespace
+
+double rockingParameter(std::size_t k, std::size_t samples) {
+  return 2.0 * kPi * (static_cast<double>(k) + 0.5) / static_cast<double>(samples);
+}
 
 std::string_view toString(CrankMotion motion) {
   switch (motion) {
@@ -134,22 +180,11 @@ Result<AtlasCell> computeAtlasCell(const AtlasCellKey& key, const std::atomic<bo
     return cell;
   }
   cell.motion = range.fullRotation ? CrankMotion::FullTurn : CrankMotion::Rocks;
-  cell.range = tracedRange(range);
+  cell.range = range.fullRotation ? AngleRange{0.0, 2.0 * kPi} : range.ranges.front();
   const std::size_t n = std::max<std::size_t>(key.samples, 4);
-  // A full turn's last sample is one step short of the first, which closes the curve.
-  const std::size_t forward = cell.motion == CrankMotion::FullTurn ? n : n / 2;
-  const double to = cell.motion == CrankMotion::FullTurn
-                        ? 2.0 * kPi * static_cast<double>(n - 1) / static_cast<double>(n)
-                        : cell.range.to;
-  SweepResult swept;
-  for (const bool second : {false, true}) {
-    if (second && cell.motion == CrankMotion::FullTurn) break;
-    auto mechanism = atlasMechanism(key, second ? otherBranch(key.branch) : key.branch);
-    if (!mechanism) return mechanism.error();
-    const std::size_t count = second ? n - forward : forward;
-    if (auto e = sweepInto(*mechanism, gridOver(cell.range.from, to, count), pathRequest(), swept, cancel)) return *e;
-    appendPath(swept, second, cell.curve);
-  }
+  const auto failed = cell.motion == CrankMotion::FullTurn ? fullTurnPath(key, n, cell.curve, cancel)
+                                                           : rockingPath(key, cell.range, n, cell.curve, cancel);
+  if (failed) return *failed;
   cell.curve.closed = true;
   if (cancelled()) return Error{ErrorCode::Cancelled, "atlas", "the atlas was cancelled"};
   cell.features = classifyCouplerCurve(cell.curve);

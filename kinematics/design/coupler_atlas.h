@@ -9,13 +9,16 @@
 // cache them by key.
 //
 // A crank that turns fully (Grashof crank-rocker or double-crank, or a change point) traces its
-// branch's curve over one turn: `samples` crank angles 2πk/samples. A crank that cannot turn
-// fully rocks between the edges of its assembly range (assembly_range.h); at each edge the
+// branch's curve over one turn: `samples` crank angles 2πk/samples, swept. A crank that cannot
+// turn fully rocks between the edges of its assembly range (assembly_range.h); at each edge the
 // coupler and rocker fold into line and the linkage goes on in the other assembly branch, so
 // the closed curve it traces is the branch's path across the range followed by the other
-// branch's path back: half the samples each, over the range less 1e-7 rad at each edge (the
-// solver's finest step; at the edge itself the two branches meet and rates do not exist). Of a
-// range in two parts (a rocking crank of a Grashof linkage: two circuits) the first is traced.
+// branch's path back. It is sampled at θ = c − r cos u, c the range's middle and r its
+// half-width, at u = 2π(k + ½)/samples (coupler_curve.h): the cell's branch for u < π, the other
+// for u > π, each pose solved on its branch. Near an edge θ moves as u², and P as
+// √(edge − θ), so P is as evenly spaced there as elsewhere and smooth in u through the edge;
+// no sample falls on an edge, where rates do not exist. Of a range in two parts (a rocking
+// crank of a Grashof linkage: two circuits) the first is traced.
 // A cell that never assembles has no curve.
 
 #include "kinematics/analysis/coupler_curve_features.h"
@@ -37,7 +40,7 @@ inline constexpr std::size_t kMaxAtlasAxisValues = 64;  ///< values on one axis
 inline constexpr double kMinAtlasRatio = 1e-3;          ///< of the crank
 inline constexpr double kMaxAtlasRatio = 1e3;           ///< of the crank
 inline constexpr double kMaxAtlasPosition = 100.0;      ///< |along|, |across|, coupler lengths
-/// A rocking crank's range is traced to within this of its edges (rad).
+/// A rocking crank's design (atlasCellDesign) runs to within this of its range's edges (rad).
 inline constexpr double kAtlasEdgeMargin = 1e-7;
 
 /// The grid: link lengths over the crank's (dimensionless) and the coupler point's place in
@@ -88,6 +91,9 @@ struct AtlasCell {
   CurveFeatures features;
   bool operator==(const AtlasCell&) const = default;
 };
+
+/// A rocking crank's curve parameter u at sample k of `samples`: 2π(k + ½)/samples (rad).
+double rockingParameter(std::size_t k, std::size_t samples);
 
 /// The number of cells of the grid.
 std::size_t atlasCellCount(const AtlasAxes& axes);

@@ -42,6 +42,7 @@ CouplerCurve curveOf(const FourBarLengths& l, CouplerPointSpec p, std::size_t sa
   CouplerCurve c;
   for (std::size_t j = 0; j < s->size(); ++j) {
     REQUIRE(s->ok(j));
+    c.parameter.push_back(s->inputAngle[j]);
     c.crankAngle.push_back(s->inputAngle[j]);
     c.point.push_back(s->position[kP][j]);
     c.derivative.push_back(s->velocity[kP][j]);
