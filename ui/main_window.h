@@ -43,6 +43,7 @@ class PolygonPanel;
 class CompareDialog;
 class CognatesWindow;
 class ToleranceWindow;
+class AtlasWindow;
 class InversionsWindow;
 class Settings;
 class SynthesisPanel;
@@ -111,6 +112,8 @@ public:
   CognatesWindow* showCognates();
   /// View ▸ Tolerances…: shows (and raises) the window of the design's tolerance study.
   ToleranceWindow* showTolerances();
+  /// View ▸ Atlas…: shows (and raises) the coupler-curve atlas window.
+  AtlasWindow* showAtlas();
   QAction* inversionsAction() const { return m_inversionsAction; }
   QAction* balanceAction() const { return m_balanceAction; }
   QAction* springBalanceAction() const { return m_springBalanceAction; }
@@ -194,6 +197,7 @@ private:
   InversionsWindow* m_inversions = nullptr;
   CognatesWindow* m_cognates = nullptr;
   ToleranceWindow* m_tolerances = nullptr;
+  AtlasWindow* m_atlas = nullptr;
   bool m_presentation = false;
   QString m_unsavedName;  ///< what the title calls a document not saved yet
   QFont m_normalFont;
