@@ -216,7 +216,8 @@ ExitCode runAtlas(const AtlasOptions& o, std::ostream& out, std::ostream& err) {
         << "\n";
     return ExitCode::Success;
   }
-  out << "coupler-curve atlas: " << count << " cells (crank 1; coupler, rocker, frame in crank lengths; P along and "
+  out << "coupler-curve atlas: " << count << (count == 1 ? " cell" : " cells")
+      << " (crank 1; coupler, rocker, frame in crank lengths; P along and "
       << "across B→C in coupler lengths; points in crank lengths, O2 at the origin, O4 on +x), " << o.axes.samples
       << " samples a curve; " << kept.size() << " match" << (kept.size() == 1 ? "es" : "")
       << (o.outputFile ? "; written to " + *o.outputFile : std::string()) << "\n";
