@@ -46,13 +46,13 @@ inline constexpr double kAtlasEdgeMargin = 1e-7;
 /// The grid: link lengths over the crank's (dimensionless) and the coupler point's place in
 /// coupler lengths, along B→C and 90° counter-clockwise across it.
 struct AtlasAxes {
-  std::vector<double> coupler{1.5, 2.0, 2.5, 3.0};
-  std::vector<double> rocker{1.5, 2.0, 2.5, 3.0};
-  std::vector<double> frame{2.0, 2.5, 3.0};
-  std::vector<double> along{0.0, 0.5, 1.0, 1.5, 2.0};
-  std::vector<double> across{0.0, 0.5, 1.0};
-  Branch branch = Branch::Open;  ///< the assembly branch every cell starts on
-  std::size_t samples = 360;     ///< solver samples per curve
+  std::vector<double> coupler{1.5, 2.0, 2.5, 3.0};     ///< coupler / crank (dimensionless)
+  std::vector<double> rocker{1.5, 2.0, 2.5, 3.0};      ///< rocker / crank (dimensionless)
+  std::vector<double> frame{2.0, 2.5, 3.0};            ///< frame / crank (dimensionless)
+  std::vector<double> along{0.0, 0.5, 1.0, 1.5, 2.0};  ///< P along B→C, coupler lengths
+  std::vector<double> across{0.0, 0.5, 1.0};           ///< P 90° CCW from B→C, coupler lengths
+  Branch branch = Branch::Open;                        ///< the assembly branch every cell starts on
+  std::size_t samples = 360;                           ///< solver samples per curve
   bool operator==(const AtlasAxes&) const = default;
 };
 
