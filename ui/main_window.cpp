@@ -3,6 +3,7 @@
 #include "ui/animation/crank_animator.h"
 #include "ui/canvas/force_arrows_item.h"
 #include "ui/canvas/linkage_view.h"
+#include "ui/classroom/atlas_window.h"
 #include "ui/classroom/big_readout.h"
 #include "ui/classroom/cognates_window.h"
 #include "ui/classroom/inversion_cells.h"
@@ -253,7 +254,7 @@ MainWindow::~MainWindow() = default;
 
 namespace {
 
-// A window of the designer's own (inversions, cognates, tolerances, optimise): made on first ask, then
+// A window of the designer's own (inversions, cognates, tolerances, optimise, the atlas): made on first ask, then
 // shown, raised and given the focus each time.
 template <typename Window>
 Window* showOwnWindow(Window*& window, MechanismDocument* document, QWidget* parent) {
@@ -276,6 +277,7 @@ CognatesWindow* MainWindow::showCognates() { return showOwnWindow(m_cognates, m_
 ToleranceWindow* MainWindow::showTolerances() { return showOwnWindow(m_tolerances, m_document, this); }
 
 OptimiseWindow* MainWindow::showOptimise() { return showOwnWindow(m_optimise, m_document, this); }
+AtlasWindow* MainWindow::showAtlas() { return showOwnWindow(m_atlas, m_document, this); }
 
 void MainWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
@@ -360,6 +362,9 @@ void MainWindow::buildMenus() {
       ->setToolTip(tr("A four-bar's two Roberts–Chebyshev cognates, tracing its coupler curve with it"));
   view->addAction(tr("&Tolerances…"), this, &MainWindow::showTolerances)
       ->setToolTip(tr("How far the motion moves with every length and pivot made ± a tolerance"));
+  view->addAction(tr("At&las…"), this, &MainWindow::showAtlas)
+      ->setToolTip(tr("A grid of four-bars' coupler curves over link ratios and coupler points, classified; a "
+                      "click makes one the design"));
   const auto followLinkage = [this] {
     const std::optional<QString> why = inversionsUnavailable(m_document->design());
     m_inversionsAction->setEnabled(!why);

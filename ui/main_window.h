@@ -44,6 +44,7 @@ class CompareDialog;
 class CognatesWindow;
 class ToleranceWindow;
 class OptimiseWindow;
+class AtlasWindow;
 class InversionsWindow;
 class Settings;
 class SynthesisPanel;
@@ -114,6 +115,8 @@ public:
   ToleranceWindow* showTolerances();
   /// Edit ▸ Optimise…: shows (and raises) the window that optimises the design by one measure.
   OptimiseWindow* showOptimise();
+  /// View ▸ Atlas…: shows (and raises) the coupler-curve atlas window.
+  AtlasWindow* showAtlas();
   QAction* inversionsAction() const { return m_inversionsAction; }
   QAction* balanceAction() const { return m_balanceAction; }
   QAction* springBalanceAction() const { return m_springBalanceAction; }
@@ -198,6 +201,7 @@ private:
   CognatesWindow* m_cognates = nullptr;
   ToleranceWindow* m_tolerances = nullptr;
   OptimiseWindow* m_optimise = nullptr;
+  AtlasWindow* m_atlas = nullptr;
   bool m_presentation = false;
   QString m_unsavedName;  ///< what the title calls a document not saved yet
   QFont m_normalFont;

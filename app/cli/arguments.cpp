@@ -97,6 +97,7 @@ const char* commandName(Command command) {
   case Command::Cognates: return "cognates";
   case Command::Tolerance: return "tolerance";
   case Command::Optimise: return "optimise";
+  case Command::Atlas: return "atlas";
   default: return "linkwright-cli";
   }
 }
@@ -407,7 +408,7 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
     return usage(
         "COMMAND",
         "missing command (analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, "
-        "report, compare, machine, balance, cognates, tolerance, optimise, synthesize or examples; see --help)");
+        "report, compare, machine, balance, cognates, tolerance, optimise, atlas, synthesize or examples; see --help)");
   const std::string& first = args[0];
   if (first == "--help" || first == "-h" || first == "help") {
     inv.command = Command::Help;
@@ -416,6 +417,19 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   }
   if (first == "--version") {
     inv.command = Command::Version;
+    return inv;
+  }
+  if (first == "atlas") {
+    // The atlas's options are its own (atlas_options.h).
+    bool help = false;
+    auto options = parseAtlasArguments(std::vector<std::string>(args.begin() + 1, args.end()), help);
+    if (help) {
+      inv.helpTopic = "atlas";
+      return inv;
+    }
+    if (!options) return options.error();
+    inv.command = Command::Atlas;
+    inv.atlas = std::move(options).value();
     return inv;
   }
   if (first == "synthesize") {
@@ -452,11 +466,12 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   else if (!first.empty() && first[0] == '-')
     return usage(first, "unknown option '" + first + "' (see linkwright-cli --help)");
   else
-    return usage(first,
-                 "unknown command '" + first +
-                     "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, "
-                     "dxf, report, compare, machine, balance, cognates, tolerance, optimise, synthesize, examples; see "
-                     "--help)");
+    return usage(
+        first,
+        "unknown command '" + first +
+            "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, "
+            "dxf, report, compare, machine, balance, cognates, tolerance, optimise, atlas, synthesize, examples; see "
+            "--help)");
   if (inv.command == Command::Arm) inv.lengthUnit = "m";  // the arm's seed (004) works in metres
 
   std::set<std::string> seen;

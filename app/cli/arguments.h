@@ -3,6 +3,7 @@
 // std::from_chars, so '.' is the decimal point whatever the locale. Every error names the
 // option and the reason.
 
+#include "app/cli/atlas_options.h"
 #include "app/cli/synthesize_options.h"
 
 #include "kinematics/compare/table_comparison.h"
@@ -39,7 +40,8 @@ enum class Command {
   Balance,
   Cognates,
   Tolerance,
-  Optimise
+  Optimise,
+  Atlas
 };
 
 /// compare --offset: auto (fitted), none, or a value in degrees.
@@ -97,6 +99,7 @@ struct Invocation {
   std::vector<double> atDeg;
   std::optional<std::string> svgFile;         ///< accuracy --svg: where to draw the error plot
   std::optional<SynthesisRequest> synthesis;  ///< synthesize: the problem and its options
+  std::optional<AtlasOptions> atlas;          ///< atlas: the grid, the filter and what to write
   // dxf: the drawing's sizes (length unit; positive, finite), empty for the defaults.
   std::optional<double> holeDiameter;
   std::optional<double> plateWidth;

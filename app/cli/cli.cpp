@@ -51,6 +51,9 @@ Commands:
   optimise   a better linkage by one measure (peak |α| of a link, worst transmission
              angle, distance from a target path, RMS driving torque), its lengths in
              ranges, its pivots, Grashof class and branch kept; written as a document
+  atlas      a grid of four-bars over link ratios and coupler points (Hrones–Nelson):
+             each coupler curve classified (cusps, crunodes, symmetric, straight and
+             circular runs, with where), filtered; one cell written as a document
   synthesize a linkage from the motion wanted: rocker swing and time ratio, slider or
              shaper stroke, function generator, coupler poses, coupler path; lists
              the candidates with their defects and writes the chosen one as a document
@@ -167,6 +170,39 @@ constexpr const char* kBalanceOptions =
   --spring-search LINK  instead, the spring from a point on LINK to a point on the frame,
                         both searched, that makes the RMS driving torque least; the two
                         points are added to the design as spring_link and spring_frame
+)";
+
+constexpr const char* kAtlasOptions =
+    R"(atlas options (a grid of four-bars, crank 1; see docs/atlas.md):
+  --coupler R,...       coupler lengths in crank lengths (default 1.5,2,2.5,3)
+  --rocker R,...        rocker lengths in crank lengths (default 1.5,2,2.5,3)
+  --frame R,...         frame lengths in crank lengths (default 2,2.5,3); each ratio
+                        from 0.001 to 1000, at most 64 values an axis
+  --along U,...         P along B→C, in coupler lengths (default 0,0.5,1,1.5,2)
+  --across V,...        P 90° CCW from B→C, in coupler lengths (default 0,0.5,1); each
+                        within ±100
+  --branch open|crossed the assembly branch each cell starts on (default open)
+  --samples N           solver samples a curve, 36 to 100000 (default 360)
+  --filter F,...        keep the cells whose curve has every feature named: cusp,
+                        crunode, symmetric, straight, circular
+  --json                one JSON object: cells, samples, matching and atlas [{cell,
+                        coupler, rocker, frame, along, across, branch, class, crank,
+                        crank_range_deg, size, cusps [{crank_deg, point, speed}],
+                        crunodes [{point, crank_deg}], symmetry {point, axis_deg,
+                        deviation}, straight {from_deg, to_deg, from, to, length,
+                        deviation}, circular {from_deg, to_deg, centre, radius, turn_deg,
+                        deviation}}] (null where a curve has none)
+  -o, --output FILE.csv the kept cells as CSV (one row a cell; empty cells where a curve
+                        has no such feature)
+  --cell I              instead, write cell I (the table's first column) as a design
+                        document to -o FILE.linkwright: a four-bar with its point P,
+                        its grid a full turn or a rocking crank's range
+  --crank L             with --cell: the design's crank length (default 1)
+  --unit NAME           with --cell: its length unit (default mm)
+Cells are numbered coupler slowest, then rocker, frame, along, across fastest. Points and
+  sizes are in crank lengths, O2 at the origin and O4 on +x; angles are the crank's, in
+  degrees. A crank that cannot turn fully rocks between its limits, and its curve is both
+  branches' paths across the range (the classification's rules: docs/atlas.md).
 )";
 
 constexpr const char* kCognatesOptions =
@@ -501,6 +537,8 @@ Examples:
   linkwright-cli cognates --example thesis-crank-rocker --coupler-point 35,20 -o thesis
   linkwright-cli tolerance --example thesis-crank-rocker --tolerance 0.05 --json
   linkwright-cli optimise --example thesis-crank-rocker --objective peak-alpha:rocker -o better.linkwright
+  linkwright-cli atlas --coupler 2.5 --rocker 2.5 --frame 2 --along 2 --across 0 --filter straight
+  linkwright-cli atlas --cell 17 -o cell.linkwright
   linkwright-cli synthesize swing --swing 60 --time-ratio 1.3 --rocker 50 -o design.json
 )";
 
@@ -526,6 +564,7 @@ std::string helpText(const std::string& topic) {
   if (topic.empty() || topic == "cognates") text += std::string("\n") + kCognatesOptions;
   if (topic.empty() || topic == "tolerance") text += std::string("\n") + kToleranceOptions;
   if (topic.empty() || topic == "optimise") text += std::string("\n") + kOptimiseOptions;
+  if (topic.empty() || topic == "atlas") text += std::string("\n") + kAtlasOptions;
   if (topic.empty() || topic == "synthesize") text += std::string("\n") + kSynthesizeOptions;
   return text + "\n" + kExitCodes;
 }
@@ -547,10 +586,10 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
         inv.helpTopic != "report" && inv.helpTopic != "compare" && inv.helpTopic != "accuracy" &&
         inv.helpTopic != "synthesize" && inv.helpTopic != "machine" && inv.helpTopic != "balance" &&
         inv.helpTopic != "cognates" && inv.helpTopic != "tolerance" && inv.helpTopic != "optimise" &&
-        inv.helpTopic != "examples" && inv.helpTopic != "linkwright-cli") {
+        inv.helpTopic != "atlas" && inv.helpTopic != "examples" && inv.helpTopic != "linkwright-cli") {
       err << "linkwright-cli: no help for '" << inv.helpTopic
           << "' (commands: analyze, extremes, classify, arm, centres, polygon, inversions, accuracy, dxf, report, "
-             "compare, machine, balance, cognates, tolerance, optimise, synthesize, examples)\n";
+             "compare, machine, balance, cognates, tolerance, optimise, atlas, synthesize, examples)\n";
       return toInt(ExitCode::BadInput);
     }
     out << helpText(inv.helpTopic == "linkwright-cli" || inv.helpTopic == "examples" ? "" : inv.helpTopic);
@@ -574,6 +613,7 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   case Command::Cognates: return toInt(runCognates(inv, out, err));
   case Command::Tolerance: return toInt(runTolerance(inv, out, err));
   case Command::Optimise: return toInt(runOptimise(inv, out, err));
+  case Command::Atlas: return toInt(runAtlas(*inv.atlas, out, err));
   }
   return toInt(ExitCode::BadInput);
 }

@@ -7,7 +7,8 @@
 // as a DXF drawing), report (the lab-report PDF), compare (another tool's table against the
 // exact solution), synthesize (linkages from the motion wanted: kinematics/synthesis/),
 // cognates (a four-bar's Roberts–Chebyshev cognates), tolerance (sensitivities and a Monte-Carlo
-// tolerance study), optimise (a better linkage by one measure) and examples (the built-ins).
+// tolerance study), optimise (a better linkage by one measure), atlas (a classified grid of
+// coupler curves) and examples (the built-ins).
 
 #include "app/cli/arguments.h"
 #include "app/cli/exit_codes.h"
@@ -41,6 +42,7 @@ ExitCode runBalance(const Invocation& invocation, std::ostream& out, std::ostrea
 ExitCode runCognates(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runTolerance(const Invocation& invocation, std::ostream& out, std::ostream& err);
 ExitCode runOptimise(const Invocation& invocation, std::ostream& out, std::ostream& err);
+ExitCode runAtlas(const AtlasOptions& options, std::ostream& out, std::ostream& err);
 
 /// What an example or a document brings besides the linkage: the driver's speed and the input
 /// grid (kinematics/design/sweep_grid.h, shared with the Python module).

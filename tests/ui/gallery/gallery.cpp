@@ -8,6 +8,7 @@
 // and docs/compare.md give the commands for the presentation, inversion, polygon and compare
 // images, which need their own screen size or tool.
 
+#include "ui/classroom/atlas_window.h"
 #include "ui/classroom/cognates_window.h"
 #include "ui/compare/compare_dialog.h"
 #include "ui/document/mechanism_document.h"
@@ -27,7 +28,9 @@
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QEventLoop>
 #include <QFile>
 #include <QLineEdit>
@@ -37,6 +40,7 @@
 #include <QSpinBox>
 #include <QTabWidget>
 
+#include <array>
 #include <functional>
 #include <iostream>
 #include <string>
@@ -276,6 +280,25 @@ int main(int argc, char** argv) {
       if (!render(image.example, viewNamed(image.view), image.crankDeg, images.filePath(image.file))) return 1;
       ++written;
     }
+  }
+  // View ▸ Atlas… on a grid that holds Hoeken's straight-line linkage (coupler 2.5, rocker 2.5,
+  // frame 2, P 2 along), once every cell is computed: the window docs/atlas.md shows.
+  if (docs > 0 && docs + 1 < args.size()) {
+    MainWindow window;
+    window.resize(1400, 880);
+    window.show();
+    settle(window);
+    linkwright::ui::AtlasWindow* atlas = window.showAtlas();
+    const std::array<QString, 5> grid{"2,2.5,3", "2.5", "2,3", "0.5,1,2", "0,0.5"};
+    for (int i = 0; i < 5; ++i) atlas->axisField(i)->setText(grid[static_cast<std::size_t>(i)]);
+    atlas->showGrid();
+    QElapsedTimer waited;
+    waited.start();
+    while (!atlas->complete() && waited.elapsed() < 60000) QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+    if (!atlas->complete()) return 1;
+    settle(window);
+    if (!atlas->grab().save(QDir(args[docs + 1]).filePath("atlas.png"), "PNG")) return 1;
+    ++written;
   }
   // File ▸ Compare… on the thesis's Excel table (run from the source tree), its map proposed
   // by the headers: the dialog docs/compare.md shows.

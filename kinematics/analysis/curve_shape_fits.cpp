@@ -1,0 +1,275 @@
+#include "kinematics/analysis/curve_shape_fits.h"
+
+#include "kinematics/model/units.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace linkwright::kinematics {
+namespace {
+
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+double distanceToSegment(const Eigen::Vector2d& x, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d ab = b - a;
+  const double l2 = ab.squaredNorm();
+  const double s = l2 > 0.0 ? std::clamp((x - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+  return (a + s * ab - x).norm();
+}
+
+// The curve for distances: its samples, for finding the nearest, and its pieces cut finely,
+// for measuring against the nearest sample's pieces.
+struct MeasuredCurve {
+  const std::vector<Eigen::Vector2d>* samples;
+  std::vector<Eigen::Vector2d> fine;  // densified(curve, kParts), closed
+  static constexpr std::size_t kParts = 8;
+
+  std::size_t nearestSample(const Eigen::Vector2d& x) const {
+    std::size_t best = 0;
+    double least = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < samples->size(); ++i) {
+      const double d = ((*samples)[i] - x).squaredNorm();
+      if (d < least) {
+        least = d;
+        best = i;
+      }
+    }
+    return best;
+  }
+  // The distance to the nearest sample: within half a piece of the distance to the curve.
+  double coarseDistance(const Eigen::Vector2d& x) const { return ((*samples)[nearestSample(x)] - x).norm(); }
+  // The distance to the fine pieces within two pieces of the nearest sample.
+  double distance(const Eigen::Vector2d& x) const {
+    const std::size_t n = fine.size(), centre = nearestSample(x) * kParts;
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t k = n + centre - 2 * kParts; k < n + centre + 2 * kParts; ++k)
+      best = std::min(best, distanceToSegment(x, fine[k % n], fine[(k + 1) % n]));
+    return best;
+  }
+};
+
+// The centroid of the polyline's arc length.
+Eigen::Vector2d arcCentroid(const std::vector<Eigen::Vector2d>& line) {
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  double length = 0.0;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const Eigen::Vector2d& a = line[i];
+    const Eigen::Vector2d& b = line[(i + 1) % line.size()];
+    const double l = (b - a).norm();
+    sum += l * 0.5 * (a + b);
+    length += l;
+  }
+  return length > 0.0 ? Eigen::Vector2d(sum / length) : line.front();
+}
+
+Eigen::Vector2d directionAt(double phi) { return {std::cos(phi), std::sin(phi)}; }
+
+// The worst distance of the mirrored `probes` from the curve, coarse (to the nearest sample) or
+// fine.
+double mismatch(const std::vector<Eigen::Vector2d>& probes, const MeasuredCurve& curve, const Eigen::Vector2d& g,
+                double phi, bool fine) {
+  const Eigen::Vector2d d = directionAt(phi);
+  double worst = 0.0;
+  for (const Eigen::Vector2d& x : probes) {
+    const Eigen::Vector2d r = x - g;
+    const Eigen::Vector2d mirrored = g + 2.0 * r.dot(d) * d - r;
+    worst = std::max(worst, fine ? curve.distance(mirrored) : curve.coarseDistance(mirrored));
+  }
+  return worst;
+}
+
+std::vector<Eigen::Vector2d> every(const std::vector<Eigen::Vector2d>& points, std::size_t count) {
+  std::vector<Eigen::Vector2d> out;
+  const std::size_t step = std::max<std::size_t>(1, points.size() / count);
+  for (std::size_t i = 0; i < points.size(); i += step) out.push_back(points[i]);
+  return out;
+}
+
+// A window of samples [first, last] (indices may pass size() on a closed curve).
+struct Window {
+  const CouplerCurve* curve;
+  std::size_t first, last;
+  const Eigen::Vector2d& at(std::size_t k) const { return curve->point[k % curve->size()]; }
+  std::size_t count() const { return last - first + 1; }
+};
+
+struct LineFit {
+  Eigen::Vector2d mean, direction;
+  double deviation;
+};
+
+LineFit fitLine(const Window& w) {
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (std::size_t k = w.first; k <= w.last; ++k) mean += w.at(k);
+  mean /= static_cast<double>(w.count());
+  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
+  for (std::size_t k = w.first; k <= w.last; ++k) scatter += (w.at(k) - mean) * (w.at(k) - mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(scatter);
+  const Eigen::Vector2d direction = eigen.eigenvectors().col(1);
+  double deviation = 0.0;
+  for (std::size_t k = w.first; k <= w.last; ++k)
+    deviation = std::max(deviation, std::abs(cross(w.at(k) - mean, direction)));
+  return {mean, direction, deviation};
+}
+
+struct CircleFit {
+  Eigen::Vector2d centre;
+  double radius, deviation, turn;
+  bool ok;
+};
+
+CircleFit fitCircle(const Window& w, const Eigen::Vector2d& origin) {
+  // Kåsa: least squares of x² + y² + Dx + Ey + F over the samples, about `origin` for scale.
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+  for (std::size_t k = w.first; k <= w.last; ++k) {
+    const Eigen::Vector2d p = w.at(k) - origin;
+    const Eigen::Vector3d row(p.x(), p.y(), 1.0);
+    normal += row * row.transpose();
+    rhs -= row * p.squaredNorm();
+  }
+  const Eigen::Vector3d def = normal.ldlt().solve(rhs);
+  const Eigen::Vector2d centre(-0.5 * def[0], -0.5 * def[1]);
+  const double r2 = centre.squaredNorm() - def[2];
+  if (!std::isfinite(r2) || r2 <= 0.0) return {origin, 0.0, 0.0, 0.0, false};
+  const double radius = std::sqrt(r2);
+  double deviation = 0.0, turn = 0.0;
+  for (std::size_t k = w.first; k <= w.last; ++k) {
+    deviation = std::max(deviation, std::abs((w.at(k) - origin - centre).norm() - radius));
+    if (k > w.first) {
+      const Eigen::Vector2d a = w.at(k - 1) - origin - centre, b = w.at(k) - origin - centre;
+      turn += std::abs(std::atan2(cross(a, b), a.dot(b)));
+    }
+  }
+  return {centre + origin, radius, deviation, turn, std::isfinite(deviation)};
+}
+
+double arcLength(const Window& w) {
+  double length = 0.0;
+  for (std::size_t k = w.first; k < w.last; ++k) length += (w.at(k + 1) - w.at(k)).norm();
+  return length;
+}
+
+// The longest window by `measure` that `fits` and `counts`, by a sliding window.
+template <class Fits, class Measure>
+std::optional<Window> longestWindow(const CouplerCurve& curve, const Fits& fits, const Measure& measure) {
+  const std::size_t n = curve.size();
+  const std::size_t starts = curve.closed ? n : n - 2;
+  const std::size_t cap = curve.closed ? n - 1 : 0;  // a closed window holds at most n samples
+  std::optional<Window> best;
+  double bestMeasure = 0.0;
+  std::size_t last = 0;
+  for (std::size_t first = 0; first < starts; ++first) {
+    last = std::max(last, first + 2);
+    if (!curve.closed && last >= n) break;
+    const auto end = curve.closed ? first + cap : n - 1;
+    while (last < end && fits(Window{&curve, first, last + 1})) ++last;
+    const Window w{&curve, first, last};
+    if (!fits(w)) continue;
+    const double m = measure(w);
+    if (m > bestMeasure) {
+      bestMeasure = m;
+      best = w;
+    }
+    if (curve.closed && last == end && first == 0) break;  // the whole curve fits
+  }
+  return best;
+}
+
+}  // namespace
+
+double mirrorMismatch(const CouplerCurve& curve, const Eigen::Vector2d& point, const Eigen::Vector2d& direction) {
+  const MeasuredCurve measured{&curve.point, densified(curve, MeasuredCurve::kParts)};
+  return mismatch(curve.point, measured, point, std::atan2(direction.y(), direction.x()), true);
+}
+
+std::optional<SymmetryAxis> findSymmetry(const CouplerCurve& curve, double size) {
+  if (!curve.closed || curve.size() < 8) return std::nullopt;
+  const MeasuredCurve measured{&curve.point, densified(curve, MeasuredCurve::kParts)};
+  const Eigen::Vector2d g = arcCentroid(measured.fine);
+  const std::vector<Eigen::Vector2d> coarse = every(curve.point, 24), middle = every(curve.point, 48);
+  const double step = kPi / 90.0;  // 2°
+  std::vector<std::pair<double, double>> scan;
+  for (int k = 0; k < 90; ++k) scan.push_back({mismatch(coarse, measured, g, k * step, false), k * step});
+  // The local minima of the scan that could be a mirror line, best first. A 2° step moves a
+  // mirrored point by up to 3.5 % of the size; the nearest sample adds up to half a piece.
+  std::vector<std::pair<double, double>> candidates;
+  for (std::size_t k = 0; k < scan.size(); ++k) {
+    const double here = scan[k].first;
+    if (here <= scan[(k + 1) % scan.size()].first && here <= scan[(k + scan.size() - 1) % scan.size()].first &&
+        here <= 0.08 * size)
+      candidates.push_back(scan[k]);
+  }
+  std::sort(candidates.begin(), candidates.end());
+  if (candidates.size() > 2) candidates.resize(2);
+  std::optional<SymmetryAxis> best;
+  for (const auto& [coarseMismatch, phi0] : candidates) {
+    double lo = phi0 - step, hi = phi0 + step;
+    const double gr = 0.6180339887498949;
+    for (int k = 0; k < 32; ++k) {
+      const double a = hi - gr * (hi - lo), b = lo + gr * (hi - lo);
+      if (mismatch(middle, measured, g, a, true) < mismatch(middle, measured, g, b, true)) hi = b;
+      else lo = a;
+    }
+    const double phi = 0.5 * (lo + hi);
+    const double deviation = mismatch(curve.point, measured, g, phi, true);
+    if (deviation > kSymmetryTolerance * size || (best && deviation >= best->deviation)) continue;
+    Eigen::Vector2d d = directionAt(phi);
+    if (d.x() < 0.0 || (d.x() == 0.0 && d.y() < 0.0)) d = -d;
+    best = SymmetryAxis{g, d, deviation};
+  }
+  return best;
+}
+
+std::optional<StraightRun> findStraightRun(const CouplerCurve& curve, double size) {
+  if (curve.size() < 4) return std::nullopt;
+  const double tolerance = kStraightTolerance * size;
+  const auto best = longestWindow(
+      curve, [&](const Window& w) { return fitLine(w).deviation <= tolerance; },
+      [&](const Window& w) { return (w.at(w.last) - w.at(w.first)).norm(); });
+  if (!best) return std::nullopt;
+  const Eigen::Vector2d from = best->at(best->first), to = best->at(best->last);
+  if ((to - from).norm() < kMinStraightLength * size) return std::nullopt;
+  const std::size_t n = curve.size();
+  return StraightRun{curve.crankAngle[best->first % n],
+                     curve.crankAngle[best->last % n],
+                     from,
+                     to,
+                     (to - from).norm(),
+                     fitLine(*best).deviation,
+                     best->first % n,
+                     best->last % n};
+}
+
+std::optional<CircularArc> findCircularArc(const CouplerCurve& curve, double size) {
+  if (curve.size() < 4) return std::nullopt;
+  const double tolerance = kCircularTolerance * size;
+  const Eigen::Vector2d origin = curve.point.front();
+  const auto best = longestWindow(
+      curve,
+      [&](const Window& w) {
+        const CircleFit c = fitCircle(w, origin);
+        return c.ok && c.deviation <= tolerance;
+      },
+      [&](const Window& w) {
+        const CircleFit c = fitCircle(w, origin);
+        return c.turn >= kMinArcTurn ? arcLength(w) : 0.0;
+      });
+  if (!best) return std::nullopt;
+  const CircleFit c = fitCircle(*best, origin);
+  if (arcLength(*best) < kMinArcLength * size || c.turn < kMinArcTurn) return std::nullopt;
+  const std::size_t n = curve.size();
+  return CircularArc{curve.crankAngle[best->first % n],
+                     curve.crankAngle[best->last % n],
+                     c.centre,
+                     c.radius,
+                     c.turn,
+                     c.deviation,
+                     best->first % n,
+                     best->last % n};
+}
+
+}  // namespace linkwright::kinematics
