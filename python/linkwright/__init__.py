@@ -10,10 +10,38 @@ is a linkwright.Error (a ValueError) carrying the core's sentence; what linkwrig
 stderr about a sweep is a linkwright.SweepWarning. See docs/python.md.
 """
 
-from ._linkwright import (PATH_STARTS_PER_BLOCK, Error, Linkage, PathSearch, PathStartBlock, SweepWarning, example,
-                          examples, four_bar, load, synthesize_crank_rocker, synthesize_function, synthesize_shaper,
-                          synthesize_slider_crank)
+from ._linkwright import (
+    PATH_STARTS_PER_BLOCK,
+    Atlas,
+    Error,
+    Linkage,
+    PathSearch,
+    PathStartBlock,
+    SweepWarning,
+    example,
+    examples,
+    four_bar,
+    load,
+    synthesize_crank_rocker,
+    synthesize_function,
+    synthesize_shaper,
+    synthesize_slider_crank,
+)
 
-__all__ = ["PATH_STARTS_PER_BLOCK", "Error", "Linkage", "PathSearch", "PathStartBlock", "SweepWarning", "example",
-           "examples", "four_bar", "load", "synthesize_crank_rocker", "synthesize_function", "synthesize_shaper",
-           "synthesize_slider_crank"]
+__all__ = [
+    "PATH_STARTS_PER_BLOCK",
+    "Atlas",
+    "Error",
+    "Linkage",
+    "PathSearch",
+    "PathStartBlock",
+    "SweepWarning",
+    "example",
+    "examples",
+    "four_bar",
+    "load",
+    "synthesize_crank_rocker",
+    "synthesize_function",
+    "synthesize_shaper",
+    "synthesize_slider_crank",
+]

@@ -167,3 +167,24 @@ def synthesize_function(function: str, *, x0: float, x1: float, input_start_deg:
                         points: Optional[Sequence[float]] = None, count: int = 3,
                         unit: str = "mm") -> dict[str, Any]:
     """A Freudenstein function generator (synthesize function)."""
+
+class Atlas:
+    """The coupler-curve atlas's grid (linkwright-cli atlas); picklable."""
+
+    def __init__(
+        self,
+        *,
+        coupler: Sequence[float] = (1.5, 2.0, 2.5, 3.0),
+        rocker: Sequence[float] = (1.5, 2.0, 2.5, 3.0),
+        frame: Sequence[float] = (2.0, 2.5, 3.0),
+        along: Sequence[float] = (0.0, 0.5, 1.0, 1.5, 2.0),
+        across: Sequence[float] = (0.0, 0.5, 1.0),
+        branch: Literal["open", "crossed"] = "open",
+        samples: int = 360,
+    ) -> None: ...
+    @property
+    def cells(self) -> int: ...
+    def page(self, first: int = 0, count: Optional[int] = None, filter: Optional[str] = None) -> list[dict[str, Any]]:
+        """Cells [first, first + count), computed and classified; filter keeps those with every feature named."""
+    def linkage(self, cell: int, *, crank: float = 1.0, unit: str = "mm") -> Linkage:
+        """The cell's four-bar as a Linkage."""

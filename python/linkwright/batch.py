@@ -2,8 +2,9 @@
 
 Each function splits a job into shards, maps the module over them with a
 dask.distributed Client and gathers the shards' results into the answer the one
-serial call gives, to the last bit: a path search's blocks (PathSearch.run_block)
-merged by PathSearch.merge, a tolerance study's shards of samples
+serial call gives, to the last bit: an atlas's pages of cells (Atlas.page), a path
+search's blocks (PathSearch.run_block) merged by PathSearch.merge, a tolerance
+study's shards of samples
 (Linkage.tolerance_study(first_sample=...)) combined by their lowest and highest
 values. Dask schedules, retries a task whose worker died and moves the data;
 nothing here does.
@@ -17,7 +18,7 @@ nothing here does.
 
 import numpy
 
-__all__ = ["path_synthesis", "tolerance_study"]
+__all__ = ["atlas", "path_synthesis", "tolerance_study"]
 
 
 def _client(client):
@@ -26,6 +27,24 @@ def _client(client):
     from dask.distributed import get_client  # the Client the caller made, if any
 
     return get_client()
+
+
+def _atlas_page(grid, first, count, filter):
+    return grid.page(first, count, filter)
+
+
+def atlas(grid, client=None, *, cells_per_task=100, filter=None):
+    """Atlas.page()'s cells for the whole grid (filtered as page() filters), computed
+    cells_per_task cells a Dask task on `client`, in cell order."""
+    if cells_per_task < 1:
+        raise ValueError(f"cells_per_task must be at least 1 (got {cells_per_task})")
+    client = _client(client)
+    firsts = list(range(0, grid.cells, cells_per_task))
+    counts = [min(cells_per_task, grid.cells - first) for first in firsts]
+    [scattered] = client.scatter([grid], broadcast=True)
+    n = len(firsts)
+    futures = client.map(_atlas_page, [scattered] * n, firsts, counts, [filter] * n, pure=True)
+    return [cell for page in client.gather(futures) for cell in page]
 
 
 def _run_blocks(search, blocks):

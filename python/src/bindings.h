@@ -17,6 +17,9 @@ void bindProblems(pybind11::module_& module);
 /// Linkage.tolerance_study (tolerance.cpp).
 void bindTolerance(pybind11::class_<Linkage>& linkage);
 
+/// linkwright.Atlas (atlas.cpp).
+void bindAtlas(pybind11::module_& module);
+
 /// Linkage.instant_centres (centres.cpp).
 void bindCentres(pybind11::class_<Linkage>& linkage);
 

@@ -248,6 +248,7 @@ PYBIND11_MODULE(_linkwright, module) {
   lp::bindTolerance(linkage);
   lp::bindSynthesis(module);
   lp::bindProblems(module);
+  lp::bindAtlas(module);
 
   module.def(
       "examples",

@@ -15,6 +15,7 @@ distributed = pytest.importorskip("distributed")  # python3-distributed; install
 import linkwright
 import linkwright.batch
 
+from test_atlas import SMALL, same_cell
 from test_path_search import POINTS, comparable
 
 
@@ -35,6 +36,19 @@ def test_a_linkage_pickles_as_the_same_linkage():
         assert again.source == linkage.source and again.kind == linkage.kind
     mine = linkwright.four_bar(60, 25, 70, 45, branch="crossed", coupler_point=(35, 20), unit="in")
     assert pickle.loads(pickle.dumps(mine)).sweep_csv(omega=2) == mine.sweep_csv(omega=2)
+
+
+def test_a_sharded_atlas_is_the_serial_one(client):
+    grid = linkwright.Atlas(**SMALL)
+    serial = grid.page()
+    for per_task in (1, 5):
+        sharded = linkwright.batch.atlas(grid, client, cells_per_task=per_task)
+        assert len(sharded) == len(serial) == grid.cells
+        for a, b in zip(sharded, serial):
+            same_cell(a, b)
+    filtered = linkwright.batch.atlas(grid, client, cells_per_task=3, filter="crunode")
+    assert filtered
+    assert [c["cell"] for c in filtered] == [c["cell"] for c in grid.page(filter="crunode")]
 
 
 def test_a_sharded_path_search_is_the_serial_one(client):
