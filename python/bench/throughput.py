@@ -2,7 +2,8 @@
 process, then as linkwright.batch runs it on a LocalCluster of 1 and of 2 worker processes
 (one thread each). Run from a build:  PYTHONPATH=build/python python3 python/bench/throughput.py
 
-A path-synthesis start is one linkage fitted by Levenberg-Marquardt (hundreds of solves); a
+An atlas cell is one linkage swept at 360 samples and its curve classified; a
+path-synthesis start is one linkage fitted by Levenberg-Marquardt (hundreds of solves); a
 tolerance sample is one linkage swept over the grid (361 poses here)."""
 
 import os
@@ -33,7 +34,11 @@ def timed(run):
 def main():
     search = linkwright.PathSearch(points(), starts=20 * linkwright.PATH_STARTS_PER_BLOCK, seed=3)
     samples = 20_000
+    grid = linkwright.Atlas(coupler=[1.5, 2.0, 2.5, 3.0, 3.5], rocker=[1.5, 2.0, 2.5, 3.0], frame=[2.0, 2.5, 3.0],
+                            along=[0.0, 0.5, 1.0, 1.5, 2.0], across=[0.0, 0.5, 1.0])  # 900 cells, 360 samples
     jobs = {
+        "atlas (cells of 360 samples, classified)": (grid.cells, grid.page,
+                                                      lambda client: linkwright.batch.atlas(grid, client)),
         "path synthesis (starts)": (search.blocks * linkwright.PATH_STARTS_PER_BLOCK, search.run,
                                     lambda client: linkwright.batch.path_synthesis(search, client)),
         "tolerance study (linkages x 361 poses)": (
