@@ -24,6 +24,7 @@ from ._linkwright import (
     load,
     synthesize_crank_rocker,
     synthesize_function,
+    synthesize_motion,
     synthesize_shaper,
     synthesize_slider_crank,
 )
@@ -42,6 +43,7 @@ __all__ = [
     "load",
     "synthesize_crank_rocker",
     "synthesize_function",
+    "synthesize_motion",
     "synthesize_shaper",
     "synthesize_slider_crank",
 ]

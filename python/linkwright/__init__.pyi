@@ -162,6 +162,12 @@ def synthesize_shaper(stroke: float, *, time_ratio: float = 1.5, crank: float, l
                       guide_height: Optional[float] = None, unit: str = "mm") -> dict[str, Any]:
     """A crank-shaper for a stroke and time ratio (synthesize shaper)."""
 
+def synthesize_motion(poses: Sequence[tuple[float, float, float]], *, circle_a: tuple[float, float],
+                      circle_b: tuple[float, float], centre_a: Optional[float] = None,
+                      centre_b: Optional[float] = None, full_rotation: bool = False,
+                      unit: str = "mm") -> dict[str, Any]:
+    """A motion generator through 2 or 3 coupler poses (x, y, angle_deg) (synthesize motion)."""
+
 def synthesize_function(function: str, *, x0: float, x1: float, input_start_deg: float, input_span_deg: float,
                         output_start_deg: float, output_span_deg: float, frame: float = 100.0,
                         points: Optional[Sequence[float]] = None, count: int = 3,

@@ -11,22 +11,46 @@ nothing here does.
 
     >>> from dask.distributed import Client
     >>> import linkwright, linkwright.batch
-    >>> client = Client()                      # a local cluster; Client("tcp://host:8786") a real one
+    >>> client = Client()                      # a local cluster; "tcp://host:8786" for a real one
     >>> search = linkwright.PathSearch(points, starts=100_000)
     >>> best = linkwright.batch.path_synthesis(search, client)["candidates"][0]
 """
 
+import contextlib
+
 import numpy
+
+from ._linkwright import Error
 
 __all__ = ["atlas", "path_synthesis", "tolerance_study"]
 
 
-def _client(client):
-    if client is not None:
-        return client
-    from dask.distributed import get_client  # the Client the caller made, if any
+def _refuse(field, message):
+    """A refusal as the module's own: linkwright.Error naming the keyword."""
+    error = Error(message)
+    error.field = field
+    error.code = "invalid-value"
+    raise error
 
-    return get_client()
+
+@contextlib.contextmanager
+def _client(client):
+    """The Client to run on: the one given; a scheduler's address ("tcp://host:8786"),
+    connected to for this call only; or None for the Client already made in this process,
+    else a new local cluster (dask.distributed.Client(), a worker process per core), kept
+    for the calls that follow."""
+    from dask.distributed import Client, get_client  # only when a batch job runs
+
+    if isinstance(client, str):
+        with Client(client) as connected:
+            yield connected
+        return
+    if client is None:
+        try:
+            client = get_client()
+        except ValueError:  # no Client yet
+            client = Client()
+    yield client
 
 
 def _atlas_page(grid, first, count, filter):
@@ -37,14 +61,14 @@ def atlas(grid, client=None, *, cells_per_task=100, filter=None):
     """Atlas.page()'s cells for the whole grid (filtered as page() filters), computed
     cells_per_task cells a Dask task on `client`, in cell order."""
     if cells_per_task < 1:
-        raise ValueError(f"cells_per_task must be at least 1 (got {cells_per_task})")
-    client = _client(client)
-    firsts = list(range(0, grid.cells, cells_per_task))
-    counts = [min(cells_per_task, grid.cells - first) for first in firsts]
-    [scattered] = client.scatter([grid], broadcast=True)
-    n = len(firsts)
-    futures = client.map(_atlas_page, [scattered] * n, firsts, counts, [filter] * n, pure=True)
-    return [cell for page in client.gather(futures) for cell in page]
+        _refuse("cells_per_task", f"cells_per_task must be at least 1 (got {cells_per_task})")
+    with _client(client) as client:
+        firsts = list(range(0, grid.cells, cells_per_task))
+        counts = [min(cells_per_task, grid.cells - first) for first in firsts]
+        [scattered] = client.scatter([grid], broadcast=True)
+        n = len(firsts)
+        futures = client.map(_atlas_page, [scattered] * n, firsts, counts, [filter] * n, pure=True)
+        return [cell for page in client.gather(futures) for cell in page]
 
 
 def _run_blocks(search, blocks):
@@ -52,18 +76,18 @@ def _run_blocks(search, blocks):
 
 
 def path_synthesis(search, client=None, *, blocks_per_task=1):
-    """PathSearch.run()'s answer, its blocks run as Dask tasks on `client`
-    (default: the current dask.distributed Client); blocks_per_task blocks of
+    """PathSearch.run()'s answer, its blocks run as Dask tasks on `client` (a Client,
+    a scheduler's address, or None: see _client); blocks_per_task blocks of
     PATH_STARTS_PER_BLOCK starts each make a task."""
     if blocks_per_task < 1:
-        raise ValueError(f"blocks_per_task must be at least 1 (got {blocks_per_task})")
-    client = _client(client)
-    shards = [list(range(first, min(first + blocks_per_task, search.blocks)))
-              for first in range(0, search.blocks, blocks_per_task)]
-    [scattered] = client.scatter([search], broadcast=True)
-    futures = client.map(_run_blocks, [scattered] * len(shards), shards, pure=True)
-    blocks = [block for shard in client.gather(futures) for block in shard]
-    return search.merge(blocks)
+        _refuse("blocks_per_task", f"blocks_per_task must be at least 1 (got {blocks_per_task})")
+    with _client(client) as client:
+        shards = [list(range(first, min(first + blocks_per_task, search.blocks)))
+                  for first in range(0, search.blocks, blocks_per_task)]
+        [scattered] = client.scatter([search], broadcast=True)
+        futures = client.map(_run_blocks, [scattered] * len(shards), shards, pure=True)
+        blocks = [block for shard in client.gather(futures) for block in shard]
+        return search.merge(blocks)
 
 
 def _study_shard(linkage, tolerance, first, count, seed, grid):
@@ -83,7 +107,8 @@ def _combine(studies):
         bands = [s["columns"][name] for s in studies]
         worst = None
         for band in bands:
-            if band["worst_deviation"] is not None and (worst is None or band["worst_deviation"] > worst["worst_deviation"]):
+            deviation = band["worst_deviation"]
+            if deviation is not None and (worst is None or deviation > worst["worst_deviation"]):
                 worst = band
         columns[name] = {
             "nominal": first["nominal"],
@@ -101,14 +126,14 @@ def tolerance_study(linkage, tolerance, client=None, *, mc_samples, seed=46, sha
     number of samples (one call takes at most 100 000), shard_samples samples a
     Dask task; grid keywords as Linkage.sweep's."""
     if mc_samples < 1:
-        raise ValueError(f"mc_samples must be at least 1 (got {mc_samples})")
+        _refuse("mc_samples", f"mc_samples must be at least 1 (got {mc_samples})")
     if not 1 <= shard_samples <= 100_000:
-        raise ValueError(f"shard_samples must be between 1 and 100000 (got {shard_samples})")
-    client = _client(client)
-    firsts = list(range(0, mc_samples, shard_samples))
-    counts = [min(shard_samples, mc_samples - first) for first in firsts]
-    [scattered] = client.scatter([linkage], broadcast=True)
-    n = len(firsts)
-    futures = client.map(_study_shard, [scattered] * n, [tolerance] * n, firsts, counts, [seed] * n, [grid] * n,
-                         pure=True)
-    return _combine(client.gather(futures))
+        _refuse("shard_samples", f"shard_samples must be between 1 and 100000 (got {shard_samples})")
+    with _client(client) as client:
+        firsts = list(range(0, mc_samples, shard_samples))
+        counts = [min(shard_samples, mc_samples - first) for first in firsts]
+        [scattered] = client.scatter([linkage], broadcast=True)
+        n = len(firsts)
+        futures = client.map(_study_shard, [scattered] * n, [tolerance] * n, firsts, counts, [seed] * n, [grid] * n,
+                             pure=True)
+        return _combine(client.gather(futures))

@@ -1,6 +1,6 @@
 // The closed-form synthesis problems of linkwright-cli synthesize (kinematics/synthesis/):
 // a crank-rocker for a swing and time ratio, a slider-crank or a shaper for a stroke, a
-// Freudenstein function generator. Each returns its candidate as the path search's are
+// Freudenstein function generator, a motion generator through two or three coupler poses. Each returns its candidate as the path search's are
 // described (synthesis.cpp): the design as a Linkage, its error, Grashof class, worst
 // transmission angle and defects.
 
@@ -9,6 +9,7 @@
 
 #include "kinematics/model/units.h"
 #include "kinematics/synthesis/function_generation.h"
+#include "kinematics/synthesis/motion_generation.h"
 #include "kinematics/synthesis/stroke_shaper.h"
 #include "kinematics/synthesis/stroke_slider_crank.h"
 #include "kinematics/synthesis/swing_crank_rocker.h"
@@ -17,6 +18,9 @@
 
 #include <optional>
 #include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 namespace linkwright::python {
 namespace {
@@ -30,7 +34,9 @@ k::Error spelled(k::Error e) {
                                       {"inputStart", "input_start_deg"},
                                       {"inputSpan", "input_span_deg"},
                                       {"outputStart", "output_start_deg"},
-                                      {"outputSpan", "output_span_deg"}})
+                                      {"outputSpan", "output_span_deg"},
+                                      {"circlePoints.a", "circle_a"},
+                                      {"circlePoints.b", "circle_b"}})
     if (e.field == core) {
       e.field = keyword;
       if (e.message.rfind(core, 0) == 0) e.message.replace(0, core.size(), keyword);
@@ -64,6 +70,44 @@ py::dict candidateDict(const k::SynthesisCandidate& c, const std::string& source
 }
 
 void bindProblems(py::module_& module) {
+  module.def(
+      "synthesize_motion",
+      [](const std::vector<std::tuple<double, double, double>>& poses, std::pair<double, double> circleA,
+         std::pair<double, double> circleB, std::optional<double> centreA, std::optional<double> centreB,
+         bool fullRotation, const std::string& unit) {
+        std::vector<k::CouplerPose> coupler;
+        for (const auto& [x, y, deg] : poses) coupler.push_back({{x, y}, k::degToRad(deg)});
+        const k::CirclePoints circle{{circleA.first, circleA.second}, {circleB.first, circleB.second}};
+        const k::MotionOptions options{fullRotation, unit};
+        if (coupler.size() != 2 && coupler.size() != 3)
+          throw CoreError(badValue("poses", "must number 2 or 3 (got " + std::to_string(coupler.size()) + ")"));
+        if (coupler.size() == 3 && (centreA || centreB))
+          throw CoreError(badValue(centreA ? "centre_a" : "centre_b",
+                                   "applies to two poses only: three poses fix the centre points"));
+        const k::MotionSynthesis s =
+            orRaise(coupler.size() == 3 ? k::synthesiseMotion3(coupler, circle, {}, options)
+                                        : k::synthesiseMotion2(coupler, circle, centreA.value_or(0.0),
+                                                               centreB.value_or(0.0), {}, options));
+        py::dict d = candidateDict(s.candidate, "synthesize_motion()");
+        d["o2"] = py::make_tuple(number(s.o2.x()), number(s.o2.y()));
+        d["o4"] = py::make_tuple(number(s.o4.x()), number(s.o4.y()));
+        d["frame"] = number(s.lengths.frame);
+        d["crank"] = number(s.lengths.crank);
+        d["coupler"] = number(s.lengths.coupler);
+        d["rocker"] = number(s.lengths.rocker);
+        d["branch"] = s.branch == k::Branch::Open ? "open" : "crossed";
+        py::list angles;
+        for (const double a : s.crankAngles) angles.append(degrees(a));
+        d["crank_angles_deg"] = angles;
+        return d;
+      },
+      py::arg("poses"), py::kw_only(), py::arg("circle_a"), py::arg("circle_b"), py::arg("centre_a") = py::none(),
+      py::arg("centre_b") = py::none(), py::arg("full_rotation") = false, py::arg("unit") = "mm",
+      "A four-bar whose coupler passes through 2 or 3 poses (x, y, angle_deg: its point P and its angle, CCW "
+      "from +x), as linkwright-cli synthesize motion: circle points circle_a and circle_b are where the crank's "
+      "and the rocker's moving pivots sit at pose 1; with two poses centre_a and centre_b place each centre point "
+      "on its bisector (signed distance). Returns a dict: linkage, o2, o4, frame, crank, coupler, rocker, branch, "
+      "crank_angles_deg (at each pose), error (0: exact), grashof, min_transmission_deg, defects.");
   module.def(
       "synthesize_crank_rocker",
       [](double swingDeg, double timeRatio, double length, const std::string& scale, const std::string& unit) {

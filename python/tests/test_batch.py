@@ -46,6 +46,10 @@ def test_a_sharded_atlas_is_the_serial_one(client):
         assert len(sharded) == len(serial) == grid.cells
         for a, b in zip(sharded, serial):
             same_cell(a, b)
+    # No client: the one this process made; an address: a Client of its own to that scheduler.
+    for where in (None, client.scheduler_info()["address"]):
+        for a, b in zip(linkwright.batch.atlas(grid, where, cells_per_task=4), serial):
+            same_cell(a, b)
     filtered = linkwright.batch.atlas(grid, client, cells_per_task=3, filter="crunode")
     assert filtered
     assert [c["cell"] for c in filtered] == [c["cell"] for c in grid.page(filter="crunode")]
@@ -95,3 +99,18 @@ def test_a_worker_killed_mid_run_still_gives_the_serial_answer(client):
     assert sharded["starts_run"] == serial["starts_run"]
     # The nanny started a fresh worker process in its place.
     assert pids[victim] not in client.run(os.getpid).values()
+
+
+@pytest.mark.parametrize("call, field", [
+    (lambda c: linkwright.batch.atlas(linkwright.Atlas(**SMALL), c, cells_per_task=0), "cells_per_task"),
+    (lambda c: linkwright.batch.path_synthesis(linkwright.PathSearch(POINTS), c, blocks_per_task=0),
+     "blocks_per_task"),
+    (lambda c: linkwright.batch.tolerance_study(linkwright.example("thesis-crank-rocker"), 0.1, c, mc_samples=0),
+     "mc_samples"),
+    (lambda c: linkwright.batch.tolerance_study(linkwright.example("thesis-crank-rocker"), 0.1, c, mc_samples=10,
+                                                shard_samples=200_000), "shard_samples"),
+])
+def test_a_bad_batch_request_is_refused_naming_the_keyword(client, call, field):
+    with pytest.raises(linkwright.Error) as refused:
+        call(client)
+    assert refused.value.field == field

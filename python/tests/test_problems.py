@@ -53,3 +53,21 @@ def test_a_bad_problem_is_refused_naming_the_keyword(call, field):
     with pytest.raises(linkwright.Error) as refused:
         call()
     assert refused.value.field == field
+
+
+def test_the_motion_generator_carries_its_coupler_through_three_poses():
+    import math
+    poses = [(0.0, 0.0, 0.0), (40.0, 10.0, 20.0), (70.0, 35.0, 45.0)]
+    found = linkwright.synthesize_motion(poses, circle_a=(-20.0, -30.0), circle_b=(30.0, -25.0))
+    assert found["error"] == 0
+    linkage = found["linkage"]
+    # P at each pose's crank angle is the pose's point (the pose solver's, a second method).
+    for (x, y, _), deg in zip(poses, found["crank_angles_deg"]):
+        row = linkage.sweep(start_deg=deg, stop_deg=deg, samples=1)
+        assert math.hypot(row["P_x_mm"][0] - x, row["P_y_mm"][0] - y) < 1e-9
+    with pytest.raises(linkwright.Error) as refused:
+        linkwright.synthesize_motion(poses[:1], circle_a=(0, 0), circle_b=(1, 1))
+    assert refused.value.field == "poses"
+    with pytest.raises(linkwright.Error) as refused:
+        linkwright.synthesize_motion(poses, circle_a=(0, 0), circle_b=(1, 1), centre_a=3)
+    assert refused.value.field == "centre_a"
