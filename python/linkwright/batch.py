@@ -65,7 +65,7 @@ def atlas(grid, client=None, *, cells_per_task=100, filter=None):
     with _client(client) as client:
         firsts = list(range(0, grid.cells, cells_per_task))
         counts = [min(cells_per_task, grid.cells - first) for first in firsts]
-        [scattered] = client.scatter([grid], broadcast=True)
+        [scattered] = client.scatter([grid], broadcast=True, hash=False)
         n = len(firsts)
         futures = client.map(_atlas_page, [scattered] * n, firsts, counts, [filter] * n, pure=True)
         return [cell for page in client.gather(futures) for cell in page]
@@ -84,7 +84,7 @@ def path_synthesis(search, client=None, *, blocks_per_task=1):
     with _client(client) as client:
         shards = [list(range(first, min(first + blocks_per_task, search.blocks)))
                   for first in range(0, search.blocks, blocks_per_task)]
-        [scattered] = client.scatter([search], broadcast=True)
+        [scattered] = client.scatter([search], broadcast=True, hash=False)
         futures = client.map(_run_blocks, [scattered] * len(shards), shards, pure=True)
         blocks = [block for shard in client.gather(futures) for block in shard]
         return search.merge(blocks)
@@ -132,7 +132,7 @@ def tolerance_study(linkage, tolerance, client=None, *, mc_samples, seed=46, sha
     with _client(client) as client:
         firsts = list(range(0, mc_samples, shard_samples))
         counts = [min(shard_samples, mc_samples - first) for first in firsts]
-        [scattered] = client.scatter([linkage], broadcast=True)
+        [scattered] = client.scatter([linkage], broadcast=True, hash=False)
         n = len(firsts)
         futures = client.map(_study_shard, [scattered] * n, [tolerance] * n, firsts, counts, [seed] * n, [grid] * n,
                              pure=True)
