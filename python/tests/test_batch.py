@@ -7,10 +7,9 @@ import pickle
 import signal
 import time
 
+import distributed  # python3-distributed: install-deps.sh installs it, so its absence fails here
 import numpy
 import pytest
-
-distributed = pytest.importorskip("distributed")  # python3-distributed; install-deps.sh installs it
 
 import linkwright
 import linkwright.batch
