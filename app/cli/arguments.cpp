@@ -7,6 +7,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <set>
 #include <tuple>
 
@@ -52,7 +53,7 @@ const std::set<std::string>& optionsOf(Command command) {
   static const std::set<std::string> tolerance{"--fourbar", "--example", "--unit",  "--branch",    "--coupler-point",
                                                "--rpm",     "--omega",   "--alpha", "--from",      "--to",
                                                "--step",    "--samples", "--at",    "--tolerance", "--mc-samples",
-                                               "--seed",    "--json",    "-o",      "--output"};
+                                               "--seed",    "--json",    "-o",      "--output",    "--tolerance-of"};
   static const std::set<std::string> optimise{"--example",      "--objective",  "--point", "--path-measure",
                                               "--length-range", "--fix-pivots", "--seed",  "--evaluations",
                                               "--starts",       "--json",       "-o",      "--output"};
@@ -243,6 +244,22 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
     inv.angles = value;
   } else if (option == "--tolerance" && inv.command == Command::Tolerance) {
     return number(inv.tolerance);
+  } else if (option == "--tolerance-of") {
+    // "coupler length=0.02,O2 x=0.1": dimension names hold spaces, never a comma or '='.
+    std::size_t begin = 0;
+    while (begin <= value.size()) {
+      const std::size_t end = std::min(value.find(',', begin), value.size());
+      const std::string pair = value.substr(begin, end - begin);
+      const std::size_t equals = pair.rfind('=');
+      double t = 0.0;
+      const char* typed = equals == std::string::npos ? nullptr : pair.c_str() + equals + 1;
+      char* parsed = nullptr;
+      if (typed != nullptr && *typed != '\0') t = std::strtod(typed, &parsed);
+      if (typed == nullptr || parsed == nullptr || *parsed != '\0' || equals == 0)
+        return usage(option, option + ": '" + pair + "' is not NAME=T (e.g. \"coupler length=0.02\")");
+      inv.toleranceOf.emplace_back(pair.substr(0, equals), t);
+      begin = end + 1;
+    }
   } else if (option == "--objective" || option == "--point" || option == "--path-measure" || option == "--fix-pivots") {
     if (value.empty()) return usage(option, option + " needs a value");
     (option == "--objective"      ? inv.objective

@@ -462,6 +462,8 @@ defaults, and --rpm, --omega, --alpha, --from, --to, --step and --samples change
 docs/tolerances.md):
   --tolerance T         ± T on every length and pivot coordinate, in the length unit
                         (required; 0 ≤ T < the shortest length)
+  --tolerance-of "NAME=T,…"  a ± of their own for the dimensions named (as the output lists
+                        them: "coupler length=0.02,O2 x=0.1"); the others take --tolerance
   --mc-samples N        Monte-Carlo samples, 1 to 100000 (default 1000), each a linkage
                         with every dimension uniform within ±T, swept over the grid
   --seed S              the samples' seed, a whole number (default 46): the same seed

@@ -53,6 +53,7 @@ struct Study {
 std::string optionFor(const std::string& field) {
   if (field == "tolerance") return "--tolerance";
   if (field == "samples") return "--mc-samples";
+  if (field.rfind("perDimension", 0) == 0) return "--tolerance-of";
   return "";
 }
 
@@ -75,9 +76,13 @@ void printText(std::ostream& out, const Study& st, const std::string& source) {
   const auto n = [](double v) { return formatShort(v, 4); };
   const std::size_t last = mc.nominal.size() - 1;
   out << "tolerance study of " << source << ": ±" << n(mc.spec.tolerance) << " " << u << " on " << mc.dimensions.size()
-      << " dimensions, each uniform and independent; " << mc.spec.samples << " samples (seed " << mc.spec.seed
-      << "), each swept over " << mc.nominal.size() << " inputs (" << st.input.column.name << " "
-      << n(st.input.at(mc.nominal, 0)) << " to " << n(st.input.at(mc.nominal, last)) << ")\n";
+      << " dimensions";
+  for (const k::DimensionTolerance& own : mc.spec.perDimension)
+    out << (&own == &mc.spec.perDimension.front() ? " (" : ", ") << own.dimension << " ±" << n(own.tolerance);
+  out << (mc.spec.perDimension.empty() ? "" : ")") << ", each uniform and independent; " << mc.spec.samples
+      << " samples (seed " << mc.spec.seed << "), each swept over " << mc.nominal.size() << " inputs ("
+      << st.input.column.name << " " << n(st.input.at(mc.nominal, 0)) << " to " << n(st.input.at(mc.nominal, last))
+      << ")\n";
   out << "samples: " << mc.used << " in the band, " << mc.notAssembled << " did not assemble at every input, "
       << mc.singular << " met a toggle\n";
   out << "dimensions (" << u << "):";
@@ -96,7 +101,7 @@ void printText(std::ostream& out, const Study& st, const std::string& source) {
     const auto [d, value] = mostSensitive(s, c);
     out << pad(b.column.name, width + 2) << pad(n(b.worstDeviation), 12)
         << pad(mc.used > 0 ? n(st.input.at(mc.nominal, b.worstGridSample)) : std::string(k::kUndefinedText), 22)
-        << pad(n(s.firstOrderWorst(c, mc.spec.tolerance)), 13);
+        << pad(n(s.firstOrderWorst(c, k::dimensionTolerances(mc.spec, mc.dimensions))), 13);
     // The driven crank's ω and α are the driver's: sensitive to nothing.
     if (value > 0.0) out << s.dimensions[d].name << " (" << n(value) << " " << unitOf(b.column, u) << "/" << u << ")\n";
     else out << "none\n";
@@ -115,6 +120,13 @@ void printText(std::ostream& out, const Study& st, const std::string& source) {
   }
 }
 
+// The dimensions with a ± of their own, by name.
+k::io::JsonValue ownTolerances(const k::MonteCarloSpec& spec) {
+  k::io::JsonValue own = k::io::JsonValue::object();
+  for (const k::DimensionTolerance& t : spec.perDimension) own[t.dimension] = t.tolerance;
+  return own;
+}
+
 void printJson(std::ostream& out, const Study& st, const std::string& source) {
   const auto& mc = st.monteCarlo;
   const auto& s = st.sensitivities;
@@ -122,6 +134,7 @@ void printJson(std::ostream& out, const Study& st, const std::string& source) {
   k::io::JsonValue json{{"source", source},
                         {"length_unit", u},
                         {"tolerance_" + u, mc.spec.tolerance},
+                        {"own_tolerances_" + u, ownTolerances(mc.spec)},
                         {"distribution", "uniform"},
                         {"samples", mc.spec.samples},
                         {"seed", mc.spec.seed},
@@ -137,7 +150,7 @@ void printJson(std::ostream& out, const Study& st, const std::string& source) {
   for (std::size_t c = 0; c < mc.bands.size(); ++c) {
     const auto& b = mc.bands[c];
     std::size_t firstAt = 0;
-    const double firstOrder = s.firstOrderWorst(c, mc.spec.tolerance, &firstAt);
+    const double firstOrder = s.firstOrderWorst(c, k::dimensionTolerances(mc.spec, mc.dimensions), &firstAt);
     k::io::JsonValue column{{"name", b.column.name},
                             {"worst_deviation", b.worstDeviation},
                             {"worst_at", mc.used > 0 ? st.input.at(mc.nominal, b.worstGridSample) : kNoValue},
@@ -210,8 +223,9 @@ ExitCode runTolerance(const Invocation& inv, std::ostream& out, std::ostream& er
         << ")\n";
     return ExitCode::BadInput;
   }
-  const k::MonteCarloSpec mcSpec{*inv.tolerance, static_cast<std::size_t>(samples),
-                                 inv.seed.value_or(k::kDefaultToleranceSeed)};
+  k::MonteCarloSpec mcSpec{*inv.tolerance, static_cast<std::size_t>(samples),
+                           inv.seed.value_or(k::kDefaultToleranceSeed)};
+  for (const auto& [name, t] : inv.toleranceOf) mcSpec.perDimension.push_back({name, t});
   auto mc = k::toleranceMonteCarlo(m, *spec, mcSpec);
   if (!mc) {
     const k::Error& e = mc.error();

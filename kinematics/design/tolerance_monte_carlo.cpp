@@ -51,16 +51,50 @@ std::optional<Error> checkMonteCarloSpec(const MonteCarloSpec& spec, const Mecha
     return Error{ErrorCode::InvalidValue, "firstSample",
                  "firstSample must be between 0 and " + std::to_string(kMaxToleranceFirstSample) + " (got " +
                      std::to_string(spec.firstSample) + ")"};
+  const std::vector<ToleranceDimension> dimensions = toleranceDimensions(mechanism);
+  std::string names;
+  for (const ToleranceDimension& d : dimensions) names += (names.empty() ? "" : ", ") + d.name;
+  for (std::size_t i = 0; i < spec.perDimension.size(); ++i) {
+    const DimensionTolerance& t = spec.perDimension[i];
+    const std::string field = "perDimension[" + std::to_string(i) + "]";
+    const auto d = std::find_if(dimensions.begin(), dimensions.end(),
+                                [&](const ToleranceDimension& x) { return x.name == t.dimension; });
+    if (d == dimensions.end())
+      return Error{ErrorCode::InvalidValue, field,
+                   "no dimension is named '" + t.dimension + "' (this linkage's: " + names + ")"};
+    for (std::size_t j = 0; j < i; ++j)
+      if (spec.perDimension[j].dimension == t.dimension)
+        return Error{ErrorCode::InvalidValue, field, t.dimension + " is given a tolerance twice"};
+    const bool length = parameterUnit(d->parameter.slot) == ParameterUnit::Length;
+    const double below = length ? d->value : std::numeric_limits<double>::infinity();
+    if (!(t.tolerance >= 0.0 && t.tolerance < below))
+      return Error{ErrorCode::InvalidValue, field,
+                   "the tolerance of " + t.dimension + " must be finite, at least 0" +
+                       (length ? " and less than the length (" + formatShort(below) + unit + ")" : std::string()) +
+                       " (got " + formatNumber(t.tolerance) + (std::isfinite(t.tolerance) ? unit : "") + ")"};
+  }
   return std::nullopt;
 }
 
-std::vector<double> toleranceSampleOffsets(const MonteCarloSpec& spec, std::size_t dimensions, std::size_t sample) {
+std::vector<double> dimensionTolerances(const MonteCarloSpec& spec, const std::vector<ToleranceDimension>& dimensions) {
+  std::vector<double> out;
+  for (const ToleranceDimension& d : dimensions) {
+    double t = spec.tolerance;
+    for (const DimensionTolerance& own : spec.perDimension)
+      if (own.dimension == d.name) t = own.tolerance;
+    out.push_back(t);
+  }
+  return out;
+}
+
+std::vector<double> toleranceSampleOffsets(const MonteCarloSpec& spec, const std::vector<double>& tolerances,
+                                           std::size_t sample) {
   std::uint64_t state = spec.seed ^ (0xd1b54a32d192ed03ULL * (static_cast<std::uint64_t>(sample) + 1));
-  std::vector<double> out(dimensions);
-  for (double& offset : out) {
+  std::vector<double> out;
+  for (const double tolerance : tolerances) {
     // 53 random bits: u uniform in [0, 1), then [−t, t).
     const double u = static_cast<double>(splitMix(state) >> 11) * 0x1.0p-53;
-    offset = (2.0 * u - 1.0) * spec.tolerance;
+    out.push_back((2.0 * u - 1.0) * tolerance);
   }
   return out;
 }
@@ -86,11 +120,12 @@ Result<MonteCarloResult> toleranceMonteCarlo(const Mechanism& mechanism, const S
     for (std::size_t j = 0; j < n; ++j) band.nominal[j] = c.value(out.nominal, j);
     out.bands.push_back(std::move(band));
   }
+  const std::vector<double> tolerances = dimensionTolerances(monteCarlo, out.dimensions);
   SweepResult sample;
   for (std::size_t k = 0; k < monteCarlo.samples; ++k) {
     const std::size_t index = static_cast<std::size_t>(monteCarlo.firstSample) + k;
     const Mechanism m =
-        offsetDimensions(mechanism, out.dimensions, toleranceSampleOffsets(monteCarlo, out.dimensions.size(), index));
+        offsetDimensions(mechanism, out.dimensions, toleranceSampleOffsets(monteCarlo, tolerances, index));
     if (auto e = sweepInto(m, spec, SolveRequest{}, sample)) return *e;
     if (!sample.notAssembled.empty()) {
       ++out.notAssembled;

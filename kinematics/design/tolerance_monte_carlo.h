@@ -28,25 +28,43 @@ inline constexpr std::uint64_t kMaxToleranceFirstSample = std::uint64_t{1} << 53
 /// The seed when none is given.
 inline constexpr std::uint64_t kDefaultToleranceSeed = 46;
 
+/// A ± of one dimension's own, the dimension named as ToleranceDimension::name ("coupler
+/// length", "O2 x", "O4 across the frame line").
+struct DimensionTolerance {
+  std::string dimension;
+  double tolerance = 0.0;  ///< length unit, ≥ 0; a length's below that length
+  bool operator==(const DimensionTolerance&) const = default;
+};
+
 struct MonteCarloSpec {
-  double tolerance = 0.0;      ///< ± on every dimension, length unit, ≥ 0 and below the shortest length
+  double tolerance =
+      0.0;  ///< ± on every dimension not named in perDimension, length unit, ≥ 0, below the shortest length
   std::size_t samples = 1000;  ///< 1 … kMaxToleranceSamples
   std::uint64_t seed = kDefaultToleranceSeed;
   /// The first sample's index, 0 … kMaxToleranceFirstSample: a study run in shards (samples
   /// [first, first + samples) each) has the samples of one run, and its bands are the shards'
   /// lowest and highest values.
   std::uint64_t firstSample = 0;
+  /// The dimensions whose parts are made to a ± of their own (each named once).
+  std::vector<DimensionTolerance> perDimension;
   bool operator==(const MonteCarloSpec&) const = default;
 };
 
-/// Error naming "tolerance", "samples" or "firstSample", the value and the accepted range, unless
-/// the spec fits `mechanism`: a finite tolerance ≥ 0 below its shortest length dimension (so
-/// every length stays positive), 1 ≤ samples ≤ kMaxToleranceSamples, firstSample ≤
-/// kMaxToleranceFirstSample.
+/// Error naming "tolerance", "samples", "firstSample" or "perDimension[i]", the value and the
+/// accepted range, unless the spec fits `mechanism`: a finite tolerance ≥ 0 below its shortest
+/// length dimension (so every length stays positive), 1 ≤ samples ≤ kMaxToleranceSamples,
+/// firstSample ≤ kMaxToleranceFirstSample, each perDimension naming one of its dimensions once
+/// with a finite ± ≥ 0, below the length itself for a length.
 std::optional<Error> checkMonteCarloSpec(const MonteCarloSpec& spec, const Mechanism& mechanism);
 
-/// Sample k's offset of each of `dimensions` dimensions (length unit), uniform in ±tolerance.
-std::vector<double> toleranceSampleOffsets(const MonteCarloSpec& spec, std::size_t dimensions, std::size_t sample);
+/// The ± of each of `dimensions` (length unit): its own where spec.perDimension names it, else
+/// spec.tolerance.
+std::vector<double> dimensionTolerances(const MonteCarloSpec& spec, const std::vector<ToleranceDimension>& dimensions);
+
+/// Sample k's offset of each dimension (length unit), uniform in ±tolerances[i]: the same
+/// uniform draws whatever the tolerances, scaled by each.
+std::vector<double> toleranceSampleOffsets(const MonteCarloSpec& spec, const std::vector<double>& tolerances,
+                                           std::size_t sample);
 
 /// One output column's band over the samples that assembled everywhere.
 struct ToleranceBand {

@@ -56,16 +56,19 @@ double SweepSensitivities::largest(std::size_t column, std::size_t dimension) co
   return worst;
 }
 
-double SweepSensitivities::firstOrderDeviation(std::size_t column, std::size_t sample, double tolerance) const {
+double SweepSensitivities::firstOrderDeviation(std::size_t column, std::size_t sample,
+                                               const std::vector<double>& tolerances) const {
   double sum = 0.0;
-  for (const auto& perDimension : derivative[column]) sum += std::abs(perDimension[sample]) * tolerance;
+  for (std::size_t d = 0; d < derivative[column].size(); ++d)
+    sum += std::abs(derivative[column][d][sample]) * tolerances[d];
   return sum;
 }
 
-double SweepSensitivities::firstOrderWorst(std::size_t column, double tolerance, std::size_t* sample) const {
+double SweepSensitivities::firstOrderWorst(std::size_t column, const std::vector<double>& tolerances,
+                                           std::size_t* sample) const {
   double worst = kUndefined;
   for (std::size_t j = 0; j < sweep.size(); ++j) {
-    const double d = firstOrderDeviation(column, j, tolerance);
+    const double d = firstOrderDeviation(column, j, tolerances);
     if (std::isfinite(d) && !(d <= worst)) {
       worst = d;
       if (sample != nullptr) *sample = j;

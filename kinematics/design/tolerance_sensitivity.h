@@ -37,10 +37,11 @@ struct SweepSensitivities {
 
   /// max over the samples of |∂(column)/∂(dimension)|; NaN if it is defined nowhere.
   double largest(std::size_t column, std::size_t dimension) const;
-  /// Σ_d |∂(column)/∂d|·tolerance at `sample` (NaN where undefined).
-  double firstOrderDeviation(std::size_t column, std::size_t sample, double tolerance) const;
+  /// Σ_d |∂(column)/∂d|·tolerances[d] at `sample` (NaN where undefined); one ± per dimension.
+  double firstOrderDeviation(std::size_t column, std::size_t sample, const std::vector<double>& tolerances) const;
   /// max over the samples of firstOrderDeviation, and where.
-  double firstOrderWorst(std::size_t column, double tolerance, std::size_t* sample = nullptr) const;
+  double firstOrderWorst(std::size_t column, const std::vector<double>& tolerances,
+                         std::size_t* sample = nullptr) const;
 };
 
 /// The sensitivities of `mechanism` over `spec`. Fails as sweep() does for an invalid

@@ -90,8 +90,10 @@ class Linkage:
         samples: Optional[int] = None,
         omega: Optional[float] = None,
         alpha: Optional[float] = None,
+        per_dimension: dict[str, float] = {},
     ) -> dict[str, Any]:
-        """The seeded Monte-Carlo tolerance study over samples [first_sample, first_sample + mc_samples)."""
+        """The seeded Monte-Carlo tolerance study over samples [first_sample, first_sample + mc_samples);
+        per_dimension gives dimensions a ± of their own."""
 
 def examples() -> list[str]:
     """The built-in examples' names."""

@@ -26,11 +26,13 @@ k::Error spelled(k::Error e) {
       e.field = keyword;
       e.message.replace(0, core.size(), keyword);
     }
+  // "perDimension[1]": the dict's entries in the order Python gives them.
+  if (e.field.rfind("perDimension", 0) == 0) e.field = "per_dimension" + e.field.substr(12);
   return e;
 }
 
 py::dict study(const Linkage& linkage, const SweepOptions& grid, double tolerance, long long samples,
-               std::uint64_t seed, long long firstSample) {
+               std::uint64_t seed, long long firstSample, const std::vector<std::pair<std::string, double>>& own) {
   // Checked as typed, before they become unsigned.
   if (samples < 1 || samples > static_cast<long long>(k::kMaxToleranceSamples))
     throw CoreError(k::Error{k::ErrorCode::InvalidValue, "mc_samples",
@@ -41,8 +43,8 @@ py::dict study(const Linkage& linkage, const SweepOptions& grid, double toleranc
                              "first_sample must be between 0 and " + std::to_string(k::kMaxToleranceFirstSample) +
                                  " (got " + std::to_string(firstSample) + ")"});
   const k::SweepSpec spec = valueOrThrow(sweepSpecFor(linkage, grid));
-  const k::MonteCarloSpec mc{tolerance, static_cast<std::size_t>(samples), seed,
-                             static_cast<std::uint64_t>(firstSample)};
+  k::MonteCarloSpec mc{tolerance, static_cast<std::size_t>(samples), seed, static_cast<std::uint64_t>(firstSample)};
+  for (const auto& [name, t] : own) mc.perDimension.push_back({name, t});
   auto ran = [&] {
     py::gil_scoped_release unlocked;
     return k::toleranceMonteCarlo(linkage.mechanism, spec, mc);
@@ -71,6 +73,9 @@ py::dict study(const Linkage& linkage, const SweepOptions& grid, double toleranc
   for (const k::ToleranceDimension& d : r.dimensions) dimensions.append(d.name);
   out["dimensions"] = dimensions;
   out["tolerance"] = number(tolerance);
+  py::dict perDimension;
+  for (const k::DimensionTolerance& t : mc.perDimension) perDimension[py::str(t.dimension)] = number(t.tolerance);
+  out["per_dimension"] = perDimension;
   out["seed"] = seed;
   out["first_sample"] = firstSample;
   out["mc_samples"] = samples;
@@ -87,14 +92,19 @@ void bindTolerance(py::class_<Linkage>& linkage) {
       "tolerance_study",
       [](const Linkage& l, double tolerance, long long mcSamples, std::uint64_t seed, long long firstSample,
          std::optional<double> startDeg, std::optional<double> stopDeg, std::optional<long long> samples,
-         std::optional<double> omega, std::optional<double> alpha) {
-        return study(l, {startDeg, stopDeg, samples, omega, alpha}, tolerance, mcSamples, seed, firstSample);
+         std::optional<double> omega, std::optional<double> alpha, const py::dict& perDimension) {
+        // The dict in its own order, so that a refusal's index is the entry's.
+        std::vector<std::pair<std::string, double>> own;
+        for (const auto& [name, t] : perDimension) own.emplace_back(name.cast<std::string>(), t.cast<double>());
+        return study(l, {startDeg, stopDeg, samples, omega, alpha}, tolerance, mcSamples, seed, firstSample, own);
       },
       py::arg("tolerance"), py::kw_only(), py::arg("mc_samples") = 1000, py::arg("seed") = k::kDefaultToleranceSeed,
       py::arg("first_sample") = 0, py::arg("start_deg") = py::none(), py::arg("stop_deg") = py::none(),
       py::arg("samples") = py::none(), py::arg("omega") = py::none(), py::arg("alpha") = py::none(),
+      py::arg("per_dimension") = py::dict(),
       "linkwright-cli tolerance's Monte-Carlo study: every length and pivot coordinate moved by a uniform offset "
-      "in ±tolerance (the length unit), mc_samples linkages (samples first_sample onwards: sample k's offsets "
+      "in ±tolerance (the length unit; per_dimension={'coupler length': 0.02} gives a dimension a ± of its own, as "
+      "--tolerance-of), mc_samples linkages (samples first_sample onwards: sample k's offsets "
       "depend on the seed and k alone) swept over the grid (keywords as sweep's). Returns a dict: input_name, "
       "input (the grid), columns (per output column: nominal, low, high as masked arrays over the grid, "
       "worst_deviation, worst_at, its grid index), dimensions, used, not_assembled, singular and the study's "

@@ -138,3 +138,21 @@ def test_instant_centres_refuse_a_bad_input():
         linkwright.example("thesis-crank-rocker").instant_centres(float("nan"))
     assert refused.value.field == "at"
     assert "(got undefined)" in str(refused.value)
+
+
+def test_a_dimensions_own_tolerance_is_the_clis(cli):
+    thesis = linkwright.example("thesis-crank-rocker")
+    own = {"crank length": 0.0, "coupler length": 0.5}
+    ours = thesis.tolerance_study(0.05, mc_samples=50, seed=7, per_dimension=own)
+    assert ours["per_dimension"] == own
+    run = subprocess.run([cli, "tolerance", "--example", "thesis-crank-rocker", "--tolerance", "0.05",
+                          "--tolerance-of", "crank length=0,coupler length=0.5", "--mc-samples", "50", "--seed", "7",
+                          "--json"], capture_output=True, check=True)
+    theirs = json.loads(run.stdout)
+    for column in theirs["columns"]:
+        assert ours["columns"][column["name"]]["worst_deviation"] == pytest.approx(column["worst_deviation"],
+                                                                                   rel=1e-12, abs=1e-15)
+    with pytest.raises(linkwright.Error) as refused:
+        thesis.tolerance_study(0.05, per_dimension={"crank": 0.1})
+    assert refused.value.field == "per_dimension[0]"
+    assert "no dimension is named 'crank'" in str(refused.value)

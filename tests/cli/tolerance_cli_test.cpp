@@ -57,7 +57,8 @@ TEST_CASE("tolerance --json reports the core's worst deviations, first-order wor
     INFO(mc.bands[c].column.name);
     CHECK(column["name"].get<std::string>() == mc.bands[c].column.name);
     CHECK(column["worst_deviation"].get<double>() == mc.bands[c].worstDeviation);
-    CHECK(column["first_order_worst"].get<double>() == s.firstOrderWorst(c, 0.05));
+    CHECK(column["first_order_worst"].get<double>() ==
+          s.firstOrderWorst(c, std::vector<double>(s.dimensions.size(), 0.05)));
     CHECK(column["largest_sensitivity_per_mm"]["coupler length"].get<double>() ==
           s.largest(c, 2));  // frame, crank, coupler, …
   }
@@ -139,4 +140,32 @@ TEST_CASE("tolerance's text names every output column and the help describes the
   const auto help = runCliCommand({"--help", "tolerance"});
   CHECK(help.code == 0);
   CHECK(help.out.find("--mc-samples N") != std::string::npos);
+}
+
+TEST_CASE("tolerance --tolerance-of gives dimensions a ± of their own, and names a dimension it does not know",
+          "[cli][tolerance]") {
+  const auto r = runCliCommand({"tolerance", "--example", "thesis-crank-rocker", "--tolerance", "0.05", "--step", "30",
+                                "--tolerance-of", "crank length=0,coupler length=0.5", "--mc-samples", "50", "--json"});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const auto json = k::io::parseJson(r.out).value();
+  CHECK(json["own_tolerances_mm"]["crank length"].get<double>() == 0.0);
+  CHECK(json["own_tolerances_mm"]["coupler length"].get<double>() == 0.5);
+  // The study is the core's with those tolerances.
+  k::MonteCarloSpec spec{0.05, 50, k::kDefaultToleranceSeed};
+  spec.perDimension = {{"crank length", 0.0}, {"coupler length", 0.5}};
+  const auto mc = k::toleranceMonteCarlo(k::findExample("thesis-crank-rocker")->mechanism, thesisGrid(), spec).value();
+  REQUIRE(json["columns"].size() == mc.bands.size());
+  for (std::size_t c = 0; c < mc.bands.size(); ++c)
+    CHECK(json["columns"][c]["worst_deviation"].get<double>() == mc.bands[c].worstDeviation);
+
+  const auto unknown = runCliCommand(
+      {"tolerance", "--example", "thesis-crank-rocker", "--tolerance", "0.05", "--tolerance-of", "crank=0.1"});
+  CHECK(unknown.code == 2);
+  CHECK_THAT(unknown.err, Catch::Contains("--tolerance-of: no dimension is named 'crank'"));
+  const auto malformed = runCliCommand(
+      {"tolerance", "--example", "thesis-crank-rocker", "--tolerance", "0.05", "--tolerance-of", "crank length"});
+  CHECK(malformed.code == 2);
+  CHECK_THAT(malformed.err,
+             Catch::Contains("--tolerance-of: 'crank length' is not NAME=T (e.g. \"coupler length=0.02\")"));
 }

@@ -7,15 +7,20 @@
 #include "ui/plots/plot_x_axis.h"
 
 #include "kinematics/design/design.h"
+#include "kinematics/design/tolerance_dimensions.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGuiApplication>
 #include <QHBoxLayout>
+#include <QHash>
+#include <QHeaderView>
 #include <QLabel>
+#include <QLocale>
 #include <QSignalBlocker>
 #include <QSpinBox>
+#include <QTableWidget>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -57,7 +62,7 @@ SeriesRuns runsOf(const k::SweepResult& sweep, const XSource& x, const std::vect
 
 ToleranceWindow::ToleranceWindow(MechanismDocument* document, QWidget* parent)
     : QWidget(parent, Qt::Window), m_document(document), m_tolerance(new QDoubleSpinBox), m_samples(new QSpinBox),
-      m_seed(new QSpinBox), m_output(new QComboBox), m_summary(new QLabel),
+      m_seed(new QSpinBox), m_own(new QTableWidget(0, 2)), m_output(new QComboBox), m_summary(new QLabel),
       m_band(new ForceChartView(tr("The band of the samples about the nominal"), false)),
       m_sensitivity(new ForceChartView(tr("Sensitivity to each dimension (exact)"), false)) {
   setWindowTitle(tr("Tolerances"));
@@ -76,6 +81,12 @@ ToleranceWindow::ToleranceWindow(MechanismDocument* document, QWidget* parent)
   m_summary->setObjectName(QStringLiteral("toleranceSummary"));
   auto* form = new QFormLayout;
   form->addRow(tr("± on every length and pivot"), m_tolerance);
+  m_own->setHorizontalHeaderLabels({tr("Dimension"), tr("Its own ±")});
+  m_own->horizontalHeader()->setStretchLastSection(true);
+  m_own->verticalHeader()->hide();
+  m_own->setMaximumHeight(150);
+  m_own->setObjectName(QStringLiteral("ownTolerances"));
+  form->addRow(tr("Its own ± (blank: the one above)"), m_own);
   form->addRow(tr("Monte-Carlo samples"), m_samples);
   form->addRow(tr("Seed"), m_seed);
   form->addRow(tr("Output"), m_output);
@@ -94,6 +105,7 @@ ToleranceWindow::ToleranceWindow(MechanismDocument* document, QWidget* parent)
   connect(m_tolerance, &QDoubleSpinBox::valueChanged, this, &ToleranceWindow::scheduleRefresh);
   connect(m_samples, &QSpinBox::valueChanged, this, &ToleranceWindow::scheduleRefresh);
   connect(m_seed, &QSpinBox::valueChanged, this, &ToleranceWindow::scheduleRefresh);
+  connect(m_own, &QTableWidget::cellChanged, this, [this] { scheduleRefresh(); });
   connect(m_output, &QComboBox::currentIndexChanged, this, [this] { redraw(); });
   connect(document, &MechanismDocument::changed, this, [this](Changes what) {
     if (what & Change::Design) scheduleRefresh();
@@ -101,6 +113,26 @@ ToleranceWindow::ToleranceWindow(MechanismDocument* document, QWidget* parent)
 }
 
 QString ToleranceWindow::summaryText() const { return m_summary->text(); }
+
+void ToleranceWindow::showDimensions() {
+  const std::vector<k::ToleranceDimension> dimensions = k::toleranceDimensions(m_document->design().mechanism);
+  QStringList names;
+  for (const k::ToleranceDimension& d : dimensions) names << QString::fromStdString(d.name);
+  QStringList shown;
+  for (int row = 0; row < m_own->rowCount(); ++row) shown << m_own->item(row, 0)->text();
+  if (shown == names) return;
+  QHash<QString, QString> typed;
+  for (int row = 0; row < m_own->rowCount(); ++row)
+    if (m_own->item(row, 1)) typed.insert(m_own->item(row, 0)->text(), m_own->item(row, 1)->text());
+  const QSignalBlocker block(m_own);
+  m_own->setRowCount(static_cast<int>(names.size()));
+  for (int row = 0; row < names.size(); ++row) {
+    auto* name = new QTableWidgetItem(names[row]);
+    name->setFlags(name->flags() & ~Qt::ItemIsEditable);
+    m_own->setItem(row, 0, name);
+    m_own->setItem(row, 1, new QTableWidgetItem(typed.value(names[row])));
+  }
+}
 
 void ToleranceWindow::showEvent(QShowEvent* event) {
   QWidget::showEvent(event);
@@ -125,6 +157,23 @@ void ToleranceWindow::refresh() {
   spec.tolerance = m_tolerance->value();
   spec.samples = static_cast<std::size_t>(m_samples->value());
   spec.seed = static_cast<std::uint64_t>(m_seed->value());
+  showDimensions();
+  for (int row = 0; row < m_own->rowCount(); ++row) {
+    const QString name = m_own->item(row, 0)->text();
+    const QString typed = m_own->item(row, 1) ? m_own->item(row, 1)->text().trimmed() : QString();
+    if (typed.isEmpty()) continue;
+    bool ok = false;
+    const double value = QLocale().toDouble(typed, &ok);
+    if (!ok) {
+      // A refused cell is named and nothing computed: what is drawn would not be what was typed.
+      m_monteCarlo.reset();
+      m_sensitivities.reset();
+      m_summary->setText(tr("No tolerance study: the ± of %1 must be a number (got '%2')").arg(name, typed));
+      redraw();
+      return;
+    }
+    spec.perDimension.push_back({name.toStdString(), value});
+  }
   QGuiApplication::setOverrideCursor(Qt::WaitCursor);
   auto band = k::toleranceMonteCarlo(design.mechanism, grid, spec);
   auto sensitivities = k::sweepSensitivities(design.mechanism, grid);
@@ -174,14 +223,14 @@ void ToleranceWindow::redraw() {
   std::size_t column = 0;
   while (column < m_sensitivities->columns.size() && m_sensitivities->columns[column].name != band.column.name)
     ++column;
+  const std::vector<double> tolerances = k::dimensionTolerances(m_monteCarlo->spec, m_monteCarlo->dimensions);
   std::vector<double> above(band.nominal.size()), below(band.nominal.size()), bound(band.nominal.size()),
       negative(band.nominal.size());
   for (std::size_t j = 0; j < band.nominal.size(); ++j) {
     above[j] = band.high[j] - band.nominal[j];
     below[j] = band.low[j] - band.nominal[j];
-    bound[j] = column < m_sensitivities->columns.size()
-                   ? m_sensitivities->firstOrderDeviation(column, j, m_monteCarlo->spec.tolerance)
-                   : std::numeric_limits<double>::quiet_NaN();
+    bound[j] = column < m_sensitivities->columns.size() ? m_sensitivities->firstOrderDeviation(column, j, tolerances)
+                                                        : std::numeric_limits<double>::quiet_NaN();
     negative[j] = -bound[j];
   }
   m_band->setCurves({{QStringLiteral("high"), tr("highest − nominal"), linkColor(2)},
@@ -207,11 +256,11 @@ void ToleranceWindow::redraw() {
 
   std::size_t worstAt = 0;
   const double firstOrder = column < m_sensitivities->columns.size()
-                                ? m_sensitivities->firstOrderWorst(column, m_monteCarlo->spec.tolerance, &worstAt)
+                                ? m_sensitivities->firstOrderWorst(column, tolerances, &worstAt)
                                 : std::numeric_limits<double>::quiet_NaN();
   m_summary->setText(
-      tr("%1 at ±%2 %3 on %4 dimensions, %5 samples (seed %6): worst deviation %7 at %8; first-order worst case "
-         "%9. %10 samples did not assemble on the grid and %11 met a toggle; they are not in the band.")
+      tr("%1 at ±%2 %3 on %4 dimensions%12, %5 samples (seed %6): worst deviation %7 at %8; first-order worst "
+         "case %9. %10 samples did not assemble on the grid and %11 met a toggle; they are not in the band.")
           .arg(name, numberText(m_monteCarlo->spec.tolerance, 'g', 4), unit)
           .arg(m_monteCarlo->dimensions.size())
           .arg(m_monteCarlo->used)
@@ -221,7 +270,10 @@ void ToleranceWindow::redraw() {
               xReadoutText(sampleX(nominal, band.worstGridSample, x.source, AngleUnit::Degrees), x, AngleUnit::Degrees),
               numberText(firstOrder, 'g', 4))
           .arg(m_monteCarlo->notAssembled)
-          .arg(m_monteCarlo->singular));
+          .arg(m_monteCarlo->singular)
+          .arg(m_monteCarlo->spec.perDimension.empty() ? QString()
+                                                       : tr(" (%n with a ± of its own)", nullptr,
+                                                            static_cast<int>(m_monteCarlo->spec.perDimension.size()))));
 }
 
 }  // namespace linkwright::ui

@@ -22,6 +22,7 @@ class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QSpinBox;
+class QTableWidget;
 
 namespace linkwright::ui {
 
@@ -39,6 +40,8 @@ public:
   QComboBox* outputBox() const { return m_output; }
   ForceChartView* bandChart() const { return m_band; }
   ForceChartView* sensitivityChart() const { return m_sensitivity; }
+  /// One row per dimension of the design: its name and its own ± (blank: the common ±).
+  QTableWidget* ownTolerancesTable() const { return m_own; }
   /// The figures of the chosen output, or why there are none.
   QString summaryText() const;
   /// Computes now for the design and fields as they are (tests; the settle timer's end).
@@ -50,11 +53,14 @@ protected:
 private:
   void scheduleRefresh();
   void redraw();
+  // The table's rows for the design's dimensions, each ± typed kept by the dimension's name.
+  void showDimensions();
 
   MechanismDocument* m_document;
   QDoubleSpinBox* m_tolerance;
   QSpinBox* m_samples;
   QSpinBox* m_seed;
+  QTableWidget* m_own;
   QComboBox* m_output;
   QLabel* m_summary;
   ForceChartView* m_band;

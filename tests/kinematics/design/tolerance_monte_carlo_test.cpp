@@ -44,8 +44,9 @@ void checkBandsHoldEverySample(const Mechanism& m, const SweepSpec& spec, const 
   }
   std::size_t used = 0;
   for (std::size_t k = 0; k < r.spec.samples; ++k) {
-    const auto offsets = toleranceSampleOffsets(r.spec, r.dimensions.size(), k);
-    for (const double o : offsets) REQUIRE(std::abs(o) <= r.spec.tolerance);
+    const std::vector<double> tolerances = dimensionTolerances(r.spec, r.dimensions);
+    const auto offsets = toleranceSampleOffsets(r.spec, tolerances, k);
+    for (std::size_t d = 0; d < offsets.size(); ++d) REQUIRE(std::abs(offsets[d]) <= tolerances[d]);
     const SweepResult s = sweep(offsetDimensions(m, r.dimensions, offsets), spec).value();
     if (!std::all_of(s.report.begin(), s.report.end(), [](const auto& p) { return p.status == PoseStatus::Ok; }))
       continue;
@@ -117,7 +118,7 @@ TEST_CASE(
   const SweepSensitivities s = sweepSensitivities(m, spec).value();
   REQUIRE(s.columns.size() == r.bands.size());
   for (std::size_t c = 0; c < s.columns.size(); ++c) {
-    const double firstOrder = s.firstOrderWorst(c, t);
+    const double firstOrder = s.firstOrderWorst(c, std::vector<double>(s.dimensions.size(), t));
     INFO(s.columns[c].name << ": Monte Carlo " << r.bands[c].worstDeviation << ", first order " << firstOrder);
     CHECK(r.bands[c].worstDeviation <= firstOrder * (1 + 1e-3));
     // 200 corners of a 9-dimensional box reach a good part of the furthest one (the crank's
@@ -127,13 +128,14 @@ TEST_CASE(
   // Each sample's deviation is Σ ∂y/∂p·δp to second order in t.
   const std::size_t py = band(r, "P_y_mm");
   for (std::size_t k = 0; k < 20; ++k) {
-    const auto offsets = toleranceSampleOffsets(r.spec, r.dimensions.size(), k);
+    const auto offsets = toleranceSampleOffsets(r.spec, dimensionTolerances(r.spec, r.dimensions), k);
     const SweepResult sample = sweep(offsetDimensions(m, r.dimensions, offsets), spec).value();
     for (std::size_t j = 0; j < sample.size(); ++j) {
       double predicted = 0.0;
       for (std::size_t d = 0; d < offsets.size(); ++d) predicted += s.derivative[py][d][j] * offsets[d];
       const double actual = s.columns[py].value(sample, j) - r.bands[py].nominal[j];
-      CHECK(actual == Approx(predicted).margin(1e-3 * s.firstOrderWorst(py, t)));
+      CHECK(actual ==
+            Approx(predicted).margin(1e-3 * s.firstOrderWorst(py, std::vector<double>(s.dimensions.size(), t))));
     }
   }
 }
@@ -159,6 +161,59 @@ TEST_CASE("a study run in shards of samples has the one run's bands to the last 
   // The second shard differs from the first 40 samples: its indices are its own.
   const auto early = toleranceMonteCarlo(m, grid(37), {4.0, 40, 5, 0}).value();
   CHECK(early.bands[band(early, "P_x_mm")].low != second.bands[band(second, "P_x_mm")].low);
+}
+
+TEST_CASE("a dimension with a tolerance of its own moves within it, the others within the common one",
+          "[tolerance][monte-carlo]") {
+  const Mechanism m = thesisWithP();
+  MonteCarloSpec spec{0.5, 40, 9};
+  spec.perDimension = {{"coupler length", 2.0}, {"O2 x", 0.0}};
+  const MonteCarloResult r = toleranceMonteCarlo(m, grid(37), spec).value();
+  const std::vector<double> t = dimensionTolerances(spec, r.dimensions);
+  const MonteCarloSpec common{0.5, 40, 9};
+  const std::vector<double> t0 = dimensionTolerances(common, r.dimensions);
+  for (std::size_t d = 0; d < r.dimensions.size(); ++d) {
+    const std::string& name = r.dimensions[d].name;
+    CHECK(t[d] == (name == "coupler length" ? 2.0 : name == "O2 x" ? 0.0 : 0.5));
+    CHECK(t0[d] == 0.5);
+  }
+  for (std::size_t k = 0; k < spec.samples; ++k) {
+    // The same uniform draws, each scaled by its dimension's ±.
+    const auto own = toleranceSampleOffsets(spec, t, k), plain = toleranceSampleOffsets(common, t0, k);
+    for (std::size_t d = 0; d < t.size(); ++d) {
+      CHECK(std::abs(own[d]) <= t[d]);
+      CHECK(own[d] == plain[d] / 0.5 * t[d]);
+    }
+  }
+  checkBandsHoldEverySample(m, grid(37), r);
+  // The first-order bound weighs each derivative by its own ±.
+  const SweepSensitivities s = sweepSensitivities(m, grid(37)).value();
+  const std::size_t py = band(r, "P_y_mm");
+  double sum = 0.0;
+  for (std::size_t d = 0; d < t.size(); ++d) sum += std::abs(s.derivative[py][d][5]) * t[d];
+  CHECK(s.firstOrderDeviation(py, 5, t) == sum);
+  CHECK(s.firstOrderDeviation(py, 5, t) != s.firstOrderDeviation(py, 5, t0));
+}
+
+TEST_CASE("a tolerance of its own is refused for a dimension the linkage lacks, twice, or beyond its length",
+          "[tolerance][monte-carlo]") {
+  const Mechanism m = thesisWithP();
+  const auto message = [&](std::vector<DimensionTolerance> own) {
+    MonteCarloSpec spec{0.1, 10, 1};
+    spec.perDimension = std::move(own);
+    const auto r = toleranceMonteCarlo(m, grid(13), spec);
+    REQUIRE_FALSE(r.ok());
+    return r.error().field + ": " + r.error().message;
+  };
+  CHECK(message({{"crank", 0.1}}) ==
+        "perDimension[0]: no dimension is named 'crank' (this linkage's: frame length, crank length, coupler length, "
+        "rocker length, O2 x, O2 y, O4 across the frame line, P along its link, P across its link)");
+  CHECK(message({{"crank length", 0.1}, {"crank length", 0.2}}) ==
+        "perDimension[1]: crank length is given a tolerance twice");
+  CHECK(message({{"crank length", 25.0}}) ==
+        "perDimension[0]: the tolerance of crank length must be finite, at least 0 and less than the length "
+        "(25 mm) (got 25 mm)");
+  CHECK(message({{"O2 x", -1.0}}) == "perDimension[0]: the tolerance of O2 x must be finite, at least 0 (got -1 mm)");
 }
 
 TEST_CASE("samples that do not assemble are counted and left out of the band", "[tolerance][monte-carlo]") {

@@ -130,7 +130,7 @@ TEST_CASE("a dimension the outputs do not depend on has zero sensitivity, and th
     CHECK(s.derivative[column("P_x_mm")][dimension("O2 x")][j] != Approx(1.0).margin(1e-3));  // O2 alone is not
   }
   std::size_t at = 0;
-  const double worst = s.firstOrderWorst(column("P_y_mm"), 0.1, &at);
+  const double worst = s.firstOrderWorst(column("P_y_mm"), std::vector<double>(s.dimensions.size(), 0.1), &at);
   double sum = 0.0;
   for (std::size_t d = 0; d < s.dimensions.size(); ++d) sum += std::abs(s.derivative[column("P_y_mm")][d][at]) * 0.1;
   CHECK(worst == Approx(sum).epsilon(1e-14));

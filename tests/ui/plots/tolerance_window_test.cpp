@@ -10,12 +10,14 @@
 
 #include "kinematics/design/design.h"
 #include "kinematics/design/examples.h"
+#include "kinematics/design/tolerance_dimensions.h"
 
 #include "tests/support/catch.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QSpinBox>
+#include <QTableWidget>
 
 using namespace linkwright::ui;
 namespace k = linkwright::kinematics;
@@ -76,4 +78,44 @@ TEST_CASE("the tolerance window draws the core's band and sensitivities, and fol
   CHECK(window.summaryText().contains("25"));
   CHECK_FALSE(window.bandChart()->isVisible());
   CHECK(window.outputBox()->count() == 0);
+}
+
+TEST_CASE("a dimension's own tolerance typed in the table is the study's, and a cell that is no number is named",
+          "[plots][tolerance]") {
+  MechanismDocument doc;
+  doc.reset(*k::designForExample("thesis-crank-rocker"));
+  ToleranceWindow window(&doc);
+  window.samplesField()->setValue(100);
+  window.show();
+  window.refresh();
+  QTableWidget* own = window.ownTolerancesTable();
+  const auto dimensions = k::toleranceDimensions(doc.design().mechanism);
+  REQUIRE(own->rowCount() == static_cast<int>(dimensions.size()));
+  int crank = -1;
+  for (int row = 0; row < own->rowCount(); ++row) {
+    CHECK(own->item(row, 0)->text().toStdString() == dimensions[static_cast<std::size_t>(row)].name);
+    if (own->item(row, 0)->text() == "crank length") crank = row;
+  }
+  REQUIRE(crank >= 0);
+  own->item(crank, 1)->setText("0.5");
+  window.refresh();
+  const int rocker = window.outputBox()->findText("rocker_angle_deg");
+  window.outputBox()->setCurrentIndex(rocker);
+  k::MonteCarloSpec spec;
+  spec.tolerance = 0.05;
+  spec.samples = 100;
+  spec.perDimension = {{"crank length", 0.5}};
+  const k::Design& design = doc.design();
+  const auto mc = k::toleranceMonteCarlo(design.mechanism, k::designSweepSpec(design), spec).value();
+  const auto& band = mc.bands[static_cast<std::size_t>(rocker)];
+  const QList<QPointF> high = window.bandChart()->samples(0);
+  REQUIRE(static_cast<std::size_t>(high.size()) == band.nominal.size());
+  for (qsizetype j = 0; j < high.size(); ++j)
+    CHECK(high[j].y() == band.high[static_cast<std::size_t>(j)] - band.nominal[static_cast<std::size_t>(j)]);
+  CHECK(window.summaryText().contains("(1 with a ± of its own)"));
+
+  own->item(crank, 1)->setText("half a mm");
+  window.refresh();
+  CHECK(window.summaryText() == "No tolerance study: the ± of crank length must be a number (got 'half a mm')");
+  CHECK(window.bandChart()->isHidden());
 }
