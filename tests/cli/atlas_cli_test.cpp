@@ -14,23 +14,17 @@
 #include "kinematics/solve/sweep.h"
 
 #include "tests/support/catch.h"
+#include "tests/support/scratch_dir.h"
 
 #include <filesystem>
-#include <random>
 
 namespace {
 
 namespace k = linkwright::kinematics;
 using linkwright::test::csvColumn;
 using linkwright::test::runCliCommand;
+using linkwright::test::scratchDir;
 namespace fs = std::filesystem;
-
-fs::path scratchDir() {
-  std::random_device random;
-  const fs::path dir = fs::temp_directory_path() / ("linkwright-atlas-cli-" + std::to_string(random()));
-  fs::create_directories(dir);
-  return dir;
-}
 
 // A small grid that holds Hoeken's linkage (cell 1: coupler 2.5, rocker 2.5, frame 2, along 2).
 const std::vector<std::string> kGrid{"atlas",   "--coupler", "2.5",      "--rocker", "2.5",       "--frame", "2,6.5",
@@ -84,7 +78,7 @@ TEST_CASE("atlas --json lists every cell with the core's classification", "[cli]
 }
 
 TEST_CASE("atlas --filter keeps only the cells that have every feature named", "[cli][atlas]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("atlas-cli");
   const fs::path csv = dir / "atlas.csv";
   const auto run = runCliCommand(with(kGrid, {"--filter", "straight,symmetric", "-o", csv.string()}));
   INFO(run.err);
@@ -103,7 +97,7 @@ TEST_CASE("atlas --filter keeps only the cells that have every feature named", "
 }
 
 TEST_CASE("atlas --cell writes the cell's four-bar as a document whose P traces its curve", "[cli][atlas]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("atlas-cli");
   const fs::path file = dir / "hoeken.linkwright";
   const auto run = runCliCommand(with(kGrid, {"--cell", "2", "--crank", "10", "-o", file.string()}));
   INFO(run.err);
@@ -156,7 +150,7 @@ TEST_CASE("atlas refuses bad options, naming the option, the value and the range
   CHECK(refused({"atlas", "--json", "--json"}) == "linkwright-cli: --json is given more than once\n");
 
   SECTION("a cell that never assembles is not written") {
-    const fs::path dir = scratchDir();
+    const fs::path dir = scratchDir("atlas-cli");
     const auto run = runCliCommand(with(kGrid, {"--cell", "4", "-o", (dir / "x.linkwright").string()}));
     CHECK(run.code == 3);
     CHECK(run.err == "linkwright-cli: --cell 4: this atlas cell's four-bar cannot be assembled at any crank angle\n");

@@ -7,22 +7,16 @@
 #include "tests/cli/run_cli.h"
 
 #include "tests/support/catch.h"
+#include "tests/support/scratch_dir.h"
 
 #include <algorithm>
 #include <filesystem>
-#include <random>
 
 namespace {
 
 using linkwright::test::runCliCommand;
+using linkwright::test::scratchDir;
 namespace fs = std::filesystem;
-
-fs::path scratchDir() {
-  std::random_device random;
-  const fs::path dir = fs::temp_directory_path() / ("linkwright-balance-cli-" + std::to_string(random()));
-  fs::create_directories(dir);
-  return dir;
-}
 
 // The largest shaking force in analyze --forces' shaking_N column.
 double peakShaking(const std::vector<std::string>& source) {
@@ -38,7 +32,7 @@ double peakShaking(const std::vector<std::string>& source) {
 }  // namespace
 
 TEST_CASE("balance writes a design whose shaking force analyze --forces finds gone", "[cli][balance]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("balance-cli");
   const std::string out = (dir / "balanced.linkwright").string();
   const auto r = runCliCommand({"balance", "--example", "funsho-fourbar", "-o", out});
   INFO(r.err);
@@ -55,7 +49,7 @@ TEST_CASE("balance writes a design whose shaking force analyze --forces finds go
 }
 
 TEST_CASE("balance refuses what it cannot balance, and writes nothing", "[cli][balance]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("balance-cli");
   const std::string out = (dir / "out.linkwright").string();
   const std::string data = LINKWRIGHT_TEST_DATA;
   const std::vector<std::tuple<std::vector<std::string>, int, std::string>> cases{
@@ -84,7 +78,7 @@ TEST_CASE("balance refuses what it cannot balance, and writes nothing", "[cli][b
 
 TEST_CASE("balance --spring writes the spring that lowers the RMS torque, and machine finds it there",
           "[cli][balance][springs]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("balance-cli");
   const std::string out = (dir / "sprung.linkwright").string();
   const auto r = runCliCommand({"balance", "--example", "funsho-fourbar", "--spring", "rocker:C,O2", "-o", out});
   INFO(r.err);
@@ -113,7 +107,7 @@ TEST_CASE("balance --spring writes the spring that lowers the RMS torque, and ma
 
 TEST_CASE("balance --spring-search adds the spring's two ends and a spring at least as good as given ends",
           "[cli][balance][springs]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("balance-cli");
   const std::string out = (dir / "searched.linkwright").string();
   const auto r = runCliCommand({"balance", "--example", "funsho-fourbar", "--spring-search", "rocker", "-o", out});
   INFO(r.err);

@@ -15,11 +15,11 @@
 #include "kinematics/solve/pose_solver.h"
 
 #include "tests/support/catch.h"
+#include "tests/support/scratch_dir.h"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <random>
 #include <tuple>
 
 namespace {
@@ -27,14 +27,8 @@ namespace {
 namespace k = linkwright::kinematics;
 using linkwright::test::csvColumn;
 using linkwright::test::runCliCommand;
+using linkwright::test::scratchDir;
 namespace fs = std::filesystem;
-
-fs::path scratchDir() {
-  std::random_device random;
-  const fs::path dir = fs::temp_directory_path() / ("linkwright-cognates-cli-" + std::to_string(random()));
-  fs::create_directories(dir);
-  return dir;
-}
 
 k::Design readBack(const fs::path& path) {
   const auto text = k::io::readFileBounded(path.string(), k::io::kMaxDocumentBytes, "a Linkwright document");
@@ -77,7 +71,7 @@ double distanceToThesisCurve(const Eigen::Vector2d& target) {
 }  // namespace
 
 TEST_CASE("cognates writes two four-bars whose P analyze finds on the original's coupler curve", "[cli][cognates]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("cognates-cli");
   const std::string prefix = (dir / "thesis").string();
   const auto r =
       runCliCommand({"cognates", "--example", "thesis-crank-rocker", "--coupler-point", "35,20", "-o", prefix});
@@ -117,7 +111,7 @@ TEST_CASE("cognates writes two four-bars whose P analyze finds on the original's
 }
 
 TEST_CASE("cognates --json says what the core found, and --coupler-point NAME picks the point", "[cli][cognates]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("cognates-cli");
   const fs::path original = dir / "original.linkwright";
   {
     const k::Design d =
@@ -153,7 +147,7 @@ TEST_CASE("cognates --json says what the core found, and --coupler-point NAME pi
 }
 
 TEST_CASE("cognates refuses what has no cognates, and writes nothing", "[cli][cognates]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("cognates-cli");
   const std::string prefix = (dir / "out").string();
   const std::vector<std::tuple<std::vector<std::string>, int, std::string>> cases{
       {{"cognates", "--example", "thesis-crank-rocker"}, 2, "cognates needs -o PREFIX"},

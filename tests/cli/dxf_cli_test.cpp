@@ -11,24 +11,18 @@
 #include "kinematics/solve/pose_solver.h"
 
 #include "tests/support/catch.h"
+#include "tests/support/scratch_dir.h"
 
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <sstream>
 
 using linkwright::test::runCliCommand;
+using linkwright::test::scratchDir;
 namespace k = linkwright::kinematics;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path scratchDir() {
-  std::random_device random;
-  const fs::path dir = fs::temp_directory_path() / ("linkwright-dxf-cli-" + std::to_string(random()));
-  fs::create_directories(dir);
-  return dir;
-}
 
 std::string contents(const fs::path& file) {
   std::stringstream text;
@@ -39,7 +33,7 @@ std::string contents(const fs::path& file) {
 }  // namespace
 
 TEST_CASE("dxf writes the core's drawing of the pose asked for", "[cli][dxf]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("dxf-cli");
   const std::string file = (dir / "thesis.dxf").string();
   const auto run = runCliCommand(
       {"dxf", "--example", "thesis-crank-rocker", "--at", "30", "--hole", "2", "--width", "6", "-o", file});
@@ -57,7 +51,7 @@ TEST_CASE("dxf writes the core's drawing of the pose asked for", "[cli][dxf]") {
 }
 
 TEST_CASE("dxf says when the unit has no DXF code", "[cli][dxf]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("dxf-cli");
   const auto run =
       runCliCommand({"dxf", "--fourbar", "60,25,70,45", "--unit", "furlong", "-o", (dir / "f.dxf").string()});
   REQUIRE(run.code == 0);
@@ -66,7 +60,7 @@ TEST_CASE("dxf says when the unit has no DXF code", "[cli][dxf]") {
 }
 
 TEST_CASE("dxf refuses bad sizes and angles, naming the option, and writes nothing", "[cli][dxf][errors]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("dxf-cli");
   const std::string file = (dir / "x.dxf").string();
   struct Case {
     std::vector<std::string> args;

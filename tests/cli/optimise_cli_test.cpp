@@ -17,25 +17,19 @@
 #include "kinematics/synthesis/optimise_linkage.h"
 
 #include "tests/support/catch.h"
+#include "tests/support/scratch_dir.h"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <random>
 
 namespace {
 
 namespace k = linkwright::kinematics;
 using linkwright::test::csvColumn;
 using linkwright::test::runCliCommand;
+using linkwright::test::scratchDir;
 namespace fs = std::filesystem;
-
-fs::path scratchDir() {
-  std::random_device random;
-  const fs::path dir = fs::temp_directory_path() / ("linkwright-optimise-cli-" + std::to_string(random()));
-  fs::create_directories(dir);
-  return dir;
-}
 
 std::string readText(const fs::path& path) {
   const auto text = k::io::readFileBounded(path.string(), k::io::kMaxDocumentBytes, "a Linkwright document");
@@ -52,7 +46,7 @@ double peakOfColumn(const std::string& csv, const std::string& name) {
 }  // namespace
 
 TEST_CASE("optimise writes a design whose analysed peak alpha is the one printed, below the start's", "[cli]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("optimise-cli");
   const std::string file = (dir / "better.linkwright").string();
   const auto run = runCliCommand({"optimise", "--example", "thesis-crank-rocker", "--objective", "peak-alpha:rocker",
                                   "--evaluations", "200", "--starts", "2", "--json", "-o", file});
@@ -91,7 +85,7 @@ TEST_CASE("optimise writes a design whose analysed peak alpha is the one printed
 }
 
 TEST_CASE("optimise path: the written document's P path, analysed, is the printed distance from the targets", "[cli]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("optimise-cli");
   // Targets on the Miranda four-bar's curve of a coupler point lifted 30 mm off the coupler.
   const auto lifted =
       k::fourBarDesign({250.0, 100.0, 225.0, 150.0}, k::Branch::Open, "mm", k::CouplerPointSpec{112.5, 30.0});
@@ -127,7 +121,7 @@ TEST_CASE("optimise path: the written document's P path, analysed, is the printe
 }
 
 TEST_CASE("optimise prints the objective before and after and the dimensions it changed", "[cli]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("optimise-cli");
   const std::string file = (dir / "wide.linkwright").string();
   const auto run = runCliCommand({"optimise", "--example", "thesis-crank-rocker", "--objective", "transmission",
                                   "--fix-pivots", "O2", "--length-range", "30", "--evaluations", "150", "-o", file});
@@ -143,7 +137,7 @@ TEST_CASE("optimise prints the objective before and after and the dimensions it 
 }
 
 TEST_CASE("optimise refuses bad requests naming the option and writes nothing", "[cli]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("optimise-cli");
   const std::string file = (dir / "never.linkwright").string();
   const auto refused = [&](std::vector<std::string> args, const std::string& message, int code = 2) {
     args.insert(args.begin(), "optimise");

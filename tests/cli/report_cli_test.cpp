@@ -15,27 +15,21 @@
 #include "kinematics/solve/sweep_columns.h"
 
 #include "tests/support/catch.h"
+#include "tests/support/scratch_dir.h"
 
 #include <array>
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <random>
 #include <sstream>
 
 using linkwright::test::runCliCommand;
+using linkwright::test::scratchDir;
 namespace k = linkwright::kinematics;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path scratchDir() {
-  std::random_device random;
-  const fs::path dir = fs::temp_directory_path() / ("linkwright-report-cli-" + std::to_string(random()));
-  fs::create_directories(dir);
-  return dir;
-}
 
 // The standard output of a shell command (pdftotext, pdfinfo).
 std::string capture(const std::string& command) {
@@ -93,7 +87,7 @@ std::size_t linkIndex(const k::Mechanism& m, const std::string& name) {
 }  // namespace
 
 TEST_CASE("report of the thesis crank-rocker holds the solver's table, pages and class", "[cli][report]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("report-cli");
   const fs::path file = dir / "thesis.pdf";
   const auto run = runCliCommand({"report", "--example", "thesis-crank-rocker", "-o", file.string()});
   REQUIRE(run.code == 0);
@@ -144,7 +138,7 @@ TEST_CASE("report's content model holds the sweep's numbers and extremes' refine
 
 TEST_CASE("report --rates deg gives ω and α in deg/s and deg/s², the table, extremes and plots alike",
           "[cli][report]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("report-cli");
   const fs::path file = dir / "thesis-deg.pdf";
   REQUIRE(runCliCommand({"report", "--example", "thesis-crank-rocker", "--rates", "deg", "-o", file.string()}).code ==
           0);
@@ -207,7 +201,7 @@ TEST_CASE("report --rates deg gives ω and α in deg/s and deg/s², the table, e
 
 TEST_CASE("report of a linkage on a motion-law time base tabulates every --step seconds", "[cli][report]") {
   // The excavator boom: a cylinder extends from 1.2 to 1.9 m in 4 s on a cycloidal law.
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("report-cli");
   const fs::path file = dir / "boom.pdf";
   const auto run =
       runCliCommand({"report", "--example", "excavator-boom", "--step", "0.5", "--at", "2", "-o", file.string()});
@@ -272,7 +266,7 @@ TEST_CASE("report of a linkage on a motion-law time base tabulates every --step 
 }
 
 TEST_CASE("report shows the forces of a linkage with masses", "[cli][report]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("report-cli");
   const fs::path file = dir / "funsho.pdf";
   const auto run = runCliCommand({"report", "--example", "funsho-fourbar", "--step", "45", "-o", file.string()});
   REQUIRE(run.code == 0);
@@ -310,7 +304,7 @@ TEST_CASE("report shows the forces of a linkage with masses", "[cli][report]") {
 }
 
 TEST_CASE("report of a slider-crank tabulates the slider", "[cli][report]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("report-cli");
   const fs::path file = dir / "engine.pdf";
   const auto run = runCliCommand({"report", "--example", "ls3-engine", "--paper", "letter", "-o", file.string()});
   REQUIRE(run.code == 0);
@@ -334,7 +328,7 @@ TEST_CASE("report of a slider-crank tabulates the slider", "[cli][report]") {
 }
 
 TEST_CASE("report refuses bad options, naming them, and writes nothing", "[cli][report][errors]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("report-cli");
   const std::string file = (dir / "r.pdf").string();
   struct Case {
     std::vector<std::string> args;
@@ -368,7 +362,7 @@ TEST_CASE("report refuses bad options, naming them, and writes nothing", "[cli][
 }
 
 TEST_CASE("report refuses an input the linkage cannot reach", "[cli][report][errors]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("report-cli");
   // Frame 60, crank 40, coupler 30, rocker 25: at crank 180° B is 100 from O4, more than 30 + 25.
   const auto run = runCliCommand({"report", "--fourbar", "60,40,30,25", "--at", "180", "-o", (dir / "r.pdf").string()});
   CHECK(run.code == 3);

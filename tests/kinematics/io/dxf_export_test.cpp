@@ -8,6 +8,7 @@
 #include "kinematics/design/examples.h"
 #include "kinematics/solve/pose_solver.h"
 #include "tests/support/catch.h"
+#include "tests/support/scratch_dir.h"
 
 #include <dl_creationadapter.h>
 #include <dl_dxf.h>
@@ -15,12 +16,12 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <random>
 #include <sstream>
 
 using namespace linkwright::kinematics;
 using namespace linkwright::kinematics::io;
 namespace fs = std::filesystem;
+using linkwright::test::scratchDir;
 
 namespace {
 
@@ -42,13 +43,6 @@ struct ReadBack : DL_CreationAdapter {
   }
 };
 
-fs::path scratchDir() {
-  std::random_device random;
-  const fs::path dir = fs::temp_directory_path() / ("linkwright-dxf-test-" + std::to_string(random()));
-  fs::create_directories(dir);
-  return dir;
-}
-
 ReadBack readBack(const fs::path& file) {
   ReadBack r;
   DL_Dxf dxf;
@@ -66,7 +60,7 @@ LinkDrawing oneHole(const Eigen::Vector2d& centre, const std::string& unit) {
 }  // namespace
 
 TEST_CASE("a DXF file reads back with every layer, hole and outline", "[dxf_export]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("dxf-test");
   const Example e = *findExample("stephenson-iii-triad");
   const auto pose = solvePose(e.mechanism, {0.3, 0.0, 0.0}, SolveRequest{false, false});
   REQUIRE(pose.ok());
@@ -103,7 +97,7 @@ TEST_CASE("a DXF file reads back with every layer, hole and outline", "[dxf_expo
 }
 
 TEST_CASE("coordinates keep 17 significant digits through a DXF file", "[dxf_export]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("dxf-test");
   const Eigen::Vector2d big(123456789.01234567, -98765.432109876543);
   const Eigen::Vector2d small(0.012345678901234567, -3.3333333333333333e-5);  // "%.16f" loses these
   for (const Eigen::Vector2d& centre : {big, small}) {
@@ -128,7 +122,7 @@ TEST_CASE("$INSUNITS names the length unit, 0 when DXF has no code for it", "[dx
 }
 
 TEST_CASE("a DXF file that cannot be written leaves nothing behind", "[dxf_export]") {
-  const fs::path dir = scratchDir();
+  const fs::path dir = scratchDir("dxf-test");
   const auto missing = writeDxf(oneHole({1.0, 2.0}, "mm"), (dir / "no-such-dir" / "x.dxf").string());
   REQUIRE(missing.has_value());
   CHECK(missing->field == "output");
