@@ -2,6 +2,7 @@
 #include "app/cli/compare_options.h"
 #include "app/cli/option_values.h"
 
+#include "kinematics/dynamics/machine_request.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/validate.h"
 
@@ -12,6 +13,12 @@
 #include <tuple>
 
 namespace linkwright::cli {
+
+const std::vector<kinematics::RequestField>& requestFieldsOf(Command command) {
+  static const std::vector<kinematics::RequestField> none;
+  return command == Command::Machine ? kinematics::machineFields() : none;
+}
+
 namespace {
 
 using kinematics::Error;
@@ -43,9 +50,12 @@ const std::set<std::string>& optionsOf(Command command) {
   static const std::set<std::string> compare{"--fourbar", "--example",   "--unit",  "--branch", "--coupler-point",
                                              "--rpm",     "--omega",     "--alpha", "--from",   "--map",
                                              "--offset",  "--tolerance", "--json"};
-  static const std::set<std::string> machine{"--example",     "--rpm",        "--omega",      "--samples",
-                                             "--cs",          "--gear-ratio", "--efficiency", "--rated-torque",
-                                             "--rated-speed", "--json"};
+  static const std::set<std::string> machine = [] {
+    std::set<std::string> options{"--example", "--json"};
+    for (const auto& field : requestFieldsOf(Command::Machine))
+      options.insert(kinematics::fieldName(field, kinematics::FrontEnd::Cli));
+    return options;
+  }();
   static const std::set<std::string> balance{"--example", "-o",       "--output",       "--fraction",
                                              "--radius",  "--spring", "--spring-search"};
   static const std::set<std::string> cognates{"--fourbar", "--example", "--unit", "--coupler-point",
@@ -175,6 +185,15 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
     target = *parsed;
     return std::nullopt;
   };
+  for (const auto& field : requestFieldsOf(inv.command))
+    if (option == kinematics::fieldName(field, kinematics::FrontEnd::Cli)) {
+      const auto parsed = parseNumber(value);
+      if (!parsed)
+        return usage(option, option + ": '" + value + "' is not " +
+                                 (field.kind == kinematics::RequestField::Kind::Count ? "a whole number" : "a number"));
+      inv.requestValues[field.key] = *parsed;
+      return std::nullopt;
+    }
   if (option == "--fourbar") {
     auto list = parseList(option, value, 4, "FRAME,CRANK,COUPLER,ROCKER");
     if (!list) return list.error();
@@ -285,12 +304,7 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
     else inv.monteCarloSamples = n;
   } else if (option == "--map" || option == "--offset" || option == "--tolerance") {
     return applyCompareOption(inv, option, value);
-  } else if (option == "--cs") return number(inv.speedFluctuation);
-  else if (option == "--gear-ratio") return number(inv.gearRatio);
-  else if (option == "--efficiency") return number(inv.efficiency);
-  else if (option == "--rated-torque") return number(inv.ratedTorque);
-  else if (option == "--rated-speed") return positive(inv.ratedRpm, option, value);
-  else if (option == "--fraction") return number(inv.reciprocatingFraction);
+  } else if (option == "--fraction") return number(inv.reciprocatingFraction);
   else if (option == "--radius") return number(inv.counterweightRadius);
   else if (option == "--spring") {
     if (value.find(',') == std::string::npos)

@@ -9,6 +9,7 @@
 #include "kinematics/compare/table_comparison.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
+#include "kinematics/model/request_field.h"
 #include "kinematics/model/result.h"
 
 #include <Eigen/Core>
@@ -56,6 +57,9 @@ struct CompareToleranceOption {
   double percent = 0.25;
   std::optional<double> absolute;
 };
+
+/// The fields of the request `command` is, if it is one (machine), else empty.
+const std::vector<kinematics::RequestField>& requestFieldsOf(Command command);
 
 /// Everything the user asked for. Angles in degrees and speeds as typed: converted to SI by
 /// the commands, at the edge.
@@ -111,12 +115,9 @@ struct Invocation {
   std::optional<std::string> compareMap;  ///< --map text (kinematics/compare/column_mapping.h)
   std::optional<CompareOffsetOption> compareOffset;
   std::optional<CompareToleranceOption> compareTolerance;
-  // machine: a turn's duty (kinematics/dynamics/machine_duty.h); the core checks the ranges.
-  std::optional<double> speedFluctuation;  ///< --cs
-  std::optional<double> gearRatio;         ///< --gear-ratio, motor turns per crank turn
-  std::optional<double> efficiency;        ///< --efficiency, of the gearbox
-  std::optional<double> ratedTorque;       ///< --rated-torque, N·m at the motor
-  std::optional<double> ratedRpm;          ///< --rated-speed, rev/min at the motor
+  // A capability defined as a request (kinematics/model/request_field.h; machine): its options
+  // are its fields' (--gear-ratio for gear_ratio), read as numbers by key; the core checks them.
+  kinematics::RequestValues requestValues;
   // balance (kinematics/dynamics/force_balance.h); the core checks the ranges.
   std::optional<double> reciprocatingFraction;  ///< --fraction, slider-cranks
   std::optional<double> counterweightRadius;    ///< --radius, in link lengths

@@ -4,6 +4,8 @@
 #include "app/cli/commands.h"
 #include "app/cli/exit_codes.h"
 
+#include "kinematics/model/request_field.h"
+
 #include <new>
 #include <ostream>
 
@@ -140,21 +142,6 @@ With --forces, then (world frame, N and N·m, CCW positive): F_<joint>_x_N, _y_N
 
 constexpr const char* kClassifyOptions = R"(Classify options:
   --json              machine-readable output
-)";
-
-constexpr const char* kMachineOptions = R"(machine options (FILE.json or --example NAME with masses; its speed and
-grid step are the defaults; one full turn from the grid's start):
-  --rpm RPM, --omega W  the crank's constant speed
-  --samples N           samples over the turn (4 to 100000; default the grid's step)
-  --cs CS               size a flywheel for the coefficient of speed fluctuation
-                        Cs = (ω_max − ω_min)/ω, between 0 and 1 (e.g. 0.02)
-  --gear-ratio N        motor turns per crank turn (default 1)
-  --efficiency E        the gearbox's, above 0 and at most 1 (default 1)
-  --rated-torque T      the motor's rated torque, N·m: a verdict on its duty
-  --rated-speed RPM     the motor's rated speed, rev/min
-  --json                one JSON object, SI units (energy_fluctuation_J, flywheel_inertia_kg_m2,
-                        rms_torque_Nm, peak_torque_Nm, mean_power_W, peak_power_W,
-                        shaking_force_peak_N, shaking_moment_peak_Nm, motor {...})
 )";
 
 constexpr const char* kBalanceOptions =
@@ -544,6 +531,39 @@ Examples:
   linkwright-cli synthesize swing --swing 60 --time-ratio 1.3 --rocker 50 -o design.json
 )";
 
+// A request's options, read off its fields (kinematics/model/request_field.h): the option, then
+// its help, unit, range and default, wrapped under one another.
+std::string requestOptionsText(const std::string& heading, const std::vector<kinematics::RequestField>& fields) {
+  constexpr std::size_t kIndent = 24, kWidth = 100;
+  std::string text = heading + "\n";
+  for (const auto& field : fields) {
+    std::string line = "  " + kinematics::fieldName(field, kinematics::FrontEnd::Cli) +
+                       (field.kind == kinematics::RequestField::Kind::Count ? " N" : " X");
+    line += line.size() + 2 <= kIndent ? std::string(kIndent - line.size(), ' ') : "\n" + std::string(kIndent, ' ');
+    std::size_t column = line.size() - line.rfind('\n') - 1;
+    std::size_t begin = 0;
+    const std::string help = kinematics::helpText(field);
+    while (begin < help.size()) {
+      std::size_t end = help.find(' ', begin);
+      if (end == std::string::npos) end = help.size();
+      const std::string word = help.substr(begin, end - begin);
+      if (column > kIndent && column + 1 + word.size() > kWidth) {
+        line += "\n" + std::string(kIndent, ' ');
+        column = kIndent;
+      } else if (column > kIndent) {
+        line += ' ';
+        ++column;
+      }
+      line += word;
+      column += word.size();
+      begin = end + 1;
+    }
+    text += line + "\n";
+  }
+  return text + "  --json                one JSON object, SI units, each figure's relative error estimate under\n" +
+         std::string(kIndent, ' ') + "\"accuracy\"\n";
+}
+
 }  // namespace
 
 std::string helpText(const std::string& topic) {
@@ -561,7 +581,11 @@ std::string helpText(const std::string& topic) {
   if (topic.empty() || topic == "compare") text += std::string("\n") + kCompareOptions;
   if (topic.empty() || topic == "arm") text += std::string(topic.empty() ? "\n" : "") + kArmOptions;
   if (topic.empty() || topic == "accuracy") text += std::string("\n") + kAccuracyOptions;
-  if (topic.empty() || topic == "machine") text += std::string("\n") + kMachineOptions;
+  if (topic.empty() || topic == "machine")
+    text += "\n" + requestOptionsText(
+                       "machine options (FILE.json or --example NAME with masses; one full turn from "
+                       "its grid's start):",
+                       requestFieldsOf(Command::Machine));
   if (topic.empty() || topic == "balance") text += std::string("\n") + kBalanceOptions;
   if (topic.empty() || topic == "cognates") text += std::string("\n") + kCognatesOptions;
   if (topic.empty() || topic == "tolerance") text += std::string("\n") + kToleranceOptions;

@@ -25,6 +25,10 @@ std::optional<Error> checkSampleCount(long long samples, const GridFieldNames& n
 
 double SweepGrid::toInput(double value) const { return input == InputKind::Angle ? degToRad(value) : value; }
 
+MachineDefaults machineDefaultsOf(const SweepGrid& grid) {
+  return {grid.omega, degToRad(grid.fromDeg), grid.time.has_value()};
+}
+
 SweepGrid sweepGridOf(const Example& e) {
   SweepGrid grid;
   grid.omega = e.omega;

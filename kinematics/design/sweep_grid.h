@@ -8,6 +8,7 @@
 
 #include "kinematics/design/design.h"
 #include "kinematics/design/examples.h"
+#include "kinematics/dynamics/machine_request.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/result.h"
 #include "kinematics/solve/sweep.h"
@@ -39,6 +40,10 @@ struct SweepGrid {
 SweepGrid sweepGridOf(const Example& example);
 /// A document's grid: its samples become the step that reproduces them.
 SweepGrid sweepGridOf(const Design& design);
+
+/// What a turn's duty takes from the grid (machine_request.h): the speed, the grid's start, and
+/// whether the crank follows a motion law instead.
+MachineDefaults machineDefaultsOf(const SweepGrid& grid);
 
 /// The fields of a grid request.
 enum class GridField {

@@ -44,7 +44,7 @@ std::optional<Error> checkCrankTurn(const Mechanism& mechanism, const SweepSpec&
 }
 
 Result<TurnSweep> turnForces(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepSpec& turn,
-                             double omega, double alpha) {
+                             double omega, double alpha, const std::atomic<bool>* cancel) {
   SweepSpec spec = turn;
   spec.omega = omega;
   spec.alpha = alpha;
@@ -55,7 +55,7 @@ Result<TurnSweep> turnForces(const Mechanism& mechanism, const LinkageDynamics& 
       return Error{kinematics->assembled(j) ? ErrorCode::Singular : ErrorCode::NotAssemblable, "range",
                    "the crank cannot turn fully at a constant speed: at " + degreesText(kinematics->inputAngle[j]) +
                        (kinematics->assembled(j) ? " the linkage is at a toggle" : " it cannot be assembled")};
-  auto forces = sweepForces(mechanism, dynamics, *kinematics);
+  auto forces = sweepForces(mechanism, dynamics, *kinematics, cancel);
   if (!forces) return forces.error();
   for (std::size_t j = 0; j < forces->size(); ++j)
     if (!forces->ok(j))
@@ -65,27 +65,37 @@ Result<TurnSweep> turnForces(const Mechanism& mechanism, const LinkageDynamics& 
   return TurnSweep{std::move(*kinematics), std::move(*forces)};
 }
 
-double CrankTerms::at(const std::vector<double>& column, double theta) const {
-  const double from = angle.front();
-  double t = std::fmod(theta - from, kTurn);
-  if (t < 0.0) t += kTurn;
-  t += from;
-  const auto upper = std::upper_bound(angle.begin(), angle.end(), t);
-  const std::size_t i = std::clamp<std::size_t>(static_cast<std::size_t>(upper - angle.begin()), 1, angle.size() - 1);
-  const double w = (t - angle[i - 1]) / (angle[i] - angle[i - 1]);
-  return column[i - 1] + w * (column[i] - column[i - 1]);
+namespace {
+
+PeriodicSeries seriesOf(const std::vector<double>& angle, const std::vector<double>& column) {
+  return PeriodicSeries(angle.front(), std::vector<double>(column.begin(), column.end() - 1));
 }
 
-double CrankTerms::mean(const std::vector<double>& column) const {
-  return turnMean(angle, [&](std::size_t i) { return column[i]; });
+}  // namespace
+
+PeriodicSeries CrankTerms::staticSeries() const { return seriesOf(angle, staticTorque); }
+PeriodicSeries CrankTerms::inertiaSeries() const { return seriesOf(angle, inertia); }
+PeriodicSeries CrankTerms::halfSlopeSeries() const { return seriesOf(angle, halfSlope); }
+
+CrankTerms CrankTerms::everyOther() const {
+  CrankTerms half;
+  half.omega = omega;
+  for (std::size_t j = 0; j < angle.size(); j += 2) {
+    half.angle.push_back(angle[j]);
+    half.torque.push_back(torque[j]);
+    half.staticTorque.push_back(staticTorque[j]);
+    half.inertia.push_back(inertia[j]);
+    half.halfSlope.push_back(halfSlope[j]);
+  }
+  return half;
 }
 
 Result<CrankTerms> crankTerms(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepSpec& turn,
-                              const ForceSweep& moving) {
+                              const ForceSweep& moving, const std::atomic<bool>* cancel) {
   if (auto e = checkCrankTurn(mechanism, turn)) return *e;
-  const auto resting = turnForces(mechanism, dynamics, turn, 0.0, 0.0);
+  const auto resting = turnForces(mechanism, dynamics, turn, 0.0, 0.0, cancel);
   if (!resting) return resting.error();
-  const auto accelerating = turnForces(mechanism, dynamics, turn, 0.0, 1.0);
+  const auto accelerating = turnForces(mechanism, dynamics, turn, 0.0, 1.0, cancel);
   if (!accelerating) return accelerating.error();
   CrankTerms terms;
   terms.omega = turn.omega;

@@ -8,6 +8,7 @@
 // ½ I_eq' = (T(ω, 0) − T_s)/ω² from the turn at its own speed ω. The flywheel (flywheel.h) is
 // sized and run with them.
 
+#include "kinematics/analysis/periodic_series.h"
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/model/mechanism.h"
@@ -39,8 +40,9 @@ struct TurnSweep {
 /// The forces at every sample of `turn` with the crank at `omega` and `alpha` instead of the
 /// turn's own: every sample must solve (Ok), else an error naming the first angle that does
 /// not (a linkage that cannot turn fully, or a toggle where the forces are not determined).
+/// `cancel`, if given and set, stops it with ErrorCode::Cancelled.
 Result<TurnSweep> turnForces(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepSpec& turn,
-                             double omega, double alpha);
+                             double omega, double alpha, const std::atomic<bool>* cancel = nullptr);
 
 /// ∮ f dθ over a turn's samples `angle` by the trapezoidal rule; the last sample closes the
 /// turn, which may run either way (the weights are |Δθ|). `f(i)` is the integrand at sample i.
@@ -62,7 +64,8 @@ double turnMean(const std::vector<double>& angle, F f) {
 }
 
 /// The three terms at the turn's samples, ordered by increasing angle (a turn run backwards is
-/// reversed), and the torque at the turn's speed they add up to.
+/// reversed), and the torque at the turn's speed they add up to; between samples each term is
+/// its series (periodic_series.h), exact to round-off for a linkage that turns smoothly.
 struct CrankTerms {
   double omega = 0.0;                ///< rad/s, the turn's speed
   std::vector<double> angle;         ///< rad, increasing; the last is the first + 2π
@@ -70,15 +73,17 @@ struct CrankTerms {
   std::vector<double> staticTorque;  ///< N·m, T_s
   std::vector<double> inertia;       ///< kg·m², I_eq
   std::vector<double> halfSlope;     ///< kg·m²/rad, ½ I_eq'
-  /// Linear interpolation of `column` at θ, folded into the turn.
-  double at(const std::vector<double>& column, double theta) const;
-  /// The mean of `column` over the turn (trapezoidal rule).
-  double mean(const std::vector<double>& column) const;
+  /// The series of T_s, I_eq and ½ I_eq' through the samples (the closing one left out).
+  PeriodicSeries staticSeries() const;
+  PeriodicSeries inertiaSeries() const;
+  PeriodicSeries halfSlopeSeries() const;
+  /// The terms at every other sample: the same figures read off them estimate the error.
+  CrankTerms everyOther() const;
 };
 
 /// The terms of `turn` (checkCrankTurn), given its forces at its own speed (`moving`, from
 /// turnForces(…, turn.omega, 0)); solves the two others.
 Result<CrankTerms> crankTerms(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepSpec& turn,
-                              const ForceSweep& moving);
+                              const ForceSweep& moving, const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace linkwright::kinematics

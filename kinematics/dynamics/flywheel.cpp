@@ -6,35 +6,64 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <tuple>
+#include <utility>
 
 namespace linkwright::kinematics {
 namespace {
 
 constexpr double kTurn = 2.0 * std::numbers::pi;
-constexpr int kStepsPerSample = 4;
+constexpr std::size_t kStepsPerSample = 4;
 constexpr int kMaxIterations = 100;
 
-// W(θ_j) = ∫ (T̄ − T_s) dθ from the first sample, T̄ the mean of T_s so that W closes the turn.
-std::vector<double> surplus(const CrankTerms& t) {
-  const double mean = t.mean(t.staticTorque);
-  std::vector<double> w(t.angle.size(), 0.0);
-  for (std::size_t i = 1; i < w.size(); ++i)
-    w[i] = w[i - 1] + 0.5 * (2.0 * mean - t.staticTorque[i - 1] - t.staticTorque[i]) * (t.angle[i] - t.angle[i - 1]);
-  return w;
-}
+// The energy equation's pieces as series: W(θ) = ∫θ₀^θ (T̄ − T_s) and I_eq(θ).
+struct EnergyTerms {
+  PeriodicSeries surplus;  // of T_s: W = −surplus
+  PeriodicSeries inertia;
+  double target;  // |ω|
+  explicit EnergyTerms(const CrankTerms& t)
+      : surplus(t.staticSeries().surplusSeries()), inertia(t.inertiaSeries()), target(std::abs(t.omega)) {}
 
-// |θ̇| at each sample for the kinetic energy K₀ + W at the first one; 0 where K would be below 0.
-std::vector<double> speedsFor(const CrankTerms& t, const std::vector<double>& w, double flywheel, double k0) {
-  std::vector<double> s(w.size());
-  for (std::size_t j = 0; j < w.size(); ++j)
-    s[j] = std::sqrt(std::max(0.0, 2.0 * (k0 + w[j]) / (flywheel + t.inertia[j])));
-  return s;
-}
-
-double midSpeed(const std::vector<double>& s) {
-  const auto [low, high] = std::minmax_element(s.begin(), s.end());
-  return 0.5 * (*low + *high);
-}
+  double w(double theta) const { return -surplus.value(theta); }
+  double speed(double theta, double flywheel, double k0) const {
+    return std::sqrt(std::max(0.0, 2.0 * (k0 + w(theta)) / (flywheel + inertia.value(theta))));
+  }
+  std::vector<double> sampleSpeeds(double flywheel, double k0) const {
+    std::vector<double> s(surplus.size());
+    for (std::size_t j = 0; j < s.size(); ++j)
+      s[j] = std::sqrt(std::max(0.0, 2.0 * (k0 - surplus.samples()[j]) / (flywheel + inertia.samples()[j])));
+    return s;
+  }
+  // The slowest and fastest |θ̇|, refined between samples.
+  std::pair<double, double> range(double flywheel, double k0) const {
+    std::vector<double> s = sampleSpeeds(flywheel, k0);
+    const auto f = [&](double theta) { return speed(theta, flywheel, k0); };
+    const double fastest = refinePeriodicMaximum(f, surplus.theta0(), s).value;
+    for (double& v : s) v = -v;
+    const double slowest = -refinePeriodicMaximum([&](double theta) { return -f(theta); }, surplus.theta0(), s).value;
+    return {slowest, fastest};
+  }
+  double midSpeed(double flywheel, double k0) const {
+    const auto [slowest, fastest] = range(flywheel, k0);
+    return 0.5 * (slowest + fastest);
+  }
+  // K₀ that makes the mean speed (ω_max + ω_min)/2 the turn's |ω|, by secant iterations.
+  double startEnergy(double flywheel) const {
+    const double floor = surplus.maximum().value;  // K₀ above −min W keeps K ≥ 0
+    double k0 = std::max(0.5 * (flywheel + inertia.samples().front()) * target * target, 1.01 * floor);
+    double k1 = 1.001 * k0 + 1e-300;
+    double m0 = midSpeed(flywheel, k0) - target;
+    double m1 = midSpeed(flywheel, k1) - target;
+    for (int i = 0; i < kMaxIterations && std::abs(m1) > 1e-13 * target && m1 != m0; ++i) {
+      const double k2 = std::max(k1 - m1 * (k1 - k0) / (m1 - m0), floor);
+      k0 = k1;
+      m0 = m1;
+      k1 = k2;
+      m1 = midSpeed(flywheel, k1) - target;
+    }
+    return k1;
+  }
+};
 
 struct State {
   double theta;
@@ -43,31 +72,16 @@ struct State {
 
 }  // namespace
 
-std::vector<double> flywheelSpeeds(const CrankTerms& t, double flywheel) {
-  const std::vector<double> w = surplus(t);
-  const double target = std::abs(t.omega);
-  const double floor = -*std::min_element(w.begin(), w.end());  // K₀ above it keeps K ≥ 0
-  double k0 = std::max(0.5 * (flywheel + t.inertia.front()) * target * target, 1.01 * floor);
-  double k1 = 1.001 * k0 + 1e-300;
-  double m0 = midSpeed(speedsFor(t, w, flywheel, k0)) - target;
-  double m1 = midSpeed(speedsFor(t, w, flywheel, k1)) - target;
-  for (int i = 0; i < kMaxIterations && std::abs(m1) > 1e-13 * target && m1 != m0; ++i) {
-    const double k2 = std::max(k1 - m1 * (k1 - k0) / (m1 - m0), floor);
-    k0 = k1;
-    m0 = m1;
-    k1 = k2;
-    m1 = midSpeed(speedsFor(t, w, flywheel, k1)) - target;
-  }
-  std::vector<double> s = speedsFor(t, w, flywheel, k1);
+FlywheelSpeeds flywheelSpeeds(const CrankTerms& t, double flywheel) {
+  const EnergyTerms e(t);
+  const double k0 = e.startEnergy(flywheel);
+  FlywheelSpeeds s;
+  s.speed = e.sampleSpeeds(flywheel, k0);
+  s.speed.push_back(s.speed.front());  // the closing sample, as the terms have it
   if (t.omega < 0.0)
-    for (double& v : s) v = -v;
+    for (double& v : s.speed) v = -v;
+  std::tie(s.slowest, s.fastest) = e.range(flywheel, k0);
   return s;
-}
-
-double speedFluctuation(const std::vector<double>& speeds) {
-  const auto [low, high] = std::minmax_element(speeds.begin(), speeds.end());
-  const double mid = 0.5 * (*low + *high);
-  return (*high - *low) / std::abs(mid);
 }
 
 double FlywheelRun::slowest() const {
@@ -92,15 +106,15 @@ std::optional<Error> checkSpeedFluctuation(double cs) {
 
 Result<double> sizeFlywheel(const CrankTerms& t, double cs) {
   if (auto e = checkSpeedFluctuation(cs)) return *e;
-  const double meanInertia = t.mean(t.inertia);
-  if (speedFluctuation(flywheelSpeeds(t, 0.0)) <= cs) return 0.0;
+  const double meanInertia = t.inertiaSeries().mean();
+  if (flywheelSpeeds(t, 0.0).fluctuation() <= cs) return 0.0;
   // The textbook flywheel, ΔE/(Cs ω²), to start.
-  const std::vector<double> w = surplus(t);
-  const auto [low, high] = std::minmax_element(w.begin(), w.end());
-  double flywheel = std::max((*high - *low) / (cs * t.omega * t.omega), 1e-12 * meanInertia);
+  const PeriodicSeries surplus = t.staticSeries().surplusSeries();
+  const double energy = surplus.maximum().value - surplus.minimum().value;
+  double flywheel = std::max(energy / (cs * t.omega * t.omega), 1e-12 * meanInertia);
   for (int i = 0; i < kMaxIterations; ++i) {
-    const double got = speedFluctuation(flywheelSpeeds(t, flywheel));
-    if (std::abs(got - cs) <= 1e-10 * cs) return flywheel;
+    const double got = flywheelSpeeds(t, flywheel).fluctuation();
+    if (std::abs(got - cs) <= 1e-12 * cs) return flywheel;
     flywheel = std::max((flywheel + meanInertia) * got / cs - meanInertia, 0.5 * flywheel);
   }
   return Error{ErrorCode::InvalidValue, "cs",
@@ -112,15 +126,16 @@ Result<FlywheelRun> runFlywheel(const CrankTerms& t, double flywheel) {
   if (!(flywheel >= 0.0 && flywheel <= kMaxInertia))
     return Error{ErrorCode::InvalidValue, "flywheel inertia",
                  "the flywheel inertia must be between 0 and 1e27 kg·m² (got " + formatNumber(flywheel) + ")"};
-  const double meanTorque = t.mean(t.staticTorque);
+  const PeriodicSeries staticTorque = t.staticSeries(), halfSlope = t.halfSlopeSeries(), inertia = t.inertiaSeries();
+  const double meanTorque = staticTorque.mean();
   const auto acceleration = [&](const State& s) {
-    return (meanTorque - t.at(t.staticTorque, s.theta) - t.at(t.halfSlope, s.theta) * s.omega * s.omega) /
-           (flywheel + t.at(t.inertia, s.theta));
+    return (meanTorque - staticTorque.value(s.theta) - halfSlope.value(s.theta) * s.omega * s.omega) /
+           (flywheel + inertia.value(s.theta));
   };
-  const std::size_t steps = (t.angle.size() - 1) * kStepsPerSample;
+  const std::size_t steps = std::min((t.angle.size() - 1) * kStepsPerSample, kMostRunSteps);
   const double dt = kTurn / std::abs(t.omega) / static_cast<double>(steps);
   const double start = t.omega > 0.0 ? t.angle.front() : t.angle.back();
-  const std::vector<double> speeds = flywheelSpeeds(t, flywheel);
+  const std::vector<double> speeds = flywheelSpeeds(t, flywheel).speed;
   State s{start, t.omega > 0.0 ? speeds.front() : speeds.back()};
   FlywheelRun run;
   // Until the crank has turned once; a crank that stalls stops the run at twice the turn's time.

@@ -3,16 +3,17 @@
 // With a flywheel I_f and a motor giving the constant mean torque T̄ (crank_terms.h's terms):
 //
 //   Energy. d/dθ [½ (I_f + I_eq(θ)) θ̇²] = T̄ − T_s(θ), so the kinetic energy at θ is
-//     K(θ) = K₀ + W(θ), W(θ) = ∫θ₀^θ (T̄ − T_s) dφ (trapezoidal rule over the turn's samples),
-//   and the speed |θ̇| = √(2 K / (I_f + I_eq)). K₀ is set (secant iterations) so that the mean
-//   speed (ω_max + ω_min)/2 is the turn's ω; Cs = (ω_max − ω_min)/ω then follows from I_f. The
-//   flywheel for a wanted Cs is found by iterating I_f ← (I_f + Ī)·Cs(I_f)/Cs − Ī (Ī the mean
-//   I_eq), which the textbook formula I = ΔE/(Cs ω²) starts: that formula neglects the
-//   linkage's own inertia beside the flywheel's, and is kept beside this one for comparison.
+//     K(θ) = K₀ + W(θ), W(θ) = ∫θ₀^θ (T̄ − T_s) dφ (the integral of T_s's series), and the
+//   speed |θ̇| = √(2 K / (I_f + I_eq)), its slowest and fastest refined between samples on the
+//   terms' series. K₀ is set (secant iterations) so that the mean speed (ω_max + ω_min)/2 is
+//   the turn's ω; Cs = (ω_max − ω_min)/ω then follows from I_f. The flywheel for a wanted Cs is
+//   found by iterating I_f ← (I_f + Ī)·Cs(I_f)/Cs − Ī (Ī the mean I_eq), which the textbook
+//   formula I = ΔE/(Cs ω²) starts: that formula neglects the linkage's own inertia beside the
+//   flywheel's, and is kept beside this one for comparison.
 //   Motion. θ̈ = (T̄ − T_s(θ) − ½ I_eq'(θ) θ̇²) / (I_f + I_eq(θ)), integrated in time by the
-//     classical Runge–Kutta method (four stages, four steps per sample interval), the terms
-//     interpolated linearly between samples: an independent check of the energy method, from
-//     the same starting speed.
+//     classical Runge–Kutta method (four stages, four steps per sample interval, at most
+//     kMostRunSteps), the terms their series between samples: an independent check of the
+//     energy method, from the same starting speed.
 
 #include "kinematics/dynamics/crank_terms.h"
 #include "kinematics/model/result.h"
@@ -36,12 +37,21 @@ struct FlywheelRun {
 /// Error naming "cs" unless 0 < `cs` < 1.
 std::optional<Error> checkSpeedFluctuation(double cs);
 
-/// The speed at each of the terms' samples with a flywheel of `flywheelInertia` kg·m², by the
-/// energy equation, its mean speed set to the turn's ω.
-std::vector<double> flywheelSpeeds(const CrankTerms& terms, double flywheelInertia);
+/// The crank's speed over the turn with a flywheel, by the energy equation (rad/s, signed as ω).
+struct FlywheelSpeeds {
+  std::vector<double> speed;  ///< at each of the terms' samples
+  double slowest = 0.0;       ///< the least |speed|, refined between samples
+  double fastest = 0.0;       ///< the largest |speed|, refined between samples
+  /// Cs = (ω_max − ω_min)/ω, ω = (ω_max + ω_min)/2
+  double fluctuation() const { return (fastest - slowest) / (0.5 * (fastest + slowest)); }
+};
 
-/// Cs = (ω_max − ω_min)/ω of flywheelSpeeds.
-double speedFluctuation(const std::vector<double>& speeds);
+/// The speed with a flywheel of `flywheelInertia` kg·m², by the energy equation, its mean speed
+/// (ω_max + ω_min)/2 set to the turn's |ω|.
+FlywheelSpeeds flywheelSpeeds(const CrankTerms& terms, double flywheelInertia);
+
+/// The most time steps a forward-dynamics run takes over the turn.
+inline constexpr std::size_t kMostRunSteps = 16384;
 
 /// The flywheel inertia (kg·m², ≥ 0) that holds the speed within `cs` by the energy equation;
 /// 0 when the linkage's own inertia already does. Error naming "cs" outside (0, 1), or when the

@@ -13,8 +13,13 @@
 //     I = ΔE / (Cs ω²), the textbook flywheel. It neglects the linkage's own inertia beside the
 //     flywheel's; flywheel.h sizes it with both by the energy equation, which is what Linkwright
 //     gives as the flywheel, and checks that by forward dynamics (the run is returned).
-//   Integrals by the trapezoidal rule over the turn's samples (the grid's last sample closes the
-//     turn: it is the first one again).
+//   Exactness. Every figure is read off the series of the turn's samples (periodic_series.h):
+//     means by the trapezoidal rule on the periodic grid, E(θ) by the series' integral, the
+//     peaks and E's extremes refined between samples, the motor's figures split where the
+//     torque changes sign. For a linkage that turns smoothly they converge faster than any power
+//     of the sample count. Each figure's error is estimated by the same figure read off every
+//     other sample (an upper estimate), relative to its scale (the peak torque for the torques,
+//     the peak power for the powers, the figure itself otherwise): `accuracy`.
 //   Motor and gearbox, ratio N (motor turns per crank turn) and efficiency η: the motor turns at
 //     N ω; where it drives (T ω > 0) it gives T/(N η), where the linkage drives it back T η/N.
 //   Check. The driving torque by virtual work beside the Newton–Euler one at every sample; the
@@ -31,6 +36,7 @@
 #include "kinematics/model/result.h"
 #include "kinematics/solve/sweep.h"
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,14 +45,19 @@ namespace linkwright::kinematics {
 
 /// Largest accepted gearbox ratio, either way (motor turns per crank turn).
 inline constexpr double kMaxGearRatio = 1e6;
+/// Least accepted gearbox efficiency: below it the motor's torques stop being physical.
+inline constexpr double kMinEfficiency = 0.01;
+/// Largest accepted motor rating: torque (N·m) and speed (rpm).
+inline constexpr double kMaxRatedTorque = 1e9;
+inline constexpr double kMaxRatedRpm = 1e7;
 
 /// What the user asks of a turn besides the torque itself.
 struct DutyOptions {
   std::optional<double> speedFluctuation;  ///< Cs, (ω_max − ω_min)/ω, in (0, 1): sizes a flywheel
   double gearRatio = 1.0;                  ///< N, motor turns per crank turn, in [1e-6, 1e6]
-  double efficiency = 1.0;                 ///< η of the gearbox, in (0, 1]
-  std::optional<double> ratedTorque;       ///< N·m, the motor's continuous torque, > 0
-  std::optional<double> ratedSpeed;        ///< rad/s, the motor's rated speed, > 0
+  double efficiency = 1.0;                 ///< η of the gearbox, in [kMinEfficiency, 1]
+  std::optional<double> ratedTorque;       ///< N·m, the motor's continuous torque, in (0, kMaxRatedTorque]
+  std::optional<double> ratedSpeed;        ///< rad/s, the motor's rated speed, in (0, kMaxRatedRpm rpm]
 };
 
 /// A torque over the turn through the gearbox, at the motor.
@@ -85,13 +96,35 @@ struct MachineDuty {
   double virtualWorkDifference = 0.0;
   double bearingLoadPeak = 0.0;  ///< N, the largest force through any pin joint
   MotorDuty motor;
+  /// Each figure's relative error estimate (above) by its key in dutyFigures ("motor.…" for the
+  /// motor's), 0 where the two readings agree to the bit; empty on an odd number of intervals,
+  /// where there is no every other sample.
+  std::map<std::string, double> accuracy;
+  /// The largest of `accuracy` (0 when empty).
+  double worstAccuracy() const;
 };
+
+/// One figure of a duty as every front end shows it: its key (the JSON's), its label, unit and
+/// value, its relative error estimate, and the group it is listed under ("" or "motor").
+struct DutyFigure {
+  std::string key;    ///< "energy_fluctuation_J"
+  std::string label;  ///< "energy fluctuation ΔE"
+  std::string unit;   ///< "J"
+  double value = 0.0;
+  std::optional<double> accuracy;  ///< relative error estimate; none on an odd number of intervals
+  std::string group;               ///< "" or "motor"
+};
+
+/// The duty's figures in the order they are listed (the flywheel's with Cs given).
+std::vector<DutyFigure> dutyFigures(const MachineDuty& duty, const DutyOptions& options);
 
 /// Error naming the field unless `options` are in their ranges (above).
 std::optional<Error> checkDutyOptions(const DutyOptions& options);
 
-/// The duty of one turn (checkCrankTurn, checkDutyOptions, then turnForces at the turn's ω).
+/// The duty of one turn on its samples (checkCrankTurn, checkDutyOptions, then turnForces at
+/// the turn's ω); an even number of sample intervals lets `accuracy` compare every other sample.
+/// `cancel`, if given and set, stops it with ErrorCode::Cancelled.
 Result<MachineDuty> machineDuty(const Mechanism& mechanism, const LinkageDynamics& dynamics, const SweepSpec& turn,
-                                const DutyOptions& options);
+                                const DutyOptions& options, const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace linkwright::kinematics

@@ -43,6 +43,17 @@ std::string formatShort(double value, int significant) {
   return finiteText(value, Style::Significant, significant).value_or(kUndefinedText);
 }
 
+std::string formatCompact(double value, int significant) {
+  std::string s = formatShort(value, significant);
+  const std::size_t e = s.find('e');
+  if (e == std::string::npos) return s;
+  std::size_t digits = e + 1;
+  if (s[digits] == '+') s.erase(digits, 1);
+  else if (s[digits] == '-') ++digits;
+  while (digits + 1 < s.size() && s[digits] == '0') s.erase(digits, 1);
+  return s;
+}
+
 std::string formatFixed(double value, int decimals) {
   return finiteText(value, Style::Fixed, decimals).value_or(kUndefinedText);
 }

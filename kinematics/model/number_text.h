@@ -29,6 +29,9 @@ std::string formatNumber(double value);
 /// "0.333333", "1e-06"); "undefined" for NaN and infinities.
 std::string formatShort(double value, int significant = 6);
 
+/// formatShort with the exponent as people write it: "1e-9", "2.5e6", not "1e-09", "2.5e+06".
+std::string formatCompact(double value, int significant = 6);
+
 /// Fixed-point text with `decimals` digits after the point (for human-readable tables);
 /// "undefined" for NaN and infinities.
 std::string formatFixed(double value, int decimals);

@@ -76,6 +76,21 @@ class Linkage:
         alpha: Optional[float] = None,
     ) -> dict[str, dict[str, Optional[float]]]:
         """Each column's refined min and max and where: {min, min_at_deg, max, max_at_deg}."""
+    def machine(
+        self,
+        *,
+        rpm: Optional[float] = None,
+        omega: Optional[float] = None,
+        samples: Optional[int] = None,
+        tolerance: Optional[float] = None,
+        cs: Optional[float] = None,
+        gear_ratio: Optional[float] = None,
+        efficiency: Optional[float] = None,
+        rated_torque: Optional[float] = None,
+        rated_speed: Optional[float] = None,
+    ) -> dict[str, Any]:
+        """What one crank turn asks of the machine, as linkwright-cli machine --json, converged to
+        `tolerance` (each figure's estimate under 'accuracy'), with the turn's curves as arrays."""
     def instant_centres(self, at: float) -> dict[str, Any]:
         """Every pair of bodies' instant centre at input `at`, the velocity ratio and mechanical advantage."""
     def tolerance_study(

@@ -23,6 +23,9 @@ void bindAtlas(pybind11::module_& module);
 /// Linkage.instant_centres (centres.cpp).
 void bindCentres(pybind11::class_<Linkage>& linkage);
 
+/// Linkage.machine (machine.cpp).
+void bindMachine(pybind11::class_<Linkage>& linkage);
+
 /// Linkage.extremes (extremes.cpp).
 void bindExtremes(pybind11::class_<Linkage>& linkage);
 

@@ -245,6 +245,7 @@ PYBIND11_MODULE(_linkwright, module) {
            "output (CRLF line ends); with forces=True, analyze --forces's; with law=, analyze --law's.");
   lp::bindCentres(linkage);
   lp::bindExtremes(linkage);
+  lp::bindMachine(linkage);
   lp::bindTolerance(linkage);
   lp::bindSynthesis(module);
   lp::bindProblems(module);

@@ -88,7 +88,7 @@ TEST_CASE("balance --spring writes the spring that lowers the RMS torque, and ma
   // The written document's own inverse dynamics give the RMS the balance predicted.
   const auto machine = runCliCommand({"machine", out});
   REQUIRE(machine.code == 0);
-  CHECK(machine.out.find("RMS 0.55503 N·m") != std::string::npos);
+  CHECK(machine.out.find("  driving torque, RMS                          0.55503") != std::string::npos);
   const std::vector<std::pair<std::string, std::string>> refused{
       {"rocker:C", "--spring needs two ends"},
       {"rocker:C,X", "--spring: loads.springs[0].second.point names no point of this mechanism (got \"X\")"},

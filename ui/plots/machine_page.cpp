@@ -7,7 +7,8 @@
 #include "ui/plots/plot_x_axis.h"
 
 #include "kinematics/design/design.h"
-#include "kinematics/dynamics/machine_duty.h"
+#include "kinematics/design/sweep_grid.h"
+#include "kinematics/dynamics/machine_request.h"
 #include "kinematics/model/units.h"
 
 #include <QDoubleSpinBox>
@@ -27,77 +28,106 @@ namespace {
 
 constexpr int kSettleMs = 150;
 
-QDoubleSpinBox* field(double low, double high, double value, int decimals, const QString& suffix, const QString& name) {
+// A field of the core's machine request (kinematics/dynamics/machine_request.h): its range, its
+// unit and its help as the CLI and Python give them; an optional one reads "none" at 0.
+QDoubleSpinBox* requestField(const std::string& key, int decimals, const QString& name) {
+  const k::RequestField& f = *k::findField(k::machineFields(), key);
+  const double step = std::pow(10.0, -decimals);
+  const bool optional = !f.value && f.minimum == 0.0;
   auto* box = new QDoubleSpinBox;
-  box->setRange(low, high);
   box->setDecimals(decimals);
-  box->setValue(value);
-  box->setSuffix(suffix);
+  box->setRange(optional ? 0.0 : (f.minimumIncluded ? f.minimum : f.minimum + step),
+                f.maximumIncluded ? f.maximum : f.maximum - step);
+  if (optional) box->setSpecialValueText(MachinePage::tr("none"));
+  box->setValue(f.value.value_or(key == "cs" ? 0.05 : 0.0));
+  if (!f.unit.empty()) box->setSuffix(QStringLiteral(" ") + QString::fromStdString(f.unit));
+  box->setToolTip(QString::fromStdString(k::helpText(f)));
   box->setObjectName(name);
   box->setKeyboardTracking(false);       // a value counts once typed, not at each keystroke
   box->setFocusPolicy(Qt::StrongFocus);  // the wheel scrolls the page until the field is clicked
   return box;
 }
 
-QString n(double value) { return numberText(value, 'g', 5); }
+QString fieldLabel(const std::string& key) {
+  return QString::fromStdString(k::fieldName(*k::findField(k::machineFields(), key), k::FrontEnd::Designer));
+}
 
-QString figures(const k::MachineDuty& d, const k::DutyOptions& o, std::size_t samples) {
-  QStringList lines;
-  lines << MachinePage::tr("One crank turn at %1 rad/s (%2 rpm), %3 samples.")
-               .arg(n(d.omega), n(k::radPerSecToRpm(d.omega)))
-               .arg(samples);
-  lines << MachinePage::tr(
-               "Driving torque: mean %1 N·m, RMS %2 N·m, peak %3 N·m. Power at the crank: mean %4 W, "
-               "peak %5 W.")
-               .arg(n(d.meanTorque), n(d.rmsTorque), n(d.peakTorque), n(d.meanPower), n(d.peakPower));
-  lines << MachinePage::tr("Energy fluctuation ΔE %1 J (the turn's surplus above the mean torque).")
-               .arg(n(d.energyFluctuation));
-  if (d.flywheelInertia && d.flywheelRun)
-    lines << MachinePage::tr(
-                 "Flywheel for Cs %1: %2 kg·m² on the crank shaft, the linkage's own inertia counted (the "
-                 "textbook ΔE/(Cs ω²) gives %3 kg·m²). Run in time with it, the speed varies by Cs %4, "
-                 "from %5 to %6 rad/s.")
-                 .arg(n(*o.speedFluctuation), n(*d.flywheelInertia), n(*d.textbookFlywheelInertia),
-                      n(d.flywheelRun->speedFluctuation), n(d.flywheelRun->slowest()), n(d.flywheelRun->fastest()));
-  lines << MachinePage::tr("Frame: shaking force peak %1 N, shaking moment peak %2 N·m; bearing load peak %3 N.")
-               .arg(n(d.shakingForcePeak), n(d.shakingMomentPeak), n(d.bearingLoadPeak));
-  lines << MachinePage::tr("Virtual-work check: the driving torque by virtual work is within %1 N·m of Newton–Euler's.")
-               .arg(numberText(d.virtualWorkDifference, 'g', 2));
-  lines << MachinePage::tr(
-               "Motor through gear ratio %1 at efficiency %2: %3 rpm, RMS torque %4 N·m, peak %5 N·m, "
-               "mean power %6 W, peak %7 W.")
-               .arg(n(o.gearRatio), n(o.efficiency), n(k::radPerSecToRpm(d.motor.speed)), n(d.motor.rmsTorque),
-                    n(d.motor.peakTorque), n(d.motor.meanPower), n(d.motor.peakPower));
-  if (!d.motor.verdict.empty()) lines << MachinePage::tr("Verdict: %1").arg(QString::fromStdString(d.motor.verdict));
-  return lines.join(QLatin1Char('\n'));
+QString n(double value) { return numberText(value, 'g', 8); }
+
+// The core's figures (dutyFigures) as the CLI lists them: as plain lines (figuresText) and as
+// the page shows them, two figures a row so that the chart stays in sight on a laptop's screen.
+struct FiguresText {
+  QString plain;
+  QString html;
+};
+
+FiguresText figures(const k::MachineRun& run, const k::MachineRequest& request) {
+  const k::MachineDuty& d = run.duty;
+  QStringList head, cells, tail, plain;
+  QString accuracy = run.converged ? MachinePage::tr("every figure within %1 relative")
+                                         .arg(QString::fromStdString(k::formatCompact(run.tolerance, 2)))
+                                   : MachinePage::tr("the largest error estimate %1, over the tolerance %2")
+                                         .arg(QString::fromStdString(k::formatCompact(d.worstAccuracy(), 2)),
+                                              QString::fromStdString(k::formatCompact(run.tolerance, 2)));
+  head << MachinePage::tr("One crank turn at %1 rad/s (%2 rpm), read at %3 samples; %4.")
+              .arg(n(d.omega), n(k::radPerSecToRpm(d.omega)))
+              .arg(run.samples)
+              .arg(accuracy);
+  head << MachinePage::tr("The motor through the gearbox (ratio %1, efficiency %2) turns at %3 rpm.")
+              .arg(n(request.duty.gearRatio), n(request.duty.efficiency), n(k::radPerSecToRpm(d.motor.speed)));
+  for (const k::DutyFigure& f : k::dutyFigures(d, request.duty)) {
+    QString value = QStringLiteral("%1 %2").arg(n(f.value), QString::fromStdString(f.unit));
+    if (f.accuracy && *f.accuracy > run.tolerance)
+      value += MachinePage::tr(" (error estimate %1)").arg(QString::fromStdString(k::formatCompact(*f.accuracy, 2)));
+    const QString label = QString::fromStdString(f.label);
+    cells << QStringLiteral("%1: <b>%2</b>").arg(label.toHtmlEscaped(), value.toHtmlEscaped());
+    plain << QStringLiteral("%1: %2").arg(label, value);
+  }
+  if (d.flywheelRun)
+    tail << MachinePage::tr("Run in time with that flywheel, the speed varies by Cs %1, from %2 to %3 rad/s.")
+                .arg(n(d.flywheelRun->speedFluctuation), n(d.flywheelRun->slowest()), n(d.flywheelRun->fastest()));
+  tail << MachinePage::tr("Virtual-work check: the driving torque by virtual work is within %1 N·m of Newton–Euler's.")
+              .arg(numberText(d.virtualWorkDifference, 'g', 2));
+  if (!d.motor.verdict.empty()) tail << MachinePage::tr("Verdict: %1").arg(QString::fromStdString(d.motor.verdict));
+
+  QString table = QStringLiteral("<table cellspacing=\"0\" cellpadding=\"1\">");
+  for (qsizetype i = 0; i < cells.size(); i += 2)
+    table += QStringLiteral("<tr><td>%1</td><td width=\"24\"></td><td>%2</td></tr>")
+                 .arg(cells[i], i + 1 < cells.size() ? cells[i + 1] : QString());
+  table += QStringLiteral("</table>");
+  const auto paragraphs = [](const QStringList& lines) {
+    QStringList escaped;
+    for (const QString& line : lines) escaped << line.toHtmlEscaped();
+    return escaped.join(QStringLiteral("<br>"));
+  };
+  return {(head + plain + tail).join(QLatin1Char('\n')),
+          QStringLiteral("<p>%1</p>%2<p>%3</p>").arg(paragraphs(head), table, paragraphs(tail))};
 }
 
 }  // namespace
 
 MachinePage::MachinePage(MechanismDocument* document, QWidget* parent)
-    : QWidget(parent), m_document(document), m_cs(field(0.001, 0.9, 0.05, 3, QString(), QStringLiteral("machineCs"))),
-      m_gearRatio(field(0.001, k::kMaxGearRatio, 1.0, 3, QString(), QStringLiteral("machineGearRatio"))),
-      m_efficiency(field(0.01, 1.0, 1.0, 3, QString(), QStringLiteral("machineEfficiency"))),
-      m_ratedTorque(field(0.0, 1e9, 0.0, 4, tr(" N·m"), QStringLiteral("machineRatedTorque"))),
-      m_ratedSpeed(field(0.0, 1e9, 0.0, 1, tr(" rpm"), QStringLiteral("machineRatedSpeed"))), m_figures(new QLabel),
-      m_speed(new ForceChartView(tr("Crank speed over a turn with the flywheel (forward dynamics)"), false)) {
-  m_ratedTorque->setSpecialValueText(tr("none"));
-  m_ratedSpeed->setSpecialValueText(tr("none"));
+    : QWidget(parent), m_document(document), m_cs(requestField("cs", 3, QStringLiteral("machineCs"))),
+      m_gearRatio(requestField("gear_ratio", 3, QStringLiteral("machineGearRatio"))),
+      m_efficiency(requestField("efficiency", 3, QStringLiteral("machineEfficiency"))),
+      m_ratedTorque(requestField("rated_torque", 4, QStringLiteral("machineRatedTorque"))),
+      m_ratedSpeed(requestField("rated_speed", 1, QStringLiteral("machineRatedSpeed"))), m_figures(new QLabel),
+      m_speed(new ForceChartView(tr("Crank speed over a turn with the flywheel (forward dynamics)"), false)),
+      m_run([this](const Outcome& outcome) { display(outcome); }) {
   // The fields, the figures across the page under them, then the chart; the whole
   // page scrolls when the pane is short, so nothing is clipped.
   auto* fields = new QGridLayout;
-  const auto add = [fields](int row, int column, const QString& label, const QString& tip, QDoubleSpinBox* box) {
+  const auto add = [fields](int row, const QString& label, QDoubleSpinBox* box) {
     auto* text = new QLabel(label);
     text->setBuddy(box);
-    box->setToolTip(tip);
-    fields->addWidget(text, row, 2 * column);
-    fields->addWidget(box, row, 2 * column + 1);
+    fields->addWidget(text, row, 0);
+    fields->addWidget(box, row, 1);
   };
-  add(0, 0, tr("Speed fluctuation Cs"), tr("(ω_max − ω_min)/ω the flywheel is sized for"), m_cs);
-  add(1, 0, tr("Gear ratio"), tr("motor turns per crank turn"), m_gearRatio);
-  add(2, 0, tr("Gearbox efficiency"), tr("the gearbox's η, above 0 and at most 1"), m_efficiency);
-  add(3, 0, tr("Motor's rated torque"), tr("the motor's continuous torque; none: no verdict"), m_ratedTorque);
-  add(4, 0, tr("Motor's rated speed"), tr("the motor's rated speed; none: no verdict"), m_ratedSpeed);
+  add(0, tr("Speed fluctuation %1").arg(fieldLabel("cs")), m_cs);
+  add(1, fieldLabel("gear_ratio"), m_gearRatio);
+  add(2, tr("Gearbox %1").arg(fieldLabel("efficiency").toLower()), m_efficiency);
+  add(3, tr("Motor's %1").arg(fieldLabel("rated_torque").toLower()), m_ratedTorque);
+  add(4, tr("Motor's %1").arg(fieldLabel("rated_speed").toLower()), m_ratedSpeed);
   fields->setColumnStretch(2, 1);
   m_figures->setObjectName(QStringLiteral("machineFigures"));
   m_figures->setWordWrap(true);
@@ -138,42 +168,69 @@ void MachinePage::setOnScreen(bool onScreen) {
 
 void MachinePage::designChanged() {
   m_stale = true;
+  m_run.cancel();  // its answer is for the design or fields this change replaced
   if (m_onScreen) m_settle.start();
 }
 
-QString MachinePage::figuresText() const { return m_figures->text(); }
+QString MachinePage::figuresText() const { return m_plain; }
+
+void MachinePage::waitForFigures() { m_run.wait(); }
+
+void MachinePage::refuse(const QString& why) {
+  m_run.cancel();
+  m_plain = why;
+  m_figures->setTextFormat(Qt::PlainText);
+  m_figures->setText(why);
+  m_speed->setVisible(false);
+}
 
 void MachinePage::refresh() {
   if (!m_onScreen) return;
   m_stale = false;
   m_settle.stop();
   const k::Design& design = m_document->design();
-  const auto refuse = [this](const QString& why) {
-    m_figures->setText(why);
-    m_speed->setVisible(false);
-  };
   if (auto e = k::checkCrankDriven(design.mechanism))
     return refuse(tr("The flywheel and motor figures are for a crank turning at a steady speed: %1")
                       .arg(QString::fromStdString(e->message)));
-  k::DutyOptions options;
-  options.speedFluctuation = m_cs->value();
-  options.gearRatio = m_gearRatio->value();
-  options.efficiency = m_efficiency->value();
-  if (m_ratedTorque->value() > 0.0) options.ratedTorque = m_ratedTorque->value();
-  if (m_ratedSpeed->value() > 0.0) options.ratedSpeed = k::rpmToRadPerSec(m_ratedSpeed->value());
-  const k::SweepSpec turn = k::designTurn(design);
-  const auto duty = k::machineDuty(design.mechanism, design.dynamics, turn, options);
-  if (!duty) return refuse(QString::fromStdString(duty.error().message));
-  m_figures->setText(figures(*duty, options, turn.samples));
+  k::RequestValues values{
+      {"cs", m_cs->value()}, {"gear_ratio", m_gearRatio->value()}, {"efficiency", m_efficiency->value()}};
+  if (m_ratedTorque->value() > 0.0) values["rated_torque"] = m_ratedTorque->value();
+  if (m_ratedSpeed->value() > 0.0) values["rated_speed"] = m_ratedSpeed->value();
+  auto request = k::machineRequest(values, k::FrontEnd::Designer);
+  if (!request) return refuse(QString::fromStdString(request.error().message));
+  m_request = *request;
+  m_run.start([mechanism = design.mechanism, dynamics = design.dynamics,
+               defaults = k::machineDefaultsOf(k::sweepGridOf(design)),
+               request = *request](const std::atomic<bool>& cancel) {
+    k::RunControl control;
+    control.cancel = &cancel;
+    auto run = k::runMachine(mechanism, dynamics, defaults, request, control);
+    return run ? Outcome{std::move(run).value(), std::nullopt} : Outcome{std::nullopt, run.error()};
+  });
+}
 
-  const k::FlywheelRun& run = *duty->flywheelRun;
+void MachinePage::display(const Outcome& outcome) {
+  if (outcome.error) {
+    if (outcome.error->code != k::ErrorCode::Cancelled) refuse(QString::fromStdString(outcome.error->message));
+    return;
+  }
+  const k::MachineRun& run = *outcome.run;
+  const FiguresText text = figures(run, m_request);
+  m_plain = text.plain;
+  m_figures->setTextFormat(Qt::RichText);
+  m_figures->setText(text.html);
+  if (!run.duty.flywheelRun) {
+    m_speed->setVisible(false);
+    return;
+  }
+  const k::FlywheelRun& flywheel = *run.duty.flywheelRun;
+  const double cs = *m_request.duty.speedFluctuation;
   const auto toUnit = [this](double angle) { return m_unit == AngleUnit::Degrees ? k::radToDeg(angle) : angle; };
-  SeriesRuns speed, low, high;
   QList<QPointF> points;
-  for (std::size_t i = 0; i < run.angle.size(); ++i) points.append({toUnit(run.angle[i]), run.speed[i]});
+  for (std::size_t i = 0; i < flywheel.angle.size(); ++i) points.append({toUnit(flywheel.angle[i]), flywheel.speed[i]});
   const double from = points.front().x(), to = points.back().x();
-  const double lowest = run.meanSpeed * (1.0 - 0.5 * *options.speedFluctuation);
-  const double highest = run.meanSpeed * (1.0 + 0.5 * *options.speedFluctuation);
+  const double lowest = flywheel.meanSpeed * (1.0 - 0.5 * cs);
+  const double highest = flywheel.meanSpeed * (1.0 + 0.5 * cs);
   const auto line = [](QList<QPointF> runPoints) {
     SeriesRuns r;
     r.minY = r.maxY = runPoints.front().y();
@@ -184,6 +241,7 @@ void MachinePage::refresh() {
     r.runs.append(std::move(runPoints));
     return r;
   };
+  const k::Design& design = m_document->design();
   PlotXAxis x;
   x.source = {PlotAxis::Input, k::InputKind::Angle};
   x.range = exactAxisRange(std::min(from, to), std::max(from, to));

@@ -6,6 +6,7 @@
 #include "ui/document/mechanism_document.h"
 #include "ui/panels/dynamics_panel.h"
 #include "ui/plots/force_plot_panel.h"
+#include "ui/plots/machine_page.h"
 
 #include "kinematics/design/design.h"
 #include "kinematics/model/units.h"
@@ -62,7 +63,10 @@ void shoot(const std::string& example, double crankDeg, const QString& dir, bool
   if (auto* tabs = plots.findChild<QTabWidget*>()) {
     tabs->setCurrentIndex(2);  // the polar load diagrams
     save(plots, dir, tag + "_polar.png", {1000, 560});
-    tabs->setCurrentIndex(3);  // the flywheel and motor
+    tabs->setCurrentIndex(3);  // the flywheel and motor, computed on the worker pool
+    plots.resize(1000, 560);
+    settle();
+    plots.machinePage()->waitForFigures();
     save(plots, dir, tag + "_flywheel.png", {1000, 560});
   }
 

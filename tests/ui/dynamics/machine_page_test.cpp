@@ -1,6 +1,7 @@
-// The Forces tab's Flywheel and motor page: the core's duty of a turn for the fields typed, the
-// speed run in time with the flywheel drawn between the limits Cs sets, nothing computed off
-// screen, and nothing left from an earlier design or field value.
+// The Forces tab's Flywheel and motor page: the core's machine request for the fields typed (the
+// figures the CLI and Python give, to the bit), run on the worker pool, the speed run in time
+// with the flywheel drawn between the limits Cs sets, the fields' ranges and tooltips the
+// request's, nothing computed off screen, and nothing left from an earlier design or field value.
 #include "ui/plots/machine_page.h"
 
 #include "ui/number_text.h"
@@ -11,7 +12,8 @@
 #include "ui/plots/force_plot_panel.h"
 
 #include "kinematics/design/design.h"
-#include "kinematics/dynamics/machine_duty.h"
+#include "kinematics/design/sweep_grid.h"
+#include "kinematics/dynamics/machine_request.h"
 #include "kinematics/model/units.h"
 
 #include <QDoubleSpinBox>
@@ -39,7 +41,14 @@ struct ShownMachine {
     panel.resize(1000, 700);
     panel.show();
   }
-  void showPage() { panel.pages()->setCurrentWidget(&page); }
+  void showPage() {
+    panel.pages()->setCurrentWidget(&page);
+    page.waitForFigures();
+  }
+  void refresh() {
+    page.refresh();
+    page.waitForFigures();
+  }
 };
 
 // (max − min) / mean of a curve's y.
@@ -59,12 +68,22 @@ TEST_CASE("the flywheel page shows the core's duty and the speed run in time wit
   shown.showPage();
   const QString text = page.figuresText();
   INFO(text.toStdString());
-  k::DutyOptions options;
-  options.speedFluctuation = 0.05;
-  const auto duty = k::machineDuty(design.mechanism, design.dynamics, k::designTurn(design), options).value();
-  CHECK(text.contains(QStringLiteral("Flywheel for Cs 0.05: %1 kg·m²").arg(numberText(*duty.flywheelInertia, 'g', 5))));
-  CHECK(text.contains(QStringLiteral("RMS %1 N·m").arg(numberText(duty.rmsTorque, 'g', 5))));
+  // The core's request, as linkwright-cli machine --cs 0.05 makes it, gives these figures.
+  const auto request = k::machineRequest({{"cs", 0.05}}, k::FrontEnd::Cli).value();
+  const auto run =
+      k::runMachine(design.mechanism, design.dynamics, k::machineDefaultsOf(k::sweepGridOf(design)), request).value();
+  const k::MachineDuty& duty = run.duty;
+  CHECK(text.contains(QStringLiteral("read at %1 samples; every figure within 1e-9 relative").arg(run.samples)));
+  for (const k::DutyFigure& f : k::dutyFigures(duty, request.duty))
+    CHECK(text.contains(
+        QStringLiteral("%1: %2 %3")
+            .arg(QString::fromStdString(f.label), numberText(f.value, 'g', 8), QString::fromStdString(f.unit))));
+  CHECK(text.contains(QStringLiteral("flywheel for Cs 0.05: %1 kg·m²").arg(numberText(*duty.flywheelInertia, 'g', 8))));
   CHECK_FALSE(text.contains("nan"));
+  // The fields are the request's: its range and its help.
+  CHECK(page.efficiencyField()->minimum() == 0.01);
+  CHECK(page.efficiencyField()->toolTip().contains("from 0.01 to 1"));
+  CHECK(page.ratedSpeedField()->maximum() == k::kMaxRatedRpm);
 
   // The run in time, as the core ran it, varies by Cs within 2 %; the limits are ω̄ (1 ± Cs/2).
   const QList<QPointF> speed = page.speedChart()->samples(0);
@@ -77,18 +96,18 @@ TEST_CASE("the flywheel page shows the core's duty and the speed run in time wit
 
   // A tighter Cs: a new flywheel and a run that varies by it.
   page.speedFluctuationField()->setValue(0.02);
-  page.refresh();
-  CHECK(page.figuresText().contains("Flywheel for Cs 0.02"));
+  shown.refresh();
+  CHECK(page.figuresText().contains("flywheel for Cs 0.02"));
   CHECK(spread(page.speedChart()->samples(0)) == Approx(0.02).epsilon(0.02));
 
   // A motor rating gives a verdict; clearing it takes the verdict away.
   page.ratedTorqueField()->setValue(0.01);
   page.ratedSpeedField()->setValue(1000.0);
-  page.refresh();
+  shown.refresh();
   CHECK(page.figuresText().contains("Verdict: too weak"));
   page.ratedTorqueField()->setValue(0.0);
   page.ratedSpeedField()->setValue(0.0);
-  page.refresh();
+  shown.refresh();
   CHECK_FALSE(page.figuresText().contains("Verdict"));
 }
 
@@ -112,7 +131,25 @@ TEST_CASE("the flywheel page follows the design, and only while shown", "[forces
   k::Design boom = *k::designForExample("excavator-boom");
   boom.dynamics.links = {{"boom", 50.0, std::nullopt, std::nullopt}};
   shown.doc.reset(boom);
-  page.refresh();
+  shown.refresh();
   CHECK(page.figuresText().contains("for a crank turning at a steady speed"));
   CHECK_FALSE(page.speedChart()->isVisible());
+}
+
+TEST_CASE("the flywheel page drops an answer whose design was replaced while it ran", "[forces][machine]") {
+  ShownMachine shown(*k::designForExample("funsho-fourbar"));
+  MachinePage& page = shown.page;
+  shown.showPage();
+  // A run for ω = 50 is started, and before it lands the design goes to ω = 20: the page shows
+  // the answer for 20 only, never the one for 50.
+  k::Design design = shown.doc.design();
+  design.omega = 50.0;
+  REQUIRE_FALSE(shown.doc.edit(design, "omega"));
+  page.refresh();
+  design.omega = 20.0;
+  REQUIRE_FALSE(shown.doc.edit(design, "omega"));
+  page.waitForFigures();  // nothing pending: the change dropped it
+  CHECK_FALSE(page.figuresText().contains("at 50 rad/s"));
+  shown.refresh();
+  CHECK(page.figuresText().contains("One crank turn at 20 rad/s"));
 }
