@@ -5,6 +5,7 @@
 #include "kinematics/dynamics/machine_request.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/validate.h"
+#include "kinematics/synthesis/optimise_linkage.h"
 
 #include <charconv>
 #include <cmath>
@@ -287,13 +288,25 @@ std::optional<Error> apply(Invocation& inv, const std::string& option, const std
                                   : inv.fixPivots) = value;
   } else if (option == "--length-range") {
     if (auto e = positive(inv.lengthRangePercent, option, value)) return e;
-    if (*inv.lengthRangePercent > 95.0)
+    // A percentage so small that it is 0 as a fraction is refused here, as typed, not by the core.
+    if (*inv.lengthRangePercent > 95.0 || !(*inv.lengthRangePercent / 100.0 > 0.0))
       return usage(option, option + " must be above 0 and at most 95, a percentage of each length (got " + value + ")");
   } else if (option == "--mc-samples" || option == "--seed" || option == "--evaluations" || option == "--starts") {
     long long n = 0;
     const auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), n);
-    if (ec != std::errc{} || ptr != value.data() + value.size() || value.empty())
-      return usage(option, option + ": '" + value + "' is not a whole number");
+    const bool whole = ptr == value.data() + value.size() && !value.empty();
+    // optimise's budget and starts are ints in the core: checked here, as typed, before they
+    // would wrap (--evaluations 4294968796 ran 1500 designs).
+    if ((option == "--evaluations" || option == "--starts") && whole &&
+        (ec == std::errc::result_out_of_range || ec == std::errc{})) {
+      const bool evaluations = option == "--evaluations";
+      const long long lo = evaluations ? kinematics::kMinOptimiseEvaluations : kinematics::kMinOptimiseStarts;
+      const long long hi = evaluations ? kinematics::kMaxOptimiseEvaluations : kinematics::kMaxOptimiseStarts;
+      if (ec != std::errc{} || n < lo || n > hi)
+        return usage(option, option + " must be between " + std::to_string(lo) + " and " + std::to_string(hi) +
+                                 " (got " + value + ")");
+    }
+    if (ec != std::errc{} || !whole) return usage(option, option + ": '" + value + "' is not a whole number");
     if (option == "--seed" && n < 0)
       return usage(option, option + " must be a whole number from 0 (got " + value + ")");
     if (option == "--seed" && inv.command == Command::Optimise && n > 4294967295LL)
@@ -382,6 +395,33 @@ std::optional<Error> checkReport(const Invocation& inv) {
   return std::nullopt;
 }
 
+// balance makes counterweights (--fraction, --radius) or one spring (--spring or
+// --spring-search, refused together by the command): a counterweight's option would be
+// ignored by a spring balance, so it is refused.
+std::optional<Error> checkBalance(const Invocation& inv) {
+  const char* spring = inv.springEnds ? "--spring" : inv.springSearchLink ? "--spring-search" : nullptr;
+  if (spring == nullptr) return std::nullopt;
+  for (const auto& [given, option, what] :
+       {std::tuple{inv.reciprocatingFraction.has_value(), "--fraction", "the share of the reciprocating mass"},
+        {inv.counterweightRadius.has_value(), "--radius", "the counterweights' distance from their pivots"}})
+    if (given)
+      return usage(option, std::string(option) + " sets " + what + ", and a spring balance (" + spring +
+                               ") makes no counterweight: give one or the other");
+  return std::nullopt;
+}
+
+// optimise's --point and --path-measure say how a path objective is measured; with another
+// objective they would be ignored, so they are refused.
+std::optional<Error> checkOptimise(const Invocation& inv) {
+  if (inv.objective->rfind("path:", 0) == 0) return std::nullopt;
+  for (const auto& [given, option] :
+       {std::pair{inv.objectivePoint.has_value(), "--point"}, {inv.pathMeasure.has_value(), "--path-measure"}})
+    if (given)
+      return usage(option, std::string(option) + " goes with --objective path:TARGETS.csv (got --objective " +
+                               *inv.objective + ")");
+  return std::nullopt;
+}
+
 std::optional<Error> checkCombination(const Invocation& inv) {
   if (inv.command == Command::Arm) return checkArm(inv);
   if (inv.command == Command::Dxf)
@@ -406,6 +446,10 @@ std::optional<Error> checkCombination(const Invocation& inv) {
   if (inv.command == Command::Optimise && !inv.objective)
     return usage("--objective",
                  "optimise needs --objective peak-alpha:LINK, transmission, path:TARGETS.csv or rms-torque");
+  if (inv.command == Command::Optimise)
+    if (auto e = checkOptimise(inv)) return e;
+  if (inv.command == Command::Balance)
+    if (auto e = checkBalance(inv)) return e;
   if (inv.command == Command::Optimise && !inv.example && !inv.documentPath)
     return usage("--example", "optimise needs FILE.json or --example NAME: the linkage to optimise");
   if (inv.command == Command::Optimise && !inv.outputFile)

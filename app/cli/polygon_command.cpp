@@ -96,6 +96,8 @@ k::io::JsonValue polygonJson(const k::VectorPolygon& p) {
 k::Result<k::DriverState> driverAt(const Invocation& inv, const GridDefaults& d, double deg) {
   const k::InputDomain domain = k::inputDomain(k::InputKind::Angle);
   if (auto e = k::checkMagnitude(deg, "--at", k::kMaxAngleDeg, "degrees")) return *e;
+  // --rpm and --omega checked in their own units (the core's grid rule), before --rpm becomes rad/s.
+  if (auto e = checkDriveOptions(inv, k::InputKind::Angle)) return *e;
   const double omega = inv.rpm ? k::rpmToRadPerSec(*inv.rpm) : inv.omega.value_or(d.omega);
   if (auto e = k::checkMagnitude(omega, inv.rpm ? "--rpm" : "--omega", domain.rate, domain.rateUnit)) return *e;
   const double alpha = inv.alpha.value_or(d.alpha);

@@ -21,6 +21,16 @@ std::optional<Error> checkSampleCount(long long samples, const GridFieldNames& n
                   "must be between 1 and " + std::to_string(kMaxSamples) + " (got " + std::to_string(samples) + ")");
 }
 
+// The rows (`intervals` + 1) a grid would have, as text for a refusal: a count, never
+// "undefined". A span over a step of 1e-320 is more intervals than a double holds; its power of
+// ten still says how many.
+std::string rowsText(double intervals, double span, double step) {
+  if (std::isfinite(intervals)) return formatShort(intervals + 1.0);
+  const double exponent = std::log10(span) - std::log10(step);
+  const double whole = std::floor(exponent);
+  return "about " + formatShort(std::pow(10.0, exponent - whole), 2) + "e" +
+         std::to_string(static_cast<long long>(whole));
+}
 }  // namespace
 
 double SweepGrid::toInput(double value) const { return input == InputKind::Angle ? degToRad(value) : value; }
@@ -175,10 +185,10 @@ Result<SweepSpec> sweepGridSpec(const SweepGridRequest& r, const SweepGrid& d, c
     if (intervals + 1.0 > static_cast<double>(kMaxSamples)) {
       if (ownStep)
         return badValue(GridField::Samples, names,
-                        "is needed: the linkage's step would give " + formatShort(intervals + 1.0) + " rows (at most " +
-                            std::to_string(kMaxSamples) + ")");
+                        "is needed: the linkage's step would give " + rowsText(intervals, to - from, step) +
+                            " rows (at most " + std::to_string(kMaxSamples) + ")");
       return badValue(GridField::Step, names,
-                      "is too small: it would give " + formatShort(intervals + 1.0) + " rows (at most " +
+                      "is too small: it would give " + rowsText(intervals, to - from, step) + " rows (at most " +
                           std::to_string(kMaxSamples) + ")");
     }
     samples = static_cast<long long>(intervals) + 1;
@@ -276,8 +286,8 @@ Result<SweepSpec> lawGridSpec(const SweepGridRequest& r, const SweepGrid& d, con
     const double intervals = std::floor((*end - from) / *r.stepTime + 1e-9);
     if (!(intervals + 1.0 <= static_cast<double>(kMaxSamples)))
       return badValue(GridField::StepTime, names,
-                      "is too small: it would give " + formatShort(intervals + 1.0) + " rows (at most " +
-                          std::to_string(kMaxSamples) + ")");
+                      "is too small: it would give " + rowsText(intervals, *end - from, *r.stepTime) +
+                          " rows (at most " + std::to_string(kMaxSamples) + ")");
     samples = static_cast<long long>(intervals) + 1;
   }
   if (auto e = checkSampleCount(samples, names)) return *e;

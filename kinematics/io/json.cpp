@@ -11,9 +11,47 @@ struct TooDeep {};
 // nlohmann says "[json.exception.parse_error.101] parse error at line 2, column 7: syntax
 // error while parsing value - unexpected '}'; expected '[', '{', or a literal"; the document
 // readers say "line 2, column 7: syntax error while parsing value - …".
+// The length of the UTF-8 sequence at text[i] (RFC 3629: no overlong form, no surrogate, at most
+// U+10FFFF), 0 if it is not one.
+std::size_t utf8Length(std::string_view text, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return i + k < text.size() ? static_cast<unsigned char>(text[i + k]) : 0u; };
+  const unsigned c = byte(0);
+  const auto tail = [&](std::size_t k) { return (byte(k) & 0xC0u) == 0x80u; };
+  if (c < 0x80) return 1;
+  if (c >= 0xC2 && c <= 0xDF) return tail(1) ? 2 : 0;
+  if (c >= 0xE0 && c <= 0xEF) {
+    const unsigned lo = c == 0xE0 ? 0xA0 : 0x80, hi = c == 0xED ? 0x9F : 0xBF;
+    return byte(1) >= lo && byte(1) <= hi && tail(2) ? 3 : 0;
+  }
+  if (c >= 0xF0 && c <= 0xF4) {
+    const unsigned lo = c == 0xF0 ? 0x90 : 0x80, hi = c == 0xF4 ? 0x8F : 0xBF;
+    return byte(1) >= lo && byte(1) <= hi && tail(2) && tail(3) ? 4 : 0;
+  }
+  return 0;
+}
+
+// nlohmann's message quotes the bytes it last read, which in a file that is not UTF-8 are not
+// text: each such byte is shown as \xNN, so the message is UTF-8 wherever it is shown.
+std::string asText(std::string_view text) {
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    if (const std::size_t n = utf8Length(text, i); n > 0) {
+      out.append(text.substr(i, n));
+      i += n;
+    } else {
+      const auto c = static_cast<unsigned char>(text[i++]);
+      out += "\\x";
+      out += kHex[c >> 4];
+      out += kHex[c & 0xF];
+    }
+  }
+  return out;
+}
+
 std::string withoutPrefix(const nlohmann::json::exception& e) {
   static const std::regex prefix(R"(^\[json\.exception\.[a-z_]+\.\d+\] (parse error at )?)");
-  return std::regex_replace(e.what(), prefix, "");
+  return asText(std::regex_replace(e.what(), prefix, ""));
 }
 
 }  // namespace

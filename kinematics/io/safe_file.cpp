@@ -7,6 +7,9 @@
 #include <filesystem>
 #include <streambuf>
 
+#include <climits>
+#include <csignal>
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -37,14 +40,70 @@ std::optional<fs::path> resolveLinks(const fs::path& path, std::string& why) {
   return std::nullopt;
 }
 
-// A new file beside `target` with a name no other writer uses, created with `mode`.
-int createTemporary(const fs::path& target, mode_t mode, std::string& name) {
+// The temporary files being written, for the signal handler: a fixed table of C strings, each
+// slot claimed by one writer (Free → Filling), its name copied, then Pending until the file is
+// renamed or removed. The handler reads only Pending slots, through lock-free atomics.
+constexpr int kFree = 0, kFilling = 1, kPending = 2;
+struct PendingSlot {
+  std::atomic<int> state{kFree};
+  char path[PATH_MAX]{};
+};
+static_assert(std::atomic<int>::is_always_lock_free, "the signal handler reads the slots' states");
+constexpr std::size_t kPendingSlots = 32;
+std::array<PendingSlot, kPendingSlots> pendingSlots;
+
+extern "C" void removePendingAndReraise(int sig) {
+  for (PendingSlot& slot : pendingSlots)
+    if (slot.state.load(std::memory_order_acquire) == kPending) unlink(slot.path);
+  // SA_RESETHAND made the disposition the default again; the signal is blocked until the
+  // handler returns, then ends the process as if no handler had been installed.
+  raise(sig);
+}
+
+// One temporary file's slot while it may exist: the name is registered before the file is
+// created (a signal in between finds no file to remove) and released once it is renamed or
+// removed. With every slot taken (32 writes at once) the file is written unregistered.
+class PendingTemporary {
+public:
+  PendingTemporary() {
+    for (PendingSlot& slot : pendingSlots) {
+      int free = kFree;
+      if (slot.state.compare_exchange_strong(free, kFilling, std::memory_order_acq_rel)) {
+        m_slot = &slot;
+        return;
+      }
+    }
+  }
+  PendingTemporary(const PendingTemporary&) = delete;
+  PendingTemporary& operator=(const PendingTemporary&) = delete;
+  ~PendingTemporary() { release(); }
+  // `name` is the file about to be created (or the next one tried).
+  void set(const std::string& name) {
+    if (m_slot == nullptr) return;
+    m_slot->state.store(kFilling, std::memory_order_release);
+    if (name.size() >= sizeof m_slot->path) return;  // too long for the table: not removed on a signal
+    std::memcpy(m_slot->path, name.c_str(), name.size() + 1);
+    m_slot->state.store(kPending, std::memory_order_release);
+  }
+  void release() {
+    if (m_slot != nullptr) m_slot->state.store(kFree, std::memory_order_release);
+    m_slot = nullptr;
+  }
+
+private:
+  PendingSlot* m_slot = nullptr;
+};
+
+// A new file beside `target` with a name no other writer uses, created with `mode`; its name
+// registered in `pending` first.
+int createTemporary(const fs::path& target, mode_t mode, std::string& name, PendingTemporary& pending) {
   static std::atomic<unsigned> counter{0};
   const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
   for (int attempt = 0; attempt < 100; ++attempt) {
     name = (folder / (target.filename().string() + ".linkwright-tmp." + std::to_string(getpid()) + "." +
                       std::to_string(counter++)))
                .string();
+    pending.set(name);
     const int fd = open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, mode);
     if (fd >= 0 || errno != EEXIST) return fd;
   }
@@ -129,6 +188,19 @@ std::optional<std::string> writeWholeStream(const std::string& path, const Strea
 
 }  // namespace
 
+void removeTemporaryFilesOnSignals() {
+  for (const int sig : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction current {};
+    if (sigaction(sig, nullptr, &current) != 0 || current.sa_handler != SIG_DFL) continue;
+    struct sigaction removing {};
+    removing.sa_handler = removePendingAndReraise;
+    removing.sa_flags = SA_RESETHAND;
+    sigemptyset(&removing.sa_mask);
+    for (const int other : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&removing.sa_mask, other);
+    sigaction(sig, &removing, nullptr);
+  }
+}
+
 Error outputError(const std::string& path, const std::string& why) {
   return Error{ErrorCode::InvalidValue, "output", "cannot write " + path + ": " + why};
 }
@@ -155,8 +227,9 @@ std::optional<Error> writeFileSafely(const std::string& path, const FileWriter& 
     return std::nullopt;
   }
   std::string temp;
+  PendingTemporary pending;
   // A replaced file keeps its permissions; a new one gets the umask's.
-  const int fd = createTemporary(*target, exists ? (st.st_mode & 07777) : 0666, temp);
+  const int fd = createTemporary(*target, exists ? (st.st_mode & 07777) : 0666, temp, pending);
   if (fd < 0) return outputError(path, reason(errno));
   if (exists) fchmod(fd, st.st_mode & 07777);  // the umask narrowed what open() gave it
   close(fd);

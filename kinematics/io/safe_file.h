@@ -10,7 +10,8 @@
 // - a target that is not a regular file (a device such as /dev/null or /dev/stdout, a FIFO, a
 //   terminal) is written through, never replaced;
 // - a folder is refused.
-// Errors name the path and the reason (field "output").
+// Errors name the path and the reason (field "output"). A process that installs
+// removeTemporaryFilesOnSignals() also loses no temporary file to Ctrl+C, SIGTERM or SIGHUP.
 
 #include "kinematics/model/result.h"
 
@@ -41,6 +42,14 @@ std::optional<Error> writeStreamSafely(const std::string& path, const StreamWrit
 
 /// Writes `contents` to `path`, as above.
 std::optional<Error> writeFileSafely(const std::string& path, std::string_view contents);
+
+/// Makes SIGINT, SIGTERM and SIGHUP remove the temporary files being written (the old files
+/// stay as they were) and then end the process of that signal, as its default disposition
+/// would, so the exit status is the signal's. A signal that is ignored or handled already is
+/// left as it is (nohup's SIGHUP stays ignored). For a program's main (the CLI's): the handler
+/// is process-wide. The pending names are a fixed table of C strings, so the handler only reads
+/// them and calls unlink(), both async-signal-safe.
+void removeTemporaryFilesOnSignals();
 
 /// The Error for `path`: "cannot write PATH: WHY".
 Error outputError(const std::string& path, const std::string& why);

@@ -221,11 +221,13 @@ private:
 };
 
 std::optional<Error> checkOptions(const OptimiseOptions& o) {
-  if (o.evaluations < 10 || o.evaluations > 1000000)
-    return invalid("evaluations",
-                   "evaluations must be between 10 and 1000000 (got " + std::to_string(o.evaluations) + ")");
-  if (o.starts < 1 || o.starts > 1000)
-    return invalid("starts", "starts must be between 1 and 1000 (got " + std::to_string(o.starts) + ")");
+  if (o.evaluations < kMinOptimiseEvaluations || o.evaluations > kMaxOptimiseEvaluations)
+    return invalid("evaluations", "evaluations must be between " + std::to_string(kMinOptimiseEvaluations) + " and " +
+                                      std::to_string(kMaxOptimiseEvaluations) + " (got " +
+                                      std::to_string(o.evaluations) + ")");
+  if (o.starts < kMinOptimiseStarts || o.starts > kMaxOptimiseStarts)
+    return invalid("starts", "starts must be between " + std::to_string(kMinOptimiseStarts) + " and " +
+                                 std::to_string(kMaxOptimiseStarts) + " (got " + std::to_string(o.starts) + ")");
   return std::nullopt;
 }
 

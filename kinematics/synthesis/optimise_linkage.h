@@ -46,13 +46,20 @@ inline constexpr std::uint32_t kDefaultOptimiseSeed = 46;
 inline constexpr int kDefaultOptimiseEvaluations = 1500;
 /// The default number of starts, the design itself the first.
 inline constexpr int kDefaultOptimiseStarts = 4;
+/// The evaluation budgets accepted: enough for a simplex to move, and at most what finishes.
+inline constexpr int kMinOptimiseEvaluations = 10;
+inline constexpr int kMaxOptimiseEvaluations = 1000000;
+/// The numbers of starts accepted.
+inline constexpr int kMinOptimiseStarts = 1;
+inline constexpr int kMaxOptimiseStarts = 1000;
 
 /// How hard to search.
 struct OptimiseOptions {
-  std::uint32_t seed = kDefaultOptimiseSeed;      ///< std::mt19937's and NLopt's
-  int evaluations = kDefaultOptimiseEvaluations;  ///< designs measured in all, in [10, 1000000]
-  int starts = kDefaultOptimiseStarts;            ///< Nelder–Mead runs, in [1, 1000]
-  bool recordEvaluations = false;                 ///< keep every candidate's dimensions (tests)
+  std::uint32_t seed = kDefaultOptimiseSeed;  ///< std::mt19937's and NLopt's
+  int evaluations =
+      kDefaultOptimiseEvaluations;      ///< designs measured in all, in [10, 1000000] (kMin/kMaxOptimiseEvaluations)
+  int starts = kDefaultOptimiseStarts;  ///< Nelder–Mead runs, in [1, 1000] (kMin/kMaxOptimiseStarts)
+  bool recordEvaluations = false;       ///< keep every candidate's dimensions (tests)
   bool operator==(const OptimiseOptions&) const = default;
 };
 

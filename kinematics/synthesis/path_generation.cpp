@@ -332,10 +332,12 @@ struct Normalised {
   double scale = 0.0;
   std::vector<Eigen::Vector2d> targets;
   Timing timing;
+  std::uint64_t fingerprint = 0;  // the search's (pathSearchFingerprint)
 };
 
-Normalised normalised(const PathTarget& target) {
+Normalised normalised(const PathTarget& target, const PathOptions& options) {
   Normalised n;
+  n.fingerprint = pathSearchFingerprint(target, options);
   std::tie(n.centre, n.scale) = boundingBox(target.points);
   for (const Eigen::Vector2d& p : target.points) n.targets.push_back((p - n.centre) / n.scale);
   if (!target.timing.empty()) {
@@ -357,6 +359,7 @@ PathStartBlock runBlock(const Normalised& n, const PathOptions& options, int blo
   const auto began = Clock::now();
   PathStartBlock out;
   out.block = block;
+  out.search = n.fingerprint;
   const int first = block * kPathStartsPerBlock;
   const int count = std::min(kPathStartsPerBlock, options.starts - first);
   for (int s = first; s < first + count; ++s) {
@@ -417,24 +420,15 @@ Result<PathStartBlock> runPathStartBlock(const PathTarget& target, const PathOpt
   if (block < 0 || block >= blocks)
     return invalid(
         "block", "block must be between 0 and " + std::to_string(blocks - 1) + " (got " + std::to_string(block) + ")");
-  return runBlock(normalised(target), options, block, cancel, progress);
+  return runBlock(normalised(target, options), options, block, cancel, progress);
 }
 
 Result<PathSynthesis> pathSynthesisFromBlocks(const PathTarget& target, const PathOptions& options,
                                               const DefectBounds& bounds, std::vector<PathStartBlock> blocks) {
   if (auto e = checkTargets(target)) return *e;
   if (auto e = checkOptions(options)) return *e;
-  const int count = pathStartBlockCount(options);
-  std::vector<bool> seen(static_cast<std::size_t>(count), false);
-  for (const PathStartBlock& b : blocks) {
-    if (b.block < 0 || b.block >= count)
-      return invalid("blocks", "a block numbered " + std::to_string(b.block) + " is not one of this search's 0 to " +
-                                   std::to_string(count - 1));
-    if (seen[static_cast<std::size_t>(b.block)])
-      return invalid("blocks", "block " + std::to_string(b.block) + " is given twice");
-    seen[static_cast<std::size_t>(b.block)] = true;
-  }
-  return merged(target, normalised(target), options, bounds, std::move(blocks));
+  if (auto e = checkPathStartBlocks(target, options, blocks)) return *e;
+  return merged(target, normalised(target, options), options, bounds, std::move(blocks));
 }
 
 Result<PathSynthesis> synthesisePath(const PathTarget& target, const PathOptions& options, const DefectBounds& bounds,
@@ -445,7 +439,7 @@ Result<PathSynthesis> synthesisePath(const PathTarget& target, const PathOptions
   if (auto e = checkTargets(target)) return *e;
   if (auto e = checkOptions(options)) return *e;
 
-  const Normalised n = normalised(target);
+  const Normalised n = normalised(target, options);
   std::vector<PathStartBlock> blocks;
   int done = 0;
   for (int b = 0; b < pathStartBlockCount(options); ++b) {

@@ -43,6 +43,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -121,6 +122,7 @@ struct PathMinimum {
 /// A block's outcome.
 struct PathStartBlock {
   int block = 0;                  ///< 0-based: starts block·kPathStartsPerBlock onwards
+  std::uint64_t search = 0;       ///< pathSearchFingerprint of the search it is a block of
   int startsRun = 0;              ///< starts completed
   int startsNotAssembled = 0;     ///< starts whose minimum does not assemble at every target
   bool cancelled = false;         ///< stopped by the cancel flag before its last start
@@ -130,13 +132,27 @@ struct PathStartBlock {
 /// How many blocks options.starts makes.
 int pathStartBlockCount(const PathOptions& options);
 
+/// A fingerprint of the search (every target, timing and option, bit for bit; FNV-1a, so the
+/// same on every machine): a block carries its search's, so a block of another search is
+/// refused rather than merged (path_start_blocks.cpp).
+std::uint64_t pathSearchFingerprint(const PathTarget& target, const PathOptions& options);
+
+/// Whether `blocks` can be merged as blocks of this search: each one of its blocks, given once,
+/// of this search's fingerprint, its counts within the block's size and its minima one crank
+/// angle per target, from the block's own starts, finite (a block may arrive pickled from
+/// anywhere). For a search synthesisePath accepts; Error (field "blocks") saying which block
+/// and why.
+std::optional<Error> checkPathStartBlocks(const PathTarget& target, const PathOptions& options,
+                                          const std::vector<PathStartBlock>& blocks);
+
 /// Runs block `block` of the search (errors as synthesisePath's, and "block" outside
 /// [0, pathStartBlockCount)). `progress` gets the block's starts done and its size.
 Result<PathStartBlock> runPathStartBlock(const PathTarget& target, const PathOptions& options, int block,
                                          const std::atomic<bool>* cancel = nullptr, const PathProgress& progress = {});
 
 /// The search's outcome from its blocks, merged in block order (any order given); a missing
-/// block counts as cancelled. Candidates measured and checked as synthesisePath's.
+/// block counts as cancelled. Candidates measured and checked as synthesisePath's. Blocks that
+/// are not this search's are refused (checkPathStartBlocks).
 Result<PathSynthesis> pathSynthesisFromBlocks(const PathTarget& target, const PathOptions& options,
                                               const DefectBounds& bounds, std::vector<PathStartBlock> blocks);
 

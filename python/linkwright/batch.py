@@ -50,6 +50,9 @@ def _client(client):
             client = get_client()
         except ValueError:  # no Client yet
             client = Client()
+    elif not isinstance(client, Client):
+        raise TypeError("client must be a dask.distributed.Client, a scheduler's address "
+                        f"(\"tcp://host:8786\") or None (got {type(client).__name__} {client!r})")
     yield client
 
 

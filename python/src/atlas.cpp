@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+LINKWRIGHT_PYTHON_REFUSE_UNINITIALISED(linkwright::kinematics::AtlasAxes)
+
 namespace linkwright::python {
 namespace {
 

@@ -1,9 +1,13 @@
 #pragma once
 // The parts of `import linkwright` each file binds (module.cpp calls them in turn).
 
+#include "python/src/initialised.h"
 #include "python/src/linkage.h"
 
 #include <pybind11/pybind11.h>
+
+// A Linkage made by __new__ alone is refused, not used (initialised.h).
+LINKWRIGHT_PYTHON_REFUSE_UNINITIALISED(linkwright::python::Linkage)
 
 namespace linkwright::python {
 

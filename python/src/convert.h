@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <exception>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -28,6 +29,14 @@ template <typename T>
 T valueOrThrow(kinematics::Result<T> result) {
   if (!result) throw CoreError(result.error());
   return std::move(result).value();
+}
+
+/// `text` as a Python str, a byte that is not UTF-8 shown as \xNN (a path given as bytes, say):
+/// pybind11's own conversion would raise UnicodeDecodeError instead of the refusal.
+inline py::str text(const std::string& text) {
+  PyObject* decoded = PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()), "backslashreplace");
+  if (decoded == nullptr) throw py::error_already_set();
+  return py::reinterpret_steal<py::str>(decoded);
 }
 
 inline py::object number(double value) {

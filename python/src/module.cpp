@@ -180,8 +180,8 @@ PYBIND11_MODULE(_linkwright, module) {
       if (thrown) std::rethrow_exception(thrown);
     } catch (const CoreError& e) {
       const auto type = py::reinterpret_borrow<py::object>(error);
-      py::object instance = type(e.error.message);
-      instance.attr("field") = e.error.field;
+      py::object instance = type(lp::text(e.error.message));
+      instance.attr("field") = lp::text(e.error.field);
       instance.attr("code") = codeName(e.error.code);
       PyErr_SetObject(error.ptr(), instance.ptr());
     }
@@ -200,7 +200,7 @@ PYBIND11_MODULE(_linkwright, module) {
       .def_property_readonly(
           "kind", [](const lp::Linkage& l) { return l.kind; }, "Its label: 'four-bar', 'slider-crank', …")
       .def_property_readonly(
-          "source", [](const lp::Linkage& l) { return l.source; }, "Where it came from, as messages name it.")
+          "source", [](const lp::Linkage& l) { return lp::text(l.source); }, "Where it came from, as messages name it.")
       .def_property_readonly(
           "length_unit", [](const lp::Linkage& l) { return l.mechanism.lengthUnit; }, "The unit of every length.")
       .def_property_readonly(
@@ -225,7 +225,8 @@ PYBIND11_MODULE(_linkwright, module) {
       .def(py::pickle([](const lp::Linkage& l) { return py::bytes(lp::linkageState(l)); },
                       [](const py::bytes& state) { return valueOrThrow(lp::linkageFromState(state)); }))
       .def("__repr__", [](const lp::Linkage& l) {
-        return "<linkwright.Linkage " + (l.kind.empty() ? std::string("linkage") : l.kind) + " from " + l.source + ">";
+        return lp::text("<linkwright.Linkage " + (l.kind.empty() ? std::string("linkage") : l.kind) + " from " +
+                        l.source + ">");
       });
   defSweep(linkage, "sweep", &sweepColumns,
            "Sweeps the linkage over an input grid and returns its table as a dict of column name to "

@@ -17,6 +17,8 @@
 #include <utility>
 #include <vector>
 
+LINKWRIGHT_PYTHON_REFUSE_UNINITIALISED(linkwright::kinematics::PathStartBlock)
+
 namespace linkwright::python {
 namespace {
 
@@ -63,6 +65,14 @@ struct PathSearch {
   }
   k::PathOptions options() const { return {starts, seed, static_cast<std::size_t>(keep), maxEvaluations}; }
 };
+
+}  // namespace
+}  // namespace linkwright::python
+
+LINKWRIGHT_PYTHON_REFUSE_UNINITIALISED(linkwright::python::PathSearch)
+
+namespace linkwright::python {
+namespace {
 
 PathSearch pathSearch(std::vector<std::pair<double, double>> points, std::optional<std::vector<double>> timingDeg,
                       std::string timingFrom, bool fullRotation, std::string unit, int starts, std::uint32_t seed,
@@ -129,18 +139,19 @@ py::tuple blockState(const k::PathStartBlock& b) {
   for (const k::PathMinimum& m : b.kept)
     minima.append(py::make_tuple(m.o2.x(), m.o2.y(), m.beta, m.frame, m.crank, m.coupler, m.rocker, m.along, m.across,
                                  m.branch == k::Branch::Open ? 0 : 1, m.crankAngles, m.worst, m.start, m.seconds));
-  return py::make_tuple(b.block, b.startsRun, b.startsNotAssembled, b.cancelled, minima);
+  return py::make_tuple(b.block, b.search, b.startsRun, b.startsNotAssembled, b.cancelled, minima);
 }
 
-k::PathStartBlock blockFromState(const py::tuple& t) {
-  if (t.size() != 5) throw std::runtime_error("linkwright.PathStartBlock: not a pickled block");
+k::PathStartBlock blockFromTuple(const py::tuple& t) {
   k::PathStartBlock b;
   b.block = t[0].cast<int>();
-  b.startsRun = t[1].cast<int>();
-  b.startsNotAssembled = t[2].cast<int>();
-  b.cancelled = t[3].cast<bool>();
-  for (const py::handle item : t[4].cast<py::list>()) {
+  b.search = t[1].cast<std::uint64_t>();
+  b.startsRun = t[2].cast<int>();
+  b.startsNotAssembled = t[3].cast<int>();
+  b.cancelled = t[4].cast<bool>();
+  for (const py::handle item : t[5].cast<py::list>()) {
     const auto m = item.cast<py::tuple>();
+    if (m.size() != 14) throw py::cast_error("a minimum of 14 numbers");
     k::PathMinimum x;
     x.o2 = {m[0].cast<double>(), m[1].cast<double>()};
     x.beta = m[2].cast<double>();
@@ -158,6 +169,21 @@ k::PathStartBlock blockFromState(const py::tuple& t) {
     b.kept.push_back(std::move(x));
   }
   return b;
+}
+
+// A pickle that is not a block's state (another version's, or edited) is refused with a
+// sentence; one that is a block's may still not be this search's, which merge() refuses.
+k::PathStartBlock blockFromState(const py::tuple& t) {
+  const CoreError notABlock(k::Error{k::ErrorCode::InvalidValue, "state",
+                                     "linkwright.PathStartBlock: not a pickled block of this version "
+                                     "(a tuple of block, search, starts run, starts not assembled, cancelled, "
+                                     "minima)"});
+  if (t.size() != 6) throw notABlock;
+  try {
+    return blockFromTuple(t);
+  } catch (const py::cast_error&) {
+    throw notABlock;
+  }
 }
 
 }  // namespace

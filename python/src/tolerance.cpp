@@ -31,6 +31,27 @@ k::Error spelled(k::Error e) {
   return e;
 }
 
+// Entry `index` of per_dimension as a name and a ±: a str and a number, else refused naming
+// the entry (pybind11's own refusal is a RuntimeError "Unable to cast").
+std::pair<std::string, double> perDimensionEntry(std::size_t index, py::handle name, py::handle t) {
+  const auto refuse = [&] {
+    throw CoreError(k::Error{k::ErrorCode::InvalidValue, "per_dimension[" + std::to_string(index) + "]",
+                             "per_dimension maps a dimension's name (a str) to its ± (a number, in the length unit); "
+                             "entry " +
+                                 std::to_string(index) + " is " + std::string(py::repr(name)) + ": " +
+                                 std::string(py::repr(t))});
+  };
+  if (!py::isinstance<py::str>(name) || py::isinstance<py::str>(t) || py::isinstance<py::bytes>(t) ||
+      py::isinstance<py::bool_>(t))
+    refuse();
+  try {
+    return {name.cast<std::string>(), t.cast<double>()};
+  } catch (const py::cast_error&) {
+    refuse();
+  }
+  return {};
+}
+
 py::dict study(const Linkage& linkage, const SweepOptions& grid, double tolerance, long long samples,
                std::uint64_t seed, long long firstSample, const std::vector<std::pair<std::string, double>>& own) {
   // Checked as typed, before they become unsigned.
@@ -95,7 +116,7 @@ void bindTolerance(py::class_<Linkage>& linkage) {
          std::optional<double> omega, std::optional<double> alpha, const py::dict& perDimension) {
         // The dict in its own order, so that a refusal's index is the entry's.
         std::vector<std::pair<std::string, double>> own;
-        for (const auto& [name, t] : perDimension) own.emplace_back(name.cast<std::string>(), t.cast<double>());
+        for (const auto& [name, t] : perDimension) own.push_back(perDimensionEntry(own.size(), name, t));
         return study(l, {startDeg, stopDeg, samples, omega, alpha}, tolerance, mcSamples, seed, firstSample, own);
       },
       py::arg("tolerance"), py::kw_only(), py::arg("mc_samples") = 1000, py::arg("seed") = k::kDefaultToleranceSeed,

@@ -113,3 +113,15 @@ def test_a_bad_batch_request_is_refused_naming_the_keyword(client, call, field):
     with pytest.raises(linkwright.Error) as refused:
         call(client)
     assert refused.value.field == field
+
+
+@pytest.mark.parametrize("call", [
+    lambda c: linkwright.batch.atlas(linkwright.Atlas(**SMALL), c),
+    lambda c: linkwright.batch.path_synthesis(linkwright.PathSearch(POINTS), c),
+    lambda c: linkwright.batch.tolerance_study(linkwright.example("thesis-crank-rocker"), 0.1, c, mc_samples=10),
+])
+@pytest.mark.parametrize("not_a_client", [42, object(), ["tcp://host:8786"]])
+def test_a_client_that_is_not_one_is_refused_naming_the_argument(call, not_a_client):
+    with pytest.raises(TypeError, match=r"^client must be a dask\.distributed\.Client, a scheduler's address "
+                                        r"\(\"tcp://host:8786\"\) or None \(got "):
+        call(not_a_client)

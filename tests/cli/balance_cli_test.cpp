@@ -131,6 +131,13 @@ TEST_CASE("balance --spring-search adds the spring's two ends and a spring at le
        "--spring-search: the spring's link must be one of the linkage's (crank, coupler, "
        "rocker); got \"boom\""},
       {{"--spring-search", "rocker", "--spring", "rocker:C,O2"}, "not both"},
+      // A counterweight's options, which a spring balance would ignore.
+      {{"--spring-search", "crank", "--radius", "3"},
+       "linkwright-cli: --radius sets the counterweights' distance from their pivots, and a spring balance "
+       "(--spring-search) makes no counterweight: give one or the other\n"},
+      {{"--spring", "rocker:C,O2", "--fraction", "0.5"},
+       "linkwright-cli: --fraction sets the share of the reciprocating mass, and a spring balance (--spring) makes "
+       "no counterweight: give one or the other\n"},
   };
   for (const auto& [options, message] : refused) {
     std::vector<std::string> args{"balance", "--example", "funsho-fourbar", "-o", (dir / "bad.linkwright").string()};

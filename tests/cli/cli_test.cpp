@@ -109,6 +109,9 @@ TEST_CASE("bad usage exits 2 with a message naming the option and the reason", "
       {Args{"analyze", "--fourbar", "60,25,70,45", "--rpm", "fast"}, "--rpm: 'fast' is not a number"},
       {Args{"analyze", "--fourbar", "60,25,70,45", "--rpm", "nan"},
        "--rpm must be finite and within ±9549296 rev/min, which is 1e6 rad/s (got undefined)"},
+      // polygon's --rpm in rev/min, as analyze's, not converted to rad/s before it is checked.
+      {Args{"polygon", "--example", "thesis-crank-rocker", "--at", "30", "--rpm", "1e12"},
+       "--rpm must be finite and within ±9549296 rev/min, which is 1e6 rad/s (got 1e+12)"},
       {Args{"analyze", "--fourbar", "60,25,70,45", "--omega", "inf"},
        "--omega must be finite and within ±1e6 rad/s (got undefined)"},
       {Args{"analyze", "--fourbar", "60,25,70,45", "--alpha", "-inf"},

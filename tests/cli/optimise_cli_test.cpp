@@ -159,10 +159,33 @@ TEST_CASE("optimise refuses bad requests naming the option and writes nothing", 
           "--fix-pivots: 'C' is not a ground pivot of the linkage");
   refused({"--example", "thesis-crank-rocker", "--objective", "transmission", "--length-range", "120"},
           "--length-range must be above 0 and at most 95, a percentage of each length (got 120)");
+  // So small that it is 0 as a fraction: refused as typed, not as the core's "lengthRange".
+  refused({"--example", "thesis-crank-rocker", "--objective", "transmission", "--length-range", "5e-324"},
+          "--length-range must be above 0 and at most 95, a percentage of each length (got 5e-324)");
   refused({"--example", "thesis-crank-rocker", "--objective", "transmission", "--evaluations", "3"},
           "--evaluations must be between 10 and 1000000 (got 3)");
-  refused({"--example", "thesis-crank-rocker", "--objective", "transmission", "--path-measure", "mean"},
+  const std::string targets = (dir / "targets.csv").string();
+  REQUIRE_FALSE(k::io::writeFileSafely(targets, "10,20\n30,40\n"));
+  refused({"--example", "thesis-crank-rocker", "--objective", "path:" + targets, "--path-measure", "mean"},
           "--path-measure must be worst or rms (got 'mean')");
+  // Counts beyond an int are refused as typed, not wrapped (4294968796 ran 1500 designs).
+  refused({"--example", "thesis-crank-rocker", "--objective", "transmission", "--evaluations", "4294968796"},
+          "--evaluations must be between 10 and 1000000 (got 4294968796)");
+  refused({"--example", "thesis-crank-rocker", "--objective", "transmission", "--evaluations", "1000001"},
+          "--evaluations must be between 10 and 1000000 (got 1000001)");
+  refused({"--example", "thesis-crank-rocker", "--objective", "transmission", "--evaluations", "99999999999999999999"},
+          "--evaluations must be between 10 and 1000000 (got 99999999999999999999)");
+  refused({"--example", "thesis-crank-rocker", "--objective", "transmission", "--starts", "4294967298"},
+          "--starts must be between 1 and 1000 (got 4294967298)");
+  refused({"--example", "thesis-crank-rocker", "--objective", "transmission", "--starts", "-4294967295"},
+          "--starts must be between 1 and 1000 (got -4294967295)");
+  refused({"--example", "thesis-crank-rocker", "--objective", "transmission", "--starts", "2.5"},
+          "--starts: '2.5' is not a whole number");
+  // The options of a path objective with another objective would be ignored.
+  refused({"--example", "thesis-crank-rocker", "--objective", "transmission", "--point", "nosuch"},
+          "--point goes with --objective path:TARGETS.csv (got --objective transmission)");
+  refused({"--example", "thesis-crank-rocker", "--objective", "peak-alpha:coupler", "--path-measure", "rms"},
+          "--path-measure goes with --objective path:TARGETS.csv (got --objective peak-alpha:coupler)");
   refused({"--example", "thesis-crank-rocker", "--objective", "path:" + (dir / "none.csv").string()},
           "--objective: " + (dir / "none.csv").string() + ": cannot be opened for reading: No such file or directory");
 

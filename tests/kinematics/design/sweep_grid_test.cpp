@@ -67,6 +67,25 @@ TEST_CASE("without a step of its own the way out of a step too small is a sample
   CHECK(python.error().message.rfind("samples is needed: the linkage's step would give ", 0) == 0);
 }
 
+TEST_CASE("a step too small to count its rows in a double says how many rows, not undefined", "[sweep_grid]") {
+  SweepGridRequest request;
+  request.step = 1e-320;  // 360° / 1e-320 is beyond a double
+  const auto cli = sweepGridSpec(request, {}, kOptions);
+  REQUIRE_FALSE(cli.ok());
+  CHECK(cli.error().field == "step");
+  CHECK(cli.error().message == "--step is too small: it would give about 3.6e322 rows (at most 10000000)");
+  request.step = 1e-9;  // a count a double holds: as it is
+  const auto counted = sweepGridSpec(request, {}, kOptions);
+  REQUIRE_FALSE(counted.ok());
+  CHECK(counted.error().message == "--step is too small: it would give 3.6e+11 rows (at most 10000000)");
+  SweepGrid fine;
+  fine.stepDeg = 1e-320;
+  const auto python = sweepGridSpec({}, fine, kKeywords);
+  REQUIRE_FALSE(python.ok());
+  CHECK(python.error().message ==
+        "samples is needed: the linkage's step would give about 3.6e322 rows (at most 10000000)");
+}
+
 TEST_CASE("a motion law in time refuses a range, pointing to a law only where one can be given", "[sweep_grid]") {
   std::optional<Example> timed;
   for (const Example& x : examples())

@@ -79,3 +79,18 @@ TEST_CASE("jsonQuote escapes what JSON requires", "[io][json]") {
   CHECK(back->get<std::string>() == "tab\there \"q\" \x1f");
   CHECK(jsonQuote("bad\xff") == "\"bad\xef\xbf\xbd\"");  // invalid UTF-8 written as U+FFFD
 }
+
+TEST_CASE("a document that is not UTF-8 is refused with a message that is", "[io][json][errors]") {
+  // nlohmann quotes the bytes it last read; raw, they made Python's load() raise
+  // UnicodeDecodeError instead of the refusal.
+  const auto parsed = parseJson("{\"format\": \"caf\xE9\"}");
+  REQUIRE_FALSE(parsed.ok());
+  const std::string& m = parsed.error().message;
+  CHECK(m.find("ill-formed UTF-8") != std::string::npos);
+  CHECK(m.find("caf\\xE9") != std::string::npos);
+  CHECK(m.find('\xE9') == std::string::npos);
+  // Valid UTF-8 in a message is kept as it is.
+  const auto euro = parseJson("{\"a\": \"€\" x}");
+  REQUIRE_FALSE(euro.ok());
+  CHECK(euro.error().message.find("\\x") == std::string::npos);
+}
