@@ -437,11 +437,13 @@ void MainWindow::buildNewMenu(QMenu* menu) {
 void MainWindow::buildExamplesMenu(QMenu* menu) {
   menu->setToolTipsVisible(true);
   const auto addExample = [this, menu](const std::string& name, const std::string& description) {
-    QAction* action = menu->addAction(exampleMenuText(description), this, [this, name] {
+    // The name, as the CLI's --example and the window's title give it; what it is, which does
+    // not fit a menu, in the tooltip and the status bar.
+    QAction* action = menu->addAction(QString::fromStdString(name), this, [this, name] {
       if (maybeSave()) newDocument(*k::designForExample(name), QString::fromStdString(name));
     });
     action->setObjectName(QString::fromStdString("example_" + name));
-    action->setToolTip(QString::fromStdString(name + ": " + description));
+    action->setToolTip(QString::fromStdString(description));
     action->setStatusTip(QString::fromStdString(description));
   };
   const std::vector<k::Example> examples = k::examples();
