@@ -107,8 +107,10 @@ case "$action" in
         mount --bind "$compiler_cache" "$root/var/cache/ccache"
         # CMake (3.17 and later) takes the launcher from the environment, so the commands run
         # in the root, the README'"'"'s among them, stay verbatim.
+        # CCACHE_BASEDIR: paths under /src hashed relative to the compiling folder, so a second
+        # build folder of the same tree (.ci/run'"'"'s build-venv) is compiled from the cache.
         launcher=(CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache
-          CCACHE_DIR=/var/cache/ccache CCACHE_COMPILERCHECK=content CCACHE_MAXSIZE=8G)
+          CCACHE_DIR=/var/cache/ccache CCACHE_BASEDIR=/src CCACHE_COMPILERCHECK=content CCACHE_MAXSIZE=8G)
       fi
       exec chroot "$root" /usr/bin/env -i HOME=/root LANG=C.UTF-8 TERM=dumb CI="${CI:-}" \
         PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin "${launcher[@]}" \

@@ -437,11 +437,13 @@ void MainWindow::buildNewMenu(QMenu* menu) {
 void MainWindow::buildExamplesMenu(QMenu* menu) {
   menu->setToolTipsVisible(true);
   const auto addExample = [this, menu](const std::string& name, const std::string& description) {
-    QAction* action = menu->addAction(exampleMenuText(description), this, [this, name] {
+    // The name, as the CLI's --example and the window's title give it; what it is, which does
+    // not fit a menu, in the tooltip and the status bar.
+    QAction* action = menu->addAction(QString::fromStdString(name), this, [this, name] {
       if (maybeSave()) newDocument(*k::designForExample(name), QString::fromStdString(name));
     });
     action->setObjectName(QString::fromStdString("example_" + name));
-    action->setToolTip(QString::fromStdString(name + ": " + description));
+    action->setToolTip(QString::fromStdString(description));
     action->setStatusTip(QString::fromStdString(description));
   };
   const std::vector<k::Example> examples = k::examples();
@@ -469,6 +471,8 @@ void MainWindow::openAttachDyadDialog() {
 
 void MainWindow::newDocument(const k::Design& design, const QString& name) {
   m_unsavedName = name.isEmpty() ? QString::fromStdString(design.kind) : name;
+  const auto example = name.isEmpty() ? std::nullopt : k::findExample(name.toStdString());
+  m_unsavedDescription = example ? example->description : std::string();
   m_animator->pause();
   m_plots->clearComparison();  // another tool's rows belong to the linkage they were compared with
   m_document->reset(design);
@@ -715,9 +719,11 @@ bool MainWindow::exportReport(const QString& path, double at, double step, k::re
   const k::Design& design = m_document->design();
   const k::Mechanism& m = design.mechanism;
   k::report::ReportRequest request;
-  request.title =
-      m_document->filePath().isEmpty() ? design.kind : QFileInfo(m_document->filePath()).fileName().toStdString();
-  request.subtitle = design.kind;
+  // Named as the window's title names it: the file, else the example it was started from.
+  const bool saved = !m_document->filePath().isEmpty();
+  k::report::setReportHeading(request,
+                              (saved ? QFileInfo(m_document->filePath()).fileName() : m_unsavedName).toStdString(),
+                              saved ? std::string() : m_unsavedDescription, design.kind);
   request.date = QDateTime::currentDateTimeUtc().date().toString(Qt::ISODate).toStdString();
   request.grid = k::designSweepSpec(design);
   // On a time base both are seconds. Else a step is a difference of inputs: the display unit's

@@ -203,7 +203,8 @@ private:
   OptimiseWindow* m_optimise = nullptr;
   AtlasWindow* m_atlas = nullptr;
   bool m_presentation = false;
-  QString m_unsavedName;  ///< what the title calls a document not saved yet
+  QString m_unsavedName;             ///< what the title calls a document not saved yet
+  std::string m_unsavedDescription;  ///< the example's description, when it was started from one
   QFont m_normalFont;
 };
 

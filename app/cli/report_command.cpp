@@ -106,12 +106,14 @@ ExitCode runReport(const Invocation& inv, std::ostream& out, std::ostream& err) 
   const auto step = tableStep(inv, d);
   if (!step) return fail(step.error());
   k::report::ReportRequest request;
-  request.title = inv.documentPath ? std::filesystem::path(*inv.documentPath).filename().string()
-                  : inv.example    ? *inv.example
-                                   : "Four-bar " + k::formatShort(inv.fourBar->frame) + ", " +
-                                      k::formatShort(inv.fourBar->crank) + ", " + k::formatShort(inv.fourBar->coupler) +
-                                      ", " + k::formatShort(inv.fourBar->rocker) + " " + inv.lengthUnit;
-  request.subtitle = resolved->description.empty() ? resolved->kind : resolved->description;
+  k::report::setReportHeading(request,
+                              inv.documentPath ? std::filesystem::path(*inv.documentPath).filename().string()
+                              : inv.example    ? *inv.example
+                                               : "Four-bar " + k::formatShort(inv.fourBar->frame) + ", " +
+                                                  k::formatShort(inv.fourBar->crank) + ", " +
+                                                  k::formatShort(inv.fourBar->coupler) + ", " +
+                                                  k::formatShort(inv.fourBar->rocker) + " " + inv.lengthUnit,
+                              resolved->description, resolved->kind);
   request.date = today();
   request.grid = gridOf(d);
   request.tableStep = *step;

@@ -220,6 +220,13 @@ std::optional<Error> checkRequest(const Mechanism& m, const ReportRequest& reque
 
 }  // namespace
 
+void setReportHeading(ReportRequest& request, const std::string& name, const std::string& description,
+                      const std::string& kind) {
+  request.title = name;
+  request.subtitle = description.empty() ? kind : description;
+  if (request.subtitle == request.title) request.subtitle.clear();
+}
+
 Result<ReportContent> buildReport(const Mechanism& m, const LinkageDynamics& dynamics, const ReportRequest& request) {
   if (auto e = checkRequest(m, request)) return *e;
   ReportContent report;

@@ -133,6 +133,14 @@ struct ReportContent {
   std::vector<std::string> notes;     ///< toggles, inputs that do not assemble, locks
 };
 
+/// The heading of a report, one rule for the CLI's `report` and the designer's Report ▸ PDF:
+/// the title is `name`, what the linkage goes by (the document's file name, the example's
+/// name); the subtitle says what it is, the example's `description`, else the design's `kind`,
+/// and is left empty when it would only repeat the title (a new four-bar's report is headed
+/// "four-bar", not "four-bar" over "four-bar").
+void setReportHeading(ReportRequest& request, const std::string& name, const std::string& description,
+                      const std::string& kind);
+
 /// The report of `mechanism` (a valid one) with `dynamics` (may be empty). Fails, naming the
 /// field, on a time base, a table step that is not positive and finite, an input that cannot
 /// be assembled at `drawAt`, or forces that cannot be solved (a length unit forces cannot

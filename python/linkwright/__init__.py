@@ -29,6 +29,10 @@ from ._linkwright import (
     synthesize_slider_crank,
 )
 
+# A traceback names the refusal as it is imported, linkwright.Error (docs/python.md), not by
+# the extension it is defined in (linkwright._linkwright.Error); pickles name it so too.
+Error.__module__ = __name__
+
 __all__ = [
     "PATH_STARTS_PER_BLOCK",
     "Atlas",

@@ -67,6 +67,19 @@ bool hasRow(const std::string& text, const std::vector<std::string>& cells) {
   return false;
 }
 
+// Page 1's heading as read back: the title line, and what stands under it before the "Lab
+// report by Linkwright" line (a paragraph, so joined into one line).
+std::pair<std::string, std::string> pdfHeading(const fs::path& pdf) {
+  std::istringstream lines(capture(std::string(LINKWRIGHT_PDFTOTEXT) + " -f 1 -l 1 '" + pdf.string() + "' -"));
+  std::string line, title, subtitle;
+  while (std::getline(lines, line) && line.rfind("Lab report by Linkwright", 0) != 0) {
+    if (line.empty()) continue;
+    if (title.empty()) title = line;
+    else subtitle += (subtitle.empty() ? "" : " ") + line;
+  }
+  return {title, subtitle};
+}
+
 std::string fixed(double v) { return k::formatFixed(v, k::report::kTableDecimals); }
 
 // The thesis crank-rocker's sweep every 30° from the example's own speed: what the table shows.
@@ -114,6 +127,33 @@ TEST_CASE("report of the thesis crank-rocker holds the solver's table, pages and
                         fixed(r.linkAlpha[rocker][j])}));
   }
   fs::remove_all(dir);
+}
+
+TEST_CASE("report is headed by the example's or the document's name, what it is under it", "[cli][report]") {
+  const fs::path dir = scratchDir("report-heading");
+  const k::Example e = *k::findExample("thesis-crank-rocker");
+  REQUIRE(runCliCommand({"report", "--example", e.name, "-o", (dir / "example.pdf").string()}).code == 0);
+  CHECK(pdfHeading(dir / "example.pdf") == std::pair<std::string, std::string>{e.name, e.description});
+  CHECK_THAT(capture(std::string(LINKWRIGHT_PDFINFO) + " '" + (dir / "example.pdf").string() + "'"),
+             Catch::Contains("Title:") && Catch::Contains(e.name));
+  const std::string document = LINKWRIGHT_TEST_DOCUMENTS "/fourbar_v1.json";
+  REQUIRE(runCliCommand({"report", document, "-o", (dir / "document.pdf").string()}).code == 0);
+  CHECK(pdfHeading(dir / "document.pdf") == std::pair<std::string, std::string>{"fourbar_v1.json", "four-bar"});
+  REQUIRE(runCliCommand({"report", "--fourbar", "60,25,70,45", "-o", (dir / "lengths.pdf").string()}).code == 0);
+  // Lengths typed on the command line: the title says what it is, and nothing stands under it.
+  CHECK(pdfHeading(dir / "lengths.pdf") == std::pair<std::string, std::string>{"Four-bar 60, 25, 70, 45 mm", ""});
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a report's heading says what the linkage is under its name, never its name twice", "[cli][report]") {
+  k::report::ReportRequest request;
+  k::report::setReportHeading(request, "thesis-crank-rocker", "Crank-rocker, 60/25/70/45 mm", "four-bar");
+  CHECK((request.title == "thesis-crank-rocker" && request.subtitle == "Crank-rocker, 60/25/70/45 mm"));
+  k::report::setReportHeading(request, "lecture.linkwright", "", "four-bar");
+  CHECK((request.title == "lecture.linkwright" && request.subtitle == "four-bar"));
+  // A new four-bar is named after its kind: the heading is not "four-bar" over "four-bar".
+  k::report::setReportHeading(request, "four-bar", "", "four-bar");
+  CHECK((request.title == "four-bar" && request.subtitle.empty()));
 }
 
 TEST_CASE("report's content model holds the sweep's numbers and extremes' refined values", "[cli][report]") {

@@ -165,6 +165,11 @@ TEST_CASE("documents are saved as .linkwright and opened from .linkwright or .js
   CHECK(ui::withDocumentSuffix("/tmp/arm") == "/tmp/arm.linkwright");
   CHECK(ui::withDocumentSuffix("/tmp/arm.json") == "/tmp/arm.json");
   CHECK(ui::withDocumentSuffix("/tmp/v1.2/arm") == "/tmp/v1.2/arm.linkwright");
+  // A dot in the name is not an extension (issue 57: "0.0001" was saved without one).
+  CHECK(ui::withDocumentSuffix("/tmp/0.0001") == "/tmp/0.0001.linkwright");
+  CHECK(ui::withDocumentSuffix("/tmp/arm v1.2") == "/tmp/arm v1.2.linkwright");
+  CHECK(ui::withDocumentSuffix("/tmp/arm.LINKWRIGHT") == "/tmp/arm.LINKWRIGHT");
+  CHECK(ui::withDocumentSuffix("/tmp/arm.Json") == "/tmp/arm.Json");
   CHECK(ui::saveDocumentFilter().startsWith("Linkwright documents (*.linkwright)"));
   CHECK(ui::openDocumentFilter().contains("*.linkwright *.json"));
   // The content is the same JSON whatever the extension.

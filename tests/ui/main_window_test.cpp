@@ -41,6 +41,8 @@
 #include <QFile>
 #include <QImage>
 #include <QLegend>
+#include <QMenu>
+#include <QMenuBar>
 #include <QScatterSeries>
 #include <QTemporaryDir>
 #include <QTest>
@@ -194,6 +196,26 @@ TEST_CASE("the window starts on the thesis example and offers every example", "[
   window.newDocument(*kinematics::designForExample("alvi-fourbar"));
   CHECK(window.document()->fourBar()->lengths == kinematics::FourBarLengths{80, 20, 66, 56});
   CHECK(window.document()->undoStack()->count() == 0);
+}
+
+TEST_CASE("the Examples menu names each example, its description in the tooltip", "[ui][window]") {
+  ui::MainWindow window;
+  QMenu* examples = nullptr;
+  for (QAction* top : window.menuBar()->actions())
+    if (top->text().remove(QLatin1Char('&')) == QStringLiteral("Examples")) examples = top->menu();
+  REQUIRE(examples != nullptr);
+  CHECK(examples->toolTipsVisible());
+  for (const kinematics::Example& e : kinematics::examples()) {
+    INFO(e.name);
+    auto* action = window.findChild<QAction*>(QString::fromStdString("example_" + e.name));
+    REQUIRE(action != nullptr);
+    CHECK(examples->actions().contains(action));
+    // The whole name, as --example and the window's title give it; a description cut short
+    // ("…") told neither (issue 57).
+    CHECK(action->text() == QString::fromStdString(e.name));
+    CHECK(action->toolTip() == QString::fromStdString(e.description));
+    CHECK(action->statusTip() == QString::fromStdString(e.description));
+  }
 }
 
 TEST_CASE("canvas and plots export as PNG and SVG", "[ui][window][export]") {

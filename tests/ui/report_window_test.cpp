@@ -1,6 +1,7 @@
 // Report ▸ PDF: the designer writes the report `linkwright-cli report` writes (the same core
 // calls), read back with pdftotext; a step the core refuses writes nothing and says why.
 
+#include "ui/document/design_templates.h"
 #include "ui/document/mechanism_document.h"
 #include "ui/export/report_options_dialog.h"
 #include "ui/main_window.h"
@@ -8,6 +9,7 @@
 
 #include "app/cli/cli.h"
 #include "kinematics/design/design.h"
+#include "kinematics/design/examples.h"
 
 #include "tests/support/catch.h"
 
@@ -53,7 +55,42 @@ void writeBoth(ui::MainWindow& window, const QTemporaryDir& dir, const std::stri
   REQUIRE(cli::runCli(args, out, err) == 0);
 }
 
+// Page 1's heading: the title line and the lines under it before "Lab report by Linkwright".
+QStringList headingOf(const QString& pdf) {
+  QProcess p;
+  p.start(QStringLiteral(LINKWRIGHT_PDFTOTEXT), {QStringLiteral("-f"), QStringLiteral("1"), QStringLiteral("-l"),
+                                                 QStringLiteral("1"), pdf, QStringLiteral("-")});
+  REQUIRE(p.waitForFinished());
+  QStringList heading;
+  for (const QString& line : QString::fromUtf8(p.readAllStandardOutput()).split(QLatin1Char('\n'))) {
+    if (line.startsWith(QStringLiteral("Lab report by Linkwright"))) break;
+    if (!line.isEmpty()) heading << line;
+  }
+  return heading;
+}
+
 }  // namespace
+
+TEST_CASE("Report ▸ PDF is headed by the example's or the file's name, what it is under it", "[ui][window][report]") {
+  ui::MainWindow window;  // on its default example
+  QTemporaryDir dir;
+  const kinematics::Example thesis = *kinematics::findExample("thesis-crank-rocker");
+  REQUIRE(window.exportReport(dir.filePath("example.pdf"), 0.0, 30.0, kinematics::report::Paper::A4));
+  // (The description is one paragraph, which may wrap.)
+  const QStringList example = headingOf(dir.filePath("example.pdf"));
+  REQUIRE_FALSE(example.isEmpty());
+  CHECK(example.front() == QStringLiteral("thesis-crank-rocker"));
+  CHECK(example.mid(1).join(QLatin1Char(' ')) == QString::fromStdString(thesis.description));
+  // File ▸ New ▸ Four-bar: named after its kind, so no line under it repeats it (issue 57: the
+  // report was headed "four-bar" over "four-bar" whatever the document).
+  window.newDocument(ui::templateDesign(ui::designTemplates().front()));
+  REQUIRE(window.exportReport(dir.filePath("new.pdf"), 0.0, 30.0, kinematics::report::Paper::A4));
+  CHECK(headingOf(dir.filePath("new.pdf")) == QStringList{QString::fromStdString(window.document()->design().kind)});
+  REQUIRE(window.saveTo(dir.filePath("lecture.linkwright")));
+  REQUIRE(window.exportReport(dir.filePath("saved.pdf"), 0.0, 30.0, kinematics::report::Paper::A4));
+  CHECK(headingOf(dir.filePath("saved.pdf")) ==
+        QStringList{QStringLiteral("lecture.linkwright"), QString::fromStdString(window.document()->design().kind)});
+}
 
 TEST_CASE("Report ▸ PDF writes the table linkwright-cli report writes", "[ui][window][report]") {
   ui::MainWindow window;

@@ -50,14 +50,4 @@ QString kindDisplayName(const k::Design& design) {
   return words.join(QLatin1Char(' '));
 }
 
-QString exampleMenuText(const std::string& description, int maxChars) {
-  QString text = QString::fromStdString(description);
-  const qsizetype bracket = text.indexOf(QStringLiteral(" ("));
-  if (bracket > 0) text.truncate(bracket);
-  if (text.size() <= maxChars) return text;
-  const qsizetype comma = text.lastIndexOf(QStringLiteral(", "), maxChars);
-  text.truncate(comma > maxChars / 2 ? comma : maxChars);
-  return text + QStringLiteral("…");
-}
-
 }  // namespace linkwright::ui

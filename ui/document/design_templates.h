@@ -26,8 +26,4 @@ kinematics::Design templateDesign(const DesignTemplate& kind);
 /// What a design is, for people: "Four-bar", "Slider-crank", "Crank-shaper", "Watt II six-bar".
 QString kindDisplayName(const kinematics::Design& design);
 
-/// A menu line for a built-in example: its description up to the source in brackets,
-/// shortened at a comma to about `maxChars` characters.
-QString exampleMenuText(const std::string& description, int maxChars = 64);
-
 }  // namespace linkwright::ui

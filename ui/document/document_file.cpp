@@ -27,7 +27,10 @@ QString openDocumentFilter() { return tr("Linkwright documents (*.linkwright *.j
 QString saveDocumentFilter() { return tr("Linkwright documents (*.linkwright);;JSON documents (*.json)"); }
 
 QString withDocumentSuffix(const QString& path) {
-  return QFileInfo(path).suffix().isEmpty() ? path + ".linkwright" : path;
+  // Only a document's own suffix counts: in "0.0001" or "crank-rocker v1.2" the dot is part of
+  // the name, which would otherwise be saved without one.
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  return suffix == QStringLiteral("linkwright") || suffix == QStringLiteral("json") ? path : path + ".linkwright";
 }
 
 std::optional<QString> loadDesignFile(const QString& path, kinematics::Design& design) {

@@ -17,7 +17,8 @@ namespace linkwright::ui {
 QString openDocumentFilter();
 QString saveDocumentFilter();
 
-/// `path` with `.linkwright` appended when it has no extension of its own.
+/// `path` with `.linkwright` appended unless it ends in `.linkwright` or `.json` (any case): a
+/// dot in the name ("0.0001", "arm v1.2") is no extension.
 QString withDocumentSuffix(const QString& path);
 
 /// Reads `path` into `design`; on failure returns the message and leaves `design` untouched.

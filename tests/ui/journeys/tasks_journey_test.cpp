@@ -64,6 +64,24 @@ TEST_CASE("save a changed design, open another, open it again", "[journey][files
   journey.check("Open Recent ▸ lecture.linkwright");
 }
 
+TEST_CASE("Save As a name with a dot in it adds .linkwright", "[journey][files]") {
+  test::Journey journey;
+  ui::MainWindow& window = journey.window();
+  QTemporaryDir dir;
+  // A tolerance study's file named after its tolerance (issue 57: written as "0.0001").
+  journey.answerFileDialog(dir.filePath("0.0001"));
+  journey.menu({"File", "Save As"});
+  CHECK(QFile::exists(dir.filePath("0.0001.linkwright")));
+  CHECK_FALSE(QFile::exists(dir.filePath("0.0001")));
+  CHECK(window.windowTitle().startsWith("0.0001.linkwright"));
+  journey.check("Save As 0.0001");
+  journey.answerFileDialog(dir.filePath("arm.json"));
+  journey.menu({"File", "Save As"});
+  CHECK(QFile::exists(dir.filePath("arm.json")));
+  CHECK_FALSE(QFile::exists(dir.filePath("arm.json.linkwright")));
+  journey.check("Save As arm.json");
+}
+
 TEST_CASE("export the table, the links, the animation and the report", "[journey][export]") {
   test::Journey journey;
   QTemporaryDir dir;
