@@ -2,6 +2,7 @@
 
 #include "kinematics/analysis/column_extrema.h"
 #include "kinematics/dynamics/force_columns.h"
+#include "kinematics/dynamics/force_extrema.h"
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/number_text.h"
@@ -137,30 +138,30 @@ Result<ReportTable> forcesTable(const Mechanism& m, const LinkageDynamics& dynam
   return table;
 }
 
-// Where the shaking force and moment peak over the fine sweep, and for a crank how far the
-// driving torque by virtual work is from Newton–Euler's, for the forces' caption.
-Result<std::string> forcesOverCycle(const Mechanism& m, const LinkageDynamics& dynamics, const SweepResult& fine) {
+// Where the shaking force and moment peak over the fine sweep (of `grid`), refined between its
+// samples on poses solved afresh (force_extrema.h), and for a crank how far the driving torque by
+// virtual work is from Newton–Euler's, for the forces' caption.
+Result<std::string> forcesOverCycle(const Mechanism& m, const LinkageDynamics& dynamics, const SweepSpec& grid,
+                                    const SweepResult& fine) {
   auto forces = sweepForces(m, dynamics, fine);
   if (!forces) return Error{forces.error().code, "dynamics", "the forces: " + forces.error().message};
-  std::optional<std::size_t> force, moment;
   double torquePeak = 0.0, torqueDifference = 0.0;
   for (std::size_t j = 0; j < forces->size(); ++j) {
     if (!forces->ok(j)) continue;
     torquePeak = std::max(torquePeak, std::abs(forces->driveTorque[j]));
     torqueDifference = std::max(torqueDifference, std::abs(forces->driveTorque[j] - forces->virtualWorkTorque[j]));
-    if (!force || forces->shakingForce[j].norm() > forces->shakingForce[*force].norm()) force = j;
-    if (!moment || std::abs(forces->shakingMoment[j]) > std::abs(forces->shakingMoment[*moment])) moment = j;
   }
-  if (!force) return std::string();
-  const auto at = [&](std::size_t j) {
+  const auto peaks = shakingPeaks(m, dynamics, grid, *forces);
+  if (!peaks) return std::string();
+  const auto at = [&](const Extremum& e) {
     const std::string unit = inputUnit(m);
-    return fine.time.empty() ? formatShort(inputDisplayValue(m, fine.inputAngle[j])) + (unit == "°" ? unit : " " + unit)
-                             : formatShort(fine.time[j]) + " s";
+    return grid.time ? formatShort(e.time) + " s"
+                     : formatShort(inputDisplayValue(m, e.inputAngle)) + (unit == "°" ? unit : " " + unit);
   };
-  std::string text = " Over the cycle's " + std::to_string(fine.size()) + " samples the shaking force peaks at " +
-                     formatShort(forces->shakingForce[*force].norm(), 4) + " N (at " + at(*force) +
-                     ") and the shaking moment at " + formatShort(forces->shakingMoment[*moment], 4) + " N·m (at " +
-                     at(*moment) + ").";
+  std::string text = " Refined between the cycle's " + std::to_string(fine.size()) +
+                     " samples, the shaking force peaks at " + formatShort(peaks->force.value, 4) + " N (at " +
+                     at(peaks->force) + ") and the shaking moment at " + formatShort(peaks->moment.value, 4) +
+                     " N·m (at " + at(peaks->moment) + ").";
   if (forces->bodies.drive.kind == DriveKind::Crank && torquePeak > 0.0)
     text += " The driving torque by virtual work differs from Newton–Euler's by at most " +
             formatShort(torqueDifference, 2) + " N·m (" + formatShort(torqueDifference / torquePeak, 2) +
@@ -265,7 +266,7 @@ Result<ReportContent> buildReport(const Mechanism& m, const LinkageDynamics& dyn
     auto forces = forcesTable(m, dynamics, *table, columns.front());
     if (!forces) return forces.error();
     report.forces = std::move(*forces);
-    const auto peaks = forcesOverCycle(m, dynamics, *fine);
+    const auto peaks = forcesOverCycle(m, dynamics, request.grid, *fine);
     if (!peaks) return peaks.error();
     report.forcesCaption =
         "Joint force sizes, driving torque or force, shaking force (N, N·m), at the table's inputs." + *peaks;

@@ -7,7 +7,9 @@
 #include "tests/cli/run_cli.h"
 
 #include "kinematics/design/examples.h"
+#include "kinematics/design/sweep_grid.h"
 #include "kinematics/dynamics/force_sweep.h"
+#include "kinematics/dynamics/machine_request.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/report/report_content.h"
@@ -332,7 +334,15 @@ TEST_CASE("report shows the forces of a linkage with masses", "[cli][report]") {
   for (const char c : text)
     if (!(std::isspace(static_cast<unsigned char>(c)) && (flat.empty() || flat.back() == ' ')))
       flat += std::isspace(static_cast<unsigned char>(c)) ? ' ' : c;
-  CHECK_THAT(flat, Catch::Contains("the shaking force peaks at " + k::formatShort(peak, 4) + " N"));
+  // Refined between those samples on poses solved afresh, the peak is the one another method
+  // finds: machine's, off the series of a whole turn. The best of the 73 samples is short of it.
+  const auto machine = k::runMachine(e.mechanism, e.dynamics, k::machineDefaultsOf(k::sweepGridOf(e)),
+                                     k::machineRequest({}, k::FrontEnd::Cli).value());
+  REQUIRE(machine.ok());
+  const double refined = machine->duty.shakingForcePeak;
+  CHECK_THAT(flat, Catch::Contains("Refined between the cycle's 73 samples, the shaking force peaks at " +
+                                    k::formatShort(refined, 4) + " N"));
+  CHECK(refined >= peak);
   // The virtual-work check over the same grid, at round-off.
   const std::string check = "by virtual work differs from Newton–Euler's by at most ";
   const std::size_t at = flat.find(check);

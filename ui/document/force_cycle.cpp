@@ -40,6 +40,7 @@ k::Result<ForceCycle> solveForceCycle(ForceCycleInput input, const std::atomic<b
   for (std::size_t j = 0; j < out.forces.size(); ++j)
     if (out.sweep.ok(j) && !out.forces.ok(j)) ++out.singularSamples;
   out.peakJointForce = peakOf(out.forces);
+  out.shakingPeaks = k::shakingPeaks(input.mechanism, input.dynamics, input.spec, out.forces);
   out.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

@@ -3,6 +3,7 @@
 // very same function runs in the GUI thread or in a worker (force_results.h chooses): the
 // worker's results are the synchronous ones by construction, and the tests check it.
 
+#include "kinematics/dynamics/force_extrema.h"
 #include "kinematics/dynamics/force_sweep.h"
 #include "kinematics/dynamics/mass_properties.h"
 #include "kinematics/model/mechanism.h"
@@ -33,7 +34,10 @@ struct ForceCycle {
   bool ownSweep = false;            ///< `sweep` was made here (the document's lacked accelerations)
   std::size_t singularSamples = 0;  ///< samples whose kinematics are Ok but forces are not determined
   double peakJointForce = 0.0;      ///< N, |F| of revolute joints and |N| of prismatic ones
-  double milliseconds = 0.0;        ///< wall time the solve took
+  /// The shaking force's and moment's peaks, refined between samples (force_extrema.h); none
+  /// when no sample's forces are solved
+  std::optional<kinematics::ShakingPeaks> shakingPeaks;
+  double milliseconds = 0.0;  ///< wall time the solve took
 };
 
 /// Solves `input`; stops with ErrorCode::Cancelled once `cancel` (if given) becomes true.

@@ -88,6 +88,11 @@ public:
   std::size_t singularSamples() const { return m_cycle ? m_cycle->singularSamples : 0; }
   /// Largest joint reaction over the cycle, N: |F| of revolute joints, |N| of prismatic ones.
   double peakJointForce() const { return m_cycle ? m_cycle->peakJointForce : 0.0; }
+  /// The shaking force's and moment's peaks over the cycle, refined between samples (null
+  /// unless state() is Ok and some sample's forces are solved).
+  const kinematics::ShakingPeaks* shakingPeaks() const {
+    return m_cycle && m_cycle->shakingPeaks ? &*m_cycle->shakingPeaks : nullptr;
+  }
 
   /// The forces at the document's crank angle; null when not Ok or the pose is singular.
   const kinematics::PoseForces* poseForces() const { return m_poseOk ? &m_pose : nullptr; }

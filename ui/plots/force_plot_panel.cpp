@@ -247,18 +247,21 @@ void ForcePlotPanel::refreshShaking(const PlotXAxis& x, DataFlow flow, bool& rel
   if (before != nullptr) buildShakingMomentRuns(sweep, *before, m_unit, m_runs[1], x.source);
   relayout |= m_shakingMoment->setData(m_runs, tr("moment [N·m]"), x, flow);
 
-  const ShakingPeaks peaks = shakingPeaks(cycle);
-  m_shakingPeaks->setText(peaks.any
-                              ? tr("Peak shaking force %1 N at %2; peak shaking moment %3 N·m %4 at %5.")
-                                    .arg(numberText(peaks.force, 'g', 4),
-                                         xReadoutText(sampleX(sweep, peaks.forceSample, x.source, m_unit), x, m_unit),
-                                         numberText(peaks.moment, 'g', 4), about,
-                                         xReadoutText(sampleX(sweep, peaks.momentSample, x.source, m_unit), x, m_unit))
+  // The peaks refined between samples, as the core found them with the cycle (force_extrema.h).
+  const k::ShakingPeaks* peaks = m_forces->shakingPeaks();
+  m_shakingPeaks->setText(peaks != nullptr
+                              ? tr("Peak shaking force %1 N at %2; peak shaking moment %3 N·m %4 at %5 (refined "
+                                   "between the %6 samples).")
+                                    .arg(numberText(peaks->force.value, 'g', 4),
+                                         xReadoutText(extremumX(peaks->force, x.source, m_unit), x, m_unit),
+                                         numberText(peaks->moment.value, 'g', 4), about,
+                                         xReadoutText(extremumX(peaks->moment, x.source, m_unit), x, m_unit))
+                                    .arg(cycle.size())
                               : tr("No sample of the cycle has its forces solved."));
-  if (before != nullptr && peaks.any) {
+  if (before != nullptr && peaks != nullptr) {
     const ShakingPeaks was = shakingPeaks(*before);
     m_shakingPeaks->setText(m_shakingPeaks->text() +
-                            tr(" Before balancing (dashed): %1 N and %2 N·m.")
+                            tr(" Before balancing (dashed, the best samples): %1 N and %2 N·m.")
                                 .arg(numberText(was.force, 'g', 4), numberText(was.moment, 'g', 4)));
   }
 }

@@ -44,6 +44,11 @@ double sampleX(const k::SweepResult& sweep, std::size_t j, const XSource& x, Ang
   return angular(x) ? toAngleUnit(sweep.inputAngle[j], unit) : sweep.inputAngle[j];
 }
 
+double extremumX(const k::Extremum& e, const XSource& x, AngleUnit unit) {
+  if (x.axis == PlotAxis::Time) return e.time;
+  return angular(x) ? toAngleUnit(e.inputAngle, unit) : e.inputAngle;
+}
+
 AxisRange exactAxisRange(double lo, double hi) {
   if (lo > hi) std::swap(lo, hi);
   if (!(hi > lo)) {

@@ -8,6 +8,7 @@
 #include "ui/plots/angle_unit.h"
 #include "ui/plots/axis_range.h"
 
+#include "kinematics/analysis/extrema.h"
 #include "kinematics/design/design.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/solve/sweep.h"
@@ -49,6 +50,8 @@ QString xReadoutText(double x, const PlotXAxis& axis, AngleUnit unit);
 /// Sample `j`'s x: its time (s), or its input (unwrapped, as swept) in `unit` for an angle. The
 /// input when the sweep has no times.
 double sampleX(const kinematics::SweepResult& sweep, std::size_t j, const XSource& x, AngleUnit unit);
+/// Where a refined extremum (kinematics/analysis/extrema.h) falls, on the x axis `x` in `unit`.
+double extremumX(const kinematics::Extremum& e, const XSource& x, AngleUnit unit);
 
 /// An axis over exactly [lo, hi] (a time span, a linear input's travel), ticks anchored at 0
 /// every nice step, about four intervals. An empty span is widened by half a unit each side.

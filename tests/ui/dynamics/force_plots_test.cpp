@@ -9,7 +9,9 @@
 #include "ui/plots/polar_load_view.h"
 
 #include "kinematics/design/design.h"
+#include "kinematics/dynamics/inverse_dynamics.h"
 #include "kinematics/model/units.h"
+#include "kinematics/solve/pose_solver.h"
 
 #include <QComboBox>
 #include <QScatterSeries>
@@ -102,11 +104,27 @@ TEST_CASE("the force plots show the core's torque, joint magnitudes and polar lo
       if (std::abs(f.shakingMoment[j]) > std::abs(moment)) moment = f.shakingMoment[j];
     }
     CHECK(panel.shakingMomentChart()->chart()->title() == "Shaking moment about O2");
+    // The peaks are refined between samples: at least the best sample, within a step of it, and
+    // the forces solved afresh at the angle found have that size.
+    const k::ShakingPeaks* refined = forces.shakingPeaks();
+    REQUIRE(refined != nullptr);
+    const double step = s.inputAngle[1] - s.inputAngle[0];
+    CHECK(refined->force.value >= peak);
+    CHECK(refined->force.value == Approx(peak).epsilon(1e-3));
+    CHECK(std::abs(refined->force.inputAngle - s.inputAngle[at]) <= step);
+    CHECK(std::abs(refined->moment.value) >= std::abs(moment));
+    const k::Design& d = doc.design();
+    const auto pose = k::solvePose(d.mechanism, {refined->force.inputAngle, d.omega, d.alpha});
+    REQUIRE(pose.ok());
+    CHECK(k::forcesAtPose(d.mechanism, d.dynamics, *pose)->shakingForce.norm() ==
+          Approx(refined->force.value).epsilon(1e-12));
     const QString text = panel.shakingPeakText();
-    CHECK(text.startsWith(
-        QStringLiteral("Peak shaking force %1 N at crank %2°")
-            .arg(QString::number(peak, 'g', 4), QString::number(k::radToDeg(s.inputAngle[at]), 'f', 1))));
-    CHECK(text.contains(QStringLiteral("peak shaking moment %1 N·m about O2").arg(QString::number(moment, 'g', 4))));
+    CHECK(text.startsWith(QStringLiteral("Peak shaking force %1 N at crank %2°")
+                              .arg(QString::number(refined->force.value, 'g', 4),
+                                   QString::number(k::radToDeg(refined->force.inputAngle), 'f', 1))));
+    CHECK(text.contains(
+        QStringLiteral("peak shaking moment %1 N·m about O2").arg(QString::number(refined->moment.value, 'g', 4))));
+    CHECK(text.contains(QStringLiteral("refined between the %1 samples").arg(f.size())));
   }
   SECTION("the cursor and the polar dot follow the crank") {
     doc.setCrankAngle(k::degToRad(90.0));
