@@ -7,7 +7,6 @@
 #include "ui/plots/plot_x_axis.h"
 
 #include "kinematics/design/design.h"
-#include "kinematics/design/sweep_grid.h"
 #include "kinematics/dynamics/machine_request.h"
 #include "kinematics/model/units.h"
 
@@ -199,14 +198,7 @@ void MachinePage::refresh() {
   auto request = k::machineRequest(values, k::FrontEnd::Designer);
   if (!request) return refuse(QString::fromStdString(request.error().message));
   m_request = *request;
-  m_run.start([mechanism = design.mechanism, dynamics = design.dynamics,
-               defaults = k::machineDefaultsOf(k::sweepGridOf(design)),
-               request = *request](const std::atomic<bool>& cancel) {
-    k::RunControl control;
-    control.cancel = &cancel;
-    auto run = k::runMachine(mechanism, dynamics, defaults, request, control);
-    return run ? Outcome{std::move(run).value(), std::nullopt} : Outcome{std::nullopt, run.error()};
-  });
+  m_run.start(machineJob(design, *request));
 }
 
 void MachinePage::display(const Outcome& outcome) {

@@ -9,6 +9,7 @@
 // design it cannot compute for (not crank-driven, no masses) gets the core's sentence.
 
 #include "ui/document/background_request.h"
+#include "ui/document/machine_job.h"
 #include "ui/plots/angle_unit.h"
 
 #include "kinematics/dynamics/machine_request.h"
@@ -53,10 +54,7 @@ public:
   ForceChartView* speedChart() const { return m_speed; }
 
 private:
-  struct Outcome {
-    std::optional<kinematics::MachineRun> run;
-    std::optional<kinematics::Error> error;
-  };
+  using Outcome = MachineOutcome;
   void display(const Outcome& outcome);
   void refuse(const QString& why);
 
