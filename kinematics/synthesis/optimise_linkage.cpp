@@ -264,6 +264,10 @@ OptimiseConstraintState stateOf(const Design& start, const Design& result, const
 Result<LinkageOptimisation> optimiseLinkage(const Design& design, const OptimiseRequest& request,
                                             const std::atomic<bool>* cancel, const OptimiseProgress& progress) {
   if (auto e = checkDesign(design)) return *e;
+  if (design.samples > kMaxOptimiseSamples)
+    return invalid("samples", "optimise sweeps every candidate over the design's grid, which may hold at most " +
+                                  std::to_string(kMaxOptimiseSamples) + " samples (got " +
+                                  std::to_string(design.samples) + "): give the design a coarser grid");
   if (auto e = checkOptions(request.options)) return *e;
   if (auto e = checkObjective(design, request.objective)) return *e;
   auto dims = optimiseDimensions(design.mechanism, request.constraints);

@@ -52,6 +52,9 @@ inline constexpr int kMaxOptimiseEvaluations = 1000000;
 /// The numbers of starts accepted.
 inline constexpr int kMinOptimiseStarts = 1;
 inline constexpr int kMaxOptimiseStarts = 1000;
+/// The most samples a design's grid may have to be optimised: every candidate is swept over it
+/// whole (about 360 bytes a sample for a four-bar), so 10⁷ samples took 3.6 GB.
+inline constexpr std::size_t kMaxOptimiseSamples = 100'000;
 
 /// How hard to search.
 struct OptimiseOptions {

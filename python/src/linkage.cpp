@@ -30,6 +30,10 @@ namespace {
 
 // As the CLI's kSweepWindowSamples: memory does not grow with the sample count.
 constexpr std::size_t kWindowSamples = 4096;
+// A table held whole in Python must fit: the arrays take about 18 bytes a cell (the values, the
+// mask, and NumPy's copy of both), the CSV about 50 (its text, and Python's copy of it).
+constexpr double kMostTableBytes = 2e9;
+constexpr double kArrayBytesPerCell = 18.0, kCsvBytesPerCell = 50.0;
 
 k::Error badValue(const std::string& field, const std::string& why) {
   return k::Error{k::ErrorCode::InvalidValue, field, field + " " + why};
@@ -186,6 +190,7 @@ k::Result<SweepTable> sweepTable(const Linkage& linkage, const k::SweepSpec& spe
   std::vector<k::SweepColumn> columns;
   std::vector<k::ForceColumn> forceColumns;
   std::optional<k::Error> refused;
+  bool sized = false;
   auto swept = k::sweepInWindows(m, spec, {}, kWindowSamples, [&](const k::SweepResult& part, std::size_t) {
     std::optional<k::ForceSweep> forces;
     if (request.forces) {
@@ -196,9 +201,25 @@ k::Result<SweepTable> sweepTable(const Linkage& linkage, const k::SweepSpec& spe
       }
       forces = std::move(solved).value();
     }
+    if (!sized) {
+      sized = true;
+      const std::size_t count = k::sweepColumns(m, part.request, !part.time.empty()).size() +
+                                (forces ? k::forceColumns(forces->bodies).size() : 0);
+      const double bytesPerRow = static_cast<double>(count) * (request.csv ? kCsvBytesPerCell : kArrayBytesPerCell);
+      const double rows = static_cast<double>(spec.samples);
+      if (rows * bytesPerRow > kMostTableBytes) {
+        const auto most = static_cast<long long>(kMostTableBytes / bytesPerRow);
+        refused = k::Error{k::ErrorCode::InvalidValue, "samples",
+                           "samples: a table held whole in Python may take at most 2 GB, about " +
+                               std::to_string(most) + " samples of this linkage's " + std::to_string(count) +
+                               " columns (got " + std::to_string(spec.samples) +
+                               "); linkwright-cli analyze -o FILE writes any number of samples, streamed"};
+        return false;
+      }
+    }
     if (request.csv) csv.write(part, forces ? &*forces : nullptr);
     if (!request.columns) return true;
-    if (columns.empty()) {
+    if (table.names.empty()) {
       columns = k::sweepColumns(m, part.request, !part.time.empty());
       if (forces) forceColumns = k::forceColumns(forces->bodies);
       for (const k::SweepColumn& c : columns) table.names.push_back(c.name);

@@ -95,3 +95,17 @@ def test_a_bad_document_names_the_member(tmp_path):
     assert message.startswith(str(path) + ": ")
     assert "mechanism.lengths.coupler" in message
     assert "(got -70)" in message
+
+
+@pytest.mark.parametrize("method", ["sweep", "sweep_csv"])
+def test_a_table_too_big_to_hold_is_refused_before_it_is_built(method):
+    # 10⁷ rows of the thesis crank-rocker took 7.8 GB as CSV text; the refusal comes from the
+    # first window, not after the memory is gone, and says how to write any size.
+    crank_rocker = linkwright.example("thesis-crank-rocker")
+    with pytest.raises(linkwright.Error) as refusal:
+        getattr(crank_rocker, method)(samples=10**7)
+    assert refusal.value.field == "samples"
+    assert "a table held whole in Python may take at most 2 GB" in str(refusal.value)
+    assert "(got 10000000); linkwright-cli analyze -o FILE writes any number of samples, streamed" in str(refusal.value)
+    # A size that fits is swept.
+    assert len(getattr(crank_rocker, method)(samples=100001)) > 0

@@ -198,3 +198,24 @@ TEST_CASE("optimise refuses bad requests naming the option and writes nothing", 
   CHECK_FALSE(fs::exists(file));
   fs::remove_all(dir);
 }
+
+TEST_CASE("optimise refuses a design whose grid it cannot sweep for every candidate", "[cli]") {
+  // 10⁷ samples: every candidate swept whole took 3.6 GB; the refusal names the grid's size.
+  const auto dir = linkwright::test::scratchDir("optimise-grid");
+  k::Design design = *k::designForExample("thesis-crank-rocker");
+  design.samples = 10'000'000;
+  const std::string path = (dir / "fine.linkwright").string();
+  REQUIRE_FALSE(k::io::writeFileSafely(path, k::io::writeDocument(design)));
+  const auto r =
+      runCliCommand({"optimise", path, "--objective", "transmission", "-o", (dir / "out.linkwright").string()});
+  CHECK(r.code == 2);
+  CHECK(r.err.find("optimise sweeps every candidate over the design's grid, which may hold at most 100000 samples "
+                   "(got 10000000)") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir / "out.linkwright"));
+  design.samples = 721;
+  REQUIRE_FALSE(k::io::writeFileSafely(path, k::io::writeDocument(design)));
+  CHECK(runCliCommand({"optimise", path, "--objective", "transmission", "--evaluations", "20", "-o",
+                       (dir / "out.linkwright").string()})
+            .code == 0);
+  std::filesystem::remove_all(dir);
+}
