@@ -8,6 +8,7 @@
 #include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
+#include "kinematics/model/work_count.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +16,7 @@
 namespace linkwright::kinematics {
 
 std::optional<Error> checkDesign(const Design& d) {
+  countDesignCheck();
   // A four-bar's lengths are named as its editors and the CLI name them ("lengths.coupler").
   if (const auto fourBar = asFourBar(d.mechanism))
     if (auto e = checkFourBarLengths(fourBar->lengths)) {

@@ -175,10 +175,11 @@ bool isFourBarDimension(ParameterSlot slot) {
          slot == S::FrameAngle;
 }
 
-std::vector<Parameter> parametersOf(const Mechanism& m) {
+std::vector<Parameter> parametersOf(const Mechanism& m) { return parametersOf(m, asFourBar(m)); }
+
+std::vector<Parameter> parametersOf(const Mechanism& m, const std::optional<FourBarStructure>& s) {
   using S = ParameterSlot;
   std::vector<Parameter> raw = rawParameters(m);
-  const auto s = asFourBar(m);
   if (!s) return raw;
   std::vector<Parameter> out;
   for (const S slot : {S::FrameLength, S::CrankLength, S::CouplerLength, S::RockerLength})
@@ -217,6 +218,33 @@ std::optional<double> parameterValue(const Mechanism& mechanism, const Parameter
   }
   if (const double* number = numberOf(mechanism, parameter)) return *number;
   return std::nullopt;
+}
+
+std::vector<std::optional<double>> parameterValues(const Mechanism& mechanism,
+                                                   const std::vector<Parameter>& parameters) {
+  const bool named =
+      std::any_of(parameters.begin(), parameters.end(), [](const Parameter& p) { return isFourBarDimension(p.slot); });
+  return parameterValues(mechanism, parameters, named ? asFourBar(mechanism) : std::nullopt);
+}
+
+std::vector<std::optional<double>> parameterValues(const Mechanism& mechanism, const std::vector<Parameter>& parameters,
+                                                   const std::optional<FourBarStructure>& s) {
+  std::vector<std::optional<double>> values;
+  values.reserve(parameters.size());
+  for (const Parameter& p : parameters) {
+    if (!isFourBarDimension(p.slot)) {
+      const double* number = numberOf(mechanism, p);
+      values.push_back(number ? std::optional<double>(*number) : std::nullopt);
+    } else if (!s || carrier(*s, p.slot) != p.point) {
+      values.emplace_back();
+    } else if (p.slot == ParameterSlot::FrameAngle) {
+      values.emplace_back(s->frameAngle);
+    } else {
+      FourBarLengths lengths = s->lengths;
+      values.emplace_back(*fourBarLength(lengths, p.slot));
+    }
+  }
+  return values;
 }
 
 bool setParameter(Mechanism& mechanism, const Parameter& parameter, double value) {

@@ -9,6 +9,7 @@
 // touches a point definition itself, and every linkage has one dimensions editor.
 
 #include "kinematics/model/mechanism.h"
+#include "kinematics/model/recognise.h"
 
 #include <cstddef>
 #include <optional>
@@ -64,12 +65,22 @@ struct Parameter {
 /// four-bar its four named lengths first, then the rest, the frame's direction in place of
 /// O4's x and y.
 std::vector<Parameter> parametersOf(const Mechanism& mechanism);
+/// The same for `mechanism` recognised already (asFourBar's answer), as a document holds it.
+std::vector<Parameter> parametersOf(const Mechanism& mechanism, const std::optional<FourBarStructure>& fourBar);
 
 /// The kind of value `parameter` holds.
 ParameterUnit parameterUnit(ParameterSlot slot);
 
 /// The parameter's value (rad for angles), or nothing if `mechanism` has no such parameter.
 std::optional<double> parameterValue(const Mechanism& mechanism, const Parameter& parameter);
+
+/// parameterValue of each of `parameters`, the linkage recognised once for them all (an editor
+/// reads every value of a design at each edit).
+std::vector<std::optional<double>> parameterValues(const Mechanism& mechanism,
+                                                   const std::vector<Parameter>& parameters);
+/// The same for `mechanism` recognised already (asFourBar's answer).
+std::vector<std::optional<double>> parameterValues(const Mechanism& mechanism, const std::vector<Parameter>& parameters,
+                                                   const std::optional<FourBarStructure>& fourBar);
 
 /// Sets the parameter; false (and nothing changed) if `mechanism` has no such parameter. A
 /// four-bar's named length keeps O2, the frame's direction, the crank's phase, the branch and

@@ -1,5 +1,7 @@
 #include "kinematics/model/recognise.h"
 
+#include "kinematics/model/work_count.h"
+
 #include <cmath>
 #include <variant>
 
@@ -36,6 +38,7 @@ bool allowedRider(const Mechanism& m, PointId id, PointId b, PointId c, PointsOn
 }  // namespace
 
 std::optional<FourBarStructure> asFourBar(const Mechanism& m, PointsOnLinks allowed) {
+  countRecognition();
   if (!m.constraints.empty()) return std::nullopt;
   const auto b = crankPoint(m);
   if (!b) return std::nullopt;

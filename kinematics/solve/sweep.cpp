@@ -5,6 +5,7 @@
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
+#include "kinematics/model/work_count.h"
 #include "kinematics/solve/guide_line.h"
 #include "kinematics/solve/newton_group.h"
 #include "kinematics/solve/pose_solver.h"
@@ -531,6 +532,7 @@ std::optional<Error> sweepInto(const Mechanism& mechanism, const SweepSpec& spec
                                SweepResult& out, const std::atomic<bool>* cancel) {
   const auto normalized = checkedRequest(mechanism, spec, request);
   if (!normalized) return normalized.error();
+  countSweep(spec.samples);
   const SolveScope scope = scopeOf(mechanism, normalized->only);
   allocate(mechanism, spec, 0, spec.samples, *normalized, scope, out);
   SweepSummary summary;
@@ -543,6 +545,7 @@ Result<SweepSummary> sweepInWindows(const Mechanism& mechanism, const SweepSpec&
                                     std::size_t window, const SweepWindowSink& sink) {
   const auto normalized = checkedRequest(mechanism, spec, request);
   if (!normalized) return normalized.error();
+  countSweep(spec.samples);
   const SolveScope scope = scopeOf(mechanism, normalized->only);
   window = std::max<std::size_t>(window, 1);
   SweepResult part;

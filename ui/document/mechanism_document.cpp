@@ -39,7 +39,8 @@ std::optional<QString> MechanismDocument::validate(const k::Design& design) cons
   // derived when that sweep lands (gridDeferred).
   if (needsGrid && gridDeferred(design) && assemblesAtInstant(design)) return std::nullopt;
   static const k::SweepResult kNoGrid;
-  auto derived = k::deriveDesign(design, needsGrid ? sweepGrid(design) : kNoGrid);
+  // Checked above: derived from the mechanism, so the design is not checked twice.
+  auto derived = k::deriveDesign(design.mechanism, needsGrid ? sweepGrid(design) : kNoGrid);
   if (!derived) return QString::fromStdString(derived.error().message);
   m_grid.accepted = DesignGrid::Accepted{design, m_request.newton, std::move(derived).value()};
   return std::nullopt;

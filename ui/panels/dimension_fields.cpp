@@ -108,16 +108,25 @@ QString labelOf(const k::Mechanism& m, const std::optional<k::FourBarStructure>&
 
 }  // namespace
 
-std::vector<DimensionField> dimensionFields(const k::Mechanism& m) {
+std::vector<DimensionField> dimensionFields(const k::Mechanism& m) { return dimensionFields(m, k::asFourBar(m)); }
+
+std::vector<DimensionField> dimensionFields(const k::Mechanism& m, const std::optional<k::FourBarStructure>& fourBar) {
   std::vector<DimensionField> out;
-  const auto fourBar = k::asFourBar(m);
-  for (const k::Parameter& p : k::parametersOf(m)) out.push_back({p, labelOf(m, fourBar, p)});
+  for (const k::Parameter& p : k::parametersOf(m, fourBar)) out.push_back({p, labelOf(m, fourBar, p)});
   return out;
 }
 
-double fieldValue(const k::Mechanism& mechanism, const DimensionField& field) {
-  const double value = k::parameterValue(mechanism, field.parameter).value_or(0.0);
-  return field.unit() == k::ParameterUnit::Angle ? k::radToDeg(value) : value;
+std::vector<double> fieldValues(const k::Mechanism& mechanism, const std::vector<DimensionField>& fields,
+                                const std::optional<k::FourBarStructure>& fourBar) {
+  std::vector<k::Parameter> parameters;
+  for (const DimensionField& f : fields) parameters.push_back(f.parameter);
+  const std::vector<std::optional<double>> values = k::parameterValues(mechanism, parameters, fourBar);
+  std::vector<double> out(fields.size());
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    const double value = values[i].value_or(0.0);
+    out[i] = fields[i].unit() == k::ParameterUnit::Angle ? k::radToDeg(value) : value;
+  }
+  return out;
 }
 
 void setFieldValue(k::Mechanism& mechanism, const DimensionField& field, double value) {

@@ -25,9 +25,14 @@ struct DimensionField {
 
 /// Every editable number of `mechanism`, point by point.
 std::vector<DimensionField> dimensionFields(const kinematics::Mechanism& mechanism);
+/// The same for `mechanism` recognised already (the document's fourBar()).
+std::vector<DimensionField> dimensionFields(const kinematics::Mechanism& mechanism,
+                                            const std::optional<kinematics::FourBarStructure>& fourBar);
 
-/// The field's value as the editor shows it (degrees for angles).
-double fieldValue(const kinematics::Mechanism& mechanism, const DimensionField& field);
+/// The fields' values as the editor shows them (degrees for angles), the linkage recognised
+/// once for them all.
+std::vector<double> fieldValues(const kinematics::Mechanism& mechanism, const std::vector<DimensionField>& fields,
+                                const std::optional<kinematics::FourBarStructure>& fourBar);
 
 /// Sets the field to `value` (degrees for angles) in `mechanism`.
 void setFieldValue(kinematics::Mechanism& mechanism, const DimensionField& field, double value);

@@ -38,12 +38,12 @@ QString groupOf(const k::Mechanism& m, const DimensionField& f) {
 }
 
 // The linkage's size, from which the sliders' spans are set: its longest length.
-double sizeOf(const k::Mechanism& m, const std::vector<DimensionField>& fields) {
+double sizeOf(const std::vector<DimensionField>& fields, const std::vector<double>& values) {
   double size = 0.0;
-  for (const DimensionField& f : fields)
-    if (f.unit() == k::ParameterUnit::Length) size = std::max(size, fieldValue(m, f));
-  for (const DimensionField& f : fields)
-    if (size == 0.0 && f.unit() == k::ParameterUnit::Offset) size = std::max(size, std::abs(fieldValue(m, f)));
+  for (std::size_t i = 0; i < fields.size(); ++i)
+    if (fields[i].unit() == k::ParameterUnit::Length) size = std::max(size, values[i]);
+  for (std::size_t i = 0; i < fields.size(); ++i)
+    if (size == 0.0 && fields[i].unit() == k::ParameterUnit::Offset) size = std::max(size, std::abs(values[i]));
   return size > 0.0 ? size : 1.0;
 }
 
@@ -166,10 +166,13 @@ void DimensionsPanel::rebuild() {
 
 void DimensionsPanel::resetSliderRanges() {
   const k::Mechanism& m = m_document->mechanism();
-  if (dimensionFields(m) != m_fields) return;  // refresh() rebuilds, and sets them
-  const double size = sizeOf(m, m_fields);
+  // Recognised once for the fields and their values (the document's may lag a drag's grid).
+  const auto fourBar = k::asFourBar(m);
+  if (dimensionFields(m, fourBar) != m_fields) return;  // refresh() rebuilds, and sets them
+  const std::vector<double> values = fieldValues(m, m_fields, fourBar);
+  const double size = sizeOf(m_fields, values);
   for (std::size_t i = 0; i < m_fields.size(); ++i) {
-    const double v = fieldValue(m, m_fields[i]);
+    const double v = values[i];
     switch (m_fields[i].unit()) {
     case k::ParameterUnit::Length:
       m_editors[i]->setSliderRange(std::min(0.02 * size, 0.5 * v), std::max(3.0 * size, 1.5 * v));
@@ -182,9 +185,11 @@ void DimensionsPanel::resetSliderRanges() {
 
 void DimensionsPanel::refresh() {
   const k::Mechanism& m = m_document->mechanism();
-  if (dimensionFields(m) != m_fields || m_editors.empty()) rebuild();
+  const auto recognised = k::asFourBar(m);  // once, for the fields and their values
+  if (dimensionFields(m, recognised) != m_fields || m_editors.empty()) rebuild();
   m_refreshing = true;
-  for (std::size_t i = 0; i < m_fields.size(); ++i) m_editors[i]->setValue(fieldValue(m, m_fields[i]));
+  const std::vector<double> values = fieldValues(m, m_fields, recognised);
+  for (std::size_t i = 0; i < m_fields.size(); ++i) m_editors[i]->setValue(values[i]);
   for (const auto& [p, box] : m_branches) box->setCurrentIndex(*branchOf(m.points[p.index]) == k::Branch::Open ? 0 : 1);
   const auto& fourBar = m_document->fourBar();
   m_couplerPoint->setVisible(fourBar.has_value());

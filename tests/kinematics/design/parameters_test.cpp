@@ -8,6 +8,7 @@
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
+#include "kinematics/model/work_count.h"
 
 #include "tests/support/catch.h"
 
@@ -135,4 +136,21 @@ TEST_CASE("a four-bar's named dimensions set the linkage as withFourBarLengths d
   notFourBar.points.push_back({"Q", GroundPoint{Eigen::Vector2d(0.0, 0.0)}});
   notFourBar.points[3].definition = RrrPoint{PointId{1}, l.rocker, PointId{5}, l.coupler, Branch::Crossed};
   CHECK_FALSE(setParameter(notFourBar, {c, S::CouplerLength}, 42.0));
+}
+
+TEST_CASE("parameterValues reads every parameter as parameterValue does, recognising the linkage once",
+          "[parameters]") {
+  for (const Example& e : examples()) {
+    CAPTURE(e.name);
+    std::vector<Parameter> parameters = parametersOf(e.mechanism);
+    // One the mechanism does not have: nothing, as parameterValue says.
+    parameters.push_back({PointId{e.mechanism.points.size() + 3}, ParameterSlot::X});
+    const WorkCount before = workCount();
+    const auto values = parameterValues(e.mechanism, parameters);
+    CHECK((workCount() - before).recognitions <= 1);
+    REQUIRE(values.size() == parameters.size());
+    for (std::size_t i = 0; i < parameters.size(); ++i) CHECK(values[i] == parameterValue(e.mechanism, parameters[i]));
+    CHECK_FALSE(values.back());
+    CHECK(parameterValues(e.mechanism, parameters, asFourBar(e.mechanism)) == values);
+  }
 }
