@@ -7,6 +7,7 @@
 #include "app/cli/commands.h"
 
 #include "app/cli/atlas_options.h"
+#include "app/cli/progress.h"
 
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/document_json.h"
@@ -168,6 +169,45 @@ k::io::JsonValue cellJson(std::size_t index, const k::AtlasCell& c) {
   return json;
 }
 
+// One line a kept cell, for a person.
+std::string cellLine(std::size_t i, const k::AtlasCell& c) {
+  return std::to_string(i) + "  coupler " + formatShort(c.key.lengths.coupler) + " rocker " +
+         formatShort(c.key.lengths.rocker) + " frame " + formatShort(c.key.lengths.frame) + " P (" +
+         formatShort(c.key.point.along) + ", " + formatShort(c.key.point.across) + ")  " +
+         std::string(k::toString(c.grashof.category)) + ", " + std::string(k::toString(c.motion)) + ": " +
+         featuresText(c) + "\n";
+}
+
+// `text` (a JSON dump) with every line after the first indented by `by` spaces, to sit inside
+// an object written piece by piece.
+std::string indented(const std::string& text, std::size_t by) {
+  std::string out;
+  for (const char ch : text) {
+    out += ch;
+    if (ch == '\n') out.append(by, ' ');
+  }
+  return out;
+}
+
+// What each feature is found to (coupler_curve_features.h), for --json.
+k::io::JsonValue tolerancesJson(std::size_t samples) {
+  const k::ClassifierTolerances t = k::classifierTolerances(samples);
+  return {{"of", "S, the diagonal of the curve's bounding box, except angles"},
+          {"cusp", {{"speed_per_rad", t.cuspSpeed}, {"crank_rad", t.cuspAngle}, {"point", t.cuspPoint}}},
+          {"crunode",
+           {{"least_crossing_deg", t.crossingAngleDeg},
+            {"same_point", t.samePoint},
+            {"point", t.crunodePoint},
+            {"crank_rad", t.crunodeAngle}}},
+          {"symmetry", {{"deviation", t.symmetry}, {"axis_rad", t.symmetryAxis}}},
+          {"straight", {{"deviation", t.straight}, {"least_length", t.straightLength}, {"ends_u_rad", t.runEnd}}},
+          {"circular",
+           {{"deviation", t.circular},
+            {"least_length", t.arcLength},
+            {"least_turn_deg", t.arcTurnDeg},
+            {"ends_u_rad", t.runEnd}}}};
+}
+
 ExitCode writeCell(const AtlasOptions& o, std::ostream& out, std::ostream& err) {
   const k::AtlasCellKey key = k::atlasCellKey(o.axes, *o.cell);
   const auto design = k::atlasCellDesign(key, o.crank, o.lengthUnit);
@@ -192,41 +232,57 @@ ExitCode writeCell(const AtlasOptions& o, std::ostream& out, std::ostream& err) 
 ExitCode runAtlas(const AtlasOptions& o, std::ostream& out, std::ostream& err) {
   if (o.cell) return writeCell(o, out, err);
   const std::size_t count = k::atlasCellCount(o.axes);
-  const auto cells = k::computeAtlasPage(o.axes, 0, count);
-  if (!cells) {
-    err << "linkwright-cli: " << cells.error().message << "\n";
+  // Each cell is written as it is classified (a CSV row to -o, a line or a JSON entry to the
+  // output) and then dropped: nothing grows with the cells. The progress line is cleared
+  // before each write to a terminal and drawn again after.
+  const bool outputOnTerminal = !progressShown(err, &out) && isTerminal(err);
+  Progress progress(err, "atlas", "cells", isTerminal(err));
+  std::size_t kept = 0;
+  std::optional<k::Error> refused;  // the core's, as opposed to the output's
+  if (o.json)
+    out << "{\n  \"cells\": " << count << ",\n  \"samples\": " << o.axes.samples
+        << ",\n  \"tolerances\": " << indented(tolerancesJson(o.axes.samples).dump(2), 2) << ",\n  \"atlas\": [";
+  else
+    out << "coupler-curve atlas: " << count << (count == 1 ? " cell" : " cells")
+        << " (crank 1; coupler, rocker, frame in crank lengths; P along and "
+        << "across B→C in coupler lengths; points in crank lengths, O2 at the origin, O4 on +x), " << o.axes.samples
+        << " samples a curve\n";
+  const auto run = [&](std::ostream* csv) -> std::optional<std::string> {
+    if (csv) {
+      for (std::size_t i = 0; i < kCsvHeader.size(); ++i) *csv << (i ? "," : "") << kCsvHeader[i];
+      *csv << "\n";
+    }
+    const auto visit = [&](std::size_t i, const k::AtlasCell& c) {
+      if (!k::matchesFilter(c, o.filter)) return true;
+      if (csv) *csv << csvRow(i, c);
+      if (outputOnTerminal) progress.clear();
+      if (o.json) out << (kept ? ",\n    " : "\n    ") << indented(cellJson(i, c).dump(2), 4);
+      else out << cellLine(i, c);
+      ++kept;
+      return !csv || static_cast<bool>(*csv);  // a failed write stops the run; the writer says why
+    };
+    k::RunControl control;
+    control.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
+    auto ran = k::runAtlas(o.axes, 0, count, visit, control);
+    if (!ran) refused = ran.error();
+    return refused ? std::optional{refused->message} : std::nullopt;
+  };
+  std::optional<k::Error> problem;
+  if (o.outputFile) problem = k::io::writeStreamSafely(*o.outputFile, [&](std::ostream& csv) { return run(&csv); });
+  else run(nullptr);
+  progress.clear();
+  if (o.json) out << (kept ? "\n  ],\n" : "],\n") << "  \"matching\": " << kept << "\n}\n";
+  else
+    out << kept << " match" << (kept == 1 ? "es" : "")
+        << (o.outputFile && !problem ? "; written to " + *o.outputFile : std::string()) << "\n";
+  out << std::flush;
+  if (refused) {
+    err << "linkwright-cli: " << refused->message << "\n";
     return ExitCode::BadInput;
   }
-  const std::vector<std::size_t> kept = k::filterCells(*cells, o.filter);
-  if (o.outputFile) {
-    std::ostringstream csv;
-    for (std::size_t i = 0; i < kCsvHeader.size(); ++i) csv << (i ? "," : "") << kCsvHeader[i];
-    csv << "\n";
-    for (const std::size_t i : kept) csv << csvRow(i, (*cells)[i]);
-    if (auto e = k::io::writeFileSafely(*o.outputFile, csv.str())) {
-      err << "linkwright-cli: " << e->message << "\n";
-      return ExitCode::IoError;
-    }
-  }
-  if (o.json) {
-    k::io::JsonValue list = k::io::JsonValue::array();
-    for (const std::size_t i : kept) list.push_back(cellJson(i, (*cells)[i]));
-    out << k::io::JsonValue{{"cells", count}, {"samples", o.axes.samples}, {"matching", kept.size()}, {"atlas", list}}
-               .dump(2)
-        << "\n";
-    return ExitCode::Success;
-  }
-  out << "coupler-curve atlas: " << count << (count == 1 ? " cell" : " cells")
-      << " (crank 1; coupler, rocker, frame in crank lengths; P along and "
-      << "across B→C in coupler lengths; points in crank lengths, O2 at the origin, O4 on +x), " << o.axes.samples
-      << " samples a curve; " << kept.size() << " match" << (kept.size() == 1 ? "es" : "")
-      << (o.outputFile ? "; written to " + *o.outputFile : std::string()) << "\n";
-  for (const std::size_t i : kept) {
-    const k::AtlasCell& c = (*cells)[i];
-    out << i << "  coupler " << formatShort(c.key.lengths.coupler) << " rocker " << formatShort(c.key.lengths.rocker)
-        << " frame " << formatShort(c.key.lengths.frame) << " P (" << formatShort(c.key.point.along) << ", "
-        << formatShort(c.key.point.across) << ")  " << k::toString(c.grashof.category) << ", " << k::toString(c.motion)
-        << ": " << featuresText(c) << "\n";
+  if (problem) {
+    err << "linkwright-cli: " << problem->message << "\n";
+    return ExitCode::IoError;
   }
   return ExitCode::Success;
 }

@@ -111,6 +111,13 @@ k::Result<AtlasOptions> parseAtlasArguments(const std::vector<std::string>& args
     if (auto e = apply(o, option, value)) return *e;
   }
   if (auto e = k::checkAtlasAxes(o.axes)) return usage("--" + e->field, "--" + e->message);
+  if (const std::size_t cells = k::atlasCellCount(o.axes); !o.cell && cells > k::kMaxAtlasRunCells)
+    return usage("--coupler", "--coupler × --rocker × --frame × --along × --across is " +
+                                  std::to_string(o.axes.coupler.size()) + " × " + std::to_string(o.axes.rocker.size()) +
+                                  " × " + std::to_string(o.axes.frame.size()) + " × " +
+                                  std::to_string(o.axes.along.size()) + " × " + std::to_string(o.axes.across.size()) +
+                                  " = " + std::to_string(cells) + " cells; atlas computes at most " +
+                                  std::to_string(k::kMaxAtlasRunCells) + " in one run: give fewer values");
   if (o.cell) {
     const std::size_t count = k::atlasCellCount(o.axes);
     if (*o.cell >= count)

@@ -17,8 +17,12 @@ bool progressShown(const std::ostream& err, const std::ostream* output) {
 Progress::Progress(std::ostream& err, std::string what, std::string unit, bool shown, std::chrono::milliseconds after)
     : m_err(err), m_what(std::move(what)), m_unit(std::move(unit)), m_shown(shown), m_after(after) {}
 
-Progress::~Progress() {
+Progress::~Progress() { clear(); }
+
+void Progress::clear() {
   if (m_width > 0) m_err << '\r' << std::string(m_width, ' ') << '\r' << std::flush;
+  m_width = 0;
+  m_last = {};
 }
 
 void Progress::update(std::size_t done, std::size_t total) {

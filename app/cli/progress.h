@@ -33,6 +33,9 @@ public:
 
   /// `done` of `total` are done.
   void update(std::size_t done, std::size_t total);
+  /// Erases the line drawn, if any, so that output to the same terminal starts on a clean
+  /// line; the next update draws it again.
+  void clear();
 
 private:
   using Clock = std::chrono::steady_clock;

@@ -1,6 +1,8 @@
 #include "kinematics/analysis/coupler_curve_features.h"
 
+#include "kinematics/analysis/box_pairs.h"
 #include "kinematics/analysis/curve_shape_fits.h"
+#include "kinematics/model/units.h"
 
 #include <Eigen/Geometry>
 
@@ -119,29 +121,44 @@ std::vector<Crunode> findCrunodes(const CouplerCurve& curve, double size) {
     box.extend(pieces.back().p1);
     boxes.push_back(box);
   }
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 2; j < n; ++j) {
-      if (curve.closed && i == 0 && j == n - 1) continue;  // neighbours across the closing piece
-      if (!boxes[i].intersects(boxes[j])) continue;
-      const auto chord = chordCrossing(pieces[i], pieces[j]);
-      if (!chord) continue;
-      auto [s, t] = *chord;
-      bool refined = false;
-      if (pieces[i].cubic && pieces[j].cubic)
-        if (const auto on = refinedCrossing(pieces[i], pieces[j], s, t, size)) {
-          std::tie(s, t) = *on;
-          refined = true;
-        }
-      // A curve that runs back over itself (a point on the rocker, whose path is an arc
-      // traced there and back) touches itself along a stretch: not a crossing.
-      const Eigen::Vector2d ti = pieces[i].tangent(s).normalized(), tj = pieces[j].tangent(t).normalized();
-      if (std::abs(cross(ti, tj)) < (refined ? kMinCrossingSine : kMinChordCrossingSine)) continue;
-      const Eigen::Vector2d point = pieces[i].at(s);
-      const bool seen = std::any_of(found.begin(), found.end(),
-                                    [&](const Crunode& c) { return (c.point - point).norm() <= kSamePoint * size; });
-      if (!seen) found.push_back({point, {pieces[i].angle(s), pieces[j].angle(t)}});
-    }
+  // Only pieces whose boxes meet can cross (box_pairs.h: O(n log n)), in the order of i then j.
+  for (const auto& [i, j] : intersectingBoxPairs(boxes)) {
+    if (j < i + 2) continue;                             // neighbours
+    if (curve.closed && i == 0 && j == n - 1) continue;  // neighbours across the closing piece
+    const auto chord = chordCrossing(pieces[i], pieces[j]);
+    if (!chord) continue;
+    auto [s, t] = *chord;
+    bool refined = false;
+    if (pieces[i].cubic && pieces[j].cubic)
+      if (const auto on = refinedCrossing(pieces[i], pieces[j], s, t, size)) {
+        std::tie(s, t) = *on;
+        refined = true;
+      }
+    // A curve that runs back over itself (a point on the rocker, whose path is an arc
+    // traced there and back) touches itself along a stretch: not a crossing.
+    const Eigen::Vector2d ti = pieces[i].tangent(s).normalized(), tj = pieces[j].tangent(t).normalized();
+    if (std::abs(cross(ti, tj)) < (refined ? kMinCrossingSine : kMinChordCrossingSine)) continue;
+    const Eigen::Vector2d point = pieces[i].at(s);
+    const bool seen = std::any_of(found.begin(), found.end(),
+                                  [&](const Crunode& c) { return (c.point - point).norm() <= kSamePoint * size; });
+    if (!seen) found.push_back({point, {pieces[i].angle(s), pieces[j].angle(t)}});
+  }
   return found;
+}
+
+ClassifierTolerances classifierTolerances(std::size_t samples) {
+  const double n = static_cast<double>(std::max<std::size_t>(samples, 4));
+  const double coarse = n < 360.0 ? std::pow(360.0 / n, 4) : 1.0;
+  ClassifierTolerances t;
+  t.cuspAngle = 1e-6 * coarse;
+  t.cuspPoint = 1e-6 * coarse;
+  t.crossingAngleDeg = std::asin(kMinCrossingSine) * 180.0 / kPi;
+  t.crunodePoint = 1e-7 * coarse;
+  t.crunodeAngle = 1e-6 * coarse;
+  t.symmetryAxis = 1e-3 * coarse;
+  t.arcTurnDeg = kMinArcTurn * 180.0 / kPi;
+  t.runEnd = 2.0 * kPi / n;
+  return t;
 }
 
 CurveFeatures classifyCouplerCurve(const CouplerCurve& curve) {

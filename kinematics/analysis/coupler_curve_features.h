@@ -9,8 +9,9 @@
 //   pieces about each sample |dP/du|² is followed on the Hermite cubics; a local minimum of it,
 //   found by golden section, is a cusp when |dP/du| ≤ kCuspSpeed · S per rad. Reported: the crank angle and the
 //   point there, and the least speed found.
-// Crunode: the curve crosses itself. Every two pieces that are not neighbours are tested for a
-//   crossing of their chords; each crossing is then refined on the two cubics by Newton's
+// Crunode: the curve crosses itself. Every two pieces that are not neighbours and whose
+//   chords' boxes meet (found with a grid of buckets, box_pairs.h) are tested for a crossing
+//   of their chords; each crossing is then refined on the two cubics by Newton's
 //   method (P_i(s) = P_j(t)), and crossings within kSamePoint · S of one found are the same.
 //   The two passages must cross at an angle whose sine is at least kMinCrossingSine (0.6°) on
 //   the cubics, or kMinChordCrossingSine (3°) where a piece is a chord (at a toggle): a curve
@@ -110,6 +111,33 @@ struct CurveFeatures {
   std::optional<CircularArc> circular;
   bool operator==(const CurveFeatures&) const = default;
 };
+
+/// What each feature is found to, for a curve of `samples` samples (docs/atlas.md's table):
+/// the rules' tolerances (fractions of S, the curve's size) and how closely a feature found is
+/// placed. Cusps and crunodes are refined on the Hermite cubics, whose error goes as Δu⁴: the
+/// placements are those at 360 samples (checked at 360 and 1440 by
+/// tests/kinematics/analysis/classification_accuracy_test.cpp), and (360/samples)⁴ times them
+/// below 360. A run's ends are samples: each is placed to one sample step of u.
+struct ClassifierTolerances {
+  double cuspSpeed = kCuspSpeed;               ///< of S per rad: the most |dP/du| at a cusp
+  double cuspAngle = 0.0;                      ///< rad: a cusp's crank angle
+  double cuspPoint = 0.0;                      ///< of S: its point
+  double crossingAngleDeg = 0.0;               ///< ° : the least crossing angle on the cubics
+  double samePoint = kSamePoint;               ///< of S: crossings closer are one
+  double crunodePoint = 0.0;                   ///< of S: a crunode's point
+  double crunodeAngle = 0.0;                   ///< rad: its crank angles
+  double symmetry = kSymmetryTolerance;        ///< of S: the most a mirrored curve misses
+  double symmetryAxis = 0.0;                   ///< rad: the mirror line's direction
+  double straight = kStraightTolerance;        ///< of S: a straight run's most distance from its line
+  double straightLength = kMinStraightLength;  ///< of S: its least chord
+  double circular = kCircularTolerance;        ///< of S: a circular run's most distance from its circle
+  double arcLength = kMinArcLength;            ///< of S: its least length
+  double arcTurnDeg = 0.0;                     ///< °: its least turn
+  double runEnd = 0.0;                         ///< rad of u: a run's ends (one sample step)
+};
+
+/// The tolerances for a curve of `samples` samples (at least 4).
+ClassifierTolerances classifierTolerances(std::size_t samples);
 
 /// The curve's cusps, in curve order.
 std::vector<Cusp> findCusps(const CouplerCurve& curve, double size);

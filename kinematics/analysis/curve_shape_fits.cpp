@@ -1,5 +1,7 @@
 #include "kinematics/analysis/curve_shape_fits.h"
 
+#include "kinematics/analysis/point_tree.h"
+#include "kinematics/analysis/window_fits.h"
 #include "kinematics/model/units.h"
 
 #include <Eigen/Dense>
@@ -11,8 +13,6 @@
 namespace linkwright::kinematics {
 namespace {
 
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 double distanceToSegment(const Eigen::Vector2d& x, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   const Eigen::Vector2d ab = b - a;
   const double l2 = ab.squaredNorm();
@@ -20,25 +20,16 @@ double distanceToSegment(const Eigen::Vector2d& x, const Eigen::Vector2d& a, con
   return (a + s * ab - x).norm();
 }
 
-// The curve for distances: its samples, for finding the nearest, and its pieces cut finely,
-// for measuring against the nearest sample's pieces.
+// The curve for distances: its samples, for finding the nearest (a k-d tree), and its pieces
+// cut finely, for measuring against the nearest sample's pieces.
 struct MeasuredCurve {
+  MeasuredCurve(const CouplerCurve& curve) : samples(&curve.point), tree(curve.point), fine(densified(curve, kParts)) {}
   const std::vector<Eigen::Vector2d>* samples;
+  PointTree tree;
   std::vector<Eigen::Vector2d> fine;  // densified(curve, kParts), closed
   static constexpr std::size_t kParts = 8;
 
-  std::size_t nearestSample(const Eigen::Vector2d& x) const {
-    std::size_t best = 0;
-    double least = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < samples->size(); ++i) {
-      const double d = ((*samples)[i] - x).squaredNorm();
-      if (d < least) {
-        least = d;
-        best = i;
-      }
-    }
-    return best;
-  }
+  std::size_t nearestSample(const Eigen::Vector2d& x) const { return tree.nearest(x); }
   // The distance to the nearest sample: within half a piece of the distance to the curve.
   double coarseDistance(const Eigen::Vector2d& x) const { return ((*samples)[nearestSample(x)] - x).norm(); }
   // The distance to the fine pieces within two pieces of the nearest sample.
@@ -88,89 +79,27 @@ std::vector<Eigen::Vector2d> every(const std::vector<Eigen::Vector2d>& points, s
   return out;
 }
 
-// A window of samples [first, last] (indices may pass size() on a closed curve).
-struct Window {
-  const CouplerCurve* curve;
-  std::size_t first, last;
-  const Eigen::Vector2d& at(std::size_t k) const { return curve->point[k % curve->size()]; }
-  std::size_t count() const { return last - first + 1; }
-};
-
-struct LineFit {
-  Eigen::Vector2d mean, direction;
-  double deviation;
-};
-
-LineFit fitLine(const Window& w) {
-  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-  for (std::size_t k = w.first; k <= w.last; ++k) mean += w.at(k);
-  mean /= static_cast<double>(w.count());
-  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
-  for (std::size_t k = w.first; k <= w.last; ++k) scatter += (w.at(k) - mean) * (w.at(k) - mean).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(scatter);
-  const Eigen::Vector2d direction = eigen.eigenvectors().col(1);
-  double deviation = 0.0;
-  for (std::size_t k = w.first; k <= w.last; ++k)
-    deviation = std::max(deviation, std::abs(cross(w.at(k) - mean, direction)));
-  return {mean, direction, deviation};
-}
-
-struct CircleFit {
-  Eigen::Vector2d centre;
-  double radius, deviation, turn;
-  bool ok;
-};
-
-CircleFit fitCircle(const Window& w, const Eigen::Vector2d& origin) {
-  // Kåsa: least squares of x² + y² + Dx + Ey + F over the samples, about `origin` for scale.
-  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
-  for (std::size_t k = w.first; k <= w.last; ++k) {
-    const Eigen::Vector2d p = w.at(k) - origin;
-    const Eigen::Vector3d row(p.x(), p.y(), 1.0);
-    normal += row * row.transpose();
-    rhs -= row * p.squaredNorm();
-  }
-  const Eigen::Vector3d def = normal.ldlt().solve(rhs);
-  const Eigen::Vector2d centre(-0.5 * def[0], -0.5 * def[1]);
-  const double r2 = centre.squaredNorm() - def[2];
-  if (!std::isfinite(r2) || r2 <= 0.0) return {origin, 0.0, 0.0, 0.0, false};
-  const double radius = std::sqrt(r2);
-  double deviation = 0.0, turn = 0.0;
-  for (std::size_t k = w.first; k <= w.last; ++k) {
-    deviation = std::max(deviation, std::abs((w.at(k) - origin - centre).norm() - radius));
-    if (k > w.first) {
-      const Eigen::Vector2d a = w.at(k - 1) - origin - centre, b = w.at(k) - origin - centre;
-      turn += std::abs(std::atan2(cross(a, b), a.dot(b)));
-    }
-  }
-  return {centre + origin, radius, deviation, turn, std::isfinite(deviation)};
-}
-
-double arcLength(const Window& w) {
-  double length = 0.0;
-  for (std::size_t k = w.first; k < w.last; ++k) length += (w.at(k + 1) - w.at(k)).norm();
-  return length;
-}
-
-// The longest window by `measure` that `fits` and `counts`, by a sliding window.
+// The longest window by `measure` that `fits`, by a sliding window: the window grows while it
+// fits, and its start moves on when it does not. `measure(w, beat)` may return 0 for a window
+// that cannot beat `beat`.
 template <class Fits, class Measure>
-std::optional<Window> longestWindow(const CouplerCurve& curve, const Fits& fits, const Measure& measure) {
+std::optional<SampleWindow> longestWindow(const CouplerCurve& curve, const Fits& fits, const Measure& measure) {
   const std::size_t n = curve.size();
   const std::size_t starts = curve.closed ? n : n - 2;
   const std::size_t cap = curve.closed ? n - 1 : 0;  // a closed window holds at most n samples
-  std::optional<Window> best;
+  std::optional<SampleWindow> best;
   double bestMeasure = 0.0;
   std::size_t last = 0;
   for (std::size_t first = 0; first < starts; ++first) {
     last = std::max(last, first + 2);
     if (!curve.closed && last >= n) break;
     const auto end = curve.closed ? first + cap : n - 1;
-    while (last < end && fits(Window{&curve, first, last + 1})) ++last;
-    const Window w{&curve, first, last};
+    while (last < end && fits(SampleWindow{first, last + 1})) ++last;
+    const SampleWindow w{first, last};
     if (!fits(w)) continue;
-    const double m = measure(w);
-    if (m > bestMeasure) {
+    // Of runs as long to rounding (a symmetric curve's mirror-image runs), the first.
+    const double m = measure(w, bestMeasure * (1.0 + 1e-12));
+    if (m > bestMeasure * (1.0 + 1e-12)) {
       bestMeasure = m;
       best = w;
     }
@@ -182,13 +111,13 @@ std::optional<Window> longestWindow(const CouplerCurve& curve, const Fits& fits,
 }  // namespace
 
 double mirrorMismatch(const CouplerCurve& curve, const Eigen::Vector2d& point, const Eigen::Vector2d& direction) {
-  const MeasuredCurve measured{&curve.point, densified(curve, MeasuredCurve::kParts)};
+  const MeasuredCurve measured(curve);
   return mismatch(curve.point, measured, point, std::atan2(direction.y(), direction.x()), true);
 }
 
 std::optional<SymmetryAxis> findSymmetry(const CouplerCurve& curve, double size) {
   if (!curve.closed || curve.size() < 8) return std::nullopt;
-  const MeasuredCurve measured{&curve.point, densified(curve, MeasuredCurve::kParts)};
+  const MeasuredCurve measured(curve);
   const Eigen::Vector2d g = arcCentroid(measured.fine);
   const std::vector<Eigen::Vector2d> coarse = every(curve.point, 24), middle = every(curve.point, 48);
   const double step = kPi / 90.0;  // 2°
@@ -227,11 +156,12 @@ std::optional<SymmetryAxis> findSymmetry(const CouplerCurve& curve, double size)
 std::optional<StraightRun> findStraightRun(const CouplerCurve& curve, double size) {
   if (curve.size() < 4) return std::nullopt;
   const double tolerance = kStraightTolerance * size;
+  const WindowFits windows(curve);
   const auto best = longestWindow(
-      curve, [&](const Window& w) { return fitLine(w).deviation <= tolerance; },
-      [&](const Window& w) { return (w.at(w.last) - w.at(w.first)).norm(); });
+      curve, [&](SampleWindow w) { return windows.within(w, windows.line(w), tolerance); },
+      [&](SampleWindow w, double) { return (windows.at(w.last) - windows.at(w.first)).norm(); });
   if (!best) return std::nullopt;
-  const Eigen::Vector2d from = best->at(best->first), to = best->at(best->last);
+  const Eigen::Vector2d from = windows.at(best->first), to = windows.at(best->last);
   if ((to - from).norm() < kMinStraightLength * size) return std::nullopt;
   const std::size_t n = curve.size();
   return StraightRun{curve.crankAngle[best->first % n],
@@ -239,7 +169,7 @@ std::optional<StraightRun> findStraightRun(const CouplerCurve& curve, double siz
                      from,
                      to,
                      (to - from).norm(),
-                     fitLine(*best).deviation,
+                     windows.deviation(*best, windows.line(*best)),
                      best->first % n,
                      best->last % n};
 }
@@ -247,27 +177,29 @@ std::optional<StraightRun> findStraightRun(const CouplerCurve& curve, double siz
 std::optional<CircularArc> findCircularArc(const CouplerCurve& curve, double size) {
   if (curve.size() < 4) return std::nullopt;
   const double tolerance = kCircularTolerance * size;
-  const Eigen::Vector2d origin = curve.point.front();
+  const WindowFits windows(curve);
   const auto best = longestWindow(
       curve,
-      [&](const Window& w) {
-        const CircleFit c = fitCircle(w, origin);
-        return c.ok && c.deviation <= tolerance;
+      [&](SampleWindow w) {
+        const WindowCircle c = windows.circle(w);
+        return c.ok && windows.within(w, c, tolerance);
       },
-      [&](const Window& w) {
-        const CircleFit c = fitCircle(w, origin);
-        return c.turn >= kMinArcTurn ? arcLength(w) : 0.0;
+      [&](SampleWindow w, double beat) {
+        const double length = windows.arcLength(w);
+        if (length <= beat) return 0.0;
+        return windows.turnsAtLeast(w, windows.circle(w), tolerance, kMinArcTurn) ? length : 0.0;
       });
   if (!best) return std::nullopt;
-  const CircleFit c = fitCircle(*best, origin);
-  if (arcLength(*best) < kMinArcLength * size || c.turn < kMinArcTurn) return std::nullopt;
+  const WindowCircle c = windows.circle(*best);
+  const double turn = windows.turn(*best, c.centre);
+  if (windows.arcLength(*best) < kMinArcLength * size || turn < kMinArcTurn) return std::nullopt;
   const std::size_t n = curve.size();
   return CircularArc{curve.crankAngle[best->first % n],
                      curve.crankAngle[best->last % n],
                      c.centre,
                      c.radius,
-                     c.turn,
-                     c.deviation,
+                     turn,
+                     windows.deviation(*best, c),
                      best->first % n,
                      best->last % n};
 }

@@ -5,16 +5,18 @@
 // Symmetry. A mirror line of a closed curve passes through its centroid G (the centroid of its
 // arc length, which a reflection keeps), so only its direction φ is searched: the mismatch
 // m(φ) = the worst distance from a mirrored sample to the curve (measured against the curve cut
-// finely on its cubics). m is scanned every 2° over half a turn on a subset of the samples, the
-// best directions are refined by golden section, and the best is checked on every sample. An
-// open curve is not tested.
+// finely on its cubics, near the mirrored sample's nearest sample, found in a k-d tree:
+// point_tree.h). m is scanned every 2° over half a turn on a subset of the samples, the best
+// directions are refined by golden section, and the best is checked on every sample: O(n log n).
+// An open curve is not tested.
 //
 // Runs. A run is a stretch of consecutive samples (wrapping on a closed curve). Its line is the
 // total-least-squares line (the principal axis of the samples' scatter), its circle the
-// algebraic least-squares circle x² + y² + Dx + Ey + F = 0 (Kåsa), both from running sums; the
+// algebraic least-squares circle x² + y² + Dx + Ey + F = 0 (Kåsa), both from prefix sums; the
 // run's deviation is its worst sample's distance. The longest run within the tolerance is
 // found by a sliding window: the window grows while it fits, and its start moves on when it
-// does not.
+// does not. Each window is fitted in O(1) and tested against the tolerance in O(log n)
+// (window_fits.h), so the search is O(n log n), not O(n²).
 
 #include "kinematics/analysis/coupler_curve_features.h"
 

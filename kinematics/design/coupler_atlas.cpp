@@ -191,16 +191,36 @@ Result<AtlasCell> computeAtlasCell(const AtlasCellKey& key, const std::atomic<bo
   return cell;
 }
 
-Result<std::vector<AtlasCell>> computeAtlasPage(const AtlasAxes& axes, std::size_t first, std::size_t count,
-                                                const std::atomic<bool>* cancel) {
+Result<std::size_t> runAtlas(const AtlasAxes& axes, std::size_t first, std::size_t count, const AtlasCellVisitor& visit,
+                             const RunControl& control) {
   if (auto e = checkAtlasAxes(axes)) return *e;
   const std::size_t total = atlasCellCount(axes);
-  std::vector<AtlasCell> cells;
-  for (std::size_t i = first; i < total && i - first < count; ++i) {
-    auto cell = computeAtlasCell(atlasCellKey(axes, i), cancel);
+  const std::size_t cells = first < total ? std::min(count, total - first) : 0;
+  if (cells > kMaxAtlasRunCells)
+    return Error{ErrorCode::InvalidValue, "count",
+                 "an atlas run computes at most " + std::to_string(kMaxAtlasRunCells) + " cells (asked " +
+                     std::to_string(cells) + ")"};
+  for (std::size_t k = 0; k < cells; ++k) {
+    if (control.cancelled()) return cancelledError();
+    auto cell = computeAtlasCell(atlasCellKey(axes, first + k), control.cancel);
     if (!cell) return cell.error();
-    cells.push_back(std::move(cell).value());
+    if (!visit(first + k, *cell)) return k + 1;
+    if (control.progress) control.progress(k + 1, cells);
   }
+  return cells;
+}
+
+Result<std::vector<AtlasCell>> computeAtlasPage(const AtlasAxes& axes, std::size_t first, std::size_t count,
+                                                const std::atomic<bool>* cancel) {
+  std::vector<AtlasCell> cells;
+  auto run = runAtlas(
+      axes, first, count,
+      [&](std::size_t, const AtlasCell& cell) {
+        cells.push_back(cell);
+        return true;
+      },
+      RunControl{cancel, {}});
+  if (!run) return run.error();
   return cells;
 }
 

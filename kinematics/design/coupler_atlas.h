@@ -25,10 +25,12 @@
 #include "kinematics/analysis/grashof.h"
 #include "kinematics/design/design.h"
 #include "kinematics/model/fourbar.h"
+#include "kinematics/model/request_field.h"
 #include "kinematics/model/result.h"
 
 #include <atomic>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -37,9 +39,12 @@ namespace linkwright::kinematics {
 inline constexpr std::size_t kMinAtlasSamples = 36;
 inline constexpr std::size_t kMaxAtlasSamples = 100000;
 inline constexpr std::size_t kMaxAtlasAxisValues = 64;  ///< values on one axis
-inline constexpr double kMinAtlasRatio = 1e-3;          ///< of the crank
-inline constexpr double kMaxAtlasRatio = 1e3;           ///< of the crank
-inline constexpr double kMaxAtlasPosition = 100.0;      ///< |along|, |across|, coupler lengths
+/// Cells one run computes (runAtlas, computeAtlasPage): about 4 minutes on one core at 360
+/// samples a curve (docs/atlas.md).
+inline constexpr std::size_t kMaxAtlasRunCells = 100000;
+inline constexpr double kMinAtlasRatio = 1e-3;      ///< of the crank
+inline constexpr double kMaxAtlasRatio = 1e3;       ///< of the crank
+inline constexpr double kMaxAtlasPosition = 100.0;  ///< |along|, |across|, coupler lengths
 /// A rocking crank's design (atlasCellDesign) runs to within this of its range's edges (rad).
 inline constexpr double kAtlasEdgeMargin = 1e-7;
 
@@ -110,7 +115,19 @@ Result<Mechanism> atlasMechanism(const AtlasCellKey& key, Branch branch, double 
 /// not have, or ErrorCode::Cancelled once `cancel` is true.
 Result<AtlasCell> computeAtlasCell(const AtlasCellKey& key, const std::atomic<bool>* cancel = nullptr);
 
-/// Cells [first, first + count) of the grid (fewer at its end), each as computeAtlasCell.
+/// What a run does with each cell as it is classified: `index` is its number in the grid. The
+/// cell is dropped when it returns; false stops the run.
+using AtlasCellVisitor = std::function<bool(std::size_t index, const AtlasCell& cell)>;
+
+/// Cells [first, first + count) of the grid (fewer at its end), each computed as
+/// computeAtlasCell, handed to `visit` and dropped, in order; control.progress(done, total)
+/// after each. Returns the cells visited. Errors: the axes' (checkAtlasAxes), more than
+/// kMaxAtlasRunCells cells (field "count"), a cell's, or ErrorCode::Cancelled once
+/// control.cancel is set.
+Result<std::size_t> runAtlas(const AtlasAxes& axes, std::size_t first, std::size_t count, const AtlasCellVisitor& visit,
+                             const RunControl& control = {});
+
+/// Cells [first, first + count) of the grid, kept: runAtlas into a vector.
 Result<std::vector<AtlasCell>> computeAtlasPage(const AtlasAxes& axes, std::size_t first, std::size_t count,
                                                 const std::atomic<bool>* cancel = nullptr);
 

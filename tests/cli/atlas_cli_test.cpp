@@ -55,6 +55,15 @@ TEST_CASE("atlas --json lists every cell with the core's classification", "[cli]
   const auto json = k::io::parseJson(run.out).value();
   const auto cells = k::computeAtlasPage(gridAxes(), 0, 8).value();
   REQUIRE(json["cells"] == 8);
+  REQUIRE(json["matching"] == 8);
+  // What each feature is found to: the core's tolerances at these samples.
+  const k::ClassifierTolerances t = k::classifierTolerances(180);
+  CHECK(json["tolerances"]["cusp"]["speed_per_rad"] == t.cuspSpeed);
+  CHECK(json["tolerances"]["cusp"]["point"] == t.cuspPoint);
+  CHECK(json["tolerances"]["crunode"]["point"] == t.crunodePoint);
+  CHECK(json["tolerances"]["symmetry"]["deviation"] == t.symmetry);
+  CHECK(json["tolerances"]["straight"]["ends_u_rad"] == t.runEnd);
+  CHECK(json["tolerances"]["circular"]["deviation"] == t.circular);
   REQUIRE(json["atlas"].size() == 8);
   for (std::size_t i = 0; i < 8; ++i) {
     const auto& j = json["atlas"][i];
@@ -148,6 +157,18 @@ TEST_CASE("atlas refuses bad options, naming the option, the value and the range
   CHECK(refused({"atlas", "--fourbar", "1,2,3,4"}) ==
         "linkwright-cli: unknown option '--fourbar' for 'atlas' (see linkwright-cli --help atlas)\n");
   CHECK(refused({"atlas", "--json", "--json"}) == "linkwright-cli: --json is given more than once\n");
+  {
+    std::string many = "1";
+    for (int i = 2; i <= 64; ++i) many += "," + std::to_string(i);
+    CHECK(refused({"atlas", "--coupler", many, "--rocker", many, "--frame", many, "--along", many, "--across", many}) ==
+          "linkwright-cli: --coupler × --rocker × --frame × --along × --across is 64 × 64 × 64 × 64 × 64 = "
+          "1073741824 cells; atlas computes at most 100000 in one run: give fewer values\n");
+    CHECK(refused({"atlas", "--coupler", many, "--rocker", many, "--frame",
+                   "1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17,18,"
+                   "19,20,21,22,23,24,25"}) ==
+          "linkwright-cli: --coupler × --rocker × --frame × --along × --across is 64 × 64 × 25 × 5 × 3 = 1536000 "
+          "cells; atlas computes at most 100000 in one run: give fewer values\n");
+  }
 
   SECTION("a cell that never assembles is not written") {
     const fs::path dir = scratchDir("atlas-cli");

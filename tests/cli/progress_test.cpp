@@ -19,6 +19,18 @@ TEST_CASE("progress is drawn in place and cleared, only where it is shown", "[cl
   }
   const std::string line = "analyze: 45 % (4500000 of 10000000 samples)";
   CHECK(terminal.str() == "\r" + line + "\r" + std::string(line.size(), ' ') + "\r");
+  // Cleared for output to the same terminal, and drawn again at the next update.
+  std::ostringstream cleared;
+  {
+    cli::Progress progress(cleared, "atlas", "cells", true, std::chrono::milliseconds(0));
+    progress.update(1, 4);
+    progress.clear();
+    cleared << "row\n";
+    progress.update(2, 4);
+  }
+  const std::string one = "atlas: 25 % (1 of 4 cells)", two = "atlas: 50 % (2 of 4 cells)";
+  CHECK(cleared.str() == "\r" + one + "\r" + std::string(one.size(), ' ') + "\rrow\n\r" + two + "\r" +
+                             std::string(two.size(), ' ') + "\r");
   // Not a terminal: nothing, before or after the first second.
   std::ostringstream pipe;
   {

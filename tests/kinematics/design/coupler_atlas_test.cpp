@@ -252,3 +252,68 @@ TEST_CASE("bad atlas axes are refused, naming the axis, the value and the range"
   REQUIRE(!page.ok());
   CHECK(page.error().field == "samples");
 }
+
+TEST_CASE("an atlas run hands on each cell in order as it is classified, with progress, and stops when asked",
+          "[atlas]") {
+  AtlasAxes axes;
+  axes.samples = 72;
+  const auto page = computeAtlasPage(axes, 5, 12);
+  REQUIRE(page.ok());
+  std::vector<std::size_t> seen, progress;
+  RunControl control;
+  control.progress = [&](std::size_t done, std::size_t total) {
+    CHECK(total == 12);
+    progress.push_back(done);
+  };
+  const auto run = runAtlas(
+      axes, 5, 12,
+      [&](std::size_t index, const AtlasCell& cell) {
+        CHECK(progress.size() == seen.size());  // each cell is handed on before the next is computed
+        CHECK(cell == (*page)[seen.size()]);
+        seen.push_back(index);
+        return true;
+      },
+      control);
+  REQUIRE(run.ok());
+  CHECK(*run == 12);
+  CHECK(seen == std::vector<std::size_t>{5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16});
+  CHECK(progress == std::vector<std::size_t>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12});
+
+  SECTION("a visitor that says stop ends the run there") {
+    std::size_t calls = 0;
+    const auto stopped = runAtlas(axes, 0, 100, [&](std::size_t, const AtlasCell&) { return ++calls < 3; });
+    REQUIRE(stopped.ok());
+    CHECK(*stopped == 3);
+    CHECK(calls == 3);
+  }
+  SECTION("a cancel flag set during the run ends it Cancelled") {
+    std::atomic<bool> cancel{false};
+    std::size_t calls = 0;
+    const auto cancelled = runAtlas(
+        axes, 0, 100,
+        [&](std::size_t, const AtlasCell&) {
+          if (++calls == 2) cancel = true;
+          return true;
+        },
+        RunControl{&cancel, {}});
+    REQUIRE(!cancelled.ok());
+    CHECK(cancelled.error().code == ErrorCode::Cancelled);
+    CHECK(calls == 2);
+  }
+  SECTION("more cells than one run computes are refused before any is computed") {
+    AtlasAxes big;
+    big.coupler = std::vector<double>(64, 2.0);
+    big.rocker = std::vector<double>(64, 2.0);
+    big.frame = std::vector<double>(64, 2.0);
+    REQUIRE(atlasCellCount(big) == 64u * 64u * 64u * 5u * 3u);
+    std::size_t calls = 0;
+    const auto refused =
+        runAtlas(big, 0, atlasCellCount(big), [&](std::size_t, const AtlasCell&) { return ++calls > 0; });
+    REQUIRE(!refused.ok());
+    CHECK(calls == 0);
+    CHECK(refused.error().field == "count");
+    CHECK(refused.error().message == "an atlas run computes at most 100000 cells (asked 3932160)");
+    // A page of it is fine: the grid is not capped, a run is.
+    CHECK(runAtlas(big, 3932150, 100, [](std::size_t, const AtlasCell&) { return true; }).value() == 10);
+  }
+}
