@@ -18,43 +18,14 @@
 #include "kinematics/solve/sweep.h"
 
 #include "tests/support/catch.h"
+#include "tests/support/coupler_curves.h"
 
 #include <cmath>
 
 using namespace linkwright::kinematics;
+namespace test = linkwright::test;
 
 namespace {
-
-constexpr std::size_t kP = fourbar::kCouplerPoint.index;
-
-CouplerCurve curveOf(const FourBarLengths& l, CouplerPointSpec p, std::size_t samples) {
-  const auto m = makeFourBar(l, Branch::Open, "mm", p);
-  REQUIRE(m.ok());
-  SweepSpec spec;
-  spec.toAngle = 2.0 * kPi * static_cast<double>(samples - 1) / static_cast<double>(samples);
-  spec.samples = samples;
-  spec.omega = 1.0;
-  const auto s = sweep(*m, spec);
-  REQUIRE(s.ok());
-  CouplerCurve c;
-  for (std::size_t j = 0; j < s->size(); ++j) {
-    REQUIRE(s->ok(j));
-    c.parameter.push_back(s->inputAngle[j]);
-    c.crankAngle.push_back(s->inputAngle[j]);
-    c.point.push_back(s->position[kP][j]);
-    c.derivative.push_back(s->velocity[kP][j]);
-    c.rateOk.push_back(1);
-  }
-  return c;
-}
-
-Eigen::Vector2d pointAt(const FourBarLengths& l, CouplerPointSpec p, double angle) {
-  const auto m = makeFourBar(l, Branch::Open, "mm", p);
-  REQUIRE(m.ok());
-  const auto pose = solvePose(*m, {angle, 1.0, 0.0});
-  REQUIRE(pose.ok());
-  return pose->position[kP];
-}
 
 double angleGap(double a, double b) { return std::abs(std::remainder(a - b, 2.0 * kPi)); }
 
@@ -63,7 +34,8 @@ struct Both {
 };
 
 Both classified(const FourBarLengths& l, CouplerPointSpec p) {
-  return {classifyCouplerCurve(curveOf(l, p, 360)), classifyCouplerCurve(curveOf(l, p, 1440))};
+  return {classifyCouplerCurve(test::couplerCurveOf(l, p, 360)),
+          classifyCouplerCurve(test::couplerCurveOf(l, p, 1440))};
 }
 
 // The features found, by name and count: what must not change with the samples.
@@ -126,7 +98,7 @@ TEST_CASE("a figure-eight's crunode is found at both sample counts, where P pass
   for (std::size_t k = 0; k < 2; ++k) {
     CHECK(angleGap(a.crankAngles[k], b.crankAngles[k]) <= t.crunodeAngle);
     for (const Crunode* x : {&a, &b})
-      CHECK((pointAt(l, p, x->crankAngles[k]) - x->point).norm() <= t.crunodePoint * f.fine.size);
+      CHECK((test::couplerPointAt(l, p, x->crankAngles[k]) - x->point).norm() <= t.crunodePoint * f.fine.size);
   }
 }
 

@@ -20,45 +20,14 @@
 #include "kinematics/solve/sweep.h"
 
 #include "tests/support/catch.h"
+#include "tests/support/coupler_curves.h"
 
 #include <cmath>
 
 using namespace linkwright::kinematics;
+namespace test = linkwright::test;
 
 namespace {
-
-constexpr std::size_t kP = fourbar::kCouplerPoint.index;
-
-// P's curve over a full turn at `samples` angles, straight from the solver (ω = 1: v = dP/dθ).
-CouplerCurve curveOf(const FourBarLengths& l, CouplerPointSpec p, std::size_t samples = 360) {
-  const auto m = makeFourBar(l, Branch::Open, "mm", p);
-  REQUIRE(m.ok());
-  SweepSpec spec;
-  spec.toAngle = 2.0 * kPi * static_cast<double>(samples - 1) / static_cast<double>(samples);
-  spec.samples = samples;
-  spec.omega = 1.0;
-  const auto s = sweep(*m, spec);
-  REQUIRE(s.ok());
-  CouplerCurve c;
-  for (std::size_t j = 0; j < s->size(); ++j) {
-    REQUIRE(s->ok(j));
-    c.parameter.push_back(s->inputAngle[j]);
-    c.crankAngle.push_back(s->inputAngle[j]);
-    c.point.push_back(s->position[kP][j]);
-    c.derivative.push_back(s->velocity[kP][j]);
-    c.rateOk.push_back(1);
-  }
-  return c;
-}
-
-// P (length unit) at crank angle `angle` on the open branch.
-Eigen::Vector2d pointAt(const FourBarLengths& l, CouplerPointSpec p, double angle) {
-  const auto m = makeFourBar(l, Branch::Open, "mm", p);
-  REQUIRE(m.ok());
-  const auto pose = solvePose(*m, {angle, 1.0, 0.0});
-  REQUIRE(pose.ok());
-  return pose->position[kP];
-}
 
 double distanceToLine(const Eigen::Vector2d& x, const SymmetryAxis& axis) {
   const Eigen::Vector2d r = x - axis.point;
@@ -86,7 +55,7 @@ TEST_CASE("a coupler point at the coupler's instant centre gives a cusp at that 
   REQUIRE(i13.kind == CentreKind::Finite);
   const Eigen::Vector2d u = (c - b).normalized(), n(-u.y(), u.x());
   const CouplerPointSpec p{(i13.position - b).dot(u), (i13.position - b).dot(n)};
-  const CouplerCurve curve = curveOf(l, p);
+  const CouplerCurve curve = test::couplerCurveOf(l, p);
   const CurveFeatures f = classifyCouplerCurve(curve);
   REQUIRE(f.cusps.size() >= 1);
   const Cusp* found = nullptr;
@@ -101,7 +70,7 @@ TEST_CASE("a coupler point at the coupler's instant centre gives a cusp at that 
 }
 
 TEST_CASE("a coupler point off the centrode has no cusp", "[atlas][cusp]") {
-  const CurveFeatures f = classifyCouplerCurve(curveOf({3.0, 1.0, 3.0, 2.5}, {1.5, 0.2}));
+  const CurveFeatures f = classifyCouplerCurve(test::couplerCurveOf({3.0, 1.0, 3.0, 2.5}, {1.5, 0.2}));
   CHECK(f.cusps.empty());
 }
 
@@ -110,16 +79,17 @@ TEST_CASE("a figure-eight's crossing is where the solver's P passes twice, and a
     // Atlas cell coupler 1.5, rocker 2.5, frame 2.5, P (1.5, 1) coupler lengths: a figure-eight.
     const FourBarLengths l{2.5, 1.0, 1.5, 2.5};
     const CouplerPointSpec p{2.25, 1.5};
-    const CurveFeatures f = classifyCouplerCurve(curveOf(l, p));
+    const CurveFeatures f = classifyCouplerCurve(test::couplerCurveOf(l, p));
     REQUIRE(f.crunodes.size() == 1);
     const Crunode& x = f.crunodes.front();
     CAPTURE(x.point.x(), x.point.y(), x.crankAngles[0], x.crankAngles[1]);
     CHECK(std::abs(std::remainder(x.crankAngles[0] - x.crankAngles[1], 2.0 * kPi)) > 0.1);
-    for (const double angle : x.crankAngles) CHECK((pointAt(l, p, angle) - x.point).norm() < 1e-7 * f.size);
+    for (const double angle : x.crankAngles)
+      CHECK((test::couplerPointAt(l, p, angle) - x.point).norm() < 1e-7 * f.size);
   }
   SECTION("circle") {
     const FourBarLengths l{3.0, 1.0, 3.0, 2.5};
-    const CurveFeatures f = classifyCouplerCurve(curveOf(l, {0.0, 0.0}));
+    const CurveFeatures f = classifyCouplerCurve(test::couplerCurveOf(l, {0.0, 0.0}));
     CHECK(f.crunodes.empty());
     CHECK(f.cusps.empty());
     REQUIRE(f.circular.has_value());
@@ -138,25 +108,26 @@ TEST_CASE("Norton's symmetric coupler curves are symmetric about a line through 
   const double gamma = GENERATE(0.6, 1.6, 2.4);
   CAPTURE(gamma);
   const CouplerPointSpec p{2.5 + 2.5 * std::cos(gamma), 2.5 * std::sin(gamma)};
-  const CouplerCurve curve = curveOf(l, p);
+  const CouplerCurve curve = test::couplerCurveOf(l, p);
   const CurveFeatures f = classifyCouplerCurve(curve);
   REQUIRE(f.symmetry.has_value());
   CHECK(f.symmetry->deviation < kSymmetryTolerance * f.size);
   CHECK(distanceToLine(Eigen::Vector2d(l.frame, 0.0), *f.symmetry) < 1e-3 * f.size);
 
   SECTION("a generic point is not symmetric") {
-    const CurveFeatures g = classifyCouplerCurve(curveOf({3.0, 1.0, 2.0, 2.5}, {1.2, 0.7}));
+    const CurveFeatures g = classifyCouplerCurve(test::couplerCurveOf({3.0, 1.0, 2.0, 2.5}, {1.2, 0.7}));
     CHECK(!g.symmetry.has_value());
     // Its best mirror line misses by far more than the tolerance.
     const SymmetryAxis axis{Eigen::Vector2d(l.frame, 0.0), Eigen::Vector2d::UnitX(), 0.0};
-    CHECK(mirrorMismatch(curveOf({3.0, 1.0, 2.0, 2.5}, {1.2, 0.7}), axis.point, axis.direction) > 0.01 * g.size);
+    CHECK(mirrorMismatch(test::couplerCurveOf({3.0, 1.0, 2.0, 2.5}, {1.2, 0.7}), axis.point, axis.direction) >
+          0.01 * g.size);
   }
 }
 
 TEST_CASE("Hoeken's linkage traces a straight run parallel to its frame", "[atlas][straight]") {
   const FourBarLengths l{2.0, 1.0, 2.5, 2.5};
   const CouplerPointSpec p{5.0, 0.0};
-  const CouplerCurve curve = curveOf(l, p);
+  const CouplerCurve curve = test::couplerCurveOf(l, p);
   const CurveFeatures f = classifyCouplerCurve(curve);
   REQUIRE(f.straight.has_value());
   const StraightRun& run = *f.straight;
@@ -172,6 +143,6 @@ TEST_CASE("Hoeken's linkage traces a straight run parallel to its frame", "[atla
   CHECK(f.symmetry.has_value());  // coupler = rocker and |CP| = 2.5: also Norton's case
 
   SECTION("a generic curve has no straight run") {
-    CHECK(!classifyCouplerCurve(curveOf({3.0, 1.0, 3.0, 2.5}, {0.6, 0.4})).straight.has_value());
+    CHECK(!classifyCouplerCurve(test::couplerCurveOf({3.0, 1.0, 3.0, 2.5}, {0.6, 0.4})).straight.has_value());
   }
 }

@@ -17,6 +17,7 @@
 #include "kinematics/solve/sweep.h"
 
 #include "tests/support/catch.h"
+#include "tests/support/coupler_curves.h"
 
 #include <Eigen/Dense>
 
@@ -24,29 +25,9 @@
 #include <random>
 
 using namespace linkwright::kinematics;
+namespace test = linkwright::test;
 
 namespace {
-
-CouplerCurve curveOf(const FourBarLengths& l, CouplerPointSpec p, std::size_t samples) {
-  const auto m = makeFourBar(l, Branch::Open, "mm", p);
-  REQUIRE(m.ok());
-  SweepSpec spec;
-  spec.toAngle = 2.0 * kPi * static_cast<double>(samples - 1) / static_cast<double>(samples);
-  spec.samples = samples;
-  spec.omega = 1.0;
-  const auto s = sweep(*m, spec);
-  REQUIRE(s.ok());
-  CouplerCurve c;
-  const std::size_t k = fourbar::kCouplerPoint.index;
-  for (std::size_t j = 0; j < s->size(); ++j) {
-    c.parameter.push_back(s->inputAngle[j]);
-    c.crankAngle.push_back(s->inputAngle[j]);
-    c.point.push_back(s->position[k][j]);
-    c.derivative.push_back(s->velocity[k][j]);
-    c.rateOk.push_back(1);
-  }
-  return c;
-}
 
 std::vector<std::pair<std::size_t, std::size_t>> allPairs(const std::vector<Eigen::AlignedBox2d>& boxes) {
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
@@ -72,13 +53,13 @@ double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x()
 
 TEST_CASE("box pairs from buckets are the all-pairs test's", "[atlas][crunode]") {
   SECTION("a figure-eight's pieces") {
-    const auto boxes = pieceBoxes(curveOf({2.5, 1.0, 1.5, 2.5}, {2.25, 1.5}, 720));
+    const auto boxes = pieceBoxes(test::couplerCurveOf({2.5, 1.0, 1.5, 2.5}, {2.25, 1.5}, 720));
     const auto pairs = intersectingBoxPairs(boxes);
     CHECK(pairs == allPairs(boxes));
     CHECK(pairs.size() > boxes.size());  // neighbours touch, and the crossing's pieces meet
   }
   SECTION("a point on the rocker, whose curve runs back over itself") {
-    const auto boxes = pieceBoxes(curveOf({3.0, 1.0, 3.0, 2.5}, {1.0, 0.3}, 500));
+    const auto boxes = pieceBoxes(test::couplerCurveOf({3.0, 1.0, 3.0, 2.5}, {1.0, 0.3}, 500));
     CHECK(intersectingBoxPairs(boxes) == allPairs(boxes));
   }
   SECTION("random boxes, small and wide") {
@@ -100,7 +81,7 @@ TEST_CASE("box pairs from buckets are the all-pairs test's", "[atlas][crunode]")
 TEST_CASE("the point tree's nearest point is the nearest of all", "[atlas][symmetric]") {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> u(-3.0, 3.0);
-  const CouplerCurve c = curveOf({2.5, 1.0, 1.5, 2.5}, {2.25, 1.5}, 997);
+  const CouplerCurve c = test::couplerCurveOf({2.5, 1.0, 1.5, 2.5}, {2.25, 1.5}, 997);
   const PointTree tree(c.point);
   for (int k = 0; k < 500; ++k) {
     const Eigen::Vector2d x(u(random), u(random));
@@ -113,7 +94,7 @@ TEST_CASE("the point tree's nearest point is the nearest of all", "[atlas][symme
 }
 
 TEST_CASE("window fits are the direct least-squares fits, and within() is every sample's test", "[atlas][straight]") {
-  const CouplerCurve c = curveOf({2.0, 1.0, 2.5, 2.5}, {2.0, 0.0}, 720);  // Hoeken's
+  const CouplerCurve c = test::couplerCurveOf({2.0, 1.0, 2.5, 2.5}, {2.0, 0.0}, 720);  // Hoeken's
   const std::size_t n = c.size();
   const WindowFits fits(c);
   std::mt19937 random(3);
