@@ -39,6 +39,27 @@ double goldenMaximum(const std::function<double(double)>& f, double low, double 
   return std::max(f1, f2);
 }
 
+// The series' values at the n samples of its grid, by the inverse transform: O(n log n), where
+// evaluating it at each sample would be O(n K).
+std::vector<double> gridValues(std::size_t n, const std::vector<double>& a, const std::vector<double>& b) {
+  std::vector<std::complex<double>> spectrum(n, 0.0);
+  const double half = 0.5 * static_cast<double>(n);
+  spectrum[0] = static_cast<double>(n) * a[0];
+  for (std::size_t k = 1; k < a.size() && k < n; ++k) {
+    if (n % 2 == 0 && 2 * k == n) {
+      spectrum[k] = static_cast<double>(n) * a[k];  // the Nyquist term's sine is 0 at every sample
+      continue;
+    }
+    if (2 * k > n) break;
+    spectrum[k] = half * std::complex<double>(a[k], -b[k]);
+    spectrum[n - k] = std::conj(spectrum[k]);
+  }
+  std::vector<double> values;
+  Eigen::FFT<double> fft;
+  fft.inv(values, spectrum);
+  return values;
+}
+
 double foldIntoTurn(double theta, double theta0) {
   double t = std::fmod(theta - theta0, kTurn);
   if (t < 0.0) t += kTurn;
@@ -105,10 +126,8 @@ PeriodicSeries PeriodicSeries::surplusSeries() const {
     b[k] = m_a[k] / kk;
     a[0] += m_b[k] / kk;
   }
-  PeriodicSeries surplus(m_theta0, {}, std::move(a), std::move(b));
-  surplus.m_samples.resize(m_samples.size());
-  for (std::size_t j = 0; j < m_samples.size(); ++j) surplus.m_samples[j] = surplus.value(sampleAngle(j));
-  return surplus;
+  std::vector<double> values = gridValues(m_samples.size(), a, b);
+  return PeriodicSeries(m_theta0, std::move(values), std::move(a), std::move(b));
 }
 
 double PeriodicSeries::surplusIntegral(double theta) const { return surplusSeries().value(theta); }

@@ -98,10 +98,9 @@ double FlywheelRun::fastest() const {
 }
 
 std::optional<Error> checkSpeedFluctuation(double cs) {
-  if (cs > 0.0 && cs < 1.0) return std::nullopt;
-  return Error{
-      ErrorCode::InvalidValue, "cs",
-      "the coefficient of speed fluctuation Cs must be between 0 and 1, exclusive (got " + formatNumber(cs) + ")"};
+  if (cs >= kMinSpeedFluctuation && cs <= kMaxSpeedFluctuation) return std::nullopt;
+  return Error{ErrorCode::InvalidValue, "cs",
+               "the coefficient of speed fluctuation Cs must be from 1e-5 to 0.9 (got " + formatNumber(cs) + ")"};
 }
 
 Result<double> sizeFlywheel(const CrankTerms& t, double cs) {
@@ -114,7 +113,7 @@ Result<double> sizeFlywheel(const CrankTerms& t, double cs) {
   double flywheel = std::max(energy / (cs * t.omega * t.omega), 1e-12 * meanInertia);
   for (int i = 0; i < kMaxIterations; ++i) {
     const double got = flywheelSpeeds(t, flywheel).fluctuation();
-    if (std::abs(got - cs) <= 1e-12 * cs) return flywheel;
+    if (std::abs(got - cs) <= 1e-10 * cs) return flywheel;
     flywheel = std::max((flywheel + meanInertia) * got / cs - meanInertia, 0.5 * flywheel);
   }
   return Error{ErrorCode::InvalidValue, "cs",

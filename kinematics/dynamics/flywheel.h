@@ -34,7 +34,12 @@ struct FlywheelRun {
   double fastest() const;         ///< rad/s, the largest |speed| of the run
 };
 
-/// Error naming "cs" unless 0 < `cs` < 1.
+/// The coefficients of speed fluctuation a flywheel is sized for: below 1e-5 the speed's
+/// fluctuation is round-off of the speed itself, above 0.9 the mean speed means little.
+inline constexpr double kMinSpeedFluctuation = 1e-5;
+inline constexpr double kMaxSpeedFluctuation = 0.9;
+
+/// Error naming "cs" unless kMinSpeedFluctuation ≤ `cs` ≤ kMaxSpeedFluctuation.
 std::optional<Error> checkSpeedFluctuation(double cs);
 
 /// The crank's speed over the turn with a flywheel, by the energy equation (rad/s, signed as ω).

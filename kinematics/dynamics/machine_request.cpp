@@ -33,8 +33,8 @@ const std::vector<RequestField>& machineFields() {
       {"tolerance", "Tolerance", "", Kind::Number, 1e-12, 1e-2, true, true, false, kMachineTolerance, "",
        "the relative error every figure is computed to: the turn is sampled more finely until each one's "
        "estimate is within it"},
-      {"cs", "Cs", "", Kind::Number, 0.0, 1.0, false, false, false, std::nullopt, "none: no flywheel",
-       "size a flywheel for the coefficient of speed fluctuation Cs = (ω_max − ω_min)/ω"},
+      {"cs", "Cs", "", Kind::Number, kMinSpeedFluctuation, kMaxSpeedFluctuation, true, true, false, std::nullopt,
+       "none: no flywheel", "size a flywheel for the coefficient of speed fluctuation Cs = (ω_max − ω_min)/ω"},
       {"gear_ratio", "Gear ratio", "", Kind::Number, 1.0 / kMaxGearRatio, kMaxGearRatio, true, true, false, 1.0, "",
        "motor turns per crank turn"},
       {"efficiency", "Efficiency", "", Kind::Number, kMinEfficiency, 1.0, true, true, false, 1.0, "",

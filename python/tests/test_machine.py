@@ -61,7 +61,7 @@ def test_machine_gives_the_turns_curves_as_arrays():
         ({"efficiency": 5e-324}, "efficiency must be from 0.01 to 1 (got 5e-324)"),
         ({"samples": 3}, "samples must be a whole number from 4 to 100000 (got 3)"),
         ({"rpm": 10, "omega": 1}, "rpm and omega are one speed: give one of them"),
-        ({"cs": 1}, "cs must be between 0 and 1, exclusive (got 1)"),
+        ({"cs": 1}, "cs must be from 1e-5 to 0.9 (got 1)"),
     ],
 )
 def test_machine_refuses_with_the_cores_sentence_and_the_keyword(keywords, message):

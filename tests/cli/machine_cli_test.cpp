@@ -121,7 +121,7 @@ TEST_CASE("machine refuses what it cannot compute, naming the option", "[cli][ma
       {{"machine", "--example", "thesis-crank-rocker"},
        "machine needs masses and loads, and the example thesis-crank-rocker has none"},
       {{"machine"}, "machine needs FILE.json or --example NAME: a linkage with its masses"},
-      {{"machine", "--example", "funsho-fourbar", "--cs", "0"}, "--cs must be between 0 and 1, exclusive (got 0)"},
+      {{"machine", "--example", "funsho-fourbar", "--cs", "0"}, "--cs must be from 1e-5 to 0.9 (got 0)"},
       {{"machine", "--example", "funsho-fourbar", "--efficiency", "1.2"},
        "--efficiency must be from 0.01 to 1 (got 1.2)"},
       {{"machine", "--example", "funsho-fourbar", "--efficiency", "5e-324"},

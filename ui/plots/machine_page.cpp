@@ -35,7 +35,9 @@ QDoubleSpinBox* requestField(const std::string& key, int decimals, const QString
   const bool optional = !f.value && f.minimum == 0.0;
   auto* box = new QDoubleSpinBox;
   box->setDecimals(decimals);
-  box->setRange(optional ? 0.0 : (f.minimumIncluded ? f.minimum : f.minimum + step),
+  // An end the field's decimals cannot show is moved inside the range by a step.
+  const double low = f.minimumIncluded ? f.minimum : f.minimum + step;
+  box->setRange(optional ? 0.0 : (low > 0.0 && low < step ? step : low),
                 f.maximumIncluded ? f.maximum : f.maximum - step);
   if (optional) box->setSpecialValueText(MachinePage::tr("none"));
   box->setValue(f.value.value_or(key == "cs" ? 0.05 : 0.0));

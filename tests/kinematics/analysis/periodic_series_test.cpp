@@ -67,6 +67,8 @@ TEST_CASE("the surplus integral of a series is its exact integral", "[analysis][
     CHECK(s.mean() == Approx(2.0).epsilon(1e-14));
     for (double t : {0.0, 0.4, 2.0, 3.9, 6.0}) CHECK(s.surplusIntegral(t) == Approx(exact(t)).margin(1e-13));
     const PeriodicSeries e = s.surplusSeries();
+    // Its samples (by the inverse transform) are its values there.
+    for (std::size_t j = 0; j < n; ++j) CHECK(e.samples()[j] == Approx(e.value(e.sampleAngle(j))).margin(1e-13));
     CHECK(e.mean() == Approx(0.5 * (0.0 - 1.0)).margin(1e-13));  // the mean of the exact integral
     // Its extremes against a dense scan of the closed form.
     double high = -1e9, low = 1e9;

@@ -196,7 +196,7 @@ TEST_CASE("a turn's duty refuses what it cannot compute, naming the field", "[dy
     o.speedFluctuation = cs;
     const Error e = refused(turnAt(1.0), o);
     CHECK(e.field == "cs");
-    CHECK(e.message.starts_with("the coefficient of speed fluctuation Cs must be between 0 and 1"));
+    CHECK(e.message.starts_with("the coefficient of speed fluctuation Cs must be from 1e-5 to 0.9"));
   }
   DutyOptions gear;
   gear.gearRatio = 0.0;

@@ -186,7 +186,7 @@ TEST_CASE("machine's fields refuse what they cannot hold, spelled for the front 
       {{{"efficiency", 5e-324}}, FrontEnd::Cli, "--efficiency must be from 0.01 to 1 (got 5e-324)"},
       {{{"efficiency", 1.2}}, FrontEnd::Python, "efficiency must be from 0.01 to 1 (got 1.2)"},
       {{{"efficiency", 0.0}}, FrontEnd::Designer, "Efficiency must be from 0.01 to 1 (got 0)"},
-      {{{"cs", 1.0}}, FrontEnd::Cli, "--cs must be between 0 and 1, exclusive (got 1)"},
+      {{{"cs", 1.0}}, FrontEnd::Cli, "--cs must be from 1e-5 to 0.9 (got 1)"},
       {{{"gear_ratio", -3.0}}, FrontEnd::Python, "gear_ratio must be from 1e-6 to 1e6 (got -3)"},
       {{{"rated_speed", 0.0}}, FrontEnd::Cli, "--rated-speed must be above 0 and at most 1e7 rpm (got 0 rpm)"},
       {{{"rated_torque", 1e300}}, FrontEnd::Cli, "--rated-torque must be above 0 and at most 1e9 N·m (got 1e+300 N·m)"},
