@@ -88,6 +88,15 @@ void printText(std::ostream& out, const Study& st, const std::string& source) {
       << " " << n(st.input.at(0)) << " to " << n(st.input.at(last)) << ")\n";
   out << "samples: " << mc.used << " in the band, " << mc.notAssembled << " did not assemble at every input, "
       << mc.singular << " met a toggle\n";
+  const k::MonteCarloError& e = mc.error;
+  const auto percent = [&](double f) { return n(100.0 * f) + " %"; };
+  out << "Monte-Carlo error, for the " << e.samples << " samples in the band: one more linkage falls outside the band "
+      << "at an input with chance 2/(n+1) = " << n(e.outsideBand) << " (with " << percent(k::kToleranceConfidence)
+      << " confidence at most " << percent(e.outsideBandBound) << " of all linkages lie outside it), and deviates "
+      << "more than a column's worst with chance 1/(n+1) = " << n(e.beyondWorst) << " (at most "
+      << percent(e.beyondWorstBound) << "); at most 1 % outside with " << percent(k::kToleranceConfidence)
+      << " confidence takes " << k::toleranceSamplesFor(0.01) << " samples in the band, 0.1 % takes "
+      << k::toleranceSamplesFor(0.001) << "\n";
   out << "dimensions (" << u << "):";
   for (const auto& d : mc.dimensions) out << " " << d.name << " " << n(d.value) << ";";
   out << "\n\n";
@@ -148,6 +157,16 @@ void printJson(std::ostream& out, const Study& st, const std::string& source) {
   k::io::JsonValue dims = k::io::JsonValue::array();
   for (const auto& d : mc.dimensions) dims.push_back({{"name", d.name}, {"nominal_" + u, d.value}});
   json["dimensions"] = dims;
+  const k::MonteCarloError& e = mc.error;
+  json["monte_carlo_error"] = k::io::JsonValue{
+      {"samples", e.samples},
+      {"confidence", k::kToleranceConfidence},
+      {"outside_band_chance", e.outsideBand},
+      {"outside_band_at_confidence", e.outsideBandBound},
+      {"beyond_worst_chance", e.beyondWorst},
+      {"beyond_worst_at_confidence", e.beyondWorstBound},
+      {"samples_for_outside_band",
+       k::io::JsonValue{{"0.01", k::toleranceSamplesFor(0.01)}, {"0.001", k::toleranceSamplesFor(0.001)}}}};
   k::io::JsonValue columns = k::io::JsonValue::array();
   for (std::size_t c = 0; c < mc.bands.size(); ++c) {
     const auto& b = mc.bands[c];
