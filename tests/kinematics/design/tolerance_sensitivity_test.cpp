@@ -148,7 +148,8 @@ TEST_CASE("the sensitivities' summary, folded window by window, is the whole gri
     spec.alpha = 1.0;
     const SweepSensitivities whole = sweepSensitivities(m, spec).value();
     std::vector<double> tolerances;
-    for (std::size_t d = 0; d < whole.dimensions.size(); ++d) tolerances.push_back(0.01 * static_cast<double>(1 + d % 3));
+    for (std::size_t d = 0; d < whole.dimensions.size(); ++d)
+      tolerances.push_back(0.01 * static_cast<double>(1 + d % 3));
     for (const std::size_t window : {std::size_t{1}, std::size_t{7}, std::size_t{1000}}) {
       CAPTURE(window);
       std::size_t reported = 0;
