@@ -6,6 +6,7 @@
 // unit and the columns' units, and with -o the band as CSV through the one writer.
 
 #include "app/cli/commands.h"
+#include "app/cli/progress.h"
 
 #include "kinematics/design/tolerance_monte_carlo.h"
 #include "kinematics/design/tolerance_sensitivity.h"
@@ -39,12 +40,14 @@ std::string unitOf(const k::SweepColumn& c, const std::string& lengthUnit) {
 // The study's grid input at a sample, as its column shows it (degrees, length or seconds).
 struct InputAxis {
   k::SweepColumn column;
+  k::SweepSpec spec;
+  double at(std::size_t j) const { return k::toleranceInputAt(column, spec, j); }
   double at(const k::SweepResult& s, std::size_t j) const { return column.value(s, j); }
 };
 
 struct Study {
   k::MonteCarloResult monteCarlo;
-  k::SweepSensitivities sensitivities;
+  k::SensitivitySummary sensitivities;      // over the grid, folded window by window
   std::optional<k::SweepSensitivities> at;  // --at: one input
   InputAxis input;
   std::string unit;
@@ -54,15 +57,16 @@ std::string optionFor(const std::string& field) {
   if (field == "tolerance") return "--tolerance";
   if (field == "samples") return "--mc-samples";
   if (field.rfind("perDimension", 0) == 0) return "--tolerance-of";
+  if (field == "band") return "-o";
   return "";
 }
 
 // The dimension with the largest sensitivity of column c, and that sensitivity.
-std::pair<std::size_t, double> mostSensitive(const k::SweepSensitivities& s, std::size_t c) {
+std::pair<std::size_t, double> mostSensitive(const k::SensitivitySummary& s, std::size_t c) {
   std::size_t best = 0;
   double value = -1.0;
   for (std::size_t d = 0; d < s.dimensions.size(); ++d)
-    if (const double v = s.largest(c, d); v > value) {
+    if (const double v = s.largest[c][d]; v > value) {
       value = v;
       best = d;
     }
@@ -74,17 +78,25 @@ void printText(std::ostream& out, const Study& st, const std::string& source) {
   const auto& s = st.sensitivities;
   const std::string& u = st.unit;
   const auto n = [](double v) { return formatShort(v, 4); };
-  const std::size_t last = mc.nominal.size() - 1;
+  const std::size_t last = mc.inputs - 1;
   out << "tolerance study of " << source << ": ±" << n(mc.spec.tolerance) << " " << u << " on " << mc.dimensions.size()
       << " dimensions";
   for (const k::DimensionTolerance& own : mc.spec.perDimension)
     out << (&own == &mc.spec.perDimension.front() ? " (" : ", ") << own.dimension << " ±" << n(own.tolerance);
   out << (mc.spec.perDimension.empty() ? "" : ")") << ", each uniform and independent; " << mc.spec.samples
-      << " samples (seed " << mc.spec.seed << "), each swept over " << mc.nominal.size() << " inputs ("
-      << st.input.column.name << " " << n(st.input.at(mc.nominal, 0)) << " to " << n(st.input.at(mc.nominal, last))
-      << ")\n";
+      << " samples (seed " << mc.spec.seed << "), each swept over " << mc.inputs << " inputs (" << st.input.column.name
+      << " " << n(st.input.at(0)) << " to " << n(st.input.at(last)) << ")\n";
   out << "samples: " << mc.used << " in the band, " << mc.notAssembled << " did not assemble at every input, "
       << mc.singular << " met a toggle\n";
+  const k::MonteCarloError& e = mc.error;
+  const auto percent = [&](double f) { return n(100.0 * f) + " %"; };
+  out << "Monte-Carlo error, for the " << e.samples << " samples in the band: one more linkage falls outside the band "
+      << "at an input with chance 2/(n+1) = " << n(e.outsideBand) << " (with " << percent(k::kToleranceConfidence)
+      << " confidence at most " << percent(e.outsideBandBound) << " of all linkages lie outside it), and deviates "
+      << "more than a column's worst with chance 1/(n+1) = " << n(e.beyondWorst) << " (at most "
+      << percent(e.beyondWorstBound) << "); at most 1 % outside with " << percent(k::kToleranceConfidence)
+      << " confidence takes " << k::toleranceSamplesFor(0.01) << " samples in the band, 0.1 % takes "
+      << k::toleranceSamplesFor(0.001) << "\n";
   out << "dimensions (" << u << "):";
   for (const auto& d : mc.dimensions) out << " " << d.name << " " << n(d.value) << ";";
   out << "\n\n";
@@ -100,22 +112,21 @@ void printText(std::ostream& out, const Study& st, const std::string& source) {
     const auto& b = mc.bands[c];
     const auto [d, value] = mostSensitive(s, c);
     out << pad(b.column.name, width + 2) << pad(n(b.worstDeviation), 12)
-        << pad(mc.used > 0 ? n(st.input.at(mc.nominal, b.worstGridSample)) : std::string(k::kUndefinedText), 22)
-        << pad(n(s.firstOrderWorst(c, k::dimensionTolerances(mc.spec, mc.dimensions))), 13);
+        << pad(mc.used > 0 ? n(st.input.at(b.worstGridSample)) : std::string(k::kUndefinedText), 22)
+        << pad(n(s.firstOrderWorst[c]), 13);
     // The driven crank's ω and α are the driver's: sensitive to nothing.
     if (value > 0.0) out << s.dimensions[d].name << " (" << n(value) << " " << unitOf(b.column, u) << "/" << u << ")\n";
     else out << "none\n";
   }
-  const k::SweepSensitivities& table = st.at ? *st.at : s;
   out << "\nsensitivities, "
-      << (st.at ? "at " + st.input.column.name + " " + n(st.input.at(table.sweep, 0))
+      << (st.at ? "at " + st.input.column.name + " " + n(st.input.at(st.at->sweep, 0))
                 : std::string("largest |∂y/∂p| over the grid"))
       << " (each column's unit per " << u << "):\n";
-  for (std::size_t c = 0; c < table.columns.size(); ++c) {
-    out << "  " << table.columns[c].name << ":";
-    for (std::size_t d = 0; d < table.dimensions.size(); ++d)
-      out << " " << table.dimensions[d].name << " " << n(st.at ? table.derivative[c][d][0] : table.largest(c, d))
-          << (d + 1 < table.dimensions.size() ? "," : "");
+  for (std::size_t c = 0; c < s.columns.size(); ++c) {
+    out << "  " << s.columns[c].name << ":";
+    for (std::size_t d = 0; d < s.dimensions.size(); ++d)
+      out << " " << s.dimensions[d].name << " " << n(st.at ? st.at->derivative[c][d][0] : s.largest[c][d])
+          << (d + 1 < s.dimensions.size() ? "," : "");
     out << "\n";
   }
 }
@@ -142,22 +153,30 @@ void printJson(std::ostream& out, const Study& st, const std::string& source) {
                         {"samples_not_assembled", mc.notAssembled},
                         {"samples_singular", mc.singular},
                         {"input_column", st.input.column.name},
-                        {"inputs", mc.nominal.size()}};
+                        {"inputs", mc.inputs}};
   k::io::JsonValue dims = k::io::JsonValue::array();
   for (const auto& d : mc.dimensions) dims.push_back({{"name", d.name}, {"nominal_" + u, d.value}});
   json["dimensions"] = dims;
+  const k::MonteCarloError& e = mc.error;
+  json["monte_carlo_error"] = k::io::JsonValue{
+      {"samples", e.samples},
+      {"confidence", k::kToleranceConfidence},
+      {"outside_band_chance", e.outsideBand},
+      {"outside_band_at_confidence", e.outsideBandBound},
+      {"beyond_worst_chance", e.beyondWorst},
+      {"beyond_worst_at_confidence", e.beyondWorstBound},
+      {"samples_for_outside_band",
+       k::io::JsonValue{{"0.01", k::toleranceSamplesFor(0.01)}, {"0.001", k::toleranceSamplesFor(0.001)}}}};
   k::io::JsonValue columns = k::io::JsonValue::array();
   for (std::size_t c = 0; c < mc.bands.size(); ++c) {
     const auto& b = mc.bands[c];
-    std::size_t firstAt = 0;
-    const double firstOrder = s.firstOrderWorst(c, k::dimensionTolerances(mc.spec, mc.dimensions), &firstAt);
     k::io::JsonValue column{{"name", b.column.name},
                             {"worst_deviation", b.worstDeviation},
-                            {"worst_at", mc.used > 0 ? st.input.at(mc.nominal, b.worstGridSample) : kNoValue},
-                            {"first_order_worst", firstOrder},
-                            {"first_order_worst_at", st.input.at(s.sweep, firstAt)}};
+                            {"worst_at", mc.used > 0 ? st.input.at(b.worstGridSample) : kNoValue},
+                            {"first_order_worst", s.firstOrderWorst[c]},
+                            {"first_order_worst_at", st.input.at(s.firstOrderWorstAt[c])}};
     k::io::JsonValue largest = k::io::JsonValue::object();
-    for (std::size_t d = 0; d < s.dimensions.size(); ++d) largest[s.dimensions[d].name] = s.largest(c, d);
+    for (std::size_t d = 0; d < s.dimensions.size(); ++d) largest[s.dimensions[d].name] = s.largest[c][d];
     column["largest_sensitivity_per_" + u] = largest;
     if (st.at) {
       k::io::JsonValue at = k::io::JsonValue::object();
@@ -181,8 +200,8 @@ std::optional<std::string> writeBand(std::ostream& out, const Study& st) {
     out << "," << k::io::csvField(b.column.name) << "," << k::io::csvField("low_" + b.column.name) << ","
         << k::io::csvField("high_" + b.column.name);
   out << "\r\n";
-  for (std::size_t j = 0; j < mc.nominal.size(); ++j) {
-    out << k::formatDouble(st.input.at(mc.nominal, j));
+  for (std::size_t j = 0; j < mc.inputs; ++j) {
+    out << k::formatDouble(st.input.at(j));
     for (const auto& b : mc.bands)
       out << "," << k::formatDouble(b.nominal[j]) << "," << k::formatDouble(b.low[j]) << ","
           << k::formatDouble(b.high[j]);
@@ -226,21 +245,37 @@ ExitCode runTolerance(const Invocation& inv, std::ostream& out, std::ostream& er
   k::MonteCarloSpec mcSpec{*inv.tolerance, static_cast<std::size_t>(samples),
                            inv.seed.value_or(k::kDefaultToleranceSeed)};
   for (const auto& [name, t] : inv.toleranceOf) mcSpec.perDimension.push_back({name, t});
-  auto mc = k::toleranceMonteCarlo(m, *spec, mcSpec);
+  // The band at every input is held only to be written; without -o the grid streams.
+  mcSpec.band = inv.outputFile.has_value();
+  auto mc = [&] {
+    Progress progress(err, "tolerance", "samples");
+    k::RunControl control;
+    control.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
+    return k::toleranceMonteCarlo(m, *spec, mcSpec, control);
+  }();
   if (!mc) {
     const k::Error& e = mc.error();
     const std::string option = optionFor(e.field);
-    err << "linkwright-cli: " << (option.empty() ? "" : option + ": ") << e.message << "\n";
+    err << "linkwright-cli: " << (option.empty() ? "" : option + ": ") << e.message
+        << (e.field == "band" ? "; give a coarser grid (--samples, --step) or leave out -o, without which the study "
+                                "streams the grid"
+                              : "")
+        << "\n";
     return e.code == k::ErrorCode::NotAssemblable || e.code == k::ErrorCode::Singular ? ExitCode::NotAssemblable
                                                                                       : ExitCode::BadInput;
   }
-  auto sensitivities = k::sweepSensitivities(m, *spec);
+  auto sensitivities = [&] {
+    Progress progress(err, "tolerance: sensitivities", "inputs");
+    k::RunControl control;
+    control.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
+    return k::sensitivitySummary(m, *spec, k::dimensionTolerances(mcSpec, mc->dimensions), control);
+  }();
   if (!sensitivities) {
     err << "linkwright-cli: " << sensitivities.error().message << "\n";
     return ExitCode::BadInput;
   }
   Study st{std::move(*mc), std::move(*sensitivities), std::nullopt,
-           InputAxis{k::sweepColumns(m, k::SolveRequest{}, spec->time.has_value()).front()}, m.lengthUnit};
+           InputAxis{k::sweepColumns(m, k::SolveRequest{}, spec->time.has_value()).front(), *spec}, m.lengthUnit};
   if (!inv.atDeg.empty()) {
     const double input = spec->time ? inv.atDeg.front() : resolved->defaults.toInput(inv.atDeg.front());
     auto at = k::sweepSensitivities(m, atSpec(*spec, input));

@@ -1,6 +1,8 @@
 #include "kinematics/design/tolerance_monte_carlo.h"
 
 #include "kinematics/design/tolerance_sensitivity.h"
+#include "kinematics/model/driver.h"
+#include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/number_text.h"
 
 #include <algorithm>
@@ -34,7 +36,11 @@ bool allOk(const SweepResult& s) {
 
 }  // namespace
 
-std::optional<Error> checkMonteCarloSpec(const MonteCarloSpec& spec, const Mechanism& mechanism) {
+std::size_t maxToleranceBandInputs(const Mechanism& mechanism) {
+  return kMaxToleranceBandValues / std::max<std::size_t>(toleranceColumns(mechanism).size(), 1);
+}
+
+std::optional<Error> checkMonteCarloSpec(const MonteCarloSpec& spec, const Mechanism& mechanism, std::size_t inputs) {
   const auto shortest = shortestLength(toleranceDimensions(mechanism));
   const double bound = shortest ? shortest->value : std::numeric_limits<double>::infinity();
   const std::string unit = " " + mechanism.lengthUnit;
@@ -51,6 +57,12 @@ std::optional<Error> checkMonteCarloSpec(const MonteCarloSpec& spec, const Mecha
     return Error{ErrorCode::InvalidValue, "firstSample",
                  "firstSample must be between 0 and " + std::to_string(kMaxToleranceFirstSample) + " (got " +
                      std::to_string(spec.firstSample) + ")"};
+  if (spec.band && inputs > maxToleranceBandInputs(mechanism))
+    return Error{ErrorCode::InvalidValue, "band",
+                 "a band kept at every input holds " + std::to_string(toleranceColumns(mechanism).size()) +
+                     " columns' nominal, lowest and highest values there: at most " +
+                     std::to_string(maxToleranceBandInputs(mechanism)) + " inputs for this linkage (got " +
+                     std::to_string(inputs) + ")"};
   const std::vector<ToleranceDimension> dimensions = toleranceDimensions(mechanism);
   std::string names;
   for (const ToleranceDimension& d : dimensions) names += (names.empty() ? "" : ", ") + d.name;
@@ -99,56 +111,227 @@ std::vector<double> toleranceSampleOffsets(const MonteCarloSpec& spec, const std
   return out;
 }
 
+namespace {
+
+// The chance that the range of n draws covers less than y of the population, I_y(n − 1, 2).
+double rangeCoverageBelow(std::size_t n, double y) {
+  const double m = static_cast<double>(n);
+  return m * std::pow(y, m - 1.0) - (m - 1.0) * std::pow(y, m);
+}
+
+// The fraction outside the range of n ≥ 2 draws not exceeded with `confidence`: 1 − y for the
+// y where rangeCoverageBelow(n, y) = 1 − confidence (increasing in y), by bisection.
+double outsideRangeBound(std::size_t n, double confidence) {
+  double lo = 0.0, hi = 1.0;
+  for (int i = 0; i < 200 && lo < hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid == lo || mid == hi) break;
+    (rangeCoverageBelow(n, mid) < 1.0 - confidence ? lo : hi) = mid;
+  }
+  return 1.0 - lo;
+}
+
+}  // namespace
+
+MonteCarloError monteCarloError(std::size_t samples, double confidence) {
+  MonteCarloError e;
+  e.samples = samples;
+  const double n = static_cast<double>(samples);
+  if (samples >= 2) {
+    e.outsideBand = 2.0 / (n + 1.0);
+    e.outsideBandBound = outsideRangeBound(samples, confidence);
+  }
+  if (samples >= 1) {
+    e.beyondWorst = 1.0 / (n + 1.0);
+    e.beyondWorstBound = -std::expm1(std::log1p(-confidence) / n);
+  }
+  return e;
+}
+
+std::size_t toleranceSamplesFor(double fraction, double confidence) {
+  if (!(fraction > 0.0 && fraction < 1.0 && confidence > 0.0 && confidence < 1.0)) return 0;
+  // outsideRangeBound falls as n grows: the least n within `fraction`, by bisection on n.
+  std::size_t lo = 2, hi = 4;
+  while (outsideRangeBound(hi, confidence) > fraction) hi *= 2;
+  while (lo < hi) {
+    const std::size_t mid = lo + (hi - lo) / 2;
+    if (outsideRangeBound(mid, confidence) > fraction) lo = mid + 1;
+    else hi = mid;
+  }
+  return lo;
+}
+
+double toleranceInputAt(const SweepColumn& input, const SweepSpec& spec, std::size_t sample) {
+  if (input.quantity == ColumnQuantity::Time) return sweepTime(spec, sample);
+  return input.valueOf(Pose{}, sweepDriver(spec, sample).position, 0.0);
+}
+
+namespace {
+
+// The nominal values of each output column over a window of the grid, and the window's
+// samples of one Monte-Carlo linkage folded against them.
+struct SampleFold {
+  bool notAssembled = false;
+  bool singular = false;
+  std::vector<double> worst;                // per column, this sample's worst deviation so far
+  std::vector<std::size_t> at;              // and where (grid index)
+  std::vector<std::vector<double>> values;  // per column, per grid input: with the band only
+
+  void reset(std::size_t columns, bool band, std::size_t inputs) {
+    notAssembled = singular = false;
+    worst.assign(columns, kUndefined);
+    at.assign(columns, 0);
+    values.resize(band ? columns : 0);
+    for (auto& v : values) v.resize(inputs);
+  }
+
+  // Window `part` from grid input `first`, against the nominal values `nominal[c][j]` of the
+  // same inputs (j from `offset` in them). False once the sample cannot be in the band.
+  bool fold(const std::vector<ToleranceBand>& bands, const SweepResult& part, std::size_t first,
+            const std::vector<std::vector<double>>& nominal, std::size_t offset) {
+    if (!part.notAssembled.empty() || std::any_of(part.report.begin(), part.report.end(), [](const PoseReport& r) {
+          return r.status == PoseStatus::NotAssemblable;
+        })) {
+      notAssembled = true;
+      return false;
+    }
+    if (!allOk(part)) singular = true;  // read on: a later input may not assemble
+    if (singular) return true;
+    for (std::size_t c = 0; c < bands.size(); ++c) {
+      for (std::size_t j = 0; j < part.size(); ++j) {
+        const double near = nominal[c][offset + j];
+        const double v = toleranceColumnValue(bands[c].column, part, j, near);
+        if (!values.empty()) values[c][first + j] = v;
+        const double deviation = std::abs(v - near);
+        if (std::isnan(worst[c]) || deviation > worst[c]) {
+          worst[c] = deviation;
+          at[c] = first + j;
+        }
+      }
+    }
+    return true;
+  }
+};
+
+// The output columns' values over a window of the nominal sweep, into nominal[c][offset + j].
+void nominalValues(const std::vector<ToleranceBand>& bands, const SweepResult& part, std::size_t offset,
+                   std::vector<std::vector<double>>& nominal) {
+  nominal.resize(bands.size());
+  for (std::size_t c = 0; c < bands.size(); ++c) {
+    nominal[c].resize(std::max(nominal[c].size(), offset + part.size()));
+    for (std::size_t j = 0; j < part.size(); ++j) nominal[c][offset + j] = bands[c].column.value(part, j);
+  }
+}
+
+// Below this many values (inputs × columns) a study without the band keeps the nominal values
+// (8 MB) rather than sweep the nominal again beside each sample.
+constexpr std::size_t kNominalCacheValues = std::size_t{1} << 20;
+
+}  // namespace
+
 Result<MonteCarloResult> toleranceMonteCarlo(const Mechanism& mechanism, const SweepSpec& spec,
-                                             const MonteCarloSpec& monteCarlo) {
-  auto nominal = sweep(mechanism, spec);
-  if (!nominal) return nominal.error();
-  if (auto e = checkMonteCarloSpec(monteCarlo, mechanism)) return *e;
-  if (!allOk(*nominal))
-    return Error{ErrorCode::NotAssemblable, "linkage",
-                 "the nominal linkage must assemble and move at every input of the grid for a tolerance study: " +
-                     nominal->firstFailure.value_or("it meets a toggle on the grid, where its rates are undefined")};
+                                             const MonteCarloSpec& monteCarlo, const RunControl& control,
+                                             std::size_t window) {
+  if (auto e = checkMechanism(mechanism)) return *e;
+  if (auto e = checkSweepSpec(spec, inputKind(mechanism))) return *e;
+  if (auto e = checkMonteCarloSpec(monteCarlo, mechanism, spec.samples)) return *e;
   MonteCarloResult out;
   out.spec = monteCarlo;
   out.dimensions = toleranceDimensions(mechanism);
-  out.nominal = std::move(*nominal);
-  const std::size_t n = out.nominal.size();
+  out.inputs = spec.samples;
+  const std::size_t n = spec.samples;
   for (const SweepColumn& c : toleranceColumns(mechanism)) {
-    ToleranceBand band{
-        c, std::vector<double>(n), std::vector<double>(n, kUndefined), std::vector<double>(n, kUndefined), kUndefined,
-        0};
-    for (std::size_t j = 0; j < n; ++j) band.nominal[j] = c.value(out.nominal, j);
-    out.bands.push_back(std::move(band));
+    const std::size_t kept = monteCarlo.band ? n : 0;
+    out.bands.push_back({c, std::vector<double>(kept), std::vector<double>(kept, kUndefined),
+                         std::vector<double>(kept, kUndefined), kUndefined, 0});
+  }
+  // With the band the grid is one window (the nominal sweep and each sample's kept whole), as
+  // it is below `window` inputs; else the nominal's values are kept when they are few, or
+  // swept again beside each sample's windows.
+  window = monteCarlo.band ? n : std::max<std::size_t>(window, 1);
+  const bool whole = n <= window;
+  const bool cached = whole || n * out.bands.size() <= kNominalCacheValues;
+  std::vector<std::vector<double>> nominal;
+  const auto nominalFailed = [](const std::optional<std::string>& failure) {
+    return Error{ErrorCode::NotAssemblable, "linkage",
+                 "the nominal linkage must assemble and move at every input of the grid for a tolerance study: " +
+                     failure.value_or("it meets a toggle on the grid, where its rates are undefined")};
+  };
+  if (whole) {
+    auto swept = sweep(mechanism, spec);
+    if (!swept) return swept.error();
+    if (!allOk(*swept)) return nominalFailed(swept->firstFailure);
+    nominalValues(out.bands, *swept, 0, nominal);
+    if (monteCarlo.band) {
+      for (std::size_t c = 0; c < out.bands.size(); ++c) out.bands[c].nominal = nominal[c];
+      out.nominal = std::move(*swept);
+    }
+  } else {
+    auto started = SweepWindows::start(mechanism, spec, SolveRequest{}, window);
+    if (!started) return started.error();
+    SweepWindows windows = std::move(started).value();
+    bool ok = true;
+    while (const SweepResult* part = windows.next(control.cancel)) {
+      ok = ok && allOk(*part);
+      if (cached) nominalValues(out.bands, *part, windows.first(), nominal);
+    }
+    if (control.cancelled()) return cancelledError();
+    if (!ok) return nominalFailed(windows.summary().firstFailure);
   }
   const std::vector<double> tolerances = dimensionTolerances(monteCarlo, out.dimensions);
   SweepResult sample;
+  SampleFold fold;
+  std::vector<std::vector<double>> nominalWindow;
   for (std::size_t k = 0; k < monteCarlo.samples; ++k) {
+    if (control.cancelled()) return cancelledError();
     const std::size_t index = static_cast<std::size_t>(monteCarlo.firstSample) + k;
     const Mechanism m =
         offsetDimensions(mechanism, out.dimensions, toleranceSampleOffsets(monteCarlo, tolerances, index));
-    if (auto e = sweepInto(m, spec, SolveRequest{}, sample)) return *e;
-    if (!sample.notAssembled.empty()) {
+    fold.reset(out.bands.size(), monteCarlo.band, n);
+    if (whole) {
+      if (auto e = sweepInto(m, spec, SolveRequest{}, sample)) return *e;
+      fold.fold(out.bands, sample, 0, nominal, 0);
+    } else {
+      auto started = SweepWindows::start(m, spec, SolveRequest{}, window);
+      if (!started) return started.error();
+      SweepWindows windows = std::move(started).value();
+      std::optional<SweepWindows> nominalWindows;
+      if (!cached)
+        nominalWindows.emplace(std::move(SweepWindows::start(mechanism, spec, SolveRequest{}, window)).value());
+      while (const SweepResult* part = windows.next(control.cancel)) {
+        const std::size_t first = windows.first();
+        if (nominalWindows) nominalValues(out.bands, *nominalWindows->next(), 0, nominalWindow);
+        if (!fold.fold(out.bands, *part, first, cached ? nominal : nominalWindow, cached ? first : 0)) break;
+      }
+      if (control.cancelled()) return cancelledError();
+    }
+    if (control.progress) control.progress(k + 1, monteCarlo.samples);
+    if (fold.notAssembled) {
       ++out.notAssembled;
       continue;
     }
-    if (!allOk(sample)) {
+    if (fold.singular) {
       ++out.singular;
       continue;
     }
     ++out.used;
-    for (ToleranceBand& band : out.bands) {
+    // The sample's worst against the samples' before it: the earliest wins a tie, as it would
+    // folded sample by sample and input by input.
+    for (std::size_t c = 0; c < out.bands.size(); ++c) {
+      ToleranceBand& band = out.bands[c];
+      if (std::isnan(band.worstDeviation) || fold.worst[c] > band.worstDeviation) {
+        band.worstDeviation = fold.worst[c];
+        band.worstGridSample = fold.at[c];
+      }
+      if (!monteCarlo.band) continue;
       for (std::size_t j = 0; j < n; ++j) {
-        const double v = toleranceColumnValue(band.column, sample, j, band.nominal[j]);
+        const double v = fold.values[c][j];
         if (std::isnan(band.low[j]) || v < band.low[j]) band.low[j] = v;
         if (std::isnan(band.high[j]) || v > band.high[j]) band.high[j] = v;
-        const double deviation = std::abs(v - band.nominal[j]);
-        if (std::isnan(band.worstDeviation) || deviation > band.worstDeviation) {
-          band.worstDeviation = deviation;
-          band.worstGridSample = j;
-        }
       }
     }
   }
+  out.error = monteCarloError(out.used);
   return out;
 }
 

@@ -77,6 +77,41 @@ double SweepSensitivities::firstOrderWorst(std::size_t column, const std::vector
   return worst;
 }
 
+namespace {
+
+// derivative[c][d][j] for the samples of `s`, a window of the nominal sweep from grid sample
+// `first`; `stepped[d]` is steppedMechanism of dimension d. NaN where undefined.
+void fillDerivatives(const Mechanism& mechanism, const std::vector<Mechanism>& stepped, const SweepSpec& spec,
+                     const std::vector<SweepColumn>& columns, const SweepResult& s, std::size_t first,
+                     std::vector<std::vector<std::vector<double>>>& derivative) {
+  const std::size_t n = s.size();
+  derivative.resize(columns.size());
+  for (auto& column : derivative) {
+    column.resize(stepped.size());
+    for (auto& values : column) values.assign(n, kUndefined);
+  }
+  std::vector<Eigen::Vector2d> positions(mechanism.points.size());
+  PoseJet jet;
+  for (std::size_t d = 0; d < stepped.size(); ++d) {
+    for (std::size_t j = 0; j < n; ++j) {
+      if (!s.assembled(j)) continue;
+      for (std::size_t i = 0; i < positions.size(); ++i) positions[i] = s.position[i][j];
+      if (!differentiatePose(mechanism, stepped[d], sweepDriver(spec, first + j), positions, jet)) continue;
+      for (std::size_t c = 0; c < columns.size(); ++c)
+        if (s.ok(j) || !columns[c].isRate()) derivative[c][d][j] = derivativeOf(columns[c], jet);
+    }
+  }
+}
+
+std::vector<Mechanism> steppedMechanisms(const Mechanism& mechanism,
+                                         const std::vector<ToleranceDimension>& dimensions) {
+  std::vector<Mechanism> out;
+  for (const ToleranceDimension& d : dimensions) out.push_back(steppedMechanism(mechanism, d));
+  return out;
+}
+
+}  // namespace
+
 Result<SweepSensitivities> sweepSensitivities(const Mechanism& mechanism, const SweepSpec& spec) {
   auto nominal = sweep(mechanism, spec);
   if (!nominal) return nominal.error();
@@ -84,22 +119,48 @@ Result<SweepSensitivities> sweepSensitivities(const Mechanism& mechanism, const 
   out.dimensions = toleranceDimensions(mechanism);
   out.columns = toleranceColumns(mechanism);
   out.sweep = std::move(*nominal);
-  const SweepResult& s = out.sweep;
-  const std::size_t n = s.size();
-  out.derivative.assign(out.columns.size(),
-                        std::vector<std::vector<double>>(out.dimensions.size(), std::vector<double>(n, kUndefined)));
-  std::vector<Eigen::Vector2d> positions(mechanism.points.size());
-  PoseJet jet;
-  for (std::size_t d = 0; d < out.dimensions.size(); ++d) {
-    const Mechanism stepped = steppedMechanism(mechanism, out.dimensions[d]);
-    for (std::size_t j = 0; j < n; ++j) {
-      if (!s.assembled(j)) continue;
-      for (std::size_t i = 0; i < positions.size(); ++i) positions[i] = s.position[i][j];
-      if (!differentiatePose(mechanism, stepped, sweepDriver(spec, j), positions, jet)) continue;
-      for (std::size_t c = 0; c < out.columns.size(); ++c)
-        if (s.ok(j) || !out.columns[c].isRate()) out.derivative[c][d][j] = derivativeOf(out.columns[c], jet);
+  fillDerivatives(mechanism, steppedMechanisms(mechanism, out.dimensions), spec, out.columns, out.sweep, 0,
+                  out.derivative);
+  return out;
+}
+
+Result<SensitivitySummary> sensitivitySummary(const Mechanism& mechanism, const SweepSpec& spec,
+                                              const std::vector<double>& tolerances, const RunControl& control,
+                                              std::size_t window) {
+  auto started = SweepWindows::start(mechanism, spec, SolveRequest{}, window);
+  if (!started) return started.error();
+  SweepWindows windows = std::move(started).value();
+  SensitivitySummary out;
+  out.dimensions = toleranceDimensions(mechanism);
+  out.columns = toleranceColumns(mechanism);
+  out.largest.assign(out.columns.size(), std::vector<double>(out.dimensions.size(), kUndefined));
+  out.firstOrderWorst.assign(out.columns.size(), kUndefined);
+  out.firstOrderWorstAt.assign(out.columns.size(), 0);
+  const std::vector<Mechanism> stepped = steppedMechanisms(mechanism, out.dimensions);
+  // The window's derivatives folded as SweepSensitivities's largest and firstOrderWorst fold
+  // the whole grid's: in the grid's order, so the same sample wins a tie.
+  SweepSensitivities part;
+  while (const SweepResult* s = windows.next(control.cancel)) {
+    const std::size_t first = windows.first();
+    fillDerivatives(mechanism, stepped, spec, out.columns, *s, first, part.derivative);
+    for (std::size_t c = 0; c < out.columns.size(); ++c) {
+      for (std::size_t d = 0; d < out.dimensions.size(); ++d)
+        for (const double v : part.derivative[c][d])
+          if (std::isfinite(v) && !(std::abs(v) <= out.largest[c][d])) out.largest[c][d] = std::abs(v);
+      for (std::size_t j = 0; j < s->size(); ++j) {
+        double sum = 0.0;
+        for (std::size_t d = 0; d < out.dimensions.size(); ++d)
+          sum += std::abs(part.derivative[c][d][j]) * tolerances[d];
+        if (std::isfinite(sum) && !(sum <= out.firstOrderWorst[c])) {
+          out.firstOrderWorst[c] = sum;
+          out.firstOrderWorstAt[c] = first + j;
+        }
+      }
     }
+    out.inputs = first + s->size();
+    if (control.progress) control.progress(out.inputs, spec.samples);
   }
+  if (control.cancelled()) return cancelledError();
   return out;
 }
 

@@ -10,6 +10,7 @@
 // as t shrinks, and bounds it to first order.
 
 #include "kinematics/design/tolerance_dimensions.h"
+#include "kinematics/model/request_field.h"
 #include "kinematics/model/result.h"
 #include "kinematics/solve/sweep.h"
 #include "kinematics/solve/sweep_columns.h"
@@ -44,8 +45,30 @@ struct SweepSensitivities {
                          std::size_t* sample = nullptr) const;
 };
 
+/// The samples of the grid a tolerance study holds at once when it works in windows.
+inline constexpr std::size_t kToleranceWindow = 4096;
+
 /// The sensitivities of `mechanism` over `spec`. Fails as sweep() does for an invalid
 /// mechanism or spec.
 Result<SweepSensitivities> sweepSensitivities(const Mechanism& mechanism, const SweepSpec& spec);
+
+/// What a study reports of the sensitivities over the whole grid, folded window by window
+/// (memory of `window` samples whatever the grid's size): SweepSensitivities's largest and
+/// firstOrderWorst, the same numbers.
+struct SensitivitySummary {
+  std::vector<ToleranceDimension> dimensions;
+  std::vector<SweepColumn> columns;
+  std::size_t inputs = 0;                      ///< the grid's size
+  std::vector<std::vector<double>> largest;    ///< [column][dimension]: as SweepSensitivities::largest
+  std::vector<double> firstOrderWorst;         ///< [column]: as SweepSensitivities::firstOrderWorst
+  std::vector<std::size_t> firstOrderWorstAt;  ///< [column]: where (grid index), 0 if nowhere
+};
+
+/// The summary of `mechanism`'s sensitivities over `spec` under `tolerances` (one per
+/// dimension, length unit), `window` grid samples at a time; progress in grid samples. Fails as
+/// sweepSensitivities does, or with ErrorCode::Cancelled.
+Result<SensitivitySummary> sensitivitySummary(const Mechanism& mechanism, const SweepSpec& spec,
+                                              const std::vector<double>& tolerances, const RunControl& control = {},
+                                              std::size_t window = kToleranceWindow);
 
 }  // namespace linkwright::kinematics

@@ -117,10 +117,9 @@ void summarize(const Mechanism& m, const SweepSpec& spec, std::size_t first, boo
 class Tracker {
 public:
   Tracker(const Mechanism& m, const SweepSpec& spec, const SolveRequest& request, const SolveScope& scope,
-          SweepResult& out, std::size_t window, const SweepWindowSink* sink, SweepSummary& summary)
+          SweepResult& out, std::size_t window, SweepSummary& summary)
       : m_mech(m), m_spec(spec), m_request(request), m_scope(scope), m_out(out), m_writer(m, out), m_window(window),
-        m_sink(sink), m_summary(summary), m_dyads(dyadsIn(m, scope)), m_maxStep(inputStepLimit(m)),
-        m_scratch(kMaxRefineDepth + 1) {
+        m_summary(summary), m_dyads(dyadsIn(m, scope)), m_maxStep(inputStepLimit(m)), m_scratch(kMaxRefineDepth + 1) {
     for (Pose& p : m_poses) preparePose(m, p);
     m_predicted.assign(m.points.size(), Eigen::Vector2d::Zero());
     for (std::size_t i = 0; i < m.points.size(); ++i)
@@ -130,38 +129,49 @@ public:
   // Samples run in blocks (solveBlock) while the branches are plainly continuous; the first
   // sample, any sample near a toggle or a gap, and linkages with free points (whose Newton
   // starts from the samples before) run one at a time. A block never crosses the end of a
-  // window. Returns false, at the first block or sample after `cancel` became true (with the
-  // columns half written) or when the sink asked to stop.
+  // window. The whole sweep in its windows; false at the first block or sample after `cancel`
+  // became true (with the columns half written).
   bool run(const std::atomic<bool>* cancel) {
-    for (std::size_t j = 0; j < m_spec.samples;) {
-      if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) return false;
-      if (j == windowEnd() && !nextWindow()) return false;
-      if (m_haveLast && m_freePoints.empty()) j = solveBlock(j);
-      if (j == windowEnd() && j < m_spec.samples && !nextWindow()) return false;
-      if (j < m_spec.samples) solveOne(j++);
+    while (nextWindow(cancel)) {
     }
-    return finishWindow();
+    return !m_cancelled;
   }
 
-private:
-  std::size_t windowEnd() const { return m_first + m_out.size(); }
-
-  // The window is complete: its ground pivots and summary are filled in and it goes to the
-  // sink. Returns what the sink says (true without one).
-  bool finishWindow() {
+  // Solves the next window into the columns and finishes it (ground pivots, summary): true
+  // when it is there to read, from sample m_first; false when the sweep has no more samples,
+  // or `cancel` became true (m_cancelled). The order of the solves is the same whatever the
+  // windows: a block that ends a window is followed by one sample alone in the next.
+  bool nextWindow(const std::atomic<bool>* cancel) {
+    if (m_started) {
+      if (m_next >= m_spec.samples) return false;
+      m_first += m_out.size();
+      allocate(m_mech, m_spec, m_first, std::min(m_window, m_spec.samples - m_first), m_out.request, m_scope, m_out);
+    }
+    m_started = true;
+    if (m_oneFirst && m_next < windowEnd()) solveOne(m_next++);
+    m_oneFirst = false;
+    while (m_next < windowEnd()) {
+      if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) {
+        m_cancelled = true;
+        return false;
+      }
+      if (m_haveLast && m_freePoints.empty()) m_next = solveBlock(m_next);
+      if (m_next == windowEnd()) {
+        m_oneFirst = m_next < m_spec.samples;
+        break;
+      }
+      solveOne(m_next++);
+    }
     m_writer.finish(m_mech, m_out);
     summarize(m_mech, m_spec, m_first, m_afterFailure, m_out, m_summary);
     m_afterFailure = m_out.size() > 0 && !m_out.assembled(m_out.size() - 1);
-    return m_sink == nullptr || (*m_sink)(m_out, m_first);
-  }
-
-  // Hands the full window on and makes the same columns the next window's.
-  bool nextWindow() {
-    if (!finishWindow()) return false;
-    m_first += m_out.size();
-    allocate(m_mech, m_spec, m_first, std::min(m_window, m_spec.samples - m_first), m_out.request, m_scope, m_out);
     return true;
   }
+
+  std::size_t first() const { return m_first; }
+
+private:
+  std::size_t windowEnd() const { return m_first + m_out.size(); }
 
   void solveOne(std::size_t j) {
     const DriverState driver = sweepDriver(m_spec, j);
@@ -342,10 +352,13 @@ private:
   const SolveScope& m_scope;
   SweepResult& m_out;
   SampleWriter m_writer;
-  std::size_t m_window;           // samples per window
-  const SweepWindowSink* m_sink;  // null: one window, the whole sweep, kept in m_out
+  std::size_t m_window;  // samples per window (the whole sweep: one window, kept in m_out)
   SweepSummary& m_summary;
-  std::size_t m_first = 0;      // the window's first sample in the sweep
+  std::size_t m_first = 0;  // the window's first sample in the sweep
+  std::size_t m_next = 0;   // the next sample to solve
+  bool m_started = false;   // the first window has been asked for
+  bool m_oneFirst = false;  // a block ended the last window: the next starts with one sample alone
+  bool m_cancelled = false;
   bool m_afterFailure = false;  // the sample before the window did not assemble
   std::vector<TrackedDyad> m_dyads;
   double m_maxStep;
@@ -536,24 +549,57 @@ std::optional<Error> sweepInto(const Mechanism& mechanism, const SweepSpec& spec
   const SolveScope scope = scopeOf(mechanism, normalized->only);
   allocate(mechanism, spec, 0, spec.samples, *normalized, scope, out);
   SweepSummary summary;
-  if (!Tracker(mechanism, spec, out.request, scope, out, spec.samples, nullptr, summary).run(cancel))
+  if (!Tracker(mechanism, spec, out.request, scope, out, spec.samples, summary).run(cancel))
     return Error{ErrorCode::Cancelled, "sweep", "the sweep was cancelled"};
   return std::nullopt;
 }
 
-Result<SweepSummary> sweepInWindows(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request,
-                                    std::size_t window, const SweepWindowSink& sink) {
+struct SweepWindows::State {
+  State(const Mechanism& m, const SweepSpec& s, const SolveRequest& request, std::size_t window)
+      : mechanism(m), spec(s), scope(scopeOf(mechanism, request.only)) {
+    allocate(mechanism, spec, 0, std::min(window, spec.samples), request, scope, part);
+    tracker.emplace(mechanism, spec, part.request, scope, part, window, summary);
+  }
+  Mechanism mechanism;
+  SweepSpec spec;
+  SolveScope scope;
+  SweepResult part;
+  SweepSummary summary;
+  std::optional<Tracker> tracker;  // reads the members above, so it is made after them
+};
+
+Result<SweepWindows> SweepWindows::start(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request,
+                                         std::size_t window) {
   const auto normalized = checkedRequest(mechanism, spec, request);
   if (!normalized) return normalized.error();
   countSweep(spec.samples);
-  const SolveScope scope = scopeOf(mechanism, normalized->only);
-  window = std::max<std::size_t>(window, 1);
-  SweepResult part;
-  allocate(mechanism, spec, 0, std::min(window, spec.samples), *normalized, scope, part);
-  SweepSummary summary;
-  if (!Tracker(mechanism, spec, part.request, scope, part, window, &sink, summary).run(nullptr))
-    return Error{ErrorCode::Cancelled, "sweep", "the sweep was stopped by its reader"};
-  return summary;
+  SweepWindows out;
+  out.m_state = std::make_unique<State>(mechanism, spec, *normalized, std::max<std::size_t>(window, 1));
+  return out;
+}
+
+SweepWindows::SweepWindows() = default;
+SweepWindows::SweepWindows(SweepWindows&&) noexcept = default;
+SweepWindows& SweepWindows::operator=(SweepWindows&&) noexcept = default;
+SweepWindows::~SweepWindows() = default;
+
+const SweepResult* SweepWindows::next(const std::atomic<bool>* cancel) {
+  return m_state->tracker->nextWindow(cancel) ? &m_state->part : nullptr;
+}
+
+std::size_t SweepWindows::first() const { return m_state->tracker->first(); }
+
+const SweepSummary& SweepWindows::summary() const { return m_state->summary; }
+
+Result<SweepSummary> sweepInWindows(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request,
+                                    std::size_t window, const SweepWindowSink& sink) {
+  auto started = SweepWindows::start(mechanism, spec, request, window);
+  if (!started) return started.error();
+  SweepWindows windows = std::move(started).value();
+  while (const SweepResult* part = windows.next())
+    if (!sink(*part, windows.first()))
+      return Error{ErrorCode::Cancelled, "sweep", "the sweep was stopped by its reader"};
+  return windows.summary();
 }
 
 void copySampleToPose(const SweepResult& s, std::size_t j, Pose& pose) {

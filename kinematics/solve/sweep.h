@@ -24,6 +24,7 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -146,6 +147,33 @@ using SweepWindowSink = std::function<bool(const SweepResult& part, std::size_t 
 /// returns false.
 Result<SweepSummary> sweepInWindows(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request,
                                     std::size_t window, const SweepWindowSink& sink);
+
+/// A sweep read a window at a time, each window asked for in turn by its reader (the windows
+/// sweepInWindows hands on, pulled rather than pushed): what two sweeps read side by side are
+/// made of, a tolerance sample's windows against the nominal's. The same numbers as sweep(), in
+/// the memory of one window; it keeps copies of what it was given.
+class SweepWindows {
+public:
+  /// Fails as sweep() does, before any window.
+  static Result<SweepWindows> start(const Mechanism& mechanism, const SweepSpec& spec, const SolveRequest& request,
+                                    std::size_t window);
+  SweepWindows(SweepWindows&&) noexcept;
+  SweepWindows& operator=(SweepWindows&&) noexcept;
+  ~SweepWindows();
+
+  /// The next window, samples [first(), first() + size()) of the sweep (valid until the next
+  /// call), or null after the last, or once `cancel` is true (stop reading then).
+  const SweepResult* next(const std::atomic<bool>* cancel = nullptr);
+  /// The current window's first sample.
+  std::size_t first() const;
+  /// What the windows read so far found (the whole sweep's once next() returned null).
+  const SweepSummary& summary() const;
+
+private:
+  SweepWindows();
+  struct State;
+  std::unique_ptr<State> m_state;
+};
 
 /// Runs the sweep. Fails only for an invalid mechanism, spec or selection; samples that cannot
 /// be assembled are reported in the result (report, notAssembled, firstFailure).

@@ -17,12 +17,13 @@ nothing here does.
 """
 
 import contextlib
+import itertools
 
 import numpy
 
 from ._linkwright import Error
 
-__all__ = ["atlas", "path_synthesis", "tolerance_study"]
+__all__ = ["atlas", "path_synthesis", "tolerance_study", "MAX_TOLERANCE_SAMPLES"]
 
 
 def _refuse(field, message):
@@ -97,28 +98,39 @@ def _study_shard(linkage, tolerance, first, count, seed, grid):
     return linkage.tolerance_study(tolerance, mc_samples=count, seed=seed, first_sample=first, **grid)
 
 
-def _combine(studies):
-    """Shards of one study, in sample order, as the one study: each band the shards'
-    lowest and highest values, the worst deviation the largest (the earliest on a
-    tie, as the serial run keeps its first), the counts summed."""
-    whole = dict(studies[0])
-    whole["mc_samples"] = sum(s["mc_samples"] for s in studies)
+# The core's largest first sample (kMaxToleranceFirstSample, 2**53: exact as a double): the
+# most samples a study in shards can have.
+MAX_TOLERANCE_SAMPLES = 2 ** 53
+
+
+def _shards(mc_samples, shard_samples):
+    """(first, count) of each shard in sample order, made as they are sent, never all at once."""
+    for first in range(0, mc_samples, shard_samples):
+        yield first, min(shard_samples, mc_samples - first)
+
+
+def _fold(whole, study):
+    """The study so far and its next shard, in sample order, as one study: each band the
+    lowest and highest values, the worst deviation the largest (the earlier on a tie, as
+    the serial run keeps its first), the counts summed."""
+    if whole is None:
+        return dict(study)
+    whole = dict(whole)
+    whole["mc_samples"] += study["mc_samples"]
     for count in ("used", "not_assembled", "singular"):
-        whole[count] = sum(s[count] for s in studies)
+        whole[count] += study[count]
     columns = {}
-    for name, first in studies[0]["columns"].items():
-        bands = [s["columns"][name] for s in studies]
-        worst = None
-        for band in bands:
-            deviation = band["worst_deviation"]
-            if deviation is not None and (worst is None or deviation > worst["worst_deviation"]):
-                worst = band
+    for name, mine in whole["columns"].items():
+        band = study["columns"][name]
+        deviation = band["worst_deviation"]
+        worst = band if deviation is not None and (mine["worst_deviation"] is None or
+                                                   deviation > mine["worst_deviation"]) else mine
         columns[name] = {
-            "nominal": first["nominal"],
-            "low": numpy.ma.min(numpy.ma.stack([b["low"] for b in bands]), axis=0),
-            "high": numpy.ma.max(numpy.ma.stack([b["high"] for b in bands]), axis=0),
-            "worst_deviation": None if worst is None else worst["worst_deviation"],
-            "worst_at": None if worst is None else worst["worst_at"],
+            "nominal": mine["nominal"],
+            "low": numpy.ma.min(numpy.ma.stack([mine["low"], band["low"]]), axis=0),
+            "high": numpy.ma.max(numpy.ma.stack([mine["high"], band["high"]]), axis=0),
+            "worst_deviation": worst["worst_deviation"],
+            "worst_at": worst["worst_at"],
         }
     whole["columns"] = columns
     return whole
@@ -126,17 +138,39 @@ def _combine(studies):
 
 def tolerance_study(linkage, tolerance, client=None, *, mc_samples, seed=46, shard_samples=10_000, **grid):
     """Linkage.tolerance_study(tolerance, mc_samples=..., seed=...)'s answer for any
-    number of samples (one call takes at most 100 000), shard_samples samples a
-    Dask task; grid keywords as Linkage.sweep's."""
-    if mc_samples < 1:
-        _refuse("mc_samples", f"mc_samples must be at least 1 (got {mc_samples})")
+    number of samples up to MAX_TOLERANCE_SAMPLES (one call takes at most 100 000),
+    shard_samples samples a Dask task; grid keywords as Linkage.sweep's. The shards are
+    made and sent as the cluster works (twice as many in flight as it has threads) and
+    folded in as they come back, so memory does not grow with mc_samples."""
+    if not isinstance(mc_samples, int) or isinstance(mc_samples, bool) or \
+            not 1 <= mc_samples <= MAX_TOLERANCE_SAMPLES:
+        _refuse("mc_samples", f"mc_samples must be a whole number between 1 and {MAX_TOLERANCE_SAMPLES} "
+                              f"(got {mc_samples!r})")
     if not 1 <= shard_samples <= 100_000:
         _refuse("shard_samples", f"shard_samples must be between 1 and 100000 (got {shard_samples})")
+    from dask.distributed import as_completed  # only when a batch job runs
+
     with _client(client) as client:
-        firsts = list(range(0, mc_samples, shard_samples))
-        counts = [min(shard_samples, mc_samples - first) for first in firsts]
         [scattered] = client.scatter([linkage], broadcast=True, hash=False)
-        n = len(firsts)
-        futures = client.map(_study_shard, [scattered] * n, [tolerance] * n, firsts, counts, [seed] * n, [grid] * n,
-                             pure=True)
-        return _combine(client.gather(futures))
+        shards = enumerate(_shards(mc_samples, shard_samples))
+        in_flight = 2 * max(sum(client.nthreads().values()), 1)
+
+        index_of = {}
+
+        def send(index_shard):
+            index, (first, count) = index_shard
+            future = client.submit(_study_shard, scattered, tolerance, first, count, seed, grid, pure=True)
+            index_of[future.key] = index
+            return future
+
+        running = as_completed([send(s) for s in itertools.islice(shards, in_flight)])
+        arrived, whole, folded = {}, None, 0
+        for future in running:
+            arrived[index_of.pop(future.key)] = future.result()
+            future.release()
+            for shard in itertools.islice(shards, 1):
+                running.add(send(shard))
+            while folded in arrived:  # in sample order, whatever order they arrive in
+                whole = _fold(whole, arrived.pop(folded))
+                folded += 1
+        return whole

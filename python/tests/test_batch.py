@@ -79,6 +79,36 @@ def test_a_sharded_tolerance_study_is_the_serial_one(client):
         assert (mine["worst_deviation"], mine["worst_at"]) == (band["worst_deviation"], band["worst_at"])
 
 
+def test_a_tolerance_study_in_many_small_shards_is_the_serial_one_and_its_shards_are_made_lazily(client):
+    linkage = linkwright.four_bar(60, 25, 70, 45, coupler_point=(35, 20))
+    serial = linkage.tolerance_study(4.0, mc_samples=300, seed=5, samples=13)
+    # 43 shards, more than are ever in flight: sent as others come back, folded in order.
+    sharded = linkwright.batch.tolerance_study(linkage, 4.0, client, mc_samples=300, seed=5, shard_samples=7,
+                                               samples=13)
+    for count in ("used", "not_assembled", "singular", "mc_samples"):
+        assert sharded[count] == serial[count]
+    for name, band in serial["columns"].items():
+        mine = sharded["columns"][name]
+        for part in ("low", "high"):
+            assert numpy.array_equal(numpy.ma.getdata(mine[part]), numpy.ma.getdata(band[part])), (name, part)
+        assert (mine["worst_deviation"], mine["worst_at"]) == (band["worst_deviation"], band["worst_at"])
+    # 10**12 samples: the shards are a generator, not 10**8 argument lists made up front.
+    shards = linkwright.batch._shards(10 ** 12, 10_000)
+    assert next(shards) == (0, 10_000) and next(shards) == (10_000, 10_000)
+    assert not isinstance(shards, (list, tuple))
+
+
+@pytest.mark.parametrize("mc_samples", [2 ** 53 + 1, 10 ** 20, 2.5, True])
+def test_a_tolerance_study_beyond_the_cores_samples_is_refused_naming_mc_samples(client, mc_samples):
+    with pytest.raises(linkwright.Error) as refused:
+        linkwright.batch.tolerance_study(linkwright.example("thesis-crank-rocker"), 0.1, client,
+                                         mc_samples=mc_samples)
+    assert refused.value.field == "mc_samples"
+    assert str(refused.value) == (f"mc_samples must be a whole number between 1 and 9007199254740992 "
+                                  f"(got {mc_samples!r})")
+    assert linkwright.batch.MAX_TOLERANCE_SAMPLES == 2 ** 53
+
+
 def test_a_worker_killed_mid_run_still_gives_the_serial_answer(client):
     search = linkwright.PathSearch(POINTS, starts=20 * linkwright.PATH_STARTS_PER_BLOCK, keep=6, seed=9)
     serial = search.run()

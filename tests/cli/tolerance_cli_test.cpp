@@ -15,6 +15,7 @@
 
 #include "tests/support/catch.h"
 
+#include <cmath>
 #include <filesystem>
 #include <random>
 
@@ -168,4 +169,32 @@ TEST_CASE("tolerance --tolerance-of gives dimensions a ± of their own, and name
   CHECK(malformed.code == 2);
   CHECK_THAT(malformed.err,
              Catch::Contains("--tolerance-of: 'crank length' is not NAME=T (e.g. \"coupler length=0.02\")"));
+}
+
+TEST_CASE("tolerance states the band's Monte-Carlo error and the samples an accuracy needs, in text and JSON",
+          "[cli][tolerance]") {
+  const std::vector<std::string> study{"tolerance", "--example", "thesis-crank-rocker", "--tolerance", "0.05",
+                                       "--step",    "30",        "--mc-samples",        "199"};
+  auto withJson = study;
+  withJson.push_back("--json");
+  const auto run = runCliCommand(withJson);
+  INFO(run.err);
+  REQUIRE(run.code == 0);
+  const auto json = k::io::parseJson(run.out).value();
+  const auto& e = json["monte_carlo_error"];
+  const k::MonteCarloError core = k::monteCarloError(199);
+  CHECK(e["samples"].get<std::size_t>() == 199);
+  CHECK(e["confidence"].get<double>() == 0.95);
+  CHECK(e["outside_band_chance"].get<double>() == 2.0 / 200);  // 2/(n+1)
+  CHECK(e["beyond_worst_chance"].get<double>() == 1.0 / 200);
+  CHECK(e["outside_band_at_confidence"].get<double>() == core.outsideBandBound);
+  CHECK(e["beyond_worst_at_confidence"].get<double>() == Approx(1.0 - std::pow(0.05, 1.0 / 199)));
+  CHECK(e["samples_for_outside_band"]["0.01"].get<std::size_t>() == 473);
+  CHECK(e["samples_for_outside_band"]["0.001"].get<std::size_t>() == k::toleranceSamplesFor(0.001));
+  const auto text = runCliCommand(study);
+  REQUIRE(text.code == 0);
+  CHECK(text.out.find("Monte-Carlo error, for the 199 samples in the band: one more linkage falls outside the band at "
+                      "an input with chance 2/(n+1) = 0.01 (with 95 % confidence at most ") != std::string::npos);
+  CHECK(text.out.find("deviates more than a column's worst with chance 1/(n+1) = 0.005") != std::string::npos);
+  CHECK(text.out.find("at most 1 % outside with 95 % confidence takes 473 samples in the band") != std::string::npos);
 }

@@ -14,6 +14,7 @@
 #include "tests/support/catch.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -243,4 +244,127 @@ TEST_CASE("a bad tolerance or sample count is refused with its field and range",
   CHECK(message({0.1, 10, 1, kMaxToleranceFirstSample + 1}) ==
         "firstSample: firstSample must be between 0 and 9007199254740992 (got 9007199254740993)");
   CHECK(toleranceMonteCarlo(m, grid(13), {0.0, 3, 1}).value().bands[0].worstDeviation == 0.0);
+}
+
+TEST_CASE("a study without the band reads the grid in windows and has the whole study's figures to the last bit",
+          "[tolerance][monte-carlo][windows]") {
+  // ± 4 mm on the four-bar: some samples fail part-way round, after windows already read.
+  struct Case {
+    Mechanism m;
+    double t;
+    std::size_t inputs, window;
+  };
+  const std::vector<Case> cases{{thesisWithP(), 4.0, 1001, 7},
+                                {findExample("watt-ii")->mechanism, 0.5, 361, 100},
+                                // Above kNominalCacheValues: the nominal swept again beside each sample.
+                                {thesisWithP(), 0.5, 100'000, 4096}};
+  for (const Case& c : cases) {
+    CAPTURE(c.inputs, c.window);
+    const std::size_t samples = c.inputs > 10'000 ? 3 : 90;
+    const MonteCarloResult whole = toleranceMonteCarlo(c.m, grid(c.inputs), {c.t, samples, 5}).value();
+    MonteCarloSpec streamed{c.t, samples, 5};
+    streamed.band = false;
+    const MonteCarloResult windows = toleranceMonteCarlo(c.m, grid(c.inputs), streamed, {}, c.window).value();
+    CHECK(windows.inputs == c.inputs);
+    CHECK(windows.nominal.size() == 0);
+    CHECK(windows.used == whole.used);
+    CHECK(windows.notAssembled == whole.notAssembled);
+    CHECK(windows.singular == whole.singular);
+    REQUIRE(windows.bands.size() == whole.bands.size());
+    for (std::size_t b = 0; b < whole.bands.size(); ++b) {
+      CAPTURE(whole.bands[b].column.name);
+      CHECK(windows.bands[b].low.empty());
+      CHECK(windows.bands[b].worstDeviation == whole.bands[b].worstDeviation);
+      CHECK(windows.bands[b].worstGridSample == whole.bands[b].worstGridSample);
+    }
+  }
+  const MonteCarloResult failing = toleranceMonteCarlo(thesisWithP(), grid(1001), {4.0, 90, 5}).value();
+  CHECK(failing.notAssembled > 0);
+}
+
+TEST_CASE("a band kept whole is bounded, and refused beyond it naming the inputs and the bound",
+          "[tolerance][monte-carlo][windows]") {
+  const Mechanism m = thesisWithP();
+  const std::size_t columns = toleranceColumns(m).size();
+  CHECK(maxToleranceBandInputs(m) == kMaxToleranceBandValues / columns);
+  const auto r = toleranceMonteCarlo(m, grid(10'000'000), {0.05, 10, 1});
+  REQUIRE_FALSE(r);
+  CHECK(r.error().field == "band");
+  CHECK(r.error().message == "a band kept at every input holds " + std::to_string(columns) +
+                                 " columns' nominal, lowest and highest values there: at most " +
+                                 std::to_string(kMaxToleranceBandValues / columns) +
+                                 " inputs for this linkage (got 10000000)");
+}
+
+TEST_CASE("a study reports its progress in samples and stops when cancelled", "[tolerance][monte-carlo]") {
+  const Mechanism m = thesisWithP();
+  std::vector<std::size_t> done;
+  RunControl control;
+  control.progress = [&](std::size_t k, std::size_t total) {
+    CHECK(total == 25);
+    done.push_back(k);
+  };
+  REQUIRE(toleranceMonteCarlo(m, grid(37), {0.1, 25, 1}, control));
+  CHECK(done.size() == 25);
+  CHECK(done.back() == 25);
+  std::atomic<bool> cancel{false};
+  control.cancel = &cancel;
+  control.progress = [&](std::size_t k, std::size_t) {
+    if (k == 3) cancel = true;
+  };
+  const auto stopped = toleranceMonteCarlo(m, grid(37), {0.1, 25, 1}, control);
+  REQUIRE_FALSE(stopped);
+  CHECK(stopped.error().code == ErrorCode::Cancelled);
+}
+
+TEST_CASE("the band's Monte-Carlo error is the order statistics': 2/(n+1) outside it, checked on a closed form",
+          "[tolerance][monte-carlo][error]") {
+  // Only O2 x toleranced (± t): the crank tip B's x is the nominal's plus O2's offset, uniform in
+  // ±t, exactly. So at every input the band of n samples is [min, max] of n uniform offsets and
+  // the fraction of all linkages outside it is 1 − (max − min)/(2t), with mean 2/(n + 1).
+  const Mechanism m = thesisWithP();
+  const double t = 0.5;
+  const std::size_t n = 19, studies = 400;
+  MonteCarloSpec spec{0.0, n, 0};
+  spec.perDimension = {{"O2 x", t}};
+  double outside = 0.0;
+  std::size_t beyondBound = 0;
+  std::size_t tip = 0;
+  for (std::size_t s = 0; s < studies; ++s) {
+    spec.seed = 1000 + s;
+    const MonteCarloResult r = toleranceMonteCarlo(m, grid(5), spec).value();
+    REQUIRE(r.used == n);
+    if (s == 0) tip = band(r, "B_x_mm");
+    const ToleranceBand& b = r.bands[tip];
+    const double fraction = 1.0 - (b.high[2] - b.low[2]) / (2.0 * t);
+    CHECK(fraction == Approx(1.0 - (b.high[0] - b.low[0]) / (2.0 * t)).margin(1e-9));  // the same at every input
+    outside += fraction / studies;
+    beyondBound += fraction > r.error.outsideBandBound ? 1 : 0;
+    CHECK(r.error.samples == n);
+    CHECK(r.error.outsideBand == Approx(2.0 / (n + 1)));
+  }
+  // The fraction outside the range of n draws is Beta(2, n − 1): mean 2/(n+1), variance
+  // 2(n−1)/((n+1)²(n+2)); the mean of 400 within 4 standard errors.
+  const double sd = std::sqrt(2.0 * (n - 1) / ((n + 1.0) * (n + 1.0) * (n + 2.0)) / studies);
+  CHECK(std::abs(outside - 2.0 / (n + 1)) < 4 * sd);
+  // The 95 % bound is exceeded by about 5 % of the studies (binomial: 20 ± 4.4).
+  CHECK(beyondBound >= 8);
+  CHECK(beyondBound <= 33);
+  // The bounds' closed forms: for n = 19, 1 − 0.05^(1/19) beyond the worst, and the range's
+  // coverage CDF n·yⁿ⁻¹ − (n − 1)·yⁿ at 1 − bound is 0.05.
+  const MonteCarloError e = monteCarloError(19);
+  CHECK(e.beyondWorst == Approx(1.0 / 20));
+  CHECK(e.beyondWorstBound == Approx(1.0 - std::pow(0.05, 1.0 / 19)));
+  const double y = 1.0 - e.outsideBandBound;
+  CHECK(19 * std::pow(y, 18) - 18 * std::pow(y, 19) == Approx(0.05).margin(1e-12));
+  // Samples for a chosen accuracy: the least n whose bound is within it.
+  for (const double fraction : {0.1, 0.01, 0.001}) {
+    const std::size_t needed = toleranceSamplesFor(fraction);
+    CAPTURE(fraction, needed);
+    CHECK(monteCarloError(needed).outsideBandBound <= fraction);
+    CHECK(monteCarloError(needed - 1).outsideBandBound > fraction);
+  }
+  CHECK(toleranceSamplesFor(0.01) == 473);  // ≈ 4.74/fraction for small fractions
+  CHECK(monteCarloError(1).outsideBand == 1.0);
+  CHECK(monteCarloError(0).beyondWorst == 1.0);
 }

@@ -136,3 +136,39 @@ TEST_CASE("a dimension the outputs do not depend on has zero sensitivity, and th
   CHECK(worst == Approx(sum).epsilon(1e-14));
   CHECK(worst > 0.1);  // at least O2's own y
 }
+
+TEST_CASE("the sensitivities' summary, folded window by window, is the whole grid's largest and first-order worst",
+          "[tolerance][sensitivity][windows]") {
+  for (const Mechanism& m : {makeFourBar(kThesisCrankRocker, Branch::Open, "mm", CouplerPointSpec{35.0, 20.0}).value(),
+                             example("watt-ii")}) {
+    SweepSpec spec;
+    spec.toAngle = 2.0 * kPi;
+    spec.samples = 361;
+    spec.omega = 2.0;
+    spec.alpha = 1.0;
+    const SweepSensitivities whole = sweepSensitivities(m, spec).value();
+    std::vector<double> tolerances;
+    for (std::size_t d = 0; d < whole.dimensions.size(); ++d)
+      tolerances.push_back(0.01 * static_cast<double>(1 + d % 3));
+    for (const std::size_t window : {std::size_t{1}, std::size_t{7}, std::size_t{1000}}) {
+      CAPTURE(window);
+      std::size_t reported = 0;
+      RunControl control;
+      control.progress = [&](std::size_t done, std::size_t total) {
+        CHECK(total == 361);
+        CHECK(done > reported);
+        reported = done;
+      };
+      const SensitivitySummary s = sensitivitySummary(m, spec, tolerances, control, window).value();
+      CHECK(reported == 361);
+      CHECK(s.inputs == 361);
+      REQUIRE(s.columns.size() == whole.columns.size());
+      for (std::size_t c = 0; c < s.columns.size(); ++c) {
+        std::size_t at = 0;
+        CHECK(s.firstOrderWorst[c] == whole.firstOrderWorst(c, tolerances, &at));
+        CHECK(s.firstOrderWorstAt[c] == at);
+        for (std::size_t d = 0; d < s.dimensions.size(); ++d) CHECK(s.largest[c][d] == whole.largest(c, d));
+      }
+    }
+  }
+}

@@ -133,3 +133,34 @@ TEST_CASE("a reader that stops a sweep in windows stops it", "[sweep][windows]")
   REQUIRE_FALSE(refused);
   CHECK(refused.error().field == "samples");
 }
+
+TEST_CASE("two sweeps read a window at a time side by side are each the whole sweep", "[sweep][windows]") {
+  const Mechanism a = *makeFourBar({60.0, 25.0, 70.0, 45.0}, Branch::Open);
+  const Mechanism b = *makeFourBar({60.0, 25.0, 30.0, 45.0}, Branch::Open);  // with gaps
+  const SweepSpec turn{0.0, 2.0 * kPi, 721, 1.0, 0.0};
+  auto ra = SweepWindows::start(a, turn, {}, 50);
+  auto rb = SweepWindows::start(b, turn, {}, 50);
+  REQUIRE(ra);
+  REQUIRE(rb);
+  SweepWindows wa = std::move(ra).value(), wb = std::move(rb).value();
+  const SweepResult fa = sweep(a, turn).value(), fb = sweep(b, turn).value();
+  std::size_t windows = 0;
+  while (const SweepResult* pa = wa.next()) {
+    const SweepResult* pb = wb.next();
+    REQUIRE(pb != nullptr);
+    CHECK(wa.first() == 50 * windows);
+    CHECK(wb.first() == wa.first());
+    for (std::size_t j = 0; j < pa->size(); ++j) {
+      CHECK(pa->report[j] == fa.report[wa.first() + j]);
+      CHECK(pb->report[j] == fb.report[wb.first() + j]);
+      CHECK(pa->linkAngle[2][j] == fa.linkAngle[2][wa.first() + j]);
+      CHECK(pb->position[3][j] == fb.position[3][wb.first() + j]);
+    }
+    ++windows;
+  }
+  CHECK(wb.next() == nullptr);
+  CHECK(windows == 15);
+  CHECK(wb.summary().notAssembled == fb.notAssembled);
+  // A refused spec is refused before any window.
+  CHECK_FALSE(SweepWindows::start(a, {0.0, 2.0 * kPi, 0, 1.0, 0.0}, {}, 50));
+}
