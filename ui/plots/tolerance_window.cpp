@@ -12,12 +12,13 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
-#include <QGuiApplication>
 #include <QHBoxLayout>
 #include <QHash>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
+#include <QProgressBar>
+#include <QPushButton>
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QTableWidget>
@@ -64,8 +65,13 @@ ToleranceWindow::ToleranceWindow(MechanismDocument* document, QWidget* parent)
     : QWidget(parent, Qt::Window), m_document(document), m_tolerance(new QDoubleSpinBox), m_samples(new QSpinBox),
       m_seed(new QSpinBox), m_own(new QTableWidget(0, 2)), m_output(new QComboBox), m_summary(new QLabel),
       m_band(new ForceChartView(tr("The band of the samples about the nominal"), false)),
-      m_sensitivity(new ForceChartView(tr("Sensitivity to each dimension (exact)"), false)) {
+      m_sensitivity(new ForceChartView(tr("Sensitivity to each dimension (exact)"), false)), m_busy(new QProgressBar),
+      m_cancel(new QPushButton(tr("Cancel"))), m_run([this](const ToleranceOutcome& outcome) { display(outcome); }) {
   setWindowTitle(tr("Tolerances"));
+  m_busy->setRange(0, 0);  // a study reports no fraction to the window: busy, not how far
+  m_busy->setVisible(false);
+  m_cancel->setVisible(false);
+  m_cancel->setObjectName(QStringLiteral("toleranceCancel"));
   m_tolerance->setRange(0.0, 1e6);
   m_tolerance->setDecimals(4);
   m_tolerance->setValue(0.05);
@@ -92,7 +98,13 @@ ToleranceWindow::ToleranceWindow(MechanismDocument* document, QWidget* parent)
   form->addRow(tr("Output"), m_output);
   auto* top = new QHBoxLayout;
   top->addLayout(form);
-  top->addWidget(m_summary, 1);
+  auto* status = new QVBoxLayout;
+  status->addWidget(m_summary, 1);
+  auto* running = new QHBoxLayout;
+  running->addWidget(m_busy, 1);
+  running->addWidget(m_cancel);
+  status->addLayout(running);
+  top->addLayout(status, 1);
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(top);
   layout->addWidget(m_band, 1);
@@ -107,6 +119,10 @@ ToleranceWindow::ToleranceWindow(MechanismDocument* document, QWidget* parent)
   connect(m_seed, &QSpinBox::valueChanged, this, &ToleranceWindow::scheduleRefresh);
   connect(m_own, &QTableWidget::cellChanged, this, [this] { scheduleRefresh(); });
   connect(m_output, &QComboBox::currentIndexChanged, this, [this] { redraw(); });
+  connect(m_cancel, &QPushButton::clicked, this, [this] {
+    m_run.cancel();
+    display({std::nullopt, std::nullopt, k::cancelledError()});
+  });
   connect(document, &MechanismDocument::changed, this, [this](Changes what) {
     if (what & Change::Design) scheduleRefresh();
   });
@@ -139,8 +155,14 @@ void ToleranceWindow::showEvent(QShowEvent* event) {
   refresh();
 }
 
+void ToleranceWindow::waitForStudy() { m_run.wait(); }
+
 void ToleranceWindow::scheduleRefresh() {
-  // What is shown belongs to the design it was computed for: drop it now, compute once settled.
+  // What is shown belongs to the design it was computed for: drop it now, and the study under
+  // way with it, and compute once settled.
+  m_run.cancel();
+  m_busy->setVisible(false);
+  m_cancel->setVisible(false);
   m_monteCarlo.reset();
   m_sensitivities.reset();
   m_summary->setText(tr("Computing for the design as it is now…"));
@@ -174,21 +196,27 @@ void ToleranceWindow::refresh() {
     }
     spec.perDimension.push_back({name.toStdString(), value});
   }
-  QGuiApplication::setOverrideCursor(Qt::WaitCursor);
-  auto band = k::toleranceMonteCarlo(design.mechanism, grid, spec);
-  auto sensitivities = k::sweepSensitivities(design.mechanism, grid);
-  QGuiApplication::restoreOverrideCursor();
-  if (!band || !sensitivities) {
+  m_summary->setText(tr("Computing the study of %1 linkages…").arg(spec.samples));
+  m_busy->setVisible(true);
+  m_cancel->setVisible(true);
+  m_run.start(toleranceJob(design, spec));
+}
+
+void ToleranceWindow::display(const ToleranceOutcome& outcome) {
+  m_busy->setVisible(false);
+  m_cancel->setVisible(false);
+  if (outcome.error) {
     m_monteCarlo.reset();
     m_sensitivities.reset();
-    const k::Error& e = !band ? band.error() : sensitivities.error();
-    m_summary->setText(tr("No tolerance study: %1").arg(QString::fromStdString(e.message)));
+    m_summary->setText(outcome.error->code == k::ErrorCode::Cancelled
+                           ? tr("The study was cancelled: change a field, or the design, to run it again.")
+                           : tr("No tolerance study: %1").arg(QString::fromStdString(outcome.error->message)));
     m_output->clear();
     redraw();
     return;
   }
-  m_monteCarlo = std::move(band).value();
-  m_sensitivities = std::move(sensitivities).value();
+  m_monteCarlo = *outcome.band;
+  m_sensitivities = *outcome.sensitivities;
   const QString kept = m_output->currentText();
   {
     const QSignalBlocker block(m_output);

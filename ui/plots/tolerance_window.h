@@ -5,9 +5,12 @@
 // highest of the samples: kinematics/design/tolerance_monte_carlo.h) and the exact sensitivity of
 // that output to each dimension against the input (tolerance_sensitivity.h), with the worst
 // deviation, the first-order worst case and the samples that did not assemble. It computes
-// while shown, once an edit has settled; a design it cannot study leaves it saying why, with
+// while shown, once an edit has settled, on the worker pool (an edit drops the study under way,
+// Cancel stops it); a design it cannot study leaves it saying why, with
 // nothing drawn from before. Not modal.
 
+#include "ui/document/background_request.h"
+#include "ui/document/tolerance_job.h"
 #include "ui/plots/angle_unit.h"
 
 #include "kinematics/design/tolerance_monte_carlo.h"
@@ -19,6 +22,8 @@
 #include <optional>
 
 class QComboBox;
+class QProgressBar;
+class QPushButton;
 class QDoubleSpinBox;
 class QLabel;
 class QSpinBox;
@@ -44,14 +49,20 @@ public:
   QTableWidget* ownTolerancesTable() const { return m_own; }
   /// The figures of the chosen output, or why there are none.
   QString summaryText() const;
-  /// Computes now for the design and fields as they are (tests; the settle timer's end).
+  /// Starts the study on the worker pool for the design and fields as they are (tests; the
+  /// settle timer's end); an edit or a field changed meanwhile drops it.
   void refresh();
+  /// Blocks until the study under way has landed and is shown (tests).
+  void waitForStudy();
+  /// Stops the study under way (the window's Cancel button).
+  QPushButton* cancelButton() const { return m_cancel; }
 
 protected:
   void showEvent(QShowEvent* event) override;
 
 private:
   void scheduleRefresh();
+  void display(const ToleranceOutcome& outcome);
   void redraw();
   // The table's rows for the design's dimensions, each ± typed kept by the dimension's name.
   void showDimensions();
@@ -65,6 +76,9 @@ private:
   QLabel* m_summary;
   ForceChartView* m_band;
   ForceChartView* m_sensitivity;
+  QProgressBar* m_busy;  // shown while a study runs
+  QPushButton* m_cancel;
+  BackgroundRequest<ToleranceOutcome> m_run;
   QTimer m_settle;
   std::optional<kinematics::MonteCarloResult> m_monteCarlo;
   std::optional<kinematics::SweepSensitivities> m_sensitivities;

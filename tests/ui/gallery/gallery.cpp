@@ -209,8 +209,11 @@ bool render(const std::string& example, const View& view, double crankDeg, const
   QWidget* shown = &window;
   if (auto* cognates = window.findChild<linkwright::ui::CognatesWindow*>(); cognates && cognates->isVisible())
     shown = cognates;
-  if (auto* tolerances = window.findChild<linkwright::ui::ToleranceWindow*>(); tolerances && tolerances->isVisible())
+  if (auto* tolerances = window.findChild<linkwright::ui::ToleranceWindow*>(); tolerances && tolerances->isVisible()) {
+    tolerances->waitForStudy();  // it runs on the worker pool
+    settle(window);
     shown = tolerances;
+  }
   if (auto* optimise = window.findChild<linkwright::ui::OptimiseWindow*>(); optimise && optimise->isVisible())
     shown = optimise;
   if (!shown->grab().save(path, "PNG")) {

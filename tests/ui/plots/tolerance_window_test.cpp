@@ -10,12 +10,14 @@
 
 #include "kinematics/design/design.h"
 #include "kinematics/design/examples.h"
+#include "kinematics/design/parameters.h"
 #include "kinematics/design/tolerance_dimensions.h"
 
 #include "tests/support/catch.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QPushButton>
 #include <QSpinBox>
 #include <QTableWidget>
 
@@ -30,6 +32,7 @@ TEST_CASE("the tolerance window draws the core's band and sensitivities, and fol
   window.samplesField()->setValue(200);
   window.show();
   window.refresh();
+  window.waitForStudy();
   const int rocker = window.outputBox()->findText("rocker_angle_deg");
   REQUIRE(rocker >= 0);
   window.outputBox()->setCurrentIndex(rocker);
@@ -64,6 +67,7 @@ TEST_CASE("the tolerance window draws the core's band and sensitivities, and fol
   REQUIRE_FALSE(doc.edit(longer, "rocker"));
   CHECK_FALSE(window.bandChart()->isVisible());
   window.refresh();
+  window.waitForStudy();
   REQUIRE(window.bandChart()->isVisible());
   const auto again = k::toleranceMonteCarlo(longer.mechanism, k::designSweepSpec(longer), spec).value();
   const int index = window.outputBox()->currentIndex();
@@ -74,6 +78,7 @@ TEST_CASE("the tolerance window draws the core's band and sensitivities, and fol
   // A tolerance as long as the crank: the core's refusal, and nothing drawn.
   window.toleranceField()->setValue(25.0);
   window.refresh();
+  window.waitForStudy();
   CHECK(window.summaryText().startsWith("No tolerance study: "));
   CHECK(window.summaryText().contains("25"));
   CHECK_FALSE(window.bandChart()->isVisible());
@@ -88,6 +93,7 @@ TEST_CASE("a dimension's own tolerance typed in the table is the study's, and a 
   window.samplesField()->setValue(100);
   window.show();
   window.refresh();
+  window.waitForStudy();
   QTableWidget* own = window.ownTolerancesTable();
   const auto dimensions = k::toleranceDimensions(doc.design().mechanism);
   REQUIRE(own->rowCount() == static_cast<int>(dimensions.size()));
@@ -99,6 +105,7 @@ TEST_CASE("a dimension's own tolerance typed in the table is the study's, and a 
   REQUIRE(crank >= 0);
   own->item(crank, 1)->setText("0.5");
   window.refresh();
+  window.waitForStudy();
   const int rocker = window.outputBox()->findText("rocker_angle_deg");
   window.outputBox()->setCurrentIndex(rocker);
   k::MonteCarloSpec spec;
@@ -116,6 +123,36 @@ TEST_CASE("a dimension's own tolerance typed in the table is the study's, and a 
 
   own->item(crank, 1)->setText("half a mm");
   window.refresh();
+  window.waitForStudy();
   CHECK(window.summaryText() == "No tolerance study: the ± of crank length must be a number (got 'half a mm')");
   CHECK(window.bandChart()->isHidden());
+}
+
+TEST_CASE("the tolerance window's study runs off the GUI thread, and an edit or Cancel drops it",
+          "[plots][tolerance]") {
+  MechanismDocument doc;
+  doc.reset(*k::designForExample("thesis-crank-rocker"));
+  ToleranceWindow window(&doc);
+  window.samplesField()->setValue(200);
+  window.show();
+  window.refresh();
+  // While it runs the window says so and offers Cancel; Cancel drops the study.
+  CHECK(window.summaryText().startsWith("Computing the study of 200 linkages"));
+  CHECK(window.cancelButton()->isVisible());
+  window.cancelButton()->click();
+  window.waitForStudy();  // nothing pending: Cancel dropped it
+  CHECK(window.summaryText().startsWith("The study was cancelled"));
+  CHECK_FALSE(window.cancelButton()->isVisible());
+  CHECK(window.outputBox()->count() == 0);
+  // A study started, then the design edited before it lands: only the new design's is shown.
+  window.refresh();
+  k::Design longer = doc.design();
+  REQUIRE(k::setParameter(longer.mechanism, k::parametersOf(longer.mechanism).front(), 62.0));
+  REQUIRE_FALSE(doc.edit(longer, "frame"));
+  window.waitForStudy();
+  CHECK(window.outputBox()->count() == 0);  // the old design's answer was dropped
+  window.refresh();
+  window.waitForStudy();
+  CHECK(window.outputBox()->count() > 0);
+  CHECK_FALSE(window.summaryText().startsWith("Computing"));
 }
