@@ -162,7 +162,7 @@ std::vector<Parameter> rawParameters(const Mechanism& m) {
 // The four-bar `parameter` names a dimension of, if it is a named one of `m`'s four-bar.
 std::optional<FourBarStructure> namedFourBar(const Mechanism& m, const Parameter& parameter) {
   if (!isFourBarDimension(parameter.slot)) return std::nullopt;
-  auto s = asFourBar(m);
+  auto s = asFourBar(m, PointsOnLinks::AnyLink);
   if (!s || carrier(*s, parameter.slot) != parameter.point) return std::nullopt;
   return s;
 }
@@ -178,7 +178,7 @@ bool isFourBarDimension(ParameterSlot slot) {
 std::vector<Parameter> parametersOf(const Mechanism& m) {
   using S = ParameterSlot;
   std::vector<Parameter> raw = rawParameters(m);
-  const auto s = asFourBar(m);
+  const auto s = asFourBar(m, PointsOnLinks::AnyLink);
   if (!s) return raw;
   std::vector<Parameter> out;
   for (const S slot : {S::FrameLength, S::CrankLength, S::CouplerLength, S::RockerLength})

@@ -110,7 +110,7 @@ QString labelOf(const k::Mechanism& m, const std::optional<k::FourBarStructure>&
 
 std::vector<DimensionField> dimensionFields(const k::Mechanism& m) {
   std::vector<DimensionField> out;
-  const auto fourBar = k::asFourBar(m);
+  const auto fourBar = k::asFourBar(m, k::PointsOnLinks::AnyLink);
   for (const k::Parameter& p : k::parametersOf(m)) out.push_back({p, labelOf(m, fourBar, p)});
   return out;
 }
