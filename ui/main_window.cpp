@@ -69,6 +69,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressDialog>
+#include <QScreen>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSpacerItem>
@@ -183,29 +184,48 @@ MainWindow::MainWindow(QWidget* parent)
   connect(m_document, &MechanismDocument::changed, this, [this](Changes what) {
     if (what & (Change::File | Change::Design)) refreshTitle();
   });
-  resize(1400, 880);
+  fitToScreen();
+  // Qt moves and shrinks a saved geometry that would not fit the screen any more.
   restoreGeometry(m_settings->windowGeometry());
   restoreState(m_settings->windowState());
   newDocument(*k::designForExample("thesis-crank-rocker"), QStringLiteral("thesis-crank-rocker"));
 }
+
+namespace {
+
+// `page` in a scroll area that takes none of its minimum size: a pane shorter or narrower than
+// the page needs (a 768 px screen, presentation mode's larger text) scrolls, rather than the
+// window growing past the screen or the page's controls being squeezed over each other.
+QScrollArea* scrolled(QWidget* page, const QString& name, QWidget* parent) {
+  auto* scroll = new QScrollArea(parent);
+  scroll->setObjectName(name);
+  scroll->setWidget(page);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  new WheelGuard(scroll);  // the wheel scrolls the page; it edits a control only once focused
+  return scroll;
+}
+
+}  // namespace
 
 // Kinematics plots, the forces view (masses and loads, torque and joint-force plots, polar
 // load diagrams) and dimensional synthesis share the right-hand pane as tabs.
 QWidget* MainWindow::buildAnalysisTabs() {
   auto* forces = new QSplitter(Qt::Vertical, this);
   m_forcesSplitter = forces;
-  forces->addWidget(m_dynamicsPanel);
-  forces->addWidget(m_forcePlots);
+  m_forceInputs = scrolled(m_dynamicsPanel, QStringLiteral("ForceInputs"), this);
+  forces->addWidget(m_forceInputs);
+  forces->addWidget(scrolled(m_forcePlots, QStringLiteral("ForcePlots"), this));
   forces->setStretchFactor(1, 1);
   forces->setChildrenCollapsible(false);
   m_tabs = new QTabWidget(this);
   m_tabs->setObjectName("AnalysisTabs");
-  m_tabs->addTab(m_plots, tr("Kinematics"));
+  m_tabs->addTab(scrolled(m_plots, QStringLiteral("KinematicsPage"), this), tr("Kinematics"));
   m_tabs->addTab(forces, tr("Forces"));
   m_synthesis = new SynthesisPanel(m_document, m_canvas, this);
-  m_tabs->addTab(m_synthesis, tr("Synthesis"));
+  m_tabs->addTab(scrolled(m_synthesis, QStringLiteral("SynthesisPage"), this), tr("Synthesis"));
   m_polygons = new PolygonPanel(m_document, this);
-  m_tabs->addTab(m_polygons, tr("Polygons"));
+  m_tabs->addTab(scrolled(m_polygons, QStringLiteral("PolygonsPage"), this), tr("Polygons"));
   connect(m_tabs, &QTabWidget::currentChanged, this, &MainWindow::updateForcesNeeded);
   connect(m_tabs, &QTabWidget::currentChanged, this, &MainWindow::keepForceInputsShown);
   // The plots follow the document only while their tab is shown.
@@ -230,15 +250,30 @@ void MainWindow::updateForcesNeeded() {
 }
 
 // The splitter keeps the masses' and loads' panel the height it had: at presentation mode's
-// larger text that squeezed the Links table to its header. It gets at least what it needs;
-// the plots below give way.
+// larger text that squeezed the Links table to its header. It gets what it needs, up to
+// kForceInputsShare of the tab (the plots below keep the rest); beyond that it scrolls.
 void MainWindow::keepForceInputsShown() {
+  constexpr double kForceInputsShare = 0.55;
   QList<int> sizes = m_forcesSplitter->sizes();
-  const int needed = m_dynamicsPanel->minimumSizeHint().height();
-  if (sizes.size() != 2 || sizes[0] >= needed) return;
-  sizes[1] = std::max(0, sizes[1] - (needed - sizes[0]));
+  if (sizes.size() != 2) return;
+  const int total = sizes[0] + sizes[1];
+  const int needed = std::min(m_dynamicsPanel->minimumSizeHint().height() + 2 * m_forceInputs->frameWidth(),
+                              static_cast<int>(kForceInputsShare * total));
+  if (total <= 0 || sizes[0] >= needed) return;
+  sizes[1] = total - needed;
   sizes[0] = needed;
   m_forcesSplitter->setSizes(sizes);
+}
+
+void MainWindow::fitToScreen() {
+  // A window manager's title bar and borders, not known before the window is shown.
+  constexpr QSize kFrameAllowance(8, 32);
+  constexpr QSize kDefaultSize(1400, 880);
+  const QRect room = screen()->availableGeometry();
+  const QSize size = kDefaultSize.boundedTo(room.size() - kFrameAllowance);
+  resize(size);
+  move(room.topLeft() + QPoint((room.width() - size.width() - kFrameAllowance.width()) / 2,
+                               (room.height() - size.height() - kFrameAllowance.height()) / 2));
 }
 
 void MainWindow::showForcesTab() { m_tabs->setCurrentIndex(1); }

@@ -16,6 +16,7 @@
 
 class QAction;
 class QMenu;
+class QScrollArea;
 class QSplitter;
 class QTabWidget;
 
@@ -135,6 +136,10 @@ public:
   BigReadout* bigReadout() const { return m_bigReadout; }
   /// Shows the Forces tab and the canvas's force arrows (linkwright --forces).
   void showForces();
+  /// The size a new window opens at (1400×880), made to fit the available geometry of the
+  /// screen the window is on, frame included, and the window placed inside it: on a 1366×768
+  /// laptop it opened 34 px and 112 px past the screen's edges.
+  void fitToScreen();
 
 protected:
   void closeEvent(QCloseEvent* event) override;
@@ -191,9 +196,9 @@ private:
   QAction* m_bigReadoutAction = nullptr;
   BigReadout* m_bigReadout = nullptr;
   bool m_bigReadoutBeforePresentation = false;  // the toggle's state, put back on leaving
-  QByteArray m_geometryBeforePresentation;
-  QSplitter* m_forcesSplitter =
-      nullptr;  // the masses and loads over the force plots      // the window's, put back on leaving
+  QByteArray m_geometryBeforePresentation;      // the window's, put back on leaving
+  QSplitter* m_forcesSplitter = nullptr;        // the masses and loads over the force plots
+  QScrollArea* m_forceInputs = nullptr;         // the masses and loads, scrolled when the tab is short
   QAction* m_inversionsAction = nullptr;
   QAction* m_balanceAction = nullptr;
   QAction* m_springBalanceAction = nullptr;

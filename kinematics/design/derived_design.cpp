@@ -5,7 +5,7 @@
 namespace linkwright::kinematics {
 
 bool needsGridSweep(const Mechanism& mechanism) {
-  const auto fourBar = asFourBar(mechanism);
+  const auto fourBar = asFourBar(mechanism, PointsOnLinks::AnyLink);
   return !fourBar || !fourBarInputRange(fourBar->lengths).fullRotation;
 }
 
@@ -13,7 +13,7 @@ SolveRequest gridSweepRequest(const NewtonSettings& newton) { return {false, fal
 
 Result<DerivedDesign> deriveDesign(const Mechanism& mechanism, const SweepResult& gridSweep) {
   if (auto refusal = assemblesNowhere(mechanism, gridSweep)) return *refusal;
-  return DerivedDesign{asFourBar(mechanism), analyseDesign(mechanism, gridSweep)};
+  return DerivedDesign{asFourBar(mechanism, PointsOnLinks::AnyLink), analyseDesign(mechanism, gridSweep)};
 }
 
 Result<DerivedDesign> deriveDesign(const Design& candidate, const SweepResult& gridSweep) {

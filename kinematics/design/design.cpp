@@ -18,7 +18,7 @@ namespace linkwright::kinematics {
 std::optional<Error> checkDesign(const Design& d) {
   countDesignCheck();
   // A four-bar's lengths are named as its editors and the CLI name them ("lengths.coupler").
-  if (const auto fourBar = asFourBar(d.mechanism))
+  if (const auto fourBar = asFourBar(d.mechanism, PointsOnLinks::AnyLink))
     if (auto e = checkFourBarLengths(fourBar->lengths)) {
       e->field = "lengths." + e->field;
       return e;

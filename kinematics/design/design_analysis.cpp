@@ -64,7 +64,7 @@ std::optional<Error> assemblesNowhere(const Mechanism& mechanism, const SweepRes
   const auto nowhere = [](const std::string& why) {
     return Error{ErrorCode::NotAssemblable, "design", "This linkage cannot be assembled at any " + why};
   };
-  if (const auto fourBar = asFourBar(mechanism)) {
+  if (const auto fourBar = asFourBar(mechanism, PointsOnLinks::AnyLink)) {
     const InputRange range = fourBarInputRange(fourBar->lengths);
     if (!range.ranges.empty() || range.fullRotation) return std::nullopt;
     return nowhere("crank angle: the coupler and rocker cannot reach between the crank tip and the rocker pivot.");
@@ -80,7 +80,7 @@ DesignAnalysis analyseDesign(const Mechanism& mechanism, const SweepResult& grid
   DesignAnalysis a;
   a.mobility = mobility(mechanism);
   a.notAssembled = gridSweep.notAssembled;
-  if (const auto fourBar = asFourBar(mechanism)) {
+  if (const auto fourBar = asFourBar(mechanism, PointsOnLinks::AnyLink)) {
     a.grashof = classifyGrashof(fourBar->lengths);
     a.inputRange = fourBarInputRange(fourBar->lengths);
     a.transmission = fourBarTransmissionRange(fourBar->lengths);

@@ -162,7 +162,7 @@ std::vector<Parameter> rawParameters(const Mechanism& m) {
 // The four-bar `parameter` names a dimension of, if it is a named one of `m`'s four-bar.
 std::optional<FourBarStructure> namedFourBar(const Mechanism& m, const Parameter& parameter) {
   if (!isFourBarDimension(parameter.slot)) return std::nullopt;
-  auto s = asFourBar(m);
+  auto s = asFourBar(m, PointsOnLinks::AnyLink);
   if (!s || carrier(*s, parameter.slot) != parameter.point) return std::nullopt;
   return s;
 }
@@ -175,7 +175,9 @@ bool isFourBarDimension(ParameterSlot slot) {
          slot == S::FrameAngle;
 }
 
-std::vector<Parameter> parametersOf(const Mechanism& m) { return parametersOf(m, asFourBar(m)); }
+std::vector<Parameter> parametersOf(const Mechanism& m) {
+  return parametersOf(m, asFourBar(m, PointsOnLinks::AnyLink));
+}
 
 std::vector<Parameter> parametersOf(const Mechanism& m, const std::optional<FourBarStructure>& s) {
   using S = ParameterSlot;
@@ -224,7 +226,7 @@ std::vector<std::optional<double>> parameterValues(const Mechanism& mechanism,
                                                    const std::vector<Parameter>& parameters) {
   const bool named =
       std::any_of(parameters.begin(), parameters.end(), [](const Parameter& p) { return isFourBarDimension(p.slot); });
-  return parameterValues(mechanism, parameters, named ? asFourBar(mechanism) : std::nullopt);
+  return parameterValues(mechanism, parameters, named ? asFourBar(mechanism, PointsOnLinks::AnyLink) : std::nullopt);
 }
 
 std::vector<std::optional<double>> parameterValues(const Mechanism& mechanism, const std::vector<Parameter>& parameters,

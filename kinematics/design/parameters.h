@@ -65,7 +65,7 @@ struct Parameter {
 /// four-bar its four named lengths first, then the rest, the frame's direction in place of
 /// O4's x and y.
 std::vector<Parameter> parametersOf(const Mechanism& mechanism);
-/// The same for `mechanism` recognised already (asFourBar's answer), as a document holds it.
+/// The same for `mechanism` recognised already (asFourBar with PointsOnLinks::AnyLink).
 std::vector<Parameter> parametersOf(const Mechanism& mechanism, const std::optional<FourBarStructure>& fourBar);
 
 /// The kind of value `parameter` holds.
@@ -78,7 +78,7 @@ std::optional<double> parameterValue(const Mechanism& mechanism, const Parameter
 /// reads every value of a design at each edit).
 std::vector<std::optional<double>> parameterValues(const Mechanism& mechanism,
                                                    const std::vector<Parameter>& parameters);
-/// The same for `mechanism` recognised already (asFourBar's answer).
+/// The same for `mechanism` recognised already (asFourBar with PointsOnLinks::AnyLink).
 std::vector<std::optional<double>> parameterValues(const Mechanism& mechanism, const std::vector<Parameter>& parameters,
                                                    const std::optional<FourBarStructure>& fourBar);
 

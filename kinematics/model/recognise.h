@@ -25,8 +25,9 @@ struct FourBarStructure {
 };
 
 /// Which points fixed on links a recogniser lets a linkage carry and still be the textbook
-/// mechanism: the four-bar's editors show a point on the coupler only, while its instant
-/// centres do not depend on where its links carry points.
+/// mechanism. What a four-bar is and does (its analysis, its named lengths, its instant centres)
+/// does not depend on where its links carry points (a spring's end on the crank, say); its
+/// cognates and coupler curve are of points on the coupler only.
 enum class PointsOnLinks {
   CouplerOnly,  ///< a four-bar: on the coupler B–C (a slider-crank: on its rod B–C)
   AnyLink,      ///< on any of the mechanism's moving links

@@ -36,7 +36,7 @@ k::Design templateDesign(const DesignTemplate& kind) {
 
 QString kindDisplayName(const k::Design& design) {
   // A four-bar is one however it was stored (a four-bar saved as a general linkage, say).
-  if (k::asFourBar(design.mechanism)) return tr("Four-bar");
+  if (k::asFourBar(design.mechanism, k::PointsOnLinks::AnyLink)) return tr("Four-bar");
   const std::string& kind = design.kind;
   for (const DesignTemplate& t : designTemplates())
     if (t.kind == kind) return QString(t.label).remove(QLatin1Char('&'));

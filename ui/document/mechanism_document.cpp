@@ -312,7 +312,7 @@ void MechanismDocument::rebuild(SweepNow now) {
     // Only an accepted design gets here, so a refusal can only be a deferred grid's (the last
     // one, of a design before the drag): its analysis is kept until the new grid lands.
     if (fresh) derived = std::move(fresh).value();
-    else derived = k::DerivedDesign{k::asFourBar(m_design.mechanism), m_derived.analysis};
+    else derived = k::DerivedDesign{k::asFourBar(m_design.mechanism, k::PointsOnLinks::AnyLink), m_derived.analysis};
   }
   m_derived = std::move(*derived);
   // Sized once per design: free points then start each solve from the last pose shown.

@@ -108,7 +108,9 @@ QString labelOf(const k::Mechanism& m, const std::optional<k::FourBarStructure>&
 
 }  // namespace
 
-std::vector<DimensionField> dimensionFields(const k::Mechanism& m) { return dimensionFields(m, k::asFourBar(m)); }
+std::vector<DimensionField> dimensionFields(const k::Mechanism& m) {
+  return dimensionFields(m, k::asFourBar(m, k::PointsOnLinks::AnyLink));
+}
 
 std::vector<DimensionField> dimensionFields(const k::Mechanism& m, const std::optional<k::FourBarStructure>& fourBar) {
   std::vector<DimensionField> out;

@@ -25,7 +25,7 @@ struct DimensionField {
 
 /// Every editable number of `mechanism`, point by point.
 std::vector<DimensionField> dimensionFields(const kinematics::Mechanism& mechanism);
-/// The same for `mechanism` recognised already (the document's fourBar()).
+/// The same for `mechanism` recognised already (asFourBar with PointsOnLinks::AnyLink).
 std::vector<DimensionField> dimensionFields(const kinematics::Mechanism& mechanism,
                                             const std::optional<kinematics::FourBarStructure>& fourBar);
 

@@ -167,7 +167,7 @@ void DimensionsPanel::rebuild() {
 void DimensionsPanel::resetSliderRanges() {
   const k::Mechanism& m = m_document->mechanism();
   // Recognised once for the fields and their values (the document's may lag a drag's grid).
-  const auto fourBar = k::asFourBar(m);
+  const auto fourBar = k::asFourBar(m, k::PointsOnLinks::AnyLink);
   if (dimensionFields(m, fourBar) != m_fields) return;  // refresh() rebuilds, and sets them
   const std::vector<double> values = fieldValues(m, m_fields, fourBar);
   const double size = sizeOf(m_fields, values);
@@ -185,7 +185,7 @@ void DimensionsPanel::resetSliderRanges() {
 
 void DimensionsPanel::refresh() {
   const k::Mechanism& m = m_document->mechanism();
-  const auto recognised = k::asFourBar(m);  // once, for the fields and their values
+  const auto recognised = k::asFourBar(m, k::PointsOnLinks::AnyLink);  // once, for the fields and their values
   if (dimensionFields(m, recognised) != m_fields || m_editors.empty()) rebuild();
   m_refreshing = true;
   const std::vector<double> values = fieldValues(m, m_fields, recognised);

@@ -95,6 +95,22 @@ void PlotAxesItem::follow(QValueAxis* axis) {
   connect(axis, &QAbstractAxis::titleBrushChanged, this, repaint);
 }
 
+QString fittedTitle(const QString& title, const QFontMetricsF& metrics, double length) {
+  if (metrics.horizontalAdvance(title) <= length) return title;
+  // A title longer than its side of the plot loses its name, never its unit: "angle […" at a
+  // short chart's side said neither what nor in what. The name is cut short with "…", then
+  // left out; the unit is drawn whole even where it is longer than the side (into the margins).
+  const auto bracket = title.lastIndexOf(QLatin1Char('['));
+  if (bracket <= 0) return metrics.elidedText(title, Qt::ElideRight, std::max(0.0, length));
+  const QString unit = title.mid(bracket);
+  const QString name = title.left(bracket).trimmed();
+  const double room = length - metrics.horizontalAdvance(QLatin1Char(' ') + unit);
+  const QString shortName = metrics.elidedText(name, Qt::ElideRight, std::max(0.0, room));
+  // An elided name that is only "…" says nothing: then the unit alone.
+  if (shortName.isEmpty() || shortName == QStringLiteral("…")) return unit;
+  return shortName + QLatin1Char(' ') + unit;
+}
+
 void PlotAxesItem::relabel(Axis& axis) const {
   axis.labels.clear();
   axis.widest = 0.0;
@@ -114,8 +130,7 @@ void PlotAxesItem::relabel(Axis& axis) const {
 void PlotAxesItem::retitle(Axis& axis, double length) const {
   const QString title = axis.titled ? axis.axis->titleText() : QString();
   const QFont font = axis.axis->titleFont();
-  // A title longer than its side of the plot is cut short with "…", as Qt Charts did.
-  axis.title = staticText(QFontMetricsF(font).elidedText(title, Qt::ElideRight, std::max(0.0, length)), font);
+  axis.title = staticText(fittedTitle(title, QFontMetricsF(font), length), font);
 }
 
 void PlotAxesItem::relabel() {

@@ -15,6 +15,7 @@
 #include <vector>
 
 class QChart;
+class QFontMetricsF;
 class QValueAxis;
 
 namespace linkwright::ui {
@@ -29,7 +30,7 @@ public:
   QMargins room() const { return m_room; }
   /// The tick labels as drawn, in tick order, of the horizontal (x) or vertical (y) axis.
   QStringList labels(Qt::Orientation orientation) const;
-  /// The title as drawn (cut short to its side of the plot area), empty while hidden.
+  /// The title as drawn (fittedTitle to its side of the plot area), empty while hidden.
   QString title(Qt::Orientation orientation) const;
   /// Shows or hides the title of the horizontal (x) or vertical (y) axis (shown at first); its
   /// text is the axis's titleText(). Qt Charts' own title stays hidden: shown again on a hidden
@@ -68,6 +69,10 @@ private:
   QRectF m_area;  // the plot area, chart coordinates
   QMargins m_room;
 };
+
+/// `title` as drawn along a side `length` px long in `metrics`' font: whole when it fits, else
+/// its name cut short ("angular acc… [deg/s²]") or left out, its unit ("[…]") always whole.
+QString fittedTitle(const QString& title, const QFontMetricsF& metrics, double length);
 
 /// The room `chart`'s PlotAxesItem keeps in its margins; none for a chart without one.
 QMargins axesRoom(const QChart* chart);

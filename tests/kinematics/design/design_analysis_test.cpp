@@ -6,8 +6,11 @@
 
 #include "kinematics/design/design_analysis.h"
 #include "kinematics/analysis/assembly_range.h"
+#include "kinematics/design/derived_design.h"
 #include "kinematics/design/design.h"
 #include "kinematics/design/examples.h"
+#include "kinematics/design/parameters.h"
+#include "kinematics/dynamics/spring_search.h"
 #include "kinematics/model/driven_linkages.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/shaper.h"
@@ -20,6 +23,7 @@
 
 #include "tests/support/catch.h"
 
+#include <algorithm>
 #include <cmath>
 
 using namespace linkwright::kinematics;
@@ -163,4 +167,39 @@ TEST_CASE("a linkage that assembles nowhere is refused in one sentence, a four-b
   const auto refused = assemblesNowhere(shaper.mechanism, none);
   REQUIRE(refused);
   CHECK(refused->message == "This linkage cannot be assembled at any crank angle: D cannot be assembled at 0°.");
+}
+
+TEST_CASE("a spring balance's ends, points on the crank and the frame, leave a four-bar a four-bar",
+          "[design_analysis][springs]") {
+  // Edit ▸ Balance the torque by a spring added its ends as points to the mechanism, one on the
+  // crank: the four-bar was then "6 points, 3 moving links", its Grashof class, time ratio and
+  // rocker limits gone. A spring is a load; the linkage's kind and analysis are unchanged.
+  const Design design = *designForExample("funsho-fourbar");
+  const auto found = searchSpringBalance(design.mechanism, design.dynamics, designTurn(design), "crank");
+  REQUIRE(found.ok());
+  const Mechanism& sprung = found->mechanism;
+  REQUIRE(sprung.points.size() == design.mechanism.points.size() + 2);
+  const auto analyse = [](const Mechanism& m) {
+    const auto grid = sweep(m, SweepSpec{0.0, 2.0 * kPi, 721, 1.0, 0.0});
+    REQUIRE(grid.ok());
+    return analyseDesign(m, *grid);
+  };
+  const DesignAnalysis before = analyse(design.mechanism), after = analyse(sprung);
+  REQUIRE(before.grashof.has_value());
+  REQUIRE(after.grashof.has_value());
+  CHECK(after.grashof->category == before.grashof->category);
+  REQUIRE(after.limits.timeRatio.has_value());
+  CHECK(*after.limits.timeRatio == *before.limits.timeRatio);
+  CHECK(after.limits.positions.size() == before.limits.positions.size());
+  // The derived design keeps its four-bar, and its editors their named lengths.
+  Design sprungDesign = design;
+  sprungDesign.mechanism = sprung;
+  const auto derived = deriveDesign(sprungDesign, NewtonSettings{});
+  REQUIRE(derived.ok());
+  REQUIRE(derived->fourBar.has_value());
+  CHECK(derived->fourBar->lengths == asFourBar(design.mechanism)->lengths);
+  const std::vector<Parameter> named = parametersOf(sprung);
+  CHECK(std::count_if(named.begin(), named.end(), [](const Parameter& p) { return isFourBarDimension(p.slot); }) == 5);
+  // Cognates still ask every point fixed on a link to be on the coupler.
+  CHECK_FALSE(asFourBar(sprung).has_value());
 }

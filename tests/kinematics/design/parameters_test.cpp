@@ -151,6 +151,6 @@ TEST_CASE("parameterValues reads every parameter as parameterValue does, recogni
     REQUIRE(values.size() == parameters.size());
     for (std::size_t i = 0; i < parameters.size(); ++i) CHECK(values[i] == parameterValue(e.mechanism, parameters[i]));
     CHECK_FALSE(values.back());
-    CHECK(parameterValues(e.mechanism, parameters, asFourBar(e.mechanism)) == values);
+    CHECK(parameterValues(e.mechanism, parameters, asFourBar(e.mechanism, PointsOnLinks::AnyLink)) == values);
   }
 }

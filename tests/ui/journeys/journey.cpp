@@ -9,6 +9,7 @@
 #include "ui/panels/analysis_panel.h"
 #include "ui/panels/motion_panel.h"
 #include "ui/panels/refusal_label.h"
+#include "ui/plots/plot_axes.h"
 #include "ui/readout_label.h"
 
 #include "kinematics/analysis/instant_centres.h"
@@ -17,20 +18,32 @@
 #include "kinematics/model/units.h"
 #include "tests/support/catch.h"
 
+#include <QAbstractButton>
+#include <QAbstractItemView>
 #include <QAbstractSpinBox>
 #include <QAction>
 #include <QApplication>
+#include <QChart>
+#include <QChartView>
+#include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGuiApplication>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScrollBar>
+#include <QSlider>
+#include <QTabBar>
 #include <QTest>
+#include <QTextDocumentFragment>
 #include <QTimer>
+#include <QValueAxis>
 
 #include <cmath>
 
@@ -69,6 +82,24 @@ QString grashofWord(k::GrashofClass c) {
 
 bool wholeInSight(const QWidget* w) {
   return w->isVisible() && !w->visibleRegion().isEmpty() && w->visibleRegion().boundingRect() == w->rect();
+}
+
+QScreen* journeyScreen(const QString& name) {
+  for (QScreen* screen : QGuiApplication::screens())
+    if (screen->name() == name) return screen;
+  FAIL("no screen " << name.toStdString() << " (the journeys' runner reads journeys/screens.json)");
+  return nullptr;
+}
+
+Journey::Journey(QScreen* screen) {
+  // Where a window manager would open it on that screen: the window places and sizes itself.
+  m_window.setScreen(screen);
+  m_window.fitToScreen();
+  m_window.show();
+  REQUIRE(QTest::qWaitForWindowExposed(&m_window));
+  m_window.activateWindow();
+  REQUIRE(QTest::qWaitForWindowActive(&m_window));
+  settle();
 }
 
 Journey::Journey(QSize size) {
@@ -275,6 +306,112 @@ void Journey::checkNotClipped() {
     CHECK(QRectF(viewport).adjusted(-1, -1, 1, 1).contains(centres[a]));
     for (const QRectF& name : names) CHECK_FALSE(name.intersects(centres[a]));
     for (std::size_t b = a + 1; b < centres.size(); ++b) CHECK_FALSE(centres[b].intersects(centres[a]));
+  }
+}
+
+void Journey::checkFitsScreen(const std::string& step) {
+  check(step);
+  INFO("after: " << step << " (" << m_window.document()->design().kind << ", " << m_window.width() << "×"
+                 << m_window.height() << (m_window.presentationMode() ? ", presenting" : "") << ")");
+  checkInsideScreen();
+  checkWidgetsWhole();
+  checkChartsWhole();
+}
+
+void Journey::checkInsideScreen() {
+  QScreen* screen = m_window.screen();
+  REQUIRE(screen != nullptr);
+  const QRect room = m_window.presentationMode() ? screen->geometry() : screen->availableGeometry();
+  const QRect frame = m_window.frameGeometry();
+  const QSize least = m_window.minimumSizeHint().expandedTo(m_window.minimumSize());
+  CAPTURE(screen->name().toStdString(), room.width(), room.height(), frame.x(), frame.y(), frame.width(),
+          frame.height(), least.width(), least.height());
+  CHECK(room.contains(frame));
+  // Nothing the window holds may ask for more than the screen has: a layout's minimum is a
+  // top-level window's minimum, and Qt grows the window to it (1075 px on the Forces tab).
+  CHECK(least.width() <= room.width());
+  CHECK(least.height() <= room.height());
+}
+
+namespace {
+
+// What a widget says it needs, once the layout has given it its size: a label or a button its
+// text's, an input its minimumSizeHint.
+bool inTabBarOrScrollBar(const QWidget* widget) {
+  for (const QObject* o = widget->parent(); o != nullptr; o = o->parent())
+    if (qobject_cast<const QTabBar*>(o) != nullptr || qobject_cast<const QScrollBar*>(o) != nullptr) return true;
+  return false;
+}
+
+QString describe(const QWidget* w) {
+  return QStringLiteral("%1 '%2' %3×%4 wants %5×%6")
+      .arg(QString::fromLatin1(w->metaObject()->className()), w->objectName())
+      .arg(w->width())
+      .arg(w->height())
+      .arg(w->minimumSizeHint().width())
+      .arg(w->minimumSizeHint().height());
+}
+
+}  // namespace
+
+void Journey::checkWidgetsWhole() {
+  for (const QWidget* widget : m_window.findChildren<QWidget*>()) {
+    if (!widget->isVisible() || widget->window() != &m_window || inTabBarOrScrollBar(widget)) continue;
+    if (const auto* label = qobject_cast<const QLabel*>(widget)) {
+      if (label->text().isEmpty()) continue;
+      const QString text = label->textFormat() == Qt::RichText || Qt::mightBeRichText(label->text())
+                               ? QTextDocumentFragment::fromHtml(label->text()).toPlainText()
+                               : label->text();
+      CAPTURE(describe(label).toStdString(), text.toStdString(), label->toolTip().toStdString());
+      if (text.endsWith(QStringLiteral("…"))) CHECK(label->toolTip().contains(text.chopped(1)));
+      if (label->wordWrap()) {
+        CHECK(label->height() >= label->heightForWidth(label->width()));
+      } else {
+        CHECK(label->width() >= label->minimumSizeHint().width());
+        CHECK(label->height() >= label->minimumSizeHint().height());
+      }
+      continue;
+    }
+    if (const auto* button = qobject_cast<const QAbstractButton*>(widget)) {
+      if (button->inherits("QTableCornerButton") || button->text().isEmpty()) continue;
+      CAPTURE(describe(button).toStdString(), button->text().toStdString());
+      CHECK(button->width() >= button->minimumSizeHint().width());
+      CHECK(button->height() >= button->minimumSizeHint().height());
+      continue;
+    }
+    const bool input = qobject_cast<const QAbstractSpinBox*>(widget) != nullptr ||
+                       qobject_cast<const QComboBox*>(widget) != nullptr ||
+                       qobject_cast<const QSlider*>(widget) != nullptr ||
+                       (qobject_cast<const QAbstractItemView*>(widget) != nullptr &&
+                        qobject_cast<const QHeaderView*>(widget) == nullptr) ||
+                       (qobject_cast<const QLineEdit*>(widget) != nullptr &&
+                        qobject_cast<const QAbstractSpinBox*>(widget->parent()) == nullptr &&
+                        qobject_cast<const QComboBox*>(widget->parent()) == nullptr);
+    if (!input) continue;
+    CAPTURE(describe(widget).toStdString());
+    CHECK(widget->width() >= widget->minimumSizeHint().width());
+    CHECK(widget->height() >= widget->minimumSizeHint().height());
+  }
+}
+
+void Journey::checkChartsWhole() {
+  for (const QChartView* view : m_window.findChildren<QChartView*>()) {
+    if (!view->isVisible() || view->window() != &m_window) continue;
+    const QChart* chart = view->chart();
+    // The axes' titles as our axes item draws them: never "a [..." (the unit lost).
+    if (const ui::PlotAxesItem* axes = ui::plotAxes(chart)) {
+      for (const Qt::Orientation o : {Qt::Horizontal, Qt::Vertical}) {
+        const QList<QAbstractAxis*> list = chart->axes(o);
+        if (list.isEmpty() || !axes->titleShown(o) || list.front()->titleText().isEmpty()) continue;
+        CAPTURE(chart->title().toStdString(), list.front()->titleText().toStdString(), axes->title(o).toStdString(),
+                chart->plotArea().width(), chart->plotArea().height());
+        // Whole, or its name cut short: its unit always whole.
+        const QString full = list.front()->titleText(), drawn = axes->title(o);
+        const auto bracket = full.lastIndexOf(QLatin1Char('['));
+        if (drawn != full) REQUIRE(bracket >= 0);
+        if (drawn != full) CHECK(drawn.endsWith(full.mid(bracket)));
+      }
+    }
   }
 }
 

@@ -12,9 +12,13 @@
 // - each toggled view draws something where the linkage supports it (instant centres);
 // - nothing visible is clipped: the analysis strip's values, the motion bar, and after a fit
 //   every label on the canvas inside the canvas.
+// checkFitsScreen() adds what the screens people have ask (journeys/screens.json gives the
+// runner a 1366×768 laptop and a 1024×768 projector): the window inside the screen, and every
+// visible label, button, input and chart axis title whole and usable.
 
 #include "ui/main_window.h"
 
+#include <QScreen>
 #include <QSize>
 #include <QString>
 #include <QStringList>
@@ -24,10 +28,15 @@
 
 namespace linkwright::test {
 
+/// The runner's screen called `name` ("laptop" 1366×768, "projector" 1024×768); fails without it.
+QScreen* journeyScreen(const QString& name);
+
 class Journey {
 public:
   /// The window at `size`, shown and settled on its default example.
   explicit Journey(QSize size = QSize(1366, 700));
+  /// The window on `screen`, at the size it opens at there (not resized), shown and settled.
+  explicit Journey(QScreen* screen);
 
   ui::MainWindow& window() { return m_window; }
 
@@ -74,6 +83,13 @@ public:
   void settle();
   /// The invariants above, after `step` (named in any failure).
   void check(const std::string& step);
+  /// check(), and then: the window's frame inside its screen's available geometry (the whole
+  /// screen in presentation mode) with a minimum size that fits there, so it can never be
+  /// pushed past it; every visible QLabel and QAbstractButton as large as its text needs (or
+  /// elided, "…", with the whole text in its tooltip); every visible input (spin box, combo
+  /// box, line edit, slider, table) at least its minimumSizeHint; every chart's axis titles
+  /// drawn whole, or their name cut short and their unit whole.
+  void checkFitsScreen(const std::string& step);
 
 private:
   static void clickOk(QWidget* dialog);
@@ -85,6 +101,9 @@ private:
   void checkNoNonFinite();
   void checkViewsDraw();
   void checkNotClipped();
+  void checkInsideScreen();
+  void checkWidgetsWhole();
+  void checkChartsWhole();
 
   ui::MainWindow m_window;
   bool m_refusalExpected = false;

@@ -9,6 +9,7 @@
 #include "ui/canvas/linkage_view.h"
 #include "ui/canvas/springs_item.h"
 #include "ui/document/mechanism_document.h"
+#include "ui/panels/analysis_panel.h"
 #include "ui/panels/dynamics_panel.h"
 #include "ui/panels/mass_table.h"
 #include "ui/panels/springs_editor.h"
@@ -17,6 +18,7 @@
 #include "tests/support/catch.h"
 
 #include <QComboBox>
+#include <QInputDialog>
 #include <QPushButton>
 #include <QTest>
 
@@ -104,4 +106,26 @@ TEST_CASE("add a spring to the boom, type its stiffness, have a wrong one refuse
   CHECK(window.document()->design().dynamics.loads.springs.front().stiffness == 5000.0);
   checkShown(window, editor);
   journey.check("Ctrl+Z");
+}
+
+TEST_CASE(
+    "Edit ▸ Balance the torque by a spring leaves the four-bar a four-bar: its Grashof class, time ratio "
+    "and rocker limits stay",
+    "[journey][forces][springs]") {
+  test::Journey journey;
+  ui::MainWindow& window = journey.window();
+  journey.example("funsho-fourbar");
+  journey.check("funsho-fourbar");
+  const QString grashof = window.analysisPanel()->grashofText();
+  const QString ratio = window.analysisPanel()->timeRatioText();
+  REQUIRE(grashof.contains(QStringLiteral("Crank-rocker")));
+  // The link the spring's moving end goes on: the dialog's first, the crank.
+  journey.acceptDialog<QInputDialog>();
+  journey.menu({"Edit", "Balance the torque by a spring"});
+  journey.check("balanced by a spring");
+  REQUIRE(window.document()->design().dynamics.loads.springs.size() == 1);
+  // The spring's ends are points of the mechanism, one on the crank; the linkage is what it was.
+  CHECK(window.analysisPanel()->grashofText() == grashof);
+  CHECK(window.analysisPanel()->timeRatioText() == ratio);
+  CHECK(window.document()->fourBar().has_value());
 }

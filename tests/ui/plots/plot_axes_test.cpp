@@ -193,6 +193,22 @@ TEST_CASE("a title longer than its side of the plot is cut short", "[plots][axes
   CHECK(QFontMetricsF(c.y->titleFont()).horizontalAdvance(shown) <= c.chart->plotArea().height());
 }
 
+TEST_CASE("a title too long for its side keeps its unit whole: the name is cut short, or left out", "[plots][axes]") {
+  const QFont font;
+  const QFontMetricsF metrics(font);
+  const QString title = QStringLiteral("angular acceleration α [deg/s²]");
+  CHECK(fittedTitle(title, metrics, 1000.0) == title);
+  // Room for the unit and part of the name: the name is cut, the unit whole ("angle [d…" lost it).
+  const double unitAndSome = metrics.horizontalAdvance(QStringLiteral("angular … [deg/s²]"));
+  const QString cut = fittedTitle(title, metrics, unitAndSome);
+  CHECK(cut.endsWith(QStringLiteral("… [deg/s²]")));
+  CHECK(metrics.horizontalAdvance(cut) <= unitAndSome);
+  // Less room than the unit: the unit alone, whole.
+  CHECK(fittedTitle(title, metrics, 10.0) == QStringLiteral("[deg/s²]"));
+  // A title without a unit is cut short as before.
+  CHECK(fittedTitle(QStringLiteral("Driving torque"), metrics, 30.0).endsWith(QChar(0x2026)));
+}
+
 TEST_CASE("aligned charts keep each one's room and line up their plot areas", "[plots][axes]") {
   Chart narrow, wide;
   applyAxisRange(wide.y, {-50000.0, 150000.0, 50000.0, 5, 0});
