@@ -154,7 +154,7 @@ TEST_CASE("the funsho four-bar's flywheel, run by forward dynamics, holds the sp
     REQUIRE(d.ok());
     REQUIRE(d->energyFluctuation > 0.0);
     const CrankTerms t = terms(e.mechanism, e.dynamics, turn);
-    CHECK(flywheelSpeeds(t, *d->flywheelInertia).fluctuation() == Approx(cs).epsilon(1e-11));
+    CHECK(flywheelSpeeds(t, *d->flywheelInertia).fluctuation() == Approx(cs).epsilon(1e-10));
     const auto run = runFlywheel(t, *d->flywheelInertia);
     REQUIRE(run.ok());
     CHECK(run->meanSpeed == Approx(e.omega).epsilon(1e-3));
