@@ -126,9 +126,12 @@ void SpringsEditor::add() {
   if (!p || !q || p->index >= position.size() || q->index >= position.size()) return;
   const double length = (position[q->index] - position[p->index]).norm();
   const std::string name = freeName(m_document->design().dynamics.loads.springs);
-  m_submit(tr("Add spring %1").arg(QString::fromStdString(name)), [&](k::LinkageDynamics& d) {
-    d.loads.springs.push_back({name, first, second, kNewStiffness, length, 0.0});
-  });
+  // The undo step names the spring by its ends, as its row does ("Undo Add a spring from C to A").
+  m_submit(
+      tr("Add a spring from %1 to %2").arg(QString::fromStdString(first.point), QString::fromStdString(second.point)),
+      [&](k::LinkageDynamics& d) {
+        d.loads.springs.push_back({name, first, second, kNewStiffness, length, 0.0});
+      });
 }
 
 void SpringsEditor::removeSelected() {

@@ -21,6 +21,7 @@
 #include <QInputDialog>
 #include <QPushButton>
 #include <QTest>
+#include <QUndoStack>
 
 using namespace linkwright;
 
@@ -76,6 +77,8 @@ TEST_CASE("add a spring to the boom, type its stiffness, have a wrong one refuse
   const auto& at = window.document()->pose().position;
   CHECK(s.freeLength == Approx((at[d.mechanism.findPoint("C")->index] - at[d.mechanism.findPoint("A")->index]).norm()));
   CHECK(editor->table()->item(0, 0)->text() == "spring: C on boom → A on the frame");
+  // Edit ▸ Undo names the step by the spring's ends ("Undo Add spring spring" before).
+  CHECK(window.document()->undoStack()->undoText() == "Add a spring from C to A");
   checkShown(window, editor);
   journey.check("Add spring");
 
