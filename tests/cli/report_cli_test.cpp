@@ -341,7 +341,7 @@ TEST_CASE("report shows the forces of a linkage with masses", "[cli][report]") {
   REQUIRE(machine.ok());
   const double refined = machine->duty.shakingForcePeak;
   CHECK_THAT(flat, Catch::Contains("Refined between the cycle's 73 samples, the shaking force peaks at " +
-                                    k::formatShort(refined, 4) + " N"));
+                                   k::formatShort(refined, 4) + " N"));
   CHECK(refined >= peak);
   // The virtual-work check over the same grid, at round-off.
   const std::string check = "by virtual work differs from Newton–Euler's by at most ";
