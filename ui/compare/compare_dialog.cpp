@@ -3,6 +3,7 @@
 #include "ui/colors.h"
 
 #include "ui/compare/column_map_editor.h"
+#include "ui/number_box.h"
 
 #include "kinematics/model/number_text.h"
 
@@ -61,7 +62,7 @@ QString layoutText(const k::io::NumericTable& t) {
 CompareDialog::CompareDialog(const k::Design& design, const k::io::NumericTable& table, const QString& path,
                              QWidget* parent)
     : QDialog(parent), m_design(design), m_table(table), m_editor(new ColumnMapEditor(this)),
-      m_offsetMode(new QComboBox(this)), m_offset(new QDoubleSpinBox(this)), m_tolerance(new QDoubleSpinBox(this)),
+      m_offsetMode(new QComboBox(this)), m_offset(new NumberBox(this)), m_tolerance(new NumberBox(this)),
       m_message(new QLabel(this)), m_result(new QLabel(this)),
       m_summary(resultTable({tr("Column"), tr("Compared with"), tr("Rows"), tr("Worst"), tr("At x"), tr("RMS"),
                              tr("Tolerance"), tr("Flagged")},

@@ -1,6 +1,7 @@
 #include "ui/dialogs/attach_dyad_dialog.h"
 
 #include "ui/dialogs/dyad_part_editors.h"
+#include "ui/number_box.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -30,9 +31,9 @@ QGroupBox* boxAround(QWidget* content, QWidget* parent) {
 AttachDyadDialog::AttachDyadDialog(const k::Mechanism& mechanism, double crankAngle, Apply apply, QWidget* parent)
     : QDialog(parent), m_mechanism(mechanism), m_crankAngle(crankAngle), m_apply(std::move(apply)),
       m_kind(new QComboBox(this)), m_joint(new QLineEdit(this)), m_first(new ParentEditor(this)),
-      m_second(new ParentEditor(this)), m_firstLength(new QDoubleSpinBox(this)),
-      m_secondLength(new QDoubleSpinBox(this)), m_guide(new GuideEditor(this)), m_secondGuide(new GuideEditor(this)),
-      m_branch(new QComboBox(this)), m_error(new QLabel(this)) {
+      m_second(new ParentEditor(this)), m_firstLength(new NumberBox(this)), m_secondLength(new NumberBox(this)),
+      m_guide(new GuideEditor(this)), m_secondGuide(new GuideEditor(this)), m_branch(new QComboBox(this)),
+      m_error(new QLabel(this)) {
   setWindowTitle(tr("Attach dyad"));
   auto* layout = new QVBoxLayout(this);
   auto* top = new QFormLayout;

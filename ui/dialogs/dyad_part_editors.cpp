@@ -1,6 +1,7 @@
 #include "ui/dialogs/dyad_part_editors.h"
 
 #include "ui/canvas/mechanism_drawing.h"
+#include "ui/number_box.h"
 
 #include "kinematics/model/units.h"
 
@@ -17,7 +18,7 @@ namespace k = kinematics;
 namespace {
 
 QDoubleSpinBox* numberBox(QWidget* parent, double low = -1e9, double high = 1e9) {
-  auto* box = new QDoubleSpinBox(parent);
+  auto* box = new NumberBox(parent);
   box->setRange(low, high);
   box->setDecimals(4);
   box->setKeyboardTracking(false);

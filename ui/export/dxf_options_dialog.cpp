@@ -1,5 +1,7 @@
 #include "ui/export/dxf_options_dialog.h"
 
+#include "ui/number_box.h"
+
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -11,7 +13,7 @@ namespace {
 
 // Wide enough for any linkage a document holds: the core checks the real bounds.
 QDoubleSpinBox* lengthBox(double value, const QString& unit, QWidget* parent) {
-  auto* box = new QDoubleSpinBox(parent);
+  auto* box = new NumberBox(parent);
   box->setDecimals(6);
   box->setRange(1e-6, 1e9);
   box->setSuffix(QStringLiteral(" ") + unit);

@@ -1,5 +1,7 @@
 #include "ui/export/report_options_dialog.h"
 
+#include "ui/number_box.h"
+
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
@@ -12,7 +14,7 @@
 namespace linkwright::ui {
 
 ReportOptionsDialog::ReportOptionsDialog(double at, double maxStep, const QString& unit, QWidget* parent)
-    : QDialog(parent), m_at(new QDoubleSpinBox(this)), m_step(new QDoubleSpinBox(this)), m_paper(new QComboBox(this)),
+    : QDialog(parent), m_at(new NumberBox(this)), m_step(new NumberBox(this)), m_paper(new QComboBox(this)),
       m_units(new QComboBox(this)) {
   setWindowTitle(tr("Lab report as PDF"));
   const QString suffix = unit == QStringLiteral("°") ? unit : QStringLiteral(" ") + unit;

@@ -1,6 +1,7 @@
 #include "ui/panels/drive_panel.h"
 
 #include "ui/document/edit_design_command.h"
+#include "ui/number_box.h"
 #include "ui/number_text.h"
 #include "ui/panels/law_table_file.h"
 #include "ui/plots/plot_x_axis.h"
@@ -127,7 +128,7 @@ DrivePanel::DrivePanel(MechanismDocument* document, Settings* settings, QWidget*
   m_form->addRow(tr("Motion law"), m_law);
 
   for (std::size_t i = 0; i < m_fields.size(); ++i) {
-    auto* spin = new QDoubleSpinBox(this);
+    auto* spin = new NumberBox(this);
     spin->setDecimals(4);
     spin->setKeyboardTracking(false);  // typed numbers apply on Enter or focus out
     spin->setAccelerated(true);

@@ -2,6 +2,7 @@
 
 #include "ui/colors.h"
 #include "ui/document/mechanism_document.h"
+#include "ui/number_box.h"
 #include "ui/panels/link_points.h"
 #include "ui/panels/mass_table.h"
 #include "ui/panels/springs_editor.h"
@@ -41,7 +42,7 @@ std::vector<k::SliderMass> sliderKeys(const k::Mechanism& m) {
 }
 
 QDoubleSpinBox* numberSpin(const QString& suffix, double lo, double hi, QWidget* parent) {
-  auto* spin = new QDoubleSpinBox(parent);
+  auto* spin = new NumberBox(parent);
   spin->setRange(lo, hi);
   spin->setDecimals(4);
   spin->setSuffix(suffix);

@@ -5,6 +5,7 @@
 
 #include "ui/animation/crank_animator.h"
 #include "ui/document/mechanism_document.h"
+#include "ui/number_box.h"
 
 #include "kinematics/design/fourbar_dimensions.h"
 #include "kinematics/model/driver.h"
@@ -30,7 +31,7 @@ namespace k = kinematics;
 MotionPanel::MotionPanel(MechanismDocument* document, CrankAnimator* animator, QWidget* parent)
     : QWidget(parent), m_document(document), m_animator(animator), m_branch(new QComboBox(this)),
       m_play(new QPushButton(this)), m_back(new QPushButton(this)), m_forward(new QPushButton(this)),
-      m_step(new QDoubleSpinBox(this)), m_loop(new QCheckBox(tr("Loop"), this)),
+      m_step(new NumberBox(this)), m_loop(new QCheckBox(tr("Loop"), this)),
       m_position(new QSlider(Qt::Horizontal, this)), m_positionText(new ReadoutLabel(this)),
       m_branchLabel(new QLabel(tr("&Branch"), this)) {
   // One row, as a media player's transport: it sits in the window's Motion bar, in sight

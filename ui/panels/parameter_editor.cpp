@@ -5,6 +5,7 @@
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSlider>
+#include "ui/number_box.h"
 #include "ui/quiet_update.h"
 
 #include <algorithm>
@@ -16,7 +17,7 @@ constexpr int kSliderSteps = 1000;
 }
 
 ParameterEditor::ParameterEditor(const QString& label, QWidget* parent)
-    : QWidget(parent), m_label(new QLabel(label, this)), m_spin(new QDoubleSpinBox(this)),
+    : QWidget(parent), m_label(new QLabel(label, this)), m_spin(new NumberBox(this)),
       m_slider(new QSlider(Qt::Horizontal, this)) {
   auto* layout = new QGridLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);

@@ -2,6 +2,7 @@
 
 #include "ui/colors.h"
 #include "ui/document/mechanism_document.h"
+#include "ui/number_box.h"
 #include "ui/number_text.h"
 #include "ui/plots/force_chart_view.h"
 #include "ui/plots/plot_x_axis.h"
@@ -33,7 +34,7 @@ QDoubleSpinBox* requestField(const std::string& key, int decimals, const QString
   const k::RequestField& f = *k::findField(k::machineFields(), key);
   const double step = std::pow(10.0, -decimals);
   const bool optional = !f.value && f.minimum == 0.0;
-  auto* box = new QDoubleSpinBox;
+  auto* box = new NumberBox;
   box->setDecimals(decimals);
   // An end the field's decimals cannot show is moved inside the range by a step.
   const double low = f.minimumIncluded ? f.minimum : f.minimum + step;

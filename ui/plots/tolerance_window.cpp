@@ -2,6 +2,7 @@
 
 #include "ui/colors.h"
 #include "ui/document/mechanism_document.h"
+#include "ui/number_box.h"
 #include "ui/number_text.h"
 #include "ui/plots/force_chart_view.h"
 #include "ui/plots/plot_x_axis.h"
@@ -62,7 +63,7 @@ SeriesRuns runsOf(const k::SweepResult& sweep, const XSource& x, const std::vect
 }  // namespace
 
 ToleranceWindow::ToleranceWindow(MechanismDocument* document, QWidget* parent)
-    : QWidget(parent, Qt::Window), m_document(document), m_tolerance(new QDoubleSpinBox), m_samples(new QSpinBox),
+    : QWidget(parent, Qt::Window), m_document(document), m_tolerance(new NumberBox), m_samples(new QSpinBox),
       m_seed(new QSpinBox), m_own(new QTableWidget(0, 2)), m_output(new QComboBox), m_summary(new QLabel),
       m_band(new ForceChartView(tr("The band of the samples about the nominal"), false)),
       m_sensitivity(new ForceChartView(tr("Sensitivity to each dimension (exact)"), false)), m_busy(new QProgressBar),

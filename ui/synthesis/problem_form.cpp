@@ -1,5 +1,7 @@
 #include "ui/synthesis/problem_form.h"
 
+#include "ui/number_box.h"
+
 #include "kinematics/design/synthesis_ranges.h"
 
 #include <QDoubleSpinBox>
@@ -36,8 +38,13 @@ QString ProblemForm::fieldLabel(const std::string& field) const {
 
 QString ProblemForm::explain(const std::string& field, const std::string& message) const {
   const QString label = fieldLabel(field);
-  const QString text = QString::fromStdString(message);
-  return label.isEmpty() ? text : tr("%1: %2").arg(label, text);
+  QString text = QString::fromStdString(message);
+  if (label.isEmpty()) return text;
+  // The core's sentence names its field ("timeRatio must be…"); the form says it in its own
+  // words, as the box's label, rather than beside them ("Time ratio Q: timeRatio must be…").
+  const QString key = QString::fromStdString(field);
+  if (text.startsWith(key + QLatin1Char(' '))) return label + text.mid(key.size());
+  return tr("%1: %2").arg(label, text);
 }
 
 QDoubleSpinBox* ProblemForm::numberBox(const QString& label) const {
@@ -47,7 +54,7 @@ QDoubleSpinBox* ProblemForm::numberBox(const QString& label) const {
 
 QDoubleSpinBox* ProblemForm::addNumber(QFormLayout* form, const QString& label, double value, Kind kind,
                                        const std::string& field, int decimals) {
-  auto* box = new QDoubleSpinBox(this);
+  auto* box = new NumberBox(this);
   box->setObjectName(QString::fromStdString(field));
   box->setDecimals(decimals);
   box->setRange(-kFieldLimit, kFieldLimit);

@@ -162,6 +162,19 @@ TEST_CASE("a bad time ratio or swing is refused naming the field, and nothing ch
     CHECK(why.contains("0.5"));
     CHECK(why.contains("between 1 and 100"));
   }
+  SECTION("time ratio stepped down from 1.3 by the arrow key") {
+    // Qt adds the step unrounded (1.3 - 1 = 0.30000000000000004); the box lands on what it shows,
+    // and the refusal quotes that, in the form's words for the field (issue 57 item 10).
+    QDoubleSpinBox* box = crankRockerForm(panel).timeRatioBox();
+    box->setSingleStep(1.0);
+    box->stepBy(-1);
+    CHECK(box->value() == 0.3);
+    const QString why = panel.refusalMessage();
+    CAPTURE(why.toStdString());
+    CHECK(why.contains("Time ratio Q must be"));
+    CHECK(why.contains("(got 0.3)"));
+    CHECK_FALSE(why.contains("timeRatio"));
+  }
   SECTION("swing 190°") {
     crankRockerForm(panel).swingBox()->setValue(190.0);
     const QString why = panel.refusalMessage();
