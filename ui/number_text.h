@@ -7,6 +7,9 @@
 
 #include <QString>
 
+#include <algorithm>
+#include <cmath>
+
 namespace linkwright::ui {
 
 /// `value` with `precision` significant digits ('g') or decimals ('f'), as formatShort and
@@ -14,6 +17,15 @@ namespace linkwright::ui {
 inline QString numberText(double value, char format = 'g', int precision = 6) {
   return QString::fromStdString(format == 'f' ? kinematics::formatFixed(value, precision)
                                               : kinematics::formatShort(value, precision));
+}
+
+/// A point as "(x, y)" with `significant` digits. A coordinate smaller than the larger one's
+/// last printed digit is round-off of the solver, not a position, and reads 0: "(30, 0)", not
+/// "(30, 2.548e-15)".
+inline QString pointText(double x, double y, int significant = 6) {
+  const double resolution = std::max(std::abs(x), std::abs(y)) * std::pow(10.0, -significant);
+  const auto shown = [resolution](double c) { return std::abs(c) < resolution ? 0.0 : c; };
+  return QStringLiteral("(%1, %2)").arg(numberText(shown(x), 'g', significant), numberText(shown(y), 'g', significant));
 }
 
 }  // namespace linkwright::ui

@@ -224,7 +224,7 @@ Result<std::vector<AtlasCell>> computeAtlasPage(const AtlasAxes& axes, std::size
   return cells;
 }
 
-Result<Design> atlasCellDesign(const AtlasCellKey& key, double crank, const std::string& lengthUnit) {
+Result<Design> atlasCellDesign(const AtlasCellKey& key, double crank, const std::string& lengthUnit, double omega) {
   const InputRange range = fourBarInputRange(key.lengths);
   if (!range.fullRotation && range.ranges.empty())
     return Error{ErrorCode::NotAssemblable, "cell",
@@ -233,7 +233,9 @@ Result<Design> atlasCellDesign(const AtlasCellKey& key, double crank, const std:
   const FourBarLengths scaled{l.frame * crank, l.crank * crank, l.coupler * crank, l.rocker * crank};
   auto design = fourBarDesign(scaled, key.branch, lengthUnit,
                               CouplerPointSpec{key.point.along * scaled.coupler, key.point.across * scaled.coupler});
-  if (!design || range.fullRotation) return design;
+  if (!design) return design;
+  design.value().omega = omega;
+  if (range.fullRotation) return design;
   const AngleRange traced = tracedRange(range);
   design.value().fromDeg = radToDeg(traced.from);
   design.value().toDeg = radToDeg(traced.to);

@@ -131,9 +131,11 @@ Result<std::size_t> runAtlas(const AtlasAxes& axes, std::size_t first, std::size
 Result<std::vector<AtlasCell>> computeAtlasPage(const AtlasAxes& axes, std::size_t first, std::size_t count,
                                                 const std::atomic<bool>* cancel = nullptr);
 
-/// The cell's linkage as a design: the crank `crank` long (length unit), its grid a full turn,
-/// or a rocking crank's traced range on the cell's branch, every 0.5°. Errors as fourBarDesign
-/// and for a cell that never assembles (NotAssemblable, field "cell").
-Result<Design> atlasCellDesign(const AtlasCellKey& key, double crank = 1.0, const std::string& lengthUnit = "mm");
+/// The cell's linkage as a design: the crank `crank` long (length unit) turning at `omega`
+/// (rad/s; the designer passes the speed of the design the cell replaces), its grid a full
+/// turn, or a rocking crank's traced range on the cell's branch, every 0.5°. Errors as
+/// fourBarDesign and for a cell that never assembles (NotAssemblable, field "cell").
+Result<Design> atlasCellDesign(const AtlasCellKey& key, double crank = 1.0, const std::string& lengthUnit = "mm",
+                               double omega = 1.0);
 
 }  // namespace linkwright::kinematics

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace linkwright::ui {
 
@@ -136,12 +137,39 @@ void LinkageView::fitToView() {
   const double availableH = std::max(area.height() - 2.0 * margin, 0.3 * area.height());
   double k = std::min(availableW / w, availableH / h);
   if (!(k > 0.0) || !std::isfinite(k)) k = 1.0;
+  k = std::min(k, labelsFitScale(bounds.center(), area));
   k = std::clamp(k * size, kMinLinkagePixels, kMaxLinkagePixels) / size;
   setTransform(QTransform::fromScale(k, -k));
   ensureSceneRect(true);
   centerOn(bounds.center());
   m_scrollResidue = {};
   m_autoFit = true;
+}
+
+// Labels keep their pixel size at any zoom, so a fit of the drawing alone can leave one cut at
+// the viewport's edge ("crank can reach…", an arm's "outside s…"). The largest scale at which
+// every visible label, anchored where it is, lies inside the viewport when `centre` is at its
+// middle: each side of each label bounds the scale, where it can be met at all.
+double LinkageView::labelsFitScale(const QPointF& centre, const QSizeF& area) const {
+  constexpr double kEdgePx = 4.0;
+  const double halfW = area.width() / 2.0 - kEdgePx, halfH = area.height() / 2.0 - kEdgePx;
+  double most = std::numeric_limits<double>::infinity();
+  // a·k + b ≤ half: for a > 0 a bound on k; otherwise shrinking cannot help.
+  const auto bound = [&](double a, double b, double half) {
+    if (a > 0.0 && half - b > 0.0) most = std::min(most, (half - b) / a);
+  };
+  for (const QGraphicsItem* item : m_scene->items()) {
+    const auto* label = dynamic_cast<const LabelItem*>(item);
+    if (label == nullptr || !label->isVisible() || label->text().isEmpty()) continue;
+    const QPointF d = label->scenePos() - centre;
+    const double scale = label->scale();
+    const QRectF r = label->boundingRect();
+    bound(d.x(), r.right() * scale, halfW);
+    bound(-d.x(), -r.left() * scale, halfW);
+    bound(-d.y(), r.bottom() * scale, halfH);  // the viewport's y runs down
+    bound(d.y(), -r.top() * scale, halfH);
+  }
+  return most;
 }
 
 void LinkageView::setExtraRegion(const QRectF& region) {
@@ -172,8 +200,9 @@ void LinkageView::onDocumentChanged(Changes what) {
   // The crank's feasible range is drawn from the analysis, which a drag's grid may bring later.
   if (what & (Changes(Change::Design) | Change::Request | Change::Analysis)) {
     m_scene->updateDesign(*m_document);
-    // reset() announces Design and File together; ordinary edits never do.
-    if ((what & Change::Design) && (what & Change::File)) fitToView();
+    // reset() announces Design and File together, and a replace() Linkage; ordinary edits
+    // neither, so a drag or a typed length keeps the user's zoom.
+    if (((what & Change::Design) && (what & Change::File)) || (what & Change::Linkage)) fitToView();
     else ensureSceneRect(false);
     viewport()->update();  // the grid's unit may have changed
   } else if (what & Change::Motion) {

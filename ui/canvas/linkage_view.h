@@ -120,6 +120,7 @@ private:
   void ensureSceneRect(bool force);
   // What a fit shows: the drawing and the extra region; and its size, for the zoom limits.
   QRectF fitBounds() const;
+  double labelsFitScale(const QPointF& centre, const QSizeF& area) const;
   double fitSize() const;
   void finishPick(const QPointF& viewportPos);
 

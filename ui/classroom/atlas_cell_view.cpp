@@ -6,6 +6,7 @@
 #include "kinematics/design/atlas_filter.h"
 #include "kinematics/model/units.h"
 
+#include <QFontMetrics>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
@@ -20,7 +21,7 @@ constexpr int kLabelHeight = 30;
 constexpr int kMargin = 6;
 
 QString number(double v) { return numberText(v, 'g', 3); }
-QString point(const Eigen::Vector2d& p) { return QStringLiteral("(%1, %2)").arg(number(p.x()), number(p.y())); }
+QString point(const Eigen::Vector2d& p) { return pointText(p.x(), p.y(), 3); }
 QString degrees(double rad) { return numberText(k::radToDeg(rad), 'f', 1) + QStringLiteral("°"); }
 
 // The samples from `first` to `last` (wrapping), as drawn.
@@ -94,6 +95,19 @@ QString AtlasCellView::label() const {
   return text + QLatin1Char('\n') + (names.isEmpty() ? tr("—") : names.join(QStringLiteral(", ")));
 }
 
+QFont AtlasCellView::labelFont() const {
+  QFont small = font();
+  small.setPointSizeF(small.pointSizeF() * 0.8);
+  return small;
+}
+
+QStringList AtlasCellView::shownLabel() const {
+  const QFontMetrics metrics(labelFont());
+  QStringList lines = label().split(QLatin1Char('\n'));
+  for (QString& line : lines) line = metrics.elidedText(line, Qt::ElideRight, width() - 4);
+  return lines;
+}
+
 QTransform AtlasCellView::modelToWidget() const {
   const QRectF box = m_curve.boundingRect();
   const QRectF area(kMargin, kMargin, width() - 2 * kMargin, height() - kLabelHeight - 2 * kMargin);
@@ -114,10 +128,9 @@ void AtlasCellView::paintEvent(QPaintEvent*) {
   painter.setPen(palette().mid().color());
   painter.drawRect(rect().adjusted(0, 0, -1, -1));
   painter.setPen(palette().text().color());
-  QFont small = font();
-  small.setPointSizeF(small.pointSizeF() * 0.8);
-  painter.setFont(small);
-  painter.drawText(QRectF(2, height() - kLabelHeight, width() - 4, kLabelHeight), Qt::AlignCenter, label());
+  painter.setFont(labelFont());
+  painter.drawText(QRectF(2, height() - kLabelHeight, width() - 4, kLabelHeight), Qt::AlignCenter,
+                   shownLabel().join(QLatin1Char('\n')));
   if (m_curve.size() < 2) return;
   const QTransform t = modelToWidget();
   painter.setPen(QPen(palette().text().color(), 1.2));

@@ -8,6 +8,7 @@
 #include "kinematics/design/coupler_atlas.h"
 
 #include <QPolygonF>
+#include <QStringList>
 #include <QWidget>
 
 #include <optional>
@@ -30,6 +31,9 @@ public:
   QTransform modelToWidget() const;
   /// The label under the drawing: ratios, and the features found (or "computing…").
   QString label() const;
+  /// label()'s lines as drawn under the curve: each elided ("…") to the cell's width, the
+  /// whole text being in the tooltip's description.
+  QStringList shownLabel() const;
 
   QSize sizeHint() const override { return {kSide, kSide}; }
   static constexpr int kSide = 168;
@@ -42,6 +46,7 @@ protected:
   void mouseReleaseEvent(QMouseEvent* event) override;
 
 private:
+  QFont labelFont() const;
   void drawFeatures(QPainter& painter, const QTransform& t) const;
 
   std::size_t m_index;

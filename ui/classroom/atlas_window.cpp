@@ -227,13 +227,15 @@ void AtlasWindow::load(std::size_t index) {
   if (index >= m_cells.size()) return;
   const auto fourBar = k::asFourBar(m_document->mechanism());
   const double crank = fourBar ? fourBar->lengths.crank : kCrankWithoutFourBar;
-  const auto design = k::atlasCellDesign(m_cells[index]->key(), crank, m_document->mechanism().lengthUnit);
+  // The cell takes the place of the design, at its speed (not the core's 1 rad/s default).
+  const k::Design& current = m_document->design();
+  const auto design = k::atlasCellDesign(m_cells[index]->key(), crank, current.mechanism.lengthUnit, current.omega);
   if (!design) {
     m_refusal->setText(tr("Not loaded: %1").arg(QString::fromStdString(design.error().message)));
     m_refusal->show();
     return;
   }
-  if (const auto why = m_document->edit(*design, tr("Atlas cell %1").arg(index))) {
+  if (const auto why = m_document->replace(*design, tr("Atlas cell %1").arg(index))) {
     m_refusal->setText(tr("Not loaded: %1").arg(*why));
     m_refusal->show();
     return;

@@ -22,9 +22,7 @@ namespace {
 
 constexpr int kFrameMs = 30;
 
-QString point(const Eigen::Vector2d& p) {
-  return QStringLiteral("(%1, %2)").arg(numberText(p.x(), 'g', 5), numberText(p.y(), 'g', 5));
-}
+QString point(const Eigen::Vector2d& p) { return pointText(p.x(), p.y(), 5); }
 
 QString figures(const k::CognateFourBar& f, const QString& title, const QString& unit) {
   const k::FourBarLengths& l = f.fourBar.lengths;
@@ -177,7 +175,7 @@ void CognatesWindow::followPose() {
 void CognatesWindow::keep(int cognate) {
   if (!m_set) return;
   const k::Design design = m_set->cognates[static_cast<std::size_t>(cognate)].design;
-  if (const auto why = m_document->edit(design, tr("Keep cognate %1").arg(cognate + 1)))
+  if (const auto why = m_document->replace(design, tr("Keep cognate %1").arg(cognate + 1)))
     m_figures->setText(m_figures->text() + "<br>" + why->toHtmlEscaped());
 }
 

@@ -5,13 +5,13 @@
 namespace linkwright::ui {
 
 EditDesignCommand::EditDesignCommand(MechanismDocument* document, DesignState before, DesignState after,
-                                     const QString& text, std::optional<MergeKey> mergeKey)
+                                     const QString& text, std::optional<MergeKey> mergeKey, bool another)
     : QUndoCommand(text), m_document(document), m_before(std::move(before)), m_after(std::move(after)),
-      m_mergeKey(mergeKey) {}
+      m_mergeKey(mergeKey), m_another(another) {}
 
-void EditDesignCommand::undo() { m_document->applyDesign(m_before); }
+void EditDesignCommand::undo() { m_document->applyDesign(m_before, m_another); }
 
-void EditDesignCommand::redo() { m_document->applyDesign(m_after); }
+void EditDesignCommand::redo() { m_document->applyDesign(m_after, m_another); }
 
 bool EditDesignCommand::mergeWith(const QUndoCommand* other) {
   const auto* next = dynamic_cast<const EditDesignCommand*>(other);

@@ -37,9 +37,10 @@ struct DesignState {
 
 class EditDesignCommand : public QUndoCommand {
 public:
-  /// Without a merge key the edit never merges.
+  /// Without a merge key the edit never merges. `another`: the after state is another linkage
+  /// (MechanismDocument::replace), so undo and redo each bring a different one back.
   EditDesignCommand(MechanismDocument* document, DesignState before, DesignState after, const QString& text,
-                    std::optional<MergeKey> mergeKey);
+                    std::optional<MergeKey> mergeKey, bool another = false);
 
   void undo() override;
   void redo() override;
@@ -53,6 +54,7 @@ private:
   DesignState m_before;
   DesignState m_after;
   std::optional<MergeKey> m_mergeKey;
+  bool m_another;
 };
 
 }  // namespace linkwright::ui

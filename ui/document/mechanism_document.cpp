@@ -131,6 +131,16 @@ void MechanismDocument::adoptGridAnalysis() {
 std::optional<QString> MechanismDocument::edit(const k::Design& design, const QString& description,
                                                std::optional<MergeKey> mergeKey,
                                                std::optional<double> crankAngleAfter) {
+  return push(design, description, mergeKey, crankAngleAfter, false);
+}
+
+std::optional<QString> MechanismDocument::replace(const k::Design& design, const QString& description) {
+  return push(design, description, std::nullopt, std::nullopt, true);
+}
+
+std::optional<QString> MechanismDocument::push(const k::Design& design, const QString& description,
+                                               std::optional<MergeKey> mergeKey, std::optional<double> crankAngleAfter,
+                                               bool another) {
   if (auto why = validate(design)) return why;
   const double angleAfter = crankAngleAfter.value_or(m_crankAngle);
   // On a time base the instant is the motion state: a move of the crank (a drag of its tip)
@@ -140,16 +150,18 @@ std::optional<QString> MechanismDocument::edit(const k::Design& design, const QS
     timeAfter = k::timeNearestPosition(*design.time, *crankAngleAfter, m_time, k::inputPeriod(design.mechanism));
   if (design == m_design && angleAfter == m_crankAngle && timeAfter == m_time) return std::nullopt;
   m_undo.push(new EditDesignCommand(this, {m_design, m_crankAngle, m_time}, {design, angleAfter, timeAfter},
-                                    description, mergeKey));
+                                    description, mergeKey, another));
   return std::nullopt;
 }
 
-void MechanismDocument::applyDesign(const DesignState& state) {
+void MechanismDocument::applyDesign(const DesignState& state, bool another) {
   m_design = state.design;
   m_crankAngle = state.crankAngle;
   m_time = state.time;
   rebuild(SweepNow::No);
-  emit changed(Changes(Change::Design) | Change::Motion);
+  Changes what = Changes(Change::Design) | Change::Motion;
+  if (another) what |= Change::Linkage;
+  emit changed(what);
 }
 
 void MechanismDocument::setCrankAngle(double angle) {

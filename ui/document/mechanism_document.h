@@ -47,6 +47,7 @@ enum class Change {
   Estimate = 0x10,  ///< the quality estimate was measured anew (qualityEstimate())
   PlotAxis = 0x20,  ///< what the plots' x axis shows (plotAxis())
   Analysis = 0x40,  ///< the crank range and gaps changed when a drag's grid landed from a worker
+  Linkage = 0x80,   ///< another linkage took the design's place (replace(), or undo/redo of one): views fit it
 };
 Q_DECLARE_FLAGS(Changes, Change)
 Q_DECLARE_OPERATORS_FOR_FLAGS(Changes)
@@ -132,10 +133,15 @@ public:
   std::optional<QString> edit(const kinematics::Design& design, const QString& description,
                               std::optional<MergeKey> mergeKey = std::nullopt,
                               std::optional<double> crankAngleAfter = std::nullopt);
+  /// edit() for another linkage put in the design's place (an atlas cell, a cognate, a
+  /// synthesised design), not a change of this one: it announces Change::Linkage, and so do
+  /// the undo and redo that bring either linkage back, so that the views fit what they show.
+  std::optional<QString> replace(const kinematics::Design& design, const QString& description);
 
   /// Replaces the design and the crank angle, or on a time base the instant, without touching
-  /// the undo stack (the undo command calls it). Emits one changed(Design | Motion).
-  void applyDesign(const DesignState& state);
+  /// the undo stack (the undo command calls it). Emits one changed(Design | Motion), with
+  /// Linkage when `another` (the command replaced the linkage).
+  void applyDesign(const DesignState& state, bool another = false);
 
   /// Crank angle in rad. Clamped into the assemblable range; on a time base, the law's angle
   /// at time() (unwrapped: a law may turn the crank many times).
@@ -205,6 +211,9 @@ signals:
   void changed(linkwright::ui::Changes what);
 
 private:
+  // edit() and replace(): `another` marks the command as a change of linkage.
+  std::optional<QString> push(const kinematics::Design& design, const QString& description,
+                              std::optional<MergeKey> mergeKey, std::optional<double> crankAngleAfter, bool another);
   // rebuild: mechanism, sweep, analysis, pose from m_design; resweep: the sweep only (request
   // or sampling changed). SweepNow::No lets an edit's sweep go to a worker (display_sweeper.h).
   enum class SweepNow : bool { No, Yes };

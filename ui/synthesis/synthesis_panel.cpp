@@ -2,6 +2,7 @@
 
 #include "ui/canvas/linkage_view.h"
 #include "ui/geometry.h"
+#include "ui/number_box.h"
 #include "ui/panels/refusal_label.h"
 #include "ui/synthesis/candidate_table.h"
 #include "ui/synthesis/path_search_worker.h"
@@ -35,7 +36,7 @@ namespace k = kinematics;
 
 SynthesisPanel::SynthesisPanel(MechanismDocument* document, LinkageView* view, QWidget* parent)
     : QWidget(parent), m_document(document), m_view(view), m_problem(new QComboBox(this)),
-      m_transmissionBound(new QDoubleSpinBox(this)), m_stack(new QStackedWidget(this)),
+      m_transmissionBound(new NumberBox(this)), m_stack(new QStackedWidget(this)),
       m_refusal(new RefusalLabel(document, this)), m_summary(new QLabel(this)), m_table(new CandidateTable(this)),
       m_use(new QPushButton(tr("Use this linkage"), this)), m_pathSearch(new PathSearchWorker(this)),
       m_preview(new SynthesisPreviewItem) {
@@ -291,7 +292,7 @@ std::optional<QString> SynthesisPanel::useChosen() {
     design.alpha = current.alpha;
   }
   const k::SynthesisTargets previous = std::exchange(m_synced, *design.synthesis);
-  auto refusal = m_document->edit(design, tr("Use synthesised %1").arg(name));
+  auto refusal = m_document->replace(design, tr("Use synthesised %1").arg(name));
   if (refusal) m_synced = previous;
   return refusal;
 }

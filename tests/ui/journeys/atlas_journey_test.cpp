@@ -7,6 +7,8 @@
 
 #include "tests/ui/journeys/journey.h"
 
+#include "ui/canvas/linkage_scene.h"
+#include "ui/canvas/linkage_view.h"
 #include "ui/classroom/atlas_cell_cache.h"
 #include "ui/classroom/atlas_cell_view.h"
 #include "ui/classroom/atlas_window.h"
@@ -20,6 +22,7 @@
 
 #include <QApplication>
 #include <QCheckBox>
+#include <QFontMetrics>
 #include <QLineEdit>
 #include <QSignalSpy>
 #include <QTest>
@@ -70,20 +73,44 @@ TEST_CASE("the atlas draws the core's coupler curves, filters them and loads one
     CHECK(shown[i]->cell()->features.straight.has_value());
   }
   CHECK(atlas->statusText() == QStringLiteral("16 cells; %1 shown").arg(kept.size()));
+  // Every caption fits its cell, elided where it must be (issue 57 item 9: ":usp, symmetric,
+  // straight, circula" was cut at both ends); the whole of it is the tooltip's.
+  for (const AtlasCellView* cell : atlas->cells()) {
+    const QStringList lines = cell->shownLabel();
+    REQUIRE(lines.size() == cell->label().split('\n').size());
+    QFont small = cell->font();
+    small.setPointSizeF(small.pointSizeF() * 0.8);
+    for (const QString& line : lines) CHECK(QFontMetrics(small).horizontalAdvance(line) <= cell->width() - 4);
+    if (lines.join('\n') != cell->label()) CHECK(lines.join('\n').contains(QChar(0x2026)));
+  }
 
   // A click makes that cell's four-bar the design; Ctrl+Z in the designer puts it back.
   MechanismDocument* document = journey.window().document();
   const k::Design before = document->design();
   const double crank = k::asFourBar(before.mechanism)->lengths.crank;
   AtlasCellView* hoeken = shown.front();
+  // Zoomed in on the design first: the cell's linkage is fitted all the same (issue 57 item 5).
+  LinkageView* canvas = journey.window().canvas();
+  canvas->zoomBy(6.0);
+  const auto drawn = [canvas] {
+    const QRectF content = dynamic_cast<LinkageScene*>(canvas->linkageScene())->contentBounds();
+    return canvas->visibleRegion().contains(content);
+  };
+  REQUIRE_FALSE(drawn());
   QTest::mouseClick(hoeken, Qt::LeftButton, Qt::NoModifier, hoeken->rect().center());
-  const k::Design loaded = k::atlasCellDesign(hoeken->key(), crank, before.mechanism.lengthUnit).value();
+  // At the design's speed, not the core's 1 rad/s (issue 57 item 9).
+  REQUIRE(before.omega != 1.0);
+  const k::Design loaded = k::atlasCellDesign(hoeken->key(), crank, before.mechanism.lengthUnit, before.omega).value();
   CHECK(document->design() == loaded);
+  CHECK(document->design().omega == before.omega);
   CHECK(document->mechanism().findPoint("P").has_value());
-  // Ctrl+Z where the click was, in the atlas window: the design before comes back.
+  CHECK(drawn());
+  // Ctrl+Z where the click was, in the atlas window: the design before comes back, fitted.
   REQUIRE(QApplication::activeWindow() == atlas);
+  canvas->zoomBy(6.0);
   journey.key(Qt::Key_Z, Qt::ControlModifier);
   CHECK(document->design() == before);
+  CHECK(drawn());
   journey.check("undo after loading an atlas cell");
 
   // A bad ratio is refused, naming it; the grid shown stays.

@@ -78,3 +78,41 @@ TEST_CASE("a crank that cannot turn: its reach is labelled inside the canvas, ce
   journey.expectFitted();
   journey.check("View ▸ Instant centres, Fit to view");
 }
+
+TEST_CASE("on a laptop and a projector, normal and presenting, Ctrl+0 keeps every canvas label inside",
+          "[journey][canvas][screens]") {
+  // Issue 57 item 4: labels keep their pixel size, so a fit of the drawing alone cut "crank can
+  // reach…" and the arm's "outside s…" at the canvas's edge on the smaller screens.
+  for (const char* screen : {"laptop", "projector"}) {
+    CAPTURE(screen);
+    test::Journey journey(test::journeyScreen(QString::fromLatin1(screen)));
+    for (const bool presenting : {false, true}) {
+      if (presenting) journey.menu({"View", "Presentation mode"});
+      const std::string mode = presenting ? ", presenting" : "";
+      for (const kinematics::Example& e : kinematics::examples()) {
+        journey.example(e.name);
+        journey.key(Qt::Key_0, Qt::ControlModifier);
+        journey.expectFitted();
+        journey.check(std::string(screen) + mode + ", Examples ▸ " + e.name + ", Ctrl+0");
+      }
+      // A crank that only rocks, labelled with its reach.
+      journey.example("thesis-crank-rocker");
+      journey.type(journey.window().dimensionsPanel()->editor(kinematics::ParameterSlot::CouplerLength), "30");
+      journey.key(Qt::Key_0, Qt::ControlModifier);
+      journey.expectFitted();
+      journey.check(std::string(screen) + mode + ", coupler 30, Ctrl+0");
+      journey.key(Qt::Key_Z, Qt::ControlModifier);  // unmodified again: the next example asks nothing
+      // An arm's path partly out of reach, labelled with the stretch.
+      journey.example("seed-arm");
+      ui::DimensionsPanel* panel = journey.window().dimensionsPanel();
+      for (std::size_t i = 0; i < panel->fields().size(); ++i)
+        if (panel->fields()[i].parameter.slot == kinematics::ParameterSlot::PathY &&
+            panel->fields()[i].parameter.vertex == 1)
+          journey.type(panel->editor(i), "0.6");
+      journey.key(Qt::Key_0, Qt::ControlModifier);
+      journey.expectFitted();
+      journey.check(std::string(screen) + mode + ", arm's path end at y 0.6 m, Ctrl+0");
+      journey.key(Qt::Key_Z, Qt::ControlModifier);
+    }
+  }
+}
