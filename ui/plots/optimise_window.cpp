@@ -2,6 +2,7 @@
 
 #include "ui/colors.h"
 #include "ui/document/mechanism_document.h"
+#include "ui/number_box.h"
 #include "ui/number_text.h"
 #include "ui/plots/force_chart_view.h"
 #include "ui/plots/optimise_runner.h"
@@ -95,7 +96,7 @@ SeriesRuns crossesAt(const std::vector<Eigen::Vector2d>& targets, double dx, dou
 OptimiseWindow::OptimiseWindow(MechanismDocument* document, QWidget* parent)
     : QWidget(parent, Qt::Window), m_document(document), m_runner(new OptimiseRunner(this)), m_objective(new QComboBox),
       m_link(new QComboBox), m_point(new QComboBox), m_measure(new QComboBox), m_targets(new QLineEdit),
-      m_range(new QDoubleSpinBox), m_pivots(new QListWidget), m_seed(new QSpinBox), m_evaluations(new QSpinBox),
+      m_range(new NumberBox), m_pivots(new QListWidget), m_seed(new QSpinBox), m_evaluations(new QSpinBox),
       m_run(new QPushButton(tr("&Run"))), m_cancel(new QPushButton(tr("&Cancel"))),
       m_accept(new QPushButton(tr("&Accept"))), m_discard(new QPushButton(tr("&Discard"))),
       m_progress(new QProgressBar), m_summary(new QLabel),
@@ -152,6 +153,10 @@ OptimiseWindow::OptimiseWindow(MechanismDocument* document, QWidget* parent)
   layout->addWidget(m_chart, 1);
   layout->addLayout(resultRow);
   resize(960, 760);
+  // A hidden chart keeps its place: the form and Run/Cancel stay where they were while it runs.
+  QSizePolicy chartPolicy = m_chart->sizePolicy();
+  chartPolicy.setRetainSizeWhenHidden(true);
+  m_chart->setSizePolicy(chartPolicy);
 
   connect(m_run, &QPushButton::clicked, this, &OptimiseWindow::run);
   connect(m_cancel, &QPushButton::clicked, this, &OptimiseWindow::cancelRun);
@@ -242,6 +247,14 @@ void OptimiseWindow::followDesign() {
   // A first look at a linkage offers its last link (a four-bar's rocker) and its coupler point.
   m_link->setCurrentIndex(m_link->findText(link) >= 0 ? m_link->findText(link) : m_link->count() - 1);
   m_point->setCurrentIndex(m_point->findText(point) >= 0 ? m_point->findText(point) : m_point->count() - 1);
+  if (!m_applying && m_applied) {
+    // Ctrl+Z, or any later edit: the summary and the chart told of the design applied then.
+    m_applied = false;
+    m_chart->setVisible(false);
+    m_summary->setText(
+        tr("The design changed after the optimised one was applied (Ctrl+Z or another edit): "
+           "what was shown is gone. Run again for the design as it is now."));
+  }
   if (!m_applying && (m_result || m_runner->running())) {
     // What is shown was computed for the design before this edit.
     const bool wasRunning = m_runner->running();
@@ -263,6 +276,7 @@ void OptimiseWindow::run() {
     return;
   }
   m_result.reset();
+  m_applied = false;
   m_chart->setVisible(false);
   m_summary->setText(tr("Optimising…"));
   m_runner->start(m_document->design(), *r);
@@ -275,9 +289,10 @@ void OptimiseWindow::cancelRun() {
 }
 
 void OptimiseWindow::onFinished() {
-  // A run whose simplexes shrank before the budget was spent has ended all the same.
-  m_progress->setValue(m_progress->maximum());
   const auto& outcome = m_runner->outcome();
+  // A run whose simplexes shrank before the budget was spent has ended all the same; a
+  // cancelled one keeps the share it reached.
+  if (outcome && outcome->ok() && !outcome->value().cancelled) m_progress->setValue(m_progress->maximum());
   if (!outcome || !outcome->ok()) {
     m_summary->setText(tr("No optimisation: %1")
                            .arg(outcome ? QString::fromStdString(outcome->error().message) : tr("it was stopped")));
@@ -373,6 +388,7 @@ void OptimiseWindow::acceptResult() {
     return;
   }
   m_result.reset();
+  m_applied = true;
   m_summary->setText(m_summary->text() + tr("<br><b>Applied</b> as one edit (Ctrl+Z undoes it)."));
   updateFields();
 }

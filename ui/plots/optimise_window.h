@@ -92,6 +92,7 @@ private:
   ForceChartView* m_chart;
   std::optional<kinematics::LinkageOptimisation> m_result;
   bool m_applying = false;  // our own Accept is editing the document
+  bool m_applied = false;   // the summary and chart tell of the design Accept applied
 };
 
 }  // namespace linkwright::ui

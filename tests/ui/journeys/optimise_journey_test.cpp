@@ -17,6 +17,7 @@
 #include "tests/support/catch.h"
 
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -39,8 +40,12 @@ ui::OptimiseWindow* openOptimise(test::Journey& journey) {
 // Runs with the fields as they are and waits for the result.
 void runAndWait(test::Journey& journey, ui::OptimiseWindow* window) {
   QSignalSpy ended(window, &ui::OptimiseWindow::runEnded);
+  const QPoint runAt = window->runButton()->mapTo(window, QPoint());
   QTest::mouseClick(window->runButton(), Qt::LeftButton);
   CHECK(window->running());
+  // The chart's place is kept while it runs: Run and Cancel stay under the pointer.
+  QCoreApplication::processEvents();
+  CHECK(window->runButton()->mapTo(window, QPoint()) == runAt);
   CHECK(window->cancelButton()->isEnabled());
   CHECK_FALSE(window->runButton()->isEnabled());
   REQUIRE(ended.wait(60000));
@@ -92,6 +97,10 @@ TEST_CASE("Edit > Optimise runs in the background, Accept applies the core's res
   window->close();
   journey.key(Qt::Key_Z, Qt::ControlModifier);
   CHECK(document->design() == start);
+  // The window no longer tells of the edit undone, nor shows its curves.
+  CHECK_FALSE(window->summaryText().contains("Applied"));
+  CHECK(window->summaryText().contains("Run again"));
+  CHECK_FALSE(window->chart()->isVisible());
   journey.check("Ctrl+Z");
 }
 
@@ -118,6 +127,7 @@ TEST_CASE("Cancel mid-run leaves the design, and an edit drops a result made for
   REQUIRE(window->result().has_value());
   CHECK(window->result()->cancelled);
   CHECK(window->result()->evaluations < 200);
+  CHECK(window->progressBar()->value() < window->progressBar()->maximum());  // not "100 %"
   QTest::mouseClick(window->discardButton(), Qt::LeftButton);
   CHECK_FALSE(window->result().has_value());
   CHECK(document->design() == start);
