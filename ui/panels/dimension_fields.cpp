@@ -2,6 +2,7 @@
 
 #include "ui/canvas/mechanism_drawing.h"
 
+#include "kinematics/design/design_parameter.h"
 #include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 
@@ -131,8 +132,8 @@ std::vector<double> fieldValues(const k::Mechanism& mechanism, const std::vector
   return out;
 }
 
-void setFieldValue(k::Mechanism& mechanism, const DimensionField& field, double value) {
-  k::setParameter(mechanism, field.parameter, field.unit() == k::ParameterUnit::Angle ? k::degToRad(value) : value);
+void setFieldValue(k::Design& design, const DimensionField& field, double value) {
+  k::setDesignParameter(design, field.parameter, field.unit() == k::ParameterUnit::Angle ? k::degToRad(value) : value);
 }
 
 k::Branch* branchOf(k::Point& point) {

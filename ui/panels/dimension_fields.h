@@ -3,6 +3,7 @@
 // (kinematics/design/parameters.h) with their labels, and their values as the editors show
 // them (degrees for angles). The panel never touches a point definition itself.
 
+#include "kinematics/design/design.h"
 #include "kinematics/design/parameters.h"
 #include "kinematics/model/mechanism.h"
 
@@ -34,8 +35,9 @@ std::vector<DimensionField> dimensionFields(const kinematics::Mechanism& mechani
 std::vector<double> fieldValues(const kinematics::Mechanism& mechanism, const std::vector<DimensionField>& fields,
                                 const std::optional<kinematics::FourBarStructure>& fourBar);
 
-/// Sets the field to `value` (degrees for angles) in `mechanism`.
-void setFieldValue(kinematics::Mechanism& mechanism, const DimensionField& field, double value);
+/// Sets the field to `value` (degrees for angles) in `design`, as the core sets a design's
+/// parameter (a driven path's new end included: kinematics/design/design_parameter.h).
+void setFieldValue(kinematics::Design& design, const DimensionField& field, double value);
 
 /// The RRR or RRP joint's branch, if the point has one.
 kinematics::Branch* branchOf(kinematics::Point& point);

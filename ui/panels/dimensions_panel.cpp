@@ -206,7 +206,7 @@ void DimensionsPanel::refresh() {
 void DimensionsPanel::editField(std::size_t index, double value, bool final) {
   k::Design d = m_document->design();
   const DimensionField& f = m_fields[index];
-  setFieldValue(d.mechanism, f, value);
+  setFieldValue(d, f, value);
   const QString what =
       k::isFourBarDimension(f.parameter.slot)
           ? tr("Change %1").arg(f.label)

@@ -20,6 +20,8 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include <cmath>
+
 using namespace linkwright;
 
 namespace {
@@ -89,4 +91,28 @@ TEST_CASE("type a four-bar's named length, slide its coupler, undo both", "[jour
   journey.key(Qt::Key_Z, Qt::ControlModifier);
   CHECK(window.document()->design() == before);
   journey.check("Ctrl+Z twice");
+}
+
+TEST_CASE("lengthen the arm's path by typing its end: the whole path is analysed", "[journey][dimensions][arm]") {
+  // Issue 57 item 8: the time base kept its old end, so 0.424 m of the longer path were analysed.
+  test::Journey journey;
+  ui::MainWindow& window = journey.window();
+  journey.example("seed-arm");
+  ui::DimensionsPanel* panel = window.dimensionsPanel();
+  const auto endField = [panel](kinematics::ParameterSlot slot) {
+    for (std::size_t i = 0; i < panel->fields().size(); ++i)
+      if (panel->fields()[i].parameter.slot == slot && panel->fields()[i].parameter.vertex == 1)
+        return panel->editor(i);
+    FAIL("no field for the path's end");
+    return static_cast<QDoubleSpinBox*>(nullptr);
+  };
+  journey.type(endField(kinematics::ParameterSlot::PathX), "-0.2");
+  journey.check("path end x −0.2 m");
+  journey.type(endField(kinematics::ParameterSlot::PathY), "0.4");
+  journey.check("path end y 0.4 m");
+  const kinematics::Design& d = window.document()->design();
+  REQUIRE(d.time.has_value());
+  const double length = std::sqrt(0.5 * 0.5 + 0.4 * 0.4);        // from (0.3, 0) to (−0.2, 0.4) m
+  CHECK(d.time->toTime == Approx(length / 2.0).epsilon(1e-12));  // at the example's 2 m/s
+  CHECK(window.document()->undoStack()->count() == 2);
 }
