@@ -20,6 +20,9 @@ QChart* makeCrankAngleChart(const QString& title, QValueAxis* xAxis, QValueAxis*
   chart->setMargins(kBaseChartMargins);
   chart->setBackgroundRoundness(0);
   chart->legend()->setAlignment(Qt::AlignRight);
+  // A narrow chart (1366×768, presentation mode) has Qt elide an entry ("transmiss…"); its
+  // whole name is then the entry's tooltip.
+  chart->legend()->setShowToolTips(true);
   chart->addAxis(xAxis, Qt::AlignBottom);
   chart->addAxis(yAxis, Qt::AlignLeft);
   xAxis->setTickType(QValueAxis::TicksDynamic);

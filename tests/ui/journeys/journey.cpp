@@ -29,9 +29,12 @@
 #include <QDialogButtonBox>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGraphicsTextItem>
 #include <QGuiApplication>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLegend>
+#include <QLegendMarker>
 #include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
@@ -46,6 +49,7 @@
 #include <QValueAxis>
 
 #include <cmath>
+#include <functional>
 
 namespace linkwright::test {
 namespace k = kinematics;
@@ -411,6 +415,20 @@ void Journey::checkChartsWhole() {
         if (drawn != full) REQUIRE(bracket >= 0);
         if (drawn != full) CHECK(drawn.endsWith(full.mid(bracket)));
       }
+    }
+    // The legend's entries: whole, or elided by Qt with the whole name in the entry's tooltip.
+    const QLegend* legend = chart->legend();
+    if (!legend->isVisible()) continue;
+    QStringList shown;
+    std::function<void(const QGraphicsItem*)> collect = [&](const QGraphicsItem* item) {
+      if (const auto* t = dynamic_cast<const QGraphicsTextItem*>(item)) shown << t->toPlainText();
+      for (const QGraphicsItem* child : item->childItems()) collect(child);
+    };
+    collect(legend);
+    for (const QLegendMarker* marker : legend->markers()) {
+      if (!marker->isVisible() || shown.contains(marker->label())) continue;
+      CAPTURE(chart->title().toStdString(), marker->label().toStdString(), shown.join(" | ").toStdString());
+      CHECK(legend->showToolTips());
     }
   }
 }
