@@ -187,11 +187,14 @@ void bindAtlas(py::module_& module) {
             return py::make_tuple(a.coupler, a.rocker, a.frame, a.along, a.across, a.branch == k::Branch::Open,
                                   a.samples);
           },
-          [](const py::tuple& t) {
-            return atlasAxes(t[0].cast<std::vector<double>>(), t[1].cast<std::vector<double>>(),
-                             t[2].cast<std::vector<double>>(), t[3].cast<std::vector<double>>(),
-                             t[4].cast<std::vector<double>>(), t[5].cast<bool>() ? "open" : "crossed",
-                             t[6].cast<long long>());
+          [](const py::tuple& state) {
+            return fromPickle("Atlas", "coupler, rocker, frame, along, across, open branch, samples", state, 7,
+                              [](const py::tuple& t) {
+                                return atlasAxes(t[0].cast<std::vector<double>>(), t[1].cast<std::vector<double>>(),
+                                                 t[2].cast<std::vector<double>>(), t[3].cast<std::vector<double>>(),
+                                                 t[4].cast<std::vector<double>>(),
+                                                 t[5].cast<bool>() ? "open" : "crossed", t[6].cast<long long>());
+                              });
           }));
 }
 

@@ -31,6 +31,22 @@ T valueOrThrow(kinematics::Result<T> result) {
   return std::move(result).value();
 }
 
+/// An object restored from its pickled tuple `state` by `restore`, which casts the entries: a
+/// state of another size or with an entry of another type (another version's, or edited) is
+/// refused naming "state", as linkwright.Error, never pybind11's "Unable to cast".
+template <typename Restore>
+auto fromPickle(const char* cls, const char* layout, const py::tuple& state, std::size_t size, Restore restore) {
+  const CoreError refusal(kinematics::Error{
+      kinematics::ErrorCode::InvalidValue, "state",
+      std::string("linkwright.") + cls + ": not a pickled state of this version (a tuple of " + layout + ")"});
+  if (state.size() != size) throw refusal;
+  try {
+    return restore(state);
+  } catch (const py::cast_error&) {
+    throw refusal;
+  }
+}
+
 /// `text` as a Python str, a byte that is not UTF-8 shown as \xNN (a path given as bytes, say):
 /// pybind11's own conversion would raise UnicodeDecodeError instead of the refusal.
 inline py::str text(const std::string& text) {

@@ -253,11 +253,15 @@ void bindSynthesis(py::module_& module) {
             return py::make_tuple(s.points, s.timingDeg, s.timingFrom, s.fullRotation, s.unit, s.starts, s.seed, s.keep,
                                   s.maxEvaluations);
           },
-          [](const py::tuple& t) {
-            return pathSearch(t[0].cast<std::vector<std::pair<double, double>>>(),
-                              t[1].cast<std::optional<std::vector<double>>>(), t[2].cast<std::string>(),
-                              t[3].cast<bool>(), t[4].cast<std::string>(), t[5].cast<int>(), t[6].cast<std::uint32_t>(),
-                              t[7].cast<int>(), t[8].cast<int>());
+          [](const py::tuple& state) {
+            return fromPickle(
+                "PathSearch", "points, timing, timing from, full rotation, unit, starts, seed, keep, evaluations",
+                state, 9, [](const py::tuple& t) {
+                  return pathSearch(t[0].cast<std::vector<std::pair<double, double>>>(),
+                                    t[1].cast<std::optional<std::vector<double>>>(), t[2].cast<std::string>(),
+                                    t[3].cast<bool>(), t[4].cast<std::string>(), t[5].cast<int>(),
+                                    t[6].cast<std::uint32_t>(), t[7].cast<int>(), t[8].cast<int>());
+                });
           }));
 }
 
