@@ -113,8 +113,8 @@ bool parseAnimationOptions(const QCommandLineParser& parser, const AnimationOpti
       return false;
     }
   }
-  return parseAnimationTiming(parser, n, QFileInfo(QString::fromStdString(*o.animation)).suffix().toLower() == "gif",
-                              o, error);
+  return parseAnimationTiming(parser, n, QFileInfo(QString::fromStdString(*o.animation)).suffix().toLower() == "gif", o,
+                              error);
 }
 
 // --image FILE [--image-of canvas|plotN].
@@ -244,9 +244,13 @@ std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, 
   const QCommandLineOption compareMap("compare-map", {}, "MAP");
   const QCommandLineOption plots("plots", {}, "KEYS");
   const QCommandLineOption windowSize("window-size", {}, "WxH");
-  parser.addOptions({help, version, presentation, highContrast, forces, centres, example, screenshot,
-                     inversionsScreenshot, crankAngle, animation, frames, frameDelay, frameRate, animationSize,
-                     image, imageOf, compare, compareMap, plots, windowSize});
+  parser.addOptions({help,         version,    presentation,
+                     highContrast, forces,     centres,
+                     example,      screenshot, inversionsScreenshot,
+                     crankAngle,   animation,  frames,
+                     frameDelay,   frameRate,  animationSize,
+                     image,        imageOf,    compare,
+                     compareMap,   plots,      windowSize});
   parser.addPositionalArgument("file", {});
   QStringList arguments{"linkwright"};
   for (const std::string& a : args) arguments << QString::fromStdString(a);

@@ -845,9 +845,9 @@ void MainWindow::exportImageDialog() {
   if (!chosen) return;
   const auto choice = sources.indexOf(source);
   QString selected;
-  const QString path = QFileDialog::getSaveFileName(this, tr("Export image"), QString(),
-                                                    tr("PNG image (*.png);;SVG drawing (*.svg);;PDF drawing (*.pdf)"),
-                                                    &selected);
+  const QString path =
+      QFileDialog::getSaveFileName(this, tr("Export image"), QString(),
+                                   tr("PNG image (*.png);;SVG drawing (*.svg);;PDF drawing (*.pdf)"), &selected);
   if (path.isEmpty()) return;
   QString withSuffix = path;
   if (QFileInfo(path).suffix().isEmpty())

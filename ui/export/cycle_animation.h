@@ -52,7 +52,7 @@ struct AnimationSettings {
   int frames = 72;          ///< frames per cycle (one turn, one rocking period, one time base)
   int frameDelayMs = 40;    ///< a GIF's ms per frame; GIF stores 1/100 s, so it is rounded to 10 ms
   double frameRate = 25.0;  ///< a video's (MP4, WebM) frames per second, any value in range (29.97)
-  QSize size;             ///< pixels; empty: the view's size
+  QSize size;               ///< pixels; empty: the view's size
   bool loopForever = true;
 };
 

@@ -22,7 +22,7 @@ extern "C" {
 namespace linkwright::testing {
 
 struct VideoReadback {
-  std::string codec;  ///< the decoder's name: "h264", "vp9"
+  std::string codec;      ///< the decoder's name: "h264", "vp9"
   std::string container;  ///< the demuxer's names: "mov,mp4,m4a,3gp,3g2,mj2", "matroska,webm"
   int width = 0;
   int height = 0;
@@ -45,7 +45,8 @@ inline std::optional<VideoReadback> readVideo(const QString& path) {
   const AVStream* stream = input.f->streams[index];
   const auto freeCodec = [](AVCodecContext* c) { avcodec_free_context(&c); };
   const std::unique_ptr<AVCodecContext, decltype(freeCodec)> codec(avcodec_alloc_context3(decoder), freeCodec);
-  if (avcodec_parameters_to_context(codec.get(), stream->codecpar) < 0 || avcodec_open2(codec.get(), decoder, nullptr) < 0)
+  if (avcodec_parameters_to_context(codec.get(), stream->codecpar) < 0 ||
+      avcodec_open2(codec.get(), decoder, nullptr) < 0)
     return std::nullopt;
 
   VideoReadback out;
