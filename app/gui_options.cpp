@@ -215,8 +215,8 @@ std::string guiUsage() {
          "                      comparison runs at once and its rows are drawn on the plots\n"
          "                      (and in the --screenshot)\n"
          "  --help, --version\n\n"
-         "Exit codes: 0 success, 1 the screenshot, image or animation could not be written, 2 bad\n"
-         "usage or a file that cannot be opened (the message says why).\n";
+         "Exit codes: 0 success, 1 the screenshot, image or animation could not be\n"
+         "written, 2 bad usage or a file that cannot be opened (the message says why).\n";
 }
 
 std::optional<GuiOptions> parseGuiOptions(const std::vector<std::string>& args, std::string& error) {
