@@ -1,6 +1,8 @@
 #pragma once
 // The GUI's command line: linkwright [FILE] [--example NAME] [--screenshot FILE.png]
-// [--animation FILE.gif [--frames N] [--frame-delay MS]] [--inversions-screenshot FILE.png]
+// [--image FILE.{png,svg,pdf} [--image-of canvas|plotN]]
+// [--animation FILE.{gif,mp4,webm} [--frames N] [--frame-delay MS | --frame-rate FPS]
+// [--animation-size WxH]] [--inversions-screenshot FILE.png]
 // [--presentation] [--high-contrast] [--forces] [--centres] [--crank-angle DEG] [--plots KEY,…]
 // [--compare TABLE.csv [--compare-map MAP]] [--help] [--version].
 
@@ -16,11 +18,15 @@ struct GuiOptions {
   std::optional<std::string> screenshot;  ///< render the window to this PNG and exit
   /// render View ▸ Inversions… of the linkage to this PNG and exit
   std::optional<std::string> inversionsScreenshot;
-  std::optional<double> crankAngleDeg;    ///< crank angle to show (default 0°)
-  std::optional<std::string> animation;   ///< write an animated GIF of one cycle here and exit
-  int frames = 72;                        ///< --frames: frames per cycle of the animation, 2 to 720
-  int frameDelayMs = 40;                  ///< --frame-delay: ms per frame, 20 to 5000
-  std::optional<std::string> compare;     ///< a table from another tool: open File ▸ Compare… on it
+  std::optional<double> crankAngleDeg;               ///< crank angle to show (default 0°)
+  std::optional<std::string> image;                  ///< write Export ▸ Image (.png, .svg, .pdf) here and exit
+  std::optional<int> imagePlot;                      ///< --image-of plotN: that plot (1 is the first), not the canvas
+  std::optional<std::string> animation;              ///< write one cycle here (.gif, .mp4, .webm) and exit
+  int frames = 72;                                   ///< --frames: frames per cycle of the animation, 2 to 720
+  int frameDelayMs = 40;                             ///< --frame-delay: a GIF's ms per frame, 20 to 5000
+  double frameRate = 25.0;                           ///< --frame-rate: a video's frames per second, 1 to 120
+  std::optional<std::pair<int, int>> animationSize;  ///< --animation-size: the frames' width and height, px
+  std::optional<std::string> compare;                ///< a table from another tool: open File ▸ Compare… on it
   std::optional<std::string> compareMap;  ///< its column mapping (linkwright-cli compare's --map), compared at once
   std::optional<std::string> plots;       ///< --plots: the keys of the quantities to plot, comma-separated
   std::optional<std::pair<int, int>> windowSize;  ///< --window-size: the window's width and height, px

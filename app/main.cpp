@@ -16,6 +16,7 @@
 #include "kinematics/model/units.h"
 
 #include <QApplication>
+#include <QGraphicsView>
 #include <QIcon>
 #include <QLabel>
 #include <QTimer>
@@ -70,7 +71,37 @@ int writeAnimation(linkwright::ui::MainWindow& window, const linkwright::app::Gu
   linkwright::ui::AnimationSettings settings;
   settings.frames = options.frames;
   settings.frameDelayMs = options.frameDelayMs;
+  settings.frameRate = options.frameRate;
+  if (options.animationSize) settings.size = QSize(options.animationSize->first, options.animationSize->second);
   if (!window.exportAnimation(QString::fromStdString(*options.animation), settings)) {
+    std::cerr << "linkwright: " << window.banner()->text().toStdString() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+// File ▸ Export ▸ Image of the canvas or of one plot, once the window has settled.
+int writeImage(linkwright::ui::MainWindow& window, const linkwright::app::GuiOptions& options) {
+  showSettled(window);
+  const QString path = QString::fromStdString(*options.image);
+  bool written = false;
+  if (options.imagePlot) {
+    // Counted as Export ▸ Image's "Canvas and every plot shown" names its files (-plot1, …).
+    const QList<QGraphicsView*> views = window.plots()->graphicsViews();
+    const int index = *options.imagePlot - 1;
+    if (index >= views.size() || views[index]->isHidden()) {
+      QStringList shown;
+      for (int i = 0; i < views.size(); ++i)
+        if (!views[i]->isHidden()) shown << QStringLiteral("plot%1").arg(i + 1);
+      std::cerr << "linkwright: --image-of: plot" << *options.imagePlot << " is not shown (shown: "
+                << (shown.isEmpty() ? QStringLiteral("none") : shown.join(QStringLiteral(", "))).toStdString() << ")\n";
+      return 2;
+    }
+    written = window.exportPlotImage(index, path);
+  } else {
+    written = window.exportCanvasImage(path);
+  }
+  if (!written) {
     std::cerr << "linkwright: " << window.banner()->text().toStdString() << "\n";
     return 1;
   }
@@ -149,7 +180,7 @@ int main(int argc, char** argv) {
     window.newDocument(*k::designForExample(*options->example), QString::fromStdString(*options->example));
   if (options->file && !window.openFile(QString::fromStdString(*options->file))) {
     std::cerr << "linkwright: " << window.banner()->text().toStdString() << "\n";
-    if (options->screenshot || options->animation || options->inversionsScreenshot) return 2;
+    if (options->screenshot || options->animation || options->inversionsScreenshot || options->image) return 2;
   }
   if (options->windowSize) window.resize(options->windowSize->first, options->windowSize->second);
   if (options->crankAngleDeg) window.document()->setCrankAngle(k::degToRad(*options->crankAngleDeg));
@@ -161,8 +192,10 @@ int main(int argc, char** argv) {
   if (options->animation) return writeAnimation(window, *options);
   if (options->inversionsScreenshot)
     return takeInversionsScreenshot(window, QString::fromStdString(*options->inversionsScreenshot));
-  // With --screenshot, the designer is rendered with the table's rows on its plots.
-  if (options->compare && openComparison(window, *options) == nullptr && options->screenshot) return 2;
+  // With --screenshot or --image, the designer is rendered with the table's rows on its plots.
+  if (options->compare && openComparison(window, *options) == nullptr && (options->screenshot || options->image))
+    return 2;
+  if (options->image) return writeImage(window, *options);
   if (options->screenshot) return takeScreenshot(window, QString::fromStdString(*options->screenshot));
   window.show();
   QTimer::singleShot(0, window.animator(), &linkwright::ui::CrankAnimator::play);

@@ -24,6 +24,11 @@ packages=(
   python3-ezdxf              # reads those drawings back in a test (tests/cli/dxf_readback.py)
   libgif-dev                 # giflib: File ▸ Export ▸ Animation's GIF encoder and colour
                              # quantizer (ui/export/gif_writer.h); the tests read GIFs back with it
+  libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
+                             # FFmpeg (5.1 on Debian 12, 7.1 on Debian 13): the animation's MP4
+                             # (H.264 by libx264) and WebM (VP9 by libvpx-vp9) videos, both built
+                             # into Debian's libavcodec (ui/export/video_writer.h); the tests
+                             # decode them back with it
   libcairo2-dev pkgconf      # cairo draws the lab-report PDF (kinematics/report/); pkg-config finds it
   fonts-dejavu-core          # the report's font (DejaVu Sans: Greek letters, °, ²)
   poppler-utils              # pdftotext and pdfinfo read the report back in tests/cli/report_cli_test.cpp

@@ -743,9 +743,10 @@ void MainWindow::exportAnimationDialog() {
                                        : tr("one turn of the crank");
   AnimationDialog dialog(m_canvas->viewport()->size(), what, this);
   if (dialog.exec() != QDialog::Accepted) return;
-  QString path = QFileDialog::getSaveFileName(this, tr("Export animation"), QString(), tr("Animated GIF (*.gif)"));
+  QString path = QFileDialog::getSaveFileName(this, tr("Export animation"), QString(), dialog.fileFilter());
   if (path.isEmpty()) return;
-  if (QFileInfo(path).suffix().isEmpty()) path += ".gif";
+  // The format chosen, unless the name given ends in another one's suffix.
+  if (!animationFormatOf(path)) path += "." + dialog.suffix();
   exportAnimation(path, dialog.settings(), true);
 }
 
@@ -844,11 +845,13 @@ void MainWindow::exportImageDialog() {
   if (!chosen) return;
   const auto choice = sources.indexOf(source);
   QString selected;
-  const QString path = QFileDialog::getSaveFileName(this, tr("Export image"), QString(),
-                                                    tr("PNG image (*.png);;SVG drawing (*.svg)"), &selected);
+  const QString path =
+      QFileDialog::getSaveFileName(this, tr("Export image"), QString(),
+                                   tr("PNG image (*.png);;SVG drawing (*.svg);;PDF drawing (*.pdf)"), &selected);
   if (path.isEmpty()) return;
   QString withSuffix = path;
-  if (QFileInfo(path).suffix().isEmpty()) withSuffix += selected.contains("svg") ? ".svg" : ".png";
+  if (QFileInfo(path).suffix().isEmpty())
+    withSuffix += selected.contains("svg") ? ".svg" : selected.contains("pdf") ? ".pdf" : ".png";
   const QFileInfo info(withSuffix);
   if (choice > 0 && choice < plotOf.size()) {
     if (exportPlotImage(plotOf[choice], withSuffix))

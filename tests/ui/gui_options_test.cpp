@@ -51,6 +51,20 @@ TEST_CASE("the designer's options are read in both value forms", "[ui][options]"
   CHECK(animation.options->frames == 36);
   CHECK(animation.options->frameDelayMs == 60);
   CHECK(parse({"--animation", "a.gif"}).options->frames == 72);
+  const auto video = parse({"--animation=cycle.MP4", "--frame-rate", "29.97", "--animation-size=1281x720"});
+  REQUIRE(video.options);
+  CHECK(video.options->animation == "cycle.MP4");
+  CHECK(video.options->frameRate == 29.97);
+  CHECK(video.options->animationSize == std::pair{1281, 720});
+  CHECK(parse({"--animation", "a.webm"}).options->frameRate == 25.0);
+  CHECK_FALSE(parse({"--animation", "a.webm"}).options->animationSize);
+
+  const auto image = parse({"--image", "figure.pdf", "--image-of=plot2"});
+  REQUIRE(image.options);
+  CHECK(image.options->image == "figure.pdf");
+  CHECK(image.options->imagePlot == 2);
+  CHECK_FALSE(parse({"--image", "canvas.svg", "--image-of", "canvas"}).options->imagePlot);
+  CHECK_FALSE(parse({}).options->image);
 
   CHECK(parse({"--plots=rocker_angle,velocity_ratio"}).options->plots == "rocker_angle,velocity_ratio");
   CHECK_FALSE(parse({}).options->plots);
@@ -81,10 +95,28 @@ TEST_CASE("mistakes on the designer's command line name the option", "[ui][optio
       {{"--animation", "a.gif", "--frames", "36.5"}, "--frames: must be a whole number from 2 to 720 (got '36.5')"},
       {{"--animation", "a.gif", "--frame-delay", "6000"},
        "--frame-delay: must be a whole number from 20 to 5000 (got '6000')"},
-      {{"--frame-delay", "40"}, "--frames and --frame-delay need --animation FILE"},
+      {{"--frame-delay", "40"}, "--frames, --frame-delay, --frame-rate and --animation-size need --animation FILE"},
+      {{"--frame-rate", "30"}, "--frames, --frame-delay, --frame-rate and --animation-size need --animation FILE"},
       // It exited 1, as if the file could not be written.
       {{"--animation", "x.png"},
-       "--animation: the file name must end in .gif, the only format it writes (got 'x.png')"},
+       "--animation: the file name must end in .gif, .mp4 or .webm, the formats it writes (got 'x.png')"},
+      {{"--animation", "a.mp4", "--frame-rate", "0"},
+       "--frame-rate: must be a number of frames per second from 1 to 120 (got '0')"},
+      {{"--animation", "a.mp4", "--frame-rate", "121"}, "--frame-rate: must be a number of frames per second"},
+      {{"--animation", "a.webm", "--frame-rate", "nan"}, "--frame-rate: must be a number of frames per second"},
+      {{"--animation", "a.mp4", "--frame-delay", "40"},
+       "--frame-delay is a GIF's; a video's timing is --frame-rate FPS"},
+      {{"--animation", "a.gif", "--frame-rate", "30"},
+       "--frame-rate is a video's (.mp4, .webm); a GIF's timing is --frame-delay MS"},
+      {{"--animation", "a.mp4", "--animation-size", "0x720"},
+       "--animation-size: '0x720' must be WIDTHxHEIGHT in pixels, each 16 to 4096"},
+      {{"--animation", "a.mp4", "--animation-size", "8192x720"}, "--animation-size: '8192x720' must be"},
+      {{"--image", "a.jpg"}, "--image: the file name must end in .png, .svg or .pdf (got 'a.jpg')"},
+      {{"--image-of", "plot1"}, "--image-of needs --image FILE"},
+      {{"--image", "a.pdf", "--image-of", "plot0"}, "--image-of: 'plot0' must be canvas or plotN"},
+      {{"--image", "a.pdf", "--image-of", "chart"}, "--image-of: 'chart' must be canvas or plotN"},
+      {{"--image", "a.pdf", "--screenshot", "a.png"},
+       "give --image alone, without --screenshot, --inversions-screenshot or --animation"},
       {{"--animation", "gif"}, "--animation: the file name must end in .gif"},
       {{"--animation", "a.gif", "--screenshot", "a.png"}, "give --screenshot or --animation, not both"},
       {{"--plots="}, "--plots: give at least one key"},

@@ -232,7 +232,7 @@ TEST_CASE("canvas and plots export as PNG and SVG", "[ui][window][export]") {
   REQUIRE(window.exportPlotImage(0, dir.filePath("plot.svg")));
   CHECK(readAll(dir.filePath("plot.svg")).contains("<svg"));
   CHECK_FALSE(window.exportCanvasImage(dir.filePath("canvas.bmp")));
-  CHECK(window.banner()->text().contains(".png or .svg"));
+  CHECK(window.banner()->text().contains(".png, .svg or .pdf"));
 }
 
 TEST_CASE("presentation mode enlarges the fonts and can be left again", "[ui][window]") {

@@ -9,6 +9,7 @@
 #include "ui/geometry.h"
 
 #include <QMouseEvent>
+#include <QPaintEngine>
 #include <QPainter>
 #include <QScrollBar>
 #include <QWheelEvent>
@@ -269,8 +270,15 @@ void LinkageView::scrollByPixels(const QPointF& delta) {
   m_scrollResidue -= QPointF(dx, dy);
 }
 
-void LinkageView::drawBackground(QPainter* painter, const QRectF&) {
+void LinkageView::drawBackground(QPainter* painter, const QRectF& exposed) {
   const QString unit = QString::fromStdString(m_document->lengthUnit());
+  const QPaintEngine* engine = painter->paintEngine();
+  if (engine != nullptr && (engine->type() == QPaintEngine::Pdf || engine->type() == QPaintEngine::SVG)) {
+    // A PDF or SVG export gets the grid as lines and text, not the screen's cached pixmap.
+    painter->fillRect(exposed, colors().canvasBackground);
+    paintGrid(painter, exposed, exposed, unit, m_presentationScale);
+    return;
+  }
   const qreal ratio = viewport()->devicePixelRatioF();
   const QSize pixels = viewport()->size() * ratio;
   if (m_grid.pixmap.size() != pixels || m_grid.pixmap.devicePixelRatio() != ratio ||
@@ -285,7 +293,10 @@ void LinkageView::drawBackground(QPainter* painter, const QRectF&) {
     paintGrid(&grid, visible, visible, unit, m_presentationScale);
   }
   painter->save();
-  painter->resetTransform();  // viewport pixels, as the cache
+  // The cache is in viewport pixels: on screen the painter's transform is the viewport's, so
+  // this is the identity; a render() into a scaled or moved target (an animation's frame) puts
+  // it where the viewport lands there.
+  painter->setTransform(viewportTransform().inverted() * painter->transform());
   painter->drawPixmap(0, 0, m_grid.pixmap);
   painter->restore();
 }

@@ -55,6 +55,14 @@ std::optional<QString> saveFileAtomically(const QString& path, const QByteArray&
   return tr("Cannot write %1: %2. The previous file, if any, is unchanged.").arg(QFileInfo(path).fileName(), why);
 }
 
+std::optional<QString> saveFileThrough(const QString& path,
+                                       const std::function<std::optional<std::string>(const std::string&)>& write) {
+  const auto error = kinematics::io::writeFileSafely(path.toStdString(), write);
+  if (!error) return std::nullopt;
+  const QString why = whyOf(error->message, "cannot write " + path.toStdString());
+  return tr("Cannot write %1: %2. The previous file, if any, is unchanged.").arg(QFileInfo(path).fileName(), why);
+}
+
 std::optional<QString> saveDesignFile(const QString& path, const kinematics::Design& design) {
   return saveFileAtomically(path, QByteArray::fromStdString(kinematics::io::writeDocument(design)));
 }

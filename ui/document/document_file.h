@@ -7,7 +7,9 @@
 
 #include <QString>
 
+#include <functional>
 #include <optional>
+#include <string>
 
 namespace linkwright::ui {
 
@@ -30,5 +32,12 @@ std::optional<QString> saveDesignFile(const QString& path, const kinematics::Des
 /// Writes `bytes` to `path` through the core's one writer (kinematics/io/safe_file.h): whole or
 /// not at all, a device or FIFO written through, a symlink's target written (every export uses it).
 std::optional<QString> saveFileAtomically(const QString& path, const QByteArray& bytes);
+
+/// Writes `path` through the same writer, `write` producing the file itself at the path it is
+/// given (a temporary file beside `path`, renamed over it only if `write` returns nullopt; or
+/// `path` itself when that is a device): for a library that writes a file by its name (FFmpeg's
+/// muxers, which seek back in it). `write` returns why it failed, which the message quotes.
+std::optional<QString> saveFileThrough(const QString& path,
+                                       const std::function<std::optional<std::string>(const std::string&)>& write);
 
 }  // namespace linkwright::ui

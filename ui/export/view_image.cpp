@@ -6,7 +6,10 @@
 #include <QFileInfo>
 #include <QGraphicsView>
 #include <QImage>
+#include <QPageLayout>
+#include <QPageSize>
 #include <QPainter>
+#include <QPdfWriter>
 #include <QSvgGenerator>
 
 namespace linkwright::ui {
@@ -26,6 +29,19 @@ std::optional<QString> saveViewImage(QGraphicsView* view, const QString& path, c
     svg.setDescription(QObject::tr("Exported from Linkwright"));
     QPainter painter(&svg);
     view->render(&painter, QRectF(), view->viewport()->rect());
+  } else if (suffix == "pdf") {
+    // Vector, as the SVG: one page the view's size at 96 px to the inch (1 px = 0.75 pt, Qt's
+    // PDF pages being whole points), no margins. Paths stay paths and labels stay text
+    // (selectable, embedded as a font subset); the canvas draws its grid as lines for it.
+    QPdfWriter pdf(&buffer);
+    pdf.setResolution(96);
+    pdf.setPageLayout(QPageLayout(QPageSize(QSizeF(size) * 0.75, QPageSize::Point, {}, QPageSize::ExactMatch),
+                                  QPageLayout::Portrait, QMarginsF()));
+    pdf.setTitle(title);
+    pdf.setCreator(QObject::tr("Linkwright"));
+    QPainter painter(&pdf);
+    painter.setRenderHint(QPainter::Antialiasing);
+    view->render(&painter, QRectF(QPointF(0, 0), QSizeF(size)), view->viewport()->rect());
   } else if (suffix == "png") {
     // Twice the on-screen resolution, so the picture stays sharp in a printed report. The
     // device pixel ratio (not a painter scale) keeps pins, labels and cosmetic pens in
@@ -39,7 +55,7 @@ std::optional<QString> saveViewImage(QGraphicsView* view, const QString& path, c
     painter.end();
     image.save(&buffer, "PNG");
   } else {
-    return QObject::tr("Cannot export %1: use a .png or .svg file name.").arg(QFileInfo(path).fileName());
+    return QObject::tr("Cannot export %1: use a .png, .svg or .pdf file name.").arg(QFileInfo(path).fileName());
   }
   return saveFileAtomically(path, bytes);
 }

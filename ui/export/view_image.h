@@ -1,5 +1,6 @@
 #pragma once
-// Saves what a QGraphicsView shows (the canvas, a chart) as PNG, or as SVG for reports.
+// Saves what a QGraphicsView shows (the canvas, a chart) as PNG, or as SVG or PDF (vector: paths
+// and text, no picture inside) for reports.
 // The format follows the file's suffix.
 
 #include <QString>
@@ -10,7 +11,7 @@ class QGraphicsView;
 
 namespace linkwright::ui {
 
-/// Writes `view`'s visible contents to `path` (.png or .svg). Returns the message on failure.
+/// Writes `view`'s visible contents to `path` (.png, .svg or .pdf). Returns the message on failure.
 std::optional<QString> saveViewImage(QGraphicsView* view, const QString& path, const QString& title);
 
 }  // namespace linkwright::ui

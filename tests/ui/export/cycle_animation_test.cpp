@@ -178,7 +178,7 @@ TEST_CASE("bad animation settings or paths write nothing and say why", "[ui][exp
       {with([](auto& s) { s.frameDelayMs = 10; }), path, "Frame delay must be 20 to 5000 ms (got 10)"},
       {with([](auto& s) { s.size = QSize(8, 100); }), path, "Image width must be 16 to 4096 px (got 8)"},
       {ok, dir.filePath("no-such-folder/out.gif"), "does not exist or is not writable"},
-      {ok, dir.filePath("out.png"), "use a .gif file name"},
+      {ok, dir.filePath("out.png"), "use a .gif, .mp4 or .webm file name"},
   };
   for (const Case& c : cases) {
     CAPTURE(c.expected);
