@@ -2,6 +2,7 @@
 #include "app/cli/compare_options.h"
 #include "app/cli/option_values.h"
 
+#include "kinematics/design/balance_request.h"
 #include "kinematics/dynamics/machine_request.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/validate.h"
@@ -57,8 +58,8 @@ const std::set<std::string>& optionsOf(Command command) {
       options.insert(kinematics::fieldName(field, kinematics::FrontEnd::Cli));
     return options;
   }();
-  static const std::set<std::string> balance{"--example", "-o",       "--output",       "--fraction",
-                                             "--radius",  "--spring", "--spring-search"};
+  static const std::set<std::string> balance{"--example", "-o",       "--output",        "--fraction",
+                                             "--radius",  "--spring", "--spring-search", "--json"};
   static const std::set<std::string> cognates{"--fourbar", "--example", "--unit", "--coupler-point",
                                               "-o",        "--output",  "--json"};
   static const std::set<std::string> tolerance{"--fourbar", "--example", "--unit",  "--branch",    "--coupler-point",
@@ -398,15 +399,8 @@ std::optional<Error> checkReport(const Invocation& inv) {
 // balance makes counterweights (--fraction, --radius) or one spring (--spring or
 // --spring-search, refused together by the command): a counterweight's option would be
 // ignored by a spring balance, so it is refused.
-std::optional<Error> checkBalance(const Invocation& inv) {
-  const char* spring = inv.springEnds ? "--spring" : inv.springSearchLink ? "--spring-search" : nullptr;
-  if (spring == nullptr) return std::nullopt;
-  for (const auto& [given, option, what] :
-       {std::tuple{inv.reciprocatingFraction.has_value(), "--fraction", "the share of the reciprocating mass"},
-        {inv.counterweightRadius.has_value(), "--radius", "the counterweights' distance from their pivots"}})
-    if (given)
-      return usage(option, std::string(option) + " sets " + what + ", and a spring balance (" + spring +
-                               ") makes no counterweight: give one or the other");
+std::optional<Error> checkBalanceOptions(const Invocation& inv) {
+  if (auto e = kinematics::checkBalanceRequest(balanceRequestOf(inv))) return usage(e->field, e->message);
   return std::nullopt;
 }
 
@@ -449,7 +443,7 @@ std::optional<Error> checkCombination(const Invocation& inv) {
   if (inv.command == Command::Optimise)
     if (auto e = checkOptimise(inv)) return e;
   if (inv.command == Command::Balance)
-    if (auto e = checkBalance(inv)) return e;
+    if (auto e = checkBalanceOptions(inv)) return e;
   if (inv.command == Command::Optimise && !inv.example && !inv.documentPath)
     return usage("--example", "optimise needs FILE.json or --example NAME: the linkage to optimise");
   if (inv.command == Command::Optimise && !inv.outputFile)
@@ -600,6 +594,19 @@ kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& ar
   }
   if (auto e = checkCombination(inv)) return *e;
   return inv;
+}
+
+kinematics::BalanceRequest balanceRequestOf(const Invocation& inv) {
+  kinematics::BalanceRequest r;
+  r.fraction = inv.reciprocatingFraction;
+  r.radius = inv.counterweightRadius;
+  if (inv.springEnds) {
+    const auto comma = inv.springEnds->find(',');
+    r.spring = std::pair{inv.springEnds->substr(0, comma), inv.springEnds->substr(comma + 1)};
+  }
+  r.springSearch = inv.springSearchLink;
+  r.frontEnd = kinematics::FrontEnd::Cli;
+  return r;
 }
 
 }  // namespace linkwright::cli

@@ -7,6 +7,7 @@
 #include "app/cli/synthesize_options.h"
 
 #include "kinematics/compare/table_comparison.h"
+#include "kinematics/design/balance_request.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/request_field.h"
@@ -138,6 +139,9 @@ struct Invocation {
   std::optional<long long> evaluations;       ///< --evaluations
   std::optional<long long> starts;            ///< --starts
 };
+
+/// balance's options as the core's request (kinematics/design/balance_request.h).
+kinematics::BalanceRequest balanceRequestOf(const Invocation& invocation);
 
 /// Parses the arguments after the program name.
 kinematics::Result<Invocation> parseArguments(const std::vector<std::string>& args);

@@ -157,6 +157,10 @@ constexpr const char* kBalanceOptions =
   --spring-search LINK  instead, the spring from a point on LINK to a point on the frame,
                         both searched, that makes the RMS driving torque least; the two
                         points are added to the design as spring_link and spring_frame
+  --json                one JSON object instead of the text: method, output, length_unit;
+                        counterweights [{link, mass_kg, along, across}] with the turn's
+                        before and after figures, or spring {first, second, stiffness_N_m,
+                        free_length, preload_N} with rms_torque_before_Nm and _after_Nm
 )";
 
 constexpr const char* kAtlasOptions =

@@ -8,8 +8,8 @@
 
 #include "kinematics/design/cognates.h"
 #include "kinematics/design/fourbar_dimensions.h"
+#include "kinematics/io/cognates_json.h"
 #include "kinematics/io/document_json.h"
-#include "kinematics/io/json.h"
 #include "kinematics/io/safe_file.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
@@ -108,42 +108,6 @@ void printSpeeds(std::ostream& out, const k::CognateFourBar& f, const std::strin
         << "° (its document's grid): driven by it, it traces the part of the curve on one assembly branch.\n";
 }
 
-void printJson(std::ostream& out, const k::CognateSet& set, const std::string& unit,
-               const std::array<std::string, 2>& files) {
-  const auto point = [](const Eigen::Vector2d& p) { return k::io::JsonValue::array({p.x(), p.y()}); };
-  const auto optional = [](const std::optional<double>& v) {
-    return v ? k::io::JsonValue(*v) : k::io::JsonValue(nullptr);
-  };
-  k::io::JsonValue linkages = k::io::JsonValue::array();
-  const std::array<const k::CognateFourBar*, 3> bars{&set.original, &set.cognates[0], &set.cognates[1]};
-  for (std::size_t i = 0; i < 3; ++i) {
-    const k::CognateFourBar& f = *bars[i];
-    const k::FourBarLengths& l = f.fourBar.lengths;
-    linkages.push_back(
-        {{"name", i == 0 ? std::string("original") : "cognate " + std::to_string(i)},
-         {"file", i == 0 ? k::io::JsonValue(nullptr) : k::io::JsonValue(files[i - 1])},
-         {"crank_pivot", point(f.crankPivot)},
-         {"rocker_pivot", point(f.rockerPivot)},
-         {"lengths", {{"frame", l.frame}, {"crank", l.crank}, {"coupler", l.coupler}, {"rocker", l.rocker}}},
-         {"class", k::toString(f.grashof.category)},
-         {"worst_transmission_deg",
-          f.worstTransmission ? k::io::JsonValue(k::radToDeg(*f.worstTransmission)) : k::io::JsonValue(nullptr)},
-         {"crank_turns_with", k::toString(f.turnsWith[0])},
-         {"coupler_turns_with", k::toString(f.turnsWith[1])},
-         {"rocker_turns_with", k::toString(f.turnsWith[2])},
-         {"crank_speed_ratio_min", optional(f.crankSpeedRatioMin)},
-         {"crank_speed_ratio_max", optional(f.crankSpeedRatioMax)}});
-  }
-  out << k::io::JsonValue{{"coupler_point", set.couplerPoint},
-                          {"z", {set.z.real(), set.z.imag()}},
-                          {"third_pivot", point(set.thirdPivot)},
-                          {"constructed_at_deg", k::radToDeg(set.constructedAt)},
-                          {"length_unit", unit},
-                          {"linkages", linkages}}
-             .dump(2)
-      << "\n";
-}
-
 }  // namespace
 
 ExitCode runCognates(const Invocation& inv, std::ostream& out, std::ostream& err) {
@@ -170,7 +134,7 @@ ExitCode runCognates(const Invocation& inv, std::ostream& out, std::ostream& err
     }
   const std::string& unit = design->mechanism.lengthUnit;
   if (inv.json) {
-    printJson(out, *set, unit, files);
+    out << k::io::cognatesJson(*set, unit, {files[0], files[1]}).dump(2) << "\n";
     return ExitCode::Success;
   }
   out << "cognates of the coupler point " << set->couplerPoint << " (z = " << formatShort(set->z.real(), 5)

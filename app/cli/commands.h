@@ -78,6 +78,9 @@ std::optional<kinematics::Error> checkDriveOptions(const Invocation& invocation,
 /// assembled (exit 3), for every command that takes it.
 std::optional<kinematics::Error> checkAtOption(const Invocation& invocation, const GridDefaults& defaults);
 
+/// The grid fields as the options spell them (--rpm, --omega, --alpha, --from, …).
+const kinematics::GridFieldNames& gridOptionNames();
+
 /// `request` with --law and its options added (the core's grid rule makes them a time base:
 /// kinematics/design/sweep_grid.h), the --law-table file read; errors name --law-table.
 kinematics::Result<kinematics::SweepGridRequest> lawRequest(const Invocation& invocation, const GridDefaults& defaults,

@@ -4,12 +4,9 @@
 
 #include "app/cli/commands.h"
 
+#include "kinematics/design/drawing_request.h"
 #include "kinematics/io/dxf_export.h"
 #include "kinematics/model/number_text.h"
-#include "kinematics/model/units.h"
-#include "kinematics/model/validate.h"
-#include "kinematics/solve/motion_law.h"
-#include "kinematics/solve/pose_solver.h"
 
 #include <ostream>
 
@@ -17,27 +14,6 @@ namespace linkwright::cli {
 namespace {
 
 namespace k = kinematics;
-
-// The input as the user reads it: "crank angle 30°" or "input 12.5 mm".
-std::string inputText(const GridDefaults& d, double value) {
-  if (d.input == k::InputKind::Angle) return "crank angle " + k::formatNumber(value) + "°";
-  return "input " + k::formatNumber(value) + " " + d.lengthUnit;
-}
-
-// Where the design starts, as --at would give it: its time base's first instant, else its
-// grid's first input.
-double defaultInput(const GridDefaults& d) {
-  if (!d.time) return d.fromDeg;
-  const double q = k::motionAt(d.time->law, d.time->fromTime).position;
-  return d.input == k::InputKind::Angle ? k::radToDeg(q) : q;
-}
-
-// A core refusal as the CLI's message: the drawing's fields are the options that set them.
-std::string optionMessage(const k::Error& e) {
-  if (e.field == "holeDiameter") return "--hole: " + e.message;
-  if (e.field == "plateWidth") return "--width: " + e.message;
-  return e.message;
-}
 
 void printSummary(std::ostream& out, const std::string& path, const k::LinkDrawing& drawing, const std::string& at) {
   const int units = k::io::dxfInsUnits(drawing.lengthUnit);
@@ -59,31 +35,24 @@ ExitCode runDxf(const Invocation& inv, std::ostream& out, std::ostream& err) {
     err << "linkwright-cli: " << resolved.error().message << "\n";
     return ExitCode::BadInput;
   }
-  const k::Mechanism& m = resolved->mechanism;
-  const GridDefaults& d = resolved->defaults;
-  if (auto e = checkAtOption(inv, d)) {
+  if (auto e = checkAtOption(inv, resolved->defaults)) {
     err << "linkwright-cli: " << e->message << "\n";
     return ExitCode::BadInput;
   }
-  const double at = inv.atDeg.empty() ? defaultInput(d) : inv.atDeg.front();
-  // Positions are all a drawing needs; without rates a toggle pose still draws.
-  const auto pose = k::solvePose(m, {d.toInput(at), 0.0, 0.0}, k::SolveRequest{false, false});
-  if (!pose) {
-    err << "linkwright-cli: --at: " << resolved->source << " cannot be assembled at " << inputText(d, at) << ": "
-        << pose.error().message << "\n";
-    return ExitCode::NotAssemblable;
+  k::DrawingRequest request;
+  if (!inv.atDeg.empty()) request.at = inv.atDeg.front();
+  request.options = {inv.holeDiameter, inv.plateWidth};
+  const auto run = k::runDrawing(resolved->mechanism, resolved->defaults, resolved->source, request);
+  if (!run) {
+    err << "linkwright-cli: " << run.error().message << "\n";
+    return run.error().code == k::ErrorCode::NotAssemblable ? ExitCode::NotAssemblable : ExitCode::BadInput;
   }
-  const k::DrawingOptions options{inv.holeDiameter, inv.plateWidth};
-  const auto drawing = k::linkDrawing(m, *pose, options);
-  if (!drawing) {
-    err << "linkwright-cli: " << optionMessage(drawing.error()) << "\n";
-    return ExitCode::BadInput;
-  }
+  const k::LinkDrawing* drawing = &run->drawing;
   if (auto e = k::io::writeDxf(*drawing, *inv.outputFile)) {
     err << "linkwright-cli: " << e->message << "\n";
     return ExitCode::IoError;
   }
-  printSummary(out, *inv.outputFile, *drawing, inputText(d, at));
+  printSummary(out, *inv.outputFile, *drawing, run->atText);
   return ExitCode::Success;
 }
 

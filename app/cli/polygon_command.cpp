@@ -6,10 +6,10 @@
 #include "app/cli/commands.h"
 
 #include "kinematics/analysis/vector_polygon.h"
-#include "kinematics/io/json.h"
+#include "kinematics/design/sweep_grid.h"
+#include "kinematics/io/polygon_json.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
-#include "kinematics/model/validate.h"
 
 #include <cmath>
 #include <ostream>
@@ -66,43 +66,11 @@ void printPolygon(std::ostream& out, const k::VectorPolygon& p) {
   }
 }
 
-k::io::JsonValue vectorJson(const Eigen::Vector2d& v) { return k::io::JsonValue::array({v.x(), v.y()}); }
-
-k::io::JsonValue polygonJson(const k::VectorPolygon& p) {
-  k::io::JsonValue j;
-  j["unit"] = p.unit;
-  j["box"] = {{"lower", vectorJson(p.lower)}, {"upper", vectorJson(p.upper)}};
-  j["equations"] = k::io::JsonValue::array();
-  for (const k::PolygonEquation& e : p.equations) {
-    k::io::JsonValue ends = k::io::JsonValue::array();
-    for (const Eigen::Vector2d& end : e.ends) ends.push_back(vectorJson(end));
-    j["equations"].push_back({{"text", e.text}, {"ends", ends}, {"solver", vectorJson(e.solver)}});
-  }
-  j["vectors"] = k::io::JsonValue::array();
-  for (const k::PolygonVector& v : p.vectors)
-    j["vectors"].push_back({{"step", v.step},
-                            {"label", v.label},
-                            {"from", vectorJson(v.from)},
-                            {"to", vectorJson(v.to)},
-                            {"magnitude", v.value().norm()},
-                            {"meaning", v.meaning}});
-  j["images"] = k::io::JsonValue::array();
-  for (const k::PolygonImage& im : p.images)
-    j["images"].push_back({{"label", im.label}, {"position", vectorJson(im.position)}, {"coincident", im.coincident}});
-  return j;
-}
-
 // --omega/--rpm and --alpha with the example's defaults, in the crank's domain.
 k::Result<k::DriverState> driverAt(const Invocation& inv, const GridDefaults& d, double deg) {
-  const k::InputDomain domain = k::inputDomain(k::InputKind::Angle);
-  if (auto e = k::checkMagnitude(deg, "--at", k::kMaxAngleDeg, "degrees")) return *e;
-  // --rpm and --omega checked in their own units (the core's grid rule), before --rpm becomes rad/s.
-  if (auto e = checkDriveOptions(inv, k::InputKind::Angle)) return *e;
-  const double omega = inv.rpm ? k::rpmToRadPerSec(*inv.rpm) : inv.omega.value_or(d.omega);
-  if (auto e = k::checkMagnitude(omega, inv.rpm ? "--rpm" : "--omega", domain.rate, domain.rateUnit)) return *e;
-  const double alpha = inv.alpha.value_or(d.alpha);
-  if (auto e = k::checkMagnitude(alpha, "--alpha", domain.acceleration, domain.accelerationUnit)) return *e;
-  return k::DriverState{k::degToRad(deg), omega, alpha};
+  // --from, --to, --step and --samples are checked too, as by every command that takes them.
+  return k::crankStateAt(deg, {inv.rpm, inv.omega, inv.alpha, inv.fromDeg, inv.toDeg, inv.stepDeg, inv.samples}, d,
+                         gridOptionNames(), "--at");
 }
 
 }  // namespace
@@ -114,9 +82,8 @@ ExitCode runPolygon(const Invocation& inv, std::ostream& out, std::ostream& err)
     return ExitCode::BadInput;
   }
   const k::Mechanism& m = resolved->mechanism;
-  if (k::inputKind(m) != k::InputKind::Angle) {
-    err << "linkwright-cli: polygon needs a crank-driven linkage (" << resolved->source << " is driven by its "
-        << k::inputName(m) << ")\n";
+  if (auto e = k::checkPolygonInput(m, resolved->source)) {
+    err << "linkwright-cli: " << e->message << "\n";
     return ExitCode::BadInput;
   }
   ExitCode code = ExitCode::Success;
@@ -135,11 +102,7 @@ ExitCode runPolygon(const Invocation& inv, std::ostream& out, std::ostream& err)
       continue;
     }
     if (inv.json) {
-      all.push_back({{"crank_angle_deg", deg},
-                     {"omega_rad_s", driver->velocity},
-                     {"alpha_rad_s2", driver->acceleration},
-                     {"velocity", polygonJson(polygons->velocity)},
-                     {"acceleration", polygonJson(polygons->acceleration)}});
+      all.push_back(k::io::polygonsJson(deg, *driver, *polygons));
       continue;
     }
     out << (n == 0 ? "" : "\n") << "crank angle " << formatShort(deg) << "°, ω "

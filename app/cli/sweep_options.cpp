@@ -39,6 +39,8 @@ std::optional<Error> checkDriveOptions(const Invocation& inv, kinematics::InputK
   return std::nullopt;
 }
 
+const kinematics::GridFieldNames& gridOptionNames() { return kOptionNames; }
+
 std::optional<Error> checkAtOption(const Invocation& inv, const GridDefaults& d) {
   using namespace kinematics;
   const InputDomain domain = inputDomain(d.input);

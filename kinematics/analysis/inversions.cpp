@@ -1,5 +1,6 @@
 #include "kinematics/analysis/inversions.h"
 
+#include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/vec2.h"
@@ -166,6 +167,38 @@ Result<std::vector<SliderCrankInversion>> sliderCrankInversions(const SliderCran
     if (inv.mechanism)
       if (auto err = checkMechanism(*inv.mechanism)) return *err;
   return out;
+}
+
+}  // namespace linkwright::kinematics
+
+namespace linkwright::kinematics {
+
+Result<LinkageInversions> linkageInversions(const Mechanism& m, const std::string& source, const std::string& kind) {
+  LinkageInversions out;
+  if (const auto f = asFourBar(m, PointsOnLinks::AnyLink)) {
+    auto all = fourBarInversions(f->lengths, f->branch, m.lengthUnit);
+    if (!all) return all.error();
+    out.fourBar = f->lengths;
+    out.fourBars = std::move(*all);
+    return out;
+  }
+  if (const auto s = asSliderCrank(m, PointsOnLinks::AnyLink))
+    if (const auto g = sliderCrankGeometry(m, *s)) {
+      auto all = sliderCrankInversions(*g, m.lengthUnit);
+      if (!all) return all.error();
+      out.sliderCrank = *g;
+      out.sliderCranks = std::move(*all);
+      return out;
+    }
+  const std::string what = kind.empty() ? "neither" : "a " + kind;
+  // A linkage driven along a path or by an actuator may be a slider-crank (piston-driven is),
+  // but the inversions are built from its crank, which it does not have as its input.
+  if (inputKind(m) != InputKind::Angle)
+    return Error{ErrorCode::InvalidStructure, "mechanism",
+                 "inversions needs a four-bar or a slider-crank driven by its crank; " + source + " is " + what +
+                     " driven by its " + inputName(m) + ", a length, so it has no crank to build the inversions from"};
+  return Error{ErrorCode::InvalidStructure, "mechanism",
+               "inversions needs a four-bar or a slider-crank (" + source + " is " + what + ")"};
 }
 
 }  // namespace linkwright::kinematics

@@ -95,4 +95,19 @@ std::optional<SliderCrankGeometry> sliderCrankGeometry(const Mechanism& mechanis
 Result<std::vector<SliderCrankInversion>> sliderCrankInversions(const SliderCrankGeometry& geometry,
                                                                 const std::string& lengthUnit = "mm");
 
+/// A linkage's inversions, whichever chain it is: a four-bar's (fourBar set) or a
+/// slider-crank's (sliderCrank set).
+struct LinkageInversions {
+  std::optional<FourBarLengths> fourBar;  ///< the four-bar's lengths, its inversions in fourBars
+  std::vector<FourBarInversion> fourBars;
+  std::optional<SliderCrankGeometry> sliderCrank;  ///< the slider-crank's, its inversions in sliderCranks
+  std::vector<SliderCrankInversion> sliderCranks;
+};
+
+/// The inversions of `mechanism` as a four-bar (any points on its links) or else as a
+/// slider-crank driven by its crank. Refused, naming `source` ("the example shaper") and its
+/// `kind` ("" when not known), for any other linkage; errors of the inversions otherwise.
+Result<LinkageInversions> linkageInversions(const Mechanism& mechanism, const std::string& source,
+                                            const std::string& kind);
+
 }  // namespace linkwright::kinematics

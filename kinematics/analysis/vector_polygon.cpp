@@ -1,5 +1,6 @@
 #include "kinematics/analysis/vector_polygon.h"
 
+#include "kinematics/model/driver.h"
 #include "kinematics/model/vec2.h"
 #include "kinematics/solve/guide_line.h"
 #include "kinematics/solve/pose_solver.h"
@@ -273,6 +274,16 @@ Result<ClassroomPolygons> polygonsAt(const Mechanism& mechanism, const DriverSta
   result.velocity = velocityPolygon(mechanism, result.pose);
   result.acceleration = accelerationPolygon(mechanism, result.pose);
   return result;
+}
+
+}  // namespace linkwright::kinematics
+
+namespace linkwright::kinematics {
+
+std::optional<Error> checkPolygonInput(const Mechanism& mechanism, const std::string& source) {
+  if (inputKind(mechanism) == InputKind::Angle) return std::nullopt;
+  return Error{ErrorCode::InvalidStructure, "mechanism",
+               "polygon needs a crank-driven linkage (" + source + " is driven by its " + inputName(mechanism) + ")"};
 }
 
 }  // namespace linkwright::kinematics

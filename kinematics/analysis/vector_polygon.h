@@ -124,4 +124,8 @@ struct ClassroomPolygons {
 /// at a toggle is ErrorCode::Singular (its rates, hence its polygons, do not exist).
 Result<ClassroomPolygons> polygonsAt(const Mechanism& mechanism, const DriverState& driver);
 
+/// Error unless `mechanism` is driven by a crank, the one input polygons are drawn for;
+/// `source` names it ("the example excavator-boom").
+std::optional<Error> checkPolygonInput(const Mechanism& mechanism, const std::string& source);
+
 }  // namespace linkwright::kinematics

@@ -301,3 +301,23 @@ Result<SweepSpec> lawGridSpec(const SweepGridRequest& r, const SweepGrid& d, con
 }
 
 }  // namespace linkwright::kinematics
+
+namespace linkwright::kinematics {
+
+Result<DriverState> crankStateAt(double deg, const SweepGridRequest& request, const SweepGrid& defaults,
+                                 const GridFieldNames& names, const std::string& atName) {
+  const InputDomain domain = inputDomain(InputKind::Angle);
+  if (auto e = checkMagnitude(deg, atName, kMaxAngleDeg, "degrees")) return *e;
+  if (request.rpm && request.omega)
+    return Error{ErrorCode::InvalidValue, gridFieldKey(GridField::Rpm),
+                 names.rpm + " and " + names.omega + " cannot be used together"};
+  // rpm and omega checked in their own units (the grid rule), before rpm becomes rad/s.
+  if (auto e = checkGridRequest(request, InputKind::Angle, names)) return *e;
+  const double omega = request.rpm ? rpmToRadPerSec(*request.rpm) : request.omega.value_or(defaults.omega);
+  if (auto e = checkMagnitude(omega, request.rpm ? names.rpm : names.omega, domain.rate, domain.rateUnit)) return *e;
+  const double alpha = request.alpha.value_or(defaults.alpha);
+  if (auto e = checkMagnitude(alpha, names.alpha, domain.acceleration, domain.accelerationUnit)) return *e;
+  return DriverState{degToRad(deg), omega, alpha};
+}
+
+}  // namespace linkwright::kinematics

@@ -107,6 +107,12 @@ inline constexpr long long kDefaultLawSamples = 361;
 /// in that field's unit; nullopt when all fit.
 std::optional<Error> checkGridRequest(const SweepGridRequest& request, InputKind kind, const GridFieldNames& names);
 
+/// A crank's state at `deg` degrees (what one pose is drawn at: polygon): ω from the request's
+/// rpm or omega, else the source's; α from its alpha, else the source's. Each checked in its own
+/// unit against the crank's domain, named as `names` and `atName` spell them ("--at", "at").
+Result<DriverState> crankStateAt(double deg, const SweepGridRequest& request, const SweepGrid& defaults,
+                                 const GridFieldNames& names, const std::string& atName);
+
 /// The sweep the request asks for, with `defaults` for what it leaves out: with `law`, that law's
 /// time base (lawGridSpec); on the source's own time base its instants; else the input grid from
 /// start to stop (the last grid value not past stop) every step or at `samples` points.

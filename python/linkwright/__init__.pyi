@@ -1,5 +1,5 @@
 # Type stubs for linkwright (the extension _linkwright, re-exported). See docs/python.md.
-from typing import Any, Literal, Optional, Sequence
+from typing import Any, Literal, Optional, Sequence, overload
 
 import numpy
 import numpy.ma
@@ -93,6 +93,41 @@ class Linkage:
         `tolerance` (each figure's estimate under 'accuracy'), with the turn's curves as arrays."""
     def instant_centres(self, at: float) -> dict[str, Any]:
         """Every pair of bodies' instant centre at input `at`, the velocity ratio and mechanical advantage."""
+    @overload
+    def polygons(
+        self, at: float, *, rpm: Optional[float] = None, omega: Optional[float] = None, alpha: Optional[float] = None
+    ) -> dict[str, Any]:
+        """The velocity and acceleration polygons at crank angle `at` (degrees), as linkwright-cli polygon --json."""
+    @overload
+    def polygons(
+        self,
+        at: Sequence[float],
+        *,
+        rpm: Optional[float] = None,
+        omega: Optional[float] = None,
+        alpha: Optional[float] = None,
+    ) -> list[dict[str, Any]]:
+        """The polygons at each crank angle of `at`, in order."""
+    def inversions(self) -> dict[str, Any]:
+        """A four-bar's or slider-crank's four inversions, as linkwright-cli inversions --json."""
+    def cognates(self, output: Optional[str] = None, *, coupler_point: Optional[str] = None) -> dict[str, Any]:
+        """The two Roberts-Chebyshev cognates, as linkwright-cli cognates --json, each with its 'linkage';
+        with output=PREFIX written to PREFIX-1.linkwright and PREFIX-2.linkwright."""
+    def balance(
+        self,
+        output: Optional[str] = None,
+        *,
+        fraction: Optional[float] = None,
+        radius: Optional[float] = None,
+        spring: Optional[tuple[str, str]] = None,
+        spring_search: Optional[str] = None,
+    ) -> dict[str, Any]:
+        """Counterweights, or the spring that makes the RMS driving torque least, as linkwright-cli balance
+        --json, with the balanced 'linkage'; with output=PATH the design written there."""
+    def dxf(
+        self, output: str, *, at: Optional[float] = None, hole: Optional[float] = None, width: Optional[float] = None
+    ) -> dict[str, Any]:
+        """Writes the links at input `at` as a DXF drawing to `output`, the bytes linkwright-cli dxf writes."""
     def tolerance_study(
         self,
         tolerance: float,

@@ -30,6 +30,18 @@ void bindCentres(pybind11::class_<Linkage>& linkage);
 /// Linkage.machine (machine.cpp).
 void bindMachine(pybind11::class_<Linkage>& linkage);
 
+/// Linkage.polygons and Linkage.inversions (classroom.cpp).
+void bindClassroom(pybind11::class_<Linkage>& linkage);
+
+/// Linkage.cognates (cognates.cpp).
+void bindCognates(pybind11::class_<Linkage>& linkage);
+
+/// Linkage.balance (balance.cpp).
+void bindBalance(pybind11::class_<Linkage>& linkage);
+
+/// Linkage.dxf (dxf.cpp).
+void bindDxf(pybind11::class_<Linkage>& linkage);
+
 /// Linkage.extremes (extremes.cpp).
 void bindExtremes(pybind11::class_<Linkage>& linkage);
 

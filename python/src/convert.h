@@ -3,6 +3,8 @@
 // raised as linkwright.Error by the translator module.cpp registers, and numbers handed to
 // Python with None where the core has none, so no NaN or infinity is handed out.
 
+#include "kinematics/io/json.h"
+#include "kinematics/io/safe_file.h"
 #include "kinematics/model/result.h"
 #include "kinematics/model/units.h"
 
@@ -74,6 +76,26 @@ inline py::object maskedArray(const std::vector<double>& values, const std::vect
     m(static_cast<py::ssize_t>(j)) = !ok;
   }
   return py::module_::import("numpy.ma").attr("MaskedArray")(data, py::arg("mask") = mask);
+}
+
+/// The core's JSON (what linkwright-cli --json prints) as Python objects: dicts, lists, str,
+/// int, float, bool and None, to the bit (Python's json reads the core's shortest round-trip text).
+inline py::object fromJson(const kinematics::io::JsonValue& json) {
+  return py::module_::import("json").attr("loads")(json.dump());
+}
+
+/// `values` as a 1-D NumPy array of float64.
+inline py::array_t<double> array(const std::vector<double>& values) {
+  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
+}
+
+/// Writes `contents` to `path` through the core's one writer (kinematics/io/safe_file.h: atomic,
+/// the old file kept on failure); a failure raises OSError with the core's sentence and `more`.
+inline void writeOrThrow(const std::string& path, std::string_view contents, const std::string& more = {}) {
+  if (auto e = kinematics::io::writeFileSafely(path, contents)) {
+    PyErr_SetString(PyExc_OSError, (e->message + more).c_str());
+    throw py::error_already_set();
+  }
 }
 
 }  // namespace linkwright::python

@@ -62,8 +62,10 @@ k::Result<Linkage> exampleLinkage(const std::string& name) {
     for (const k::Example& x : k::examples()) names += (names.empty() ? "" : ", ") + x.name;
     return k::Error{k::ErrorCode::InvalidValue, "name", "no example named '" + name + "' (available: " + names + ")"};
   }
-  return Linkage{std::move(e->mechanism), k::sweepGridOf(*e), std::move(e->dynamics), e->kind,
-                 "the example " + e->name};
+  const k::Design design = k::designFromExample(*e);
+  return Linkage{std::move(e->mechanism),  k::sweepGridOf(*e),
+                 std::move(e->dynamics),   e->kind,
+                 "the example " + e->name, {design.omega, design.alpha, design.fromDeg, design.toDeg, design.samples}};
 }
 
 k::Result<Linkage> fourBarLinkage(const k::FourBarLengths& lengths, const std::string& unit, const std::string& branch,
@@ -93,16 +95,28 @@ k::Result<Linkage> loadLinkage(const std::string& path) {
 }
 
 Linkage designLinkage(const k::Design& design, std::string source) {
-  return Linkage{design.mechanism, k::sweepGridOf(design), design.dynamics, design.kind, std::move(source)};
+  return Linkage{design.mechanism,  k::sweepGridOf(design),
+                 design.dynamics,   design.kind,
+                 std::move(source), {design.omega, design.alpha, design.fromDeg, design.toDeg, design.samples}};
 }
 
-std::string linkageState(const Linkage& linkage) {
+k::Design linkageDesign(const Linkage& linkage) {
   k::Design d;
   d.kind = linkage.kind;
   d.mechanism = linkage.mechanism;
   d.dynamics = linkage.dynamics;
+  d.omega = linkage.designGrid.omega;
+  d.alpha = linkage.designGrid.alpha;
+  d.fromDeg = linkage.designGrid.fromDeg;
+  d.toDeg = linkage.designGrid.toDeg;
+  d.samples = linkage.designGrid.samples;
   d.time = linkage.grid.time;
   if (d.time) d.samples = static_cast<std::size_t>(linkage.grid.timeSamples);
+  return d;
+}
+
+std::string linkageState(const Linkage& linkage) {
+  const k::Design d = linkageDesign(linkage);
   // The grid's numbers as hexadecimal floats (exact), then the source's name, then the document.
   const k::SweepGrid& g = linkage.grid;
   std::ostringstream out;

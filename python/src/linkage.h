@@ -27,7 +27,20 @@ struct Linkage {
   kinematics::LinkageDynamics dynamics;  ///< masses and loads, if the source gives them
   std::string kind;                      ///< "four-bar", "slider-crank", …; "" when not known
   std::string source;                    ///< "the example NAME", a path, "four_bar()": for messages
+  /// The grid of the source as a design (linkwright-cli's resolveDesign: an example sampled
+  /// every 0.5° over its range, a document's own grid; fourBarDesign's for four_bar()): what
+  /// cognates, balance and optimise start from, as the CLI's do.
+  struct DesignGrid {
+    double omega = 1.0;         ///< rad/s
+    double alpha = 0.0;         ///< rad/s²
+    double fromDeg = 0.0;       ///< degrees (a linear driver: its length unit)
+    double toDeg = 360.0;       ///< likewise
+    std::size_t samples = 721;  ///< both ends counted
+  } designGrid;
 };
+
+/// The linkage as the design the CLI reads from the same source (Linkage::designGrid).
+kinematics::Design linkageDesign(const Linkage& linkage);
 
 /// The built-in example `name`; an unknown name is an error listing the names.
 kinematics::Result<Linkage> exampleLinkage(const std::string& name);

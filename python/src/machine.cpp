@@ -20,10 +20,6 @@ namespace {
 
 namespace k = kinematics;
 
-py::array_t<double> array(const std::vector<double>& values) {
-  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
-}
-
 std::vector<double> inDegrees(std::vector<double> radians) {
   for (double& v : radians) v = k::radToDeg(v);
   return radians;

@@ -247,6 +247,10 @@ PYBIND11_MODULE(_linkwright, module) {
   lp::bindCentres(linkage);
   lp::bindExtremes(linkage);
   lp::bindMachine(linkage);
+  lp::bindClassroom(linkage);
+  lp::bindCognates(linkage);
+  lp::bindBalance(linkage);
+  lp::bindDxf(linkage);
   lp::bindTolerance(linkage);
   lp::bindSynthesis(module);
   lp::bindProblems(module);
