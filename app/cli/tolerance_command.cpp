@@ -8,12 +8,12 @@
 #include "app/cli/commands.h"
 #include "app/cli/progress.h"
 
-#include "kinematics/design/tolerance_monte_carlo.h"
-#include "kinematics/design/tolerance_sensitivity.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/json.h"
 #include "kinematics/io/safe_file.h"
 #include "kinematics/model/number_text.h"
+#include "kinematics/tune/tolerance_monte_carlo.h"
+#include "kinematics/tune/tolerance_sensitivity.h"
 
 #include <algorithm>
 #include <limits>

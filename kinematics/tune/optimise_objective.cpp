@@ -1,4 +1,4 @@
-#include "kinematics/synthesis/optimise_objective.h"
+#include "kinematics/tune/optimise_objective.h"
 
 #include "kinematics/analysis/transmission.h"
 #include "kinematics/dynamics/machine_duty.h"
