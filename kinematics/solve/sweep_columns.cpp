@@ -8,8 +8,6 @@
 namespace linkwright::kinematics {
 namespace {
 
-bool isDyad(const Point& p) { return hasAssemblyBranch(p.definition); }
-
 // The input's column: the crank angle in degrees, named for the driven link, whose own angle
 // column it replaces ("crank_angle_deg"; "rocker_angle_deg" for a four-bar driven from its
 // rocker), or the linear driver's coordinate, named for its point ("tip_s_m") or actuator
@@ -99,12 +97,10 @@ std::vector<SweepColumn> sweepColumns(const Mechanism& m, const SolveRequest& re
     if (vel) columns.push_back({name + "_omega_rad_s", Q::LinkOmega, k});
     if (acc) columns.push_back({name + "_alpha_rad_s2", Q::LinkAlpha, k});
   }
-  std::size_t dyads = 0;
-  for (const Point& p : m.points) dyads += isDyad(p) ? 1 : 0;
-  for (std::size_t i = 0; i < m.points.size(); ++i)
-    if (isDyad(m.points[i]))
-      columns.push_back({dyads > 1 ? "transmission_angle_" + m.points[i].name + "_deg" : "transmission_angle_deg",
-                         Q::TransmissionAngle, i});
+  const std::vector<std::size_t> joints = transmissionJoints(m);
+  for (const std::size_t i : joints)
+    columns.push_back({joints.size() > 1 ? "transmission_angle_" + m.points[i].name + "_deg" : "transmission_angle_deg",
+                       Q::TransmissionAngle, i});
   const std::string& u = m.lengthUnit;
   for (std::size_t i = 0; i < m.points.size(); ++i) {
     if (std::holds_alternative<GroundPoint>(m.points[i].definition)) continue;

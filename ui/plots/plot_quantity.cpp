@@ -96,11 +96,7 @@ std::vector<PlotCurve> plotCurves(const k::Mechanism& m, const k::Pose& pose) {
   const auto model = k::centreModel(m);  // bodies found once: link numbers and ratios
   const std::vector<std::size_t> numbers = model ? model->linkNumbers : k::linkNumbers(m);
   addLinkCurves(out, m, numbers, ColumnQuantity::LinkAngle, QStringLiteral("θ"), QStringLiteral("_angle"));
-  std::vector<std::size_t> dyads;  // the joints with a transmission angle
-  for (std::size_t i = 0; i < m.points.size(); ++i)
-    if (std::holds_alternative<k::RrrPoint>(m.points[i].definition) ||
-        std::holds_alternative<k::RrpPoint>(m.points[i].definition))
-      dyads.push_back(i);
+  const std::vector<std::size_t> dyads = k::transmissionJoints(m);
   for (std::size_t d = 0; d < dyads.size(); ++d) {
     const QString point = QString::fromStdString(m.points[dyads[d]].name);
     const bool one = dyads.size() == 1;
