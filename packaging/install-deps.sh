@@ -19,7 +19,7 @@ packages=(
   libeigen3-dev              # linear algebra for the kinematics core
   nlohmann-json3-dev         # the document reader's JSON parser
   libnlopt-dev               # NLopt: Nelder–Mead with bounds optimises a linkage
-                             # (kinematics/synthesis/optimise_linkage.h)
+                             # (kinematics/tune/optimise_linkage.h)
   libdxflib-dev              # dxflib (QCAD's DXF library): the DXF drawings of the links
   python3-ezdxf              # reads those drawings back in a test (tests/cli/dxf_readback.py)
   libgif-dev                 # giflib: File ▸ Export ▸ Animation's GIF encoder and colour

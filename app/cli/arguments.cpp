@@ -6,7 +6,7 @@
 #include "kinematics/dynamics/machine_request.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/validate.h"
-#include "kinematics/synthesis/optimise_linkage.h"
+#include "kinematics/tune/optimise_linkage.h"
 
 #include <charconv>
 #include <cmath>

@@ -124,13 +124,13 @@ struct Invocation {
   std::optional<double> counterweightRadius;    ///< --radius, in link lengths
   std::optional<std::string> springEnds;        ///< --spring LINK:POINT,POINT (balance by a spring)
   std::optional<std::string> springSearchLink;  ///< --spring-search LINK (the spring's ends searched)
-  // tolerance (kinematics/design/tolerance_monte_carlo.h); the core checks the ranges.
+  // tolerance (kinematics/tune/tolerance_monte_carlo.h); the core checks the ranges.
   std::optional<double> tolerance;  ///< --tolerance, ± on every dimension, length unit
   /// --tolerance-of "NAME=T,…": dimensions with a ± of their own (tolerance).
   std::vector<std::pair<std::string, double>> toleranceOf;
   std::optional<long long> monteCarloSamples;  ///< --mc-samples
   std::optional<unsigned long long> seed;      ///< --seed
-  // optimise (kinematics/synthesis/optimise_linkage.h); the core checks the ranges.
+  // optimise (kinematics/tune/optimise_linkage.h); the core checks the ranges.
   std::optional<std::string> objective;       ///< --objective KIND[:ARGUMENT], parsed by the command
   std::optional<std::string> objectivePoint;  ///< --point, the path objective's point (default P)
   std::optional<std::string> pathMeasure;     ///< --path-measure worst|rms

@@ -1,4 +1,4 @@
-// `linkwright-cli atlas`: the coupler-curve atlas (kinematics/design/coupler_atlas.h): every
+// `linkwright-cli atlas`: the coupler-curve atlas (kinematics/explore/coupler_atlas.h): every
 // cell of a grid of four-bars over link ratios and coupler-point places, its Grashof class, how
 // its crank moves and what its curve has (cusps, crunodes, symmetry, straight and circular
 // runs, with where), the cells --filter keeps; as text, one JSON object, or with -o a CSV

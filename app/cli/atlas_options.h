@@ -1,9 +1,9 @@
 #pragma once
-// `linkwright-cli atlas …`: the coupler-curve atlas's options (kinematics/design/coupler_atlas.h),
+// `linkwright-cli atlas …`: the coupler-curve atlas's options (kinematics/explore/coupler_atlas.h),
 // parsed into a plain request. Every error names the option, the value and the accepted range.
 
-#include "kinematics/design/atlas_filter.h"
-#include "kinematics/design/coupler_atlas.h"
+#include "kinematics/explore/atlas_filter.h"
+#include "kinematics/explore/coupler_atlas.h"
 #include "kinematics/model/result.h"
 
 #include <optional>

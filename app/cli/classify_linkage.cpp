@@ -38,9 +38,7 @@ struct TransmissionExtremes {
 std::vector<TransmissionExtremes> transmissionExtremes(const k::Mechanism& m, const k::SweepSpec& spec,
                                                        const k::SweepResult& sweep) {
   std::vector<TransmissionExtremes> out;
-  for (std::size_t i = 0; i < m.points.size(); ++i) {
-    const auto& def = m.points[i].definition;
-    if (!std::holds_alternative<k::RrrPoint>(def) && !std::holds_alternative<k::RrpPoint>(def)) continue;
+  for (const std::size_t i : k::transmissionJoints(m)) {
     std::vector<bool> valid(sweep.size());
     for (std::size_t j = 0; j < sweep.size(); ++j) valid[j] = sweep.assembled(j);
     const auto e = k::refineExtrema(m, spec, sweep.transmissionAngle[i], valid,

@@ -1,13 +1,13 @@
 // `linkwright-cli cognates`: a four-bar's two Roberts–Chebyshev cognates
-// (kinematics/design/cognates.h), each written as a document PREFIX-1.linkwright and
+// (kinematics/explore/cognates.h), each written as a document PREFIX-1.linkwright and
 // PREFIX-2.linkwright with its coupler point named P, and a table of the three: ground pivots,
 // lengths, Grashof class, worst transmission angle over the cycle, and the speed each crank must
 // turn at for the three to move together. Text for reading, or one JSON object.
 
 #include "app/cli/commands.h"
 
-#include "kinematics/design/cognates.h"
 #include "kinematics/design/fourbar_dimensions.h"
+#include "kinematics/explore/cognates.h"
 #include "kinematics/io/cognates_json.h"
 #include "kinematics/io/document_json.h"
 #include "kinematics/io/safe_file.h"

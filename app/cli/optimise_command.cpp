@@ -1,5 +1,5 @@
 // `linkwright-cli optimise`: a linkage's dimensions changed to improve one objective
-// (kinematics/synthesis/optimise_linkage.h) within ranges, keeping its Grashof class, branch,
+// (kinematics/tune/optimise_linkage.h) within ranges, keeping its Grashof class, branch,
 // fixed pivots and its motion through the whole grid; the result written as a document through
 // the one writer, and the objective before and after with the dimensions that changed printed
 // as text, or as one JSON object.
@@ -14,7 +14,7 @@
 #include "kinematics/io/safe_file.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
-#include "kinematics/synthesis/optimise_linkage.h"
+#include "kinematics/tune/optimise_linkage.h"
 
 #include <cmath>
 #include <ostream>

@@ -8,12 +8,12 @@
 #include "app/cli/commands.h"
 #include "app/cli/progress.h"
 
-#include "kinematics/design/tolerance_monte_carlo.h"
-#include "kinematics/design/tolerance_sensitivity.h"
 #include "kinematics/io/csv_writer.h"
 #include "kinematics/io/json.h"
 #include "kinematics/io/safe_file.h"
 #include "kinematics/model/number_text.h"
+#include "kinematics/tune/tolerance_monte_carlo.h"
+#include "kinematics/tune/tolerance_sensitivity.h"
 
 #include <algorithm>
 #include <limits>
@@ -29,12 +29,7 @@ constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 
 // The unit after a column's name: "coupler_angle_deg" → "deg", "P_x_mm" → "mm".
 std::string unitOf(const k::SweepColumn& c, const std::string& lengthUnit) {
-  switch (c.quantity) {
-  case k::ColumnQuantity::LinkAngle: return "deg";
-  case k::ColumnQuantity::LinkOmega: return "rad/s";
-  case k::ColumnQuantity::LinkAlpha: return "rad/s²";
-  default: return lengthUnit;
-  }
+  return k::columnUnit(c.quantity, lengthUnit);
 }
 
 // The study's grid input at a sample, as its column shows it (degrees, length or seconds).

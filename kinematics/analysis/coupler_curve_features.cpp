@@ -3,6 +3,7 @@
 #include "kinematics/analysis/box_pairs.h"
 #include "kinematics/analysis/curve_shape_fits.h"
 #include "kinematics/model/units.h"
+#include "kinematics/solve/golden_section.h"
 
 #include <Eigen/Geometry>
 
@@ -30,30 +31,8 @@ struct SpeedAround {
   }
 };
 
-// The least of a function that has one minimum in [lo, hi], by golden section (the bracket
-// shrinks to 1e-12 of itself in 58 steps).
-template <class F>
-double goldenMinimum(const F& f, double lo, double hi) {
-  const double g = 0.6180339887498949;
-  double a = hi - g * (hi - lo), b = lo + g * (hi - lo);
-  double fa = f(a), fb = f(b);
-  for (int k = 0; k < 58; ++k) {
-    if (fa < fb) {
-      hi = b;
-      b = a;
-      fb = fa;
-      a = hi - g * (hi - lo);
-      fa = f(a);
-    } else {
-      lo = a;
-      a = b;
-      fa = fb;
-      b = lo + g * (hi - lo);
-      fb = f(b);
-    }
-  }
-  return 0.5 * (lo + hi);
-}
+// A golden-section search of 58 steps shrinks its bracket to 1e-12 of itself.
+constexpr int kCuspSearchSteps = 58;
 
 // Where two chords cross, as their parameters; none if they do not (or are parallel).
 std::optional<std::pair<double, double>> chordCrossing(const CurvePiece& a, const CurvePiece& b) {
@@ -99,7 +78,9 @@ std::vector<Cusp> findCusps(const CouplerCurve& curve, double size) {
     const CurvePiece before = curvePiece(curve, prev), after = curvePiece(curve, i);
     if (!before.cubic || !after.cubic) continue;
     const SpeedAround around{&before, &after};
-    const double u = goldenMinimum([&](double v) { return around.speedSquared(v); }, -1.0, 1.0);
+    const double u =
+        goldenSectionMinimum([&](double v) { return around.speedSquared(v); }, -1.0, 1.0, 0.0, kCuspSearchSteps)
+            .middle();
     const double least = std::sqrt(around.speedSquared(u));
     if (least > limit) continue;
     cusps.push_back({around.angle(u), around.point(u), least});

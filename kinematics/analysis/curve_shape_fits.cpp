@@ -3,6 +3,7 @@
 #include "kinematics/analysis/point_tree.h"
 #include "kinematics/analysis/window_fits.h"
 #include "kinematics/model/units.h"
+#include "kinematics/solve/golden_section.h"
 
 #include <Eigen/Dense>
 
@@ -136,14 +137,9 @@ std::optional<SymmetryAxis> findSymmetry(const CouplerCurve& curve, double size)
   if (candidates.size() > 2) candidates.resize(2);
   std::optional<SymmetryAxis> best;
   for (const auto& [coarseMismatch, phi0] : candidates) {
-    double lo = phi0 - step, hi = phi0 + step;
-    const double gr = 0.6180339887498949;
-    for (int k = 0; k < 32; ++k) {
-      const double a = hi - gr * (hi - lo), b = lo + gr * (hi - lo);
-      if (mismatch(middle, measured, g, a, true) < mismatch(middle, measured, g, b, true)) hi = b;
-      else lo = a;
-    }
-    const double phi = 0.5 * (lo + hi);
+    const double phi = goldenSectionMinimum([&](double a) { return mismatch(middle, measured, g, a, true); },
+                                            phi0 - step, phi0 + step, 0.0, 32)
+                           .middle();
     const double deviation = mismatch(curve.point, measured, g, phi, true);
     if (deviation > kSymmetryTolerance * size || (best && deviation >= best->deviation)) continue;
     Eigen::Vector2d d = directionAt(phi);

@@ -1,6 +1,7 @@
 #include "kinematics/analysis/extrema.h"
 
 #include "kinematics/model/units.h"
+#include "kinematics/solve/golden_section.h"
 #include "kinematics/solve/pose_solver.h"
 
 #include <cmath>
@@ -40,30 +41,14 @@ struct Search {
   }
 
   Extremum maximize(double lo, double hi, double sign, const Extremum& start, double tolerance) {
-    constexpr double kInvPhi = 0.6180339887498949;
+    // Every pose the search solves counts: the best of them is the extremum.
     Extremum best = start;
-    auto consider = [&](double parameter, std::optional<double> v) {
+    auto consider = [&](double parameter) {
+      const std::optional<double> v = evaluate(parameter);
       if (v && sign * *v > sign * best.value) best = at(*v, parameter, true);
       return v ? sign * *v : -INFINITY;
     };
-    double a = lo, b = hi;
-    double x1 = b - kInvPhi * (b - a), x2 = a + kInvPhi * (b - a);
-    double f1 = consider(x1, evaluate(x1)), f2 = consider(x2, evaluate(x2));
-    for (int i = 0; i < 200 && b - a > tolerance; ++i) {
-      if (f1 < f2) {
-        a = x1;
-        x1 = x2;
-        f1 = f2;
-        x2 = a + kInvPhi * (b - a);
-        f2 = consider(x2, evaluate(x2));
-      } else {
-        b = x2;
-        x2 = x1;
-        f2 = f1;
-        x1 = b - kInvPhi * (b - a);
-        f1 = consider(x1, evaluate(x1));
-      }
-    }
+    (void)goldenSectionMaximum(consider, lo, hi, tolerance);
     return best;
   }
 };

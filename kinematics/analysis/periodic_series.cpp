@@ -1,5 +1,7 @@
 #include "kinematics/analysis/periodic_series.h"
 
+#include "kinematics/solve/golden_section.h"
+
 #include <unsupported/Eigen/FFT>
 
 #include <algorithm>
@@ -15,29 +17,6 @@ constexpr double kAngleTolerance = 1e-10;  // rad, the golden-section search's b
 constexpr std::size_t kMostBrackets = 8;   // the highest local maxima searched
 constexpr double kNegligible = 1e-17;      // a coefficient below this share of the largest is dropped
 constexpr std::size_t kExactEvery = 64;    // the cos/sin recurrence restarts from std::cos/sin this often
-
-double goldenMaximum(const std::function<double(double)>& f, double low, double high, double& at) {
-  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
-  double x1 = high - ratio * (high - low), x2 = low + ratio * (high - low);
-  double f1 = f(x1), f2 = f(x2);
-  while (high - low > kAngleTolerance) {
-    if (f1 < f2) {
-      low = x1;
-      x1 = x2;
-      f1 = f2;
-      x2 = low + ratio * (high - low);
-      f2 = f(x2);
-    } else {
-      high = x2;
-      x2 = x1;
-      f2 = f1;
-      x1 = high - ratio * (high - low);
-      f1 = f(x1);
-    }
-  }
-  at = f1 < f2 ? x2 : x1;
-  return std::max(f1, f2);
-}
 
 // The series' values at the n samples of its grid, by the inverse transform: O(n log n), where
 // evaluating it at each sample would be O(n K).
@@ -167,8 +146,7 @@ PeriodicPeak refinePeriodicMaximum(const std::function<double(double)>& f, doubl
   if (n < 3) return best;
   for (std::size_t i = 0; i < searched; ++i) {
     const double centre = theta0 + step * static_cast<double>(brackets[i]);
-    double at = centre;
-    const double v = goldenMaximum(f, centre - step, centre + step, at);
+    const auto [at, v] = goldenSectionMaximum(f, centre - step, centre + step, kAngleTolerance).best();
     if (v > best.value) best = {v, foldIntoTurn(at, theta0)};
   }
   return best;

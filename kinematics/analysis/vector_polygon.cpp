@@ -4,6 +4,7 @@
 #include "kinematics/model/vec2.h"
 #include "kinematics/solve/guide_line.h"
 #include "kinematics/solve/pose_solver.h"
+#include "kinematics/solve/sweep_columns.h"
 
 #include <algorithm>
 #include <cctype>
@@ -46,7 +47,7 @@ public:
   Builder(const Mechanism& mechanism, const Pose& solved, PolygonKind kind)
       : m(mechanism), pose(solved), vel(kind == PolygonKind::Velocity) {
     out.kind = kind;
-    out.unit = mechanism.lengthUnit + (vel ? "/s" : "/s²");
+    out.unit = columnUnit(vel ? ColumnQuantity::PointVx : ColumnQuantity::PointAx, mechanism.lengthUnit);
     out.images.push_back({"o", PointId{0}, Eigen::Vector2d::Zero(), false});
   }
 

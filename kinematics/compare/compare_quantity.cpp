@@ -14,23 +14,28 @@ struct Shape {
   std::string suffix;  // the sweep column's unit suffix
 };
 
-Shape shapeOf(ColumnQuantity q, const std::string& u) {
+Dimension dimensionOf(ColumnQuantity q) {
   switch (q) {
   case ColumnQuantity::InputAngle:
   case ColumnQuantity::LinkAngle:
-  case ColumnQuantity::TransmissionAngle: return {Dimension::Angle, "_deg"};
-  case ColumnQuantity::LinkOmega: return {Dimension::AngularRate, "_rad_s"};
-  case ColumnQuantity::LinkAlpha: return {Dimension::AngularAcceleration, "_rad_s2"};
+  case ColumnQuantity::TransmissionAngle: return Dimension::Angle;
+  case ColumnQuantity::LinkOmega: return Dimension::AngularRate;
+  case ColumnQuantity::LinkAlpha: return Dimension::AngularAcceleration;
   case ColumnQuantity::InputLength:
   case ColumnQuantity::PointX:
-  case ColumnQuantity::PointY: return {Dimension::Length, "_" + u};
+  case ColumnQuantity::PointY: return Dimension::Length;
   case ColumnQuantity::PointVx:
-  case ColumnQuantity::PointVy: return {Dimension::Velocity, "_" + u + "_s"};
+  case ColumnQuantity::PointVy: return Dimension::Velocity;
   case ColumnQuantity::PointAx:
-  case ColumnQuantity::PointAy: return {Dimension::Acceleration, "_" + u + "_s2"};
+  case ColumnQuantity::PointAy: return Dimension::Acceleration;
   case ColumnQuantity::Time: break;
   }
-  return {Dimension::Time, "_s"};
+  return Dimension::Time;
+}
+
+// The suffix is the sweep column's own (sweep_columns.h: columnUnit).
+Shape shapeOf(ColumnQuantity q, const std::string& u) {
+  return {dimensionOf(q), "_" + kinematics::unitInName(kinematics::columnUnit(q, u))};
 }
 
 // "rad/s^2", "rad/s²", "deg/sec**2" → "rad/s2", "deg/s2".

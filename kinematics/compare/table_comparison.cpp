@@ -4,6 +4,7 @@
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
+#include "kinematics/solve/golden_section.h"
 #include "kinematics/solve/pose_solver.h"
 
 #include <algorithm>
@@ -157,14 +158,8 @@ double squares(const FitCells& cells, const Evaluation& ev, const CellSet& set) 
 
 // The minimum of `cost` on [a, b] by golden section, to 1e-9 of the bound.
 template <typename Cost>
-double goldenSection(const Cost& cost, double a, double b, double bound) {
-  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-  double x1 = b - g * (b - a), x2 = a + g * (b - a), f1 = cost(x1), f2 = cost(x2);
-  while (b - a > 1e-9 * std::max(1.0, bound)) {
-    if (f1 < f2) b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = cost(x1);
-    else a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = cost(x2);
-  }
-  return (a + b) / 2.0;
+double offsetMinimum(const Cost& cost, double a, double b, double bound) {
+  return goldenSectionMinimum(cost, a, b, 1e-9 * std::max(1.0, bound)).middle();
 }
 
 struct OffsetFit {
@@ -218,14 +213,14 @@ OffsetFit fitOffset(const Mechanism& m, const CompareDrive& drive, const io::Num
     const double offset = -bound + i * step;
     if (const double s = robustMisfit(cells, at(offset)); s < bestCost) best = offset, bestCost = s;
   }
-  double offset = goldenSection([&](double d) { return robustMisfit(cells, at(d)); }, std::max(-bound, best - step),
+  double offset = offsetMinimum([&](double d) { return robustMisfit(cells, at(d)); }, std::max(-bound, best - step),
                                 std::min(bound, best + step), bound);
   if (robustMisfit(cells, at(offset)) > bestCost) offset = best;
 
   CellSet used = inliers(cells, at(offset));
   for (int round = 0; round < 10; ++round) {
     const auto cost = [&](double d) { return squares(cells, at(d), used); };
-    const double refined = goldenSection(cost, std::max(-bound, offset - step), std::min(bound, offset + step), bound);
+    const double refined = offsetMinimum(cost, std::max(-bound, offset - step), std::min(bound, offset + step), bound);
     if (cost(refined) <= cost(offset)) offset = refined;
     CellSet next = inliers(cells, at(offset));
     if (next == used) break;

@@ -1,10 +1,10 @@
 #pragma once
-// A four-bar's Roberts–Chebyshev cognates as JSON (kinematics/design/cognates.h), written once
+// A four-bar's Roberts–Chebyshev cognates as JSON (kinematics/explore/cognates.h), written once
 // for linkwright-cli cognates --json and Python's Linkage.cognates: the coupler point, z, the
 // third ground pivot, where they were built, and the original and each cognate with its
 // pivots, lengths, class, worst transmission angle and the speed its crank turns at.
 
-#include "kinematics/design/cognates.h"
+#include "kinematics/explore/cognates.h"
 #include "kinematics/io/json.h"
 
 #include <array>

@@ -14,4 +14,11 @@ std::optional<LinkId> Mechanism::findLink(const std::string& name) const {
   return std::nullopt;
 }
 
+std::vector<std::size_t> transmissionJoints(const Mechanism& m) {
+  std::vector<std::size_t> joints;
+  for (std::size_t i = 0; i < m.points.size(); ++i)
+    if (hasTransmissionAngle(m.points[i].definition)) joints.push_back(i);
+  return joints;
+}
+
 }  // namespace linkwright::kinematics

@@ -209,4 +209,13 @@ struct Mechanism {
   std::optional<LinkId> findLink(const std::string& name) const;
 };
 
+/// True for the joints that have a transmission angle: the points hasAssemblyBranch names (RRR
+/// and RRP dyads, and linear actuators, whose angle is the one at the rod's end between the rod
+/// and the link it drives). The one rule: the sweep's columns and the CSV, the plots and readouts,
+/// classify and the optimiser all take their joints from here.
+inline bool hasTransmissionAngle(const PointDefinition& d) { return hasAssemblyBranch(d); }
+
+/// The indices of the points with a transmission angle (hasTransmissionAngle), in point order.
+std::vector<std::size_t> transmissionJoints(const Mechanism& m);
+
 }  // namespace linkwright::kinematics

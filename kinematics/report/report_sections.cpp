@@ -65,20 +65,23 @@ TableColumn columnHeading(const Mechanism& m, const kinematics::SweepColumn& c, 
   const std::string& u = m.lengthUnit;
   const std::string angular = units.rates == RateUnit::Degrees ? "deg" : "rad";
   const std::string angle = units.angles == AngleUnit::Radians ? "rad" : "deg";
+  // The input angle stays in degrees, as the grid is given (unitScale leaves it).
+  const std::string unit =
+      kinematics::columnUnit(c.quantity, u, c.quantity == ColumnQuantity::InputAngle ? "deg" : angle, angular);
   switch (c.quantity) {
-  case ColumnQuantity::Time: return {"time", "s"};
-  case ColumnQuantity::InputAngle: return {inputName(m), "deg"};
-  case ColumnQuantity::InputLength: return {inputName(m), u};
-  case ColumnQuantity::LinkAngle: return {linkName(m, c.index) + " θ", angle};
-  case ColumnQuantity::LinkOmega: return {linkName(m, c.index) + " ω", angular + "/s"};
-  case ColumnQuantity::LinkAlpha: return {linkName(m, c.index) + " α", angular + "/s²"};
-  case ColumnQuantity::TransmissionAngle: return {"μ at " + pointName(m, c.index), angle};
-  case ColumnQuantity::PointX: return {pointName(m, c.index) + " x", u};
-  case ColumnQuantity::PointY: return {pointName(m, c.index) + " y", u};
-  case ColumnQuantity::PointVx: return {pointName(m, c.index) + " vx", u + "/s"};
-  case ColumnQuantity::PointVy: return {pointName(m, c.index) + " vy", u + "/s"};
-  case ColumnQuantity::PointAx: return {pointName(m, c.index) + " ax", u + "/s²"};
-  case ColumnQuantity::PointAy: return {pointName(m, c.index) + " ay", u + "/s²"};
+  case ColumnQuantity::Time: return {"time", unit};
+  case ColumnQuantity::InputAngle:
+  case ColumnQuantity::InputLength: return {inputName(m), unit};
+  case ColumnQuantity::LinkAngle: return {linkName(m, c.index) + " θ", unit};
+  case ColumnQuantity::LinkOmega: return {linkName(m, c.index) + " ω", unit};
+  case ColumnQuantity::LinkAlpha: return {linkName(m, c.index) + " α", unit};
+  case ColumnQuantity::TransmissionAngle: return {"μ at " + pointName(m, c.index), unit};
+  case ColumnQuantity::PointX: return {pointName(m, c.index) + " x", unit};
+  case ColumnQuantity::PointY: return {pointName(m, c.index) + " y", unit};
+  case ColumnQuantity::PointVx: return {pointName(m, c.index) + " vx", unit};
+  case ColumnQuantity::PointVy: return {pointName(m, c.index) + " vy", unit};
+  case ColumnQuantity::PointAx: return {pointName(m, c.index) + " ax", unit};
+  case ColumnQuantity::PointAy: return {pointName(m, c.index) + " ay", unit};
   }
   return {c.name, ""};
 }
@@ -119,16 +122,16 @@ std::vector<kinematics::SweepColumn> reportColumns(const Mechanism& m, const Swe
 }
 
 std::vector<PlotKind> plotKinds(const Mechanism& m, const ReportUnits& units) {
-  const std::string& u = m.lengthUnit;
   const std::string angular = units.rates == RateUnit::Degrees ? "deg" : "rad";
   const std::string angle = units.angles == AngleUnit::Radians ? "rad" : "deg";
-  return {{"Link angles θ", angle, {ColumnQuantity::LinkAngle}},
-          {"Angular velocities ω", angular + "/s", {ColumnQuantity::LinkOmega}},
-          {"Angular accelerations α", angular + "/s²", {ColumnQuantity::LinkAlpha}},
-          {"Transmission angle μ", angle, {ColumnQuantity::TransmissionAngle}},
-          {"Slider position", u, {ColumnQuantity::PointX, ColumnQuantity::PointY}},
-          {"Slider velocity", u + "/s", {ColumnQuantity::PointVx, ColumnQuantity::PointVy}},
-          {"Slider acceleration", u + "/s²", {ColumnQuantity::PointAx, ColumnQuantity::PointAy}}};
+  const auto unit = [&](ColumnQuantity q) { return kinematics::columnUnit(q, m.lengthUnit, angle, angular); };
+  return {{"Link angles θ", unit(ColumnQuantity::LinkAngle), {ColumnQuantity::LinkAngle}},
+          {"Angular velocities ω", unit(ColumnQuantity::LinkOmega), {ColumnQuantity::LinkOmega}},
+          {"Angular accelerations α", unit(ColumnQuantity::LinkAlpha), {ColumnQuantity::LinkAlpha}},
+          {"Transmission angle μ", unit(ColumnQuantity::TransmissionAngle), {ColumnQuantity::TransmissionAngle}},
+          {"Slider position", unit(ColumnQuantity::PointX), {ColumnQuantity::PointX, ColumnQuantity::PointY}},
+          {"Slider velocity", unit(ColumnQuantity::PointVx), {ColumnQuantity::PointVx, ColumnQuantity::PointVy}},
+          {"Slider acceleration", unit(ColumnQuantity::PointAx), {ColumnQuantity::PointAx, ColumnQuantity::PointAy}}};
 }
 
 std::string inputText(const Mechanism& m, double input, bool named) {

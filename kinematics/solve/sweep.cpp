@@ -414,7 +414,7 @@ void allocate(const Mechanism& m, const SweepSpec& spec, std::size_t first, std:
   sizeColumns(out.linkAlpha, scope.reportLink, request.accelerations, n);
   std::vector<unsigned char> dyads = scope.reportPoint;
   for (std::size_t i = 0; i < dyads.size(); ++i)
-    dyads[i] = dyads[i] != 0 && hasAssemblyBranch(m.points[i].definition) ? 1 : 0;
+    dyads[i] = dyads[i] != 0 && hasTransmissionAngle(m.points[i].definition) ? 1 : 0;
   if (!request.transmissionAngles) std::fill(dyads.begin(), dyads.end(), 0);
   sizeColumns(out.transmissionAngle, dyads, true, n);
   out.time.resize(spec.time ? n : 0);

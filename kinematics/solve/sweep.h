@@ -79,7 +79,7 @@ struct SweepResult {
   std::vector<std::vector<double>> linkAngle;          ///< rad, unwrapped over the sweep
   std::vector<std::vector<double>> linkOmega;          ///< rad/s
   std::vector<std::vector<double>> linkAlpha;          ///< rad/s²
-  std::vector<std::vector<double>> transmissionAngle;  ///< rad, for RRR points; others empty
+  std::vector<std::vector<double>> transmissionAngle;  ///< rad, transmissionJoints only; others empty
   std::vector<AngleRange> notAssembled;                ///< runs of consecutive samples that failed
   std::vector<double> singularAngles;                  ///< samples where rates are undefined (toggle)
   /// Steps from one assembled sample to the next that the linkage cannot make: somewhere

@@ -8,7 +8,10 @@
 namespace linkwright::kinematics {
 namespace {
 
-bool isDyad(const Point& p) { return hasAssemblyBranch(p.definition); }
+// The end of a column's name for its quantity's unit: "_deg", "_rad_s", "_mm_s2".
+std::string unitEnding(ColumnQuantity q, const std::string& lengthUnit) {
+  return "_" + unitInName(columnUnit(q, lengthUnit));
+}
 
 // The input's column: the crank angle in degrees, named for the driven link, whose own angle
 // column it replaces ("crank_angle_deg"; "rocker_angle_deg" for a four-bar driven from its
@@ -16,18 +19,50 @@ bool isDyad(const Point& p) { return hasAssemblyBranch(p.definition); }
 // ("actuator_length_mm").
 SweepColumn inputColumn(const Mechanism& m) {
   if (inputKind(m) == InputKind::Angle) {
+    const std::string ending = unitEnding(ColumnQuantity::InputAngle, m.lengthUnit);
     for (std::size_t k = 0; k < m.links.size(); ++k)
-      if (isDrivenCrankLink(m, LinkId{k})) return {m.links[k].name + "_angle_deg", ColumnQuantity::InputAngle, 0};
-    return {"crank_angle_deg", ColumnQuantity::InputAngle, 0};
+      if (isDrivenCrankLink(m, LinkId{k})) return {m.links[k].name + "_angle" + ending, ColumnQuantity::InputAngle, 0};
+    return {"crank_angle" + ending, ColumnQuantity::InputAngle, 0};
   }
   const auto driver = driverPoint(m);
-  const std::string& u = m.lengthUnit;
+  const std::string ending = unitEnding(ColumnQuantity::InputLength, m.lengthUnit);
   if (driver && std::holds_alternative<ActuatorPoint>(m.points[driver->index].definition))
-    return {"actuator_length_" + u, ColumnQuantity::InputLength, 0};
-  return {(driver ? m.points[driver->index].name : std::string("input")) + "_s_" + u, ColumnQuantity::InputLength, 0};
+    return {"actuator_length" + ending, ColumnQuantity::InputLength, 0};
+  return {(driver ? m.points[driver->index].name : std::string("input")) + "_s" + ending, ColumnQuantity::InputLength,
+          0};
 }
 
 }  // namespace
+
+std::string columnUnit(ColumnQuantity q, const std::string& lengthUnit, const std::string& angleUnit,
+                       const std::string& rateAngleUnit) {
+  switch (q) {
+  case ColumnQuantity::Time: return "s";
+  case ColumnQuantity::InputAngle:
+  case ColumnQuantity::LinkAngle:
+  case ColumnQuantity::TransmissionAngle: return angleUnit;
+  case ColumnQuantity::LinkOmega: return rateAngleUnit + "/s";
+  case ColumnQuantity::LinkAlpha: return rateAngleUnit + "/s²";
+  case ColumnQuantity::InputLength:
+  case ColumnQuantity::PointX:
+  case ColumnQuantity::PointY: return lengthUnit;
+  case ColumnQuantity::PointVx:
+  case ColumnQuantity::PointVy: return lengthUnit + "/s";
+  case ColumnQuantity::PointAx:
+  case ColumnQuantity::PointAy: return lengthUnit + "/s²";
+  }
+  return lengthUnit;
+}
+
+std::string unitInName(const std::string& unit) {
+  std::string name;
+  for (std::size_t i = 0; i < unit.size(); ++i) {
+    if (unit[i] == '/') name += '_';
+    else if (unit.compare(i, 2, "²") == 0) name += '2', ++i;
+    else name += unit[i];
+  }
+  return name;
+}
 
 bool isDrivenCrankLink(const Mechanism& m, LinkId id) {
   const Link& link = m.links[id.index];
@@ -91,33 +126,34 @@ std::vector<SweepColumn> sweepColumns(const Mechanism& m, const SolveRequest& re
   const bool vel = request.velocities || request.accelerations;
   const bool acc = request.accelerations;
   std::vector<SweepColumn> columns;
-  if (timeBase) columns.push_back({"time_s", Q::Time, 0});
+  const std::string& u = m.lengthUnit;
+  if (timeBase) columns.push_back({"time" + unitEnding(Q::Time, u), Q::Time, 0});
   columns.push_back(inputColumn(m));
   for (std::size_t k = 0; k < m.links.size(); ++k) {
     const std::string& name = m.links[k].name;
-    if (!isDrivenCrankLink(m, LinkId{k})) columns.push_back({name + "_angle_deg", Q::LinkAngle, k});
-    if (vel) columns.push_back({name + "_omega_rad_s", Q::LinkOmega, k});
-    if (acc) columns.push_back({name + "_alpha_rad_s2", Q::LinkAlpha, k});
+    if (!isDrivenCrankLink(m, LinkId{k}))
+      columns.push_back({name + "_angle" + unitEnding(Q::LinkAngle, u), Q::LinkAngle, k});
+    if (vel) columns.push_back({name + "_omega" + unitEnding(Q::LinkOmega, u), Q::LinkOmega, k});
+    if (acc) columns.push_back({name + "_alpha" + unitEnding(Q::LinkAlpha, u), Q::LinkAlpha, k});
   }
-  std::size_t dyads = 0;
-  for (const Point& p : m.points) dyads += isDyad(p) ? 1 : 0;
-  for (std::size_t i = 0; i < m.points.size(); ++i)
-    if (isDyad(m.points[i]))
-      columns.push_back({dyads > 1 ? "transmission_angle_" + m.points[i].name + "_deg" : "transmission_angle_deg",
-                         Q::TransmissionAngle, i});
-  const std::string& u = m.lengthUnit;
+  const std::vector<std::size_t> joints = transmissionJoints(m);
+  for (const std::size_t i : joints)
+    columns.push_back(
+        {(joints.size() > 1 ? "transmission_angle_" + m.points[i].name : std::string("transmission_angle")) +
+             unitEnding(Q::TransmissionAngle, u),
+         Q::TransmissionAngle, i});
   for (std::size_t i = 0; i < m.points.size(); ++i) {
     if (std::holds_alternative<GroundPoint>(m.points[i].definition)) continue;
     const std::string& p = m.points[i].name;
-    columns.push_back({p + "_x_" + u, Q::PointX, i});
-    columns.push_back({p + "_y_" + u, Q::PointY, i});
+    columns.push_back({p + "_x" + unitEnding(Q::PointX, u), Q::PointX, i});
+    columns.push_back({p + "_y" + unitEnding(Q::PointY, u), Q::PointY, i});
     if (vel) {
-      columns.push_back({p + "_vx_" + u + "_s", Q::PointVx, i});
-      columns.push_back({p + "_vy_" + u + "_s", Q::PointVy, i});
+      columns.push_back({p + "_vx" + unitEnding(Q::PointVx, u), Q::PointVx, i});
+      columns.push_back({p + "_vy" + unitEnding(Q::PointVy, u), Q::PointVy, i});
     }
     if (acc) {
-      columns.push_back({p + "_ax_" + u + "_s2", Q::PointAx, i});
-      columns.push_back({p + "_ay_" + u + "_s2", Q::PointAy, i});
+      columns.push_back({p + "_ax" + unitEnding(Q::PointAx, u), Q::PointAx, i});
+      columns.push_back({p + "_ay" + unitEnding(Q::PointAy, u), Q::PointAy, i});
     }
   }
   return columns;

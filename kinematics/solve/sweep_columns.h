@@ -50,6 +50,17 @@ struct SweepColumn {
   double valueOf(const Pose& pose, double inputAngle, double nearDeg = 0.0) const;
 };
 
+/// The unit of a column's quantity, as text: "deg", "rad/s", "rad/s²", "mm", "mm/s", "mm/s²", "s".
+/// Angles are in `angleUnit`, a link's ω and α in `rateAngleUnit` per s and per s², lengths and
+/// positions in the mechanism's `lengthUnit`; the defaults are the columns' own (angles in
+/// degrees, link rates in radians). The one unit rule: the column names, compare's headers,
+/// the CLI's tables, the report's headings and the plots' axes all take their unit from here.
+std::string columnUnit(ColumnQuantity quantity, const std::string& lengthUnit, const std::string& angleUnit = "deg",
+                       const std::string& rateAngleUnit = "rad");
+
+/// A unit as a column's name ends with it: "rad/s²" → "rad_s2", "mm/s" → "mm_s", "deg" → "deg".
+std::string unitInName(const std::string& unit);
+
 /// True for the link from the crank pivot to the driven crank tip (zero phase): its angle is
 /// the input angle and its ω, α are the driver's.
 bool isDrivenCrankLink(const Mechanism& mechanism, LinkId link);

@@ -6,9 +6,9 @@
 #include "kinematics/model/units.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/model/vec2.h"
+#include "kinematics/solve/golden_section.h"
 #include "kinematics/solve/pose_solver.h"
 #include "kinematics/synthesis/defects.h"
-#include "kinematics/synthesis/golden_section.h"
 
 #include <algorithm>
 #include <cmath>
@@ -128,7 +128,7 @@ StructuralError structuralError(const Mechanism& m, const Maps& maps, double out
       const auto err = outputError(m, maps, outputOffset, x);
       return err ? std::abs(*err) : -1.0;
     };
-    const auto [x, value] = goldenSectionMaximum(size, lo, hi, 1e-13 * (t.x1 - t.x0));
+    const auto [x, value] = goldenSectionMaximum(size, lo, hi, 1e-13 * (t.x1 - t.x0)).best();
     if (value > e.maxAbs) {
       e.maxAbs = value;
       e.maxAt = x;

@@ -3,8 +3,8 @@
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/validate.h"
 #include "kinematics/model/vec2.h"
+#include "kinematics/solve/golden_section.h"
 #include "kinematics/synthesis/defects.h"
-#include "kinematics/synthesis/golden_section.h"
 #include "kinematics/synthesis/message_text.h"
 #include "kinematics/synthesis/time_ratio.h"
 
@@ -119,7 +119,8 @@ std::optional<double> bestParameter(const Construction& g, const std::vector<Par
   if (!bestRange) return std::nullopt;
   const double step = (bestRange->to - bestRange->from) / kScan;
   const double lo = std::max(bestRange->from, bestP - step), hi = std::min(bestRange->to, bestP + step);
-  const auto [p, value] = goldenSectionMaximum([&](double x) { return objective(g, x, bounded); }, lo, hi, 1e-15);
+  const auto [p, value] =
+      goldenSectionMaximum([&](double x) { return objective(g, x, bounded); }, lo, hi, 1e-15).best();
   return value >= bestValue ? p : bestP;
 }
 

@@ -1,4 +1,4 @@
-// linkwright.Atlas (kinematics/design/coupler_atlas.h): the coupler-curve atlas's grid, its
+// linkwright.Atlas (kinematics/explore/coupler_atlas.h): the coupler-curve atlas's grid, its
 // cells computed and classified by the core, a page at a time (cells [first, first + count)),
 // so linkwright.batch can compute pages as Dask tasks. A cell is a dict with linkwright-cli
 // atlas --json's names, and its curve as NumPy arrays.
@@ -6,8 +6,8 @@
 #include "python/src/bindings.h"
 #include "python/src/convert.h"
 
-#include "kinematics/design/atlas_filter.h"
-#include "kinematics/design/coupler_atlas.h"
+#include "kinematics/explore/atlas_filter.h"
+#include "kinematics/explore/coupler_atlas.h"
 #include "kinematics/model/units.h"
 
 #include <pybind11/stl.h>

@@ -1,11 +1,11 @@
-// Linkage.cognates (kinematics/design/cognates.h): a four-bar's two Roberts–Chebyshev cognates,
+// Linkage.cognates (kinematics/explore/cognates.h): a four-bar's two Roberts–Chebyshev cognates,
 // the core's JSON (linkwright-cli cognates --json's, to the bit) as a dict, each cognate also as
 // a Linkage, and with `output` both written as documents where the CLI writes them.
 
 #include "python/src/bindings.h"
 #include "python/src/convert.h"
 
-#include "kinematics/design/cognates.h"
+#include "kinematics/explore/cognates.h"
 #include "kinematics/io/cognates_json.h"
 #include "kinematics/io/document_json.h"
 

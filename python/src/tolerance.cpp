@@ -1,4 +1,4 @@
-// Linkage.tolerance_study (kinematics/design/tolerance_monte_carlo.h): the seeded Monte-Carlo
+// Linkage.tolerance_study (kinematics/tune/tolerance_monte_carlo.h): the seeded Monte-Carlo
 // study linkwright-cli tolerance runs, over samples [first_sample, first_sample + mc_samples),
 // so linkwright.batch can run a study of any size as shards whose bands it combines by their
 // lowest and highest values (exactly the one run's).
@@ -6,7 +6,7 @@
 #include "python/src/bindings.h"
 #include "python/src/convert.h"
 
-#include "kinematics/design/tolerance_monte_carlo.h"
+#include "kinematics/tune/tolerance_monte_carlo.h"
 
 #include <pybind11/stl.h>
 

@@ -7,10 +7,10 @@
 // Run (Release): build-tolerance/tests/bench/linkwright_tolerance_benchmark
 
 #include "kinematics/design/examples.h"
-#include "kinematics/design/tolerance_monte_carlo.h"
-#include "kinematics/design/tolerance_sensitivity.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
+#include "kinematics/tune/tolerance_monte_carlo.h"
+#include "kinematics/tune/tolerance_sensitivity.h"
 
 #include <benchmark/benchmark.h>
 

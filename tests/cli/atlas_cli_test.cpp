@@ -5,8 +5,8 @@
 #include "tests/cli/csv_column.h"
 #include "tests/cli/run_cli.h"
 
-#include "kinematics/design/atlas_filter.h"
-#include "kinematics/design/coupler_atlas.h"
+#include "kinematics/explore/atlas_filter.h"
+#include "kinematics/explore/coupler_atlas.h"
 #include "kinematics/io/bounded_read.h"
 #include "kinematics/io/document_json.h"
 #include "kinematics/io/json.h"

@@ -5,8 +5,8 @@
 #include "tests/cli/csv_column.h"
 #include "tests/cli/run_cli.h"
 
-#include "kinematics/design/cognates.h"
 #include "kinematics/design/design.h"
+#include "kinematics/explore/cognates.h"
 #include "kinematics/io/bounded_read.h"
 #include "kinematics/io/document_json.h"
 #include "kinematics/io/json.h"

@@ -14,7 +14,7 @@
 #include "kinematics/model/recognise.h"
 #include "kinematics/model/units.h"
 #include "kinematics/solve/pose_solver.h"
-#include "kinematics/synthesis/optimise_linkage.h"
+#include "kinematics/tune/optimise_linkage.h"
 
 #include "tests/support/catch.h"
 #include "tests/support/scratch_dir.h"

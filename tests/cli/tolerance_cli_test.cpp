@@ -7,11 +7,11 @@
 #include "tests/cli/run_cli.h"
 
 #include "kinematics/design/examples.h"
-#include "kinematics/design/tolerance_monte_carlo.h"
-#include "kinematics/design/tolerance_sensitivity.h"
 #include "kinematics/io/bounded_read.h"
 #include "kinematics/io/json.h"
 #include "kinematics/model/units.h"
+#include "kinematics/tune/tolerance_monte_carlo.h"
+#include "kinematics/tune/tolerance_sensitivity.h"
 
 #include "tests/support/catch.h"
 

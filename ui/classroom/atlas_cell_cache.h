@@ -1,11 +1,11 @@
 #pragma once
-// The atlas window's cells (kinematics/design/coupler_atlas.h), computed on a worker thread and
+// The atlas window's cells (kinematics/explore/coupler_atlas.h), computed on a worker thread and
 // kept by their key, so a grid asked for again (a filter, a scroll, the same ratios typed back)
 // is drawn at once. One request runs at a time: a new one, or the cache's end, cancels the one
 // before (its std::atomic<bool>), and a cancelled job's results are never delivered. Each cell
 // arrives as it is done, on the GUI thread.
 
-#include "kinematics/design/coupler_atlas.h"
+#include "kinematics/explore/coupler_atlas.h"
 
 #include <QFuture>
 #include <QFutureWatcher>

@@ -3,7 +3,7 @@
 #include "ui/geometry.h"
 #include "ui/number_text.h"
 
-#include "kinematics/design/atlas_filter.h"
+#include "kinematics/explore/atlas_filter.h"
 #include "kinematics/model/units.h"
 
 #include <QFontMetrics>

@@ -5,7 +5,7 @@
 // orange), its ratios and feature names beneath. Until its cell is computed it says so. A click
 // asks for its linkage (clicked); the window loads it.
 
-#include "kinematics/design/coupler_atlas.h"
+#include "kinematics/explore/coupler_atlas.h"
 
 #include <QPolygonF>
 #include <QStringList>

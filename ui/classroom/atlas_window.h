@@ -1,17 +1,17 @@
 #pragma once
 // View ▸ Atlas… (issue 46): a coupler-curve atlas in the spirit of Hrones and Nelson
-// (kinematics/design/coupler_atlas.h). The link ratios and coupler-point places are typed as
+// (kinematics/explore/coupler_atlas.h). The link ratios and coupler-point places are typed as
 // comma lists; Show lays out one small drawing per cell, in the core's order, each computed on
 // a worker thread and kept by its key (atlas_cell_cache.h), so typing the same ratios back or
 // changing the filter draws at once. The filter's boxes keep the cells whose curve has every
-// feature ticked (kinematics/design/atlas_filter.h). A click on a cell makes its four-bar the
+// feature ticked (kinematics/explore/atlas_filter.h). A click on a cell makes its four-bar the
 // design, with its coupler point P, one undoable edit, the crank as long as the design's own
 // four-bar's (or 20 length units); Ctrl+Z and Ctrl+Shift+Z here are the designer's Undo and
 // Redo. Closing the window, or a new grid, stops what is computing.
 // Not modal.
 
-#include "kinematics/design/atlas_filter.h"
-#include "kinematics/design/coupler_atlas.h"
+#include "kinematics/explore/atlas_filter.h"
+#include "kinematics/explore/coupler_atlas.h"
 
 #include <QWidget>
 

@@ -101,7 +101,8 @@ QString valueText(const MechanismDocument& d, const ReadoutQuantity& r, AngleUni
   case Kind::Length: return readoutNumber(r.column.valueOf(pose, q), decimals) + QLatin1Char(' ') + length;
   case Kind::LengthRate:
     if (!rates) return kUndefined;
-    return readoutNumber(r.column.valueOf(pose, q), decimals) + QLatin1Char(' ') + length + QStringLiteral("/s");
+    return readoutNumber(r.column.valueOf(pose, q), decimals) + QLatin1Char(' ') +
+           quantityUnit(QuantityKind::Velocity, unit, length);
   }
   return {};
 }

@@ -1,11 +1,11 @@
 #pragma once
 // The three four-bars of a coupler curve drawn together (View ▸ Cognates…): the curve the
 // coupler point traces, and at the current pose the original and its two Roberts–Chebyshev
-// cognates (kinematics/design/cognates.h), each in its own colour, their ground pivots marked,
+// cognates (kinematics/explore/cognates.h), each in its own colour, their ground pivots marked,
 // the one coupler point they share ringed. A plain painted widget: it is told the joints and the
 // curve, fits them to its size, keeps x right and y up, and computes nothing.
 
-#include "kinematics/design/cognates.h"
+#include "kinematics/explore/cognates.h"
 
 #include <QColor>
 #include <QPolygonF>

@@ -1,13 +1,13 @@
 #pragma once
 // View ▸ Cognates… (issue 46): the designer's four-bar and its two Roberts–Chebyshev cognates
-// (kinematics/design/cognates.h) drawn together on the coupler curve they share, moving with
+// (kinematics/explore/cognates.h) drawn together on the coupler curve they share, moving with
 // the designer's crank (its slider, Play, a drag) or with this window's Play, which turns the
 // designer's crank; their figures side by side (Grashof class, worst transmission angle, how
 // each crank must turn to move with the others); and Keep cognate 1 / 2, which make that
 // cognate the design (one undoable edit). It follows the document: a new design rebuilds it, and
 // a linkage with no cognates leaves it saying why, with nothing drawn from before. Not modal.
 
-#include "kinematics/design/cognates.h"
+#include "kinematics/explore/cognates.h"
 
 #include <QTimer>
 #include <QWidget>

@@ -1,11 +1,11 @@
 #pragma once
-// The tolerance study (kinematics/design/tolerance_monte_carlo.h) and the sensitivities beside
+// The tolerance study (kinematics/tune/tolerance_monte_carlo.h) and the sensitivities beside
 // it as work for the worker pool (background_request.h): the Tolerances window asks, the
 // document's layer runs, never on the GUI thread.
 
 #include "kinematics/design/design.h"
-#include "kinematics/design/tolerance_monte_carlo.h"
-#include "kinematics/design/tolerance_sensitivity.h"
+#include "kinematics/tune/tolerance_monte_carlo.h"
+#include "kinematics/tune/tolerance_sensitivity.h"
 
 #include <atomic>
 #include <functional>

@@ -214,11 +214,9 @@ void AnalysisPanel::refreshMotion() {
   } else {
     // One angle per dyad that has one (RRR, RRP and actuator joints), named by its joint.
     QStringList parts;
-    for (std::size_t i = 0; i < m.points.size() && i < pose.transmissionAngle.size(); ++i) {
-      const auto& d = m.points[i].definition;
-      if (k::hasAssemblyBranch(d))
+    for (const std::size_t i : k::transmissionJoints(m))
+      if (i < pose.transmissionAngle.size())
         parts << QString("%1 %2").arg(QString::fromStdString(m.points[i].name), degrees(pose.transmissionAngle[i], 1));
-    }
     m_transmissionNow->setText(parts.isEmpty() ? tr("—") : parts.join(", "));
   }
   m_warning->setVisible(m_document->poseStatus() == k::PoseStatus::Singular);

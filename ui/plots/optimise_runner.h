@@ -1,12 +1,12 @@
 #pragma once
-// Runs an optimisation of a linkage (kinematics/synthesis/optimise_linkage.h) on a worker
+// Runs an optimisation of a linkage (kinematics/tune/optimise_linkage.h) on a worker
 // thread for Edit ▸ Optimise…: the design and request are copied to the worker, the result
 // comes back as a value, and the worker's progress is read from an atomic counter by a timer
 // on this thread, so nothing is shared but that counter and the cancel flag. Cancel asks the
 // run to stop and still delivers the best found; drop stops it and delivers nothing (the
 // design it was for has changed).
 
-#include "kinematics/synthesis/optimise_linkage.h"
+#include "kinematics/tune/optimise_linkage.h"
 
 #include <QFutureWatcher>
 #include <QObject>

@@ -8,7 +8,7 @@
 // result as one undoable edit; Discard leaves the design. An edit of the design while the
 // window is open drops a result computed for the design before it, and stops a run. Not modal.
 
-#include "kinematics/synthesis/optimise_linkage.h"
+#include "kinematics/tune/optimise_linkage.h"
 
 #include <QWidget>
 

@@ -96,11 +96,7 @@ std::vector<PlotCurve> plotCurves(const k::Mechanism& m, const k::Pose& pose) {
   const auto model = k::centreModel(m);  // bodies found once: link numbers and ratios
   const std::vector<std::size_t> numbers = model ? model->linkNumbers : k::linkNumbers(m);
   addLinkCurves(out, m, numbers, ColumnQuantity::LinkAngle, QStringLiteral("θ"), QStringLiteral("_angle"));
-  std::vector<std::size_t> dyads;  // the joints with a transmission angle
-  for (std::size_t i = 0; i < m.points.size(); ++i)
-    if (std::holds_alternative<k::RrrPoint>(m.points[i].definition) ||
-        std::holds_alternative<k::RrpPoint>(m.points[i].definition))
-      dyads.push_back(i);
+  const std::vector<std::size_t> dyads = k::transmissionJoints(m);
   for (std::size_t d = 0; d < dyads.size(); ++d) {
     const QString point = QString::fromStdString(m.points[dyads[d]].name);
     const bool one = dyads.size() == 1;
@@ -148,19 +144,22 @@ const PlotCurve* findCurve(const std::vector<PlotCurve>& curves, PlotQuantity qu
   return nullptr;
 }
 
+// The core's unit rule (kinematics/solve/sweep_columns.h: columnUnit), for a column of the kind,
+// angles and their rates both in the plots' angle unit.
 QString quantityUnit(QuantityKind kind, AngleUnit unit, const QString& lengthUnit) {
-  const QString angle = angleUnitSymbol(unit);
+  ColumnQuantity column = ColumnQuantity::LinkAngle;
   switch (kind) {
-  case QuantityKind::Angle: return angle;
-  case QuantityKind::Omega: return angle + QStringLiteral("/s");
-  case QuantityKind::Alpha: return angle + QStringLiteral("/s²");
-  case QuantityKind::Position: return lengthUnit;
-  case QuantityKind::Velocity: return lengthUnit + QStringLiteral("/s");
-  case QuantityKind::Acceleration: return lengthUnit + QStringLiteral("/s²");
+  case QuantityKind::Angle: break;
+  case QuantityKind::Omega: column = ColumnQuantity::LinkOmega; break;
+  case QuantityKind::Alpha: column = ColumnQuantity::LinkAlpha; break;
+  case QuantityKind::Position: column = ColumnQuantity::PointX; break;
+  case QuantityKind::Velocity: column = ColumnQuantity::PointVx; break;
+  case QuantityKind::Acceleration: column = ColumnQuantity::PointAx; break;
   case QuantityKind::VelocityRatio:
   case QuantityKind::Advantage: return {};
   }
-  return angle;
+  const std::string angle = angleUnitSymbol(unit).toStdString();
+  return QString::fromStdString(k::columnUnit(column, lengthUnit.toStdString(), angle, angle));
 }
 
 QString ratioSymbol(PlotQuantity q) {

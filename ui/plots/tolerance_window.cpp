@@ -8,7 +8,7 @@
 #include "ui/plots/plot_x_axis.h"
 
 #include "kinematics/design/design.h"
-#include "kinematics/design/tolerance_dimensions.h"
+#include "kinematics/tune/tolerance_dimensions.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -2,7 +2,7 @@
 // View ▸ Tolerances… (issue 46): how much the motion moves when the parts are made a little
 // wrong. For the ± typed (one tolerance on every length and pivot coordinate, in the length
 // unit), the Monte-Carlo band of the chosen output over the design's grid (nominal, lowest and
-// highest of the samples: kinematics/design/tolerance_monte_carlo.h) and the exact sensitivity of
+// highest of the samples: kinematics/tune/tolerance_monte_carlo.h) and the exact sensitivity of
 // that output to each dimension against the input (tolerance_sensitivity.h), with the worst
 // deviation, the first-order worst case and the samples that did not assemble. It computes
 // while shown, once an edit has settled, on the worker pool (an edit drops the study under way,
@@ -13,8 +13,8 @@
 #include "ui/document/tolerance_job.h"
 #include "ui/plots/angle_unit.h"
 
-#include "kinematics/design/tolerance_monte_carlo.h"
-#include "kinematics/design/tolerance_sensitivity.h"
+#include "kinematics/tune/tolerance_monte_carlo.h"
+#include "kinematics/tune/tolerance_sensitivity.h"
 
 #include <QTimer>
 #include <QWidget>

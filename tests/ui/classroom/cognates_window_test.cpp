@@ -1,4 +1,4 @@
-// View ▸ Cognates… against the core (kinematics/design/cognates.h): the three four-bars drawn
+// View ▸ Cognates… against the core (kinematics/explore/cognates.h): the three four-bars drawn
 // share the coupler point of the designer's pose and keep their links' lengths as the crank
 // turns, Play turns the designer's crank, Keep makes a cognate the design (undoably), and a
 // linkage without cognates leaves the window saying why with nothing drawn from before.

@@ -14,8 +14,8 @@
 #include "ui/classroom/atlas_window.h"
 #include "ui/document/mechanism_document.h"
 
-#include "kinematics/design/atlas_filter.h"
-#include "kinematics/design/coupler_atlas.h"
+#include "kinematics/explore/atlas_filter.h"
+#include "kinematics/explore/coupler_atlas.h"
 #include "kinematics/model/recognise.h"
 
 #include "tests/support/catch.h"

@@ -13,7 +13,7 @@
 #include "ui/plots/optimise_window.h"
 
 #include "kinematics/design/design.h"
-#include "kinematics/synthesis/optimise_linkage.h"
+#include "kinematics/tune/optimise_linkage.h"
 #include "tests/support/catch.h"
 
 #include <QComboBox>

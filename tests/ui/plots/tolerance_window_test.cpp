@@ -1,4 +1,4 @@
-// View ▸ Tolerances… against the core (kinematics/design/tolerance_*.h): the band chart holds
+// View ▸ Tolerances… against the core (kinematics/tune/tolerance_*.h): the band chart holds
 // the Monte-Carlo result's nominal, lowest and highest curves, the sensitivity chart the exact
 // derivatives, the summary its figures; an edit drops them at once and the study is redone for
 // the new design; a tolerance the core refuses leaves the window saying why with nothing drawn.
@@ -11,7 +11,7 @@
 #include "kinematics/design/design.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/design/parameters.h"
-#include "kinematics/design/tolerance_dimensions.h"
+#include "kinematics/tune/tolerance_dimensions.h"
 
 #include "tests/support/catch.h"
 

@@ -1,4 +1,4 @@
-#include "kinematics/synthesis/optimise_dimensions.h"
+#include "kinematics/tune/optimise_dimensions.h"
 
 #include "kinematics/model/number_text.h"
 

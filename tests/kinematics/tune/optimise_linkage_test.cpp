@@ -1,4 +1,4 @@
-// Tests kinematics/synthesis/optimise_linkage.h: for each objective, on the thesis crank-rocker,
+// Tests kinematics/tune/optimise_linkage.h: for each objective, on the thesis crank-rocker,
 // the funsho four-bar with its masses and the LS3 slider-crank, the returned design's objective,
 // recomputed here from the design alone by the ordinary sweep (not the optimiser's own value),
 // beats the start's; no defect is added (the Grashof class and the branch kept, every dimension
@@ -7,7 +7,7 @@
 // the result to the last bit; a cancel returns a valid best so far; bad requests are refused
 // naming the field.
 
-#include "kinematics/synthesis/optimise_linkage.h"
+#include "kinematics/tune/optimise_linkage.h"
 
 #include "kinematics/analysis/transmission.h"
 #include "kinematics/dynamics/force_sweep.h"

@@ -1,10 +1,10 @@
-// Tests kinematics/design/coupler_atlas.h and atlas_filter.h: every curve the atlas gives is the
+// Tests kinematics/explore/coupler_atlas.h and atlas_filter.h: every curve the atlas gives is the
 // solver's coupler path for its linkage, sample by sample (a crank that turns fully, and one
 // that rocks, traced on both branches); the grid's numbering; a design made from a cell; the
 // filters; cancelling; and the refusals of bad axes, each as a sentence.
 
-#include "kinematics/design/coupler_atlas.h"
-#include "kinematics/design/atlas_filter.h"
+#include "kinematics/explore/coupler_atlas.h"
+#include "kinematics/explore/atlas_filter.h"
 
 #include "kinematics/analysis/assembly_range.h"
 #include "kinematics/model/recognise.h"

@@ -1,4 +1,4 @@
-#include "kinematics/design/coupler_atlas.h"
+#include "kinematics/explore/coupler_atlas.h"
 
 #include "kinematics/analysis/assembly_range.h"
 #include "kinematics/model/number_text.h"

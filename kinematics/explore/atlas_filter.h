@@ -3,7 +3,7 @@
 // features a cell must all have, a plain value the designer's checkboxes and the CLI's
 // --filter both make, and matching it is a plain function of a classified cell.
 
-#include "kinematics/design/coupler_atlas.h"
+#include "kinematics/explore/coupler_atlas.h"
 #include "kinematics/model/result.h"
 
 #include <cstddef>

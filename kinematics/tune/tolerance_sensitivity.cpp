@@ -1,4 +1,4 @@
-#include "kinematics/design/tolerance_sensitivity.h"
+#include "kinematics/tune/tolerance_sensitivity.h"
 
 #include "kinematics/analysis/pose_jet.h"
 #include "kinematics/model/units.h"

@@ -1,4 +1,4 @@
-#include "kinematics/synthesis/optimise_objective.h"
+#include "kinematics/tune/optimise_objective.h"
 
 #include "kinematics/analysis/transmission.h"
 #include "kinematics/dynamics/machine_duty.h"
@@ -25,10 +25,6 @@ std::string linkNames(const Mechanism& m) {
   return names;
 }
 
-bool transmits(const PointDefinition& d) {
-  return std::holds_alternative<RrrPoint>(d) || std::holds_alternative<RrpPoint>(d);
-}
-
 // The sample's input as the curve's x: the instant on a time base, else the input.
 double inputAt(const SweepResult& s, std::size_t j) { return s.time.empty() ? s.inputAngle[j] : s.time[j]; }
 
@@ -53,7 +49,7 @@ std::optional<ObjectiveValue> transmission(const Design& d, const SweepResult& s
     if (!s.assembled(j)) continue;
     double worst = kPi;
     for (std::size_t p = 0; p < m.points.size(); ++p)
-      if (transmits(m.points[p].definition) && !s.transmissionAngle[p].empty()) {
+      if (hasTransmissionAngle(m.points[p].definition) && !s.transmissionAngle[p].empty()) {
         const double mu = s.transmissionAngle[p][j];
         worst = std::min(worst, std::min(mu, kPi - mu));
       }
@@ -125,10 +121,12 @@ std::optional<Error> checkObjective(const Design& design, const OptimiseObjectiv
                                            "' (its links: " + linkNames(m) + ")");
     return std::nullopt;
   case ObjectiveKind::Transmission:
-    if (std::none_of(m.points.begin(), m.points.end(), [](const Point& p) { return transmits(p.definition); }))
-      return invalid("objective",
-                     "the linkage has no dyad (an RRR or RRP joint) whose transmission angle could be "
-                     "improved");
+    if (std::none_of(m.points.begin(), m.points.end(),
+                     [](const Point& p) { return hasTransmissionAngle(p.definition); }))
+      return invalid(
+          "objective",
+          "the linkage has no joint with a transmission angle (an RRR or RRP dyad or an actuator) that could be "
+          "improved");
     return std::nullopt;
   case ObjectiveKind::Path: {
     if (!m.findPoint(o.point))

@@ -10,12 +10,12 @@
 // generator the standard does not vary between libraries), so a seed gives the same study on
 // every machine, and a test can rebuild any sample alone (toleranceSampleOffsets).
 
-#include "kinematics/design/tolerance_dimensions.h"
-#include "kinematics/design/tolerance_sensitivity.h"
 #include "kinematics/model/request_field.h"
 #include "kinematics/model/result.h"
 #include "kinematics/solve/sweep.h"
 #include "kinematics/solve/sweep_columns.h"
+#include "kinematics/tune/tolerance_dimensions.h"
+#include "kinematics/tune/tolerance_sensitivity.h"
 
 #include <cstdint>
 #include <optional>

@@ -1,15 +1,15 @@
-// The Monte-Carlo tolerance study (kinematics/design/tolerance_monte_carlo.h): every sampled
+// The Monte-Carlo tolerance study (kinematics/tune/tolerance_monte_carlo.h): every sampled
 // curve, rebuilt alone from its seed and index and swept again, lies in the band, which it
 // reaches; the worst deviation is the samples' own; a seed repeats and another seed differs;
 // for a small tolerance each sample's deviation is the sensitivities' first-order prediction
 // and the worst stays within the first-order worst case; failed samples are counted; bad
 // specs are refused with the field and the range named.
 
-#include "kinematics/design/tolerance_monte_carlo.h"
+#include "kinematics/tune/tolerance_monte_carlo.h"
 #include "kinematics/design/examples.h"
-#include "kinematics/design/tolerance_sensitivity.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"
+#include "kinematics/tune/tolerance_sensitivity.h"
 
 #include "tests/support/catch.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 // The numbers an optimisation of a linkage may change, and how far: the design's dimensions
-// exactly as the tolerance analyses list them (design/tolerance_dimensions.h: every length and
+// exactly as the tolerance analyses list them (tune/tolerance_dimensions.h: every length and
 // coordinate, a four-bar by its named lengths and O4 across the frame line), so there is one
 // parameterisation of a linkage. Each gets a range:
 //   a length (ParameterUnit::Length, and a four-bar's named lengths): [v(1 − r), v(1 + r)],
@@ -14,9 +14,9 @@
 // the frame length and O4 across the frame line. By default every ground pivot is fixed (a
 // redesign keeps its mounting holes); the user may free any of them.
 
-#include "kinematics/design/tolerance_dimensions.h"
 #include "kinematics/model/mechanism.h"
 #include "kinematics/model/result.h"
+#include "kinematics/tune/tolerance_dimensions.h"
 
 #include <optional>
 #include <string>

@@ -1,4 +1,4 @@
-#include "kinematics/design/cognate_cycle.h"
+#include "kinematics/explore/cognate_cycle.h"
 
 #include "kinematics/analysis/assembly_range.h"
 #include "kinematics/analysis/transmission.h"

@@ -1,8 +1,8 @@
-#include "kinematics/design/cognates.h"
+#include "kinematics/explore/cognates.h"
 
-#include "kinematics/design/cognate_cycle.h"
 #include "kinematics/design/fourbar_dimensions.h"
 #include "kinematics/dynamics/crank_terms.h"
+#include "kinematics/explore/cognate_cycle.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"

@@ -8,7 +8,7 @@
 // between its least and greatest angle, as its motion is continuous; where the crank turns back,
 // its extreme is the exact edge of its assembly range.
 
-#include "kinematics/design/cognates.h"
+#include "kinematics/explore/cognates.h"
 #include "kinematics/model/recognise.h"
 #include "kinematics/solve/sweep.h"
 

@@ -1,4 +1,4 @@
-#include "kinematics/design/atlas_filter.h"
+#include "kinematics/explore/atlas_filter.h"
 
 namespace linkwright::kinematics {
 

@@ -29,8 +29,8 @@
 #include "kinematics/analysis/grashof.h"
 #include "kinematics/design/design.h"
 #include "kinematics/model/result.h"
-#include "kinematics/synthesis/optimise_dimensions.h"
-#include "kinematics/synthesis/optimise_objective.h"
+#include "kinematics/tune/optimise_dimensions.h"
+#include "kinematics/tune/optimise_objective.h"
 
 #include <atomic>
 #include <cstdint>

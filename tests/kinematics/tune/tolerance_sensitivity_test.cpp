@@ -1,9 +1,9 @@
-// The exact sensitivities (kinematics/design/tolerance_sensitivity.h) against a second method:
+// The exact sensitivities (kinematics/tune/tolerance_sensitivity.h) against a second method:
 // central differences of the real solver, each dimension moved ±h and ±h/2, extrapolated by
 // Richardson (R = (4·D(h/2) − D(h))/3, whose error the difference |R − D(h/2)| bounds), for a
 // four-bar with a coupler point, a slider-crank, a dyadic six-bar and a six-bar Newton solves.
 
-#include "kinematics/design/tolerance_sensitivity.h"
+#include "kinematics/tune/tolerance_sensitivity.h"
 #include "kinematics/design/examples.h"
 #include "kinematics/model/fourbar.h"
 #include "kinematics/model/units.h"

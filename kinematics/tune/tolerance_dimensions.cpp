@@ -1,4 +1,4 @@
-#include "kinematics/design/tolerance_dimensions.h"
+#include "kinematics/tune/tolerance_dimensions.h"
 
 #include "kinematics/model/recognise.h"
 

@@ -1,10 +1,10 @@
-// Tests kinematics/design/cognates.h: the construction's identities (the third pivot, P on each
+// Tests kinematics/explore/cognates.h: the construction's identities (the third pivot, P on each
 // cognate's coupler, rigid links turning with the original's), each cognate's coupler point on
 // the original's curve and the original's on each cognate's, both ways round, for the thesis
 // four-bar with a coupler point, the Miranda example and 100 random Grashof four-bars, and the
 // refusals, each as a sentence.
 
-#include "kinematics/design/cognates.h"
+#include "kinematics/explore/cognates.h"
 
 #include "kinematics/design/design.h"
 #include "kinematics/design/examples.h"

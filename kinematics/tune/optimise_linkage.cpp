@@ -1,4 +1,4 @@
-#include "kinematics/synthesis/optimise_linkage.h"
+#include "kinematics/tune/optimise_linkage.h"
 
 #include "kinematics/model/recognise.h"
 

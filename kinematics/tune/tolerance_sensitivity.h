@@ -9,11 +9,11 @@
 // Σ_p |∂y/∂p|·t: what the Monte Carlo's worst deviation (tolerance_monte_carlo.h) tends to
 // as t shrinks, and bounds it to first order.
 
-#include "kinematics/design/tolerance_dimensions.h"
 #include "kinematics/model/request_field.h"
 #include "kinematics/model/result.h"
 #include "kinematics/solve/sweep.h"
 #include "kinematics/solve/sweep_columns.h"
+#include "kinematics/tune/tolerance_dimensions.h"
 
 #include <vector>
 

@@ -1,9 +1,9 @@
-#include "kinematics/design/tolerance_monte_carlo.h"
+#include "kinematics/tune/tolerance_monte_carlo.h"
 
-#include "kinematics/design/tolerance_sensitivity.h"
 #include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/number_text.h"
+#include "kinematics/tune/tolerance_sensitivity.h"
 
 #include <algorithm>
 #include <cmath>
