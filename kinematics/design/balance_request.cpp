@@ -7,15 +7,8 @@
 namespace linkwright::kinematics {
 namespace {
 
-// A field as the front end spells it: "--spring-search", "spring_search".
-std::string spelled(const std::string& key, FrontEnd frontEnd) {
-  RequestField field;
-  field.key = key;
-  return fieldName(field, frontEnd);
-}
-
 Error prefixed(Error e, const std::string& key, FrontEnd frontEnd) {
-  const std::string name = spelled(key, frontEnd);
+  const std::string name = fieldName(key, frontEnd);
   e.message = name + ": " + e.message;
   e.field = name;
   return e;
@@ -61,13 +54,14 @@ std::optional<Error> checkBalanceRequest(const BalanceRequest& r) {
        {std::tuple{r.fraction.has_value(), "fraction", "the share of the reciprocating mass"},
         {r.radius.has_value(), "radius", "the counterweights' distance from their pivots"}})
     if (given)
-      return Error{ErrorCode::InvalidValue, spelled(key, r.frontEnd),
-                   spelled(key, r.frontEnd) + " sets " + what + ", and a spring balance (" +
-                       spelled(spring, r.frontEnd) + ") makes no counterweight: give one or the other"};
+      return Error{ErrorCode::InvalidValue, fieldName(key, r.frontEnd),
+                   fieldName(key, r.frontEnd) + " sets " + what + ", and a spring balance (" +
+                       fieldName(spring, r.frontEnd) + ") makes no counterweight: give one or the other"};
   if (r.spring && r.springSearch)
-    return Error{ErrorCode::InvalidValue, spelled("spring_search", r.frontEnd),
-                 spelled("spring_search", r.frontEnd) + ": give the spring's ends (" + spelled("spring", r.frontEnd) +
-                     ") or have them searched (" + spelled("spring_search", r.frontEnd) + "), not both"};
+    return Error{ErrorCode::InvalidValue, fieldName("spring_search", r.frontEnd),
+                 fieldName("spring_search", r.frontEnd) + ": give the spring's ends (" +
+                     fieldName("spring", r.frontEnd) + ") or have them searched (" +
+                     fieldName("spring_search", r.frontEnd) + "), not both"};
   return std::nullopt;
 }
 

@@ -9,12 +9,6 @@
 namespace linkwright::kinematics {
 namespace {
 
-std::string spelled(const std::string& key, FrontEnd frontEnd) {
-  RequestField field;
-  field.key = key;
-  return fieldName(field, frontEnd);
-}
-
 // The input as the user reads it: "crank angle 30°" or "input 12.5 mm".
 std::string inputText(const SweepGrid& g, double value) {
   if (g.input == InputKind::Angle) return "crank angle " + formatNumber(value) + "°";
@@ -35,7 +29,7 @@ Result<DrawingRun> runDrawing(const Mechanism& m, const SweepGrid& source, const
   SweepGrid g = source;
   g.input = inputKind(m);
   g.lengthUnit = m.lengthUnit;
-  const std::string atName = spelled("at", r.frontEnd);
+  const std::string atName = fieldName("at", r.frontEnd);
   if (r.at) {
     // On a time base the input is still what is drawn at, but --at is checked as an instant,
     // as for every command that takes it.
@@ -57,7 +51,7 @@ Result<DrawingRun> runDrawing(const Mechanism& m, const SweepGrid& source, const
     Error e = drawing.error();
     const std::string key = e.field == "holeDiameter" ? "hole" : e.field == "plateWidth" ? "width" : "";
     if (!key.empty()) {
-      e.field = spelled(key, r.frontEnd);
+      e.field = fieldName(key, r.frontEnd);
       e.message = e.field + ": " + e.message;
     }
     return e;

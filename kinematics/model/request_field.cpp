@@ -37,6 +37,13 @@ std::string fieldName(const RequestField& f, FrontEnd frontEnd) {
   return f.key;
 }
 
+std::string fieldName(const std::string& key, FrontEnd frontEnd) {
+  RequestField field;
+  field.key = key;
+  field.label = key;
+  return fieldName(field, frontEnd);
+}
+
 std::string rangeText(const RequestField& f) {
   const std::string low = endText(f.minimum), high = endText(f.maximum);
   std::string text;

@@ -43,6 +43,9 @@ using RequestValues = std::map<std::string, double>;
 
 /// The field's name as `frontEnd` spells it: "--gear-ratio", "gear_ratio", "Gear ratio".
 std::string fieldName(const RequestField& field, FrontEnd frontEnd);
+/// The same for a key with no field of its own (an option that only combines others): the
+/// designer, which has no label for it, says the key.
+std::string fieldName(const std::string& key, FrontEnd frontEnd);
 
 /// The accepted range in words, with the unit: "above 0 and at most 1", "from 4 to 100000",
 /// "from -1e6 to 1e6 rpm, not 0".
