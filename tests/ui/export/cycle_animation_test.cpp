@@ -20,6 +20,7 @@
 #include "tests/ui/support/timed_design.h"
 
 #include "tests/support/catch.h"
+#include "tests/ui/support/settled_window.h"
 
 #include <QApplication>
 #include <QDir>
@@ -30,15 +31,9 @@
 using namespace linkwright;
 namespace k = linkwright::kinematics;
 
-namespace {
+using linkwright::test::showSettled;
 
-void showSettled(ui::MainWindow& window) {
-  window.resize(1400, 880);
-  window.show();
-  for (int i = 0; i < 5; ++i) QApplication::processEvents();
-  window.settle();
-  for (int i = 0; i < 5; ++i) QApplication::processEvents();
-}
+namespace {
 
 // Non-Grashof (60 + 100 > 70 + 80): the crank rocks between two toggle angles.
 const k::FourBarLengths kTripleRocker{100.0, 80.0, 60.0, 70.0};

@@ -24,6 +24,7 @@
 #include "tests/ui/support/video_readback.h"
 
 #include "tests/support/catch.h"
+#include "tests/ui/support/settled_window.h"
 
 #include <QApplication>
 #include <QDir>
@@ -34,17 +35,11 @@
 using namespace linkwright;
 namespace k = linkwright::kinematics;
 
+using linkwright::test::showSettled;
+
 namespace {
 
 constexpr double kLoss = 1.5;  // mean absolute difference per channel, see above
-
-void showSettled(ui::MainWindow& window) {
-  window.resize(1400, 880);
-  window.show();
-  for (int i = 0; i < 5; ++i) QApplication::processEvents();
-  window.settle();
-  for (int i = 0; i < 5; ++i) QApplication::processEvents();
-}
 
 void writeOld(const QString& path) {
   QFile old(path);

@@ -13,6 +13,7 @@
 #include "tests/ui/support/read_file.h"
 
 #include "tests/support/catch.h"
+#include "tests/ui/support/settled_window.h"
 
 #include <QApplication>
 #include <QDir>
@@ -23,15 +24,9 @@
 
 using namespace linkwright;
 
-namespace {
+using linkwright::test::showSettled;
 
-void showSettled(ui::MainWindow& window) {
-  window.resize(1400, 880);
-  window.show();
-  for (int i = 0; i < 5; ++i) QApplication::processEvents();
-  window.settle();
-  for (int i = 0; i < 5; ++i) QApplication::processEvents();
-}
+namespace {
 
 QString run(const char* program, const QStringList& arguments) {
   QProcess p;
