@@ -3,7 +3,6 @@
 #include "ui/number_text.h"
 
 #include "ui/canvas/canvas_style.h"
-#include "ui/canvas/label_item.h"
 
 #include "kinematics/model/units.h"
 
@@ -20,8 +19,7 @@ namespace k = kinematics;
 namespace {
 
 constexpr double kTwoPi = 2.0 * k::kPi;
-constexpr double kRayFactor = 1.12;    // limit rays reach a little past the arc
-constexpr double kLabelRadius = 0.55;  // the label sits halfway out in the unreachable sector
+constexpr double kRayFactor = 1.12;  // limit rays reach a little past the arc
 
 QPointF onCircle(const QPointF& centre, double radius, double angle) {
   return centre + radius * QPointF(std::cos(angle), std::sin(angle));
@@ -63,12 +61,7 @@ QString degrees(double angle) { return numberText(k::radToDeg(angle), 'f', 1) + 
 
 }  // namespace
 
-FeasibleRangeItem::FeasibleRangeItem(QGraphicsItem* parent) : QGraphicsItem(parent), m_label(new LabelItem(this)) {
-  setZValue(canvas::z::kRange);
-  m_label->setColor(colors().infeasible.darker(170));
-  m_label->setBoxed(true);
-  m_label->setPlacement(QPointF(0.0, 0.0), Qt::AlignHCenter | Qt::AlignVCenter);
-}
+FeasibleRangeItem::FeasibleRangeItem(QGraphicsItem* parent) : QGraphicsItem(parent) { setZValue(canvas::z::kRange); }
 
 void FeasibleRangeItem::setRange(const k::InputRange& inputs, const QPointF& centre, double radius, double phase) {
   prepareGeometryChange();
@@ -101,29 +94,22 @@ void FeasibleRangeItem::setRange(const k::InputRange& inputs, const QPointF& cen
 
   QStringList parts;
   for (const k::AngleRange& rr : inputs.ranges) parts << tr("%1 to %2").arg(degrees(rr.from), degrees(rr.to));
-  m_label->setText(parts.isEmpty() ? tr("crank cannot be assembled at any angle")
-                                   : tr("crank can reach %1").arg(parts.join(tr(" and "))));
-  // The label goes where the crank never is: inside the widest unreachable sector, which is
-  // also inside the drawing's bounds, so a fit never clips it. It leans to the sector's upper
-  // half, off the frame line and the pivot's name.
-  double angle = 0.0;
-  if (widest != nullptr) {
-    const double middle = (widest->from + widest->to) / 2.0;
-    const double lean = (widest->to - widest->from) / 4.0;
-    angle = std::sin(middle + lean) > std::sin(middle - lean) ? middle + lean : middle - lean;
-  }
-  m_label->setPos(onCircle(centre, kLabelRadius * radius, angle));
+  m_labelText = parts.isEmpty() ? tr("crank cannot be assembled at any angle")
+                                : tr("crank can reach %1").arg(parts.join(tr(" and ")));
+  // Outside the crank's circle (inside it a sentence wider than the crank sat over the
+  // pivot's name and the crank's lines), centred above or below it, on the side of the widest
+  // unreachable sector (below when it is level): a sentence is wide, and beside the circle it
+  // reached past a narrow canvas's edge.
+  const double middle = widest != nullptr ? (widest->from + widest->to) / 2.0 : 0.0;
+  const double side = std::sin(middle) > 1e-9 ? 1.0 : -1.0;
+  m_labelDirection = QPointF(0.0, side);
+  m_labelAnchor = centre + QPointF(0.0, side * r);
 }
 
 void FeasibleRangeItem::setPresentationScale(double factor) {
   m_scale = factor;
-  m_label->setScale(factor);
   update();
 }
-
-QString FeasibleRangeItem::labelText() const { return m_label->text(); }
-
-void FeasibleRangeItem::setLabelShown(bool shown) { m_label->setVisible(shown); }
 
 QRectF FeasibleRangeItem::boundingRect() const { return m_bounds; }
 

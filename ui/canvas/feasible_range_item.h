@@ -13,8 +13,6 @@
 
 namespace linkwright::ui {
 
-class LabelItem;
-
 class FeasibleRangeItem : public QGraphicsItem {
   Q_DECLARE_TR_FUNCTIONS(FeasibleRangeItem)
 public:
@@ -25,10 +23,14 @@ public:
   /// points at input angle + `phase` (rad, the crank tip's phase).
   void setRange(const kinematics::InputRange& range, const QPointF& centre, double radius, double phase = 0.0);
   void setPresentationScale(double factor);
-  /// The sentence shown next to the arc.
-  QString labelText() const;
-  /// Whether the sentence is drawn (by default); a small view shows it elsewhere instead.
-  void setLabelShown(bool shown);
+  /// The sentence that goes with the arc. The scene draws it (LinkageScene), above the links,
+  /// so no line of the linkage crosses its text.
+  QString labelText() const { return m_labelText; }
+  /// Where that sentence goes: beyond the arc's end in the middle of the widest unreachable
+  /// sector (scene coordinates), on the side `labelDirection` points to, away from the pivot
+  /// and its name.
+  QPointF labelAnchor() const { return m_labelAnchor; }
+  QPointF labelDirection() const { return m_labelDirection; }
 
   QRectF boundingRect() const override;
   void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
@@ -40,7 +42,9 @@ private:
   QPainterPath m_limitRays;
   QRectF m_bounds;
   double m_scale = 1.0;
-  LabelItem* m_label;
+  QString m_labelText;
+  QPointF m_labelAnchor;
+  QPointF m_labelDirection{1.0, 0.0};
 };
 
 }  // namespace linkwright::ui

@@ -31,6 +31,7 @@ constexpr double kLongestArrowFraction = 0.3;
 // The range arc's rays reach this far past the crank radius (see FeasibleRangeItem).
 constexpr double kRangeReach = 1.12;
 constexpr double kMessageWidthPx = 340.0;
+constexpr double kRangeLabelGapPx = 4.0;  // between the range's rays and its sentence
 
 QString formatMagnitude(double value) {
   if (!(value > 0.0) || !std::isfinite(value)) return QStringLiteral("0");
@@ -42,7 +43,8 @@ QString formatMagnitude(double value) {
 
 LinkageScene::LinkageScene(QObject* parent)
     : QGraphicsScene(parent), m_range(new FeasibleRangeItem), m_centres(new InstantCentresItem),
-      m_springs(new SpringsItem), m_massCentres(new MassCentresItem), m_message(new LabelItem) {
+      m_springs(new SpringsItem), m_massCentres(new MassCentresItem), m_message(new LabelItem),
+      m_rangeLabel(new LabelItem) {
   setBackgroundBrush(colors().canvasBackground);
   // The links and labels move on every frame of a drag, and Qt rebuilds its BSP index for
   // each move; a plain search serves a few dozen items as fast (Qt's advice for moving scenes).
@@ -59,6 +61,11 @@ LinkageScene::LinkageScene(QObject* parent)
   m_message->setPlacement(QPointF(14.0, 14.0), Qt::AlignLeft | Qt::AlignTop);
   m_message->setZValue(canvas::z::kMessage);
   m_message->setVisible(false);
+  addItem(m_rangeLabel);
+  m_rangeLabel->setBoxed(true);
+  m_rangeLabel->setColor(colors().infeasible.darker(170));
+  m_rangeLabel->setZValue(canvas::z::kLabels);
+  m_rangeLabel->setVisible(false);
 }
 
 // The items go before the QGraphicsScene base deletes whatever is left.
@@ -80,6 +87,7 @@ void LinkageScene::updateDesign(const MechanismDocument& document) {
   m_range->setVisible(!range.fullRotation && crank != nullptr);
   if (m_range->isVisible())
     m_range->setRange(range, toQt(document.pose().position[crank->pivot.index]), crank->length, crank->phase);
+  placeRangeLabel();
 
   computeBounds(document);
   m_items->setDesign(m, document.sweep(), document.pose(), linkageSize(), document.design().time);
@@ -192,7 +200,18 @@ void LinkageScene::updateArrows(const MechanismDocument& document) {
   }
 }
 
-void LinkageScene::setRangeLabelShown(bool shown) { m_range->setLabelShown(shown); }
+void LinkageScene::setRangeLabelShown(bool shown) {
+  m_rangeLabelShown = shown;
+  placeRangeLabel();
+}
+
+void LinkageScene::placeRangeLabel() {
+  m_rangeLabel->setVisible(m_rangeLabelShown && m_range->isVisible());
+  if (!m_rangeLabel->isVisible()) return;
+  m_rangeLabel->setText(m_range->labelText());
+  m_rangeLabel->setPos(m_range->labelAnchor());
+  m_rangeLabel->placeToward(m_range->labelDirection(), kRangeLabelGapPx);
+}
 
 void LinkageScene::setLinkColors(std::vector<QColor> colors) {
   m_colorsChanged = colors != m_linkColors;
@@ -207,6 +226,7 @@ void LinkageScene::setPresentationScale(double factor) {
   m_springs->setPresentationScale(factor);
   m_massCentres->setPresentationScale(factor);
   m_message->setScale(factor);
+  m_rangeLabel->setScale(factor);
   for (auto* arrows : {&m_velocityArrows, &m_accelerationArrows})
     for (ArrowItem* arrow : *arrows)
       if (arrow != nullptr) arrow->setPresentationScale(factor);
@@ -215,6 +235,7 @@ void LinkageScene::setPresentationScale(double factor) {
 void LinkageScene::refreshColors(const MechanismDocument& document) {
   setBackgroundBrush(colors().canvasBackground);
   m_message->setColor(colors().refusal);
+  m_rangeLabel->setColor(colors().infeasible.darker(170));
   m_items.reset();  // bars, plates, blocks, slideways and arrows were given their colours when made
   updateDesign(document);
   update();

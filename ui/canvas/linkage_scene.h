@@ -104,12 +104,15 @@ public:
   const ArrowItem* velocityArrow(kinematics::PointId point) const;
   const ArrowItem* accelerationArrow(kinematics::PointId point) const;
   const LabelItem* messageItem() const { return m_message; }
+  /// The crank's range in words (feasibleRangeItem's sentence), where the scene draws it.
+  const LabelItem* rangeLabelItem() const { return m_rangeLabel; }
   /// Scene units per (length unit/s) and per (length unit/s²); 0 when nothing moves.
   double velocityScale() const { return m_velocityScale; }
   double accelerationScale() const { return m_accelerationScale; }
 
 private:
   void rebuildArrows(std::size_t points);
+  void placeRangeLabel();
   void updateArrows(const MechanismDocument& document);
   void computeBounds(const MechanismDocument& document);
   void computeArrowScales(const MechanismDocument& document);
@@ -126,6 +129,8 @@ private:
   std::vector<ArrowItem*> m_velocityArrows;  // per point; null for ground pivots
   std::vector<ArrowItem*> m_accelerationArrows;
   LabelItem* m_message;
+  LabelItem* m_rangeLabel;  ///< m_range's sentence, drawn above the links
+  bool m_rangeLabelShown = true;
 
   QRectF m_bounds;
   bool m_showVelocity = false;

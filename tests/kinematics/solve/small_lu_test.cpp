@@ -23,28 +23,30 @@ namespace {
 // From mt19937's standard-fixed output, not a (library-specific) std distribution: in [−1, 1).
 double uniform(std::mt19937& g) { return -1.0 + 2.0 * static_cast<double>(g()) / 4294967296.0; }
 
-template <int N>
-using Matrix = Eigen::Matrix<double, N, N>;
+// Eigen's side of every comparison is dynamic-size: its fixed-size QR, LU and inverse unrolled
+// for five sizes made this one file a 90-second compile.
+using Matrix = Eigen::MatrixXd;
+using Vector = Eigen::VectorXd;
 
 // A random matrix with singular values spread from 1 down to 10^−decades (U Σ Vᵀ with U, V
 // the orthogonal factors of random matrices).
 template <int N>
-Matrix<N> conditioned(std::mt19937& g, double decades) {
-  Matrix<N> a, b;
+Matrix conditioned(std::mt19937& g, double decades) {
+  Matrix a(N, N), b(N, N);
   for (int r = 0; r < N; ++r)
     for (int c = 0; c < N; ++c) {
       a(r, c) = uniform(g);
       b(r, c) = uniform(g);
     }
-  const Matrix<N> u = a.householderQr().householderQ();
-  const Matrix<N> v = b.householderQr().householderQ();
-  Eigen::Matrix<double, N, 1> sigma;
+  const Matrix u = a.householderQr().householderQ();
+  const Matrix v = b.householderQr().householderQ();
+  Vector sigma(N);
   for (int i = 0; i < N; ++i) sigma[i] = std::pow(10.0, -decades * i / std::max(N - 1, 1));
   return u * sigma.asDiagonal() * v.transpose();
 }
 
 template <int N>
-SmallLu<N> factorized(const Matrix<N>& a) {
+SmallLu<N> factorized(const Matrix& a) {
   SmallLu<N> lu;
   lu.setZero();
   for (int r = 0; r < N; ++r)
@@ -56,21 +58,21 @@ SmallLu<N> factorized(const Matrix<N>& a) {
 template <int N>
 void checkAgainstEigen(std::mt19937& g, double decades) {
   CAPTURE(N, decades);
-  const Matrix<N> a = conditioned<N>(g, decades);
+  const Matrix a = conditioned<N>(g, decades);
   const SmallLu<N> lu = factorized<N>(a);
-  const Eigen::PartialPivLU<Matrix<N>> eigen(a);
-  Eigen::Matrix<double, N, 1> b;
+  const Eigen::PartialPivLU<Matrix> eigen(a);
+  Vector b(N);
   for (int i = 0; i < N; ++i) b[i] = uniform(g);
   // Both solve with the same pivots; they differ in the order of their roundings only, so
   // the solutions agree to round-off times the condition number (10^decades).
   const double tolerance = 1e-14 * std::pow(10.0, decades);
-  Eigen::Matrix<double, N, 1> x = b;
+  Vector x = b;
   lu.solve(x.data());
-  const Eigen::Matrix<double, N, 1> expected = eigen.solve(b);
+  const Vector expected = eigen.solve(b);
   CHECK((x - expected).cwiseAbs().maxCoeff() <= tolerance * expected.cwiseAbs().maxCoeff());
-  Eigen::Matrix<double, N, 1> y = b;
+  Vector y = b;
   lu.solveTransposed(y.data());
-  const Eigen::Matrix<double, N, 1> expectedTransposed = eigen.transpose().solve(b);
+  const Vector expectedTransposed = eigen.transpose().solve(b);
   CHECK((y - expectedTransposed).cwiseAbs().maxCoeff() <= tolerance * expectedTransposed.cwiseAbs().maxCoeff());
   // The same estimator, step for step: the same numbers up to round-off.
   CHECK(lu.rcond() == Approx(eigen.rcond()).epsilon(1e-9));
@@ -97,7 +99,7 @@ TEST_CASE("SmallLu's bound on ‖A⁻¹‖₁ holds", "[small_lu]") {
   for (const double decades : {0.0, 1.0, 3.0, 6.0})
     for (int trial = 0; trial < 50; ++trial) {
       CAPTURE(decades, trial);
-      const Matrix<8> a = conditioned<8>(g, decades);
+      const Matrix a = conditioned<8>(g, decades);
       const double exact = a.inverse().cwiseAbs().colwise().sum().maxCoeff();
       CHECK(factorized<8>(a).inverseNormBound() >= exact * (1.0 - 1e-12));
     }
@@ -115,7 +117,7 @@ TEST_CASE("SmallLu's bound settles rcondAbove on the Newton six-bars' Jacobians"
     while (!isFreePoint(m, PointId{first})) ++first;
     for (std::size_t j = 0; j < r->size(); ++j) {
       CAPTURE(m.points.size(), j);
-      Eigen::Matrix<double, 8, 8> a = Eigen::Matrix<double, 8, 8>::Zero();
+      Matrix a = Matrix::Zero(8, 8);
       int row = 0;
       for (const DistanceConstraint& c : m.constraints) {
         if (constraintLaterPoint(c).index < first) continue;
@@ -135,7 +137,7 @@ TEST_CASE("SmallLu's bound settles rcondAbove on the Newton six-bars' Jacobians"
 
 TEST_CASE("SmallLu reports a singular matrix: rcond 0 or NaN, solutions not finite", "[small_lu]") {
   // Column 2 is twice column 0: a zero pivot appears at step 2.
-  Matrix<4> a;
+  Matrix a(4, 4);
   a << 1.0, 2.0, 2.0, 0.5,   //
       3.0, -1.0, 6.0, 1.0,   //
       -2.0, 0.5, -4.0, 2.0,  //
@@ -156,7 +158,7 @@ TEST_CASE("SmallLu reports a singular matrix: rcond 0 or NaN, solutions not fini
 
 TEST_CASE("SmallLu pivots on the largest entry, the first on ties", "[small_lu]") {
   // Without pivoting the first step would divide by 1e-20 and lose the second row entirely.
-  Matrix<2> a;
+  Matrix a(2, 2);
   a << 1e-20, 1.0,  //
       1.0, 1.0;
   const SmallLu<2> lu = factorized<2>(a);
@@ -165,11 +167,11 @@ TEST_CASE("SmallLu pivots on the largest entry, the first on ties", "[small_lu]"
   CHECK(x[0] == Approx(1.0).epsilon(1e-15));
   CHECK(x[1] == Approx(1.0).epsilon(1e-15));
   // Equal magnitudes: rows stay in order, as Eigen's maxCoeff picks the first.
-  Matrix<2> tie;
+  Matrix tie(2, 2);
   tie << 2.0, 1.0,  //
       -2.0, 3.0;
   const SmallLu<2> tied = factorized<2>(tie);
-  const Eigen::PartialPivLU<Matrix<2>> eigen(tie);
+  const Eigen::PartialPivLU<Matrix> eigen(tie);
   CHECK(eigen.permutationP().indices()[0] == 0);
   Eigen::Vector2d y(1.0, 5.0);
   tied.solve(y.data());

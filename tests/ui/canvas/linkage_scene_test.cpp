@@ -8,6 +8,7 @@
 #include "ui/canvas/coupler_path_item.h"
 #include "ui/canvas/drag_handles.h"
 #include "ui/canvas/feasible_range_item.h"
+#include "ui/canvas/label_item.h"
 #include "ui/canvas/link_item.h"
 #include "ui/canvas/mass_centres_item.h"
 #include "ui/canvas/springs_item.h"
@@ -17,6 +18,9 @@
 
 #include <QGraphicsPolygonItem>
 #include <QPainterPath>
+
+#include <algorithm>
+#include <cmath>
 
 #include "tests/support/catch.h"
 
@@ -83,6 +87,19 @@ TEST_CASE("the crank's range is drawn only when the crank cannot turn fully", "[
     CHECK(bounds.center().x() == Approx(0.0).margin(1e-9));
     CHECK(bounds.width() > 2.0 * v.document.fourBar()->lengths.crank);
     CHECK(v.scene().contentBounds().contains(bounds));
+    // Its sentence: drawn above the links, so none crosses the text, and outside the crank's
+    // circle, so it covers neither O2's name nor the crank (it sat over both inside it).
+    const linkwright::ui::LabelItem* label = v.scene().rangeLabelItem();
+    REQUIRE(label->isVisible());
+    CHECK(label->text() == item->labelText());
+    CHECK(label->zValue() > v.scene().linkItem(fourbar::kCoupler)->zValue());
+    const QRectF box = label->boundingRect().translated(v.pixelOf(label->scenePos()));
+    const QPointF pivot = v.pixelOf(v.point(fourbar::kO2));
+    const double crankPx = v.document.fourBar()->lengths.crank * v.view.transform().m11();
+    const QPointF nearest(std::clamp(pivot.x(), box.left(), box.right()),
+                          std::clamp(pivot.y(), box.top(), box.bottom()));
+    CAPTURE(box.left(), box.top(), box.right(), box.bottom(), pivot.x(), pivot.y(), crankPx);
+    CHECK(std::hypot(nearest.x() - pivot.x(), nearest.y() - pivot.y()) > crankPx);
   }
   SECTION("undoing back to a crank-rocker hides it again") {
     ShownView v;
