@@ -1,0 +1,91 @@
+#pragma once
+// `arm` as one request for every front end: the two-link arm of seed 004 (or any other) with its
+// tip on a straight line at constant speed, one row per time sample. The arm is a linkage like
+// any other (a ground pivot, the tip driven along the line, the elbow an RRR joint:
+// model/driven_linkages.h), swept on its time base by the same solver; the request keeps the
+// fields and columns scripts written for it know, and the stretches of the path outside the
+// workspace come from their exact crossings with its annulus. linkwright-cli arm and Python's
+// linkwright.arm fill it alike; kinematics/io/arm_table.h writes its rows.
+
+#include "kinematics/analysis/two_link_arm.h"
+#include "kinematics/model/mechanism.h"
+#include "kinematics/model/path_shape.h"
+#include "kinematics/model/request_field.h"
+#include "kinematics/model/result.h"
+
+#include <Eigen/Core>
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace linkwright::kinematics {
+
+/// What an arm run is asked for. Unset geometry is the seed-arm example's when `example` is
+/// given, else refused by checkArmPath; the grid is `samples` rows (default 101) over the path,
+/// or one every `stepTime` seconds.
+struct ArmRequest {
+  std::optional<std::string> example;                 ///< only "seed-arm" (in metres)
+  std::optional<std::pair<double, double>> arm;       ///< upper, forearm lengths
+  std::optional<Eigen::Vector2d> fromPoint, toPoint;  ///< the tip's line
+  std::optional<double> speed;                        ///< of the tip along it, length unit / s
+  std::optional<Branch> elbow;                        ///< Open: elbow down (the example's)
+  std::optional<long long> samples;                   ///< rows, 2 to kMaxSamples
+  std::optional<double> stepTime;                     ///< s between rows, instead of samples
+  std::string lengthUnit = "m";
+  FrontEnd frontEnd = FrontEnd::Cli;  ///< who asked: the spelling of the fields in refusals
+};
+
+inline constexpr long long kDefaultArmSamples = 101;
+
+/// Where a row's tip is for the arm.
+enum class ArmReach { Ok, Singular, Unreachable };
+
+struct ArmRow {
+  double time = 0.0;
+  Eigen::Vector2d tip = Eigen::Vector2d::Zero();
+  ArmReach reach = ArmReach::Unreachable;
+  ArmState state;  ///< angles unwrapped along the path; meaningful unless Unreachable
+};
+
+/// The run: its rows, and what to say of them.
+struct ArmRun {
+  TwoLinkArm arm;
+  PolylinePath line;  ///< the tip's path, from fromPoint to toPoint
+  double speed = 0.0;
+  std::string lengthUnit;
+  std::vector<ArmRow> rows;
+  /// The stretches of the path outside the workspace, exactly, as path coordinates (from, to).
+  std::vector<std::pair<double, double>> outside;
+};
+
+/// The run the request asks for. Errors name the field as the front end spells it
+/// ("--step-time", "step_time"): the example, the unit with an example, the arm and line
+/// (checkArmPath), the grid.
+Result<ArmRun> runArm(const ArmRequest& request);
+
+/// One column of the arm's table: its name with the unit, and its value in a row.
+struct ArmColumn {
+  enum class Kind { Time, Tip, Joint, Rate };
+  std::string name;  ///< "tip_x_m", "upper_omega_rad_s"
+  Kind kind;
+  double (*value)(const ArmRow&);
+};
+
+/// The columns, written once: time_s, tip_x/y, upper/forearm angle (deg), ω, α, elbow_x/y.
+std::vector<ArmColumn> armColumns(const std::string& lengthUnit);
+
+/// Whether the column has a value in the row: joint cells where the tip can be reached, rate
+/// cells off the stretched and folded poses, the tip and the time always.
+bool armCellDefined(const ArmColumn& column, const ArmRow& row);
+
+/// The sentences the CLI writes on stderr and Python warns with: one per singular row ("the
+/// arm is stretched out at t = … s …: joint rates are undefined there"), then the unreachable
+/// samples and each stretch outside the workspace with its exact times. Empty when none.
+std::vector<std::string> armNotes(const ArmRun& run);
+
+/// Whether some sample cannot be reached, or the path leaves the workspace.
+bool armLeavesWorkspace(const ArmRun& run);
+
+}  // namespace linkwright::kinematics
