@@ -165,6 +165,27 @@ def four_bar(
 def load(path: str) -> Linkage:
     """A Linkwright document."""
 
+def accuracy(*, example: Optional[str] = None, output: Optional[str] = None) -> dict[str, Any]:
+    """The speed-accuracy trade, measured, as linkwright-cli accuracy: the CLI's columns, the errors
+    at full precision (example, method and reference as lists, the numbers as arrays)."""
+
+def arm(
+    *,
+    example: Optional[Literal["seed-arm"]] = None,
+    arm: Optional[tuple[float, float]] = None,
+    from_point: Optional[tuple[float, float]] = None,
+    to_point: Optional[tuple[float, float]] = None,
+    speed: Optional[float] = None,
+    elbow: Optional[Literal["up", "down"]] = None,
+    samples: Optional[int] = None,
+    step_time: Optional[float] = None,
+    unit: str = "m",
+    output: Optional[str] = None,
+    table: bool = False,
+) -> dict[str, numpy.ma.MaskedArray]:
+    """The two-link arm with its tip on a line at constant speed, as linkwright-cli arm: its columns
+    as masked arrays (masked where the CLI leaves a cell empty), its notes as SweepWarnings."""
+
 PATH_STARTS_PER_BLOCK: int
 
 class PathStartBlock:

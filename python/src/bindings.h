@@ -21,6 +21,12 @@ void bindProblems(pybind11::module_& module);
 /// Linkage.tolerance_study (tolerance.cpp).
 void bindTolerance(pybind11::class_<Linkage>& linkage);
 
+/// linkwright.arm (arm.cpp); its notes are `warning`s (linkwright.SweepWarning).
+void bindArm(pybind11::module_& module, pybind11::handle warning);
+
+/// linkwright.accuracy (accuracy.cpp).
+void bindAccuracy(pybind11::module_& module);
+
 /// linkwright.Atlas (atlas.cpp).
 void bindAtlas(pybind11::module_& module);
 

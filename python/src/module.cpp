@@ -255,6 +255,8 @@ PYBIND11_MODULE(_linkwright, module) {
   lp::bindSynthesis(module);
   lp::bindProblems(module);
   lp::bindAtlas(module);
+  lp::bindArm(module, sweepWarning);
+  lp::bindAccuracy(module);
 
   module.def(
       "examples",
