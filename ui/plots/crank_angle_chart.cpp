@@ -6,9 +6,16 @@
 #include "ui/plots/plot_grid.h"
 
 #include <QChart>
+#include <QChartView>
+#include <QFontMetricsF>
+#include <QGraphicsTextItem>
 #include <QLegend>
 #include <QPen>
 #include <QValueAxis>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
 
 namespace linkwright::ui {
 
@@ -35,6 +42,29 @@ QChart* makeCrankAngleChart(const QString& title, QValueAxis* xAxis, QValueAxis*
 std::unique_ptr<VerticalMarker> makeCrankCursor(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis) {
   return std::make_unique<VerticalMarker>(chart, xAxis, yAxis, QPen(colors().crankCursor, 1.5),
                                           QStringLiteral("cursor"));
+}
+
+int legendFittingHeight(const QChartView* view, int floor) {
+  const QLegend* legend = view->chart()->legend();
+  const QRectF area = legend->sceneBoundingRect();
+  if (!legend->isVisible() || !(area.height() > 0.0)) return floor;
+  // Qt lays every entry out, one below the other, whether or not the legend's height shows it
+  // (its size hint does not count them): the entries' extent is what the legend needs.
+  double top = area.bottom(), bottom = area.top();
+  std::function<void(const QGraphicsItem*)> visit = [&](const QGraphicsItem* item) {
+    if (dynamic_cast<const QGraphicsTextItem*>(item) != nullptr && item->isVisible()) {
+      top = std::min(top, item->sceneBoundingRect().top());
+      bottom = std::max(bottom, item->sceneBoundingRect().bottom());
+    }
+    for (const QGraphicsItem* child : item->childItems()) visit(child);
+  };
+  visit(legend);
+  if (!(bottom > top)) return floor;
+  // Qt centres the entries in the legend's height, so the room around them is not a measure:
+  // half an entry's height above and below. The legend's height follows the view's one for one
+  // (the title and the axis keep theirs).
+  const double needs = (bottom - top) + QFontMetricsF(legend->font()).height();
+  return std::max(floor, static_cast<int>(std::ceil(view->height() + needs - area.height())));
 }
 
 void applyAxisRange(QValueAxis* axis, const AxisRange& range) {

@@ -11,6 +11,7 @@
 #include <memory>
 
 class QChart;
+class QChartView;
 class QValueAxis;
 
 namespace linkwright::ui {
@@ -21,6 +22,11 @@ QChart* makeCrankAngleChart(const QString& title, QValueAxis* xAxis, QValueAxis*
 
 /// The crank-angle cursor of such a chart.
 std::unique_ptr<VerticalMarker> makeCrankCursor(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis);
+
+/// The least height of `view`, at least `floor`, at which its legend shows every entry: a short
+/// chart cut the last ones off at the legend's foot ("rocker limit" on a 1366×768 laptop). From
+/// the legend's own size hint against the height it has, so it holds at any font size.
+int legendFittingHeight(const QChartView* view, int floor);
 
 /// Applies a rounded range to a value axis (bounds, ticks, label format).
 void applyAxisRange(QValueAxis* axis, const AxisRange& range);

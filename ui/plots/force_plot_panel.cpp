@@ -7,6 +7,7 @@
 #include "ui/plots/axis_range.h"
 #include "ui/plots/chart_colors.h"
 #include "ui/plots/chart_scale.h"
+#include "ui/plots/crank_angle_chart.h"
 #include "ui/plots/force_chart_view.h"
 #include "ui/plots/machine_page.h"
 #include "ui/plots/plot_area_alignment.h"
@@ -303,6 +304,8 @@ void ForcePlotPanel::alignCharts() {
   if (!m_charts->isVisible()) return;
   alignPlotAreas({m_torque->chart(), m_joints->chart()});
   alignPlotAreas({m_shaking->chart(), m_shakingMoment->chart()});
+  for (ForceChartView* chart : {m_torque, m_joints, m_shaking, m_shakingMoment})
+    chart->setMinimumHeight(legendFittingHeight(chart, kChartMinimumHeight));
 }
 
 std::optional<double> ForcePlotPanel::cursorX() const { return ui::cursorX(*m_document, m_x, m_unit); }

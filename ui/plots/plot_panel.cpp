@@ -3,6 +3,7 @@
 #include "ui/plots/axis_range.h"
 #include "ui/plots/chart_colors.h"
 #include "ui/plots/chart_scale.h"
+#include "ui/plots/crank_angle_chart.h"
 #include "ui/plots/hover_readout.h"
 #include "ui/plots/limit_markers.h"
 #include "ui/plots/plot_area_alignment.h"
@@ -33,6 +34,7 @@ constexpr std::array<QuantityKind, kQuantityKindCount> kKinds{
 // Shares of the panel's height: the chart that names the x axis when presenting gets a little
 // more, for that title's line.
 constexpr int kChartStretch = 6;
+constexpr int kChartMinimumHeight = 110;  // px: six charts (a slider-crank) fit a 768 px screen
 constexpr int kTitledChartStretch = 7;
 
 QString titleOf(QuantityKind kind) {
@@ -68,8 +70,9 @@ PlotPanel::PlotPanel(MechanismDocument* document, QWidget* parent)
   connect(&m_settleTimer, &QTimer::timeout, this, &PlotPanel::settleValueRanges);
   for (const QuantityKind kind : kKinds) {
     auto* view = new QuantityChartView(kind, titleOf(kind), this);
-    // Small enough that six charts (a slider-crank) fit the window's height.
-    view->setMinimumHeight(110);
+    // Small enough that six charts (a slider-crank) fit the window's height; taller where the
+    // legend needs it (alignCharts).
+    view->setMinimumHeight(kChartMinimumHeight);
     connect(view, &QuantityChartView::curveHovered, this, [this](PlotQuantity q, QPointF p, bool inside) {
       if (const PlotCurve* c = curve(q))
         m_readout->showPoint(*c, p, m_unit, QString::fromStdString(m_document->lengthUnit()), inside, m_x);
@@ -170,6 +173,17 @@ void PlotPanel::setOnScreen(bool onScreen) {
   if (onScreen && m_stale) {
     m_stale = false;
     refreshData();
+  }
+  // Laid out while hidden (a new font in presentation mode), a chart's legend may need more
+  // height than it was given; a view that grows is aligned again as it resizes.
+  if (onScreen) fitLegends();
+}
+
+void PlotPanel::fitLegends() {
+  for (QuantityChartView* view : m_views) {
+    if (view->isHidden()) continue;
+    view->chart()->layout()->activate();  // the legend as the next paint lays it out
+    view->setMinimumHeight(legendFittingHeight(view, kChartMinimumHeight));
   }
 }
 
@@ -375,6 +389,7 @@ void PlotPanel::alignCharts(const QList<QuantityChartView*>& changed) {
     if (changed.contains(view)) relaid.append(view->chart());
   }
   alignPlotAreas(shown, relaid);
+  fitLegends();
   // A resize, or new axis labels or legend entries, may have changed the plot area's width.
   if (!shown.isEmpty()) m_widthTimer.start();
 }

@@ -138,6 +138,8 @@ private:
                             QList<QuantityChartView*>& changed);
   /// Aligns the shown charts' plot areas; `changed` (default: all) are laid out afresh.
   void alignCharts(const QList<QuantityChartView*>& changed);
+  /// Each shown chart at least as tall as its legend needs (legendFittingHeight).
+  void fitLegends();
   void alignCharts();
 
   MechanismDocument* m_document;

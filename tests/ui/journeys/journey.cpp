@@ -29,6 +29,7 @@
 #include <QDialogButtonBox>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGraphicsLayout>
 #include <QGraphicsTextItem>
 #include <QGuiApplication>
 #include <QHeaderView>
@@ -401,7 +402,9 @@ void Journey::checkWidgetsWhole() {
 void Journey::checkChartsWhole() {
   for (const QChartView* view : m_window.findChildren<QChartView*>()) {
     if (!view->isVisible() || view->window() != &m_window) continue;
-    const QChart* chart = view->chart();
+    QChart* chart = view->chart();
+    // As the next paint lays it out: a chart's layout is activated by a posted event.
+    chart->layout()->activate();
     // The axes' titles as our axes item draws them: never "a [..." (the unit lost).
     if (const ui::PlotAxesItem* axes = ui::plotAxes(chart)) {
       for (const Qt::Orientation o : {Qt::Horizontal, Qt::Vertical}) {
@@ -416,12 +419,22 @@ void Journey::checkChartsWhole() {
         if (drawn != full) CHECK(drawn.endsWith(full.mid(bracket)));
       }
     }
-    // The legend's entries: whole, or elided by Qt with the whole name in the entry's tooltip.
+    // The legend's entries: whole, or elided by Qt with the whole name in the entry's tooltip;
+    // and each inside the legend, not cut off at its foot on a short chart.
     const QLegend* legend = chart->legend();
     if (!legend->isVisible()) continue;
     QStringList shown;
+    const QRectF legendArea = legend->sceneBoundingRect().adjusted(-1, -1, 1, 1);
     std::function<void(const QGraphicsItem*)> collect = [&](const QGraphicsItem* item) {
-      if (const auto* t = dynamic_cast<const QGraphicsTextItem*>(item)) shown << t->toPlainText();
+      if (const auto* t = dynamic_cast<const QGraphicsTextItem*>(item); t != nullptr && t->isVisible()) {
+        shown << t->toPlainText();
+        const QRectF text = t->sceneBoundingRect();
+        CAPTURE(view->height(), view->minimumHeight(), view->parentWidget()->height());
+        CAPTURE(chart->title().toStdString(), t->toPlainText().toStdString(), text.top(), text.bottom(),
+                legendArea.top(), legendArea.bottom());
+        CHECK(text.top() >= legendArea.top());
+        CHECK(text.bottom() <= legendArea.bottom());
+      }
       for (const QGraphicsItem* child : item->childItems()) collect(child);
     };
     collect(legend);
