@@ -9,12 +9,14 @@
 #include "app/cli/commands.h"
 
 #include "kinematics/design/balance_request.h"
+#include "kinematics/dynamics/machine_request.h"
 #include "kinematics/io/balance_json.h"
 #include "kinematics/io/document_json.h"
 #include "kinematics/io/safe_file.h"
 #include "kinematics/model/number_text.h"
 #include "kinematics/model/units.h"
 
+#include <algorithm>
 #include <ostream>
 
 namespace linkwright::cli {
@@ -23,12 +25,18 @@ namespace {
 namespace k = kinematics;
 using k::formatShort;
 
-void printComparison(std::ostream& out, const k::MachineDuty& before, const k::MachineDuty& after) {
+void printComparison(std::ostream& out, const k::BalanceRun& run) {
+  const k::MachineDuty &before = *run.before, &after = *run.after;
   const auto row = [&](const std::string& name, double a, double b, const std::string& unit) {
     const std::string change = a > 0.0 ? " (" + formatShort(100.0 * (b - a) / a, 3) + " %)" : "";
     out << "  " << name << formatShort(a, 5) << " → " << formatShort(b, 5) << " " << unit << change << "\n";
   };
-  out << "over one crank turn at " << formatShort(before.omega, 5) << " rad/s, before → after:\n";
+  out << "over one crank turn at " << formatShort(before.omega, 5) << " rad/s, before → after (" << run.turnSamples
+      << " samples, every figure "
+      << (run.converged ? "within " + k::formatCompact(k::kMachineTolerance, 1) + " relative"
+                        : "to " + k::formatCompact(std::max(before.worstAccuracy(), after.worstAccuracy()), 2) +
+                              " relative, not converged")
+      << "):\n";
   row("shaking force peak    ", before.shakingForcePeak, after.shakingForcePeak, "N");
   row("shaking moment peak   ", before.shakingMomentPeak, after.shakingMomentPeak, "N·m");
   row("driving torque RMS    ", before.rmsTorque, after.rmsTorque, "N·m");
@@ -74,7 +82,7 @@ void printWeights(std::ostream& out, const k::BalanceRun& run, const Invocation&
         << formatShort(c.centre.along, 6) << " " << unit << " along and " << formatShort(c.centre.across, 6) << " "
         << unit << " across the link, joined to its mass\n";
   if (run.weights->counterweights.empty()) out << "  no counterweight needed: it is balanced already\n";
-  if (run.before && run.after) printComparison(out, *run.before, *run.after);
+  if (run.before && run.after) printComparison(out, run);
   else out << "no turn to compare over: " << run.noTurn << "\n";
 }
 

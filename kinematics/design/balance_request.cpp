@@ -1,7 +1,10 @@
 #include "kinematics/design/balance_request.h"
 
+#include "kinematics/design/sweep_grid.h"
+#include "kinematics/dynamics/machine_request.h"
 #include "kinematics/dynamics/spring_balance.h"
 
+#include <algorithm>
 #include <tuple>
 
 namespace linkwright::kinematics {
@@ -81,12 +84,16 @@ Result<BalanceRun> runBalance(const Design& design, const BalanceRequest& r) {
   BalanceRun run;
   run.balanced = design;
   run.balanced.dynamics = balance->balanced;
-  const SweepSpec turn = designTurn(design);
-  auto before = machineDuty(design.mechanism, design.dynamics, turn, {});
-  auto after = machineDuty(design.mechanism, run.balanced.dynamics, turn, {});
+  // Converged as machine's figures are: on the design's own grid the peaks and RMS were only
+  // as good as that grid.
+  const MachineDefaults turn = machineDefaultsOf(sweepGridOf(design));
+  auto before = runMachine(design.mechanism, design.dynamics, turn, {});
+  auto after = runMachine(design.mechanism, run.balanced.dynamics, turn, {});
   if (before && after) {
-    run.before = std::move(*before);
-    run.after = std::move(*after);
+    run.turnSamples = std::max(before->samples, after->samples);
+    run.converged = before->converged && after->converged;
+    run.before = std::move(before->duty);
+    run.after = std::move(after->duty);
   } else {
     run.noTurn = (before ? after.error() : before.error()).message;
   }

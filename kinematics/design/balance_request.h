@@ -43,8 +43,12 @@ struct BalanceRun {
   BalanceMethod method = BalanceMethod::Counterweights;
   Design balanced;                      ///< the design with the counterweights or the spring
   std::optional<ForceBalance> weights;  ///< Counterweights: what was added
-  /// Counterweights: one turn's figures before and after (designTurn); `noTurn` says why not.
+  /// Counterweights: one turn's figures before and after, each converged as `machine`'s are
+  /// (machine_request.h: within kMachineTolerance, on the grid the run chose); `noTurn` says
+  /// why there is no turn.
   std::optional<MachineDuty> before, after;
+  std::size_t turnSamples = 0;  ///< of the finer of the two turns read, both ends counted
+  bool converged = true;        ///< both turns' figures within the tolerance
   std::string noTurn;
   std::optional<SpringBalance> spring;       ///< Spring and SpringSearch: the spring found
   std::optional<SpringPlacement> placement;  ///< SpringSearch: where its ends were put

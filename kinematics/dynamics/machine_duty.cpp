@@ -163,6 +163,11 @@ double scaleOf(const DutyFigure& f, const MachineDuty& d) {
   if (f.group == "motor" && f.key == "mean_power_W") return d.motor.peakTorque * std::abs(d.motor.speed);
   if (f.key == "mean_torque_Nm") return d.peakTorque;
   if (f.key == "mean_power_W") return d.peakTorque * std::abs(d.omega);
+  // A balanced linkage's shaking force is zero to round-off: measured against its own size no
+  // grid converges (a balanced four-bar ran to the largest grid and said "not converged"), so
+  // against the forces in its bearings, and its moment against the driving torque.
+  if (f.key == "shaking_force_peak_N") return std::max(std::abs(f.value), d.bearingLoadPeak);
+  if (f.key == "shaking_moment_peak_Nm") return std::max(std::abs(f.value), d.peakTorque);
   return std::abs(f.value);
 }
 

@@ -9,7 +9,8 @@ JsonValue dutyJson(const std::optional<MachineDuty>& d) {
           {"shaking_moment_peak_Nm", d->shakingMomentPeak},
           {"rms_torque_Nm", d->rmsTorque},
           {"peak_torque_Nm", d->peakTorque},
-          {"bearing_load_peak_N", d->bearingLoadPeak}};
+          {"bearing_load_peak_N", d->bearingLoadPeak},
+          {"accuracy", d->worstAccuracy()}};
 }
 
 JsonValue endJson(const SpringEnd& end) {
@@ -32,6 +33,10 @@ JsonValue balanceJson(const BalanceRun& run, const JsonValue& output) {
     j["omega_rad_s"] = run.before ? JsonValue(run.before->omega) : JsonValue(nullptr);
     j["before"] = dutyJson(run.before);
     j["after"] = dutyJson(run.after);
+    if (run.before) {
+      j["samples"] = run.turnSamples;
+      j["converged"] = run.converged;
+    }
     if (!run.noTurn.empty()) j["no_turn"] = run.noTurn;
     return j;
   }
