@@ -23,6 +23,8 @@
 #include <QTabWidget>
 #include <QVBoxLayout>
 
+#include <utility>
+
 namespace linkwright::ui {
 
 namespace k = kinematics;
@@ -117,6 +119,7 @@ void ForcePlotPanel::setAngleUnit(AngleUnit unit) {
 }
 
 void ForcePlotPanel::setPresentationScale(double factor) {
+  m_legendsRefit = true;
   for (QChart* chart : {m_torque->chart(), m_joints->chart(), m_shaking->chart(), m_shakingMoment->chart(),
                         m_polar->chart(), m_machine->speedChart()->chart()})
     setChartScale(chart, factor);
@@ -304,8 +307,10 @@ void ForcePlotPanel::alignCharts() {
   if (!m_charts->isVisible()) return;
   alignPlotAreas({m_torque->chart(), m_joints->chart()});
   alignPlotAreas({m_shaking->chart(), m_shakingMoment->chart()});
+  // Only growing until the fonts change (see PlotPanel::fitLegends: the page's scroll bar).
+  const bool afresh = std::exchange(m_legendsRefit, false);
   for (ForceChartView* chart : {m_torque, m_joints, m_shaking, m_shakingMoment})
-    chart->setMinimumHeight(legendFittingHeight(chart, kChartMinimumHeight));
+    chart->setMinimumHeight(legendFittingHeight(chart, afresh ? kChartMinimumHeight : chart->minimumHeight()));
 }
 
 std::optional<double> ForcePlotPanel::cursorX() const { return ui::cursorX(*m_document, m_x, m_unit); }

@@ -111,6 +111,7 @@ private:
   std::vector<ForceJoint> m_jointList;
   std::vector<SeriesRuns> m_runs;  // reused between updates
   PlotXAxis m_x;                   // of the last refreshAll
+  bool m_legendsRefit = true;      // the charts' legend heights fitted afresh (alignCharts)
 };
 
 }  // namespace linkwright::ui

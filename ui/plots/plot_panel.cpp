@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace linkwright::ui {
 namespace {
@@ -180,10 +181,14 @@ void PlotPanel::setOnScreen(bool onScreen) {
 }
 
 void PlotPanel::fitLegends() {
+  // A fitted height only grows until the legends' entries or fonts change (m_legendsRefit): a
+  // taller chart can bring up the page's scroll bar, which narrows the charts, and a height
+  // that followed that back down brought the bar and the chart into a loop without end.
+  const bool afresh = std::exchange(m_legendsRefit, false);
   for (QuantityChartView* view : m_views) {
     if (view->isHidden()) continue;
     view->chart()->layout()->activate();  // the legend as the next paint lays it out
-    view->setMinimumHeight(legendFittingHeight(view, kChartMinimumHeight));
+    view->setMinimumHeight(legendFittingHeight(view, afresh ? kChartMinimumHeight : view->minimumHeight()));
   }
 }
 
@@ -201,6 +206,7 @@ bool PlotPanel::refreshCurves() {
   m_overlayStale = true;  // the compared columns' curves may have new names or be gone
   m_selector->setCurves(m_curves, selection);
   for (QuantityChartView* view : m_views) view->setCurves(m_curves);
+  m_legendsRefit = true;
   if (m_limits) m_limits->raise();  // last in the angle chart's legend, as "rocker limit" reads best
   if (m_ratioLimits) m_ratioLimits->raise();
   m_readout->clearPoint();
@@ -224,6 +230,7 @@ void PlotPanel::reportPlotWidth() {
 }
 
 void PlotPanel::applySelection() {
+  m_legendsRefit = true;  // curves shown or hidden: other legend entries
   kinematics::SolveRequest wanted = requestFor(selection(), m_curves);
   wanted.newton = m_document->request().newton;  // the quality's, not the selection's
   // A new request re-sweeps and comes back as Change::Request, which re-plots; otherwise
@@ -337,6 +344,7 @@ void PlotPanel::settleValueRanges() {
 }
 
 void PlotPanel::setPresentationScale(double factor) {
+  m_legendsRefit = true;
   for (QuantityChartView* view : m_views) setChartScale(view->chart(), factor);
   // In front of a class the controls give their height to the charts: at the larger text the
   // charts' axis titles would not fit beside short plots.

@@ -163,6 +163,7 @@ private:
   QString m_comparisonSource;
   std::vector<OverlayCurve> m_overlay;  // m_comparison on m_x in m_unit
   bool m_overlayStale = false;          // m_overlay is to be placed anew
+  bool m_legendsRefit = true;           // the charts' legend heights fitted afresh (fitLegends)
 };
 
 }  // namespace linkwright::ui
