@@ -9,7 +9,9 @@
 #include "kinematics/io/arm_table.h"
 #include "kinematics/io/safe_file.h"
 
+#include <optional>
 #include <ostream>
+#include <vector>
 
 namespace linkwright::cli {
 
@@ -18,22 +20,31 @@ namespace k = kinematics;
 ExitCode runArm(const Invocation& inv, std::ostream& out, std::ostream& err) {
   const k::ArmRequest request{inv.example, inv.arm,     inv.fromPoint, inv.toPoint,    inv.speed,
                               inv.elbow,   inv.samples, inv.stepTime,  inv.lengthUnit, k::FrontEnd::Cli};
-  const auto run = k::runArm(request);
-  if (!run) {
-    err << "linkwright-cli: " << run.error().message << "\n";
+  // The rows are written as the run hands them on, so 10⁷ of them take a few MB.
+  std::optional<k::Result<k::ArmRun>> run;
+  const auto writeRows = [&](std::ostream& to) -> std::optional<std::string> {
+    std::optional<k::io::ArmTableWriter> writer;
+    run = k::runArm(request, [&](const std::vector<k::ArmRow>& rows) {
+      if (!writer) writer.emplace(to, request.lengthUnit, inv.tableFormat);
+      writer->write(rows);
+      return static_cast<bool>(to);  // a failed write stops the run; the writer says why
+    });
+    if (!*run && run->error().code != k::ErrorCode::Cancelled) return run->error().message;
+    return std::nullopt;
+  };
+  const auto problem =
+      inv.outputFile ? k::io::writeStreamSafely(*inv.outputFile, writeRows) : (writeRows(out), std::nullopt);
+  if (run && !*run && run->error().code != k::ErrorCode::Cancelled) {
+    err << "linkwright-cli: " << run->error().message << "\n";
     return ExitCode::BadInput;
   }
-  const std::string text = inv.tableFormat ? k::io::armTable(*run) : k::io::armCsv(*run);
-  if (inv.outputFile) {
-    if (auto problem = k::io::writeFileSafely(*inv.outputFile, text)) {
-      err << "linkwright-cli: " << problem->message << "\n";
-      return ExitCode::IoError;
-    }
-  } else {
-    out << text << std::flush;
+  out << std::flush;
+  if (problem || !out) {
+    err << "linkwright-cli: " << (problem ? problem->message : "cannot write the standard output") << "\n";
+    return ExitCode::IoError;
   }
-  for (const std::string& note : k::armNotes(*run)) err << "linkwright-cli: " << note << "\n";
-  return k::armLeavesWorkspace(*run) ? ExitCode::NotAssemblable : ExitCode::Success;
+  for (const std::string& note : k::armNotes(**run)) err << "linkwright-cli: " << note << "\n";
+  return k::armLeavesWorkspace(**run) ? ExitCode::NotAssemblable : ExitCode::Success;
 }
 
 }  // namespace linkwright::cli

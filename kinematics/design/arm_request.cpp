@@ -38,6 +38,9 @@ std::string keyFor(const std::string& field) {
   return "arm";  // upper, forearm, or their spread
 }
 
+// Rows solved and handed on at a time: a few MB however many the run has.
+constexpr std::size_t kArmWindowRows = 4096;
+
 // The time grid: `samples` rows evenly spaced over the path, or one every `stepTime` seconds
 // from 0, ending at the path's end when the step lands on it (as analyze's --step).
 Result<std::pair<double, std::size_t>> timeGrid(const ArmRequest& request, double duration) {
@@ -58,7 +61,7 @@ Result<std::pair<double, std::size_t>> timeGrid(const ArmRequest& request, doubl
 
 }  // namespace
 
-Result<ArmRun> runArm(const ArmRequest& request) {
+Result<ArmRun> runArm(const ArmRequest& request, const ArmRowSink& sink) {
   const std::string& unit = request.lengthUnit;
   if (unit.empty() ||
       unit.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ") != std::string::npos)
@@ -103,21 +106,39 @@ Result<ArmRun> runArm(const ArmRequest& request) {
   SweepSpec spec;
   spec.samples = grid->second;
   spec.time = TimeBase{ConstantVelocity{0.0, path.speed}, 0.0, grid->first};
-  const auto swept = sweep(*mechanism, spec);
+  std::vector<ArmRow> rows;
+  const auto swept = sweepInWindows(*mechanism, spec, {}, kArmWindowRows, [&](const SweepResult& s, std::size_t) {
+    rows.resize(s.size());
+    for (std::size_t j = 0; j < s.size(); ++j) {
+      ArmRow& row = rows[j];
+      row.time = s.time[j];
+      row.tip = pathAt(run.line, s.inputAngle[j]).point;
+      row.reach = s.ok(j) ? ArmReach::Ok : s.assembled(j) ? ArmReach::Singular : ArmReach::Unreachable;
+      row.state = {};
+      if (row.reach == ArmReach::Unreachable) {
+        ++run.unreachable;
+        continue;
+      }
+      row.state = {s.linkAngle[kUpper][j], s.linkAngle[kForearm][j], s.linkOmega[kUpper][j], s.linkOmega[kForearm][j],
+                   s.linkAlpha[kUpper][j], s.linkAlpha[kForearm][j], s.position[kElbow][j]};
+      if (row.reach == ArmReach::Singular && run.singular++ < kArmSingularRowsNamed) run.singularRows.push_back(row);
+    }
+    run.samples += rows.size();
+    return sink(rows);
+  });
   if (!swept) return swept.error();
-  const SweepResult& s = *swept;
-  run.rows.resize(s.size());
-  for (std::size_t j = 0; j < s.size(); ++j) {
-    ArmRow& row = run.rows[j];
-    row.time = s.time[j];
-    row.tip = pathAt(run.line, s.inputAngle[j]).point;
-    row.reach = s.ok(j) ? ArmReach::Ok : s.assembled(j) ? ArmReach::Singular : ArmReach::Unreachable;
-    if (row.reach == ArmReach::Unreachable) continue;
-    row.state = {s.linkAngle[kUpper][j], s.linkAngle[kForearm][j], s.linkOmega[kUpper][j], s.linkOmega[kForearm][j],
-                 s.linkAlpha[kUpper][j], s.linkAlpha[kForearm][j], s.position[kElbow][j]};
-  }
   run.outside =
       pathOutsideAnnulus(run.line, Eigen::Vector2d::Zero(), std::abs(arm.upper - arm.forearm), arm.upper + arm.forearm);
+  return run;
+}
+
+Result<ArmRun> runArm(const ArmRequest& request) {
+  std::vector<ArmRow> kept;
+  auto run = runArm(request, [&](const std::vector<ArmRow>& rows) {
+    kept.insert(kept.end(), rows.begin(), rows.end());
+    return true;
+  });
+  if (run) run.value().rows = std::move(kept);
   return run;
 }
 
@@ -144,29 +165,26 @@ bool armCellDefined(const ArmColumn& column, const ArmRow& row) {
   return row.reach != ArmReach::Unreachable;
 }
 
-bool armLeavesWorkspace(const ArmRun& run) {
-  return !run.outside.empty() || std::any_of(run.rows.begin(), run.rows.end(),
-                                             [](const ArmRow& row) { return row.reach == ArmReach::Unreachable; });
-}
+bool armLeavesWorkspace(const ArmRun& run) { return !run.outside.empty() || run.unreachable > 0; }
 
 std::vector<std::string> armNotes(const ArmRun& run) {
   std::vector<std::string> notes;
   const std::string& u = run.lengthUnit;
   const double outer = run.arm.upper + run.arm.forearm, inner = std::abs(run.arm.upper - run.arm.forearm);
-  for (const ArmRow& row : run.rows) {
-    if (row.reach != ArmReach::Singular) continue;
+  for (const ArmRow& row : run.singularRows) {
     const double reach = row.tip.norm();
     const bool stretched = std::abs(reach - outer) < std::abs(reach - inner);
     notes.push_back("note: the arm is " + std::string(stretched ? "stretched out" : "folded") +
                     " at t = " + formatShort(row.time) + " s, tip " + pointText(row.tip) + " " + u +
                     ": joint rates are undefined there (ω and α cells left empty)");
   }
+  if (run.singular > run.singularRows.size())
+    notes.push_back("note: the arm is stretched out or folded at " +
+                    std::to_string(run.singular - run.singularRows.size()) + " more samples (joint rates left empty)");
   if (!armLeavesWorkspace(run)) return notes;
-  const auto missed = std::count_if(run.rows.begin(), run.rows.end(),
-                                    [](const ArmRow& row) { return row.reach == ArmReach::Unreachable; });
   std::string text = "the tip leaves the arm's workspace (" + formatShort(inner) + " " + u + " to " +
-                     formatShort(outer) + " " + u + " from the shoulder): " + std::to_string(missed) + " of " +
-                     std::to_string(run.rows.size()) + " samples cannot be reached; their joint cells are left empty.";
+                     formatShort(outer) + " " + u + " from the shoulder): " + std::to_string(run.unreachable) + " of " +
+                     std::to_string(run.samples) + " samples cannot be reached; their joint cells are left empty.";
   for (const auto& [from, to] : run.outside)
     text += "\n  unreachable for t = " + formatShort(from / run.speed) + " s to " + formatShort(to / run.speed) +
             " s (exact): tip from " + pointText(pathAt(run.line, from).point) + " " + u + " to " +

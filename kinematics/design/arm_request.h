@@ -15,6 +15,8 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -49,20 +51,35 @@ struct ArmRow {
   ArmState state;  ///< angles unwrapped along the path; meaningful unless Unreachable
 };
 
-/// The run: its rows, and what to say of them.
+/// The singular rows an arm run names in its notes; the rest are counted.
+inline constexpr std::size_t kArmSingularRowsNamed = 20;
+
+/// The run: what to say of its rows, and the rows themselves unless they were streamed.
 struct ArmRun {
   TwoLinkArm arm;
   PolylinePath line;  ///< the tip's path, from fromPoint to toPoint
   double speed = 0.0;
   std::string lengthUnit;
-  std::vector<ArmRow> rows;
+  std::vector<ArmRow> rows;  ///< every row, from runArm(request); empty when they went to a sink
   /// The stretches of the path outside the workspace, exactly, as path coordinates (from, to).
   std::vector<std::pair<double, double>> outside;
+  std::size_t samples = 0;           ///< rows in the run
+  std::size_t unreachable = 0;       ///< rows whose tip the arm cannot reach
+  std::size_t singular = 0;          ///< rows where the arm is stretched out or folded
+  std::vector<ArmRow> singularRows;  ///< the first kArmSingularRowsNamed of them
 };
 
-/// The run the request asks for. Errors name the field as the front end spells it
+/// A window of consecutive rows, in order; returns false to stop the run (cancelled).
+using ArmRowSink = std::function<bool(const std::vector<ArmRow>& rows)>;
+
+/// The run the request asks for, its rows handed to `sink` a window at a time, so that memory
+/// does not grow with `samples` (10⁷ rows are written from a few MB); the returned run holds no
+/// rows. Errors, all before the first window, name the field as the front end spells it
 /// ("--step-time", "step_time"): the example, the unit with an example, the arm and line
-/// (checkArmPath), the grid.
+/// (checkArmPath), the grid; ErrorCode::Cancelled when the sink stopped it.
+Result<ArmRun> runArm(const ArmRequest& request, const ArmRowSink& sink);
+
+/// The same run with every row kept in `rows`.
 Result<ArmRun> runArm(const ArmRequest& request);
 
 /// One column of the arm's table: its name with the unit, and its value in a row.
@@ -80,9 +97,10 @@ std::vector<ArmColumn> armColumns(const std::string& lengthUnit);
 /// cells off the stretched and folded poses, the tip and the time always.
 bool armCellDefined(const ArmColumn& column, const ArmRow& row);
 
-/// The sentences the CLI writes on stderr and Python warns with: one per singular row ("the
-/// arm is stretched out at t = … s …: joint rates are undefined there"), then the unreachable
-/// samples and each stretch outside the workspace with its exact times. Empty when none.
+/// The sentences the CLI writes on stderr and Python warns with: one per named singular row
+/// ("the arm is stretched out at t = … s …: joint rates are undefined there"; the rest counted),
+/// then the unreachable samples and each stretch outside the workspace with its exact times.
+/// Empty when none.
 std::vector<std::string> armNotes(const ArmRun& run);
 
 /// Whether some sample cannot be reached, or the path leaves the workspace.

@@ -6,47 +6,58 @@
 #include <algorithm>
 #include <iomanip>
 #include <sstream>
-#include <vector>
 
 namespace linkwright::kinematics::io {
+namespace {
 
-std::string armCsv(const ArmRun& run) {
-  const std::vector<ArmColumn> columns = armColumns(run.lengthUnit);
+constexpr int kDecimals = 4;
+
+std::string whole(const ArmRun& run, bool aligned) {
   std::ostringstream out;
-  for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << csvField(columns[c].name);
-  out << "\r\n";
-  for (const ArmRow& row : run.rows) {
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      out << (c ? "," : "");
-      if (!armCellDefined(columns[c], row)) continue;
-      const double value = columns[c].value(row);
-      out << (columns[c].kind == ArmColumn::Kind::Time ? formatShort(value, 12) : formatDouble(value));
-    }
-    out << "\r\n";
-  }
+  ArmTableWriter writer(out, run.lengthUnit, aligned);
+  writer.write(run.rows);
   return out.str();
 }
 
-std::string armTable(const ArmRun& run) {
-  constexpr int kDecimals = 4;
-  const std::vector<ArmColumn> columns = armColumns(run.lengthUnit);
-  std::ostringstream out;
-  std::vector<int> widths;
-  for (const ArmColumn& c : columns) {
-    widths.push_back(std::max(static_cast<int>(c.name.size()), kDecimals + 8));
-    out << (widths.size() > 1 ? "  " : "") << std::setw(widths.back()) << c.name;
-  }
-  out << "\n";
-  for (const ArmRow& row : run.rows) {
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      const std::string text = armCellDefined(columns[c], row)   ? formatFixed(columns[c].value(row), kDecimals)
-                               : row.reach == ArmReach::Singular ? "singular"
-                                                                 : "unreachable";
-      out << (c ? "  " : "") << std::setw(widths[c]) << text;
+}  // namespace
+
+ArmTableWriter::ArmTableWriter(std::ostream& out, const std::string& lengthUnit, bool aligned)
+    : m_out(out), m_columns(armColumns(lengthUnit)) {
+  for (std::size_t c = 0; c < m_columns.size(); ++c) {
+    const std::string& name = m_columns[c].name;
+    if (!aligned) {
+      m_out << (c ? "," : "") << csvField(name);
+      continue;
     }
-    out << "\n";
+    m_widths.push_back(std::max(static_cast<int>(name.size()), kDecimals + 8));
+    m_out << (c ? "  " : "") << std::setw(m_widths.back()) << name;
   }
-  return out.str();
+  m_out << (aligned ? "\n" : "\r\n");
 }
+
+void ArmTableWriter::write(const std::vector<ArmRow>& rows) {
+  const bool aligned = !m_widths.empty();
+  for (const ArmRow& row : rows) {
+    for (std::size_t c = 0; c < m_columns.size(); ++c) {
+      const ArmColumn& column = m_columns[c];
+      const bool defined = armCellDefined(column, row);
+      if (aligned) {
+        const std::string text = defined                           ? formatFixed(column.value(row), kDecimals)
+                                 : row.reach == ArmReach::Singular ? "singular"
+                                                                   : "unreachable";
+        m_out << (c ? "  " : "") << std::setw(m_widths[c]) << text;
+        continue;
+      }
+      m_out << (c ? "," : "");
+      if (defined)
+        m_out << (column.kind == ArmColumn::Kind::Time ? formatShort(column.value(row), 12)
+                                                       : formatDouble(column.value(row)));
+    }
+    m_out << (aligned ? "\n" : "\r\n");
+  }
+}
+
+std::string armCsv(const ArmRun& run) { return whole(run, false); }
+std::string armTable(const ArmRun& run) { return whole(run, true); }
 
 }  // namespace linkwright::kinematics::io

@@ -5,15 +5,29 @@
 
 #include "kinematics/design/arm_request.h"
 
+#include <ostream>
 #include <string>
+#include <vector>
 
 namespace linkwright::kinematics::io {
 
-/// CSV (CRLF rows): round-trip doubles, the time column to 12 significant digits (0.03, not
-/// 0.029999999999999999).
-std::string armCsv(const ArmRun& run);
+/// Writes the rows to a stream as a run hands them on (runArm's sink), so a table of 10⁷ rows
+/// is never held whole: the header when made, each window's rows by write(). CSV (CRLF rows):
+/// round-trip doubles, the time column to 12 significant digits (0.03, not
+/// 0.029999999999999999); the table: 4 decimals, columns aligned.
+class ArmTableWriter {
+public:
+  ArmTableWriter(std::ostream& out, const std::string& lengthUnit, bool aligned);
+  void write(const std::vector<ArmRow>& rows);
 
-/// The same rows as a table for people: 4 decimals, columns aligned.
+private:
+  std::ostream& m_out;
+  std::vector<ArmColumn> m_columns;
+  std::vector<int> m_widths;  ///< per column; empty for CSV
+};
+
+/// A run's kept rows as CSV, and as the aligned table.
+std::string armCsv(const ArmRun& run);
 std::string armTable(const ArmRun& run);
 
 }  // namespace linkwright::kinematics::io
