@@ -38,11 +38,12 @@ ExitCode runArm(const Invocation& inv, std::ostream& out, std::ostream& err) {
     err << "linkwright-cli: " << run->error().message << "\n";
     return ExitCode::BadInput;
   }
-  out << std::flush;
-  if (problem || !out) {
-    err << "linkwright-cli: " << (problem ? problem->message : "cannot write the standard output") << "\n";
+  if (problem) {
+    err << "linkwright-cli: " << problem->message << "\n";
     return ExitCode::IoError;
   }
+  // Cancelled by a standard output that failed: runCli says so, as for every command.
+  if (!*run) return ExitCode::IoError;
   for (const std::string& note : k::armNotes(**run)) err << "linkwright-cli: " << note << "\n";
   return k::armLeavesWorkspace(**run) ? ExitCode::NotAssemblable : ExitCode::Success;
 }

@@ -658,7 +658,16 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   // synthesis of many starts): a sentence and exit 1, never an abort. The one writer has then
   // left any output file as it was.
   try {
-    return runCommand(args, out, err);
+    const int code = runCommand(args, out, err);
+    // A full disk or a closed pipe behind `> file` shows only here, when the last buffer is
+    // written: every command's results are then incomplete, whatever it returned.
+    out << std::flush;
+    if (!out) {
+      err << "linkwright-cli: cannot write the standard output (is the disk full?); what was written is "
+             "incomplete\n";
+      return toInt(ExitCode::IoError);
+    }
+    return code;
   } catch (const std::bad_alloc&) {
     err << "linkwright-cli: out of memory: this machine cannot hold what the command needs (try fewer samples, "
            "rows or starts); no output file was changed\n";

@@ -98,6 +98,12 @@ Result<ArmRun> runArm(const ArmRequest& request, const ArmRowSink& sink) {
     return refusal(
         request, "to_point",
         " must differ from " + fieldName("from_point", request.frontEnd) + " (both are " + pointText(path.from) + ")");
+  // Refused here, not by the sweep's time base, so the message names the speed typed.
+  if (!(length / path.speed <= kMaxTime))
+    return refusal(request, "speed",
+                   " is too slow: the path of " + formatShort(length) + " " + unit + " would take " +
+                       formatShort(length / path.speed) + " s, beyond " + formatShort(kMaxTime) +
+                       " s (the speed must be at least " + formatShort(length / kMaxTime) + " " + unit + "/s)");
   ArmRun run{arm, PolylinePath{{path.from, path.to}}, path.speed, request.lengthUnit, {}, {}};
   auto mechanism = makeTwoLinkArm({arm.upper, arm.forearm, run.line, elbow, request.lengthUnit});
   if (!mechanism) return refusal(request, "arm", ": " + mechanism.error().message);

@@ -43,6 +43,7 @@ inline constexpr double kMaxInertia = 1e27;  ///< kg·m²
 inline constexpr double kMaxForce = 1e24;    ///< N
 inline constexpr double kMaxTorque = 1e33;   ///< N·m
 inline constexpr double kMaxGravity = 1e6;   ///< m/s²
+inline constexpr double kMaxTime = 1e6;      ///< |t| of a time base, s (11.6 days)
 
 /// Error unless `value` is finite and within ±kMaxLength: a coordinate, an offset, a point's
 /// place on a link, an angle.

@@ -91,7 +91,6 @@ Error fieldError(const std::string& field, const std::string& why) {
 }
 
 // A law's time: positive and finite, at most kMaxTime.
-constexpr double kMaxTime = 1e6;  // s: eleven days of motion
 
 std::optional<Error> checkDuration(double value, const std::string& field) {
   if (value > 0.0 && value <= kMaxTime) return std::nullopt;

@@ -464,8 +464,8 @@ bool SweepResult::lockedAfter(std::size_t sample) const {
 
 std::optional<Error> checkTimeBase(const TimeBase& time, InputKind kind) {
   if (auto e = checkMotionLaw(time.law, kind)) return e;
-  if (auto e = checkMagnitude(time.fromTime, "from time", 1e6, "s")) return e;
-  if (auto e = checkMagnitude(time.toTime, "to time", 1e6, "s")) return e;
+  if (auto e = checkMagnitude(time.fromTime, "from time", kMaxTime, "s")) return e;
+  if (auto e = checkMagnitude(time.toTime, "to time", kMaxTime, "s")) return e;
   if (time.toTime < time.fromTime)
     return Error{ErrorCode::InvalidValue, "to time",
                  "to time must not be before from time (got " + formatNumber(time.fromTime) + " to " +

@@ -85,6 +85,24 @@ TEST_CASE("help and version succeed and document the exit codes", "[cli]") {
   CHECK(version.out.rfind("linkwright-cli ", 0) == 0);
 }
 
+// A standard output that cannot be written (`> /dev/full`, a full disk) fails every command
+// with exit 1 and a sentence; the results are incomplete and must not look finished.
+TEST_CASE("a standard output that cannot be written exits 1, whatever the command", "[cli][errors]") {
+  using Args = std::vector<std::string>;
+  const Args args =
+      GENERATE(Args{"analyze", "--example", "watt-ii", "--samples", "20"}, Args{"extremes", "--example", "watt-ii"},
+               Args{"classify", "--example", "watt-ii"}, Args{"machine", "--example", "funsho-fourbar", "--cs", "0.05"},
+               Args{"arm", "--example", "seed-arm"}, Args{"inversions", "--example", "funsho-fourbar"},
+               Args{"accuracy", "--example", "watt-ii"}, Args{"examples"}, Args{"--help"});
+  CAPTURE(args);
+  std::ostream unwritable(nullptr);  // every write fails, as on a full disk
+  std::ostringstream err;
+  CHECK(cli::runCli(args, unwritable, err) == 1);
+  CHECK(err.str().find("cannot write the standard output") != std::string::npos);
+  // The same command with a working output succeeds, so the failure is the output's.
+  CHECK(run(args).code == 0);
+}
+
 TEST_CASE("bad usage exits 2 with a message naming the option and the reason", "[cli][errors]") {
   using Args = std::vector<std::string>;
   auto [args, expected] = GENERATE(table<Args, std::string>({
@@ -595,6 +613,9 @@ TEST_CASE("arm and centres: bad options exit 2 naming the option", "[cli][arm][c
       {Args{"arm", "--arm", "0.3"}, "--arm expects UPPER,FOREARM (got '0.3')"},
       {Args{"arm", "--example", "seed-arm", "--speed", "nan"}, "--speed must be positive and finite (got undefined)"},
       {Args{"arm", "--example", "seed-arm", "--speed", "-2"}, "--speed must be positive and finite (got -2)"},
+      {Args{"arm", "--example", "seed-arm", "--speed", "1e-300"},
+       "--speed is too slow: the path of 0.424264 m would take 4.24264e+299 s, beyond 1e+06 s (the speed must be "
+       "at least 4.24264e-07 m/s)"},
       {Args{"arm", "--example", "seed-arm", "--from-point", "1,inf"}, "--from-point: y must be finite (got undefined)"},
       {Args{"arm", "--example", "seed-arm", "--to-point", "0.3,0"},
        "--to-point must differ from --from-point (both are (0.3, 0))"},
