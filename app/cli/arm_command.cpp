@@ -24,7 +24,7 @@ ExitCode runArm(const Invocation& inv, std::ostream& out, std::ostream& err) {
   std::optional<k::Result<k::ArmRun>> run;
   const auto writeRows = [&](std::ostream& to) -> std::optional<std::string> {
     std::optional<k::io::ArmTableWriter> writer;
-    run = k::runArm(request, [&](const std::vector<k::ArmRow>& rows) {
+    run = k::runArm(request, [&](const std::vector<k::ArmRow>& rows, std::size_t) {
       if (!writer) writer.emplace(to, request.lengthUnit, inv.tableFormat);
       writer->write(rows);
       return static_cast<bool>(to);  // a failed write stops the run; the writer says why

@@ -130,7 +130,7 @@ Result<ArmRun> runArm(const ArmRequest& request, const ArmRowSink& sink) {
       if (row.reach == ArmReach::Singular && run.singular++ < kArmSingularRowsNamed) run.singularRows.push_back(row);
     }
     run.samples += rows.size();
-    return sink(rows);
+    return sink(rows, spec.samples);
   });
   if (!swept) return swept.error();
   run.outside =
@@ -140,7 +140,8 @@ Result<ArmRun> runArm(const ArmRequest& request, const ArmRowSink& sink) {
 
 Result<ArmRun> runArm(const ArmRequest& request) {
   std::vector<ArmRow> kept;
-  auto run = runArm(request, [&](const std::vector<ArmRow>& rows) {
+  auto run = runArm(request, [&](const std::vector<ArmRow>& rows, std::size_t rowsInAll) {
+    kept.reserve(rowsInAll);
     kept.insert(kept.end(), rows.begin(), rows.end());
     return true;
   });

@@ -69,8 +69,10 @@ struct ArmRun {
   std::vector<ArmRow> singularRows;  ///< the first kArmSingularRowsNamed of them
 };
 
-/// A window of consecutive rows, in order; returns false to stop the run (cancelled).
-using ArmRowSink = std::function<bool(const std::vector<ArmRow>& rows)>;
+/// A window of consecutive rows, in order, and how many rows the run has in all (the same in
+/// every window, so the first can size what the rows go into); returns false to stop the run
+/// (cancelled).
+using ArmRowSink = std::function<bool(const std::vector<ArmRow>& rows, std::size_t rowsInAll)>;
 
 /// The run the request asks for, its rows handed to `sink` a window at a time, so that memory
 /// does not grow with `samples` (10⁷ rows are written from a few MB); the returned run holds no

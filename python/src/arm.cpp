@@ -8,11 +8,15 @@
 
 #include "kinematics/design/arm_request.h"
 #include "kinematics/io/arm_table.h"
+#include "kinematics/io/safe_file.h"
 
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
+#include <cstdint>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,30 +35,76 @@ std::optional<k::Branch> elbowOf(const std::optional<std::string>& elbow) {
   throw CoreError{k::Error{k::ErrorCode::InvalidValue, "elbow", "elbow must be 'up' or 'down' (got '" + *elbow + "')"}};
 }
 
+// The columns of armColumns, filled a window at a time: each sized once, at the first window,
+// to the run's rows, so 10⁷ rows take 11 columns of 9 bytes a row and no copy of the rows.
+struct ArmArrays {
+  std::vector<k::ArmColumn> columns;
+  std::vector<std::vector<double>> values;
+  std::vector<std::vector<std::uint8_t>> masked;
+
+  explicit ArmArrays(const std::string& unit)
+      : columns(k::armColumns(unit)), values(columns.size()), masked(columns.size()) {}
+
+  void add(const std::vector<k::ArmRow>& rows, std::size_t rowsInAll) {
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      values[c].reserve(rowsInAll);
+      masked[c].reserve(rowsInAll);
+      for (const k::ArmRow& row : rows) {
+        const double value = k::armCellDefined(columns[c], row) ? columns[c].value(row) : 0.0;
+        const bool ok = k::armCellDefined(columns[c], row) && std::isfinite(value);
+        values[c].push_back(ok ? value : 0.0);
+        masked[c].push_back(ok ? 0 : 1);
+      }
+    }
+  }
+
+  py::dict take() {
+    py::dict out;
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      out[py::str(columns[c].name)] = maskedArrayTaking(std::move(values[c]), std::move(masked[c]));
+    return out;
+  }
+};
+
 py::dict arm(std::optional<std::string> example, std::optional<std::pair<double, double>> lengths,
              std::optional<Eigen::Vector2d> fromPoint, std::optional<Eigen::Vector2d> toPoint,
              std::optional<double> speed, std::optional<std::string> elbow, std::optional<long long> samples,
              std::optional<double> stepTime, std::string unit, std::optional<std::string> output, bool table) {
   const k::ArmRequest request{std::move(example), lengths, fromPoint, toPoint,         speed,
                               elbowOf(elbow),     samples, stepTime,  std::move(unit), k::FrontEnd::Python};
-  const k::ArmRun run = [&] {
+  ArmArrays arrays(request.lengthUnit);
+  // One run fills the arrays and, with `output`, writes the CLI's bytes as the rows come: the
+  // same writer as -o, so the file is never held whole either.
+  std::optional<k::Result<k::ArmRun>> run;
+  std::optional<k::Error> unwritten;
+  {
     py::gil_scoped_release unlocked;
-    return valueOrThrow(k::runArm(request));
-  }();
-  if (output) writeOrThrow(*output, table ? k::io::armTable(run) : k::io::armCsv(run));
-  for (const std::string& note : k::armNotes(run))
-    if (PyErr_WarnEx(armWarning.ptr(), note.c_str(), 2) != 0) throw py::error_already_set();
-  py::dict columns;
-  for (const k::ArmColumn& column : k::armColumns(run.lengthUnit)) {
-    std::vector<double> values;
-    std::vector<bool> defined;
-    for (const k::ArmRow& row : run.rows) {
-      defined.push_back(k::armCellDefined(column, row));
-      values.push_back(defined.back() ? column.value(row) : 0.0);
-    }
-    columns[py::str(column.name)] = maskedArray(values, defined);
+    const auto runInto = [&](std::ostream* to) {
+      std::optional<k::io::ArmTableWriter> writer;
+      run = k::runArm(request, [&](const std::vector<k::ArmRow>& rows, std::size_t rowsInAll) {
+        arrays.add(rows, rowsInAll);
+        if (!to) return true;
+        if (!writer) writer.emplace(*to, request.lengthUnit, table);
+        writer->write(rows);
+        return static_cast<bool>(*to);  // a failed write stops the run; the writer says why
+      });
+    };
+    if (output)
+      unwritten = k::io::writeStreamSafely(*output, [&](std::ostream& to) -> std::optional<std::string> {
+        runInto(&to);
+        if (!*run && run->error().code != k::ErrorCode::Cancelled) return run->error().message;
+        return std::nullopt;
+      });
+    else runInto(nullptr);
   }
-  return columns;
+  if (run && !*run && run->error().code != k::ErrorCode::Cancelled) throw CoreError(run->error());
+  if (unwritten) {
+    PyErr_SetString(PyExc_OSError, unwritten->message.c_str());
+    throw py::error_already_set();
+  }
+  for (const std::string& note : k::armNotes(**run))
+    if (PyErr_WarnEx(armWarning.ptr(), note.c_str(), 2) != 0) throw py::error_already_set();
+  return arrays.take();
 }
 
 }  // namespace

@@ -21,11 +21,12 @@ TEST_CASE("the arm's rows stream in bounded windows, the same as the rows kept w
   REQUIRE(kept->rows.size() == 20001);
   std::size_t windows = 0, largest = 0, rows = 0;
   double lastTime = -1.0;
-  bool inOrder = true;
+  bool inOrder = true, allCounted = true;
   std::ostringstream streamed;
   k::io::ArmTableWriter writer(streamed, "m", false);
-  const auto run = k::runArm(request, [&](const std::vector<k::ArmRow>& window) {
+  const auto run = k::runArm(request, [&](const std::vector<k::ArmRow>& window, std::size_t rowsInAll) {
     ++windows;
+    allCounted = allCounted && rowsInAll == 20001;
     largest = std::max(largest, window.size());
     for (const k::ArmRow& row : window) {
       inOrder = inOrder && row.time > lastTime && row.time == kept->rows[rows].time;
@@ -39,6 +40,7 @@ TEST_CASE("the arm's rows stream in bounded windows, the same as the rows kept w
   CHECK(run->rows.empty());
   CHECK(rows == 20001);
   CHECK(inOrder);
+  CHECK(allCounted);
   CHECK(windows > 1);
   CHECK(largest <= 4096);
   CHECK(run->unreachable > 0);
@@ -54,7 +56,7 @@ TEST_CASE("a sink that stops the arm's run cancels it", "[arm]") {
   request.example = "seed-arm";
   request.samples = 100000;
   std::size_t windows = 0;
-  const auto run = k::runArm(request, [&](const std::vector<k::ArmRow>&) { return ++windows < 2; });
+  const auto run = k::runArm(request, [&](const std::vector<k::ArmRow>&, std::size_t) { return ++windows < 2; });
   REQUIRE_FALSE(run);
   CHECK(run.error().code == k::ErrorCode::Cancelled);
   CHECK(windows == 2);
