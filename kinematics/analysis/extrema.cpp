@@ -66,8 +66,11 @@ void SampledExtrema::add(std::size_t index, bool valid, double value) {
   m_samples = index + 1;
 }
 
-std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec& spec, const SampledExtrema& sampled,
-                                     const PoseQuantity& quantity, double angleTolerance) {
+namespace {
+
+// refineExtrema, the maximum's search left out (its sample kept) unless `maximumToo`.
+std::optional<Extrema> refine(const Mechanism& mechanism, const SweepSpec& spec, const SampledExtrema& sampled,
+                              const PoseQuantity& quantity, double angleTolerance, bool maximumToo) {
   if (!sampled.lowest()) return std::nullopt;
   Search search{mechanism, spec, quantity, {}};
   preparePose(mechanism, search.pose);
@@ -93,9 +96,9 @@ std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec
   const auto [minLo, minHi] = bracket(lowest);
   out.minimum = search.maximize(minLo, minHi, -1.0, search.at(lowest.value, parameterAt(spec, lowest.index), false),
                                 angleTolerance);
-  const auto [maxLo, maxHi] = bracket(highest);
-  out.maximum = search.maximize(maxLo, maxHi, 1.0, search.at(highest.value, parameterAt(spec, highest.index), false),
-                                angleTolerance);
+  const auto [maxLo, maxHi] = maximumToo ? bracket(highest) : std::pair{1.0, 0.0};
+  out.maximum = search.at(highest.value, parameterAt(spec, highest.index), false);
+  if (maximumToo) out.maximum = search.maximize(maxLo, maxHi, 1.0, out.maximum, angleTolerance);
   if (spec.time) return out;
   // Report angles inside the requested range (a full-turn bracket may step just outside it).
   for (Extremum* e : {&out.minimum, &out.maximum}) {
@@ -107,12 +110,31 @@ std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec
   return out;
 }
 
+SampledExtrema sampledOf(const std::vector<double>& values, const std::vector<bool>& valid) {
+  SampledExtrema sampled;
+  for (std::size_t j = 0; j < values.size(); ++j) sampled.add(j, valid[j], values[j]);
+  return sampled;
+}
+
+}  // namespace
+
+std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec& spec, const SampledExtrema& sampled,
+                                     const PoseQuantity& quantity, double angleTolerance) {
+  return refine(mechanism, spec, sampled, quantity, angleTolerance, true);
+}
+
 std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec& spec,
                                      const std::vector<double>& values, const std::vector<bool>& valid,
                                      const PoseQuantity& quantity, double angleTolerance) {
-  SampledExtrema sampled;
-  for (std::size_t j = 0; j < values.size(); ++j) sampled.add(j, valid[j], values[j]);
-  return refineExtrema(mechanism, spec, sampled, quantity, angleTolerance);
+  return refine(mechanism, spec, sampledOf(values, valid), quantity, angleTolerance, true);
+}
+
+std::optional<Extremum> refineMinimum(const Mechanism& mechanism, const SweepSpec& spec,
+                                      const std::vector<double>& values, const std::vector<bool>& valid,
+                                      const PoseQuantity& quantity, double angleTolerance) {
+  const auto extrema = refine(mechanism, spec, sampledOf(values, valid), quantity, angleTolerance, false);
+  if (!extrema) return std::nullopt;
+  return extrema->minimum;
 }
 
 }  // namespace linkwright::kinematics

@@ -75,4 +75,10 @@ std::optional<Extrema> refineExtrema(const Mechanism& mechanism, const SweepSpec
                                      const std::vector<double>& values, const std::vector<bool>& valid,
                                      const PoseQuantity& quantity, double angleTolerance = 1e-10);
 
+/// The minimum alone, refined as above: for a least distance or a worst angle, where the
+/// largest value is not wanted, at half the solves.
+std::optional<Extremum> refineMinimum(const Mechanism& mechanism, const SweepSpec& spec,
+                                      const std::vector<double>& values, const std::vector<bool>& valid,
+                                      const PoseQuantity& quantity, double angleTolerance = 1e-10);
+
 }  // namespace linkwright::kinematics

@@ -1,5 +1,6 @@
 #include "kinematics/tune/optimise_objective.h"
 
+#include "kinematics/analysis/extrema.h"
 #include "kinematics/analysis/transmission.h"
 #include "kinematics/dynamics/machine_duty.h"
 #include "kinematics/model/driver.h"
@@ -28,63 +29,92 @@ std::string linkNames(const Mechanism& m) {
 // The sample's input as the curve's x: the instant on a time base, else the input.
 double inputAt(const SweepResult& s, std::size_t j) { return s.time.empty() ? s.inputAngle[j] : s.time[j]; }
 
-std::optional<ObjectiveValue> peakAlpha(const Mechanism& m, const OptimiseObjective& o, const SweepResult& s) {
-  const std::size_t link = m.findLink(o.link)->index;
+std::optional<ObjectiveValue> peakAlpha(const Design& d, const OptimiseObjective& o, const SweepResult& s) {
+  const std::size_t link = d.mechanism.findLink(o.link)->index;
   ObjectiveValue v;
+  std::vector<bool> valid(s.size());
   for (std::size_t j = 0; j < s.size(); ++j) {
-    if (!s.ok(j)) continue;
+    valid[j] = s.ok(j);
+    if (!valid[j]) continue;
     v.curve.x.push_back(inputAt(s, j));
     v.curve.y.push_back(s.linkAlpha[link][j]);
-    v.value = std::max(v.value, std::abs(s.linkAlpha[link][j]));
   }
-  if (v.curve.x.empty()) return std::nullopt;
+  // Refined between the samples on solved poses (extrema.h), as `extremes` prints it: the
+  // design's peak, not its grid's.
+  const auto peaks = refineExtrema(d.mechanism, designSweepSpec(d), s.linkAlpha[link], valid,
+                                   [&](const Pose& p, double) { return p.linkAlpha[link]; });
+  if (!peaks) return std::nullopt;
+  v.value = std::max(std::abs(peaks->minimum.value), std::abs(peaks->maximum.value));
   return v;
+}
+
+// The worst min(μ, π − μ) over the joints that have a transmission angle, from `angleOf(p)`.
+template <typename AngleOf>
+double worstTransmissionOf(const Mechanism& m, const AngleOf& angleOf) {
+  double worst = kPi;
+  for (std::size_t p = 0; p < m.points.size(); ++p)
+    if (hasTransmissionAngle(m.points[p].definition)) {
+      const double mu = angleOf(p);
+      worst = std::min(worst, std::min(mu, kPi - mu));
+    }
+  return worst;
 }
 
 std::optional<ObjectiveValue> transmission(const Design& d, const SweepResult& s) {
   const Mechanism& m = d.mechanism;
   ObjectiveValue v;
-  v.value = kPi;
+  std::vector<double> worst(s.size(), kPi);
+  std::vector<bool> valid(s.size());
   for (std::size_t j = 0; j < s.size(); ++j) {
-    if (!s.assembled(j)) continue;
-    double worst = kPi;
-    for (std::size_t p = 0; p < m.points.size(); ++p)
-      if (hasTransmissionAngle(m.points[p].definition) && !s.transmissionAngle[p].empty()) {
-        const double mu = s.transmissionAngle[p][j];
-        worst = std::min(worst, std::min(mu, kPi - mu));
-      }
+    valid[j] = s.assembled(j);
+    if (!valid[j]) continue;
+    worst[j] = worstTransmissionOf(m, [&](std::size_t p) { return s.transmissionAngle[p][j]; });
     v.curve.x.push_back(inputAt(s, j));
-    v.curve.y.push_back(worst);
-    v.value = std::min(v.value, worst);
+    v.curve.y.push_back(worst[j]);
   }
   if (v.curve.x.empty()) return std::nullopt;
-  // A four-bar's worst over the grid's crank range is exact (its extremes lie at θ = kπ or at
-  // the range's ends), not the samples' worst.
+  // A four-bar's worst over the grid's crank range is exact in closed form (its extremes lie at
+  // θ = kπ or at the range's ends); any other linkage's is refined between the samples.
   if (const auto f = asFourBar(m); f && !d.time && s.lockedBetween.empty()) {
     const double shift = f->crankPhase - f->frameAngle;
     if (const auto exact =
-            worstTransmissionBetween(f->lengths, s.inputAngle.front() + shift, s.inputAngle.back() + shift))
+            worstTransmissionBetween(f->lengths, s.inputAngle.front() + shift, s.inputAngle.back() + shift)) {
       v.value = *exact;
+      return v;
+    }
   }
+  const auto least = refineMinimum(m, designSweepSpec(d), worst, valid, [&](const Pose& pose, double) {
+    return worstTransmissionOf(m, [&](std::size_t p) { return pose.transmissionAngle[p]; });
+  });
+  if (!least) return std::nullopt;
+  v.value = least->value;
   return v;
 }
 
-std::optional<ObjectiveValue> path(const Mechanism& m, const OptimiseObjective& o, const SweepResult& s) {
-  const std::size_t point = m.findPoint(o.point)->index;
+std::optional<ObjectiveValue> path(const Design& d, const OptimiseObjective& o, const SweepResult& s) {
+  const std::size_t point = d.mechanism.findPoint(o.point)->index;
   ObjectiveValue v;
-  std::vector<Eigen::Vector2d> curve;
-  for (std::size_t j = 0; j < s.size(); ++j)
-    if (s.assembled(j)) {
-      curve.push_back(s.position[point][j]);
-      v.curve.x.push_back(curve.back().x());
-      v.curve.y.push_back(curve.back().y());
-    }
-  if (curve.empty()) return std::nullopt;
+  std::vector<bool> valid(s.size());
+  for (std::size_t j = 0; j < s.size(); ++j) {
+    valid[j] = s.assembled(j);
+    if (!valid[j]) continue;
+    v.curve.x.push_back(s.position[point][j].x());
+    v.curve.y.push_back(s.position[point][j].y());
+  }
+  if (v.curve.x.empty()) return std::nullopt;
+  // Each target's distance from the path is the least |P − target| over the motion: the samples
+  // bracket it and it is refined between them, so it is the path's, not a polyline's.
+  const SweepSpec spec = designSweepSpec(d);
   double worst = 0.0, squares = 0.0;
+  std::vector<double> distance(s.size(), 0.0);
   for (const Eigen::Vector2d& t : o.targets) {
-    const double distance = distanceFromPolyline(t, curve);
-    worst = std::max(worst, distance);
-    squares += distance * distance;
+    for (std::size_t j = 0; j < s.size(); ++j)
+      if (valid[j]) distance[j] = (s.position[point][j] - t).norm();
+    const auto nearest = refineMinimum(d.mechanism, spec, distance, valid,
+                                       [&](const Pose& pose, double) { return (pose.position[point] - t).norm(); });
+    if (!nearest) return std::nullopt;
+    worst = std::max(worst, nearest->value);
+    squares += nearest->value * nearest->value;
   }
   v.value = o.measure == PathMeasure::Worst ? worst : std::sqrt(squares / static_cast<double>(o.targets.size()));
   return v;
@@ -155,24 +185,12 @@ std::optional<Error> checkObjective(const Design& design, const OptimiseObjectiv
 std::optional<ObjectiveValue> measureObjective(const Design& design, const OptimiseObjective& o,
                                                const SweepResult& sweep) {
   switch (o.kind) {
-  case ObjectiveKind::PeakAlpha: return peakAlpha(design.mechanism, o, sweep);
+  case ObjectiveKind::PeakAlpha: return peakAlpha(design, o, sweep);
   case ObjectiveKind::Transmission: return transmission(design, sweep);
-  case ObjectiveKind::Path: return path(design.mechanism, o, sweep);
+  case ObjectiveKind::Path: return path(design, o, sweep);
   case ObjectiveKind::RmsTorque: return rmsTorque(design);
   }
   return std::nullopt;
-}
-
-double distanceFromPolyline(const Eigen::Vector2d& target, const std::vector<Eigen::Vector2d>& path) {
-  double best = (target - path.front()).norm();
-  for (std::size_t i = 1; i < path.size(); ++i) {
-    const Eigen::Vector2d a = path[i - 1];
-    const Eigen::Vector2d ab = path[i] - a;
-    const double squared = ab.squaredNorm();
-    const double t = squared > 0.0 ? std::clamp((target - a).dot(ab) / squared, 0.0, 1.0) : 0.0;
-    best = std::min(best, (target - (a + t * ab)).norm());
-  }
-  return best;
 }
 
 }  // namespace linkwright::kinematics

@@ -2,10 +2,13 @@
 // What an optimisation of a linkage minimises or maximises (optimise_linkage.h), each measured
 // on the design's own analysis grid by the ordinary sweep (sweep.h), so that the number a user
 // reads after the optimisation is the number any analysis of the new design gives:
-//   peak |α|: max |α_link| over the samples whose rates exist (status Ok), minimised;
-//   transmission: the worst min(μ, π − μ) over every dyad and sample, maximised; for a
-//     recognised four-bar on an angle grid it is exact over the grid's crank range
-//     (transmission.h, worstTransmissionBetween), for any other linkage the sampled worst;
+//   peak |α|: max |α_link| over the grid's range where the rates exist, minimised: the
+//     samples bracket the peak and it is refined between them on solved poses (extrema.h, as
+//     `extremes` prints it), so it is exact, not the samples' largest;
+//   transmission: the worst min(μ, π − μ) over every joint with a transmission angle,
+//     maximised; for a recognised four-bar on an angle grid exact in closed form over the
+//     grid's crank range (transmission.h, worstTransmissionBetween), for any other linkage
+//     refined between the samples as peak |α| is;
 //   path: the distance of each target point from the named point's path, which is the polyline
 //     through the point's positions at the grid's samples (a target's distance is that to the
 //     nearest segment), and of those distances the worst (max) or the RMS √(Σd²/n), minimised;
@@ -84,8 +87,5 @@ std::optional<Error> checkObjective(const Design& design, const OptimiseObjectiv
 /// inverse dynamics failing). Assumes checkObjective passed.
 std::optional<ObjectiveValue> measureObjective(const Design& design, const OptimiseObjective& objective,
                                                const SweepResult& sweep);
-
-/// The distance (length unit) of `target` from the polyline through `path`'s points.
-double distanceFromPolyline(const Eigen::Vector2d& target, const std::vector<Eigen::Vector2d>& path);
 
 }  // namespace linkwright::kinematics
