@@ -101,14 +101,15 @@ void printText(std::ostream& out, const Study& st, const std::string& source) {
     text.resize(std::max(w, text.size() + 1), ' ');
     return text;
   };
+  out << "MC worst: the deviation of the sample that deviates most at the grid's inputs, refined between them; "
+         "first order: at the grid's inputs\n";
   out << pad("column", width + 2) << pad("MC worst", 12) << pad("at " + st.input.column.name, 22)
       << pad("first order", 13) << "most sensitive to\n";
   for (std::size_t c = 0; c < mc.bands.size(); ++c) {
     const auto& b = mc.bands[c];
     const auto [d, value] = mostSensitive(s, c);
     out << pad(b.column.name, width + 2) << pad(n(b.worstDeviation), 12)
-        << pad(mc.used > 0 ? n(st.input.at(b.worstGridSample)) : std::string(k::kUndefinedText), 22)
-        << pad(n(s.firstOrderWorst[c]), 13);
+        << pad(mc.used > 0 ? n(b.worstInput) : std::string(k::kUndefinedText), 22) << pad(n(s.firstOrderWorst[c]), 13);
     // The driven crank's ω and α are the driver's: sensitive to nothing.
     if (value > 0.0) out << s.dimensions[d].name << " (" << n(value) << " " << unitOf(b.column, u) << "/" << u << ")\n";
     else out << "none\n";
@@ -167,7 +168,8 @@ void printJson(std::ostream& out, const Study& st, const std::string& source) {
     const auto& b = mc.bands[c];
     k::io::JsonValue column{{"name", b.column.name},
                             {"worst_deviation", b.worstDeviation},
-                            {"worst_at", mc.used > 0 ? st.input.at(b.worstGridSample) : kNoValue},
+                            {"worst_at", mc.used > 0 ? b.worstInput : kNoValue},
+                            {"worst_on_grid", b.sampledWorstDeviation},
                             {"first_order_worst", s.firstOrderWorst[c]},
                             {"first_order_worst_at", st.input.at(s.firstOrderWorstAt[c])}};
     k::io::JsonValue largest = k::io::JsonValue::object();

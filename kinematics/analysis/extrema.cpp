@@ -9,17 +9,6 @@
 namespace linkwright::kinematics {
 namespace {
 
-// What the search moves along: the input angle on an angle grid, the time on a time base.
-double parameterAt(const SweepSpec& spec, std::size_t j) {
-  return spec.time ? sweepTime(spec, j) : sweepAngle(spec, j);
-}
-
-DriverState driverAt(const SweepSpec& spec, double parameter) {
-  if (!spec.time) return {parameter, spec.omega, spec.alpha};
-  const DriverState s = motionAt(spec.time->law, parameter);
-  return {s.position, s.velocity, s.acceleration};
-}
-
 // Golden-section search for the maximum of `sign`·f on [lo, hi] (of the sweep's parameter);
 // returns the best extremum among the ends and the interior points it visited.
 struct Search {
@@ -29,7 +18,7 @@ struct Search {
   Pose pose;
 
   std::optional<double> evaluate(double parameter) {
-    const DriverState driver = driverAt(spec, parameter);
+    const DriverState driver = sweepDriverAt(spec, parameter);
     const PoseReport r = solvePoseInto(mechanism, driver, {true, true}, pose);
     if (r.status != PoseStatus::Ok) return std::nullopt;
     return quantity(pose, driver.position);
@@ -37,7 +26,7 @@ struct Search {
 
   Extremum at(double value, double parameter, bool refined) const {
     if (!spec.time) return {value, parameter, refined};
-    return {value, driverAt(spec, parameter).position, refined, parameter};
+    return {value, sweepDriverAt(spec, parameter).position, refined, parameter};
   }
 
   Extremum maximize(double lo, double hi, double sign, const Extremum& start, double tolerance) {
@@ -79,14 +68,14 @@ std::optional<Extrema> refine(const Mechanism& mechanism, const SweepSpec& spec,
   // just before the last.
   const std::size_t n = sampled.samples();
   const bool fullTurn = !spec.time && n > 2 && std::abs(std::abs(spec.toAngle - spec.fromAngle) - 2.0 * kPi) < 1e-9;
-  const double step = n > 1 ? parameterAt(spec, 1) - parameterAt(spec, 0) : 0.0;
+  const double step = n > 1 ? sweepParameter(spec, 1) - sweepParameter(spec, 0) : 0.0;
   auto bracket = [&](const SampledExtrema::Best& best) {
     const std::size_t j = best.index;
-    double lo = parameterAt(spec, j);
+    double lo = sweepParameter(spec, j);
     double hi = lo;
-    if (j > 0 && best.validBefore) lo = parameterAt(spec, j - 1);
+    if (j > 0 && best.validBefore) lo = sweepParameter(spec, j - 1);
     else if (j == 0 && fullTurn && sampled.lastButOneValid()) lo -= step;
-    if (j + 1 < n && best.validAfter) hi = parameterAt(spec, j + 1);
+    if (j + 1 < n && best.validAfter) hi = sweepParameter(spec, j + 1);
     else if (j + 1 == n && fullTurn && sampled.secondValid()) hi += step;
     return std::pair{std::min(lo, hi), std::max(lo, hi)};
   };
@@ -94,10 +83,10 @@ std::optional<Extrema> refine(const Mechanism& mechanism, const SweepSpec& spec,
   const SampledExtrema::Best& highest = *sampled.highest();
   Extrema out;
   const auto [minLo, minHi] = bracket(lowest);
-  out.minimum = search.maximize(minLo, minHi, -1.0, search.at(lowest.value, parameterAt(spec, lowest.index), false),
+  out.minimum = search.maximize(minLo, minHi, -1.0, search.at(lowest.value, sweepParameter(spec, lowest.index), false),
                                 angleTolerance);
   const auto [maxLo, maxHi] = maximumToo ? bracket(highest) : std::pair{1.0, 0.0};
-  out.maximum = search.at(highest.value, parameterAt(spec, highest.index), false);
+  out.maximum = search.at(highest.value, sweepParameter(spec, highest.index), false);
   if (maximumToo) out.maximum = search.maximize(maxLo, maxHi, 1.0, out.maximum, angleTolerance);
   if (spec.time) return out;
   // Report angles inside the requested range (a full-turn bracket may step just outside it).

@@ -513,6 +513,16 @@ double sweepTime(const SweepSpec& spec, std::size_t index) {
   return index + 1 == spec.samples ? t.toTime : t.fromTime + u * (t.toTime - t.fromTime);
 }
 
+double sweepParameter(const SweepSpec& spec, std::size_t index) {
+  return spec.time ? sweepTime(spec, index) : sweepAngle(spec, index);
+}
+
+DriverState sweepDriverAt(const SweepSpec& spec, double parameter) {
+  if (!spec.time) return {parameter, spec.omega, spec.alpha};
+  const DriverState s = motionAt(spec.time->law, parameter);
+  return {s.position, s.velocity, s.acceleration};
+}
+
 DriverState sweepDriver(const SweepSpec& spec, std::size_t index) {
   if (!spec.time) return {sweepAngle(spec, index), spec.omega, spec.alpha};
   const DriverState s = motionAt(spec.time->law, sweepTime(spec, index));

@@ -118,6 +118,13 @@ double sweepTime(const SweepSpec& spec, std::size_t index);
 /// The crank's angle, ω and α at sample `index`.
 DriverState sweepDriver(const SweepSpec& spec, std::size_t index);
 
+/// What a search between samples moves along: the input angle on an angle grid (rad), the
+/// instant on a time base (s), at sample `index`.
+double sweepParameter(const SweepSpec& spec, std::size_t index);
+
+/// The driver's state at `parameter` (as sweepParameter's), between samples as well.
+DriverState sweepDriverAt(const SweepSpec& spec, double parameter);
+
 /// Copies sample j of a sweep into a prepared pose: positions, velocities and accelerations of
 /// every point, angle, ω and α of every link. The sweep must hold all of them (the default
 /// request, no selection); the pose's other entries are left as they were.

@@ -3,6 +3,8 @@
 #include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/number_text.h"
+#include "kinematics/solve/golden_section.h"
+#include "kinematics/solve/pose_solver.h"
 #include "kinematics/tune/tolerance_sensitivity.h"
 
 #include <algorithm>
@@ -161,12 +163,67 @@ std::size_t toleranceSamplesFor(double fraction, double confidence) {
   return lo;
 }
 
+namespace {
+
+// The input column's value at the sweep's `parameter` (sweepParameter's: an angle or a time).
+double inputAtParameter(const SweepColumn& input, const SweepSpec& spec, double parameter) {
+  if (input.quantity == ColumnQuantity::Time) return parameter;
+  return input.valueOf(Pose{}, sweepDriverAt(spec, parameter).position, 0.0);
+}
+
+}  // namespace
+
 double toleranceInputAt(const SweepColumn& input, const SweepSpec& spec, std::size_t sample) {
-  if (input.quantity == ColumnQuantity::Time) return sweepTime(spec, sample);
-  return input.valueOf(Pose{}, sweepDriver(spec, sample).position, 0.0);
+  return inputAtParameter(input, spec, sweepParameter(spec, sample));
 }
 
 namespace {
+
+// A linkage's value in `column` at the sweep's `parameter`, an angle unwrapped to the turn
+// nearest `near`; nullopt where its pose or rates do not exist there.
+std::optional<double> columnValueAt(const Mechanism& m, const SweepSpec& spec, const SweepColumn& column,
+                                    double parameter, double near, Pose& pose) {
+  const DriverState driver = sweepDriverAt(spec, parameter);
+  if (solvePoseInto(m, driver, {true, true}, pose).status != PoseStatus::Ok) return std::nullopt;
+  return column.valueOf(pose, driver.position, near);
+}
+
+// Refines `band`'s worst deviation, that of linkage `sample` (`m`) at grid input
+// band.worstGridSample, between the grid inputs either side: a golden-section search of
+// |value − nominal| on both linkages' poses solved between them, never below the sampled worst.
+void refineWorst(const Mechanism& nominal, const Mechanism& m, const SweepSpec& spec, const SweepColumn& input,
+                 ToleranceBand& band) {
+  const std::size_t j = band.worstGridSample, n = spec.samples;
+  band.sampledWorstDeviation = band.worstDeviation;
+  band.worstInput = toleranceInputAt(input, spec, j);
+  if (n < 2) return;
+  Pose nominalPose, samplePose;
+  preparePose(nominal, nominalPose);
+  preparePose(m, samplePose);
+  const auto deviation = [&](double parameter) -> double {
+    const auto v0 = columnValueAt(nominal, spec, band.column, parameter, 0.0, nominalPose);
+    const auto v = v0 ? columnValueAt(m, spec, band.column, parameter, *v0, samplePose) : std::nullopt;
+    if (!v) return -1.0;  // below every deviation: the search turns away
+    if (std::abs(*v - *v0) > band.worstDeviation) {
+      band.worstDeviation = std::abs(*v - *v0);
+      band.worstInput = inputAtParameter(input, spec, parameter);
+    }
+    return std::abs(*v - *v0);
+  };
+  // The bracket: the grid inputs either side; over a full turn the ends are neighbours too.
+  const double step = sweepParameter(spec, 1) - sweepParameter(spec, 0);
+  const bool fullTurn = !spec.time && std::abs(std::abs(spec.toAngle - spec.fromAngle) - 2.0 * kPi) < 1e-9;
+  const double lo = j > 0 ? sweepParameter(spec, j - 1) : sweepParameter(spec, 0) - (fullTurn ? step : 0.0);
+  const double hi = j + 1 < n ? sweepParameter(spec, j + 1) : sweepParameter(spec, j) + (fullTurn ? step : 0.0);
+  (void)goldenSection(deviation, std::min(lo, hi), std::max(lo, hi), GoldenGoal::Maximum, 1e-10);
+  // A place found past an end of a full turn is the same pose a turn back inside it.
+  if (fullTurn) {
+    const double ends[] = {radToDeg(spec.fromAngle), radToDeg(spec.toAngle)};
+    const double low = std::min(ends[0], ends[1]), high = std::max(ends[0], ends[1]);
+    if (input.quantity == ColumnQuantity::InputAngle && band.worstInput < low) band.worstInput += 360.0;
+    if (input.quantity == ColumnQuantity::InputAngle && band.worstInput > high) band.worstInput -= 360.0;
+  }
+}
 
 // The nominal values of each output column over a window of the grid, and the window's
 // samples of one Monte-Carlo linkage folded against them.
@@ -322,6 +379,7 @@ Result<MonteCarloResult> toleranceMonteCarlo(const Mechanism& mechanism, const S
       if (std::isnan(band.worstDeviation) || fold.worst[c] > band.worstDeviation) {
         band.worstDeviation = fold.worst[c];
         band.worstGridSample = fold.at[c];
+        band.worstLinkage = index;
       }
       if (!monteCarlo.band) continue;
       for (std::size_t j = 0; j < n; ++j) {
@@ -330,6 +388,16 @@ Result<MonteCarloResult> toleranceMonteCarlo(const Mechanism& mechanism, const S
         if (std::isnan(band.high[j]) || v > band.high[j]) band.high[j] = v;
       }
     }
+  }
+  // Each column's worst linkage refined between the grid's inputs: a few hundred poses.
+  const SweepColumn input = sweepColumns(mechanism, SolveRequest{}, spec.time.has_value()).front();
+  for (ToleranceBand& band : out.bands) {
+    band.sampledWorstDeviation = band.worstDeviation;
+    if (std::isnan(band.worstDeviation)) continue;
+    if (control.cancelled()) return cancelledError();
+    const Mechanism m =
+        offsetDimensions(mechanism, out.dimensions, toleranceSampleOffsets(monteCarlo, tolerances, band.worstLinkage));
+    refineWorst(mechanism, m, spec, input, band);
   }
   out.error = monteCarloError(out.used);
   return out;

@@ -86,10 +86,16 @@ struct ToleranceBand {
   SweepColumn column;
   /// Per grid sample, the column's unit (NaN where undefined); empty unless MonteCarloSpec::band.
   std::vector<double> nominal;
-  std::vector<double> low;          ///< lowest value of any sample (NaN where none had one)
-  std::vector<double> high;         ///< highest value
-  double worstDeviation = 0.0;      ///< max |value − nominal| over grid and samples (NaN: none)
-  std::size_t worstGridSample = 0;  ///< where (index into the grid)
+  std::vector<double> low;   ///< lowest value of any sample (NaN where none had one)
+  std::vector<double> high;  ///< highest value
+  /// max |value − nominal| over the grid's range and the samples (NaN: none): the samples'
+  /// worst linkage found on the grid, then refined between the grid inputs either side, on
+  /// both linkages' poses solved there (so it is that linkage's worst, not its grid's).
+  double worstDeviation = 0.0;
+  std::size_t worstGridSample = 0;     ///< the grid input nearest to it (index into the grid)
+  double worstInput = 0.0;             ///< where, in the input column's unit (deg, length, s)
+  double sampledWorstDeviation = 0.0;  ///< the same linkage's worst at the grid's inputs alone
+  std::uint64_t worstLinkage = 0;      ///< the Monte-Carlo sample that deviates most (its index)
 };
 
 /// The confidence the Monte-Carlo error's bounds are stated at.

@@ -111,8 +111,9 @@ def _shards(mc_samples, shard_samples):
 
 def _fold(whole, study):
     """The study so far and its next shard, in sample order, as one study: each band the
-    lowest and highest values, the worst deviation the largest (the earlier on a tie, as
-    the serial run keeps its first), the counts summed."""
+    lowest and highest values, the worst deviation that of the linkage whose worst on the grid
+    is the largest (the earlier on a tie, as the serial run keeps its first), refined as its
+    shard refined it, the counts summed."""
     if whole is None:
         return dict(study)
     whole = dict(whole)
@@ -122,15 +123,17 @@ def _fold(whole, study):
     columns = {}
     for name, mine in whole["columns"].items():
         band = study["columns"][name]
-        deviation = band["worst_deviation"]
-        worst = band if deviation is not None and (mine["worst_deviation"] is None or
-                                                   deviation > mine["worst_deviation"]) else mine
+        deviation = band["worst_on_grid"]
+        worst = band if deviation is not None and (mine["worst_on_grid"] is None or
+                                                   deviation > mine["worst_on_grid"]) else mine
         columns[name] = {
             "nominal": mine["nominal"],
             "low": numpy.ma.min(numpy.ma.stack([mine["low"], band["low"]]), axis=0),
             "high": numpy.ma.max(numpy.ma.stack([mine["high"], band["high"]]), axis=0),
             "worst_deviation": worst["worst_deviation"],
             "worst_at": worst["worst_at"],
+            "worst_input": worst["worst_input"],
+            "worst_on_grid": worst["worst_on_grid"],
         }
     whole["columns"] = columns
     return whole

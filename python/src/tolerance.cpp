@@ -87,6 +87,8 @@ py::dict study(const Linkage& linkage, const SweepOptions& grid, double toleranc
     b["high"] = maskedArray(band.high, {});
     b["worst_deviation"] = number(band.worstDeviation);
     b["worst_at"] = std::isfinite(band.worstDeviation) ? py::object(py::int_(band.worstGridSample)) : py::none();
+    b["worst_input"] = std::isfinite(band.worstDeviation) ? number(band.worstInput) : py::none();
+    b["worst_on_grid"] = number(band.sampledWorstDeviation);
     columns[py::str(band.column.name)] = b;
   }
   out["columns"] = columns;
@@ -128,7 +130,9 @@ void bindTolerance(py::class_<Linkage>& linkage) {
       "--tolerance-of), mc_samples linkages (samples first_sample onwards: sample k's offsets "
       "depend on the seed and k alone) swept over the grid (keywords as sweep's). Returns a dict: input_name, "
       "input (the grid), columns (per output column: nominal, low, high as masked arrays over the grid, "
-      "worst_deviation, worst_at, its grid index), dimensions, used, not_assembled, singular and the study's "
+      "worst_deviation, refined between the grid's inputs; worst_input, where, in the input's unit; worst_at, "
+      "the grid index nearest it; worst_on_grid, the same linkage's worst at the inputs alone), dimensions, used, "
+      "not_assembled, singular and the study's "
       "tolerance, seed, first_sample, mc_samples.");
 }
 
