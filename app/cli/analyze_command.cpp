@@ -103,7 +103,7 @@ ExitCode runAnalyze(const Invocation& inv, std::ostream& out, std::ostream& err)
     kinematics::io::SweepCsvWriter csv(to, m);
     SweepTableWriter table(to, m);
     auto swept = kinematics::sweepInWindows(
-        m, *spec, {}, kSweepWindowSamples, [&](const kinematics::SweepResult& part, std::size_t first) {
+        m, *spec, {}, kinematics::kSweepWindow, [&](const kinematics::SweepResult& part, std::size_t first) {
           std::optional<kinematics::ForceSweep> forces;
           if (inv.forces) {
             auto solved = kinematics::sweepForces(m, resolved->dynamics, part);

@@ -86,10 +86,6 @@ const kinematics::GridFieldNames& gridOptionNames();
 kinematics::Result<kinematics::SweepGridRequest> lawRequest(const Invocation& invocation, const GridDefaults& defaults,
                                                             kinematics::SweepGridRequest request);
 
-/// Samples a command solves at a time when it sweeps in windows (sweepInWindows: analyze,
-/// extremes): a few megabytes of columns for a six-bar with forces, whatever the sample count.
-inline constexpr std::size_t kSweepWindowSamples = 4096;
-
 /// One note on `err` per lock between two samples of `sweep` (SweepResult::lockedBetween):
 /// the linkage cannot turn through, and points jump where it is assembled afresh.
 void noteLocks(const kinematics::Mechanism& mechanism, const std::vector<kinematics::AngleRange>& lockedBetween,

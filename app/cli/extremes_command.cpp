@@ -50,7 +50,7 @@ ExitCode runExtremes(const Invocation& inv, std::ostream& out, std::ostream& err
   std::vector<k::SampledExtrema> speeds(moving.size()), accels(moving.size());
   Progress progress(err, "extremes", "samples");
   const auto summary =
-      k::sweepInWindows(m, *spec, {}, kSweepWindowSamples, [&](const k::SweepResult& part, std::size_t first) {
+      k::sweepInWindows(m, *spec, {}, k::kSweepWindow, [&](const k::SweepResult& part, std::size_t first) {
         if (first == 0)
           for (const k::SweepColumn& column : k::sweepColumns(m, part.request))
             if (column.quantity != k::ColumnQuantity::InputAngle && column.quantity != k::ColumnQuantity::InputLength)

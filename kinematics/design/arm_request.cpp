@@ -38,9 +38,6 @@ std::string keyFor(const std::string& field) {
   return "arm";  // upper, forearm, or their spread
 }
 
-// Rows solved and handed on at a time: a few MB however many the run has.
-constexpr std::size_t kArmWindowRows = 4096;
-
 // The time grid: `samples` rows evenly spaced over the path, or one every `stepTime` seconds
 // from 0, ending at the path's end when the step lands on it (as analyze's --step).
 Result<std::pair<double, std::size_t>> timeGrid(const ArmRequest& request, double duration) {
@@ -113,7 +110,7 @@ Result<ArmRun> runArm(const ArmRequest& request, const ArmRowSink& sink) {
   spec.samples = grid->second;
   spec.time = TimeBase{ConstantVelocity{0.0, path.speed}, 0.0, grid->first};
   std::vector<ArmRow> rows;
-  const auto swept = sweepInWindows(*mechanism, spec, {}, kArmWindowRows, [&](const SweepResult& s, std::size_t) {
+  const auto swept = sweepInWindows(*mechanism, spec, {}, kSweepWindow, [&](const SweepResult& s, std::size_t) {
     rows.resize(s.size());
     for (std::size_t j = 0; j < s.size(); ++j) {
       ArmRow& row = rows[j];

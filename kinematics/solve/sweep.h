@@ -142,6 +142,11 @@ struct SweepSummary {
   bool operator==(const SweepSummary&) const = default;
 };
 
+/// Samples a windowed sweep solves and hands on at a time (sweepInWindows, SweepWindows) for
+/// every front end: a few megabytes of columns for a six-bar with forces, whatever the sample
+/// count.
+inline constexpr std::size_t kSweepWindow = 4096;
+
 /// A window of a sweep: samples [first, first + part.size()) of it. `part`'s columns, reports
 /// and input angles are those samples' (indices from 0); its notAssembled, singularAngles and
 /// lockedBetween are the ones within the window, and its firstFailure the sweep's first if it

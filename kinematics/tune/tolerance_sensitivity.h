@@ -46,7 +46,7 @@ struct SweepSensitivities {
 };
 
 /// The samples of the grid a tolerance study holds at once when it works in windows.
-inline constexpr std::size_t kToleranceWindow = 4096;
+inline constexpr std::size_t kToleranceWindow = kSweepWindow;
 
 /// The sensitivities of `mechanism` over `spec`. Fails as sweep() does for an invalid
 /// mechanism or spec.

@@ -16,9 +16,6 @@ namespace {
 
 namespace k = kinematics;
 
-// Windows as the CLI's: memory does not grow with the sample count.
-constexpr std::size_t kWindowSamples = 4096;
-
 py::dict extremes(const Linkage& linkage, const SweepOptions& grid) {
   const k::Mechanism& m = linkage.mechanism;
   const k::SweepSpec spec = valueOrThrow(sweepSpecFor(linkage, grid));
@@ -26,7 +23,7 @@ py::dict extremes(const Linkage& linkage, const SweepOptions& grid) {
   std::vector<std::optional<k::Extrema>> found;
   {
     py::gil_scoped_release unlocked;
-    valueOrThrow(k::sweepInWindows(m, spec, {}, kWindowSamples, [&](const k::SweepResult& part, std::size_t first) {
+    valueOrThrow(k::sweepInWindows(m, spec, {}, k::kSweepWindow, [&](const k::SweepResult& part, std::size_t first) {
       if (scans.empty())
         for (const k::SweepColumn& column : k::sweepColumns(m, part.request, !part.time.empty()))
           if (column.quantity != k::ColumnQuantity::InputAngle && column.quantity != k::ColumnQuantity::InputLength &&

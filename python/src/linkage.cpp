@@ -28,8 +28,6 @@ namespace k = kinematics;
 
 namespace {
 
-// As the CLI's kSweepWindowSamples: memory does not grow with the sample count.
-constexpr std::size_t kWindowSamples = 4096;
 // A table held whole in Python must fit: the arrays take about 18 bytes a cell (the values, the
 // mask, and NumPy's copy of both), the CSV about 50 (its text, and Python's copy of it).
 constexpr double kMostTableBytes = 2e9;
@@ -205,7 +203,7 @@ k::Result<SweepTable> sweepTable(const Linkage& linkage, const k::SweepSpec& spe
   std::vector<k::ForceColumn> forceColumns;
   std::optional<k::Error> refused;
   bool sized = false;
-  auto swept = k::sweepInWindows(m, spec, {}, kWindowSamples, [&](const k::SweepResult& part, std::size_t) {
+  auto swept = k::sweepInWindows(m, spec, {}, k::kSweepWindow, [&](const k::SweepResult& part, std::size_t) {
     std::optional<k::ForceSweep> forces;
     if (request.forces) {
       auto solved = k::sweepForces(m, linkage.dynamics, part);

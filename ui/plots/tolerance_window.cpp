@@ -294,10 +294,13 @@ void ToleranceWindow::redraw() {
           .arg(m_monteCarlo->dimensions.size())
           .arg(m_monteCarlo->used)
           .arg(m_monteCarlo->spec.seed)
-          .arg(
-              numberText(band.worstDeviation, 'g', 4),
-              xReadoutText(sampleX(nominal, band.worstGridSample, x.source, AngleUnit::Degrees), x, AngleUnit::Degrees),
-              numberText(firstOrder, 'g', 4))
+          .arg(numberText(band.worstDeviation, 'g', 4),
+               // The core's refined place is in the input's unit (degrees, a length); on a time
+               // base it is an instant, so the axis's input is read at the grid input nearest it.
+               xReadoutText(nominal.time.empty() ? band.worstInput
+                                                 : sampleX(nominal, band.worstGridSample, x.source, AngleUnit::Degrees),
+                            x, AngleUnit::Degrees),
+               numberText(firstOrder, 'g', 4))
           .arg(m_monteCarlo->notAssembled)
           .arg(m_monteCarlo->singular)
           .arg(m_monteCarlo->spec.perDimension.empty() ? QString()

@@ -4,6 +4,7 @@
 #include "kinematics/design/arm_request.h"
 
 #include "kinematics/io/arm_table.h"
+#include "kinematics/solve/sweep.h"
 
 #include "tests/support/catch.h"
 
@@ -42,7 +43,7 @@ TEST_CASE("the arm's rows stream in bounded windows, the same as the rows kept w
   CHECK(inOrder);
   CHECK(allCounted);
   CHECK(windows > 1);
-  CHECK(largest <= 4096);
+  CHECK(largest <= k::kSweepWindow);
   CHECK(run->unreachable > 0);
   CHECK(run->unreachable == kept->unreachable);
   CHECK(run->unreachable < run->samples);

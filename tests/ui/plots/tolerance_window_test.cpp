@@ -54,7 +54,9 @@ TEST_CASE("the tolerance window draws the core's band and sensitivities, and fol
     CHECK(low[j].y() <= 0.0);
     CHECK(high[j].y() >= 0.0);
   }
-  CHECK(window.summaryText().contains("worst deviation " + numberText(band.worstDeviation, 'g', 4)));
+  // The worst and its place are the core's, refined between the grid's inputs.
+  CHECK(window.summaryText().contains("worst deviation " + numberText(band.worstDeviation, 'g', 4) + " at crank " +
+                                      numberText(band.worstInput, 'f', 1) + "°"));
 
   const auto sens = k::sweepSensitivities(design.mechanism, k::designSweepSpec(design)).value();
   std::size_t column = 0;
