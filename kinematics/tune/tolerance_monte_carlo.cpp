@@ -188,13 +188,12 @@ std::optional<double> columnValueAt(const Mechanism& m, const SweepSpec& spec, c
   return column.valueOf(pose, driver.position, near);
 }
 
-// Refines `band`'s worst deviation, that of linkage `sample` (`m`) at grid input
+// Refines `band`'s worst deviation, that of the Monte-Carlo linkage `m` at grid input
 // band.worstGridSample, between the grid inputs either side: a golden-section search of
 // |value − nominal| on both linkages' poses solved between them, never below the sampled worst.
 void refineWorst(const Mechanism& nominal, const Mechanism& m, const SweepSpec& spec, const SweepColumn& input,
                  ToleranceBand& band) {
   const std::size_t j = band.worstGridSample, n = spec.samples;
-  band.sampledWorstDeviation = band.worstDeviation;
   band.worstInput = toleranceInputAt(input, spec, j);
   if (n < 2) return;
   Pose nominalPose, samplePose;
