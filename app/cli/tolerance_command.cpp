@@ -101,22 +101,23 @@ void printText(std::ostream& out, const Study& st, const std::string& source) {
     text.resize(std::max(w, text.size() + 1), ' ');
     return text;
   };
-  out << "MC worst: the deviation of the sample that deviates most at the grid's inputs, refined between them; "
-         "first order: at the grid's inputs\n";
+  out << "MC worst: the deviation of the sample that deviates most at the grid's inputs; first order: "
+         "sum of |dy/dp|·t over the dimensions; each refined between the grid's inputs\n";
   out << pad("column", width + 2) << pad("MC worst", 12) << pad("at " + st.input.column.name, 22)
-      << pad("first order", 13) << "most sensitive to\n";
+      << pad("first order", 13) << pad("at " + st.input.column.name, 22) << "most sensitive to\n";
   for (std::size_t c = 0; c < mc.bands.size(); ++c) {
     const auto& b = mc.bands[c];
     const auto [d, value] = mostSensitive(s, c);
     out << pad(b.column.name, width + 2) << pad(n(b.worstDeviation), 12)
-        << pad(mc.used > 0 ? n(b.worstInput) : std::string(k::kUndefinedText), 22) << pad(n(s.firstOrderWorst[c]), 13);
+        << pad(mc.used > 0 ? n(b.worstInput) : std::string(k::kUndefinedText), 22) << pad(n(s.firstOrderWorst[c]), 13)
+        << pad(n(s.firstOrderWorstInput[c]), 22);
     // The driven crank's ω and α are the driver's: sensitive to nothing.
     if (value > 0.0) out << s.dimensions[d].name << " (" << n(value) << " " << unitOf(b.column, u) << "/" << u << ")\n";
     else out << "none\n";
   }
   out << "\nsensitivities, "
       << (st.at ? "at " + st.input.column.name + " " + n(st.input.at(st.at->sweep, 0))
-                : std::string("largest |∂y/∂p| over the grid"))
+                : std::string("largest |∂y/∂p| over the grid's range, refined between its inputs"))
       << " (each column's unit per " << u << "):\n";
   for (std::size_t c = 0; c < s.columns.size(); ++c) {
     out << "  " << s.columns[c].name << ":";
@@ -171,7 +172,8 @@ void printJson(std::ostream& out, const Study& st, const std::string& source) {
                             {"worst_at", mc.used > 0 ? b.worstInput : kNoValue},
                             {"worst_on_grid", b.sampledWorstDeviation},
                             {"first_order_worst", s.firstOrderWorst[c]},
-                            {"first_order_worst_at", st.input.at(s.firstOrderWorstAt[c])}};
+                            {"first_order_worst_at", s.firstOrderWorstInput[c]},
+                            {"first_order_worst_on_grid", s.sampledFirstOrderWorst[c]}};
     k::io::JsonValue largest = k::io::JsonValue::object();
     for (std::size_t d = 0; d < s.dimensions.size(); ++d) largest[s.dimensions[d].name] = s.largest[c][d];
     column["largest_sensitivity_per_" + u] = largest;

@@ -3,7 +3,6 @@
 #include "kinematics/model/driver.h"
 #include "kinematics/model/mechanism_check.h"
 #include "kinematics/model/number_text.h"
-#include "kinematics/solve/golden_section.h"
 #include "kinematics/solve/pose_solver.h"
 #include "kinematics/tune/tolerance_sensitivity.h"
 
@@ -163,18 +162,8 @@ std::size_t toleranceSamplesFor(double fraction, double confidence) {
   return lo;
 }
 
-namespace {
-
-// The input column's value at the sweep's `parameter` (sweepParameter's: an angle or a time).
-double inputAtParameter(const SweepColumn& input, const SweepSpec& spec, double parameter) {
-  if (input.quantity == ColumnQuantity::Time) return parameter;
-  return input.valueOf(Pose{}, sweepDriverAt(spec, parameter).position, 0.0);
-}
-
-}  // namespace
-
 double toleranceInputAt(const SweepColumn& input, const SweepSpec& spec, std::size_t sample) {
-  return inputAtParameter(input, spec, sweepParameter(spec, sample));
+  return toleranceInputAtParameter(input, spec, sweepParameter(spec, sample));
 }
 
 namespace {
@@ -193,35 +182,17 @@ std::optional<double> columnValueAt(const Mechanism& m, const SweepSpec& spec, c
 // |value − nominal| on both linkages' poses solved between them, never below the sampled worst.
 void refineWorst(const Mechanism& nominal, const Mechanism& m, const SweepSpec& spec, const SweepColumn& input,
                  ToleranceBand& band) {
-  const std::size_t j = band.worstGridSample, n = spec.samples;
-  band.worstInput = toleranceInputAt(input, spec, j);
-  if (n < 2) return;
   Pose nominalPose, samplePose;
   preparePose(nominal, nominalPose);
   preparePose(m, samplePose);
-  const auto deviation = [&](double parameter) -> double {
-    const auto v0 = columnValueAt(nominal, spec, band.column, parameter, 0.0, nominalPose);
-    const auto v = v0 ? columnValueAt(m, spec, band.column, parameter, *v0, samplePose) : std::nullopt;
-    if (!v) return -1.0;  // below every deviation: the search turns away
-    if (std::abs(*v - *v0) > band.worstDeviation) {
-      band.worstDeviation = std::abs(*v - *v0);
-      band.worstInput = inputAtParameter(input, spec, parameter);
-    }
-    return std::abs(*v - *v0);
-  };
-  // The bracket: the grid inputs either side; over a full turn the ends are neighbours too.
-  const double step = sweepParameter(spec, 1) - sweepParameter(spec, 0);
-  const bool fullTurn = !spec.time && std::abs(std::abs(spec.toAngle - spec.fromAngle) - 2.0 * kPi) < 1e-9;
-  const double lo = j > 0 ? sweepParameter(spec, j - 1) : sweepParameter(spec, 0) - (fullTurn ? step : 0.0);
-  const double hi = j + 1 < n ? sweepParameter(spec, j + 1) : sweepParameter(spec, j) + (fullTurn ? step : 0.0);
-  (void)goldenSection(deviation, std::min(lo, hi), std::max(lo, hi), GoldenGoal::Maximum, 1e-10);
-  // A place found past an end of a full turn is the same pose a turn back inside it.
-  if (fullTurn) {
-    const double ends[] = {radToDeg(spec.fromAngle), radToDeg(spec.toAngle)};
-    const double low = std::min(ends[0], ends[1]), high = std::max(ends[0], ends[1]);
-    if (input.quantity == ColumnQuantity::InputAngle && band.worstInput < low) band.worstInput += 360.0;
-    if (input.quantity == ColumnQuantity::InputAngle && band.worstInput > high) band.worstInput -= 360.0;
-  }
+  const RefinedPeak peak =
+      refinePeakNear(spec, band.worstGridSample, band.worstDeviation, [&](double parameter) -> double {
+        const auto v0 = columnValueAt(nominal, spec, band.column, parameter, 0.0, nominalPose);
+        const auto v = v0 ? columnValueAt(m, spec, band.column, parameter, *v0, samplePose) : std::nullopt;
+        return v ? std::abs(*v - *v0) : -1.0;
+      });
+  band.worstDeviation = peak.value;
+  band.worstInput = toleranceInputAtParameter(input, spec, peak.parameter);
 }
 
 // The nominal values of each output column over a window of the grid, and the window's

@@ -2,6 +2,8 @@
 
 #include "kinematics/analysis/pose_jet.h"
 #include "kinematics/model/units.h"
+#include "kinematics/solve/golden_section.h"
+#include "kinematics/solve/pose_solver.h"
 
 #include <cmath>
 #include <limits>
@@ -41,6 +43,36 @@ std::vector<SweepColumn> toleranceColumns(const Mechanism& m) {
   for (const SweepColumn& c : sweepColumns(m, SolveRequest{}))
     if (isOutput(c)) out.push_back(c);
   return out;
+}
+
+double toleranceInputAtParameter(const SweepColumn& input, const SweepSpec& spec, double parameter) {
+  if (input.quantity == ColumnQuantity::Time) return parameter;
+  return input.valueOf(Pose{}, sweepDriverAt(spec, parameter).position, 0.0);
+}
+
+RefinedPeak refinePeakNear(const SweepSpec& spec, std::size_t sample, double atSample,
+                           const std::function<double(double)>& f) {
+  RefinedPeak best{sweepParameter(spec, sample), atSample};
+  const std::size_t n = spec.samples;
+  if (n < 2) return best;
+  const double step = sweepParameter(spec, 1) - sweepParameter(spec, 0);
+  const bool fullTurn = !spec.time && std::abs(std::abs(spec.toAngle - spec.fromAngle) - 2.0 * kPi) < 1e-9;
+  const double lo = sample > 0 ? sweepParameter(spec, sample - 1) : best.parameter - (fullTurn ? step : 0.0);
+  const double hi = sample + 1 < n ? sweepParameter(spec, sample + 1) : best.parameter + (fullTurn ? step : 0.0);
+  (void)goldenSection(
+      [&](double parameter) {
+        const double v = f(parameter);
+        if (v > best.value) best = {parameter, v};
+        return v;
+      },
+      std::min(lo, hi), std::max(lo, hi), GoldenGoal::Maximum, 1e-10);
+  // A place found past an end of a full turn is the same pose a turn back inside it.
+  if (fullTurn) {
+    const double low = std::min(spec.fromAngle, spec.toAngle), high = std::max(spec.fromAngle, spec.toAngle);
+    if (best.parameter < low) best.parameter += 2.0 * kPi;
+    else if (best.parameter > high) best.parameter -= 2.0 * kPi;
+  }
+  return best;
 }
 
 double toleranceColumnValue(const SweepColumn& column, const SweepResult& sweep, std::size_t sample, double near) {
@@ -139,14 +171,18 @@ Result<SensitivitySummary> sensitivitySummary(const Mechanism& mechanism, const 
   const std::vector<Mechanism> stepped = steppedMechanisms(mechanism, out.dimensions);
   // The window's derivatives folded as SweepSensitivities's largest and firstOrderWorst fold
   // the whole grid's: in the grid's order, so the same sample wins a tie.
+  out.largestAt.assign(out.columns.size(), std::vector<std::size_t>(out.dimensions.size(), 0));
   SweepSensitivities part;
   while (const SweepResult* s = windows.next(control.cancel)) {
     const std::size_t first = windows.first();
     fillDerivatives(mechanism, stepped, spec, out.columns, *s, first, part.derivative);
     for (std::size_t c = 0; c < out.columns.size(); ++c) {
       for (std::size_t d = 0; d < out.dimensions.size(); ++d)
-        for (const double v : part.derivative[c][d])
-          if (std::isfinite(v) && !(std::abs(v) <= out.largest[c][d])) out.largest[c][d] = std::abs(v);
+        for (std::size_t j = 0; j < s->size(); ++j)
+          if (const double v = part.derivative[c][d][j]; std::isfinite(v) && !(std::abs(v) <= out.largest[c][d])) {
+            out.largest[c][d] = std::abs(v);
+            out.largestAt[c][d] = first + j;
+          }
       for (std::size_t j = 0; j < s->size(); ++j) {
         double sum = 0.0;
         for (std::size_t d = 0; d < out.dimensions.size(); ++d)
@@ -161,6 +197,45 @@ Result<SensitivitySummary> sensitivitySummary(const Mechanism& mechanism, const 
     if (control.progress) control.progress(out.inputs, spec.samples);
   }
   if (control.cancelled()) return cancelledError();
+  // Each figure refined between the grid inputs either side of its grid input, on the nominal
+  // pose solved and differentiated there: about fifty poses a figure.
+  out.sampledLargest = out.largest;
+  out.sampledFirstOrderWorst = out.firstOrderWorst;
+  const SweepColumn input = sweepColumns(mechanism, SolveRequest{}, spec.time.has_value()).front();
+  out.firstOrderWorstInput.assign(out.columns.size(), kUndefined);
+  Pose pose;
+  preparePose(mechanism, pose);
+  PoseJet jet;
+  // Σ over the dimensions [from, to) of |∂(column c)/∂d|·weight(d) at the sweep's `parameter`;
+  // −1 where the pose, or a rate column's rates, do not exist there.
+  const auto weightedAt = [&](double parameter, std::size_t c, std::size_t from, std::size_t to, const auto& weight) {
+    const DriverState driver = sweepDriverAt(spec, parameter);
+    const PoseStatus status = solvePoseInto(mechanism, driver, {true, true}, pose).status;
+    if (status == PoseStatus::NotAssemblable || (status != PoseStatus::Ok && out.columns[c].isRate())) return -1.0;
+    double sum = 0.0;
+    for (std::size_t d = from; d < to; ++d) {
+      if (!differentiatePose(mechanism, stepped[d], driver, pose.position, jet)) return -1.0;
+      sum += std::abs(derivativeOf(out.columns[c], jet)) * weight(d);
+    }
+    return std::isfinite(sum) ? sum : -1.0;
+  };
+  for (std::size_t c = 0; c < out.columns.size(); ++c) {
+    for (std::size_t d = 0; d < out.dimensions.size(); ++d) {
+      if (control.cancelled()) return cancelledError();
+      if (std::isnan(out.largest[c][d])) continue;
+      out.largest[c][d] = refinePeakNear(spec, out.largestAt[c][d], out.largest[c][d], [&](double parameter) {
+                            return weightedAt(parameter, c, d, d + 1, [](std::size_t) { return 1.0; });
+                          }).value;
+    }
+    const std::size_t j = out.firstOrderWorstAt[c];
+    out.firstOrderWorstInput[c] = toleranceInputAtParameter(input, spec, sweepParameter(spec, j));
+    if (std::isnan(out.firstOrderWorst[c])) continue;
+    const RefinedPeak peak = refinePeakNear(spec, j, out.firstOrderWorst[c], [&](double parameter) {
+      return weightedAt(parameter, c, 0, stepped.size(), [&](std::size_t d) { return tolerances[d]; });
+    });
+    out.firstOrderWorst[c] = peak.value;
+    out.firstOrderWorstInput[c] = toleranceInputAtParameter(input, spec, peak.parameter);
+  }
   return out;
 }
 

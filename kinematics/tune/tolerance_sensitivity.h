@@ -15,6 +15,7 @@
 #include "kinematics/solve/sweep_columns.h"
 #include "kinematics/tune/tolerance_dimensions.h"
 
+#include <functional>
 #include <vector>
 
 namespace linkwright::kinematics {
@@ -22,6 +23,21 @@ namespace linkwright::kinematics {
 /// The output columns a tolerance study reports for `mechanism`, in sweepColumns' order:
 /// link angles (not the input's), ω and α, then points' x and y.
 std::vector<SweepColumn> toleranceColumns(const Mechanism& mechanism);
+
+/// The input column's value (deg, length or s) at the sweep's `parameter` (sweepParameter's: an
+/// angle or a time), between the grid's inputs as well.
+double toleranceInputAtParameter(const SweepColumn& input, const SweepSpec& spec, double parameter);
+
+/// A largest value of f, a function of the sweep's parameter, refined between the grid inputs
+/// either side of grid input `sample` (over a full turn the turn's ends are neighbours) by golden
+/// section. f returns a value below every one it has (−1 for a deviation) where it is undefined,
+/// so the search turns away from there.
+struct RefinedPeak {
+  double parameter = 0.0;  ///< where: inside the grid's range (past a full turn's end, a turn back)
+  double value = 0.0;      ///< f there; `atSample` (f at the grid input) if nothing larger is found
+};
+RefinedPeak refinePeakNear(const SweepSpec& spec, std::size_t sample, double atSample,
+                           const std::function<double(double)>& f);
 
 /// The value of an output column from a sweep's sample, with a link's angle unwrapped to
 /// the turn nearest `near` (degrees) so that two sweeps' angles compare.
@@ -54,18 +70,27 @@ Result<SweepSensitivities> sweepSensitivities(const Mechanism& mechanism, const 
 
 /// What a study reports of the sensitivities over the whole grid, folded window by window
 /// (memory of `window` samples whatever the grid's size): SweepSensitivities's largest and
-/// firstOrderWorst, the same numbers.
+/// firstOrderWorst, the same numbers, and both refined between the grid's inputs.
 struct SensitivitySummary {
   std::vector<ToleranceDimension> dimensions;
   std::vector<SweepColumn> columns;
-  std::size_t inputs = 0;                      ///< the grid's size
-  std::vector<std::vector<double>> largest;    ///< [column][dimension]: as SweepSensitivities::largest
-  std::vector<double> firstOrderWorst;         ///< [column]: as SweepSensitivities::firstOrderWorst
-  std::vector<std::size_t> firstOrderWorstAt;  ///< [column]: where (grid index), 0 if nowhere
+  std::size_t inputs = 0;  ///< the grid's size
+  /// [column][dimension]: the largest |∂y/∂p| over the grid's range, the grid's (below) refined
+  /// between the grid inputs either side, as firstOrderWorst is.
+  std::vector<std::vector<double>> largest;
+  std::vector<std::vector<double>> sampledLargest;  ///< [column][dimension]: as SweepSensitivities::largest
+  std::vector<std::vector<std::size_t>> largestAt;  ///< [column][dimension]: the grid input it is refined from
+  /// [column]: the first-order worst case over the grid's range: the grid's (below) refined
+  /// between the grid inputs either side, on the nominal pose solved and differentiated there.
+  std::vector<double> firstOrderWorst;
+  std::vector<double> firstOrderWorstInput;    ///< [column]: where, in the input column's unit
+  std::vector<double> sampledFirstOrderWorst;  ///< [column]: as SweepSensitivities::firstOrderWorst
+  std::vector<std::size_t> firstOrderWorstAt;  ///< [column]: the grid input it is refined from, 0 if nowhere
 };
 
 /// The summary of `mechanism`'s sensitivities over `spec` under `tolerances` (one per
-/// dimension, length unit), `window` grid samples at a time; progress in grid samples. Fails as
+/// dimension, length unit), `window` grid samples at a time; progress in grid samples, then a
+/// few hundred poses per column and dimension refined. Fails as
 /// sweepSensitivities does, or with ErrorCode::Cancelled.
 Result<SensitivitySummary> sensitivitySummary(const Mechanism& mechanism, const SweepSpec& spec,
                                               const std::vector<double>& tolerances, const RunControl& control = {},

@@ -49,6 +49,8 @@ TEST_CASE("tolerance --json reports the core's worst deviations, first-order wor
   const k::Mechanism m = k::findExample("thesis-crank-rocker")->mechanism;
   const auto mc = k::toleranceMonteCarlo(m, thesisGrid(), {0.05, 200, 9}).value();
   const auto s = k::sweepSensitivities(m, thesisGrid()).value();
+  const std::vector<double> tolerances(s.dimensions.size(), 0.05);
+  const auto summary = k::sensitivitySummary(m, thesisGrid(), tolerances).value();
   CHECK(json["tolerance_mm"].get<double>() == 0.05);
   CHECK(json["samples_in_band"].get<std::size_t>() == 200);
   CHECK(json["input_column"].get<std::string>() == "crank_angle_deg");
@@ -58,10 +60,13 @@ TEST_CASE("tolerance --json reports the core's worst deviations, first-order wor
     INFO(mc.bands[c].column.name);
     CHECK(column["name"].get<std::string>() == mc.bands[c].column.name);
     CHECK(column["worst_deviation"].get<double>() == mc.bands[c].worstDeviation);
-    CHECK(column["first_order_worst"].get<double>() ==
-          s.firstOrderWorst(c, std::vector<double>(s.dimensions.size(), 0.05)));
+    CHECK(column["first_order_worst_on_grid"].get<double>() == s.firstOrderWorst(c, tolerances));
+    CHECK(column["first_order_worst"].get<double>() == summary.firstOrderWorst[c]);
+    CHECK(column["first_order_worst_at"].get<double>() == summary.firstOrderWorstInput[c]);
+    CHECK(column["first_order_worst"].get<double>() >= column["first_order_worst_on_grid"].get<double>());
     CHECK(column["largest_sensitivity_per_mm"]["coupler length"].get<double>() ==
-          s.largest(c, 2));  // frame, crank, coupler, …
+          summary.largest[c][2]);  // frame, crank, coupler, …
+    CHECK(summary.largest[c][2] >= s.largest(c, 2));
   }
 }
 

@@ -12,11 +12,14 @@ std::function<ToleranceOutcome(const std::atomic<bool>& cancel)> toleranceJob(co
     k::RunControl control;
     control.cancel = &cancel;
     auto band = k::toleranceMonteCarlo(mechanism, grid, spec, control);
-    if (!band) return ToleranceOutcome{std::nullopt, std::nullopt, band.error()};
-    if (control.cancelled()) return ToleranceOutcome{std::nullopt, std::nullopt, k::cancelledError()};
+    if (!band) return ToleranceOutcome{.error = band.error()};
+    if (control.cancelled()) return ToleranceOutcome{.error = k::cancelledError()};
     auto sensitivities = k::sweepSensitivities(mechanism, grid);
-    if (!sensitivities) return ToleranceOutcome{std::nullopt, std::nullopt, sensitivities.error()};
-    return ToleranceOutcome{std::move(band).value(), std::move(sensitivities).value(), std::nullopt};
+    if (!sensitivities) return ToleranceOutcome{.error = sensitivities.error()};
+    auto summary = k::sensitivitySummary(mechanism, grid, k::dimensionTolerances(spec, band->dimensions), control);
+    if (!summary) return ToleranceOutcome{.error = summary.error()};
+    return ToleranceOutcome{std::move(band).value(), std::move(sensitivities).value(), std::move(summary).value(),
+                            std::nullopt};
   };
 }
 

@@ -16,7 +16,8 @@ namespace linkwright::ui {
 /// A study's answer, or the core's refusal (ErrorCode::Cancelled when it was stopped).
 struct ToleranceOutcome {
   std::optional<kinematics::MonteCarloResult> band;
-  std::optional<kinematics::SweepSensitivities> sensitivities;
+  std::optional<kinematics::SweepSensitivities> sensitivities;  ///< at every grid input: the curves
+  std::optional<kinematics::SensitivitySummary> summary;        ///< the refined first-order worst cases
   std::optional<kinematics::Error> error;
 };
 

@@ -122,7 +122,7 @@ ToleranceWindow::ToleranceWindow(MechanismDocument* document, QWidget* parent)
   connect(m_output, &QComboBox::currentIndexChanged, this, [this] { redraw(); });
   connect(m_cancel, &QPushButton::clicked, this, [this] {
     m_run.cancel();
-    display({std::nullopt, std::nullopt, k::cancelledError()});
+    display(ToleranceOutcome{.error = k::cancelledError()});
   });
   connect(document, &MechanismDocument::changed, this, [this](Changes what) {
     if (what & Change::Design) scheduleRefresh();
@@ -166,6 +166,7 @@ void ToleranceWindow::scheduleRefresh() {
   m_cancel->setVisible(false);
   m_monteCarlo.reset();
   m_sensitivities.reset();
+  m_firstOrder.reset();
   m_summary->setText(tr("Computing for the design as it is now…"));
   redraw();
   if (isVisible()) m_settle.start();
@@ -191,6 +192,9 @@ void ToleranceWindow::refresh() {
       // A refused cell is named and nothing computed: what is drawn would not be what was typed.
       m_monteCarlo.reset();
       m_sensitivities.reset();
+      m_firstOrder.reset();
+      m_firstOrder.reset();
+      m_firstOrder.reset();
       m_summary->setText(tr("No tolerance study: the ± of %1 must be a number (got '%2')").arg(name, typed));
       redraw();
       return;
@@ -209,6 +213,8 @@ void ToleranceWindow::display(const ToleranceOutcome& outcome) {
   if (outcome.error) {
     m_monteCarlo.reset();
     m_sensitivities.reset();
+    m_firstOrder.reset();
+    m_firstOrder.reset();
     m_summary->setText(outcome.error->code == k::ErrorCode::Cancelled
                            ? tr("The study was cancelled: change a field, or the design, to run it again.")
                            : tr("No tolerance study: %1").arg(QString::fromStdString(outcome.error->message)));
@@ -218,6 +224,7 @@ void ToleranceWindow::display(const ToleranceOutcome& outcome) {
   }
   m_monteCarlo = *outcome.band;
   m_sensitivities = *outcome.sensitivities;
+  m_firstOrder = *outcome.summary;
   const QString kept = m_output->currentText();
   {
     const QSignalBlocker block(m_output);
@@ -237,8 +244,8 @@ void ToleranceWindow::display(const ToleranceOutcome& outcome) {
 
 void ToleranceWindow::redraw() {
   const int chosen = m_output->currentIndex();
-  const bool shown =
-      m_monteCarlo && m_sensitivities && chosen >= 0 && static_cast<std::size_t>(chosen) < m_monteCarlo->bands.size();
+  const bool shown = m_monteCarlo && m_sensitivities && m_firstOrder && chosen >= 0 &&
+                     static_cast<std::size_t>(chosen) < m_monteCarlo->bands.size();
   m_band->setVisible(shown);
   m_sensitivity->setVisible(shown);
   if (!shown) return;
@@ -283,29 +290,31 @@ void ToleranceWindow::redraw() {
   m_sensitivity->setCurves(curves);
   m_sensitivity->setData(runs, tr("∂(%1) per %2").arg(name, unit), x);
 
-  std::size_t worstAt = 0;
-  const double firstOrder = column < m_sensitivities->columns.size()
-                                ? m_sensitivities->firstOrderWorst(column, tolerances, &worstAt)
-                                : std::numeric_limits<double>::quiet_NaN();
+  const bool hasColumn = column < m_firstOrder->columns.size();
+  const double firstOrder =
+      hasColumn ? m_firstOrder->firstOrderWorst[column] : std::numeric_limits<double>::quiet_NaN();
+  // The core's refined places are in the input's unit (degrees, a length); on a time base they
+  // are instants, so the axis's input is read at the grid input nearest them.
+  const auto place = [&](double refined, std::size_t gridSample) {
+    return xReadoutText(nominal.time.empty() ? refined : sampleX(nominal, gridSample, x.source, AngleUnit::Degrees), x,
+                        AngleUnit::Degrees);
+  };
   m_summary->setText(
       tr("%1 at ±%2 %3 on %4 dimensions%12, %5 samples (seed %6): worst deviation %7 at %8; first-order worst "
-         "case %9. %10 samples did not assemble on the grid and %11 met a toggle; they are not in the band.")
+         "case %9 at %13. %10 samples did not assemble on the grid and %11 met a toggle; they are not in the band.")
           .arg(name, numberText(m_monteCarlo->spec.tolerance, 'g', 4), unit)
           .arg(m_monteCarlo->dimensions.size())
           .arg(m_monteCarlo->used)
           .arg(m_monteCarlo->spec.seed)
-          .arg(numberText(band.worstDeviation, 'g', 4),
-               // The core's refined place is in the input's unit (degrees, a length); on a time
-               // base it is an instant, so the axis's input is read at the grid input nearest it.
-               xReadoutText(nominal.time.empty() ? band.worstInput
-                                                 : sampleX(nominal, band.worstGridSample, x.source, AngleUnit::Degrees),
-                            x, AngleUnit::Degrees),
+          .arg(numberText(band.worstDeviation, 'g', 4), place(band.worstInput, band.worstGridSample),
                numberText(firstOrder, 'g', 4))
           .arg(m_monteCarlo->notAssembled)
           .arg(m_monteCarlo->singular)
-          .arg(m_monteCarlo->spec.perDimension.empty() ? QString()
-                                                       : tr(" (%n with a ± of its own)", nullptr,
-                                                            static_cast<int>(m_monteCarlo->spec.perDimension.size()))));
+          .arg(m_monteCarlo->spec.perDimension.empty()
+                   ? QString()
+                   : tr(" (%n with a ± of its own)", nullptr, static_cast<int>(m_monteCarlo->spec.perDimension.size())))
+          .arg(hasColumn ? place(m_firstOrder->firstOrderWorstInput[column], m_firstOrder->firstOrderWorstAt[column])
+                         : QStringLiteral("—")));
 }
 
 }  // namespace linkwright::ui

@@ -82,6 +82,7 @@ private:
   QTimer m_settle;
   std::optional<kinematics::MonteCarloResult> m_monteCarlo;
   std::optional<kinematics::SweepSensitivities> m_sensitivities;
+  std::optional<kinematics::SensitivitySummary> m_firstOrder;  // the refined first-order worst cases
 };
 
 }  // namespace linkwright::ui
