@@ -50,22 +50,31 @@ SolveRequest pathRequest() {
 
 Branch otherBranch(Branch b) { return b == Branch::Open ? Branch::Crossed : Branch::Open; }
 
-// A full turn's curve: P swept at n angles 2πk/n (the last one step short of closing).
+// A full turn's curve: P at n angles 2πk/n (the last one step short of closing), each pose solved
+// alone on the cell's branch. For a turning crank that is the sweep's path; a change-point
+// linkage's sweep would carry on through its flat position into the other branch, and its curve
+// would not close in one turn (a jump at the turn's end, found as a straight run), on a side that
+// depends on whether a sample falls on the flat position: the branch held is one closed curve.
 std::optional<Error> fullTurnPath(const AtlasCellKey& key, std::size_t n, CouplerCurve& curve,
                                   const std::atomic<bool>* cancel) {
   auto mechanism = atlasMechanism(key, key.branch);
   if (!mechanism) return mechanism.error();
-  SweepResult s;
-  const double last = 2.0 * kPi * static_cast<double>(n - 1) / static_cast<double>(n);
-  if (auto e = sweepInto(*mechanism, gridOver(0.0, last, n), pathRequest(), s, cancel)) return e;
+  Pose pose;
+  preparePose(*mechanism, pose);
+  const SweepSpec grid = gridOver(0.0, 2.0 * kPi * static_cast<double>(n - 1) / static_cast<double>(n), n);
   const std::size_t p = fourbar::kCouplerPoint.index;
-  for (std::size_t j = 0; j < s.size(); ++j) {
-    if (!s.assembled(j)) continue;
-    curve.parameter.push_back(s.inputAngle[j]);
-    curve.crankAngle.push_back(s.inputAngle[j]);
-    curve.point.push_back(s.position[p][j]);
-    curve.derivative.push_back(s.ok(j) ? s.velocity[p][j] : Eigen::Vector2d::Zero());
-    curve.rateOk.push_back(s.ok(j) ? 1 : 0);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (cancel && cancel->load(std::memory_order_relaxed))
+      return Error{ErrorCode::Cancelled, "atlas", "the atlas was cancelled"};
+    const double theta = sweepAngle(grid, k);
+    const PoseReport report = solvePoseInto(*mechanism, sweepDriver(grid, k), pathRequest(), pose);
+    if (report.status == PoseStatus::NotAssemblable) continue;
+    const bool ok = report.status == PoseStatus::Ok;
+    curve.parameter.push_back(theta);
+    curve.crankAngle.push_back(theta);
+    curve.point.push_back(pose.position[p]);
+    curve.derivative.push_back(ok ? pose.velocity[p] : Eigen::Vector2d::Zero());
+    curve.rateOk.push_back(ok ? 1 : 0);
   }
   return std::nullopt;
 }

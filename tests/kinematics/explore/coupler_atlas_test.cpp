@@ -123,6 +123,53 @@ TEST_CASE("every atlas curve is the solver's coupler path of its four-bar, sampl
   CHECK(never > 0);
 }
 
+// A change-point linkage (1 + 2 = 1.5 + 1.5) folds flat at θ = π, where its two branches meet.
+// Its sweep carries on into the other branch there, so over one turn its curve did not close: the
+// jump at the turn's end was classified as a straight run or spoilt the mirror, and whether a
+// sample fell on π (an even count) changed the answer. Held on its branch, the curve is the
+// solver's pose at each angle, closes, and has the same features at 360, 361 and 1440 samples.
+TEST_CASE("a change-point cell traces its branch's closed curve, with the same features at any sample count",
+          "[atlas]") {
+  AtlasAxes axes;
+  axes.coupler = {1.5};
+  axes.rocker = {1.5};
+  axes.frame = {2.0};
+  axes.along = {0.5, 2.0};
+  axes.across = {0.0, 0.5};
+  const auto featureSet = [](const CurveFeatures& f) {
+    return std::vector<std::size_t>{f.cusps.size(), f.crunodes.size(), f.symmetry ? 1u : 0u, f.straight ? 1u : 0u,
+                                    f.circular ? 1u : 0u};
+  };
+  std::vector<std::vector<std::size_t>> first;
+  for (const std::size_t samples : {std::size_t{360}, std::size_t{361}, std::size_t{1440}}) {
+    CAPTURE(samples);
+    axes.samples = samples;
+    const auto page = computeAtlasPage(axes, 0, atlasCellCount(axes));
+    REQUIRE(page.ok());
+    for (std::size_t i = 0; i < page->size(); ++i) {
+      const AtlasCell& cell = (*page)[i];
+      CAPTURE(cell.key.point.along, cell.key.point.across);
+      REQUIRE(cell.grashof.category == GrashofClass::ChangePoint);
+      REQUIRE(cell.motion == CrankMotion::FullTurn);
+      REQUIRE(cell.curve.size() == samples);
+      const auto m = atlasMechanism(cell.key, Branch::Open);
+      REQUIRE(m.ok());
+      Pose pose;
+      preparePose(*m, pose);
+      for (std::size_t k = 0; k < samples; ++k) {
+        // At π the pose is singular (its rates undefined), but placed.
+        REQUIRE(solvePoseInto(*m, {cell.curve.crankAngle[k], 1.0, 0.0}, SolveRequest{}, pose).status !=
+                PoseStatus::NotAssemblable);
+        REQUIRE(cell.curve.point[k] == pose.position[fourbar::kCouplerPoint.index]);
+      }
+      // No jump where the turn closes: the last sample is as near the first as neighbours are.
+      CHECK((cell.curve.point.back() - cell.curve.point.front()).norm() < 0.05 * cell.features.size);
+      if (first.size() <= i) first.push_back(featureSet(cell.features));
+      else CHECK(featureSet(cell.features) == first[i]);
+    }
+  }
+}
+
 TEST_CASE("atlas cells are numbered coupler slowest and across fastest", "[atlas]") {
   AtlasAxes axes;
   axes.coupler = {2.0, 3.0};
