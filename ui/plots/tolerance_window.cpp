@@ -254,6 +254,7 @@ void ToleranceWindow::redraw() {
   const k::Design& design = m_document->design();
   const PlotXAxis x = plotXAxis(design, nominal, PlotAxis::Input, AngleUnit::Degrees);
   const QString name = QString::fromStdString(band.column.name);
+  const QString columnUnit = QString::fromStdString(k::columnUnit(band.column.quantity, design.mechanism.lengthUnit));
   // The band as its distance from the nominal, which a band a hundredth of the curve's size
   // can be seen by; beside it the first-order bound ±Σ|∂y/∂p|·tol.
   std::size_t column = 0;
@@ -275,7 +276,11 @@ void ToleranceWindow::redraw() {
                      {QStringLiteral("bound_low"), tr("− first-order worst case"), linkColor(0), Qt::DashLine}});
   m_band->setData({runsOf(nominal, x.source, above), runsOf(nominal, x.source, below), runsOf(nominal, x.source, bound),
                    runsOf(nominal, x.source, negative)},
-                  tr("deviation of %1").arg(name), x);
+                  tr("deviation [%1]").arg(columnUnit), x);
+  // The output's name in the titles and its unit in the axes', which keep a unit whole when
+  // they must shorten (fittedTitle).
+  m_band->chart()->setTitle(tr("%1: the band of the samples about the nominal").arg(name));
+  m_sensitivity->chart()->setTitle(tr("%1: its sensitivity to each dimension (exact)").arg(name));
 
   // The same column's derivatives, one curve per dimension.
   std::vector<ForceChartView::Curve> curves;
@@ -288,7 +293,7 @@ void ToleranceWindow::redraw() {
       runs.push_back(runsOf(m_sensitivities->sweep, x.source, m_sensitivities->derivative[column][d]));
     }
   m_sensitivity->setCurves(curves);
-  m_sensitivity->setData(runs, tr("∂(%1) per %2").arg(name, unit), x);
+  m_sensitivity->setData(runs, tr("∂y/∂p [%1/%2]").arg(columnUnit, unit), x);
 
   const bool hasColumn = column < m_firstOrder->columns.size();
   const double firstOrder =

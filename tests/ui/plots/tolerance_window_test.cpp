@@ -12,14 +12,18 @@
 #include "kinematics/design/examples.h"
 #include "kinematics/design/parameters.h"
 #include "kinematics/tune/tolerance_dimensions.h"
+#include "kinematics/tune/tolerance_monte_carlo.h"
+#include "kinematics/tune/tolerance_sensitivity.h"
 
 #include "tests/support/catch.h"
 
+#include <QChart>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTableWidget>
+#include <QValueAxis>
 
 using namespace linkwright::ui;
 namespace k = linkwright::kinematics;
@@ -57,6 +61,17 @@ TEST_CASE("the tolerance window draws the core's band and sensitivities, and fol
   // The worst and its place are the core's, refined between the grid's inputs.
   CHECK(window.summaryText().contains("worst deviation " + numberText(band.worstDeviation, 'g', 4) + " at crank " +
                                       numberText(band.worstInput, 'f', 1) + "°"));
+  // So are the first-order worst case and its place (the summary's, as the CLI prints them).
+  const auto summary =
+      k::sensitivitySummary(design.mechanism, k::designSweepSpec(design), k::dimensionTolerances(spec, mc.dimensions))
+          .value();
+  const auto r = static_cast<std::size_t>(rocker);
+  CHECK(window.summaryText().contains("first-order worst case " + numberText(summary.firstOrderWorst[r], 'g', 4) +
+                                      " at crank " + numberText(summary.firstOrderWorstInput[r], 'f', 1) + "°"));
+  // The axes say the unit, which survives a title's shortening; the output is in the titles.
+  CHECK(window.bandChart()->yAxis()->titleText() == "deviation [deg]");
+  CHECK(window.sensitivityChart()->yAxis()->titleText() == "∂y/∂p [deg/mm]");
+  CHECK(window.bandChart()->chart()->title().startsWith("rocker_angle_deg: "));
 
   const auto sens = k::sweepSensitivities(design.mechanism, k::designSweepSpec(design)).value();
   std::size_t column = 0;
