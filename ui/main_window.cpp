@@ -171,6 +171,8 @@ MainWindow::MainWindow(QWidget* parent)
   m_canvas->linkageScene()->addItem(m_forceArrows);
   m_forceArrows->setVisible(false);
   connect(m_forces, &ForceResults::changed, this, [this] { m_forceArrows->setForces(*m_document, *m_forces); });
+  connect(m_canvas, &LinkageView::pixelsPerUnitChanged, this, [this](double s) { m_forceArrows->setViewScale(s); });
+  m_forceArrows->setViewScale(m_canvas->pixelsPerUnit());
   m_plots->setAngleUnit(m_settings->anglesInRadians() ? AngleUnit::Radians : AngleUnit::Degrees);
   m_forcePlots->setAngleUnit(m_settings->anglesInRadians() ? AngleUnit::Radians : AngleUnit::Degrees);
   m_bigReadout->setAngleUnit(m_plots->angleUnit());

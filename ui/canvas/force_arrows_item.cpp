@@ -9,7 +9,9 @@
 #include "kinematics/solve/rigid_bodies.h"
 
 #include <QCoreApplication>
+#include <QGraphicsScene>
 #include <QPainter>
+#include <QTransform>
 
 #include <algorithm>
 #include <cmath>
@@ -20,12 +22,22 @@ namespace k = kinematics;
 
 namespace {
 constexpr double kLabelGapPx = 4.0;
+// How many lines out a label may be moved to clear the labels of larger forces.
+constexpr int kMaxLabelSteps = 6;
+
+double overlapArea(const QRectF& box, const std::vector<QRectF>& taken) {
+  double area = 0.0;
+  for (const QRectF& t : taken)
+    if (const QRectF common = t.intersected(box); common.isValid()) area += common.width() * common.height();
+  return area;
+}
 }  // namespace
 
 ForceArrowItem::ForceArrowItem(QGraphicsItem* parent) : QGraphicsItem(parent), m_label(new LabelItem(this)) {
   setFlag(ItemIgnoresTransformations);
   setZValue(canvas::z::kArrows);
   m_label->setColor(kForceArrowColor.darker(120));
+  m_label->setBackdrop(true);
 }
 
 void ForceArrowItem::setArrow(const QPointF& scenePoint, const QPointF& direction, double lengthPx,
@@ -37,7 +49,18 @@ void ForceArrowItem::setArrow(const QPointF& scenePoint, const QPointF& directio
   m_lengthPx = lengthPx;
   m_label->setText(label);
   m_label->setPos(tipPx());
+  m_labelExtraPx = 0.0;
   m_label->placeToward(m_direction, kLabelGapPx * m_scale);
+}
+
+void ForceArrowItem::setLabelDistance(double extraPx) {
+  if (extraPx == m_labelExtraPx) return;
+  m_labelExtraPx = extraPx;
+  m_label->placeToward(m_direction, (kLabelGapPx + extraPx) * m_scale);
+}
+
+QRectF ForceArrowItem::labelRect(const QTransform& sceneToPixels) const {
+  return m_label->deviceTransform(sceneToPixels).mapRect(m_label->textRect());
 }
 
 void ForceArrowItem::setPresentationScale(double factor) {
@@ -109,11 +132,60 @@ void ForceArrowsItem::setForces(const MechanismDocument& document, const ForceRe
     }
   }
   for (std::size_t i = used; i < m_arrows.size(); ++i) m_arrows[i]->setVisible(false);
+  separateLabels();
 }
 
 void ForceArrowsItem::setPresentationScale(double factor) {
   m_scale = factor;
   for (ForceArrowItem* arrow : m_arrows) arrow->setPresentationScale(factor);
+  separateLabels();
+}
+
+void ForceArrowsItem::setViewScale(double pixelsPerUnit) {
+  if (pixelsPerUnit == m_pixelsPerUnit) return;
+  m_pixelsPerUnit = pixelsPerUnit;
+  separateLabels();
+}
+
+// Two joints near each other on screen with forces alike (a crank's two pins) put their arrows'
+// tips, and so their labels, on top of each other, and a short arrow's label falls on its
+// joint's name. In order of size, each label is moved out along its arrow a line at a time until
+// its box is clear of the points' names and the labels of larger forces (at most kMaxLabelSteps
+// lines; else where it overlaps least). Where the feet are on screen follows the canvas's
+// scale, so this is redone when the scale changes.
+void ForceArrowsItem::separateLabels() {
+  std::vector<ForceArrowItem*> shown;
+  for (ForceArrowItem* arrow : m_arrows)
+    if (arrow->isVisible()) shown.push_back(arrow);
+  std::stable_sort(shown.begin(), shown.end(),
+                   [](const ForceArrowItem* a, const ForceArrowItem* b) { return a->lengthPx() > b->lengthPx(); });
+  for (ForceArrowItem* arrow : shown) arrow->setLabelDistance(0.0);
+  if (!(m_pixelsPerUnit > 0.0)) return;
+  // The view's translation moves every box alike, so the scale alone places them.
+  const QTransform toPixels = QTransform::fromScale(m_pixelsPerUnit, -m_pixelsPerUnit);
+  std::vector<QRectF> taken;
+  if (scene() != nullptr)
+    for (const QGraphicsItem* item : scene()->items()) {
+      const auto* label = dynamic_cast<const LabelItem*>(item);
+      const bool ours = std::any_of(m_arrows.begin(), m_arrows.end(),
+                                    [&](const ForceArrowItem* a) { return a->labelItem() == label; });
+      if (label != nullptr && !ours && label->isVisible() && !label->text().isEmpty())
+        taken.push_back(label->deviceTransform(toPixels).mapRect(label->textRect()));
+    }
+  for (ForceArrowItem* arrow : shown) {
+    const double line = arrow->labelRect(toPixels).height() / m_scale;
+    int best = 0;
+    double least = overlapArea(arrow->labelRect(toPixels), taken);
+    for (int step = 1; step <= kMaxLabelSteps && least > 0.0; ++step) {
+      arrow->setLabelDistance(step * line);
+      if (const double o = overlapArea(arrow->labelRect(toPixels), taken); o < least) {
+        least = o;
+        best = step;
+      }
+    }
+    arrow->setLabelDistance(best * line);
+    taken.push_back(arrow->labelRect(toPixels));
+  }
 }
 
 }  // namespace linkwright::ui

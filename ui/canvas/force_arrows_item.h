@@ -9,6 +9,7 @@
 #include <QColor>
 #include <QGraphicsItem>
 #include <QString>
+#include <QTransform>
 
 #include <vector>
 
@@ -34,6 +35,12 @@ public:
   void setArrow(const QPointF& scenePoint, const QPointF& direction, double lengthPx, const QString& label);
   void setPresentationScale(double factor);
 
+  /// Moves the label `extraPx` pixels (at presentation scale 1) farther out along the arrow.
+  void setLabelDistance(double extraPx);
+  /// The label's text box in the pixels `sceneToPixels` maps the scene to.
+  QRectF labelRect(const QTransform& sceneToPixels) const;
+  const LabelItem* labelItem() const { return m_label; }
+
   double lengthPx() const { return m_lengthPx; }
   /// Unit direction in scene axes (y up).
   QPointF direction() const { return m_direction; }
@@ -48,6 +55,7 @@ private:
   QPointF m_direction{1.0, 0.0};
   double m_lengthPx = 0.0;
   double m_scale = 1.0;
+  double m_labelExtraPx = 0.0;
   LabelItem* m_label;
 };
 
@@ -60,6 +68,10 @@ public:
   /// while `forces` has none (disabled, no dynamics, a singular pose).
   void setForces(const MechanismDocument& document, const ForceResults& forces);
   void setPresentationScale(double factor);
+  /// The canvas's scale (pixels per scene unit), which sets how near the arrows' feet are on
+  /// screen: their labels are kept apart at it, and off the scene's other labels (the points'
+  /// names); 0: not known, labels where they fall.
+  void setViewScale(double pixelsPerUnit);
 
   /// The arrows, revolute joints first, then prismatic ones; hidden ones are not solved.
   const std::vector<ForceArrowItem*>& arrows() const { return m_arrows; }
@@ -69,9 +81,11 @@ public:
 
 private:
   ForceArrowItem* arrowAt(std::size_t index);
+  void separateLabels();
 
   std::vector<ForceArrowItem*> m_arrows;
   double m_scale = 1.0;
+  double m_pixelsPerUnit = 0.0;
 };
 
 }  // namespace linkwright::ui

@@ -47,6 +47,11 @@ void LabelItem::setBoxed(bool boxed) {
   m_boxed = boxed;
 }
 
+void LabelItem::setBackdrop(bool backdrop) {
+  m_backdrop = backdrop;
+  update();
+}
+
 void LabelItem::setMaximumWidth(double pixels) {
   if (pixels == m_maximumWidth) return;
   prepareGeometryChange();
@@ -96,6 +101,8 @@ void LabelItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidge
     painter->setPen(QPen(color, 1.0));
     painter->setBrush(colors().labelBox);
     painter->drawRoundedRect(rect.adjusted(-kBoxPaddingPx, -kBoxPaddingPx, kBoxPaddingPx, kBoxPaddingPx), 3.0, 3.0);
+  } else if (m_backdrop) {
+    painter->fillRect(rect.adjusted(-1.0, 0.0, 1.0, 0.0), colors().labelBox);
   }
   painter->setFont(m_font);
   painter->setPen(color);

@@ -22,6 +22,9 @@ public:
   void setColor(const QColor& color);
   /// Draws a white rounded box behind the text (for messages over the drawing).
   void setBoxed(bool boxed);
+  /// Fills the text's box with the label box colour, unoutlined, so a label over a link or a
+  /// ground's hatching still reads (force magnitudes).
+  void setBackdrop(bool backdrop);
   /// Wraps the text at word boundaries to at most `pixels` wide (0: one line).
   void setMaximumWidth(double pixels);
   /// Where the text sits relative to pos(): `offsetPx` pixels away, and which side of the
@@ -31,11 +34,13 @@ public:
   /// side of the point: to the right for +x, above for +y, and so on.
   void placeToward(const QPointF& direction, double distancePx);
 
+  /// The text's box in item pixels, without the box's padding.
+  QRectF textRect() const;
+
   QRectF boundingRect() const override;
   void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
 
 private:
-  QRectF textRect() const;
   // Lays the text out once per change: a drag repaints every label on every move, and shaping
   // the text each time was most of their cost.
   void layOut();
@@ -46,6 +51,7 @@ private:
   std::optional<QColor> m_color;  // nullopt: the theme's
   QFont m_font;
   bool m_boxed = false;
+  bool m_backdrop = false;
   double m_maximumWidth = 0.0;
   QPointF m_offset;
   Qt::Alignment m_alignment = Qt::AlignLeft | Qt::AlignBottom;

@@ -145,6 +145,7 @@ void LinkageView::fitToView() {
   centerOn(bounds.center());
   m_scrollResidue = {};
   m_autoFit = true;
+  emit pixelsPerUnitChanged(pixelsPerUnit());
 }
 
 // Labels keep their pixel size at any zoom, so a fit of the drawing alone can leave one cut at
@@ -258,6 +259,7 @@ void LinkageView::zoomAbout(const QPointF& viewportPos, double factor) {
   scale(wanted / now, wanted / now);
   ensureSceneRect(false);
   scrollByPixels(viewportTransform().map(anchor) - viewportPos);
+  emit pixelsPerUnitChanged(pixelsPerUnit());
 }
 
 void LinkageView::scrollByPixels(const QPointF& delta) {

@@ -86,6 +86,8 @@ public slots:
   void zoomBy(double factor);
 
 signals:
+  /// The scale changed (a fit or a zoom): pixels per scene unit.
+  void pixelsPerUnitChanged(double pixelsPerUnit);
   void editRefused(const QString& reason);
   void statusMessage(const QString& text);
   /// Point mode: the model point clicked (length unit).
