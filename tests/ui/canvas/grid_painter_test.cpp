@@ -6,6 +6,8 @@
 
 #include "tests/support/catch.h"
 
+#include <QFontMetricsF>
+
 #include <cmath>
 #include <tuple>
 
@@ -68,4 +70,34 @@ TEST_CASE("the view's grid follows the rule at two zoom levels", "[canvas][grid]
   const double zoomed = v.view.gridSpacing();
   requireGridRule(zoomed, v.view.pixelsPerUnit());
   CHECK(zoomed < fitted);
+}
+
+// Presentation mode on a projector's 1024×768 screen: 8 pt × 2 numbers on lines 40–100 px apart
+// ran together ("-10-5 0 5 10", "30grid 5 mm"). No two numbers or the caption overlap, the
+// bottom numbers keep a digit apart, at text scales 1 and 2 over a range of zooms.
+TEST_CASE("the grid's numbers never run together, whatever the text scale", "[canvas][grid]") {
+  using linkwright::ui::gridLabelFont;
+  using linkwright::ui::gridLabels;
+  const QRectF visible(-12.0, -14.0, 48.0, 40.0);  // mm: the funsho four-bar's drawing
+  for (const double textScale : {1.0, 2.0})
+    for (const double pixelsPerUnit : {8.0, 9.0, 12.5, 20.0, 33.0}) {
+      CAPTURE(textScale, pixelsPerUnit);
+      const QTransform toDevice = QTransform::fromScale(pixelsPerUnit, -pixelsPerUnit).translate(12.0, -26.0);
+      const double spacing = gridSpacing(pixelsPerUnit);
+      const QFont font = gridLabelFont(QFont(), textScale);
+      const auto labels = gridLabels(toDevice, visible, spacing, QStringLiteral("mm"), font, textScale);
+      const double digit = QFontMetricsF(font).horizontalAdvance(QStringLiteral("0"));
+      std::size_t bottom = 0;
+      for (std::size_t i = 0; i < labels.size(); ++i) {
+        for (std::size_t j = i + 1; j < labels.size(); ++j) {
+          CAPTURE(labels[i].text, labels[j].text);
+          CHECK_FALSE(labels[i].box.intersects(labels[j].box));
+          if (labels[i].at.y() == labels[j].at.y())  // along the bottom
+            CHECK(std::abs(labels[i].box.center().x() - labels[j].box.center().x()) >=
+                  0.5 * (labels[i].box.width() + labels[j].box.width()) + digit - 1e-9);
+        }
+        bottom += labels[i].at.y() == labels.back().at.y() ? 1 : 0;
+      }
+      CHECK(bottom >= 3);  // the caption and at least two numbers
+    }
 }
