@@ -76,4 +76,23 @@ void applyAxisRange(QValueAxis* axis, const AxisRange& range) {
   if (axis->labelFormat() != format) axis->setLabelFormat(format);
 }
 
+double fittedTickStep(const AxisRange& range, double widthPx, const QFont& font) {
+  const double span = range.max - range.min;
+  if (!(widthPx > 0.0) || !(span > 0.0) || !(range.step > 0.0)) return range.step;
+  const QFontMetricsF metrics(font);
+  const auto label = [&](double v) { return QString::number(v, 'f', std::max(range.decimals, 0)); };
+  const double room =
+      std::max(metrics.horizontalAdvance(label(range.min)), metrics.horizontalAdvance(label(range.max))) +
+      metrics.horizontalAdvance(QStringLiteral("0"));
+  for (double decade = 1.0; decade <= 1e6; decade *= 10.0)
+    for (const double factor : {1.0, 2.0, 4.0})
+      if (range.step * factor * decade * widthPx / span >= room) return range.step * factor * decade;
+  return span;
+}
+
+void applyTickStep(QValueAxis* axis, const AxisRange& range, double widthPx) {
+  const double step = fittedTickStep(range, widthPx, axis->labelsFont());
+  if (axis->tickInterval() != step) axis->setTickInterval(step);
+}
+
 }  // namespace linkwright::ui

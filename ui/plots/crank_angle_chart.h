@@ -12,6 +12,7 @@
 
 class QChart;
 class QChartView;
+class QFont;
 class QValueAxis;
 
 namespace linkwright::ui {
@@ -30,5 +31,14 @@ int legendFittingHeight(const QChartView* view, int floor);
 
 /// Applies a rounded range to a value axis (bounds, ticks, label format).
 void applyAxisRange(QValueAxis* axis, const AxisRange& range);
+
+/// The x axis's tick step for `range` on a plot area `widthPx` wide, its labels in `font`:
+/// range.step, or the least of its multiples ×2, ×4, ×10, ×20, ×40, … at which the labels keep
+/// a digit's width apart (Qt Charts ran "0 90 180270360" together on a projector's 1024 px in
+/// presentation mode). range.step before the chart's first layout (no width yet).
+double fittedTickStep(const AxisRange& range, double widthPx, const QFont& font);
+
+/// Sets `axis`'s dynamic tick interval to fittedTickStep for its chart's plot area, if it differs.
+void applyTickStep(QValueAxis* axis, const AxisRange& range, double widthPx);
 
 }  // namespace linkwright::ui

@@ -25,6 +25,7 @@ ForceChartView::ForceChartView(const QString& title, bool fromZero, QWidget* par
   m_cursor = makeCrankCursor(chart, m_xAxis, m_yAxis);
   // The curves are simplified for the plot area's scale: a new one may need them drawn again.
   connect(chart, &QChart::plotAreaChanged, this, [this] {
+    applyTickStep(m_xAxis, m_xRange, this->chart()->plotArea().width());
     for (SegmentedLine& line : m_lines) line.rescale();
   });
 }
@@ -62,7 +63,8 @@ bool ForceChartView::setData(const std::vector<SeriesRuns>& runs, const QString&
   applyAxisRange(m_yAxis, y);
   if (m_yAxis->titleText() != valueTitle) m_yAxis->setTitleText(valueTitle);
   applyAxisRange(m_xAxis, x.range);
-  if (m_xAxis->tickInterval() != x.range.step) m_xAxis->setTickInterval(x.range.step);
+  m_xRange = x.range;
+  applyTickStep(m_xAxis, x.range, chart()->plotArea().width());
   if (m_xAxis->titleText() != x.title) m_xAxis->setTitleText(x.title);
   m_cursor->setYSpan(y.min, y.max);
   static const SeriesRuns kNone;

@@ -67,6 +67,7 @@ protected:
 private:
   bool m_fromZero;
   QValueAxis* m_xAxis;
+  AxisRange m_xRange;  // the last data's x range: its ticks are fitted again to a new width
   QValueAxis* m_yAxis;
   std::vector<SegmentedLine> m_lines;
   std::unique_ptr<VerticalMarker> m_cursor;

@@ -33,6 +33,7 @@ QuantityChartView::QuantityChartView(QuantityKind kind, const QString& title, QW
   // labels' width, not the plot's height, so this settles at once.)
   // A new plot area also changes the curves' scale: they are drawn again if it matters.
   connect(chart, &QChart::plotAreaChanged, this, [this] {
+    applyTickStep(m_xAxis, m_xRange, this->chart()->plotArea().width());
     if (tickBudget() != m_tickBudget) applyValueRange();
     else
       for (Curve& curve : m_curves) curve.line.rescale();
@@ -97,7 +98,8 @@ bool QuantityChartView::setData(const kinematics::SweepResult& sweep, const Quan
                                          : valueAxisTitle(m_curves.front().curve.quantity, unit, lengthUnit);
   if (m_yAxis->titleText() != title) m_yAxis->setTitleText(title);
   applyAxisRange(m_xAxis, x.range);
-  if (m_xAxis->tickInterval() != x.range.step) m_xAxis->setTickInterval(x.range.step);
+  m_xRange = x.range;
+  applyTickStep(m_xAxis, x.range, chart()->plotArea().width());
   if (m_xAxis->titleText() != x.title) m_xAxis->setTitleText(x.title);
   ChartLayoutInputs inputs{axesRoom(chart()), {}};
   for (std::size_t i = 0; i < m_curves.size(); ++i) {

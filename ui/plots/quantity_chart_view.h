@@ -102,6 +102,7 @@ private:
 
   QuantityKind m_kind;
   QValueAxis* m_xAxis;
+  AxisRange m_xRange;  // the last data's x range: its ticks are fitted again to a new width
   QValueAxis* m_yAxis;
   std::vector<Curve> m_curves;
   std::vector<Markers> m_markers;

@@ -259,3 +259,26 @@ TEST_CASE("the axes follow the chart's scale, their titles still centred (presen
   CHECK(right2 - left2 > 1.7 * (right1 - left1));
   CHECK(0.5 * (left2 + right2) == Approx(c.chart->plotArea().center().x()).margin(3.0));
 }
+
+// Presentation mode on a projector's 1024 px: the crank axis's five labels, 90° apart, ran
+// together ("0 90 180270360"). The step is the least of 90, 180, 360 at which the labels keep a
+// digit apart, whatever the font and the width.
+TEST_CASE("the x axis labels a coarser step where its labels would run together", "[plots][axes]") {
+  const linkwright::ui::AxisRange crank{0.0, 360.0, 90.0, 5, 0};
+  for (const double points : {9.0, 16.0, 24.0}) {
+    QFont font;
+    font.setPointSizeF(points);
+    const QFontMetricsF metrics(font);
+    const double room =
+        metrics.horizontalAdvance(QStringLiteral("360")) + metrics.horizontalAdvance(QStringLiteral("0"));
+    for (const double width : {120.0, 200.0, 300.0, 600.0, 1200.0}) {
+      CAPTURE(points, width);
+      const double step = linkwright::ui::fittedTickStep(crank, width, font);
+      CHECK((step == 90.0 || step == 180.0 || step == 360.0 || step > 360.0));
+      if (step <= 360.0) CHECK(step * width / 360.0 >= room);     // apart
+      if (step > 90.0) CHECK(step / 2.0 * width / 360.0 < room);  // the finer step would not be
+    }
+  }
+  // Before the first layout, and for a range with no span, the range's own step.
+  CHECK(linkwright::ui::fittedTickStep(crank, 0.0, QFont()) == 90.0);
+}
