@@ -49,14 +49,16 @@ void ForceArrowItem::setArrow(const QPointF& scenePoint, const QPointF& directio
   m_lengthPx = lengthPx;
   m_label->setText(label);
   m_label->setPos(tipPx());
-  m_labelExtraPx = 0.0;
+  m_labelShift = {};
   m_label->placeToward(m_direction, kLabelGapPx * m_scale);
 }
 
-void ForceArrowItem::setLabelDistance(double extraPx) {
-  if (extraPx == m_labelExtraPx) return;
-  m_labelExtraPx = extraPx;
-  m_label->placeToward(m_direction, (kLabelGapPx + extraPx) * m_scale);
+void ForceArrowItem::setLabelShift(double alongPx, double acrossPx) {
+  if (m_labelShift == QPointF(alongPx, acrossPx)) return;
+  m_labelShift = {alongPx, acrossPx};
+  // In the item's pixels (y down): along the arrow, and its left (counter-clockwise) normal.
+  const QPointF along(m_direction.x(), -m_direction.y()), left(-m_direction.y(), -m_direction.x());
+  m_label->setPos(tipPx() + (alongPx * along + acrossPx * left) * m_scale);
 }
 
 QRectF ForceArrowItem::labelRect(const QTransform& sceneToPixels) const {
@@ -149,9 +151,9 @@ void ForceArrowsItem::setViewScale(double pixelsPerUnit) {
 
 // Two joints near each other on screen with forces alike (a crank's two pins) put their arrows'
 // tips, and so their labels, on top of each other, and a short arrow's label falls on its
-// joint's name. In order of size, each label is moved out along its arrow a line at a time until
-// its box is clear of the points' names and the labels of larger forces (at most kMaxLabelSteps
-// lines; else where it overlaps least). Where the feet are on screen follows the canvas's
+// joint's name. In order of size, each label is moved beside its tip, either side, or out along
+// its arrow, a line at a time, until its box is clear of the points' names and the labels of
+// larger forces (at most kMaxLabelSteps lines; else where it overlaps least). Where the feet are on screen follows the canvas's
 // scale, so this is redone when the scale changes.
 void ForceArrowsItem::separateLabels() {
   std::vector<ForceArrowItem*> shown;
@@ -159,7 +161,7 @@ void ForceArrowsItem::separateLabels() {
     if (arrow->isVisible()) shown.push_back(arrow);
   std::stable_sort(shown.begin(), shown.end(),
                    [](const ForceArrowItem* a, const ForceArrowItem* b) { return a->lengthPx() > b->lengthPx(); });
-  for (ForceArrowItem* arrow : shown) arrow->setLabelDistance(0.0);
+  for (ForceArrowItem* arrow : shown) arrow->setLabelShift(0.0, 0.0);
   if (!(m_pixelsPerUnit > 0.0)) return;
   // The view's translation moves every box alike, so the scale alone places them.
   const QTransform toPixels = QTransform::fromScale(m_pixelsPerUnit, -m_pixelsPerUnit);
@@ -174,16 +176,19 @@ void ForceArrowsItem::separateLabels() {
     }
   for (ForceArrowItem* arrow : shown) {
     const double line = arrow->labelRect(toPixels).height() / m_scale;
-    int best = 0;
+    QPointF best;
     double least = overlapArea(arrow->labelRect(toPixels), taken);
-    for (int step = 1; step <= kMaxLabelSteps && least > 0.0; ++step) {
-      arrow->setLabelDistance(step * line);
-      if (const double o = overlapArea(arrow->labelRect(toPixels), taken); o < least) {
-        least = o;
-        best = step;
+    // Beside the tip first, either side (parallel arrows' labels stack), then farther out.
+    for (int step = 1; step <= kMaxLabelSteps && least > 0.0; ++step)
+      for (const QPointF shift : {QPointF(0.0, step), QPointF(0.0, -step), QPointF(step, 0.0)}) {
+        arrow->setLabelShift(shift.x() * line, shift.y() * line);
+        if (const double o = overlapArea(arrow->labelRect(toPixels), taken); o < least) {
+          least = o;
+          best = shift;
+          if (o == 0.0) break;
+        }
       }
-    }
-    arrow->setLabelDistance(best * line);
+    arrow->setLabelShift(best.x() * line, best.y() * line);
     taken.push_back(arrow->labelRect(toPixels));
   }
 }

@@ -35,8 +35,9 @@ public:
   void setArrow(const QPointF& scenePoint, const QPointF& direction, double lengthPx, const QString& label);
   void setPresentationScale(double factor);
 
-  /// Moves the label `extraPx` pixels (at presentation scale 1) farther out along the arrow.
-  void setLabelDistance(double extraPx);
+  /// Moves the label from the arrow's tip by `alongPx` out along the arrow and `acrossPx` to
+  /// its left (pixels at presentation scale 1).
+  void setLabelShift(double alongPx, double acrossPx);
   /// The label's text box in the pixels `sceneToPixels` maps the scene to.
   QRectF labelRect(const QTransform& sceneToPixels) const;
   const LabelItem* labelItem() const { return m_label; }
@@ -55,7 +56,7 @@ private:
   QPointF m_direction{1.0, 0.0};
   double m_lengthPx = 0.0;
   double m_scale = 1.0;
-  double m_labelExtraPx = 0.0;
+  QPointF m_labelShift;  // along, across the arrow: px at presentation scale 1
   LabelItem* m_label;
 };
 

@@ -138,14 +138,19 @@ void LinkageView::fitToView() {
   const double availableH = std::max(area.height() - 2.0 * margin, 0.3 * area.height());
   double k = std::min(availableW / w, availableH / h);
   if (!(k > 0.0) || !std::isfinite(k)) k = 1.0;
+  const auto apply = [&](double scale) {
+    scale = std::clamp(scale * size, kMinLinkagePixels, kMaxLinkagePixels) / size;
+    setTransform(QTransform::fromScale(scale, -scale));
+    ensureSceneRect(true);
+    centerOn(bounds.center());
+    emit pixelsPerUnitChanged(pixelsPerUnit());
+  };
   k = std::min(k, labelsFitScale(bounds.center(), area));
-  k = std::clamp(k * size, kMinLinkagePixels, kMaxLinkagePixels) / size;
-  setTransform(QTransform::fromScale(k, -k));
-  ensureSceneRect(true);
-  centerOn(bounds.center());
+  apply(k);
+  // Labels the new scale moved (force magnitudes kept apart) may reach past the edge: once more.
+  if (const double again = labelsFitScale(bounds.center(), area); again < k) apply(again);
   m_scrollResidue = {};
   m_autoFit = true;
-  emit pixelsPerUnitChanged(pixelsPerUnit());
 }
 
 // Labels keep their pixel size at any zoom, so a fit of the drawing alone can leave one cut at
