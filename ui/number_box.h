@@ -15,6 +15,11 @@ public:
   explicit NumberBox(QWidget* parent = nullptr);
 
   void stepBy(int steps) override;
+  /// Qt sizes a spin box for the longest text its range allows: ±1e9 N·m with four decimals
+  /// took 150 px and pushed the Forces tab's loads past a projector's narrow side column. The
+  /// least width here is for the text shown or a five-digit value with the decimals and the
+  /// suffix, whichever is wider (never more than Qt's); a longer number scrolls in the field.
+  QSize minimumSizeHint() const override;
 };
 
 }  // namespace linkwright::ui

@@ -55,10 +55,10 @@ QDoubleSpinBox* numberSpin(const QString& suffix, double lo, double hi, QWidget*
 DynamicsPanel::DynamicsPanel(MechanismDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document), m_refusal(new QLabel(this)),
       m_links(new MassTable(
-          {tr("Link"), tr("Mass\n[kg]"), tr("Centre along"), tr("Centre across"), tr("Inertia\n[kg·m²]")})),
+          {tr("Link"), tr("Mass\n[kg]"), tr("Centre\nalong"), tr("Centre\nacross"), tr("Inertia\n[kg·m²]")})),
       m_sliderGroup(new QGroupBox(tr("Slider blocks"), this)),
       m_sliders(new MassTable({tr("Slider"), tr("Mass\n[kg]"), tr("Inertia\n[kg·m²]")})),
-      m_gravity(new QCheckBox(tr("Gravity, g ="))), m_g(numberSpin(tr(" m/s²"), 0.0, 1e4, this)),
+      m_gravity(new QCheckBox(tr("Gravity, down (−y)"))), m_g(numberSpin(tr(" m/s²"), 0.0, 1e4, this)),
       m_torqueLink(new QComboBox), m_torque(numberSpin(tr(" N·m"), -1e9, 1e9, this)), m_forceTarget(new QComboBox),
       m_forceX(numberSpin(tr(" N"), -1e9, 1e9, this)), m_forceY(numberSpin(tr(" N"), -1e9, 1e9, this)),
       m_extraLoads(new QLabel),
@@ -91,23 +91,16 @@ DynamicsPanel::DynamicsPanel(MechanismDocument* document, QWidget* parent)
 
   auto* loads = new QGroupBox(tr("Loads"), this);
   auto* form = new QFormLayout(loads);
-  auto* gravityRow = new QHBoxLayout;
+  // One field a row: side by side the rows wanted 476 px, and on a projector's 1024 px the page
+  // scrolled sideways.
   m_g->setDecimals(5);
-  gravityRow->addWidget(m_gravity);
-  gravityRow->addWidget(m_g, 1);
-  gravityRow->addWidget(new QLabel(tr("down (−y)")));
-  form->addRow(gravityRow);
-  auto* torqueRow = new QHBoxLayout;
-  torqueRow->addWidget(m_torqueLink, 1);
-  torqueRow->addWidget(m_torque, 1);
-  form->addRow(tr("Load torque on"), torqueRow);
-  auto* forceRow = new QHBoxLayout;
-  forceRow->addWidget(new QLabel(tr("Fx")));
-  forceRow->addWidget(m_forceX, 1);
-  forceRow->addWidget(new QLabel(tr("Fy")));
-  forceRow->addWidget(m_forceY, 1);
+  form->addRow(m_gravity);
+  form->addRow(tr("g"), m_g);
+  form->addRow(tr("Load torque on"), m_torqueLink);
+  form->addRow(tr("torque"), m_torque);
   form->addRow(tr("Force at"), m_forceTarget);
-  form->addRow(QString(), forceRow);
+  form->addRow(tr("Fx"), m_forceX);
+  form->addRow(tr("Fy"), m_forceY);
   m_extraLoads->setWordWrap(true);
   m_extraLoads->setEnabled(false);
   form->addRow(m_extraLoads);
@@ -115,6 +108,11 @@ DynamicsPanel::DynamicsPanel(MechanismDocument* document, QWidget* parent)
   layout->addWidget(m_springs);
   layout->addStretch(1);
 
+  // Sized for a dozen characters, not the longest point's name: the list shows them whole.
+  for (QComboBox* box : {m_torqueLink, m_forceTarget}) {
+    box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    box->setMinimumContentsLength(6);
+  }
   m_torque->setToolTip(tr("Counter-clockwise positive, the same at every crank angle"));
   m_forceTarget->setToolTip(
       tr("A point of a link, or a slider block (the force acts at its pin); fixed in the world frame"));
@@ -150,8 +148,9 @@ void DynamicsPanel::refreshTables() {
   const k::Mechanism& m = m_document->mechanism();
   const k::LinkageDynamics& d = m_document->design().dynamics;
   const QString unit = QString::fromStdString(m_document->lengthUnit());
-  m_links->setHeaderText(2, tr("Centre along\n[%1]").arg(unit));
-  m_links->setHeaderText(3, tr("Centre across\n[%1]").arg(unit));
+  // Three short lines, so that the five columns fit a projector's narrow side column.
+  m_links->setHeaderText(2, tr("Centre\nalong\n[%1]").arg(unit));
+  m_links->setHeaderText(3, tr("Centre\nacross\n[%1]").arg(unit));
   QStringList names;
   std::vector<std::vector<MassTable::Cell>> cells;
   const QString midpoint = tr("midpoint");

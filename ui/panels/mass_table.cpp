@@ -51,8 +51,12 @@ MassTable::MassTable(const QStringList& headers, QWidget* parent) : QTableWidget
   // Names take what they need; the number columns share the rest, so nothing scrolls sideways.
   horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
   horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
-  horizontalHeader()->setMinimumSectionSize(56);
-  setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  // A number column as narrow as "00.00", a longer text elided with its whole text in the
+  // cell's tooltip: a projector's narrow side column holds all five. Narrower still (presentation
+  // mode's large text), the table scrolls sideways rather than cut a column off.
+  horizontalHeader()->setMinimumSectionSize(fontMetrics().horizontalAdvance(QStringLiteral("00.00")) + 6);
+  setTextElideMode(Qt::ElideRight);
+  setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
   setSelectionMode(QAbstractItemView::SingleSelection);
   setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                   QAbstractItemView::AnyKeyPressed);
@@ -127,7 +131,7 @@ void MassTable::setRows(const QStringList& names, const std::vector<std::vector<
       it->setText(text);
       it->setFont(cell.value ? font() : unsetFont);
       it->setForeground(palette().color(cell.value ? QPalette::Active : QPalette::Disabled, QPalette::Text));
-      it->setToolTip(cell.value ? QString() : cell.unsetToolTip);
+      it->setToolTip(cell.value ? text : cell.unsetToolTip);
     }
   }
   m_filling = false;

@@ -44,19 +44,24 @@ SpringsEditor::SpringsEditor(MechanismDocument* document, Submit submit, Refuse 
       m_table(new MassTable({tr("Spring"), tr("Stiffness\n[N/m]"), tr("Free length"), tr("Preload\n[N]")})),
       m_first(new QComboBox), m_second(new QComboBox), m_add(new QPushButton(tr("Add spring"))),
       m_remove(new QPushButton(tr("Remove"))) {
+  // The two ends one below the other: side by side they wanted 343 px, more than a projector's
+  // side column has.
   auto* layout = new QGridLayout(this);
-  layout->addWidget(m_table, 0, 0, 1, 4);
+  layout->addWidget(m_table, 0, 0, 1, 2);
   layout->addWidget(new QLabel(tr("From")), 1, 0);
   layout->addWidget(m_first, 1, 1);
-  layout->addWidget(new QLabel(tr("to")), 1, 2);
-  layout->addWidget(m_second, 1, 3);
+  layout->addWidget(new QLabel(tr("to")), 2, 0);
+  layout->addWidget(m_second, 2, 1);
   auto* buttons = new QHBoxLayout;
   buttons->addStretch(1);
   buttons->addWidget(m_add);
   buttons->addWidget(m_remove);
-  layout->addLayout(buttons, 2, 0, 1, 4);
+  layout->addLayout(buttons, 3, 0, 1, 2);
   layout->setColumnStretch(1, 1);
-  layout->setColumnStretch(3, 1);
+  for (QComboBox* box : {m_first, m_second}) {
+    box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    box->setMinimumContentsLength(6);
+  }
   m_add->setToolTip(tr("A spring of %1 N/m between the two points, unloaded where they are now").arg(kNewStiffness));
   m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
   connect(m_table, &MassTable::cellEdited, this, &SpringsEditor::edit);

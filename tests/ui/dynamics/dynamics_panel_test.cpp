@@ -14,6 +14,8 @@
 
 #include "tests/support/catch.h"
 
+#include <QDoubleSpinBox>
+
 using namespace linkwright::ui;
 namespace k = linkwright::kinematics;
 
@@ -34,7 +36,7 @@ TEST_CASE("the panel lists each link's mass, centre and inertia from the design"
   CHECK(t->item(1, 1)->text() == "0.6");
   CHECK(t->item(1, 2)->text() == "17.5");
   CHECK(t->item(1, 4)->text() == "0.0004");
-  CHECK(t->horizontalHeaderItem(2)->text() == "Centre along\n[mm]");
+  CHECK(t->horizontalHeaderItem(2)->text() == "Centre\nalong\n[mm]");
   CHECK(panel.sliderTable()->rowCount() == 0);
 
   doc.reset(linkwright::testing::fourBar());  // no masses: the core's defaults, shown as such
@@ -87,4 +89,23 @@ TEST_CASE("clearing an inertia returns it to the core's default, gravity switche
   doc.undoStack()->undo();
   CHECK_FALSE(doc.design().dynamics.loads.gravity.has_value());
   CHECK_FALSE(panel.gravityBox()->isChecked());
+}
+
+// On a projector's 1024×768 screen the side column holds about 255 px. The loads' rows side by
+// side, ±1e9 N·m spin boxes sized for their longest text and the springs' two ends on one row
+// made the panel 498 px wide, and the page scrolled sideways. Every input keeps its own least
+// size (the screens journey checks that).
+TEST_CASE("the forces panel fits a projector's side column", "[forces]") {
+  for (const char* example : {"funsho-fourbar", "watt-ii", "ls3-engine"}) {
+    CAPTURE(example);
+    MechanismDocument doc;
+    doc.reset(*k::designForExample(example));
+    DynamicsPanel panel(&doc);
+    CHECK(panel.minimumSizeHint().width() <= 255);
+    // A number field may shrink, but not below the text it shows.
+    QDoubleSpinBox* torque = panel.torqueSpin();
+    CHECK(torque->sizePolicy().horizontalPolicy() == QSizePolicy::Preferred);
+    CHECK(torque->minimumSizeHint().width() < torque->sizeHint().width());
+    CHECK(torque->minimumSizeHint().width() >= torque->fontMetrics().horizontalAdvance(torque->text()));
+  }
 }
