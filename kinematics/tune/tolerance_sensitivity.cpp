@@ -198,7 +198,7 @@ Result<SensitivitySummary> sensitivitySummary(const Mechanism& mechanism, const 
   }
   if (control.cancelled()) return cancelledError();
   // Each figure refined between the grid inputs either side of its grid input, on the nominal
-  // pose solved and differentiated there: about fifty poses a figure.
+  // pose solved and differentiated there: about forty poses a figure.
   out.sampledLargest = out.largest;
   out.sampledFirstOrderWorst = out.firstOrderWorst;
   const SweepColumn input = sweepColumns(mechanism, SolveRequest{}, spec.time.has_value()).front();
