@@ -48,8 +48,11 @@ void addLinkCurves(std::vector<PlotCurve>& out, const k::Mechanism& m, const std
   for (std::size_t l = 0; l < m.links.size(); ++l) {
     if (k::isDrivenCrankLink(m, k::LinkId{l})) continue;  // the driver's own, constant or the input
     const QString name = QString::fromStdString(m.links[l].name);
-    out.push_back(
-        {{column, l}, name + suffix, QStringLiteral("%1 %2%3").arg(name, symbol).arg(numbers[l]), linkColor(l)});
+    out.push_back({{column, l},
+                   name + suffix,
+                   QStringLiteral("%1 %2%3").arg(name, symbol).arg(numbers[l]),
+                   linkColor(l),
+                   symbol + QString::number(numbers[l])});
   }
 }
 
@@ -67,9 +70,10 @@ void addRatioCurves(std::vector<PlotCurve>& out, const k::Mechanism& m, const k:
   }
   const PlotQuantity ratio = PlotQuantity::ofRatio(RatioQuantity::VelocityRatio, bodies);
   const PlotQuantity advantage = PlotQuantity::ofRatio(RatioQuantity::Advantage, bodies);
-  out.push_back({ratio, QStringLiteral("velocity_ratio"), Text::tr("ratio %1").arg(ratioSymbol(ratio)), color});
-  out.push_back(
-      {advantage, QStringLiteral("mechanical_advantage"), Text::tr("advantage %1").arg(ratioSymbol(advantage)), color});
+  out.push_back({ratio, QStringLiteral("velocity_ratio"), Text::tr("ratio %1").arg(ratioSymbol(ratio)), color,
+                 ratioSymbol(ratio)});
+  out.push_back({advantage, QStringLiteral("mechanical_advantage"),
+                 Text::tr("advantage %1").arg(ratioSymbol(advantage)), color, ratioSymbol(advantage)});
 }
 
 }  // namespace
@@ -103,7 +107,8 @@ std::vector<PlotCurve> plotCurves(const k::Mechanism& m, const k::Pose& pose) {
     out.push_back({{ColumnQuantity::TransmissionAngle, dyads[d]},
                    one ? QStringLiteral("transmission_angle") : QStringLiteral("transmission_angle_") + point,
                    one ? Text::tr("transmission μ") : Text::tr("μ at %1").arg(point),
-                   transmissionColor(d)});
+                   transmissionColor(d),
+                   one ? QStringLiteral("μ") : QStringLiteral("μ ") + point});
   }
   addLinkCurves(out, m, numbers, ColumnQuantity::LinkOmega, QStringLiteral("ω"), QStringLiteral("_omega"));
   addLinkCurves(out, m, numbers, ColumnQuantity::LinkAlpha, QStringLiteral("α"), QStringLiteral("_alpha"));

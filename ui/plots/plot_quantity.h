@@ -71,6 +71,8 @@ struct PlotCurve {
   QString key;   ///< stable, untranslated, after the CSV column names: "rocker_omega", "C_x"
   QString name;  ///< legend and checkbox: "rocker ω4", "transmission μ", "C x"
   QColor color;  ///< the link's colour on the canvas, for every chart it appears on
+  /// The legend's name where the whole one does not fit a narrow chart: "θ4", "μ", "μ E", "ω4/ω2".
+  QString symbol;
   bool operator==(const PlotCurve&) const = default;
 };
 

@@ -10,6 +10,8 @@
 #include <QChart>
 #include <QFontMetricsF>
 #include <QGraphicsLayout>
+#include <QLegend>
+#include <QLegendMarker>
 #include <QScatterSeries>
 #include <QValueAxis>
 
@@ -34,6 +36,7 @@ QuantityChartView::QuantityChartView(QuantityKind kind, const QString& title, QW
   // A new plot area also changes the curves' scale: they are drawn again if it matters.
   connect(chart, &QChart::plotAreaChanged, this, [this] {
     applyTickStep(m_xAxis, m_xRange, this->chart()->plotArea().width());
+    fitLegendNames();
     if (tickBudget() != m_tickBudget) applyValueRange();
     else
       for (Curve& curve : m_curves) curve.line.rescale();
@@ -118,7 +121,44 @@ bool QuantityChartView::setData(const kinematics::SweepResult& sweep, const Quan
     setSeriesShown(chart(), m.series, shown, inLegend);
     inputs.legend.push_back(inLegend);
   }
+  fitLegendNames();
   return inputs.replace(m_layoutInputs);
+}
+
+// Qt Charts gives a legend on the right at most 0.4 of the chart's width (its layout's rule) and
+// elides every entry beyond ("cou…", "rock…" on a projector's 1024 px). Where the curves' whole
+// names need more, they go by their symbols (θ3, θ4, μ), which fit, in the link's colour as on the
+// canvas; the checkboxes above the charts spell them out. From the whole names' widths, so it
+// does not depend on the names shown. (Series renamed later keep the label set here until the
+// next fit.)
+void QuantityChartView::fitLegendNames() {
+  QLegend* legend = chart()->legend();
+  if (!legend->isVisible()) return;
+  const QFontMetricsF metrics(legend->font());
+  double widestShown = 0.0, widestWhole = 0.0;
+  for (QLegendMarker* marker : legend->markers()) {
+    // Qt's width for the legend counts hidden entries too; an entry is elided by its own width.
+    widestShown = std::max(widestShown, metrics.horizontalAdvance(marker->label()));
+    if (!marker->isVisible()) continue;
+    QString whole = marker->label();
+    for (const Curve& c : m_curves)
+      if (marker->series() == c.line.legendSeries()) whole = c.curve.name;
+    widestWhole = std::max(widestWhole, metrics.horizontalAdvance(whole));
+  }
+  const double decoration = legend->effectiveSizeHint(Qt::PreferredSize).width() - widestShown;
+  const QMarginsF margins = chart()->margins();
+  const double room = 0.4 * (chart()->size().width() - margins.left() - margins.right());
+  const bool whole = decoration + widestWhole <= room;
+  for (Curve& c : m_curves) c.line.setLegendName(whole || c.curve.symbol.isEmpty() ? c.curve.name : c.curve.symbol);
+  // The other entries (the rocker's limits, a compared table's rows) by their last word: "limit".
+  for (QLegendMarker* marker : legend->markers()) {
+    const bool curve = std::any_of(m_curves.begin(), m_curves.end(),
+                                   [&](const Curve& c) { return marker->series() == c.line.legendSeries(); });
+    if (curve) continue;
+    const QString name = marker->series()->name();
+    const QString label = whole ? name : name.section(QLatin1Char(' '), -1);
+    if (marker->label() != label) marker->setLabel(label);
+  }
 }
 
 void QuantityChartView::setOverlay(const std::vector<OverlayCurve>& overlay) {

@@ -99,6 +99,7 @@ private:
   // The value axis over the data's span, with no more ticks than the plot's height can label.
   void applyValueRange();
   int tickBudget() const;
+  void fitLegendNames();
 
   QuantityKind m_kind;
   QValueAxis* m_xAxis;

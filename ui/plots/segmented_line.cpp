@@ -34,6 +34,10 @@ SegmentedLine::SegmentedLine(QChart* chart, QValueAxis* xAxis, QValueAxis* yAxis
   m_item->setVisible(false);
 }
 
+void SegmentedLine::setLegendName(const QString& name) {
+  if (m_legendEntry->name() != name) m_legendEntry->setName(name);
+}
+
 void SegmentedLine::setRuns(const SeriesRuns& runs, bool shown) {
   // Qt Charts does not lay the chart out again when a legend marker is shown or hidden: the
   // legend would keep its old size. (Any axis setter used to hide this by relaying out on

@@ -45,6 +45,10 @@ public:
   /// Draws the runs again if the plot area or the axes have changed the scale by more than a
   /// few per cent since they were drawn (a resize, a new axis range).
   void rescale();
+  /// Names the curve's legend entry (Style::name until then).
+  void setLegendName(const QString& name);
+  /// The series whose legend marker stands for the curve.
+  const QLineSeries* legendSeries() const { return m_legendEntry; }
   /// The sample of run `run` nearest `x` in x (every sample, not only the vertices drawn).
   std::optional<QPointF> nearestSample(qsizetype run, qreal x) const;
   /// Takes the curve and its legend entry off the chart and deletes them.

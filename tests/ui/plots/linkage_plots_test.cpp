@@ -14,12 +14,17 @@
 #include <QCoreApplication>
 #include <QFontMetricsF>
 #include <QGraphicsLayout>
+#include <QGraphicsTextItem>
+#include <QLegend>
+#include <QLegendMarker>
 #include <QLineSeries>
 #include <QValueAxis>
 
 #include "tests/ui/support/four_bar_design.h"
 
 #include "tests/support/catch.h"
+
+#include <functional>
 
 using namespace linkwright::ui;
 namespace k = linkwright::kinematics;
@@ -116,5 +121,35 @@ TEST_CASE("a short chart labels fewer ticks, so that no labels overlap", "[plot_
     REQUIRE(ticks >= 2);
     CHECK(area / (ticks - 1) >= label);     // room between ticks for each label
     if (height == 2400) CHECK(ticks >= 5);  // a tall chart keeps a fine scale
+  }
+}
+
+// Qt Charts gives a legend on the right at most 0.4 of the chart's width and elides what is
+// wider: on a projector's 1024 px the Watt II's entries read "co…", "ro…", "lin…". A narrow
+// chart names its curves by their symbols, which fit; a wide one by their whole names.
+TEST_CASE("a narrow chart's legend names its curves by their symbols, whole", "[plot_panel][linkage]") {
+  MechanismDocument doc;
+  doc.reset(*k::designForExample("watt-ii"));
+  PlotPanel panel(&doc);
+  panel.show();
+  QuantityChartView* view = panel.chartView(QuantityKind::Angle);
+  for (const int width : {330, 1400}) {
+    CAPTURE(width);
+    panel.resize(width, 1200);
+    QCoreApplication::processEvents();
+    view->chart()->layout()->activate();
+    QStringList labels;
+    for (const QLegendMarker* marker : view->chart()->legend()->markers())
+      if (marker->isVisible()) labels << marker->label();
+    INFO(labels.join(", ").toStdString());
+    if (width == 330) CHECK(labels.mid(0, 6) == QStringList{"θ3", "θ4", "θ5", "θ6", "μ C", "μ E"});
+    else CHECK(labels.mid(0, 6) == QStringList{"coupler θ3", "rocker θ4", "link5 θ5", "link6 θ6", "μ at C", "μ at E"});
+    // Whole: no text Qt shows in the legend is elided.
+    std::function<void(const QGraphicsItem*)> visit = [&](const QGraphicsItem* item) {
+      if (const auto* text = dynamic_cast<const QGraphicsTextItem*>(item); text != nullptr && text->isVisible())
+        CHECK_FALSE(text->toPlainText().contains(QChar(0x2026)));
+      for (const QGraphicsItem* child : item->childItems()) visit(child);
+    };
+    visit(view->chart()->legend());
   }
 }
