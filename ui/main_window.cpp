@@ -170,8 +170,17 @@ MainWindow::MainWindow(QWidget* parent)
   buildMenus();
   m_canvas->linkageScene()->addItem(m_forceArrows);
   m_forceArrows->setVisible(false);
-  connect(m_forces, &ForceResults::changed, this, [this] { m_forceArrows->setForces(*m_document, *m_forces); });
-  connect(m_canvas, &LinkageView::pixelsPerUnitChanged, this, [this](double s) { m_forceArrows->setViewScale(s); });
+  // Arrows that come after the canvas's fit (their forces land later) are fitted in, once.
+  connect(m_forces, &ForceResults::changed, this, [this] {
+    const bool shown = m_forceArrows->showsArrows();
+    m_forceArrows->setForces(*m_document, *m_forces);
+    if (!shown && m_forceArrows->showsArrows()) m_canvas->refitIfFollowing();
+  });
+  connect(m_canvas, &LinkageView::pixelsPerUnitChanged, this, [this](double s) {
+    m_forceArrows->setCanvasSize(m_canvas->viewport()->size());
+    m_forceArrows->setViewScale(s);
+    m_forceArrows->setForces(*m_document, *m_forces);  // the arrows' lengths for the canvas's size
+  });
   m_forceArrows->setViewScale(m_canvas->pixelsPerUnit());
   m_plots->setAngleUnit(m_settings->anglesInRadians() ? AngleUnit::Radians : AngleUnit::Degrees);
   m_forcePlots->setAngleUnit(m_settings->anglesInRadians() ? AngleUnit::Radians : AngleUnit::Degrees);
@@ -248,7 +257,9 @@ void MainWindow::updateForcesNeeded() {
   const bool needed = arrows || m_tabs->currentIndex() == 1;
   m_document->setForcesNeeded(needed);  // first: the sweep then already has what forces need
   m_forces->setEnabled(needed);
+  const bool shown = m_forceArrows->showsArrows();
   m_forceArrows->setVisible(arrows);
+  if (!shown && m_forceArrows->showsArrows()) m_canvas->refitIfFollowing();
 }
 
 // The splitter keeps the masses' and loads' panel the height it had: at presentation mode's

@@ -115,12 +115,15 @@ void ForceArrowsItem::setForces(const MechanismDocument& document, const ForceRe
   const k::BodyModel* bodies = forces.bodies();
   const double peak = forces.peakJointForce();
   std::size_t used = 0;
+  double longest = kForceArrowLengthPx * m_scale;
+  if (!m_canvas.isEmpty())
+    longest = std::min(longest, kForceArrowCanvasShare * std::min(m_canvas.width(), m_canvas.height()));
   if (f != nullptr && bodies != nullptr && peak > 0.0) {
     const k::Pose& pose = document.pose();
     const auto place = [&](const Eigen::Vector2d& at, const Eigen::Vector2d& force) {
       const double size = force.norm();
       ForceArrowItem* arrow = arrowAt(used++);
-      arrow->setArrow(toQt(at), toQt(force), std::min(1.0, size / peak) * kForceArrowLengthPx * m_scale,
+      arrow->setArrow(toQt(at), toQt(force), std::min(1.0, size / peak) * longest,
                       QCoreApplication::translate("ForceArrowsItem", "%1 N").arg(formatForce(size)));
       arrow->setVisible(true);
     };
@@ -137,11 +140,18 @@ void ForceArrowsItem::setForces(const MechanismDocument& document, const ForceRe
   separateLabels();
 }
 
+bool ForceArrowsItem::showsArrows() const {
+  return isVisible() &&
+         std::any_of(m_arrows.begin(), m_arrows.end(), [](const ForceArrowItem* a) { return a->isVisible(); });
+}
+
 void ForceArrowsItem::setPresentationScale(double factor) {
   m_scale = factor;
   for (ForceArrowItem* arrow : m_arrows) arrow->setPresentationScale(factor);
   separateLabels();
 }
+
+void ForceArrowsItem::setCanvasSize(const QSizeF& pixels) { m_canvas = pixels; }
 
 void ForceArrowsItem::setViewScale(double pixelsPerUnit) {
   if (pixelsPerUnit == m_pixelsPerUnit) return;

@@ -8,6 +8,7 @@
 
 #include <QColor>
 #include <QGraphicsItem>
+#include <QSizeF>
 #include <QString>
 #include <QTransform>
 
@@ -23,6 +24,8 @@ class MechanismDocument;
 inline constexpr QColor kForceArrowColor{178, 34, 34};
 /// On-screen length of the largest joint force of the cycle, px at presentation scale 1.
 inline constexpr double kForceArrowLengthPx = 120.0;
+/// The most of the canvas's smaller side the largest arrow may take.
+inline constexpr double kForceArrowCanvasShare = 0.3;
 
 /// One arrow: at a scene point, `lengthPx` screen pixels long in the direction of a vector
 /// given in scene axes (y up). Ignores the view's transformations, so it keeps its pixel size.
@@ -73,7 +76,14 @@ public:
   /// screen: their labels are kept apart at it, and off the scene's other labels (the points'
   /// names); 0: not known, labels where they fall.
   void setViewScale(double pixelsPerUnit);
+  /// The canvas's size in pixels: the largest arrow is at most kForceArrowCanvasShare of its
+  /// smaller side, so that the arrows and their labels fit a projector's small canvas in
+  /// presentation mode (twice kForceArrowLengthPx, 240 px, in a canvas 378 px tall). Taken at
+  /// the next setForces; empty: no bound.
+  void setCanvasSize(const QSizeF& pixels);
 
+  /// Whether any arrow is drawn (the item shown, and forces to show).
+  bool showsArrows() const;
   /// The arrows, revolute joints first, then prismatic ones; hidden ones are not solved.
   const std::vector<ForceArrowItem*>& arrows() const { return m_arrows; }
 
@@ -87,6 +97,7 @@ private:
   std::vector<ForceArrowItem*> m_arrows;
   double m_scale = 1.0;
   double m_pixelsPerUnit = 0.0;
+  QSizeF m_canvas;
 };
 
 }  // namespace linkwright::ui

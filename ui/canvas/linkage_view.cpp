@@ -104,6 +104,10 @@ void LinkageView::refreshColors() {
 
 double LinkageView::pixelsPerUnit() const { return std::abs(transform().m11()); }
 
+void LinkageView::refitIfFollowing() {
+  if (m_autoFit && m_gesture == Gesture::None) fitToView();
+}
+
 double LinkageView::gridSpacing() const { return ui::gridSpacing(pixelsPerUnit()); }
 
 void LinkageView::renderLinkage(QPainter* painter, const QRectF& target) const {
@@ -168,9 +172,14 @@ double LinkageView::labelsFitScale(const QPointF& centre, const QSizeF& area) co
   for (const QGraphicsItem* item : m_scene->items()) {
     const auto* label = dynamic_cast<const LabelItem*>(item);
     if (label == nullptr || !label->isVisible() || label->text().isEmpty()) continue;
-    const QPointF d = label->scenePos() - centre;
-    const double scale = label->scale();
-    const QRectF r = label->boundingRect();
+    // A label on an item that keeps its pixel size too (a force arrow's) is anchored where
+    // that item is, its place on it in pixels.
+    const QGraphicsItem* anchor = label;
+    for (const QGraphicsItem* p = label->parentItem(); p != nullptr; p = p->parentItem())
+      if (p->flags() & QGraphicsItem::ItemIgnoresTransformations) anchor = p;
+    const QPointF d = anchor->scenePos() - centre;
+    const double scale = anchor == label ? label->scale() : 1.0;
+    const QRectF r = anchor == label ? label->boundingRect() : label->mapRectToItem(anchor, label->boundingRect());
     bound(d.x(), r.right() * scale, halfW);
     bound(-d.x(), -r.left() * scale, halfW);
     bound(-d.y(), r.bottom() * scale, halfH);  // the viewport's y runs down

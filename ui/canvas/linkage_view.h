@@ -60,6 +60,10 @@ public:
 
   /// Screen pixels per model length unit at the current zoom.
   double pixelsPerUnit() const;
+  /// Fits again if the view still follows the drawing (no zoom or pan since its last fit) and
+  /// no gesture is under way: labels that came after the fit (the force arrows' magnitudes,
+  /// whose forces land later) are then inside, as Ctrl+0 would have them.
+  void refitIfFollowing();
   /// Distance between grid lines (model length units) at the current zoom.
   double gridSpacing() const;
   /// Paints the linkage without the grid into `target` (painter coordinates), y up, aspect

@@ -120,3 +120,22 @@ TEST_CASE("force arrows' labels keep off the points' names", "[forces][canvas]")
       CHECK_FALSE(a->labelRect(toPixels).intersects(name->deviceTransform(toPixels).mapRect(name->textRect())));
   }
 }
+
+// Presentation mode doubles the arrows (240 px for the largest force), more than a projector's
+// canvas (570 × 378 px) holds with the labels: the largest takes at most 0.3 of its smaller side.
+TEST_CASE("force arrows fit a small canvas", "[forces][canvas]") {
+  const FunshoForces f(0.0);
+  ForceArrowsItem arrows;
+  arrows.setPresentationScale(2.0);
+  arrows.setForces(f.doc, f.forces);
+  std::vector<double> free;
+  for (const ForceArrowItem* a : arrows.arrows()) free.push_back(a->lengthPx());
+  arrows.setCanvasSize(QSizeF(570.0, 378.0));
+  arrows.setForces(f.doc, f.forces);
+  // Each in proportion: the cycle's largest force, 240 px free, is 0.3 · 378 px.
+  for (std::size_t i = 0; i < free.size(); ++i) {
+    CHECK(arrows.arrows()[i]->lengthPx() ==
+          Approx(free[i] * kForceArrowCanvasShare * 378.0 / (2.0 * kForceArrowLengthPx)));
+    CHECK(arrows.arrows()[i]->lengthPx() <= kForceArrowCanvasShare * 378.0);
+  }
+}

@@ -116,3 +116,21 @@ TEST_CASE("on a laptop and a projector, normal and presenting, Ctrl+0 keeps ever
     }
   }
 }
+
+TEST_CASE("on a laptop and a projector, force arrows that come after the fit have their labels inside",
+          "[journey][canvas][screens]") {
+  // The canvas was fitted before the forces landed, so the arrows' magnitudes ran past its edge
+  // (presentation mode on the projector: "415 N" cut at the left) until Ctrl+0.
+  for (const char* screen : {"laptop", "projector"}) {
+    CAPTURE(screen);
+    test::Journey journey(test::journeyScreen(QString::fromLatin1(screen)));
+    for (const bool presenting : {false, true}) {
+      if (presenting) journey.menu({"View", "Presentation mode"});
+      journey.example("funsho-fourbar");
+      journey.menu({"View", "Force arrows"});
+      journey.expectFitted();
+      journey.check(std::string(screen) + (presenting ? ", presenting" : "") + ", View ▸ Force arrows");
+      journey.menu({"View", "Force arrows"});  // off again for the next round
+    }
+  }
+}
