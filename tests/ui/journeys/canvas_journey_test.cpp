@@ -14,8 +14,27 @@
 #include <QDoubleSpinBox>
 #include <QTest>
 #include <QUndoStack>
+#include <functional>
+#include <string>
 
 using namespace linkwright;
+
+namespace {
+
+// `step` on a 1366×768 laptop and a 1024×768 projector, normal and then presenting; `where` names
+// the screen and the mode.
+void onEachScreen(const std::function<void(test::Journey&, const std::string& where)>& step) {
+  for (const char* screen : {"laptop", "projector"}) {
+    CAPTURE(screen);
+    test::Journey journey(test::journeyScreen(QString::fromLatin1(screen)));
+    for (const bool presenting : {false, true}) {
+      if (presenting) journey.menu({"View", "Presentation mode"});
+      step(journey, std::string(screen) + (presenting ? ", presenting" : ""));
+    }
+  }
+}
+
+}  // namespace
 
 TEST_CASE("each example from the menu is fitted, labels inside the canvas", "[journey][canvas]") {
   test::Journey journey;
@@ -83,54 +102,43 @@ TEST_CASE("on a laptop and a projector, normal and presenting, Ctrl+0 keeps ever
           "[journey][canvas][screens]") {
   // Issue 57 item 4: labels keep their pixel size, so a fit of the drawing alone cut "crank can
   // reach…" and the arm's "outside s…" at the canvas's edge on the smaller screens.
-  for (const char* screen : {"laptop", "projector"}) {
-    CAPTURE(screen);
-    test::Journey journey(test::journeyScreen(QString::fromLatin1(screen)));
-    for (const bool presenting : {false, true}) {
-      if (presenting) journey.menu({"View", "Presentation mode"});
-      const std::string mode = presenting ? ", presenting" : "";
-      for (const kinematics::Example& e : kinematics::examples()) {
-        journey.example(e.name);
-        journey.key(Qt::Key_0, Qt::ControlModifier);
-        journey.expectFitted();
-        journey.check(std::string(screen) + mode + ", Examples ▸ " + e.name + ", Ctrl+0");
-      }
-      // A crank that only rocks, labelled with its reach.
-      journey.example("thesis-crank-rocker");
-      journey.type(journey.window().dimensionsPanel()->editor(kinematics::ParameterSlot::CouplerLength), "30");
+  onEachScreen([](test::Journey& journey, const std::string& where) {
+    for (const kinematics::Example& e : kinematics::examples()) {
+      journey.example(e.name);
       journey.key(Qt::Key_0, Qt::ControlModifier);
       journey.expectFitted();
-      journey.check(std::string(screen) + mode + ", coupler 30, Ctrl+0");
-      journey.key(Qt::Key_Z, Qt::ControlModifier);  // unmodified again: the next example asks nothing
-      // An arm's path partly out of reach, labelled with the stretch.
-      journey.example("seed-arm");
-      ui::DimensionsPanel* panel = journey.window().dimensionsPanel();
-      for (std::size_t i = 0; i < panel->fields().size(); ++i)
-        if (panel->fields()[i].parameter.slot == kinematics::ParameterSlot::PathY &&
-            panel->fields()[i].parameter.vertex == 1)
-          journey.type(panel->editor(i), "0.6");
-      journey.key(Qt::Key_0, Qt::ControlModifier);
-      journey.expectFitted();
-      journey.check(std::string(screen) + mode + ", arm's path end at y 0.6 m, Ctrl+0");
-      journey.key(Qt::Key_Z, Qt::ControlModifier);
+      journey.check(where + ", Examples ▸ " + e.name + ", Ctrl+0");
     }
-  }
+    // A crank that only rocks, labelled with its reach.
+    journey.example("thesis-crank-rocker");
+    journey.type(journey.window().dimensionsPanel()->editor(kinematics::ParameterSlot::CouplerLength), "30");
+    journey.key(Qt::Key_0, Qt::ControlModifier);
+    journey.expectFitted();
+    journey.check(where + ", coupler 30, Ctrl+0");
+    journey.key(Qt::Key_Z, Qt::ControlModifier);  // unmodified again: the next example asks nothing
+    // An arm's path partly out of reach, labelled with the stretch.
+    journey.example("seed-arm");
+    ui::DimensionsPanel* panel = journey.window().dimensionsPanel();
+    for (std::size_t i = 0; i < panel->fields().size(); ++i)
+      if (panel->fields()[i].parameter.slot == kinematics::ParameterSlot::PathY &&
+          panel->fields()[i].parameter.vertex == 1)
+        journey.type(panel->editor(i), "0.6");
+    journey.key(Qt::Key_0, Qt::ControlModifier);
+    journey.expectFitted();
+    journey.check(where + ", arm's path end at y 0.6 m, Ctrl+0");
+    journey.key(Qt::Key_Z, Qt::ControlModifier);
+  });
 }
 
 TEST_CASE("on a laptop and a projector, force arrows that come after the fit have their labels inside",
           "[journey][canvas][screens]") {
   // The canvas was fitted before the forces landed, so the arrows' magnitudes ran past its edge
   // (presentation mode on the projector: "415 N" cut at the left) until Ctrl+0.
-  for (const char* screen : {"laptop", "projector"}) {
-    CAPTURE(screen);
-    test::Journey journey(test::journeyScreen(QString::fromLatin1(screen)));
-    for (const bool presenting : {false, true}) {
-      if (presenting) journey.menu({"View", "Presentation mode"});
-      journey.example("funsho-fourbar");
-      journey.menu({"View", "Force arrows"});
-      journey.expectFitted();
-      journey.check(std::string(screen) + (presenting ? ", presenting" : "") + ", View ▸ Force arrows");
-      journey.menu({"View", "Force arrows"});  // off again for the next round
-    }
-  }
+  onEachScreen([](test::Journey& journey, const std::string& where) {
+    journey.example("funsho-fourbar");
+    journey.menu({"View", "Force arrows"});
+    journey.expectFitted();
+    journey.check(where + ", View ▸ Force arrows");
+    journey.menu({"View", "Force arrows"});  // off again for the next round
+  });
 }
