@@ -163,8 +163,8 @@ void ForceArrowsItem::setViewScale(double pixelsPerUnit) {
 // tips, and so their labels, on top of each other, and a short arrow's label falls on its
 // joint's name. In order of size, each label is moved beside its tip, either side, or out along
 // its arrow, a line at a time, until its box is clear of the points' names and the labels of
-// larger forces (at most kMaxLabelSteps lines; else where it overlaps least). Where the feet are on screen follows the canvas's
-// scale, so this is redone when the scale changes.
+// larger forces (at most kMaxLabelSteps lines; else where it overlaps least). Where the feet are
+// on screen follows the canvas's scale, so this is redone when the scale changes.
 void ForceArrowsItem::separateLabels() {
   std::vector<ForceArrowItem*> shown;
   for (ForceArrowItem* arrow : m_arrows)
